@@ -1,0 +1,469 @@
+// Tumble: the stateless collision layer. Every function here works on shapes and transforms
+// alone, without a world: geometry and mass, hulls, ray casts, GJK distance and EPA
+// penetration, shape casts, contact manifolds (closed forms, SAT, GJK/EPA), time of impact
+// (quadratic for circles, conservative advancement for any convex pair), and the dynamic AABB
+// tree as a stand-alone structure.
+#pragma once
+
+#include "base.h"
+#include "constants.h"
+#include "math_functions.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Shapes
+
+/// Solid circle.
+typedef struct tbCircle
+{
+	tbVec2 center;
+	float radius;
+} tbCircle;
+
+/// Solid capsule: the points within `radius` of the segment center1–center2.
+typedef struct tbCapsule
+{
+	tbVec2 center1, center2;
+	float radius;
+} tbCapsule;
+
+/// Solid convex polygon, counter-clockwise, with an optional rounding radius (the polygon is
+/// the core polygon inflated by radius). Make with tbMakePolygon / tbMakeBox; do not fill by hand.
+typedef struct tbPolygon
+{
+	tbVec2 vertices[TB_MAX_POLYGON_VERTICES];
+	tbVec2 normals[TB_MAX_POLYGON_VERTICES];
+	tbVec2 centroid;
+	float radius;
+	int count;
+} tbPolygon;
+
+/// Line segment (two-sided, no thickness).
+typedef struct tbSegment
+{
+	tbVec2 point1, point2;
+} tbSegment;
+
+/// Convex hull of a point cloud, counter-clockwise, from tbComputeHull.
+typedef struct tbHull
+{
+	tbVec2 points[TB_MAX_POLYGON_VERTICES];
+	int count;
+} tbHull;
+
+/// Mass, centre of mass (local) and rotational inertia about the centre of mass.
+typedef struct tbMassData
+{
+	float mass;
+	tbVec2 center;
+	float rotationalInertia;
+} tbMassData;
+
+/// Shape kinds.
+typedef enum tbShapeType
+{
+	tb_circleShape,
+	tb_capsuleShape,
+	tb_segmentShape,
+	tb_polygonShape,
+	tb_shapeTypeCount
+} tbShapeType;
+
+/// Any shape, as a tagged union. Lets stateless routines (AABB, ray cast, manifold dispatch,
+/// scene files) take a shape without knowing its kind at compile time.
+typedef struct tbGeometry
+{
+	tbShapeType type;
+	union
+	{
+		tbCircle circle;
+		tbCapsule capsule;
+		tbSegment segment;
+		tbPolygon polygon;
+	};
+} tbGeometry;
+
+// ---------------------------------------------------------------------------------------------
+// Geometry helpers (geometry.c, hull.c)
+
+/// Convex hull by quickhull. Returns count 0 when the points cannot make a polygon: fewer than 3,
+/// more than TB_MAX_POLYGON_VERTICES, non-finite, or all (nearly) duplicate or collinear
+/// (within TB_LINEAR_SLOP). Points closer than TB_LINEAR_SLOP are welded.
+TB_API tbHull tbComputeHull(const tbVec2* points, int count);
+
+/// True if the hull is convex, counter-clockwise, without duplicate or collinear points.
+TB_API bool tbValidateHull(const tbHull* hull);
+
+/// Polygon from a valid hull with a rounding radius ≥ 0.
+TB_API tbPolygon tbMakePolygon(const tbHull* hull, float radius);
+
+/// Polygon from a hull, offset by a local transform.
+TB_API tbPolygon tbMakeOffsetPolygon(const tbHull* hull, tbVec2 position, tbRot rotation);
+
+/// Square with half-width h.
+TB_API tbPolygon tbMakeSquare(float halfWidth);
+
+/// Box with half-widths hx, hy, centred on the body origin.
+TB_API tbPolygon tbMakeBox(float halfWidth, float halfHeight);
+
+/// Box with rounded corners: core half-widths plus radius.
+TB_API tbPolygon tbMakeRoundedBox(float halfWidth, float halfHeight, float radius);
+
+/// Box offset by a local position and rotation.
+TB_API tbPolygon tbMakeOffsetBox(float halfWidth, float halfHeight, tbVec2 center, tbRot rotation);
+
+/// Polygon transformed by a rigid transform.
+TB_API tbPolygon tbTransformPolygon(tbTransform transform, const tbPolygon* polygon);
+
+/// Mass properties for a density in kg/m².
+TB_API tbMassData tbComputeCircleMass(const tbCircle* shape, float density);
+TB_API tbMassData tbComputeCapsuleMass(const tbCapsule* shape, float density);
+TB_API tbMassData tbComputePolygonMass(const tbPolygon* shape, float density);
+
+/// World-space bounding boxes.
+TB_API tbAABB tbComputeCircleAABB(const tbCircle* shape, tbTransform transform);
+TB_API tbAABB tbComputeCapsuleAABB(const tbCapsule* shape, tbTransform transform);
+TB_API tbAABB tbComputePolygonAABB(const tbPolygon* shape, tbTransform transform);
+TB_API tbAABB tbComputeSegmentAABB(const tbSegment* shape, tbTransform transform);
+TB_API tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbTransform transform);
+
+/// Mass of any solid shape (segments have no mass).
+TB_API tbMassData tbComputeShapeMass(const tbGeometry* shape, float density);
+
+/// Point-in-shape tests, point in the shape's local frame.
+TB_API bool tbPointInCircle(tbVec2 point, const tbCircle* shape);
+TB_API bool tbPointInCapsule(tbVec2 point, const tbCapsule* shape);
+TB_API bool tbPointInPolygon(tbVec2 point, const tbPolygon* shape);
+TB_API bool tbPointInShape(tbVec2 point, const tbGeometry* shape);
+
+/// Ray cast input: the ray is origin + t·translation for t in [0, maxFraction].
+typedef struct tbRayCastInput
+{
+	tbVec2 origin;
+	tbVec2 translation;
+	float maxFraction;
+} tbRayCastInput;
+
+/// Result of a ray or shape cast.
+typedef struct tbCastOutput
+{
+	tbVec2 normal;	 ///< surface normal at the hit
+	tbVec2 point;	 ///< hit point
+	float fraction;	 ///< fraction of the translation at the hit
+	int iterations;	 ///< iterations used (shape casts)
+	bool hit;
+} tbCastOutput;
+
+/// Ray casts in the shape's local frame. A ray starting inside a solid shape does not hit it.
+TB_API tbCastOutput tbRayCastCircle(const tbRayCastInput* input, const tbCircle* shape);
+TB_API tbCastOutput tbRayCastCapsule(const tbRayCastInput* input, const tbCapsule* shape);
+TB_API tbCastOutput tbRayCastSegment(const tbRayCastInput* input, const tbSegment* shape, bool oneSided);
+TB_API tbCastOutput tbRayCastPolygon(const tbRayCastInput* input, const tbPolygon* shape);
+TB_API tbCastOutput tbRayCastShape(const tbRayCastInput* input, const tbGeometry* shape);
+
+// ---------------------------------------------------------------------------------------------
+// Distance (distance.c: GJK) and penetration (epa.c: EPA)
+
+/// Convex point cloud with a radius: what GJK sees of a shape.
+typedef struct tbShapeProxy
+{
+	tbVec2 points[TB_MAX_POLYGON_VERTICES];
+	int count;
+	float radius;
+} tbShapeProxy;
+
+TB_API tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius);
+
+/// Proxy of any shape (circle: 1 point; capsule and segment: 2; polygon: its vertices).
+TB_API tbShapeProxy tbMakeShapeProxy(const tbGeometry* shape);
+
+/// Warm-start cache for GJK: the support indices of the last simplex. Zero-initialise for a cold start.
+typedef struct tbSimplexCache
+{
+	uint16_t count;
+	uint8_t indexA[3];
+	uint8_t indexB[3];
+} tbSimplexCache;
+
+/// Input to GJK.
+typedef struct tbDistanceInput
+{
+	tbShapeProxy proxyA;
+	tbShapeProxy proxyB;
+	tbTransform transformA;
+	tbTransform transformB;
+	bool useRadii;	///< subtract the radii (surface to surface) instead of core to core
+} tbDistanceInput;
+
+/// Output of GJK.
+typedef struct tbDistanceOutput
+{
+	tbVec2 pointA;	   ///< closest point on A (world)
+	tbVec2 pointB;	   ///< closest point on B (world)
+	tbVec2 normal;	   ///< unit vector from A to B (zero when the cores overlap)
+	float distance;	   ///< ≥ 0; zero when overlapping
+	int iterations;	   ///< GJK iterations
+	int simplexCount;  ///< vertices in the final simplex (3 means the cores overlap)
+} tbDistanceOutput;
+
+/// Vertex of the Minkowski difference B − A, with its support indices.
+typedef struct tbSimplexVertex
+{
+	tbVec2 wA;	   ///< support point on A (world)
+	tbVec2 wB;	   ///< support point on B (world)
+	tbVec2 w;	   ///< wB − wA
+	float a;	   ///< barycentric coordinate of the closest point
+	int indexA;	   ///< index of wA in proxyA
+	int indexB;	   ///< index of wB in proxyB
+} tbSimplexVertex;
+
+/// GJK's simplex (1 to 3 vertices).
+typedef struct tbSimplex
+{
+	tbSimplexVertex v1, v2, v3;
+	int count;
+} tbSimplex;
+
+/// GJK distance (van den Bergen, "Collision Detection in Interactive 3D Environments", §4.3;
+/// Ericson, "Real-Time Collision Detection", §9.5). `cache` may be NULL; when given it
+/// warm-starts this call and receives the final simplex. `simplex` may be NULL; when given it
+/// receives the final simplex (for EPA).
+TB_API tbDistanceOutput tbShapeDistance(const tbDistanceInput* input, tbSimplexCache* cache, tbSimplex* simplex);
+
+/// Closest points between two segments p1–q1 and p2–q2 (Ericson §5.1.9).
+typedef struct tbSegmentDistanceResult
+{
+	tbVec2 closest1, closest2;
+	float fraction1, fraction2;
+	float distanceSquared;
+} tbSegmentDistanceResult;
+
+TB_API tbSegmentDistanceResult tbSegmentDistance(tbVec2 p1, tbVec2 q1, tbVec2 p2, tbVec2 q2);
+
+/// Signed separation of two convex shapes (radii included).
+typedef struct tbSeparationOutput
+{
+	tbVec2 normal;	   ///< unit vector from A to B; always defined (never NaN), even for coincident shapes
+	tbVec2 pointA;	   ///< deepest/closest point on A's surface (world)
+	tbVec2 pointB;	   ///< deepest/closest point on B's surface (world)
+	float separation;  ///< > 0 apart, < 0 penetrating (depth = −separation)
+	int iterations;	   ///< GJK plus EPA iterations
+	bool usedEPA;	   ///< true when the cores overlapped and EPA gave the answer
+} tbSeparationOutput;
+
+/// Separation by GJK when the cores are apart, else by EPA (expanding polytope; van den Bergen
+/// 2001) from GJK's final simplex, with a tolerance and iteration cap.
+TB_API tbSeparationOutput tbShapeSeparation(const tbDistanceInput* input, tbSimplexCache* cache);
+
+/// Input to a shape cast: A stays, B translates by `translation`.
+typedef struct tbShapeCastPairInput
+{
+	tbShapeProxy proxyA;
+	tbShapeProxy proxyB;
+	tbTransform transformA;
+	tbTransform transformB;
+	tbVec2 translationB;
+	float maxFraction;
+	bool canEncroach;  ///< allow the final separation to be less than the radii (for speculative use)
+} tbShapeCastPairInput;
+
+/// Shape cast by conservative advancement on GJK distance (linear motion only).
+TB_API tbCastOutput tbShapeCast(const tbShapeCastPairInput* input);
+
+// ---------------------------------------------------------------------------------------------
+// Contact manifolds (manifold.c: closed forms and SAT; manifold_gjk.c: GJK/EPA path)
+
+/// Feature id of a manifold point: stays the same while the same features touch (warm starting).
+#define TB_MAKE_FEATURE_ID(A, B) ((uint16_t)((uint8_t)(A) << 8 | (uint8_t)(B)))
+
+/// A contact point.
+typedef struct tbManifoldPoint
+{
+	tbVec2 point;			///< world point, midway between the two surfaces
+	tbVec2 anchorA;			///< point relative to body A's centre of mass (filled by the world)
+	tbVec2 anchorB;			///< point relative to body B's centre of mass (filled by the world)
+	float separation;		///< > 0 speculative gap, < 0 penetration (m)
+	float normalImpulse;	///< accumulated normal impulse (N·s), carried across steps
+	float tangentImpulse;	///< accumulated friction impulse (N·s)
+	float maxNormalImpulse; ///< largest normal impulse of the last step (for hit events)
+	float normalVelocity;	///< relative normal velocity before the solve (m/s, < 0 approaching)
+	uint16_t id;			///< feature id
+	bool persisted;			///< true if matched to a point of the previous step
+} tbManifoldPoint;
+
+/// Contact manifold between two shapes: a normal from A to B and up to two points.
+typedef struct tbManifold
+{
+	tbVec2 normal;
+	tbManifoldPoint points[2];
+	int pointCount;
+} tbManifold;
+
+/// Closed forms and SAT. Points are kept while separation < TB_SPECULATIVE_DISTANCE.
+/// The normal points from A to B. Shapes are in their bodies' local frames, placed by xfA, xfB.
+TB_API tbManifold tbCollideCircles(const tbCircle* circleA, tbTransform xfA, const tbCircle* circleB, tbTransform xfB);
+TB_API tbManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, tbTransform xfA, const tbCircle* circleB,
+											tbTransform xfB);
+TB_API tbManifold tbCollideCapsules(const tbCapsule* capsuleA, tbTransform xfA, const tbCapsule* capsuleB,
+									tbTransform xfB);
+TB_API tbManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, tbTransform xfA, const tbCircle* circleB,
+											tbTransform xfB);
+TB_API tbManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, tbTransform xfA, const tbCapsule* capsuleB,
+											 tbTransform xfB);
+TB_API tbManifold tbCollidePolygons(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
+									tbTransform xfB);
+TB_API tbManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
+											tbTransform xfB);
+TB_API tbManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
+											 tbTransform xfB);
+TB_API tbManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
+											 tbTransform xfB);
+
+/// Polygon pair by GJK/EPA: normal and depth from tbShapeSeparation, points by clipping the
+/// incident edge against the reference face chosen along that normal.
+TB_API tbManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
+									   tbTransform xfB);
+
+/// Narrow-phase polygon method.
+typedef enum tbNarrowPhaseMethod
+{
+	tb_narrowPhaseAuto,	 ///< closed forms, SAT for polygons (the cheapest accurate choice)
+	tb_narrowPhaseSAT,	 ///< separating axis test with face clipping
+	tb_narrowPhaseGJK,	 ///< GJK/EPA normal and depth, then clipping
+} tbNarrowPhaseMethod;
+
+/// Manifold for any pair of shapes. Requires typeA ≤ typeB in tbShapeType order except that
+/// segments may be either; the function swaps internally and flips the normal when needed.
+TB_API tbManifold tbCollideShapes(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB, tbTransform xfB,
+								  tbNarrowPhaseMethod method);
+
+// ---------------------------------------------------------------------------------------------
+// Time of impact (toi_quadratic.c, toi_conservative.c)
+
+/// Motion of a body over a step: centre of mass moves c1 → c2, rotation q1 → q2 (linearly in angle).
+typedef struct tbSweep
+{
+	tbVec2 localCenter;	 ///< centre of mass in the body frame
+	tbVec2 c1, c2;		 ///< world centre of mass at start and end
+	tbRot q1, q2;		 ///< rotation at start and end
+} tbSweep;
+
+/// Body transform at time t ∈ [0, 1] of the sweep.
+TB_API tbTransform tbGetSweepTransform(const tbSweep* sweep, float time);
+
+typedef enum tbTOIState
+{
+	tb_toiStateUnknown,
+	tb_toiStateFailed,	   ///< iteration cap reached; fraction is the last safe time
+	tb_toiStateOverlapped, ///< already within the target at t = 0
+	tb_toiStateHit,		   ///< reached the target separation at `fraction`
+	tb_toiStateSeparated   ///< never reached the target before maxFraction
+} tbTOIState;
+
+typedef struct tbTOIInput
+{
+	tbShapeProxy proxyA;
+	tbShapeProxy proxyB;
+	tbSweep sweepA;
+	tbSweep sweepB;
+	float maxFraction;		///< sweep interval [0, maxFraction]
+	float targetSeparation; ///< stop at this surface separation (TB_TOI_TARGET_SEPARATION typical; 0 for exact contact)
+} tbTOIInput;
+
+typedef struct tbTOIOutput
+{
+	tbTOIState state;
+	float fraction;	 ///< time of impact as a fraction of the sweep, in [0, maxFraction]
+	int iterations;
+	tbVec2 normal;	 ///< contact normal from A to B at the time of impact
+	tbVec2 point;	 ///< contact point at the time of impact
+} tbTOIOutput;
+
+/// Conservative advancement (Mirtich 1996; Coumans, "Continuous collision detection and physics",
+/// 2005) for any convex pair with linear and angular motion.
+TB_API tbTOIOutput tbTimeOfImpact(const tbTOIInput* input);
+
+/// Two circles in linear motion: the earliest root of |Δp + Δv·t| = rA + rB + target, t in
+/// [0, maxFraction], in closed form. Circle centres are local to their bodies; the circles must
+/// sit on their bodies' centres of mass or the sweeps must not rotate (the motion is then linear).
+TB_API tbTOIOutput tbTimeOfImpactCircles(const tbCircle* circleA, const tbSweep* sweepA, const tbCircle* circleB,
+										 const tbSweep* sweepB, float maxFraction, float targetSeparation);
+
+// ---------------------------------------------------------------------------------------------
+// Dynamic AABB tree (dynamic_tree.c)
+
+#define TB_NULL_NODE (-1)
+
+struct tbTreeNode;
+
+/// Bounding-volume hierarchy of fat AABBs, balanced by rotations; insertion by the surface-area
+/// heuristic (branch and bound over the sibling candidates). Usable on its own.
+typedef struct tbDynamicTree
+{
+	struct tbTreeNode* nodes;
+	int root;
+	int nodeCount;
+	int nodeCapacity;
+	int freeList;
+	int proxyCount;
+	// scratch space for the binned SAH rebuild
+	int* leafIndices;
+	tbAABB* leafBoxes;
+	tbVec2* leafCenters;
+	int* binIndices;
+	int rebuildCapacity;
+} tbDynamicTree;
+
+TB_API tbDynamicTree tbDynamicTree_Create(void);
+TB_API void tbDynamicTree_Destroy(tbDynamicTree* tree);
+
+/// Insert a proxy; returns its id (stable until destroyed). userData is returned by queries.
+TB_API int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, int userData);
+TB_API void tbDynamicTree_DestroyProxy(tbDynamicTree* tree, int proxyId);
+
+/// Re-insert a proxy with a new box.
+TB_API void tbDynamicTree_MoveProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb);
+
+/// Grow a proxy's box in place (refitting ancestors), without re-inserting.
+TB_API void tbDynamicTree_EnlargeProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb);
+
+/// Query callback: return false to stop.
+typedef bool tbTreeQueryCallbackFcn(int proxyId, int userData, void* context);
+
+/// Visit every proxy whose box overlaps aabb and whose category bits share a bit with maskBits.
+TB_API void tbDynamicTree_Query(const tbDynamicTree* tree, tbAABB aabb, uint64_t maskBits,
+								tbTreeQueryCallbackFcn* callback, void* context);
+
+/// Ray cast callback: return the new max fraction (0 stops, the input's maxFraction ignores
+/// this proxy, a smaller value clips the ray).
+typedef float tbTreeRayCastCallbackFcn(const tbRayCastInput* input, int proxyId, int userData, void* context);
+
+TB_API void tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInput* input, uint64_t maskBits,
+								  tbTreeRayCastCallbackFcn* callback, void* context);
+
+/// Height of the tree (a single leaf has height 0).
+TB_API int tbDynamicTree_GetHeight(const tbDynamicTree* tree);
+
+/// Sum of internal node perimeters over the root perimeter (a quality measure).
+TB_API float tbDynamicTree_GetAreaRatio(const tbDynamicTree* tree);
+
+/// Check parent links, child boxes inside parents, stored heights and counts. True when valid.
+TB_API bool tbDynamicTree_Validate(const tbDynamicTree* tree);
+
+/// Rebuild the whole tree top-down by the binned surface-area heuristic. Returns the leaf count.
+TB_API int tbDynamicTree_Rebuild(tbDynamicTree* tree);
+
+TB_API int tbDynamicTree_GetUserData(const tbDynamicTree* tree, int proxyId);
+TB_API tbAABB tbDynamicTree_GetAABB(const tbDynamicTree* tree, int proxyId);
+TB_API uint64_t tbDynamicTree_GetCategoryBits(const tbDynamicTree* tree, int proxyId);
+
+/// Node boxes for debug drawing: calls fcn for every node with its depth.
+typedef void tbTreeNodeFcn(tbAABB aabb, int depth, bool isLeaf, void* context);
+TB_API void tbDynamicTree_VisitNodes(const tbDynamicTree* tree, tbTreeNodeFcn* fcn, void* context);
+
+#ifdef __cplusplus
+}
+#endif

@@ -1,0 +1,65 @@
+// Tumble: tuning constants. Each says its unit, typical value and why.
+// Lengths are in metres; Tumble is tuned for moving objects of 0.1 m to 10 m.
+#pragma once
+
+/// Largest number of vertices of a convex polygon. 8 keeps tbPolygon small (cache) and covers
+/// boxes, wedges and octagon approximations of round things.
+#define TB_MAX_POLYGON_VERTICES 8
+
+/// Linear slop, 0.005 m: the overlap the solver allows so that contacts stay persistent
+/// (a resting box sits 0.005 m into the ground instead of chattering in and out of contact).
+#define TB_LINEAR_SLOP 0.005f
+
+/// Angular slop, 2 degrees in radians: the analogue of the linear slop for angles.
+#define TB_ANGULAR_SLOP (2.0f / 180.0f * 3.14159265359f)
+
+/// Speculative distance, 4 × linear slop = 0.02 m: manifold points are kept while the shapes are
+/// up to this far apart, so the solver can stop an approach before it becomes a penetration.
+#define TB_SPECULATIVE_DISTANCE (4.0f * TB_LINEAR_SLOP)
+
+/// Fat AABB margin, 0.1 m: each broad-phase box is enlarged by this much so that most steps
+/// move no proxy. Larger means fewer tree updates but more candidate pairs.
+#define TB_AABB_MARGIN 0.1f
+
+/// Maximum position correction per step of the non-linear Gauss–Seidel pass, 0.2 m: limits
+/// the push-out speed of deep overlaps (prevents popping).
+#define TB_MAX_LINEAR_CORRECTION 0.2f
+
+/// Baumgarte factor, 0.2 (dimensionless): fraction of the penetration beyond the slop that the
+/// velocity bias removes per step. Higher is stiffer and bouncier; Box2D 2.4 uses 0.2.
+#define TB_BAUMGARTE 0.2f
+
+/// Time a body must stay slow before its island may sleep, 0.5 s.
+#define TB_TIME_TO_SLEEP 0.5f
+
+/// Default linear sleep threshold, 0.05 m/s: a body slower than this counts as resting.
+#define TB_LINEAR_SLEEP_TOLERANCE 0.05f
+
+/// Default angular sleep threshold, 2 degrees per second, in rad/s.
+#define TB_ANGULAR_SLEEP_TOLERANCE (2.0f / 180.0f * 3.14159265359f)
+
+/// Largest rotation of a body in one step, 0.25·π rad: keeps the linearised rotation integration
+/// and the continuous-collision bounds valid.
+#define TB_MAX_ROTATION (0.25f * 3.14159265359f)
+
+/// A body is "fast" and gets swept for continuous collision when its motion in one step exceeds
+/// this fraction of its extent (smallest distance from its centre of mass to its surface).
+/// 0.5: a body that moves less than half its own thickness cannot skip over a wall that it
+/// touches at the start of the step plus the speculative margin.
+#define TB_CONTINUOUS_FRACTION 0.5f
+
+/// Conservative advancement stops when the shapes are within this separation, 0.25 × slop.
+#define TB_TOI_TARGET_SEPARATION (0.25f * TB_LINEAR_SLOP)
+
+/// Iteration cap of conservative advancement and of the root finders (never loop forever).
+#define TB_TOI_MAX_ITERATIONS 30
+
+/// Largest number of worlds that may exist at once.
+#define TB_MAX_WORLDS 128
+
+/// A large length, 100 km: used as "infinity" for AABBs and ray lengths.
+#define TB_HUGE 100000.0f
+
+/// Default collision category and mask bits.
+#define TB_DEFAULT_CATEGORY_BITS 0x0000000000000001ULL
+#define TB_DEFAULT_MASK_BITS 0xFFFFFFFFFFFFFFFFULL

@@ -1,0 +1,48 @@
+// Tumble: value handles. An id is an index plus a generation, never a pointer.
+// All-zero is null. A handle to a destroyed object is detected and refused.
+#pragma once
+
+#include "base.h"
+
+/// World handle. index1 is the world slot plus one (zero means null).
+typedef struct tbWorldId
+{
+	uint16_t index1;
+	uint16_t generation;
+} tbWorldId;
+
+/// Body handle.
+typedef struct tbBodyId
+{
+	int32_t index1;
+	uint16_t world0;
+	uint16_t generation;
+} tbBodyId;
+
+/// Shape handle.
+typedef struct tbShapeId
+{
+	int32_t index1;
+	uint16_t world0;
+	uint16_t generation;
+} tbShapeId;
+
+#ifdef __cplusplus
+#define TB_NULL_WORLD_ID (tbWorldId{})
+#define TB_NULL_BODY_ID (tbBodyId{})
+#define TB_NULL_SHAPE_ID (tbShapeId{})
+#else
+#define TB_NULL_WORLD_ID ((tbWorldId){0})
+#define TB_NULL_BODY_ID ((tbBodyId){0})
+#define TB_NULL_SHAPE_ID ((tbShapeId){0})
+#endif
+
+/// True if the id is null (all zero). A non-null id may still be stale: use tbBody_IsValid etc.
+#define TB_IS_NULL(id) ((id).index1 == 0)
+#define TB_IS_NON_NULL(id) ((id).index1 != 0)
+
+/// Compare two ids of the same kind.
+#define TB_ID_EQUALS(id1, id2) ((id1).index1 == (id2).index1 && (id1).generation == (id2).generation)
+
+/// Pack a body or shape id into 64 bits (for user data, hash keys, files).
+#define TB_STORE_ID(id) (((uint64_t)(uint32_t)(id).index1 << 32) | ((uint64_t)(id).world0 << 16) | (uint64_t)(id).generation)

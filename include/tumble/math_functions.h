@@ -1,0 +1,490 @@
+// Tumble: value math. Everything here is inline and has no side effects.
+// Rotations are stored as a (cosine, sine) pair so that rotating a vector costs four multiplies
+// and integrating an angular velocity needs no trigonometry.
+#pragma once
+
+#include "base.h"
+
+#include <float.h>
+#include <math.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define TB_PI 3.14159265359f
+
+/// 2D vector (also used for points).
+typedef struct tbVec2
+{
+	float x, y;
+} tbVec2;
+
+/// Rotation as cosine and sine of the angle.
+typedef struct tbRot
+{
+	float c, s;
+} tbRot;
+
+/// Rigid transform: translation then rotation.
+typedef struct tbTransform
+{
+	tbVec2 p;
+	tbRot q;
+} tbTransform;
+
+/// 2×2 matrix stored by columns.
+typedef struct tbMat22
+{
+	tbVec2 cx, cy;
+} tbMat22;
+
+/// Axis-aligned bounding box.
+typedef struct tbAABB
+{
+	tbVec2 lowerBound;
+	tbVec2 upperBound;
+} tbAABB;
+
+static const tbVec2 tb_vec2_zero = {0.0f, 0.0f};
+static const tbRot tb_rot_identity = {1.0f, 0.0f};
+static const tbTransform tb_transform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
+static const tbMat22 tb_mat22_zero = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+
+/// True for a finite float (neither NaN nor infinity).
+TB_INLINE bool tbIsValidFloat(float a)
+{
+	return isfinite(a) != 0;
+}
+
+TB_INLINE bool tbIsValidVec2(tbVec2 v)
+{
+	return tbIsValidFloat(v.x) && tbIsValidFloat(v.y);
+}
+
+/// A valid rotation is finite and normalised to 1e-4 (after tbNormalizeRot it is to float rounding).
+TB_INLINE bool tbIsValidRot(tbRot q)
+{
+	if (tbIsValidFloat(q.c) == false || tbIsValidFloat(q.s) == false)
+	{
+		return false;
+	}
+	float d = q.c * q.c + q.s * q.s - 1.0f;
+	return -6e-4f < d && d < 6e-4f;
+}
+
+TB_INLINE float tbMinFloat(float a, float b)
+{
+	return a < b ? a : b;
+}
+
+TB_INLINE float tbMaxFloat(float a, float b)
+{
+	return a > b ? a : b;
+}
+
+TB_INLINE float tbAbsFloat(float a)
+{
+	return a < 0.0f ? -a : a;
+}
+
+TB_INLINE float tbClampFloat(float a, float lower, float upper)
+{
+	return a < lower ? lower : (a > upper ? upper : a);
+}
+
+TB_INLINE int tbMinInt(int a, int b)
+{
+	return a < b ? a : b;
+}
+
+TB_INLINE int tbMaxInt(int a, int b)
+{
+	return a > b ? a : b;
+}
+
+TB_INLINE tbVec2 tbMakeVec2(float x, float y)
+{
+	tbVec2 v = {x, y};
+	return v;
+}
+
+TB_INLINE float tbDot(tbVec2 a, tbVec2 b)
+{
+	return a.x * b.x + a.y * b.y;
+}
+
+/// 2D cross product a × b (the z component of the 3D cross product).
+TB_INLINE float tbCross(tbVec2 a, tbVec2 b)
+{
+	return a.x * b.y - a.y * b.x;
+}
+
+/// v × s = (s·v.y, −s·v.x).
+TB_INLINE tbVec2 tbCrossVS(tbVec2 v, float s)
+{
+	tbVec2 r = {s * v.y, -s * v.x};
+	return r;
+}
+
+/// s × v = (−s·v.y, s·v.x): the velocity of a point at offset v on a body turning at rate s.
+TB_INLINE tbVec2 tbCrossSV(float s, tbVec2 v)
+{
+	tbVec2 r = {-s * v.y, s * v.x};
+	return r;
+}
+
+/// Counter-clockwise perpendicular (−y, x).
+TB_INLINE tbVec2 tbLeftPerp(tbVec2 v)
+{
+	tbVec2 r = {-v.y, v.x};
+	return r;
+}
+
+/// Clockwise perpendicular (y, −x).
+TB_INLINE tbVec2 tbRightPerp(tbVec2 v)
+{
+	tbVec2 r = {v.y, -v.x};
+	return r;
+}
+
+TB_INLINE tbVec2 tbAdd(tbVec2 a, tbVec2 b)
+{
+	tbVec2 r = {a.x + b.x, a.y + b.y};
+	return r;
+}
+
+TB_INLINE tbVec2 tbSub(tbVec2 a, tbVec2 b)
+{
+	tbVec2 r = {a.x - b.x, a.y - b.y};
+	return r;
+}
+
+TB_INLINE tbVec2 tbNeg(tbVec2 a)
+{
+	tbVec2 r = {-a.x, -a.y};
+	return r;
+}
+
+/// Linear interpolation a + t·(b − a).
+TB_INLINE tbVec2 tbLerp(tbVec2 a, tbVec2 b, float t)
+{
+	tbVec2 r = {(1.0f - t) * a.x + t * b.x, (1.0f - t) * a.y + t * b.y};
+	return r;
+}
+
+/// Component-wise product.
+TB_INLINE tbVec2 tbMul(tbVec2 a, tbVec2 b)
+{
+	tbVec2 r = {a.x * b.x, a.y * b.y};
+	return r;
+}
+
+/// s·v
+TB_INLINE tbVec2 tbMulSV(float s, tbVec2 v)
+{
+	tbVec2 r = {s * v.x, s * v.y};
+	return r;
+}
+
+/// a + s·b
+TB_INLINE tbVec2 tbMulAdd(tbVec2 a, float s, tbVec2 b)
+{
+	tbVec2 r = {a.x + s * b.x, a.y + s * b.y};
+	return r;
+}
+
+/// a − s·b
+TB_INLINE tbVec2 tbMulSub(tbVec2 a, float s, tbVec2 b)
+{
+	tbVec2 r = {a.x - s * b.x, a.y - s * b.y};
+	return r;
+}
+
+TB_INLINE tbVec2 tbAbs(tbVec2 a)
+{
+	tbVec2 r = {tbAbsFloat(a.x), tbAbsFloat(a.y)};
+	return r;
+}
+
+TB_INLINE tbVec2 tbMin(tbVec2 a, tbVec2 b)
+{
+	tbVec2 r = {tbMinFloat(a.x, b.x), tbMinFloat(a.y, b.y)};
+	return r;
+}
+
+TB_INLINE tbVec2 tbMax(tbVec2 a, tbVec2 b)
+{
+	tbVec2 r = {tbMaxFloat(a.x, b.x), tbMaxFloat(a.y, b.y)};
+	return r;
+}
+
+TB_INLINE tbVec2 tbClamp(tbVec2 v, tbVec2 lower, tbVec2 upper)
+{
+	tbVec2 r = {tbClampFloat(v.x, lower.x, upper.x), tbClampFloat(v.y, lower.y, upper.y)};
+	return r;
+}
+
+TB_INLINE float tbLength(tbVec2 v)
+{
+	return sqrtf(v.x * v.x + v.y * v.y);
+}
+
+TB_INLINE float tbLengthSquared(tbVec2 v)
+{
+	return v.x * v.x + v.y * v.y;
+}
+
+TB_INLINE float tbDistance(tbVec2 a, tbVec2 b)
+{
+	float dx = b.x - a.x, dy = b.y - a.y;
+	return sqrtf(dx * dx + dy * dy);
+}
+
+TB_INLINE float tbDistanceSquared(tbVec2 a, tbVec2 b)
+{
+	float dx = b.x - a.x, dy = b.y - a.y;
+	return dx * dx + dy * dy;
+}
+
+/// Unit vector along v, or zero when |v| < FLT_EPSILON (never NaN).
+TB_INLINE tbVec2 tbNormalize(tbVec2 v)
+{
+	float length = tbLength(v);
+	if (length < FLT_EPSILON)
+	{
+		return tb_vec2_zero;
+	}
+	float inv = 1.0f / length;
+	tbVec2 n = {inv * v.x, inv * v.y};
+	return n;
+}
+
+TB_INLINE bool tbIsNormalized(tbVec2 a)
+{
+	float aa = tbDot(a, a);
+	return tbAbsFloat(1.0f - aa) < 100.0f * FLT_EPSILON;
+}
+
+/// Unit vector along v and the length of v (length zero and zero vector when |v| < FLT_EPSILON).
+TB_INLINE tbVec2 tbGetLengthAndNormalize(float* length, tbVec2 v)
+{
+	*length = tbLength(v);
+	if (*length < FLT_EPSILON)
+	{
+		return tb_vec2_zero;
+	}
+	float inv = 1.0f / *length;
+	tbVec2 n = {inv * v.x, inv * v.y};
+	return n;
+}
+
+TB_INLINE bool tbVec2Equals(tbVec2 a, tbVec2 b)
+{
+	return a.x == b.x && a.y == b.y;
+}
+
+/// Rotation from an angle in radians.
+TB_INLINE tbRot tbMakeRot(float radians)
+{
+	tbRot q = {cosf(radians), sinf(radians)};
+	return q;
+}
+
+/// Renormalise a rotation (after integration).
+TB_INLINE tbRot tbNormalizeRot(tbRot q)
+{
+	float mag = sqrtf(q.s * q.s + q.c * q.c);
+	float inv = mag > 0.0f ? 1.0f / mag : 0.0f;
+	tbRot qn = {q.c * inv, q.s * inv};
+	return qn;
+}
+
+/// Integrate a rotation by an angle increment without trigonometry:
+/// q2 = normalize(q1 + Δθ·perp(q1)), exact to O(Δθ³) in angle.
+TB_INLINE tbRot tbIntegrateRotation(tbRot q1, float deltaAngle)
+{
+	tbRot q2 = {q1.c - deltaAngle * q1.s, q1.s + deltaAngle * q1.c};
+	return tbNormalizeRot(q2);
+}
+
+/// Angle in radians in [−π, π].
+TB_INLINE float tbRot_GetAngle(tbRot q)
+{
+	return atan2f(q.s, q.c);
+}
+
+TB_INLINE tbVec2 tbRot_GetXAxis(tbRot q)
+{
+	tbVec2 v = {q.c, q.s};
+	return v;
+}
+
+TB_INLINE tbVec2 tbRot_GetYAxis(tbRot q)
+{
+	tbVec2 v = {-q.s, q.c};
+	return v;
+}
+
+/// q · r (compose: rotate by r, then by q).
+TB_INLINE tbRot tbMulRot(tbRot q, tbRot r)
+{
+	tbRot qr = {q.c * r.c - q.s * r.s, q.s * r.c + q.c * r.s};
+	return qr;
+}
+
+/// qᵀ · r (the rotation from q to r).
+TB_INLINE tbRot tbInvMulRot(tbRot q, tbRot r)
+{
+	tbRot qr = {q.c * r.c + q.s * r.s, q.c * r.s - q.s * r.c};
+	return qr;
+}
+
+/// Relative angle of b with respect to a, in [−π, π].
+TB_INLINE float tbRelativeAngle(tbRot a, tbRot b)
+{
+	float s = a.c * b.s - a.s * b.c;
+	float c = a.c * b.c + a.s * b.s;
+	return atan2f(s, c);
+}
+
+TB_INLINE tbVec2 tbRotateVector(tbRot q, tbVec2 v)
+{
+	tbVec2 r = {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
+	return r;
+}
+
+TB_INLINE tbVec2 tbInvRotateVector(tbRot q, tbVec2 v)
+{
+	tbVec2 r = {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};
+	return r;
+}
+
+TB_INLINE tbVec2 tbTransformPoint(tbTransform t, tbVec2 p)
+{
+	float x = (t.q.c * p.x - t.q.s * p.y) + t.p.x;
+	float y = (t.q.s * p.x + t.q.c * p.y) + t.p.y;
+	tbVec2 r = {x, y};
+	return r;
+}
+
+TB_INLINE tbVec2 tbInvTransformPoint(tbTransform t, tbVec2 p)
+{
+	float vx = p.x - t.p.x;
+	float vy = p.y - t.p.y;
+	tbVec2 r = {t.q.c * vx + t.q.s * vy, -t.q.s * vx + t.q.c * vy};
+	return r;
+}
+
+/// A · B
+TB_INLINE tbTransform tbMulTransforms(tbTransform A, tbTransform B)
+{
+	tbTransform C;
+	C.q = tbMulRot(A.q, B.q);
+	C.p = tbAdd(tbRotateVector(A.q, B.p), A.p);
+	return C;
+}
+
+/// A⁻¹ · B (B expressed in the frame of A).
+TB_INLINE tbTransform tbInvMulTransforms(tbTransform A, tbTransform B)
+{
+	tbTransform C;
+	C.q = tbInvMulRot(A.q, B.q);
+	C.p = tbInvRotateVector(A.q, tbSub(B.p, A.p));
+	return C;
+}
+
+TB_INLINE bool tbIsValidTransform(tbTransform t)
+{
+	return tbIsValidVec2(t.p) && tbIsValidRot(t.q);
+}
+
+TB_INLINE tbVec2 tbMulMV(tbMat22 A, tbVec2 v)
+{
+	tbVec2 u = {A.cx.x * v.x + A.cy.x * v.y, A.cx.y * v.x + A.cy.y * v.y};
+	return u;
+}
+
+/// Inverse of a 2×2 matrix (zero matrix when singular).
+TB_INLINE tbMat22 tbGetInverse22(tbMat22 A)
+{
+	float a = A.cx.x, b = A.cy.x, c = A.cx.y, d = A.cy.y;
+	float det = a * d - b * c;
+	if (det != 0.0f)
+	{
+		det = 1.0f / det;
+	}
+	tbMat22 B = {{det * d, -det * c}, {-det * b, det * a}};
+	return B;
+}
+
+/// Solve A·x = b (zero when A is singular).
+TB_INLINE tbVec2 tbSolve22(tbMat22 A, tbVec2 b)
+{
+	float a11 = A.cx.x, a12 = A.cy.x, a21 = A.cx.y, a22 = A.cy.y;
+	float det = a11 * a22 - a12 * a21;
+	if (det != 0.0f)
+	{
+		det = 1.0f / det;
+	}
+	tbVec2 x = {det * (a22 * b.x - a12 * b.y), det * (a11 * b.y - a21 * b.x)};
+	return x;
+}
+
+/// True when the boxes overlap: they are disjoint exactly when separated on either axis.
+TB_INLINE bool tbAABB_Overlaps(tbAABB a, tbAABB b)
+{
+	return !(b.lowerBound.x > a.upperBound.x || b.lowerBound.y > a.upperBound.y || a.lowerBound.x > b.upperBound.x ||
+			 a.lowerBound.y > b.upperBound.y);
+}
+
+/// True when a contains b (touching boundaries count as inside).
+TB_INLINE bool tbAABB_Contains(tbAABB a, tbAABB b)
+{
+	return a.lowerBound.x <= b.lowerBound.x && a.lowerBound.y <= b.lowerBound.y && b.upperBound.x <= a.upperBound.x &&
+		   b.upperBound.y <= a.upperBound.y;
+}
+
+TB_INLINE tbVec2 tbAABB_Center(tbAABB a)
+{
+	tbVec2 c = {0.5f * (a.lowerBound.x + a.upperBound.x), 0.5f * (a.lowerBound.y + a.upperBound.y)};
+	return c;
+}
+
+/// Half widths.
+TB_INLINE tbVec2 tbAABB_Extents(tbAABB a)
+{
+	tbVec2 e = {0.5f * (a.upperBound.x - a.lowerBound.x), 0.5f * (a.upperBound.y - a.lowerBound.y)};
+	return e;
+}
+
+TB_INLINE tbAABB tbAABB_Union(tbAABB a, tbAABB b)
+{
+	tbAABB c;
+	c.lowerBound = tbMin(a.lowerBound, b.lowerBound);
+	c.upperBound = tbMax(a.upperBound, b.upperBound);
+	return c;
+}
+
+/// Perimeter: the 2D surface-area heuristic's cost measure.
+TB_INLINE float tbAABB_Perimeter(tbAABB a)
+{
+	return 2.0f * ((a.upperBound.x - a.lowerBound.x) + (a.upperBound.y - a.lowerBound.y));
+}
+
+/// Box enlarged by margin on every side.
+TB_INLINE tbAABB tbAABB_Fatten(tbAABB a, float margin)
+{
+	tbAABB c = {{a.lowerBound.x - margin, a.lowerBound.y - margin}, {a.upperBound.x + margin, a.upperBound.y + margin}};
+	return c;
+}
+
+TB_INLINE bool tbIsValidAABB(tbAABB a)
+{
+	tbVec2 d = tbSub(a.upperBound, a.lowerBound);
+	return d.x >= 0.0f && d.y >= 0.0f && tbIsValidVec2(a.lowerBound) && tbIsValidVec2(a.upperBound);
+}
+
+#ifdef __cplusplus
+}
+#endif

@@ -1,0 +1,299 @@
+// Tumble: definition structs, method selection, events, debug drawing, profile and counters.
+#pragma once
+
+#include "base.h"
+#include "collision.h"
+#include "id.h"
+#include "math_functions.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Broad-phase method. Every method reports the same pairs in the same order.
+typedef enum tbBroadPhaseMethod
+{
+	tb_broadPhaseAuto,		   ///< chosen from the scene (currently: the dynamic tree)
+	tb_broadPhaseTree,		   ///< dynamic AABB tree (SAH insertion, rotations)
+	tb_broadPhaseSortAndSweep, ///< sort-and-sweep on the axis of largest variance
+	tb_broadPhaseBruteForce,   ///< all pairs, O(n²): the ground truth
+	tb_broadPhaseMethodCount
+} tbBroadPhaseMethod;
+
+/// Continuous collision (time of impact) method.
+typedef enum tbContinuousMethod
+{
+	tb_continuousDefault,	   ///< quadratic for circle pairs, conservative advancement for the rest
+	tb_continuousOff,		   ///< no time of impact: fast bodies may tunnel
+	tb_continuousConservative, ///< conservative advancement for every pair
+	tb_continuousMethodCount
+} tbContinuousMethod;
+
+/// Contact solver and its position-error treatment.
+typedef enum tbSolverMethod
+{
+	tb_solverSoft,		///< soft step: sub-stepped soft contacts with relaxation (Catto 2024, Box2D v3)
+	tb_solverBaumgarte, ///< sequential impulses with a Baumgarte velocity bias
+	tb_solverNGS,		///< sequential impulses plus a non-linear Gauss–Seidel position pass (Box2D 2.4)
+	tb_solverMethodCount
+} tbSolverMethod;
+
+/// Friction mixing: return the friction of a pair. Default sqrt(frictionA · frictionB).
+typedef float tbFrictionCallback(float frictionA, int userMaterialIdA, float frictionB, int userMaterialIdB);
+
+/// Restitution mixing. Default max(restitutionA, restitutionB).
+typedef float tbRestitutionCallback(float restitutionA, int userMaterialIdA, float restitutionB, int userMaterialIdB);
+
+/// World definition: start from tbDefaultWorldDef().
+typedef struct tbWorldDef
+{
+	tbVec2 gravity;					///< m/s², default (0, −10)
+	float restitutionThreshold;		///< m/s: restitution applies above this approach speed, default 1
+	float hitEventThreshold;		///< m/s: approach speed that makes a hit event, default 1
+	float contactHertz;				///< soft contact stiffness, default 30 Hz
+	float contactDampingRatio;		///< soft contact damping ratio, default 10
+	bool contactHertzFollowsSubStep; ///< soft: stiffness = min(contactHertz·subSteps/4, ¼ sub-step rate)
+	float maxContactPushSpeed;		///< soft: m/s, largest speed at which overlap is pushed out, default 3
+	float maximumLinearSpeed;		///< m/s, clamp on body speed, default 4000
+	bool enableSleep;				///< default true
+	tbBroadPhaseMethod broadPhase;	///< default auto
+	tbNarrowPhaseMethod narrowPhase; ///< default auto
+	tbContinuousMethod continuous;	///< default: quadratic + conservative advancement
+	tbSolverMethod solver;			///< default soft
+	int velocityIterations;			///< Baumgarte/NGS iterations per sub-step, default 8
+	int positionIterations;			///< NGS position iterations per sub-step, default 3
+	int relaxIterations;			///< soft: relaxing iterations per sub-step, default 1
+	bool enableWarmStarting;		///< default true
+	tbFrictionCallback* frictionCallback;
+	tbRestitutionCallback* restitutionCallback;
+	void* userData;
+	int internalValue; ///< set by tbDefaultWorldDef; checked to catch defs not made by it
+} tbWorldDef;
+
+TB_API tbWorldDef tbDefaultWorldDef(void);
+
+typedef enum tbBodyType
+{
+	tb_staticBody = 0,
+	tb_kinematicBody = 1,
+	tb_dynamicBody = 2,
+	tb_bodyTypeCount
+} tbBodyType;
+
+/// Body definition: start from tbDefaultBodyDef().
+typedef struct tbBodyDef
+{
+	tbBodyType type;		///< default static
+	tbVec2 position;		///< world position of the body origin
+	tbRot rotation;			///< default identity
+	tbVec2 linearVelocity;	///< of the centre of mass, m/s
+	float angularVelocity;	///< rad/s
+	float linearDamping;	///< 1/s, ≥ 0
+	float angularDamping;	///< 1/s, ≥ 0
+	float gravityScale;		///< default 1
+	float sleepThreshold;	///< m/s, default TB_LINEAR_SLEEP_TOLERANCE
+	void* userData;
+	const char* name;		///< optional, not copied
+	bool enableSleep;		///< default true
+	bool isAwake;			///< default true
+	bool fixedRotation;		///< default false
+	bool isBullet;			///< swept against dynamic bodies too, default false
+	int internalValue;
+} tbBodyDef;
+
+TB_API tbBodyDef tbDefaultBodyDef(void);
+
+/// Collision filter (as Box2D): A and B collide when (A.category & B.mask) && (B.category & A.mask),
+/// unless they share a group index: positive always collides, negative never.
+typedef struct tbFilter
+{
+	uint64_t categoryBits;
+	uint64_t maskBits;
+	int groupIndex;
+} tbFilter;
+
+TB_API tbFilter tbDefaultFilter(void);
+
+/// Filter for queries.
+typedef struct tbQueryFilter
+{
+	uint64_t categoryBits;
+	uint64_t maskBits;
+} tbQueryFilter;
+
+TB_API tbQueryFilter tbDefaultQueryFilter(void);
+
+/// Shape definition: start from tbDefaultShapeDef().
+typedef struct tbShapeDef
+{
+	void* userData;
+	float friction;		 ///< ≥ 0, default 0.6
+	float restitution;	 ///< ≥ 0, default 0
+	float density;		 ///< kg/m², ≥ 0, default 1
+	int userMaterialId;	 ///< passed to the mixing callbacks
+	tbFilter filter;
+	bool isSensor;			   ///< reports overlaps, no response
+	bool enableSensorEvents;   ///< default true
+	bool enableContactEvents;  ///< default true
+	bool enableHitEvents;	   ///< default false
+	bool updateBodyMass;	   ///< recompute the body's mass, default true
+	int internalValue;
+} tbShapeDef;
+
+TB_API tbShapeDef tbDefaultShapeDef(void);
+
+// ---------------------------------------------------------------------------------------------
+// Events, read after the step. Arrays stay valid until the next step or world destruction.
+
+typedef struct tbContactBeginTouchEvent
+{
+	tbShapeId shapeIdA;
+	tbShapeId shapeIdB;
+} tbContactBeginTouchEvent;
+
+typedef struct tbContactEndTouchEvent
+{
+	tbShapeId shapeIdA;
+	tbShapeId shapeIdB;
+} tbContactEndTouchEvent;
+
+typedef struct tbContactHitEvent
+{
+	tbShapeId shapeIdA;
+	tbShapeId shapeIdB;
+	tbVec2 point;
+	tbVec2 normal;
+	float approachSpeed; ///< m/s, > hitEventThreshold
+} tbContactHitEvent;
+
+typedef struct tbContactEvents
+{
+	const tbContactBeginTouchEvent* beginEvents;
+	const tbContactEndTouchEvent* endEvents;
+	const tbContactHitEvent* hitEvents;
+	int beginCount;
+	int endCount;
+	int hitCount;
+} tbContactEvents;
+
+typedef struct tbSensorBeginTouchEvent
+{
+	tbShapeId sensorShapeId;
+	tbShapeId visitorShapeId;
+} tbSensorBeginTouchEvent;
+
+typedef struct tbSensorEndTouchEvent
+{
+	tbShapeId sensorShapeId;
+	tbShapeId visitorShapeId;
+} tbSensorEndTouchEvent;
+
+typedef struct tbSensorEvents
+{
+	const tbSensorBeginTouchEvent* beginEvents;
+	const tbSensorEndTouchEvent* endEvents;
+	int beginCount;
+	int endCount;
+} tbSensorEvents;
+
+/// A body that moved in the step (awake bodies), or fell asleep.
+typedef struct tbBodyMoveEvent
+{
+	tbTransform transform;
+	tbBodyId bodyId;
+	void* userData;
+	bool fellAsleep;
+} tbBodyMoveEvent;
+
+typedef struct tbBodyEvents
+{
+	const tbBodyMoveEvent* moveEvents;
+	int moveCount;
+} tbBodyEvents;
+
+// ---------------------------------------------------------------------------------------------
+// Profile and counters
+
+/// Milliseconds spent in each stage of the last step.
+typedef struct tbProfile
+{
+	float step;
+	float pairs;
+	float collide;
+	float islands;
+	float solve;
+	float continuous;
+	float sleep;
+	float events;
+} tbProfile;
+
+/// Counts from the last step.
+typedef struct tbCounters
+{
+	int bodyCount;
+	int shapeCount;
+	int contactCount;		 ///< contacts whose fat boxes overlap
+	int touchingCount;		 ///< contacts with manifold points
+	int awakeBodyCount;
+	int islandCount;		 ///< awake islands
+	int treeHeight;			 ///< dynamic-tree height (0 when another broad phase runs)
+	int pairCandidates;		 ///< new pairs found by the broad phase this step
+	int proxyMoves;			 ///< proxies whose fat box was updated this step
+	int fastBodies;			 ///< bodies swept by continuous collision this step
+	int toiCalls;			 ///< time-of-impact queries this step (0 when nothing is fast)
+	int toiIterationsMax;	 ///< largest conservative-advancement iteration count this step
+	int toiFailures;		 ///< time-of-impact queries that hit the iteration cap
+	int gjkManifolds;		 ///< manifolds computed by the GJK/EPA path
+	int satManifolds;		 ///< manifolds computed by SAT
+	int byteCount;			 ///< bytes allocated by this world
+} tbCounters;
+
+// ---------------------------------------------------------------------------------------------
+// Debug drawing: the library walks the world and calls these. Any may be NULL.
+
+typedef enum tbHexColor
+{
+	tb_colorBox = 0x4E79A7,
+	tb_colorSleeping = 0x9C9C9C,
+	tb_colorStatic = 0x59A14F,
+	tb_colorKinematic = 0x76B7B2,
+	tb_colorContact = 0xE15759,
+	tb_colorNormal = 0xF28E2B,
+	tb_colorAABB = 0xB07AA1,
+	tb_colorTree = 0xBAB0AC,
+} tbHexColor;
+
+typedef struct tbDebugDraw
+{
+	/// Closed polygon outline (world vertices).
+	void (*DrawPolygon)(const tbVec2* vertices, int vertexCount, uint32_t color, void* context);
+	/// Filled polygon in its body frame, rounded by radius.
+	void (*DrawSolidPolygon)(tbTransform transform, const tbVec2* vertices, int vertexCount, float radius,
+							 uint32_t color, void* context);
+	/// Circle outline.
+	void (*DrawCircle)(tbVec2 center, float radius, uint32_t color, void* context);
+	/// Filled circle with a radius line showing the rotation.
+	void (*DrawSolidCircle)(tbTransform transform, float radius, uint32_t color, void* context);
+	/// Filled capsule (world points).
+	void (*DrawSolidCapsule)(tbVec2 p1, tbVec2 p2, float radius, uint32_t color, void* context);
+	/// Line segment.
+	void (*DrawSegment)(tbVec2 p1, tbVec2 p2, uint32_t color, void* context);
+	/// Point of a given size in pixels.
+	void (*DrawPoint)(tbVec2 p, float size, uint32_t color, void* context);
+
+	/// Only shapes overlapping this box are drawn (when useDrawingBounds).
+	tbAABB drawingBounds;
+	bool useDrawingBounds;
+	bool drawShapes;
+	bool drawAABBs;
+	bool drawTree;
+	bool drawContacts;
+	bool drawContactNormals;
+	void* context;
+} tbDebugDraw;
+
+TB_API tbDebugDraw tbDefaultDebugDraw(void);
+
+#ifdef __cplusplus
+}
+#endif

@@ -1,0 +1,98 @@
+// Internal: the broad phase, one interface over three methods (dynamic tree, sort-and-sweep,
+// brute force). Each method lives in its own file with the same functions in the same order:
+// dynamic_tree.c (the stand-alone tree, used here through tbBroadPhase), sort_and_sweep.c,
+// brute_force.c; broad_phase.c dispatches and builds the pair set.
+//
+// Contract (what makes trajectories identical under every method):
+// - A proxy is a fat AABB plus category bits plus an int shape index (the world's shape id).
+// - tbBroadPhase_UpdatePairs reports every pair of proxies whose fat boxes overlap and of which at
+//   least one was created or moved since the last UpdatePairs, exactly once, as (shapeIndexA <
+//   shapeIndexB), in increasing order of (shapeIndexA, shapeIndexB). The world then filters
+//   (same body, static–static, category/mask/group, existing contact).
+// - Static proxies (bodyType static) never pair with each other.
+#pragma once
+
+#include "tumble/collision.h"
+#include "tumble/types.h"
+
+typedef struct tbSortAndSweep tbSortAndSweep;
+typedef struct tbBruteForce tbBruteForce;
+
+/// A candidate pair: shape indices with a < b.
+typedef struct tbShapePair
+{
+	int a, b;
+} tbShapePair;
+
+/// Proxy kinds: static proxies are kept apart (static tree) and never pair with each other.
+typedef enum tbProxyType
+{
+	tb_proxyStatic = 0,
+	tb_proxyMovable = 1,
+} tbProxyType;
+
+typedef struct tbBroadPhase
+{
+	tbBroadPhaseMethod method; ///< resolved (never auto)
+
+	// Proxy table indexed by proxy key: the broad phase owns its proxies' boxes, categories and
+	// shape indices whatever the method.
+	struct tbBroadProxy* proxies;
+	int proxyCapacity;
+	int proxyCount;
+	int freeProxy;
+
+	// Keys of proxies created or moved since the last UpdatePairs.
+	int* moveBuffer;
+	int moveCount;
+	int moveCapacity;
+
+	// Pairs found by the last UpdatePairs (sorted, unique).
+	tbShapePair* pairs;
+	int pairCount;
+	int pairCapacity;
+
+	// Method state. Only the selected method's state is live.
+	tbDynamicTree staticTree;
+	tbDynamicTree movableTree;
+	tbSortAndSweep* sweep;
+	tbBruteForce* brute;
+} tbBroadPhase;
+
+/// Create with a method (auto resolves to the tree).
+void tbBroadPhase_Create(tbBroadPhase* bp, tbBroadPhaseMethod method);
+void tbBroadPhase_Destroy(tbBroadPhase* bp);
+
+/// Switch method, rebuilding method state from the proxy table; every proxy counts as moved.
+void tbBroadPhase_SetMethod(tbBroadPhase* bp, tbBroadPhaseMethod method);
+
+/// Add a proxy with a fat AABB; returns its key. The proxy counts as moved.
+int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex, tbProxyType type);
+void tbBroadPhase_DestroyProxy(tbBroadPhase* bp, int proxyKey);
+
+/// Replace a proxy's fat AABB; the proxy counts as moved.
+void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB);
+
+/// Fill bp->pairs with the pair set described above and clear the move buffer.
+void tbBroadPhase_UpdatePairs(tbBroadPhase* bp);
+
+tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey);
+bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB);
+
+/// Visit proxies overlapping aabb whose category bits share a bit with maskBits (callback gets
+/// proxy key and shape index; return false to stop).
+void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+						void* context);
+
+/// Ray cast over the proxies (callback as for the tree).
+void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
+						  tbTreeRayCastCallbackFcn* callback, void* context);
+
+/// Height of the movable tree, or 0 for other methods.
+int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp);
+
+/// Debug drawing of the tree nodes (tree method only).
+void tbBroadPhase_VisitTreeNodes(const tbBroadPhase* bp, tbTreeNodeFcn* fcn, void* context);
+
+/// Checks internal consistency (tests). True when valid.
+bool tbBroadPhase_Validate(const tbBroadPhase* bp);

@@ -1,0 +1,193 @@
+#define _POSIX_C_SOURCE 200112L
+// Allocation with a live byte count, the error hook, the assert hook and timing.
+#include "core.h"
+
+#include "tumble/math_functions.h"
+
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define TB_ALIGNMENT 32
+
+static tbAllocFcn* s_allocFcn = NULL;
+static tbFreeFcn* s_freeFcn = NULL;
+static _Atomic int s_byteCount = 0;
+static _Atomic int s_errorCount = 0;
+static tbErrorFcn* s_errorFcn = NULL;
+static void* s_errorContext = NULL;
+static tbAssertFcn* s_assertFcn = NULL;
+
+tbVersion tbGetVersion(void)
+{
+	tbVersion v = {0, 1, 0};
+	return v;
+}
+
+void tbSetAllocator(tbAllocFcn* allocFcn, tbFreeFcn* freeFcn)
+{
+	s_allocFcn = allocFcn;
+	s_freeFcn = freeFcn;
+}
+
+int tbGetByteCount(void)
+{
+	return atomic_load(&s_byteCount);
+}
+
+void* tbAlloc(int size)
+{
+	if (size <= 0)
+	{
+		return NULL;
+	}
+	// Round up to the alignment so aligned_alloc accepts the size.
+	int rounded = ((size - 1) | (TB_ALIGNMENT - 1)) + 1;
+	void* p = s_allocFcn != NULL ? s_allocFcn((unsigned int)rounded, TB_ALIGNMENT)
+								 : aligned_alloc(TB_ALIGNMENT, (size_t)rounded);
+	if (p == NULL)
+	{
+		fprintf(stderr, "tumble: out of memory allocating %d bytes\n", size);
+		abort();
+	}
+	atomic_fetch_add(&s_byteCount, size);
+	return p;
+}
+
+void tbFree(void* memory, int size)
+{
+	if (memory == NULL)
+	{
+		return;
+	}
+	if (s_freeFcn != NULL)
+	{
+		s_freeFcn(memory);
+	}
+	else
+	{
+		free(memory);
+	}
+	atomic_fetch_sub(&s_byteCount, size);
+}
+
+void* tbGrowAlloc(void* oldMemory, int oldSize, int newSize)
+{
+	void* p = tbAlloc(newSize);
+	if (oldSize > 0 && oldMemory != NULL)
+	{
+		memcpy(p, oldMemory, (size_t)(oldSize < newSize ? oldSize : newSize));
+		tbFree(oldMemory, oldSize);
+	}
+	return p;
+}
+
+static void tbDefaultErrorFcn(const char* message, void* context)
+{
+	(void)context;
+	fprintf(stderr, "tumble error: %s\n", message);
+}
+
+void tbSetErrorCallback(tbErrorFcn* errorFcn, void* context)
+{
+	s_errorFcn = errorFcn;
+	s_errorContext = context;
+}
+
+int tbGetErrorCount(void)
+{
+	return atomic_load(&s_errorCount);
+}
+
+void tbReportError(const char* function, const char* format, ...)
+{
+	char message[512];
+	int n = snprintf(message, sizeof(message), "%s: ", function);
+	va_list args;
+	va_start(args, format);
+	vsnprintf(message + n, sizeof(message) - (size_t)n, format, args);
+	va_end(args);
+	atomic_fetch_add(&s_errorCount, 1);
+	tbErrorFcn* fcn = s_errorFcn != NULL ? s_errorFcn : tbDefaultErrorFcn;
+	fcn(message, s_errorContext);
+}
+
+bool tbCheckFloat(const char* function, const char* name, float value)
+{
+	if (tbIsValidFloat(value) == false)
+	{
+		tbReportError(function, "%s is %g (NaN or infinity); pass a finite number", name, (double)value);
+		return false;
+	}
+	return true;
+}
+
+bool tbCheckNonNegative(const char* function, const char* name, float value)
+{
+	if (tbIsValidFloat(value) == false || value < 0.0f)
+	{
+		tbReportError(function, "%s is %g (must be finite and >= 0); pass a non-negative number", name, (double)value);
+		return false;
+	}
+	return true;
+}
+
+bool tbCheckPositive(const char* function, const char* name, float value)
+{
+	if (tbIsValidFloat(value) == false || value <= 0.0f)
+	{
+		tbReportError(function, "%s is %g (must be finite and > 0); pass a positive number", name, (double)value);
+		return false;
+	}
+	return true;
+}
+
+bool tbCheckPointer(const char* function, const char* name, const void* pointer)
+{
+	if (pointer == NULL)
+	{
+		tbReportError(function, "%s is NULL; pass a valid pointer", name);
+		return false;
+	}
+	return true;
+}
+
+void tbSetAssertFcn(tbAssertFcn* assertFcn)
+{
+	s_assertFcn = assertFcn;
+}
+
+int tbInternalAssert(const char* condition, const char* fileName, int lineNumber)
+{
+	if (s_assertFcn != NULL)
+	{
+		return s_assertFcn(condition, fileName, lineNumber);
+	}
+	fprintf(stderr, "tumble assertion failed: %s, %s:%d\n", condition, fileName, lineNumber);
+	abort();
+}
+
+uint64_t tbGetTicks(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (uint64_t)ts.tv_sec * 1000000000ull + (uint64_t)ts.tv_nsec;
+}
+
+float tbGetMilliseconds(uint64_t ticks)
+{
+	return (float)((double)(tbGetTicks() - ticks) * 1e-6);
+}
+
+bool tbCheckVec2(const char* function, const char* name, tbVec2 value)
+{
+	if (tbIsValidVec2(value) == false)
+	{
+		tbReportError(function, "%s is (%g, %g) (NaN or infinity); pass finite coordinates", name, (double)value.x,
+					  (double)value.y);
+		return false;
+	}
+	return true;
+}

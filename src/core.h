@@ -1,0 +1,52 @@
+// Internal: allocation through the user hook with a live byte count, error reporting, asserts.
+#pragma once
+
+#include "tumble/base.h"
+#include "tumble/math_functions.h"
+
+#include <stdarg.h>
+
+#if defined(__GNUC__)
+#define TB_BREAKPOINT __builtin_trap()
+#define TB_PRINTF_FORMAT(a, b) __attribute__((format(printf, a, b)))
+#else
+#define TB_BREAKPOINT ((void)0)
+#define TB_PRINTF_FORMAT(a, b)
+#endif
+
+int tbInternalAssert(const char* condition, const char* fileName, int lineNumber);
+
+/// Internal invariant (never user input: that goes through tbReportError).
+#define TB_ASSERT(condition)                                                                                          \
+	do                                                                                                                \
+	{                                                                                                                 \
+		if (!(condition) && tbInternalAssert(#condition, __FILE__, __LINE__))                                         \
+		{                                                                                                             \
+			TB_BREAKPOINT;                                                                                            \
+		}                                                                                                             \
+	} while (0)
+
+#if defined(TUMBLE_VALIDATE)
+#define TB_VALIDATE 1
+#else
+#define TB_VALIDATE 0
+#endif
+
+/// Allocate size bytes (32-byte aligned) through the hook. Counts toward tbGetByteCount.
+void* tbAlloc(int size);
+
+/// Free memory from tbAlloc; size must be the size that was allocated.
+void tbFree(void* memory, int size);
+
+/// Grow (or shrink) an allocation, copying min(oldSize, newSize) bytes.
+void* tbGrowAlloc(void* oldMemory, int oldSize, int newSize);
+
+/// Report a rejected call: "function: message". Formats like printf.
+void tbReportError(const char* function, const char* format, ...) TB_PRINTF_FORMAT(2, 3);
+
+/// Checks that report an error naming function and argument, returning false when bad.
+bool tbCheckFloat(const char* function, const char* name, float value);
+bool tbCheckNonNegative(const char* function, const char* name, float value);
+bool tbCheckPositive(const char* function, const char* name, float value);
+bool tbCheckPointer(const char* function, const char* name, const void* pointer);
+bool tbCheckVec2(const char* function, const char* name, tbVec2 value);
