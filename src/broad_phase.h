@@ -31,6 +31,18 @@ typedef enum tbProxyType
 	tb_proxyMovable = 1,
 } tbProxyType;
 
+/// One slot of the proxy table, shared by the method files. 48 bytes.
+typedef struct tbBroadProxy
+{
+	tbAABB aabb;		   ///< fat box
+	uint64_t categoryBits; ///< passed to queries (pairs are not filtered here)
+	int shapeIndex;		   ///< the world's shape index: pairs are named and ordered by it
+	tbProxyType type;
+	int handle;	   ///< method-specific: tree proxy id (tree method); next free slot when free
+	int moveIndex; ///< index in moveBuffer, or -1 when not moved since the last UpdatePairs
+	bool isFree;
+} tbBroadProxy;
+
 typedef struct tbBroadPhase
 {
 	tbBroadPhaseMethod method; ///< resolved (never auto)
@@ -57,7 +69,15 @@ typedef struct tbBroadPhase
 	tbDynamicTree movableTree;
 	tbSortAndSweep* sweep;
 	tbBruteForce* brute;
+
+	// Static proxies inserted into the static tree since its last rebuild (tree method): a bulk
+	// of them triggers a binned SAH rebuild on the next UpdatePairs.
+	int staticInsertCount;
 } tbBroadPhase;
+
+/// Used by the method files while finding pairs: append the pair of two proxies, named by shape
+/// index with a < b. UpdatePairs sorts and removes duplicates afterwards.
+void tbBroadPhase_AddPair(tbBroadPhase* bp, int proxyKeyA, int proxyKeyB);
 
 /// Create with a method (auto resolves to the tree).
 void tbBroadPhase_Create(tbBroadPhase* bp, tbBroadPhaseMethod method);

@@ -1,0 +1,641 @@
+// Scene catalogue. Sizes and counts follow /work/shared/STRESS.md and the set-ups of Box2D v3's
+// benchmark scenes (numbers only). Lengths in metres, densities in kg/m², 60 Hz unless said.
+#include "catalogue.h"
+
+#include <math.h>
+#include <string.h>
+
+#define DEG_TO_RAD (TB_PI / 180.0f)
+
+// ---------------------------------------------------------------------------------------------
+// Helpers
+
+static tbVec2 V(float x, float y)
+{
+	return (tbVec2){x, y};
+}
+
+static int AddBoxBody(Scene* scene, tbBodyType type, tbVec2 position, float angle, float hx, float hy, float density,
+					  float friction)
+{
+	int body = Scene_AddBody(scene, type, position, angle);
+	tbGeometry box = Scene_MakeBoxGeometry(hx, hy, tb_vec2_zero, 0.0f);
+	Scene_AddGeometry(scene, body, &box, density, friction);
+	return body;
+}
+
+static int AddCircleBody(Scene* scene, tbBodyType type, tbVec2 position, float radius, float density, float friction)
+{
+	int body = Scene_AddBody(scene, type, position, 0.0f);
+	tbGeometry circle = Scene_MakeCircleGeometry(tb_vec2_zero, radius);
+	Scene_AddGeometry(scene, body, &circle, density, friction);
+	return body;
+}
+
+// The usual ground: a static box of half size (hx, 1) whose top is at y = 0.
+static int AddGround(Scene* scene, float hx, float friction)
+{
+	int body = AddBoxBody(scene, tb_staticBody, V(0.0f, -1.0f), 0.0f, hx, 1.0f, 1.0f, friction);
+	memcpy(scene->bodies[body].name, "ground", 7);
+	return body;
+}
+
+static void SetLastShapeRestitution(Scene* scene, int body, float restitution)
+{
+	SceneBody* b = scene->bodies + body;
+	b->shapes[b->shapeCount - 1].restitution = restitution;
+}
+
+// Pyramid of squares of half size a whose bottom row rests on y = baseY, centred on centerX.
+static void AddPyramid(Scene* scene, int baseCount, float a, float centerX, float baseY, float density, float friction)
+{
+	for (int row = 0; row < baseCount; ++row)
+	{
+		float y = baseY + (2.0f * (float)row + 1.0f) * a;
+		int count = baseCount - row;
+		for (int j = 0; j < count; ++j)
+		{
+			float x = centerX + (2.0f * (float)j - (float)(count - 1)) * a;
+			AddBoxBody(scene, tb_dynamicBody, V(x, y), 0.0f, a, a, density, friction);
+		}
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// Stacks and pyramids
+
+static Scene* BuildPyramid(void)
+{
+	Scene* scene = Scene_Create();
+	scene->enableSleep = false;
+	scene->steps = 300;
+	AddGround(scene, 100.0f, 0.6f);
+	AddPyramid(scene, 20, 0.5f, 0.0f, 0.0f, 1.0f, 0.6f);
+	return scene;
+}
+
+static Scene* BuildVerticalStack(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 300;
+	AddGround(scene, 20.0f, 0.6f);
+	for (int i = 0; i < 10; ++i)
+	{
+		AddBoxBody(scene, tb_dynamicBody, V(0.0f, 0.5f + (float)i), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
+	}
+	return scene;
+}
+
+static Scene* BuildDroppedStack(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	AddGround(scene, 100.0f, 0.6f);
+	for (int i = 0; i < 15; ++i)
+	{
+		float x = (i % 2 == 0) ? 0.01f : -0.01f;
+		AddBoxBody(scene, tb_dynamicBody, V(x, 0.55f + 1.1f * (float)i), 0.0f, 0.5f, 0.5f, 1.0f, 0.3f);
+	}
+	return scene;
+}
+
+static Scene* BuildTouchingStack(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	AddGround(scene, 100.0f, 0.6f);
+	for (int i = 0; i < 20; ++i)
+	{
+		AddBoxBody(scene, tb_dynamicBody, V(0.0f, 0.5f + (float)i), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
+	}
+	return scene;
+}
+
+// Five levels of A-frames (cards leaning ±25°, 0.175 m apart) with flat cards bridging
+// neighbouring frames; each level is 0.37 m higher and starts 0.175 m further right.
+static Scene* BuildCardHouse(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	AddGround(scene, 10.0f, 0.7f);
+	float hx = 0.001f, hy = 0.2f;
+	float y = 0.18f, z0 = 0.0f;
+	for (int frames = 5; frames > 0; --frames)
+	{
+		float z = z0;
+		for (int i = 0; i < frames; ++i)
+		{
+			if (i != frames - 1)
+			{
+				AddBoxBody(scene, tb_dynamicBody, V(z + 0.25f, y + 0.185f), 0.5f * TB_PI, hx, hy, 1.0f, 0.7f);
+			}
+			AddBoxBody(scene, tb_dynamicBody, V(z, y), -25.0f * DEG_TO_RAD, hx, hy, 1.0f, 0.7f);
+			z += 0.175f;
+			AddBoxBody(scene, tb_dynamicBody, V(z, y), 25.0f * DEG_TO_RAD, hx, hy, 1.0f, 0.7f);
+			z += 0.175f;
+		}
+		y += 0.37f;
+		z0 += 0.175f;
+	}
+	return scene;
+}
+
+// Twenty 0.2 × 2 m dominoes 1 m apart; the first starts tipped 0.25 rad towards the others.
+static Scene* BuildDominoes(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 400;
+	AddGround(scene, 20.0f, 0.6f);
+	float hx = 0.1f, hy = 1.0f, tilt = -0.25f;
+	float tippedY = hy * cosf(tilt) + hx * sinf(-tilt);
+	for (int i = 0; i < 20; ++i)
+	{
+		float angle = i == 0 ? tilt : 0.0f;
+		float y = i == 0 ? tippedY : hy;
+		AddBoxBody(scene, tb_dynamicBody, V(-9.5f + (float)i, y), angle, hx, hy, 1.0f, 0.6f);
+	}
+	return scene;
+}
+
+static Scene* BuildMassRatio(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 300;
+	AddGround(scene, 20.0f, 0.6f);
+	AddBoxBody(scene, tb_dynamicBody, V(0.0f, 0.5f), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
+	AddBoxBody(scene, tb_dynamicBody, V(0.0f, 1.5f), 0.0f, 0.5f, 0.5f, 100.0f, 0.6f);
+	return scene;
+}
+
+// Three base-10 pyramids of 2 m boxes (4 kg); each top box is replaced by one 100, 200 and 300×
+// denser, dropped from 2 m above its seat (seat centre at y = 19 m).
+static Scene* BuildHeavyOnPyramids(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	AddGround(scene, 100.0f, 0.5f);
+	for (int p = 0; p < 3; ++p)
+	{
+		float centerX = -25.0f + 25.0f * (float)p;
+		for (int row = 0; row < 9; ++row)
+		{
+			int count = 10 - row;
+			for (int j = 0; j < count; ++j)
+			{
+				float x = centerX + (2.0f * (float)j - (float)(count - 1)) * 1.0f;
+				AddBoxBody(scene, tb_dynamicBody, V(x, 1.0f + 2.0f * (float)row), 0.0f, 1.0f, 1.0f, 1.0f, 0.5f);
+			}
+		}
+		float density = 100.0f * (float)(p + 1);
+		AddBoxBody(scene, tb_dynamicBody, V(centerX, 21.0f), 0.0f, 1.0f, 1.0f, density, 0.5f);
+	}
+	return scene;
+}
+
+// A 20 m box (400 kg) dropped from y = 26 onto two 1 m boxes (1 kg) at x = ±9.
+static Scene* BuildBigOnSmall(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	AddGround(scene, 40.0f, 0.6f);
+	AddBoxBody(scene, tb_dynamicBody, V(-9.0f, 0.5f), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
+	AddBoxBody(scene, tb_dynamicBody, V(9.0f, 0.5f), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
+	AddBoxBody(scene, tb_dynamicBody, V(0.0f, 26.0f), 0.0f, 10.0f, 10.0f, 1.0f, 0.6f);
+	return scene;
+}
+
+// A base-4 pyramid of 1 m boxes whose centres are 0.75 m apart: every neighbour overlaps by 25%.
+static Scene* BuildOverlapRecovery(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 120;
+	AddGround(scene, 20.0f, 0.6f);
+	float spacing = 0.75f;
+	for (int row = 0; row < 4; ++row)
+	{
+		int count = 4 - row;
+		for (int j = 0; j < count; ++j)
+		{
+			float x = (2.0f * (float)j - (float)(count - 1)) * 0.5f * spacing;
+			AddBoxBody(scene, tb_dynamicBody, V(x, 0.5f + spacing * (float)row), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
+		}
+	}
+	return scene;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Friction and restitution
+
+// A point on the top face of a static slab of half height slabHy tilted by angle, at distance
+// along from the slab centre, raised by the half height hy of the box resting there.
+static tbVec2 OnSlope(tbVec2 center, float angle, float slabHy, float along, float hy)
+{
+	tbVec2 t = V(cosf(angle), sinf(angle));
+	tbVec2 n = V(-sinf(angle), cosf(angle));
+	return tbAdd(center, tbAdd(tbMulSV(along, t), tbMulSV(slabHy + hy, n)));
+}
+
+// A 1 m box (friction 0.6) at rest on a 20° slope (friction 0.6): μ = 0.6 > tan 20° = 0.36, so it must hold.
+static Scene* BuildSlope(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	float angle = 20.0f * DEG_TO_RAD;
+	AddBoxBody(scene, tb_staticBody, V(0.0f, 0.0f), angle, 10.0f, 0.5f, 1.0f, 0.6f);
+	AddBoxBody(scene, tb_dynamicBody, OnSlope(V(0.0f, 0.0f), angle, 0.5f, 0.0f, 0.5f), angle, 0.5f, 0.5f, 1.0f, 0.6f);
+	return scene;
+}
+
+// Five 30° ramps (friction 0.8), one above the other, each with a box of friction 0.8, 0.6, 0.4,
+// 0.2, 0 near its top. Mixed friction is sqrt(a·b): 0.8, 0.69, 0.57, 0.4, 0 against tan 30° = 0.577.
+static Scene* BuildRamp(void)
+{
+	static const float frictions[5] = {0.8f, 0.6f, 0.4f, 0.2f, 0.0f};
+	Scene* scene = Scene_Create();
+	scene->steps = 300;
+	AddGround(scene, 30.0f, 0.6f);
+	float angle = -30.0f * DEG_TO_RAD;
+	for (int i = 0; i < 5; ++i)
+	{
+		tbVec2 center = V(0.0f, 4.0f + 4.0f * (float)i);
+		AddBoxBody(scene, tb_staticBody, center, angle, 5.0f, 0.25f, 1.0f, 0.8f);
+		tbVec2 p = OnSlope(center, angle, 0.25f, -3.5f, 0.5f);
+		AddBoxBody(scene, tb_dynamicBody, p, angle, 0.5f, 0.5f, 1.0f, frictions[i]);
+	}
+	return scene;
+}
+
+// Five balls (r 0.5, e = 1, frictionless) touching in a row, a sixth arriving at 2.71 m/s; no gravity.
+static Scene* BuildNewtonsCradle(void)
+{
+	Scene* scene = Scene_Create();
+	scene->gravity = V(0.0f, 0.0f);
+	scene->steps = 180;
+	for (int i = 0; i < 5; ++i)
+	{
+		int body = AddCircleBody(scene, tb_dynamicBody, V((float)i, 0.0f), 0.5f, 1.0f, 0.0f);
+		SetLastShapeRestitution(scene, body, 1.0f);
+	}
+	int striker = AddCircleBody(scene, tb_dynamicBody, V(-3.0f, 0.0f), 0.5f, 1.0f, 0.0f);
+	SetLastShapeRestitution(scene, striker, 1.0f);
+	scene->bodies[striker].linearVelocity = V(2.71f, 0.0f);
+	return scene;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Continuous collision
+
+// Five r 0.1 bullets at 300 m/s into a static 0.1 m thick wall; no gravity.
+static Scene* BuildBulletsWall(void)
+{
+	Scene* scene = Scene_Create();
+	scene->gravity = V(0.0f, 0.0f);
+	scene->steps = 60;
+	AddBoxBody(scene, tb_staticBody, V(0.0f, 0.0f), 0.0f, 0.05f, 3.0f, 1.0f, 0.6f);
+	for (int i = 0; i < 5; ++i)
+	{
+		int body = AddCircleBody(scene, tb_dynamicBody, V(-10.0f, -2.0f + (float)i), 0.1f, 1.0f, 0.6f);
+		scene->bodies[body].linearVelocity = V(300.0f, 0.0f);
+		scene->bodies[body].bullet = true;
+	}
+	return scene;
+}
+
+// A thin 4 × 0.1 m box at 100 m/s spinning at 50 rad/s towards a static 0.1 m wall; no gravity.
+static Scene* BuildSpinningBox(void)
+{
+	Scene* scene = Scene_Create();
+	scene->gravity = V(0.0f, 0.0f);
+	scene->steps = 60;
+	AddBoxBody(scene, tb_staticBody, V(0.0f, 0.0f), 0.0f, 0.05f, 5.0f, 1.0f, 0.6f);
+	int body = AddBoxBody(scene, tb_dynamicBody, V(-10.0f, 0.0f), 0.0f, 2.0f, 0.05f, 1.0f, 0.6f);
+	scene->bodies[body].linearVelocity = V(100.0f, 0.0f);
+	scene->bodies[body].angularVelocity = 50.0f;
+	return scene;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Crowds
+
+// Four static capsules (r 0.5) around a 20 × 19.5 m box; 625 circles r 0.5 on a 25 × 25 grid
+// 0.72 m apart (more circle area than box area); no gravity.
+static Scene* BuildConfined(void)
+{
+	Scene* scene = Scene_Create();
+	scene->gravity = V(0.0f, 0.0f);
+	scene->steps = 600;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	tbGeometry walls[4] = {
+		Scene_MakeCapsuleGeometry(V(-10.5f, 0.0f), V(10.5f, 0.0f), 0.5f),
+		Scene_MakeCapsuleGeometry(V(-10.5f, 0.0f), V(-10.5f, 20.5f), 0.5f),
+		Scene_MakeCapsuleGeometry(V(10.5f, 0.0f), V(10.5f, 20.5f), 0.5f),
+		Scene_MakeCapsuleGeometry(V(-10.5f, 20.5f), V(10.5f, 20.5f), 0.5f),
+	};
+	for (int i = 0; i < 4; ++i)
+	{
+		Scene_AddGeometry(scene, ground, walls + i, 1.0f, 0.6f);
+	}
+	for (int i = 0; i < 25; ++i)
+	{
+		for (int j = 0; j < 25; ++j)
+		{
+			tbVec2 p = V(-8.64f + 0.72f * (float)i, 10.25f - 8.64f + 0.72f * (float)j);
+			AddCircleBody(scene, tb_dynamicBody, p, 0.5f, 1.0f, 0.6f);
+		}
+	}
+	return scene;
+}
+
+// One rigid "human" (no joints): legs and torso capsules and a head circle, origin at the feet.
+static void AddRigidHuman(Scene* scene, int body)
+{
+	tbGeometry legs = Scene_MakeCapsuleGeometry(V(0.0f, 0.2f), V(0.0f, 0.75f), 0.12f);
+	tbGeometry torso = Scene_MakeCapsuleGeometry(V(0.0f, 1.0f), V(0.0f, 1.35f), 0.15f);
+	tbGeometry head = Scene_MakeCircleGeometry(V(0.0f, 1.68f), 0.13f);
+	Scene_AddGeometry(scene, body, &legs, 1.0f, 0.6f);
+	Scene_AddGeometry(scene, body, &torso, 1.0f, 0.6f);
+	Scene_AddGeometry(scene, body, &head, 1.0f, 0.6f);
+}
+
+// A body of one of four kinds, chosen by kind % 4: rigid human, circle, box, triangle.
+static void AddRainBody(Scene* scene, tbVec2 position, int kind)
+{
+	int body = Scene_AddBody(scene, tb_dynamicBody, position, 0.0f);
+	tbVec2 triangle[3] = {V(-0.3f, 0.0f), V(0.3f, 0.0f), V(0.0f, 0.5f)};
+	tbGeometry geometry;
+	switch (kind % 4)
+	{
+		case 0:
+			AddRigidHuman(scene, body);
+			return;
+		case 1:
+			geometry = Scene_MakeCircleGeometry(V(0.0f, 0.25f), 0.25f);
+			break;
+		case 2:
+			geometry = Scene_MakeBoxGeometry(0.2f, 0.2f, V(0.0f, 0.2f), 0.0f);
+			break;
+		default:
+			geometry = Scene_MakePolygonGeometry(triangle, 3, 0.0f);
+			break;
+	}
+	Scene_AddGeometry(scene, body, &geometry, 1.0f, 0.6f);
+}
+
+// Box2D v3's rain benchmark without joints: 5 floors (each 501 static 0.5 m boxes, 45 m apart);
+// above each floor 40 groups of 5 bodies, every body a rigid human or a circle, box or triangle.
+// Box2D drops jointed ragdolls a column at a time; here everything is present from the start.
+static Scene* BuildRain(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 1000;
+	const int rowCount = 5, columnCount = 40, groupSize = 5, gridCount = 500;
+	const float gridSize = 0.5f;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	for (int i = 0; i < rowCount; ++i)
+	{
+		for (int j = 0; j <= gridCount; ++j)
+		{
+			tbVec2 center = V(-0.5f * (float)gridCount * gridSize + (float)j * gridSize, 45.0f * (float)i);
+			tbGeometry box = Scene_MakeBoxGeometry(0.5f * gridSize, 0.5f * gridSize, center, 0.0f);
+			Scene_AddGeometry(scene, ground, &box, 1.0f, 0.6f);
+		}
+	}
+	float span = (float)gridCount * gridSize;
+	float groupDistance = span / (float)columnCount;
+	for (int row = 0; row < rowCount; ++row)
+	{
+		for (int column = 0; column < columnCount; ++column)
+		{
+			float x = -0.5f * span + groupDistance * ((float)column + 0.5f);
+			for (int k = 0; k < groupSize; ++k)
+			{
+				AddRainBody(scene, V(x + 0.5f * (float)k, 40.0f + 45.0f * (float)row), row + column + k);
+			}
+		}
+	}
+	return scene;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Box2D v3 benchmark scenes
+
+// Base 100: 5,050 unit boxes on a ground box of half size (100, 1); sleep off.
+static Scene* BuildLargePyramid(void)
+{
+	Scene* scene = Scene_Create();
+	scene->enableSleep = false;
+	scene->steps = 500;
+	AddGround(scene, 100.0f, 0.6f);
+	AddPyramid(scene, 100, 0.5f, 0.0f, 0.0f, 1.0f, 0.6f);
+	return scene;
+}
+
+// 20 rows × 20 columns of base-10 pyramids of unit boxes, each row on its own ground segment
+// (11 m apart); 22,000 boxes, sleep off.
+static Scene* BuildManyPyramids(void)
+{
+	Scene* scene = Scene_Create();
+	scene->enableSleep = false;
+	scene->steps = 200;
+	const int baseCount = 10, rowCount = 20, columnCount = 20;
+	const float extent = 0.5f;
+	float groundDeltaY = 2.0f * extent * ((float)baseCount + 1.0f);
+	float groundWidth = 2.0f * extent * (float)columnCount * ((float)baseCount + 1.0f);
+	float baseWidth = 2.0f * extent * (float)baseCount;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	for (int i = 0; i < rowCount; ++i)
+	{
+		float y = groundDeltaY * (float)i;
+		tbGeometry segment = Scene_MakeSegmentGeometry(V(-0.5f * groundWidth, y), V(0.5f * groundWidth, y));
+		Scene_AddGeometry(scene, ground, &segment, 1.0f, 0.6f);
+	}
+	for (int i = 0; i < rowCount; ++i)
+	{
+		for (int j = 0; j < columnCount; ++j)
+		{
+			// left edge of the pyramid's base, as Box2D places it
+			float left = -0.5f * groundWidth + (float)j * (baseWidth + 2.0f * extent) + 2.0f * extent - 0.5f;
+			AddPyramid(scene, baseCount, extent, left + baseWidth * 0.5f, groundDeltaY * (float)i, 1.0f, 0.6f);
+		}
+	}
+	return scene;
+}
+
+// A 20 m drum of four boxes (density 50) turning at 25°/s about (0, 10) with 2,025 boxes of
+// half size 0.125 inside. Box2D drives a dynamic drum with a motor joint; without joints the
+// drum here is a kinematic body with that angular velocity.
+static Scene* BuildTumbler(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 750;
+	int drum = Scene_AddBody(scene, tb_kinematicBody, V(0.0f, 10.0f), 0.0f);
+	scene->bodies[drum].angularVelocity = 25.0f * DEG_TO_RAD;
+	tbGeometry walls[4] = {
+		Scene_MakeBoxGeometry(0.5f, 10.0f, V(10.0f, 0.0f), 0.0f),
+		Scene_MakeBoxGeometry(0.5f, 10.0f, V(-10.0f, 0.0f), 0.0f),
+		Scene_MakeBoxGeometry(10.0f, 0.5f, V(0.0f, 10.0f), 0.0f),
+		Scene_MakeBoxGeometry(10.0f, 0.5f, V(0.0f, -10.0f), 0.0f),
+	};
+	for (int i = 0; i < 4; ++i)
+	{
+		Scene_AddGeometry(scene, drum, walls + i, 50.0f, 0.6f);
+	}
+	const int gridCount = 45;
+	for (int i = 0; i < gridCount; ++i)
+	{
+		for (int j = 0; j < gridCount; ++j)
+		{
+			tbVec2 p = V(-0.2f * (float)gridCount + 0.4f * (float)j, -0.2f * (float)gridCount + 10.0f + 0.4f * (float)i);
+			AddBoxBody(scene, tb_dynamicBody, p, 0.0f, 0.125f, 0.125f, 1.0f, 0.6f);
+		}
+	}
+	return scene;
+}
+
+// An 8 m box (density 8) at 40 m/s into a 120 × 80 block of 0.4 m boxes that start asleep; no gravity.
+static Scene* BuildSmash(void)
+{
+	Scene* scene = Scene_Create();
+	scene->gravity = V(0.0f, 0.0f);
+	scene->steps = 300;
+	int hammer = AddBoxBody(scene, tb_dynamicBody, V(-20.0f, 0.0f), 0.0f, 4.0f, 4.0f, 8.0f, 0.6f);
+	scene->bodies[hammer].linearVelocity = V(40.0f, 0.0f);
+	const int columns = 120, rows = 80;
+	const float d = 0.4f;
+	for (int i = 0; i < columns; ++i)
+	{
+		for (int j = 0; j < rows; ++j)
+		{
+			tbVec2 p = V((float)i * d + 30.0f, ((float)j - (float)rows / 2.0f) * d);
+			int body = AddBoxBody(scene, tb_dynamicBody, p, 0.0f, 0.5f * d, 0.5f * d, 1.0f, 0.6f);
+			scene->bodies[body].isAwake = false;
+		}
+	}
+	return scene;
+}
+
+// Box2D v3's spinner without joints: a kinematic rounded blade (0.8 × 40 m, radius 0.2)
+// spinning at 5 rad/s about (0, 12) inside a 360-segment circle of radius 40 centred at (0, 32)
+// (Box2D uses a chain loop and a motorised revolute joint), stirring 6,076 capsules, circles and
+// squares (density 0.25, friction 0.1, restitution 0.1).
+static Scene* BuildSpinner(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 1000;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	const int pointCount = 360;
+	for (int i = 0; i < pointCount; ++i)
+	{
+		float a1 = -2.0f * TB_PI * (float)i / (float)pointCount;
+		float a2 = -2.0f * TB_PI * (float)(i + 1) / (float)pointCount;
+		tbGeometry segment = Scene_MakeSegmentGeometry(V(40.0f * cosf(a1), 32.0f + 40.0f * sinf(a1)),
+													   V(40.0f * cosf(a2), 32.0f + 40.0f * sinf(a2)));
+		Scene_AddGeometry(scene, ground, &segment, 1.0f, 0.1f);
+	}
+	int blade = Scene_AddBody(scene, tb_kinematicBody, V(0.0f, 12.0f), 0.0f);
+	scene->bodies[blade].angularVelocity = 5.0f;
+	tbGeometry bladeShape = Scene_MakeBoxGeometry(0.4f, 20.0f, tb_vec2_zero, 0.0f);
+	bladeShape.polygon = tbMakeRoundedBox(0.4f, 20.0f, 0.2f);
+	Scene_AddGeometry(scene, blade, &bladeShape, 1.0f, 0.0f);
+	tbGeometry kinds[3] = {
+		Scene_MakeCapsuleGeometry(V(-0.25f, 0.0f), V(0.25f, 0.0f), 0.25f),
+		Scene_MakeCircleGeometry(tb_vec2_zero, 0.35f),
+		Scene_MakeBoxGeometry(0.35f, 0.35f, tb_vec2_zero, 0.0f),
+	};
+	float x = -23.0f, y = 2.0f;
+	for (int i = 0; i < 6076; ++i)
+	{
+		int body = Scene_AddBody(scene, tb_dynamicBody, V(x, y), 0.0f);
+		int shape = Scene_AddGeometry(scene, body, kinds + i % 3, 0.25f, 0.1f);
+		scene->bodies[body].shapes[shape].restitution = 0.1f;
+		x += 0.5f;
+		if (x >= 23.0f)
+		{
+			x = -23.0f;
+			y += 0.5f;
+		}
+	}
+	return scene;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Table
+
+typedef Scene* SceneBuilder(void);
+
+typedef struct CatalogueEntry
+{
+	const char* name;
+	const char* description;
+	SceneBuilder* build;
+} CatalogueEntry;
+
+static const CatalogueEntry s_entries[] = {
+	{"pyramid", "pyramid of 210 unit boxes (base 20), friction 0.6, sleep off", BuildPyramid},
+	{"vertical_stack", "10 unit boxes stacked touching on the ground", BuildVerticalStack},
+	{"dropped_stack", "15 unit boxes dropped with 0.1 m gaps, x alternating +-0.01, friction 0.3", BuildDroppedStack},
+	{"touching_stack", "20 unit boxes resting exactly on each other", BuildTouchingStack},
+	{"card_house", "40 cards (0.002 x 0.4 m): 5 levels of A-frames at +-25 deg with flat cards, friction 0.7",
+	 BuildCardHouse},
+	{"dominoes", "20 dominoes 0.2 x 2 m, 1 m apart; the first starts tipped", BuildDominoes},
+	{"newtons_cradle", "5 touching balls e = 1 hit by a sixth at 2.71 m/s, no gravity, no friction",
+	 BuildNewtonsCradle},
+	{"ramp", "five 30 deg ramps with boxes of friction 0.8, 0.6, 0.4, 0.2, 0", BuildRamp},
+	{"slope", "a unit box at rest on a 20 deg slope, friction 0.6 (must not creep)", BuildSlope},
+	{"mass_ratio", "100 kg box resting on a 1 kg box", BuildMassRatio},
+	{"heavy_on_pyramids", "three base-10 pyramids of 2 m boxes; top boxes 100, 200, 300x denser dropped 2 m",
+	 BuildHeavyOnPyramids},
+	{"big_on_small", "20 m box (400 kg) dropped from y = 26 onto two 1 kg boxes at x = +-9", BuildBigOnSmall},
+	{"overlap_recovery", "base-4 pyramid of unit boxes 0.75 m apart (25% overlap)", BuildOverlapRecovery},
+	{"bullets_wall", "five r 0.1 bullets at 300 m/s into a 0.1 m static wall, no gravity", BuildBulletsWall},
+	{"spinning_box", "thin 4 x 0.1 m box at 100 m/s spinning 50 rad/s into a 0.1 m wall, no gravity",
+	 BuildSpinningBox},
+	{"confined", "625 circles r 0.5 packed 0.72 m apart inside four static capsules, no gravity", BuildConfined},
+	{"rain", "Box2D v3 rain benchmark, jointless variant: 1,000 rigid humans, circles, boxes and triangles "
+			 "over five floors, all dropped at once",
+	 BuildRain},
+	{"large_pyramid", "Box2D v3 benchmark: pyramid of base 100 (5,050 boxes), sleep off", BuildLargePyramid},
+	{"many_pyramids", "Box2D v3 benchmark: 400 base-10 pyramids on 20 ground segments (22,000 boxes), sleep off",
+	 BuildManyPyramids},
+	{"tumbler", "Box2D v3 benchmark variant: 2,025 small boxes in a kinematic drum turning at 25 deg/s (no joint)",
+	 BuildTumbler},
+	{"smash", "Box2D v3 benchmark: 8 m box at 40 m/s into 9,600 sleeping boxes, no gravity", BuildSmash},
+	{"spinner", "Box2D v3 benchmark variant: kinematic blade at 5 rad/s (no joint) stirring 6,076 shapes in a "
+				"360-segment ring",
+	 BuildSpinner},
+};
+
+#define ENTRY_COUNT ((int)(sizeof(s_entries) / sizeof(s_entries[0])))
+
+int Catalogue_Count(void)
+{
+	return ENTRY_COUNT;
+}
+
+const char* Catalogue_Name(int index)
+{
+	return index >= 0 && index < ENTRY_COUNT ? s_entries[index].name : NULL;
+}
+
+const char* Catalogue_Description(int index)
+{
+	return index >= 0 && index < ENTRY_COUNT ? s_entries[index].description : NULL;
+}
+
+int Catalogue_Find(const char* name)
+{
+	for (int i = 0; name != NULL && i < ENTRY_COUNT; ++i)
+	{
+		if (strcmp(s_entries[i].name, name) == 0)
+		{
+			return i;
+		}
+	}
+	return -1;
+}
+
+Scene* Catalogue_Build(const char* name)
+{
+	int index = Catalogue_Find(name);
+	return index >= 0 ? s_entries[index].build() : NULL;
+}

@@ -1,0 +1,505 @@
+// Scene model: construction, conversion to a world, and whole-world measures for summaries.
+#include "scene.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+// Growth for the body and shape arrays: double, starting at 8. Out of memory is fatal here:
+// the samples have no way to continue without the scene.
+static void* GrowArray(void* array, int* capacity, int needed, size_t elementSize)
+{
+	if (needed <= *capacity)
+	{
+		return array;
+	}
+	int newCapacity = *capacity < 8 ? 8 : *capacity;
+	while (newCapacity < needed)
+	{
+		newCapacity *= 2;
+	}
+	void* grown = realloc(array, (size_t)newCapacity * elementSize);
+	if (grown == NULL)
+	{
+		fprintf(stderr, "scene: out of memory\n");
+		abort();
+	}
+	*capacity = newCapacity;
+	return grown;
+}
+
+Scene* Scene_Create(void)
+{
+	Scene* scene = calloc(1, sizeof(Scene));
+	if (scene == NULL)
+	{
+		return NULL;
+	}
+	scene->gravity = (tbVec2){0.0f, -10.0f};
+	scene->timeStep = 1.0f / 60.0f;
+	scene->subSteps = 4;
+	scene->steps = 600;
+	scene->enableSleep = true;
+	return scene;
+}
+
+void Scene_Destroy(Scene* scene)
+{
+	if (scene == NULL)
+	{
+		return;
+	}
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		free(scene->bodies[i].shapes);
+	}
+	free(scene->bodies);
+	free(scene);
+}
+
+int Scene_AddBody(Scene* scene, tbBodyType type, tbVec2 position, float angle)
+{
+	scene->bodies = GrowArray(scene->bodies, &scene->bodyCapacity, scene->bodyCount + 1, sizeof(SceneBody));
+	SceneBody* body = scene->bodies + scene->bodyCount;
+	memset(body, 0, sizeof(SceneBody));
+	body->type = type;
+	body->position = position;
+	body->angle = angle;
+	body->gravityScale = 1.0f;
+	body->isAwake = true;
+	return scene->bodyCount++;
+}
+
+SceneShape Scene_DefaultShape(void)
+{
+	SceneShape shape;
+	memset(&shape, 0, sizeof(shape));
+	shape.geometry.type = tb_circleShape;
+	shape.geometry.circle.radius = 0.5f;
+	shape.density = 1.0f;
+	shape.friction = 0.6f;
+	return shape;
+}
+
+int Scene_AddShape(Scene* scene, int bodyIndex, const SceneShape* shape)
+{
+	SceneBody* body = scene->bodies + bodyIndex;
+	body->shapes = GrowArray(body->shapes, &body->shapeCapacity, body->shapeCount + 1, sizeof(SceneShape));
+	body->shapes[body->shapeCount] = *shape;
+	return body->shapeCount++;
+}
+
+int Scene_AddGeometry(Scene* scene, int bodyIndex, const tbGeometry* geometry, float density, float friction)
+{
+	SceneShape shape = Scene_DefaultShape();
+	shape.geometry = *geometry;
+	shape.density = density;
+	shape.friction = friction;
+	return Scene_AddShape(scene, bodyIndex, &shape);
+}
+
+// Zeroed geometry so that unused union bytes never carry garbage (exports and hashes stay stable).
+static tbGeometry EmptyGeometry(tbShapeType type)
+{
+	tbGeometry geometry;
+	memset(&geometry, 0, sizeof(geometry));
+	geometry.type = type;
+	return geometry;
+}
+
+tbGeometry Scene_MakeBoxGeometry(float halfWidth, float halfHeight, tbVec2 center, float angle)
+{
+	tbGeometry geometry = EmptyGeometry(tb_polygonShape);
+	if (center.x == 0.0f && center.y == 0.0f && angle == 0.0f)
+	{
+		geometry.polygon = tbMakeBox(halfWidth, halfHeight);
+	}
+	else
+	{
+		geometry.polygon = tbMakeOffsetBox(halfWidth, halfHeight, center, tbMakeRot(angle));
+	}
+	return geometry;
+}
+
+tbGeometry Scene_MakeCircleGeometry(tbVec2 center, float radius)
+{
+	tbGeometry geometry = EmptyGeometry(tb_circleShape);
+	geometry.circle.center = center;
+	geometry.circle.radius = radius;
+	return geometry;
+}
+
+tbGeometry Scene_MakeCapsuleGeometry(tbVec2 center1, tbVec2 center2, float radius)
+{
+	tbGeometry geometry = EmptyGeometry(tb_capsuleShape);
+	geometry.capsule.center1 = center1;
+	geometry.capsule.center2 = center2;
+	geometry.capsule.radius = radius;
+	return geometry;
+}
+
+tbGeometry Scene_MakeSegmentGeometry(tbVec2 point1, tbVec2 point2)
+{
+	tbGeometry geometry = EmptyGeometry(tb_segmentShape);
+	geometry.segment.point1 = point1;
+	geometry.segment.point2 = point2;
+	return geometry;
+}
+
+tbGeometry Scene_MakePolygonGeometry(const tbVec2* points, int count, float radius)
+{
+	tbGeometry geometry = EmptyGeometry(tb_polygonShape);
+	tbHull hull = tbComputeHull(points, count);
+	if (hull.count > 0)
+	{
+		geometry.polygon = tbMakePolygon(&hull, radius);
+	}
+	return geometry;
+}
+
+int Scene_ShapeCount(const Scene* scene)
+{
+	int count = 0;
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		count += scene->bodies[i].shapeCount;
+	}
+	return count;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Building a world
+
+static void ApplyMethods(tbWorldDef* def, const SceneMethods* methods)
+{
+	if (methods->hasBroadPhase)
+	{
+		def->broadPhase = methods->broadPhase;
+	}
+	if (methods->hasNarrowPhase)
+	{
+		def->narrowPhase = methods->narrowPhase;
+	}
+	if (methods->hasContinuous)
+	{
+		def->continuous = methods->continuous;
+	}
+	if (methods->hasSolver)
+	{
+		def->solver = methods->solver;
+	}
+}
+
+tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* overrides)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = scene->gravity;
+	def.enableSleep = scene->enableSleep;
+	ApplyMethods(&def, &scene->methods);
+	if (overrides != NULL)
+	{
+		ApplyMethods(&def, &overrides->methods);
+		if (overrides->velocityIterations > 0)
+		{
+			def.velocityIterations = overrides->velocityIterations;
+		}
+	}
+	return def;
+}
+
+static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const char* name)
+{
+	tbBodyDef def = tbDefaultBodyDef();
+	def.type = body->type;
+	def.position = body->position;
+	def.rotation = tbMakeRot(body->angle);
+	def.linearVelocity = body->linearVelocity;
+	def.angularVelocity = body->angularVelocity;
+	def.linearDamping = body->linearDamping;
+	def.angularDamping = body->angularDamping;
+	def.gravityScale = body->gravityScale;
+	def.isBullet = body->bullet;
+	def.isAwake = body->isAwake;
+	def.name = name[0] != '\0' ? name : NULL;
+	tbBodyId bodyId = tbCreateBody(worldId, &def);
+	if (TB_IS_NULL(bodyId))
+	{
+		return bodyId;
+	}
+	for (int i = 0; i < body->shapeCount; ++i)
+	{
+		const SceneShape* shape = body->shapes + i;
+		tbShapeDef shapeDef = tbDefaultShapeDef();
+		shapeDef.density = shape->density;
+		shapeDef.friction = shape->friction;
+		shapeDef.restitution = shape->restitution;
+		shapeDef.isSensor = shape->isSensor;
+		tbCreateShape(bodyId, &shapeDef, &shape->geometry);
+	}
+	return bodyId;
+}
+
+SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
+{
+	SceneWorld world;
+	memset(&world, 0, sizeof(world));
+	world.worldId = tbCreateWorld(def);
+	if (TB_IS_NULL(world.worldId))
+	{
+		return world;
+	}
+	int count = scene->bodyCount;
+	world.bodyIds = calloc((size_t)(count > 0 ? count : 1), sizeof(tbBodyId));
+	world.names = calloc((size_t)(count > 0 ? count : 1), sizeof(*world.names));
+	if (world.bodyIds == NULL || world.names == NULL)
+	{
+		SceneWorld_Destroy(&world);
+		return world;
+	}
+	world.bodyCount = count;
+	for (int i = 0; i < count; ++i)
+	{
+		memcpy(world.names[i], scene->bodies[i].name, SCENE_NAME_SIZE);
+		world.names[i][SCENE_NAME_SIZE - 1] = '\0';
+		world.bodyIds[i] = CreateSceneBody(world.worldId, scene->bodies + i, world.names[i]);
+	}
+	return world;
+}
+
+SceneWorld Scene_BuildWorld(const Scene* scene, const SceneOverrides* overrides)
+{
+	tbWorldDef def = Scene_MakeWorldDef(scene, overrides);
+	return Scene_BuildWorldWithDef(scene, &def);
+}
+
+void SceneWorld_Destroy(SceneWorld* world)
+{
+	if (TB_IS_NON_NULL(world->worldId))
+	{
+		tbDestroyWorld(world->worldId);
+	}
+	free(world->bodyIds);
+	free(world->names);
+	memset(world, 0, sizeof(*world));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Measures
+
+float SceneWorld_KineticEnergy(const SceneWorld* world)
+{
+	double energy = 0.0;
+	for (int i = 0; i < world->bodyCount; ++i)
+	{
+		tbBodyId id = world->bodyIds[i];
+		if (tbBody_IsValid(id) == false || tbBody_GetType(id) != tb_dynamicBody)
+		{
+			continue;
+		}
+		tbVec2 v = tbBody_GetLinearVelocity(id);
+		float w = tbBody_GetAngularVelocity(id);
+		energy += 0.5 * tbBody_GetMass(id) * tbDot(v, v);
+		energy += 0.5 * tbBody_GetRotationalInertia(id) * w * w;
+	}
+	return (float)energy;
+}
+
+int SceneWorld_AwakeCount(const SceneWorld* world)
+{
+	int count = 0;
+	for (int i = 0; i < world->bodyCount; ++i)
+	{
+		tbBodyId id = world->bodyIds[i];
+		if (tbBody_IsValid(id) && tbBody_GetType(id) != tb_staticBody && tbBody_IsAwake(id))
+		{
+			count += 1;
+		}
+	}
+	return count;
+}
+
+typedef struct PenetrationQuery
+{
+	tbShapeId shapeId;
+	tbBodyId bodyId;
+	tbGeometry geometry;
+	tbTransform transform;
+	float deepest; ///< most negative separation seen (m)
+} PenetrationQuery;
+
+// Collide the query shape with one found shape. Each pair is visited from its lower shape id
+// when both are non-static, so no pair is measured twice.
+static bool PenetrationCallback(tbShapeId shapeId, void* context)
+{
+	PenetrationQuery* query = context;
+	tbBodyId bodyId = tbShape_GetBody(shapeId);
+	if (bodyId.index1 == query->bodyId.index1 || tbShape_IsSensor(shapeId))
+	{
+		return true;
+	}
+	if (tbBody_GetType(bodyId) != tb_staticBody && shapeId.index1 < query->shapeId.index1)
+	{
+		return true;
+	}
+	tbGeometry other = tbShape_GetGeometry(shapeId);
+	tbTransform otherTransform = tbBody_GetTransform(bodyId);
+	tbManifold manifold;
+	if (query->geometry.type <= other.type)
+	{
+		manifold = tbCollideShapes(&query->geometry, query->transform, &other, otherTransform, tb_narrowPhaseAuto);
+	}
+	else
+	{
+		manifold = tbCollideShapes(&other, otherTransform, &query->geometry, query->transform, tb_narrowPhaseAuto);
+	}
+	for (int i = 0; i < manifold.pointCount; ++i)
+	{
+		query->deepest = tbMinFloat(query->deepest, manifold.points[i].separation);
+	}
+	return true;
+}
+
+static void MeasureBodyPenetration(tbWorldId worldId, tbBodyId bodyId, PenetrationQuery* query)
+{
+	tbShapeId shapes[64];
+	int count = tbBody_GetShapes(bodyId, shapes, 64);
+	query->bodyId = bodyId;
+	query->transform = tbBody_GetTransform(bodyId);
+	for (int i = 0; i < count; ++i)
+	{
+		if (tbShape_IsSensor(shapes[i]))
+		{
+			continue;
+		}
+		query->shapeId = shapes[i];
+		query->geometry = tbShape_GetGeometry(shapes[i]);
+		tbWorld_OverlapAABB(worldId, tbShape_GetAABB(shapes[i]), tbDefaultQueryFilter(), PenetrationCallback, query);
+	}
+}
+
+float SceneWorld_LargestPenetration(const SceneWorld* world)
+{
+	PenetrationQuery query;
+	memset(&query, 0, sizeof(query));
+	query.deepest = 0.0f;
+	for (int i = 0; i < world->bodyCount; ++i)
+	{
+		tbBodyId id = world->bodyIds[i];
+		if (tbBody_IsValid(id) && tbBody_GetType(id) != tb_staticBody)
+		{
+			MeasureBodyPenetration(world->worldId, id, &query);
+		}
+	}
+	return -query.deepest;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Names
+
+typedef struct NamedValue
+{
+	const char* name;
+	int value;
+} NamedValue;
+
+static const NamedValue s_broadPhaseNames[] = {
+	{"tree", tb_broadPhaseTree}, {"sap", tb_broadPhaseSortAndSweep}, {"brute", tb_broadPhaseBruteForce},
+	{"auto", tb_broadPhaseAuto}, {NULL, 0}};
+static const NamedValue s_narrowPhaseNames[] = {
+	{"sat", tb_narrowPhaseSAT}, {"gjk", tb_narrowPhaseGJK}, {"auto", tb_narrowPhaseAuto}, {NULL, 0}};
+static const NamedValue s_continuousNames[] = {
+	{"off", tb_continuousOff}, {"quadratic", tb_continuousDefault}, {"ca", tb_continuousConservative}, {NULL, 0}};
+static const NamedValue s_solverNames[] = {
+	{"baumgarte", tb_solverBaumgarte}, {"ngs", tb_solverNGS}, {"soft", tb_solverSoft}, {NULL, 0}};
+static const NamedValue s_bodyTypeNames[] = {
+	{"static", tb_staticBody}, {"kinematic", tb_kinematicBody}, {"dynamic", tb_dynamicBody}, {NULL, 0}};
+
+static const char* NameOf(const NamedValue* table, int value)
+{
+	for (int i = 0; table[i].name != NULL; ++i)
+	{
+		if (table[i].value == value)
+		{
+			return table[i].name;
+		}
+	}
+	return NULL;
+}
+
+static bool ValueOf(const NamedValue* table, const char* name, int* value)
+{
+	for (int i = 0; name != NULL && table[i].name != NULL; ++i)
+	{
+		if (strcmp(table[i].name, name) == 0)
+		{
+			*value = table[i].value;
+			return true;
+		}
+	}
+	return false;
+}
+
+const char* Scene_BroadPhaseName(tbBroadPhaseMethod method)
+{
+	return NameOf(s_broadPhaseNames, (int)method);
+}
+
+const char* Scene_NarrowPhaseName(tbNarrowPhaseMethod method)
+{
+	return NameOf(s_narrowPhaseNames, (int)method);
+}
+
+const char* Scene_ContinuousName(tbContinuousMethod method)
+{
+	return NameOf(s_continuousNames, (int)method);
+}
+
+const char* Scene_SolverName(tbSolverMethod method)
+{
+	return NameOf(s_solverNames, (int)method);
+}
+
+const char* Scene_BodyTypeName(tbBodyType type)
+{
+	return NameOf(s_bodyTypeNames, (int)type);
+}
+
+bool Scene_ParseBroadPhase(const char* text, tbBroadPhaseMethod* method)
+{
+	int value = 0;
+	bool found = ValueOf(s_broadPhaseNames, text, &value);
+	*method = found ? (tbBroadPhaseMethod)value : *method;
+	return found;
+}
+
+bool Scene_ParseNarrowPhase(const char* text, tbNarrowPhaseMethod* method)
+{
+	int value = 0;
+	bool found = ValueOf(s_narrowPhaseNames, text, &value);
+	*method = found ? (tbNarrowPhaseMethod)value : *method;
+	return found;
+}
+
+bool Scene_ParseContinuous(const char* text, tbContinuousMethod* method)
+{
+	int value = 0;
+	bool found = ValueOf(s_continuousNames, text, &value);
+	*method = found ? (tbContinuousMethod)value : *method;
+	return found;
+}
+
+bool Scene_ParseSolver(const char* text, tbSolverMethod* method)
+{
+	int value = 0;
+	bool found = ValueOf(s_solverNames, text, &value);
+	*method = found ? (tbSolverMethod)value : *method;
+	return found;
+}
+
+bool Scene_ParseBodyType(const char* text, tbBodyType* type)
+{
+	int value = 0;
+	bool found = ValueOf(s_bodyTypeNames, text, &value);
+	*type = found ? (tbBodyType)value : *type;
+	return found;
+}

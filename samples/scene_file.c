@@ -1,0 +1,1014 @@
+// Scene files: a validating JSON reader (cJSON does the syntax, this file the meaning) and a
+// writer. Each reader function takes the field path of the value it reads so that every error
+// names the exact field; the first error stops the parse.
+#include "scene_file.h"
+
+#include <cJSON.h>
+
+#include <errno.h>
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PATH_SIZE 256
+
+typedef struct Parser
+{
+	char* error;
+	int errorSize;
+} Parser;
+
+// Report "path: message" (or just the message at the root). Always returns false.
+static bool Fail(Parser* parser, const char* path, const char* format, ...)
+{
+	char message[256];
+	va_list args;
+	va_start(args, format);
+	vsnprintf(message, sizeof(message), format, args);
+	va_end(args);
+	if (parser->error != NULL && parser->errorSize > 0)
+	{
+		if (path[0] != '\0')
+		{
+			snprintf(parser->error, (size_t)parser->errorSize, "%s: %s", path, message);
+		}
+		else
+		{
+			snprintf(parser->error, (size_t)parser->errorSize, "%s", message);
+		}
+	}
+	return false;
+}
+
+// Paths longer than PATH_SIZE are cut short (still a useful message).
+static void KeyPath(char* out, const char* path, const char* key)
+{
+	int length = path[0] == '\0' ? snprintf(out, PATH_SIZE, "%s", key) : snprintf(out, PATH_SIZE, "%s.%s", path, key);
+	if (length < 0 || length >= PATH_SIZE)
+	{
+		out[PATH_SIZE - 1] = '\0';
+	}
+}
+
+static void IndexPath(char* out, const char* path, int index)
+{
+	int length = snprintf(out, PATH_SIZE, "%s[%d]", path, index);
+	if (length < 0 || length >= PATH_SIZE)
+	{
+		out[PATH_SIZE - 1] = '\0';
+	}
+}
+
+static bool IsAllowed(const char* key, const char* const* allowed)
+{
+	for (int i = 0; allowed[i] != NULL; ++i)
+	{
+		if (strcmp(key, allowed[i]) == 0)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+// Every key must be known and appear once.
+static bool CheckKeys(Parser* parser, const cJSON* object, const char* path, const char* const* allowed)
+{
+	char child[PATH_SIZE];
+	for (const cJSON* item = object->child; item != NULL; item = item->next)
+	{
+		KeyPath(child, path, item->string);
+		if (IsAllowed(item->string, allowed) == false)
+		{
+			return Fail(parser, child, "unknown key");
+		}
+		for (const cJSON* other = object->child; other != item; other = other->next)
+		{
+			if (strcmp(other->string, item->string) == 0)
+			{
+				return Fail(parser, child, "duplicate key");
+			}
+		}
+	}
+	return true;
+}
+
+static bool RequireObject(Parser* parser, const cJSON* item, const char* path)
+{
+	return cJSON_IsObject(item) ? true : Fail(parser, path, "must be an object");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Values. Each reader leaves *out untouched when the key is absent and not required.
+
+static bool ToFloat(Parser* parser, const cJSON* item, const char* path, float* out)
+{
+	if (cJSON_IsNumber(item) == false)
+	{
+		return Fail(parser, path, "must be a number");
+	}
+	double value = item->valuedouble;
+	if (value != value || value > FLT_MAX || value < -FLT_MAX)
+	{
+		return Fail(parser, path, "must be a finite number");
+	}
+	*out = (float)value;
+	return true;
+}
+
+static bool ToVec2(Parser* parser, const cJSON* item, const char* path, tbVec2* out)
+{
+	if (cJSON_IsArray(item) == false || cJSON_GetArraySize(item) != 2)
+	{
+		return Fail(parser, path, "must be an array of 2 numbers");
+	}
+	char child[PATH_SIZE];
+	IndexPath(child, path, 0);
+	if (ToFloat(parser, item->child, child, &out->x) == false)
+	{
+		return false;
+	}
+	IndexPath(child, path, 1);
+	return ToFloat(parser, item->child->next, child, &out->y);
+}
+
+static const cJSON* Find(const cJSON* object, const char* key)
+{
+	return cJSON_GetObjectItemCaseSensitive(object, key);
+}
+
+static bool Missing(Parser* parser, const char* path, const char* key)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return Fail(parser, child, "missing (required)");
+}
+
+static bool ReadFloat(Parser* parser, const cJSON* object, const char* path, const char* key, float* out,
+					  bool required)
+{
+	const cJSON* item = Find(object, key);
+	if (item == NULL)
+	{
+		return required ? Missing(parser, path, key) : true;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return ToFloat(parser, item, child, out);
+}
+
+static bool ReadVec2(Parser* parser, const cJSON* object, const char* path, const char* key, tbVec2* out,
+					 bool required)
+{
+	const cJSON* item = Find(object, key);
+	if (item == NULL)
+	{
+		return required ? Missing(parser, path, key) : true;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return ToVec2(parser, item, child, out);
+}
+
+static bool ReadBool(Parser* parser, const cJSON* object, const char* path, const char* key, bool* out)
+{
+	const cJSON* item = Find(object, key);
+	if (item == NULL)
+	{
+		return true;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	if (cJSON_IsBool(item) == false)
+	{
+		return Fail(parser, child, "must be true or false");
+	}
+	*out = cJSON_IsTrue(item);
+	return true;
+}
+
+static bool ReadInt(Parser* parser, const cJSON* object, const char* path, const char* key, int minimum, int* out)
+{
+	const cJSON* item = Find(object, key);
+	if (item == NULL)
+	{
+		return true;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	double value = cJSON_IsNumber(item) ? item->valuedouble : 0.5;
+	if (!(value >= INT_MIN && value <= INT_MAX) || value != floor(value))
+	{
+		return Fail(parser, child, "must be an integer");
+	}
+	if (value < minimum)
+	{
+		return Fail(parser, child, "must be >= %d", minimum);
+	}
+	*out = (int)value;
+	return true;
+}
+
+// A string value; *out is NULL when the key is absent.
+static bool ReadString(Parser* parser, const cJSON* object, const char* path, const char* key, const char** out)
+{
+	*out = NULL;
+	const cJSON* item = Find(object, key);
+	if (item == NULL)
+	{
+		return true;
+	}
+	if (cJSON_IsString(item) == false)
+	{
+		char child[PATH_SIZE];
+		KeyPath(child, path, key);
+		return Fail(parser, child, "must be a string");
+	}
+	*out = item->valuestring;
+	return true;
+}
+
+// Range checks on a value already read.
+static bool CheckPositive(Parser* parser, const char* path, const char* key, float value)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return value > 0.0f ? true : Fail(parser, child, "must be > 0");
+}
+
+static bool CheckNonNegative(Parser* parser, const char* path, const char* key, float value)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return value >= 0.0f ? true : Fail(parser, child, "must be >= 0");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Methods
+
+static bool ReadMethodName(Parser* parser, const cJSON* object, const char* path, const char* key,
+						   const char** name)
+{
+	if (ReadString(parser, object, path, key, name) == false)
+	{
+		return false;
+	}
+	return true;
+}
+
+static bool BadOption(Parser* parser, const char* path, const char* key, const char* options)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return Fail(parser, child, "must be one of %s", options);
+}
+
+static bool ReadMethods(Parser* parser, const cJSON* item, SceneMethods* methods)
+{
+	static const char* const keys[] = {"broadphase", "narrowphase", "toi", "solver", NULL};
+	const char* path = "methods";
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	const char* name = NULL;
+	if (ReadMethodName(parser, item, path, "broadphase", &name) == false)
+	{
+		return false;
+	}
+	if (name != NULL && !(methods->hasBroadPhase = Scene_ParseBroadPhase(name, &methods->broadPhase)))
+	{
+		return BadOption(parser, path, "broadphase", "tree, sap, brute, auto");
+	}
+	if (ReadMethodName(parser, item, path, "narrowphase", &name) == false)
+	{
+		return false;
+	}
+	if (name != NULL && !(methods->hasNarrowPhase = Scene_ParseNarrowPhase(name, &methods->narrowPhase)))
+	{
+		return BadOption(parser, path, "narrowphase", "sat, gjk, auto");
+	}
+	if (ReadMethodName(parser, item, path, "toi", &name) == false)
+	{
+		return false;
+	}
+	if (name != NULL && !(methods->hasContinuous = Scene_ParseContinuous(name, &methods->continuous)))
+	{
+		return BadOption(parser, path, "toi", "off, quadratic, ca");
+	}
+	if (ReadMethodName(parser, item, path, "solver", &name) == false)
+	{
+		return false;
+	}
+	if (name != NULL && !(methods->hasSolver = Scene_ParseSolver(name, &methods->solver)))
+	{
+		return BadOption(parser, path, "solver", "baumgarte, ngs, soft");
+	}
+	return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Geometry
+
+static bool ReadBox(Parser* parser, const cJSON* item, const char* path, tbGeometry* geometry)
+{
+	static const char* const keys[] = {"half_width", "half_height", "center", "angle", NULL};
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	float hx = 0.0f, hy = 0.0f, angle = 0.0f;
+	tbVec2 center = {0.0f, 0.0f};
+	bool ok = ReadFloat(parser, item, path, "half_width", &hx, true) && CheckPositive(parser, path, "half_width", hx) &&
+			  ReadFloat(parser, item, path, "half_height", &hy, true) &&
+			  CheckPositive(parser, path, "half_height", hy) && ReadVec2(parser, item, path, "center", &center, false) &&
+			  ReadFloat(parser, item, path, "angle", &angle, false);
+	if (ok)
+	{
+		*geometry = Scene_MakeBoxGeometry(hx, hy, center, angle);
+	}
+	return ok;
+}
+
+static bool ReadCircle(Parser* parser, const cJSON* item, const char* path, tbGeometry* geometry)
+{
+	static const char* const keys[] = {"center", "radius", NULL};
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	tbVec2 center = {0.0f, 0.0f};
+	float radius = 0.0f;
+	bool ok = ReadVec2(parser, item, path, "center", &center, false) &&
+			  ReadFloat(parser, item, path, "radius", &radius, true) && CheckPositive(parser, path, "radius", radius);
+	if (ok)
+	{
+		*geometry = Scene_MakeCircleGeometry(center, radius);
+	}
+	return ok;
+}
+
+static bool CheckDistinct(Parser* parser, const char* path, const char* key, tbVec2 a, tbVec2 b, const char* other)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	if (tbDistance(a, b) > TB_LINEAR_SLOP)
+	{
+		return true;
+	}
+	return Fail(parser, child, "must be more than %g m from %s", (double)TB_LINEAR_SLOP, other);
+}
+
+static bool ReadCapsule(Parser* parser, const cJSON* item, const char* path, tbGeometry* geometry)
+{
+	static const char* const keys[] = {"center1", "center2", "radius", NULL};
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	tbVec2 c1 = {0.0f, 0.0f}, c2 = {0.0f, 0.0f};
+	float radius = 0.0f;
+	bool ok = ReadVec2(parser, item, path, "center1", &c1, true) && ReadVec2(parser, item, path, "center2", &c2, true) &&
+			  CheckDistinct(parser, path, "center2", c1, c2, "center1") &&
+			  ReadFloat(parser, item, path, "radius", &radius, true) && CheckPositive(parser, path, "radius", radius);
+	if (ok)
+	{
+		*geometry = Scene_MakeCapsuleGeometry(c1, c2, radius);
+	}
+	return ok;
+}
+
+static bool ReadSegment(Parser* parser, const cJSON* item, const char* path, tbGeometry* geometry)
+{
+	static const char* const keys[] = {"point1", "point2", NULL};
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	tbVec2 p1 = {0.0f, 0.0f}, p2 = {0.0f, 0.0f};
+	bool ok = ReadVec2(parser, item, path, "point1", &p1, true) && ReadVec2(parser, item, path, "point2", &p2, true) &&
+			  CheckDistinct(parser, path, "point2", p1, p2, "point1");
+	if (ok)
+	{
+		*geometry = Scene_MakeSegmentGeometry(p1, p2);
+	}
+	return ok;
+}
+
+static bool ReadVertices(Parser* parser, const cJSON* item, const char* path, tbVec2* points, int* count)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, "vertices");
+	if (item == NULL)
+	{
+		return Fail(parser, child, "missing (required)");
+	}
+	if (cJSON_IsArray(item) == false)
+	{
+		return Fail(parser, child, "must be an array of [x, y] points");
+	}
+	int n = cJSON_GetArraySize(item);
+	if (n < 3 || n > TB_MAX_POLYGON_VERTICES)
+	{
+		return Fail(parser, child, "must have 3 to %d vertices (has %d)", TB_MAX_POLYGON_VERTICES, n);
+	}
+	int i = 0;
+	for (const cJSON* point = item->child; point != NULL; point = point->next, ++i)
+	{
+		char pointPath[PATH_SIZE];
+		IndexPath(pointPath, child, i);
+		if (ToVec2(parser, point, pointPath, points + i) == false)
+		{
+			return false;
+		}
+	}
+	*count = n;
+	return true;
+}
+
+// Vertices already convex and counter-clockwise keep their order (so a saved scene reloads
+// bit for bit); any other order is replaced by the hull, which must keep every point.
+static bool MakeHull(Parser* parser, const char* path, const tbVec2* points, int count, tbHull* hull)
+{
+	memset(hull, 0, sizeof(*hull));
+	memcpy(hull->points, points, (size_t)count * sizeof(tbVec2));
+	hull->count = count;
+	if (tbValidateHull(hull))
+	{
+		return true;
+	}
+	*hull = tbComputeHull(points, count);
+	char child[PATH_SIZE];
+	KeyPath(child, path, "vertices");
+	if (hull->count == 0)
+	{
+		return Fail(parser, child, "no valid convex hull (points collinear, duplicate or closer than %g m)",
+					(double)TB_LINEAR_SLOP);
+	}
+	if (hull->count != count)
+	{
+		return Fail(parser, child, "not convex: the hull keeps %d of %d points", hull->count, count);
+	}
+	return true;
+}
+
+static bool ReadPolygon(Parser* parser, const cJSON* item, const char* path, tbGeometry* geometry)
+{
+	static const char* const keys[] = {"vertices", "radius", NULL};
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	tbVec2 points[TB_MAX_POLYGON_VERTICES];
+	int count = 0;
+	float radius = 0.0f;
+	tbHull hull;
+	bool ok = ReadVertices(parser, Find(item, "vertices"), path, points, &count) &&
+			  ReadFloat(parser, item, path, "radius", &radius, false) &&
+			  CheckNonNegative(parser, path, "radius", radius) && MakeHull(parser, path, points, count, &hull);
+	if (ok)
+	{
+		memset(geometry, 0, sizeof(*geometry));
+		geometry->type = tb_polygonShape;
+		geometry->polygon = tbMakePolygon(&hull, radius);
+	}
+	return ok;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shapes and bodies
+
+typedef bool GeometryReader(Parser* parser, const cJSON* item, const char* path, tbGeometry* geometry);
+
+typedef struct ShapeKind
+{
+	const char* key;
+	GeometryReader* read;
+} ShapeKind;
+
+static const ShapeKind s_shapeKinds[] = {
+	{"box", ReadBox}, {"circle", ReadCircle}, {"polygon", ReadPolygon}, {"capsule", ReadCapsule}, {"segment", ReadSegment},
+};
+
+#define SHAPE_KIND_COUNT ((int)(sizeof(s_shapeKinds) / sizeof(s_shapeKinds[0])))
+
+static bool ReadGeometry(Parser* parser, const cJSON* item, const char* path, tbGeometry* geometry)
+{
+	int found = -1;
+	for (int i = 0; i < SHAPE_KIND_COUNT; ++i)
+	{
+		if (Find(item, s_shapeKinds[i].key) == NULL)
+		{
+			continue;
+		}
+		if (found >= 0)
+		{
+			return Fail(parser, path, "must have exactly one of box, circle, polygon, capsule, segment (has %s and %s)",
+						s_shapeKinds[found].key, s_shapeKinds[i].key);
+		}
+		found = i;
+	}
+	if (found < 0)
+	{
+		return Fail(parser, path, "must have exactly one of box, circle, polygon, capsule, segment");
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, s_shapeKinds[found].key);
+	return s_shapeKinds[found].read(parser, Find(item, s_shapeKinds[found].key), child, geometry);
+}
+
+static bool ReadShape(Parser* parser, const cJSON* item, const char* path, SceneShape* shape)
+{
+	static const char* const keys[] = {"box",	  "circle",	  "polygon",	 "capsule", "segment",
+									   "density", "friction", "restitution", "sensor",	NULL};
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	*shape = Scene_DefaultShape();
+	return ReadGeometry(parser, item, path, &shape->geometry) &&
+		   ReadFloat(parser, item, path, "density", &shape->density, false) &&
+		   CheckNonNegative(parser, path, "density", shape->density) &&
+		   ReadFloat(parser, item, path, "friction", &shape->friction, false) &&
+		   CheckNonNegative(parser, path, "friction", shape->friction) &&
+		   ReadFloat(parser, item, path, "restitution", &shape->restitution, false) &&
+		   CheckNonNegative(parser, path, "restitution", shape->restitution) &&
+		   ReadBool(parser, item, path, "sensor", &shape->isSensor);
+}
+
+static bool ReadShapes(Parser* parser, const cJSON* item, const char* path, Scene* scene, int bodyIndex)
+{
+	if (item == NULL)
+	{
+		return true;
+	}
+	if (cJSON_IsArray(item) == false)
+	{
+		return Fail(parser, path, "must be an array of shapes");
+	}
+	int i = 0;
+	for (const cJSON* shapeItem = item->child; shapeItem != NULL; shapeItem = shapeItem->next, ++i)
+	{
+		char child[PATH_SIZE];
+		IndexPath(child, path, i);
+		SceneShape shape;
+		if (ReadShape(parser, shapeItem, child, &shape) == false)
+		{
+			return false;
+		}
+		Scene_AddShape(scene, bodyIndex, &shape);
+	}
+	return true;
+}
+
+static bool ReadBodyType(Parser* parser, const cJSON* item, const char* path, tbBodyType* type)
+{
+	const char* name = NULL;
+	if (ReadString(parser, item, path, "type", &name) == false)
+	{
+		return false;
+	}
+	if (name != NULL && Scene_ParseBodyType(name, type) == false)
+	{
+		return BadOption(parser, path, "type", "static, kinematic, dynamic");
+	}
+	return true;
+}
+
+static bool ReadName(Parser* parser, const cJSON* item, const char* path, char* name)
+{
+	const char* text = NULL;
+	if (ReadString(parser, item, path, "name", &text) == false)
+	{
+		return false;
+	}
+	if (text != NULL && strlen(text) >= SCENE_NAME_SIZE)
+	{
+		char child[PATH_SIZE];
+		KeyPath(child, path, "name");
+		return Fail(parser, child, "must be at most %d characters", SCENE_NAME_SIZE - 1);
+	}
+	if (text != NULL)
+	{
+		snprintf(name, SCENE_NAME_SIZE, "%s", text);
+	}
+	return true;
+}
+
+static bool ReadBodyFields(Parser* parser, const cJSON* item, const char* path, SceneBody* body)
+{
+	return ReadBodyType(parser, item, path, &body->type) && ReadName(parser, item, path, body->name) &&
+		   ReadVec2(parser, item, path, "position", &body->position, false) &&
+		   ReadFloat(parser, item, path, "angle", &body->angle, false) &&
+		   ReadVec2(parser, item, path, "linear_velocity", &body->linearVelocity, false) &&
+		   ReadFloat(parser, item, path, "angular_velocity", &body->angularVelocity, false) &&
+		   ReadFloat(parser, item, path, "linear_damping", &body->linearDamping, false) &&
+		   CheckNonNegative(parser, path, "linear_damping", body->linearDamping) &&
+		   ReadFloat(parser, item, path, "angular_damping", &body->angularDamping, false) &&
+		   CheckNonNegative(parser, path, "angular_damping", body->angularDamping) &&
+		   ReadFloat(parser, item, path, "gravity_scale", &body->gravityScale, false) &&
+		   ReadBool(parser, item, path, "bullet", &body->bullet) &&
+		   ReadBool(parser, item, path, "awake", &body->isAwake);
+}
+
+static bool ReadBody(Parser* parser, const cJSON* item, const char* path, Scene* scene)
+{
+	static const char* const keys[] = {"type",			 "name",		   "position",		"angle",
+									   "linear_velocity", "angular_velocity", "linear_damping", "angular_damping",
+									   "gravity_scale",	 "bullet",		   "awake",			"shapes",
+									   NULL};
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	int index = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	if (ReadBodyFields(parser, item, path, scene->bodies + index) == false)
+	{
+		return false;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, "shapes");
+	return ReadShapes(parser, Find(item, "shapes"), child, scene, index);
+}
+
+static bool ReadBodies(Parser* parser, const cJSON* item, Scene* scene)
+{
+	if (item == NULL)
+	{
+		return true;
+	}
+	if (cJSON_IsArray(item) == false)
+	{
+		return Fail(parser, "bodies", "must be an array of bodies");
+	}
+	int i = 0;
+	for (const cJSON* body = item->child; body != NULL; body = body->next, ++i)
+	{
+		char child[PATH_SIZE];
+		IndexPath(child, "bodies", i);
+		if (ReadBody(parser, body, child, scene) == false)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
+{
+	static const char* const keys[] = {"gravity", "time_step", "sub_steps", "steps",
+									   "enable_sleep", "methods", "bodies", NULL};
+	if (cJSON_IsObject(root) == false)
+	{
+		return Fail(parser, "", "scene: must be a JSON object");
+	}
+	const cJSON* methods = Find(root, "methods");
+	return CheckKeys(parser, root, "", keys) && ReadVec2(parser, root, "", "gravity", &scene->gravity, false) &&
+		   ReadFloat(parser, root, "", "time_step", &scene->timeStep, false) &&
+		   CheckPositive(parser, "", "time_step", scene->timeStep) &&
+		   ReadInt(parser, root, "", "sub_steps", 1, &scene->subSteps) &&
+		   ReadInt(parser, root, "", "steps", 0, &scene->steps) &&
+		   ReadBool(parser, root, "", "enable_sleep", &scene->enableSleep) &&
+		   (methods == NULL || ReadMethods(parser, methods, &scene->methods)) &&
+		   ReadBodies(parser, Find(root, "bodies"), scene);
+}
+
+// Line and column (from 1) of a position in text, for syntax errors.
+static void LineAndColumn(const char* text, const char* position, int* line, int* column)
+{
+	*line = 1;
+	*column = 1;
+	for (const char* c = text; *c != '\0' && c < position; ++c)
+	{
+		*column = *c == '\n' ? 1 : *column + 1;
+		*line += *c == '\n' ? 1 : 0;
+	}
+}
+
+Scene* SceneFile_Parse(const char* text, char* error, int errorSize)
+{
+	Parser parser = {error, errorSize};
+	if (text == NULL)
+	{
+		Fail(&parser, "", "no scene text");
+		return NULL;
+	}
+	const char* end = NULL;
+	cJSON* root = cJSON_ParseWithOpts(text, &end, true);
+	if (root == NULL)
+	{
+		int line = 0, column = 0;
+		LineAndColumn(text, end != NULL ? end : text, &line, &column);
+		Fail(&parser, "", "line %d, column %d: invalid JSON", line, column);
+		return NULL;
+	}
+	Scene* scene = Scene_Create();
+	if (scene == NULL || ReadScene(&parser, root, scene) == false)
+	{
+		Scene_Destroy(scene);
+		scene = NULL;
+	}
+	cJSON_Delete(root);
+	return scene;
+}
+
+static char* ReadWholeFile(const char* path, char* error, int errorSize)
+{
+	FILE* file = fopen(path, "rb");
+	if (file == NULL)
+	{
+		snprintf(error, (size_t)errorSize, "%s: cannot open (%s)", path, strerror(errno));
+		return NULL;
+	}
+	size_t capacity = 1 << 16, size = 0;
+	char* text = malloc(capacity);
+	while (text != NULL)
+	{
+		size += fread(text + size, 1, capacity - size - 1, file);
+		if (size < capacity - 1)
+		{
+			break;
+		}
+		capacity *= 2;
+		char* grown = realloc(text, capacity);
+		if (grown == NULL)
+		{
+			free(text);
+		}
+		text = grown;
+	}
+	bool failed = ferror(file) != 0 || text == NULL;
+	fclose(file);
+	if (failed)
+	{
+		free(text);
+		snprintf(error, (size_t)errorSize, "%s: cannot read", path);
+		return NULL;
+	}
+	text[size] = '\0';
+	return text;
+}
+
+Scene* SceneFile_Load(const char* path, char* error, int errorSize)
+{
+	char* text = ReadWholeFile(path, error, errorSize);
+	if (text == NULL)
+	{
+		return NULL;
+	}
+	char message[512];
+	Scene* scene = SceneFile_Parse(text, message, (int)sizeof(message));
+	free(text);
+	if (scene == NULL)
+	{
+		snprintf(error, (size_t)errorSize, "%s: %s", path, message);
+	}
+	return scene;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writer
+
+typedef struct TextBuffer
+{
+	char* data;
+	size_t size;
+	size_t capacity;
+	bool failed;
+} TextBuffer;
+
+static void Append(TextBuffer* buffer, const char* format, ...)
+{
+	if (buffer->failed)
+	{
+		return;
+	}
+	va_list args;
+	va_start(args, format);
+	int length = vsnprintf(NULL, 0, format, args);
+	va_end(args);
+	if (buffer->size + (size_t)length + 1 > buffer->capacity)
+	{
+		size_t capacity = buffer->capacity < 4096 ? 4096 : buffer->capacity;
+		while (buffer->size + (size_t)length + 1 > capacity)
+		{
+			capacity *= 2;
+		}
+		char* grown = realloc(buffer->data, capacity);
+		if (grown == NULL)
+		{
+			buffer->failed = true;
+			return;
+		}
+		buffer->data = grown;
+		buffer->capacity = capacity;
+	}
+	va_start(args, format);
+	vsnprintf(buffer->data + buffer->size, (size_t)length + 1, format, args);
+	va_end(args);
+	buffer->size += (size_t)length;
+}
+
+static void AppendFloat(TextBuffer* buffer, float value)
+{
+	Append(buffer, "%.9g", (double)value);
+}
+
+static void AppendVec2(TextBuffer* buffer, tbVec2 v)
+{
+	Append(buffer, "[%.9g, %.9g]", (double)v.x, (double)v.y);
+}
+
+// JSON string with the escapes the format needs (quotes, backslash, control characters).
+static void AppendString(TextBuffer* buffer, const char* text)
+{
+	Append(buffer, "\"");
+	for (const unsigned char* c = (const unsigned char*)text; *c != '\0'; ++c)
+	{
+		if (*c == '"' || *c == '\\')
+		{
+			Append(buffer, "\\%c", *c);
+		}
+		else if (*c < 0x20)
+		{
+			Append(buffer, "\\u%04x", *c);
+		}
+		else
+		{
+			Append(buffer, "%c", *c);
+		}
+	}
+	Append(buffer, "\"");
+}
+
+static void AppendGeometry(TextBuffer* buffer, const tbGeometry* geometry)
+{
+	switch (geometry->type)
+	{
+		case tb_circleShape:
+			Append(buffer, "\"circle\": {\"center\": ");
+			AppendVec2(buffer, geometry->circle.center);
+			Append(buffer, ", \"radius\": %.9g}", (double)geometry->circle.radius);
+			break;
+		case tb_capsuleShape:
+			Append(buffer, "\"capsule\": {\"center1\": ");
+			AppendVec2(buffer, geometry->capsule.center1);
+			Append(buffer, ", \"center2\": ");
+			AppendVec2(buffer, geometry->capsule.center2);
+			Append(buffer, ", \"radius\": %.9g}", (double)geometry->capsule.radius);
+			break;
+		case tb_segmentShape:
+			Append(buffer, "\"segment\": {\"point1\": ");
+			AppendVec2(buffer, geometry->segment.point1);
+			Append(buffer, ", \"point2\": ");
+			AppendVec2(buffer, geometry->segment.point2);
+			Append(buffer, "}");
+			break;
+		default:
+			Append(buffer, "\"polygon\": {\"vertices\": [");
+			for (int i = 0; i < geometry->polygon.count; ++i)
+			{
+				Append(buffer, i > 0 ? ", " : "");
+				AppendVec2(buffer, geometry->polygon.vertices[i]);
+			}
+			Append(buffer, "], \"radius\": %.9g}", (double)geometry->polygon.radius);
+			break;
+	}
+}
+
+static void AppendShape(TextBuffer* buffer, const SceneShape* shape)
+{
+	Append(buffer, "{");
+	AppendGeometry(buffer, &shape->geometry);
+	Append(buffer, ", \"density\": %.9g, \"friction\": %.9g", (double)shape->density, (double)shape->friction);
+	if (shape->restitution != 0.0f)
+	{
+		Append(buffer, ", \"restitution\": %.9g", (double)shape->restitution);
+	}
+	if (shape->isSensor)
+	{
+		Append(buffer, ", \"sensor\": true");
+	}
+	Append(buffer, "}");
+}
+
+// Optional body fields: written only when they differ from the defaults.
+static void AppendBodyExtras(TextBuffer* buffer, const SceneBody* body)
+{
+	if (body->linearVelocity.x != 0.0f || body->linearVelocity.y != 0.0f)
+	{
+		Append(buffer, ", \"linear_velocity\": ");
+		AppendVec2(buffer, body->linearVelocity);
+	}
+	if (body->angularVelocity != 0.0f)
+	{
+		Append(buffer, ", \"angular_velocity\": %.9g", (double)body->angularVelocity);
+	}
+	if (body->linearDamping != 0.0f)
+	{
+		Append(buffer, ", \"linear_damping\": %.9g", (double)body->linearDamping);
+	}
+	if (body->angularDamping != 0.0f)
+	{
+		Append(buffer, ", \"angular_damping\": %.9g", (double)body->angularDamping);
+	}
+	if (body->gravityScale != 1.0f)
+	{
+		Append(buffer, ", \"gravity_scale\": %.9g", (double)body->gravityScale);
+	}
+	if (body->bullet)
+	{
+		Append(buffer, ", \"bullet\": true");
+	}
+	if (body->isAwake == false)
+	{
+		Append(buffer, ", \"awake\": false");
+	}
+}
+
+static void AppendBody(TextBuffer* buffer, const SceneBody* body)
+{
+	Append(buffer, "    {\"type\": \"%s\"", Scene_BodyTypeName(body->type));
+	if (body->name[0] != '\0')
+	{
+		Append(buffer, ", \"name\": ");
+		AppendString(buffer, body->name);
+	}
+	Append(buffer, ", \"position\": ");
+	AppendVec2(buffer, body->position);
+	Append(buffer, ", \"angle\": ");
+	AppendFloat(buffer, body->angle);
+	AppendBodyExtras(buffer, body);
+	Append(buffer, ",\n      \"shapes\": [");
+	for (int i = 0; i < body->shapeCount; ++i)
+	{
+		Append(buffer, i > 0 ? ",\n        " : "\n        ");
+		AppendShape(buffer, body->shapes + i);
+	}
+	Append(buffer, body->shapeCount > 0 ? "\n      ]}" : "]}");
+}
+
+static void AppendMethod(TextBuffer* buffer, bool has, const char* key, const char* name, bool* first)
+{
+	if (has == false || name == NULL)
+	{
+		return;
+	}
+	Append(buffer, "%s\"%s\": \"%s\"", *first ? "" : ", ", key, name);
+	*first = false;
+}
+
+static void AppendMethods(TextBuffer* buffer, const SceneMethods* methods)
+{
+	if (!(methods->hasBroadPhase || methods->hasNarrowPhase || methods->hasContinuous || methods->hasSolver))
+	{
+		return;
+	}
+	bool first = true;
+	Append(buffer, "  \"methods\": {");
+	AppendMethod(buffer, methods->hasBroadPhase, "broadphase", Scene_BroadPhaseName(methods->broadPhase), &first);
+	AppendMethod(buffer, methods->hasNarrowPhase, "narrowphase", Scene_NarrowPhaseName(methods->narrowPhase), &first);
+	AppendMethod(buffer, methods->hasContinuous, "toi", Scene_ContinuousName(methods->continuous), &first);
+	AppendMethod(buffer, methods->hasSolver, "solver", Scene_SolverName(methods->solver), &first);
+	Append(buffer, "},\n");
+}
+
+char* SceneFile_Export(const Scene* scene)
+{
+	TextBuffer buffer = {NULL, 0, 0, false};
+	Append(&buffer, "{\n  \"gravity\": ");
+	AppendVec2(&buffer, scene->gravity);
+	Append(&buffer, ",\n  \"time_step\": %.9g,\n  \"sub_steps\": %d,\n  \"steps\": %d,\n  \"enable_sleep\": %s,\n",
+		   (double)scene->timeStep, scene->subSteps, scene->steps, scene->enableSleep ? "true" : "false");
+	AppendMethods(&buffer, &scene->methods);
+	Append(&buffer, "  \"bodies\": [");
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		Append(&buffer, i > 0 ? ",\n" : "\n");
+		AppendBody(&buffer, scene->bodies + i);
+	}
+	Append(&buffer, scene->bodyCount > 0 ? "\n  ]\n}\n" : "]\n}\n");
+	if (buffer.failed)
+	{
+		free(buffer.data);
+		return NULL;
+	}
+	return buffer.data;
+}
+
+bool SceneFile_Save(const Scene* scene, const char* path)
+{
+	char* text = SceneFile_Export(scene);
+	FILE* file = text != NULL ? fopen(path, "wb") : NULL;
+	bool ok = file != NULL && fwrite(text, 1, strlen(text), file) == strlen(text);
+	if (file != NULL)
+	{
+		ok = (fclose(file) == 0) && ok;
+	}
+	free(text);
+	return ok;
+}

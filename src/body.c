@@ -1,0 +1,894 @@
+// Bodies: creation and destruction, the awake set, mass from shapes, getters and setters, and
+// the finalize stage (shape boxes, broad-phase moves, sleep timers, move events).
+#include "world.h"
+
+#include "array.h"
+
+#include <string.h>
+
+#define TB_BODY_DEF_MAGIC 0x7B3A1C02
+
+tbBodyDef tbDefaultBodyDef(void)
+{
+	tbBodyDef def;
+	memset(&def, 0, sizeof(def));
+	def.type = tb_staticBody;
+	def.rotation = tb_rot_identity;
+	def.gravityScale = 1.0f;
+	def.sleepThreshold = TB_LINEAR_SLEEP_TOLERANCE;
+	def.enableSleep = true;
+	def.isAwake = true;
+	def.internalValue = TB_BODY_DEF_MAGIC;
+	return def;
+}
+
+tbBodyId tbMakeBodyId(const tbWorld* world, int bodyId)
+{
+	tbBodyId id = {bodyId + 1, world->worldId, world->bodies[bodyId].generation};
+	return id;
+}
+
+tbBody* tbGetBodyChecked(tbBodyId id, const char* function, tbWorld** worldOut, bool mutating)
+{
+	if (id.index1 <= 0)
+	{
+		tbReportError(function, "bodyId is null; pass an id returned by tbCreateBody");
+		return NULL;
+	}
+	tbWorld* world = id.world0 < TB_MAX_WORLDS ? tbGetWorldFromIndex(id.world0) : NULL;
+	int index = id.index1 - 1;
+	if (world == NULL || index >= world->bodyHighWater || world->bodies[index].inUse == false ||
+		world->bodies[index].generation != id.generation)
+	{
+		tbReportError(function, "bodyId refers to a destroyed body or world; do not use a body id after "
+								"tbDestroyBody/tbDestroyWorld (check with tbBody_IsValid)");
+		return NULL;
+	}
+	if (mutating && world->locked)
+	{
+		tbReportError(function, "the world is stepping; change bodies between steps");
+		return NULL;
+	}
+	if (worldOut != NULL)
+	{
+		*worldOut = world;
+	}
+	return world->bodies + index;
+}
+
+bool tbBody_IsValid(tbBodyId id)
+{
+	if (id.index1 <= 0 || id.world0 >= TB_MAX_WORLDS)
+	{
+		return false;
+	}
+	tbWorld* world = tbGetWorldFromIndex(id.world0);
+	int index = id.index1 - 1;
+	return world != NULL && index < world->bodyHighWater && world->bodies[index].inUse &&
+		   world->bodies[index].generation == id.generation;
+}
+
+static bool tbCheckBodyDef(const tbBodyDef* def)
+{
+	const char* f = "tbCreateBody";
+	if (tbCheckPointer(f, "def", def) == false)
+	{
+		return false;
+	}
+	if (def->internalValue != TB_BODY_DEF_MAGIC)
+	{
+		tbReportError(f, "def was not initialised by tbDefaultBodyDef(); start from tbDefaultBodyDef() and change fields");
+		return false;
+	}
+	if ((unsigned)def->type >= tb_bodyTypeCount)
+	{
+		tbReportError(f, "def->type is %d; use tb_staticBody, tb_kinematicBody or tb_dynamicBody", (int)def->type);
+		return false;
+	}
+	if (tbIsValidRot(def->rotation) == false)
+	{
+		tbReportError(f, "def->rotation is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)",
+					  (double)def->rotation.c, (double)def->rotation.s);
+		return false;
+	}
+	return tbCheckVec2(f, "def->position", def->position) && tbCheckVec2(f, "def->linearVelocity", def->linearVelocity) &&
+		   tbCheckFloat(f, "def->angularVelocity", def->angularVelocity) &&
+		   tbCheckNonNegative(f, "def->linearDamping", def->linearDamping) &&
+		   tbCheckNonNegative(f, "def->angularDamping", def->angularDamping) &&
+		   tbCheckFloat(f, "def->gravityScale", def->gravityScale) &&
+		   tbCheckNonNegative(f, "def->sleepThreshold", def->sleepThreshold);
+}
+
+static void tbAddToAwakeSet(tbWorld* world, tbBody* body, int bodyId)
+{
+	body->awakeIndex = world->awakeBodyCount;
+	TB_ARRAY_PUSH(world->awakeBodies, world->awakeBodyCount, world->awakeBodyCapacity, bodyId);
+}
+
+static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
+{
+	// Order-preserving removal keeps the solver order independent of which body slept first.
+	int index = body->awakeIndex;
+	for (int i = index + 1; i < world->awakeBodyCount; ++i)
+	{
+		int id = world->awakeBodies[i];
+		world->awakeBodies[i - 1] = id;
+		world->bodies[id].awakeIndex = i - 1;
+	}
+	world->awakeBodyCount -= 1;
+	body->awakeIndex = TB_NULL_INDEX;
+}
+
+void tbWakeBody(tbWorld* world, tbBody* body)
+{
+	if (body->type == tb_staticBody || body->awakeIndex != TB_NULL_INDEX)
+	{
+		body->sleepTime = 0.0f;
+		return;
+	}
+	body->sleepTime = 0.0f;
+	tbAddToAwakeSet(world, body, (int)(body - world->bodies));
+}
+
+void tbSleepBody(tbWorld* world, tbBody* body)
+{
+	if (body->awakeIndex == TB_NULL_INDEX)
+	{
+		return;
+	}
+	tbRemoveFromAwakeSet(world, body);
+	body->linearVelocity = tb_vec2_zero;
+	body->angularVelocity = 0.0f;
+	body->force = tb_vec2_zero;
+	body->torque = 0.0f;
+}
+
+static int tbAllocBodySlot(tbWorld* world)
+{
+	if (world->bodyFreeCount > 0)
+	{
+		return world->bodyFree[--world->bodyFreeCount];
+	}
+	TB_ARRAY_RESERVE(world->bodies, world->bodyCapacity, world->bodyHighWater + 1);
+	int id = world->bodyHighWater++;
+	memset(world->bodies + id, 0, sizeof(tbBody));
+	return id;
+}
+
+tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbCreateBody");
+	if (world == NULL || tbCheckBodyDef(def) == false)
+	{
+		return TB_NULL_BODY_ID;
+	}
+	if (world->locked)
+	{
+		tbReportError("tbCreateBody", "the world is stepping; create bodies between steps");
+		return TB_NULL_BODY_ID;
+	}
+	int id = tbAllocBodySlot(world);
+	tbBody* body = world->bodies + id;
+	uint16_t generation = (uint16_t)(body->generation + 1);
+	memset(body, 0, sizeof(tbBody));
+	body->generation = generation;
+	body->inUse = true;
+	body->name = def->name;
+	body->userData = def->userData;
+	body->type = (uint8_t)def->type;
+	body->transform.p = def->position;
+	body->transform.q = tbNormalizeRot(def->rotation);
+	body->center = def->position;
+	body->center0 = def->position;
+	body->rotation0 = body->transform.q;
+	body->linearVelocity = def->type == tb_staticBody ? tb_vec2_zero : def->linearVelocity;
+	body->angularVelocity = def->type == tb_staticBody ? 0.0f : def->angularVelocity;
+	body->linearDamping = def->linearDamping;
+	body->angularDamping = def->angularDamping;
+	body->gravityScale = def->gravityScale;
+	body->sleepThreshold = def->sleepThreshold;
+	body->enableSleep = def->enableSleep;
+	body->fixedRotation = def->fixedRotation;
+	body->isBullet = def->isBullet;
+	body->headShapeId = TB_NULL_INDEX;
+	body->headContactKey = TB_NULL_INDEX;
+	body->awakeIndex = TB_NULL_INDEX;
+	body->solverIndex = TB_NULL_INDEX;
+	body->mass = 0.0f;
+	body->invMass = def->type == tb_dynamicBody ? 1.0f : 0.0f;
+	if (def->type != tb_staticBody && (def->isAwake || def->enableSleep == false))
+	{
+		tbAddToAwakeSet(world, body, id);
+	}
+	world->bodyCount += 1;
+	return tbMakeBodyId(world, id);
+}
+
+void tbDestroyBodyContacts(tbWorld* world, tbBody* body, bool wakeBodies)
+{
+	int key = body->headContactKey;
+	while (key != TB_NULL_INDEX)
+	{
+		tbContact* contact = world->contacts + (key >> 1);
+		int next = contact->edges[key & 1].nextKey;
+		tbDestroyContact(world, key >> 1, wakeBodies);
+		key = next;
+	}
+}
+
+void tbDestroyBody(tbBodyId bodyId)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbDestroyBody", &world, true);
+	if (body == NULL)
+	{
+		return;
+	}
+	tbDestroyBodyContacts(world, body, true);
+	int shapeId = body->headShapeId;
+	while (shapeId != TB_NULL_INDEX)
+	{
+		tbShape* shape = world->shapes + shapeId;
+		int next = shape->nextShapeId;
+		tbDestroyShapeProxy(world, shape);
+		shape->inUse = false;
+		shape->generation += 1;
+		TB_ARRAY_PUSH(world->shapeFree, world->shapeFreeCount, world->shapeFreeCapacity, shapeId);
+		world->shapeCount -= 1;
+		shapeId = next;
+	}
+	if (body->awakeIndex != TB_NULL_INDEX)
+	{
+		tbRemoveFromAwakeSet(world, body);
+	}
+	body->inUse = false;
+	body->generation += 1;
+	world->bodyCount -= 1;
+	TB_ARRAY_PUSH(world->bodyFree, world->bodyFreeCount, world->bodyFreeCapacity, bodyId.index1 - 1);
+}
+
+/// Extents used by continuous collision: the smallest distance from the centre of mass to the
+/// surface (a conservative "thickness") and the largest distance to any point of any shape.
+static void tbComputeExtents(tbWorld* world, tbBody* body)
+{
+	float minExtent = TB_HUGE, maxExtent = 0.0f;
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		const tbGeometry* g = &world->shapes[id].geometry;
+		tbShapeProxy proxy = tbMakeShapeProxy(g);
+		float shapeMin = proxy.radius;
+		if (g->type == tb_polygonShape)
+		{
+			float inner = TB_HUGE;
+			for (int i = 0; i < g->polygon.count; ++i)
+			{
+				float d = tbDot(g->polygon.normals[i], tbSub(g->polygon.vertices[i], body->localCenter));
+				inner = tbMinFloat(inner, d);
+			}
+			shapeMin = tbMaxFloat(inner, 0.0f) + g->polygon.radius;
+		}
+		minExtent = tbMinFloat(minExtent, shapeMin);
+		for (int i = 0; i < proxy.count; ++i)
+		{
+			maxExtent = tbMaxFloat(maxExtent, tbDistance(proxy.points[i], body->localCenter) + proxy.radius);
+		}
+	}
+	body->minExtent = minExtent < TB_HUGE ? minExtent : 0.0f;
+	body->maxExtent = maxExtent;
+}
+
+void tbUpdateBodyMass(tbWorld* world, tbBody* body)
+{
+	body->mass = 0.0f;
+	body->invMass = 0.0f;
+	body->inertia = 0.0f;
+	body->invInertia = 0.0f;
+	body->localCenter = tb_vec2_zero;
+	if (body->type != tb_dynamicBody)
+	{
+		body->center = tbTransformPoint(body->transform, body->localCenter);
+		tbComputeExtents(world, body);
+		return;
+	}
+	// Accumulate mass and first moment, then inertia about the origin by the parallel-axis theorem.
+	float rotationalInertia = 0.0f;
+	tbVec2 localCenter = tb_vec2_zero;
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		const tbShape* shape = world->shapes + id;
+		if (shape->density == 0.0f)
+		{
+			continue;
+		}
+		tbMassData md = tbComputeShapeMass(&shape->geometry, shape->density);
+		body->mass += md.mass;
+		localCenter = tbMulAdd(localCenter, md.mass, md.center);
+		rotationalInertia += md.rotationalInertia + md.mass * tbDot(md.center, md.center);
+	}
+	if (body->mass > 0.0f)
+	{
+		body->invMass = 1.0f / body->mass;
+		localCenter = tbMulSV(body->invMass, localCenter);
+	}
+	else
+	{
+		// A dynamic body without mass behaves as 1 kg so that it still falls.
+		body->mass = 1.0f;
+		body->invMass = 1.0f;
+	}
+	if (rotationalInertia > 0.0f && body->fixedRotation == false)
+	{
+		// Shift the inertia from the body origin to the centre of mass.
+		body->inertia = rotationalInertia - body->mass * tbDot(localCenter, localCenter);
+		body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
+	}
+	tbVec2 oldCenter = body->center;
+	body->localCenter = localCenter;
+	body->center = tbTransformPoint(body->transform, localCenter);
+	body->center0 = body->center;
+	// Keep the velocity of the body origin: v_center = v_old + ω × (c_new − c_old).
+	body->linearVelocity = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
+	tbComputeExtents(world, body);
+}
+
+// --- getters and setters ----------------------------------------------------------------------
+
+tbBodyType tbBody_GetType(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetType", NULL, false);
+	return body != NULL ? (tbBodyType)body->type : tb_staticBody;
+}
+
+bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetType", &world, true);
+	if (body == NULL)
+	{
+		return false;
+	}
+	if ((unsigned)type >= tb_bodyTypeCount)
+	{
+		tbReportError("tbBody_SetType", "type is %d; use tb_staticBody, tb_kinematicBody or tb_dynamicBody", (int)type);
+		return false;
+	}
+	if (body->type == type)
+	{
+		return true;
+	}
+	tbDestroyBodyContacts(world, body, true);
+	if (body->awakeIndex != TB_NULL_INDEX)
+	{
+		tbRemoveFromAwakeSet(world, body);
+	}
+	body->type = (uint8_t)type;
+	if (type == tb_staticBody)
+	{
+		body->linearVelocity = tb_vec2_zero;
+		body->angularVelocity = 0.0f;
+	}
+	else
+	{
+		tbWakeBody(world, body);
+	}
+	// Proxies change kind (static proxies never pair with each other): re-create them.
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		tbDestroyShapeProxy(world, world->shapes + id);
+		tbCreateShapeProxy(world, world->shapes + id, body);
+	}
+	tbUpdateBodyMass(world, body);
+	return true;
+}
+
+tbVec2 tbBody_GetPosition(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetPosition", NULL, false);
+	return body != NULL ? body->transform.p : tb_vec2_zero;
+}
+
+tbRot tbBody_GetRotation(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetRotation", NULL, false);
+	return body != NULL ? body->transform.q : tb_rot_identity;
+}
+
+float tbBody_GetAngle(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetAngle", NULL, false);
+	return body != NULL ? tbRot_GetAngle(body->transform.q) : 0.0f;
+}
+
+tbTransform tbBody_GetTransform(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetTransform", NULL, false);
+	return body != NULL ? body->transform : tb_transform_identity;
+}
+
+bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation)
+{
+	const char* f = "tbBody_SetTransform";
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
+	if (body == NULL || tbCheckVec2(f, "position", position) == false)
+	{
+		return false;
+	}
+	if (tbIsValidRot(rotation) == false)
+	{
+		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", (double)rotation.c,
+					  (double)rotation.s);
+		return false;
+	}
+	body->transform.p = position;
+	body->transform.q = tbNormalizeRot(rotation);
+	body->center = tbTransformPoint(body->transform, body->localCenter);
+	body->center0 = body->center;
+	body->rotation0 = body->transform.q;
+	tbWakeBody(world, body);
+	tbUpdateBodyShapeBoxes(world, body, true);
+	return true;
+}
+
+tbVec2 tbBody_GetLocalPoint(tbBodyId bodyId, tbVec2 worldPoint)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalPoint", NULL, false);
+	return body != NULL ? tbInvTransformPoint(body->transform, worldPoint) : tb_vec2_zero;
+}
+
+tbVec2 tbBody_GetWorldPoint(tbBodyId bodyId, tbVec2 localPoint)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldPoint", NULL, false);
+	return body != NULL ? tbTransformPoint(body->transform, localPoint) : tb_vec2_zero;
+}
+
+tbVec2 tbBody_GetLocalVector(tbBodyId bodyId, tbVec2 worldVector)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalVector", NULL, false);
+	return body != NULL ? tbInvRotateVector(body->transform.q, worldVector) : tb_vec2_zero;
+}
+
+tbVec2 tbBody_GetWorldVector(tbBodyId bodyId, tbVec2 localVector)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldVector", NULL, false);
+	return body != NULL ? tbRotateVector(body->transform.q, localVector) : tb_vec2_zero;
+}
+
+tbVec2 tbBody_GetLinearVelocity(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLinearVelocity", NULL, false);
+	return body != NULL ? body->linearVelocity : tb_vec2_zero;
+}
+
+float tbBody_GetAngularVelocity(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetAngularVelocity", NULL, false);
+	return body != NULL ? body->angularVelocity : 0.0f;
+}
+
+bool tbBody_SetLinearVelocity(tbBodyId bodyId, tbVec2 v)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetLinearVelocity", &world, true);
+	if (body == NULL || tbCheckVec2("tbBody_SetLinearVelocity", "linearVelocity", v) == false)
+	{
+		return false;
+	}
+	if (body->type == tb_staticBody)
+	{
+		return true;
+	}
+	if (tbDot(v, v) > 0.0f)
+	{
+		tbWakeBody(world, body);
+	}
+	body->linearVelocity = v;
+	return true;
+}
+
+bool tbBody_SetAngularVelocity(tbBodyId bodyId, float w)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetAngularVelocity", &world, true);
+	if (body == NULL || tbCheckFloat("tbBody_SetAngularVelocity", "angularVelocity", w) == false)
+	{
+		return false;
+	}
+	if (body->type == tb_staticBody || body->fixedRotation)
+	{
+		return true;
+	}
+	if (w != 0.0f)
+	{
+		tbWakeBody(world, body);
+	}
+	body->angularVelocity = w;
+	return true;
+}
+
+/// Common checks for force and impulse calls: a dynamic body, finite input, wake handling.
+static tbBody* tbGetDynamicForInput(tbBodyId bodyId, const char* f, bool wake, tbWorld** world)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, f, world, true);
+	if (body == NULL || body->type != tb_dynamicBody)
+	{
+		return NULL;
+	}
+	if (wake)
+	{
+		tbWakeBody(*world, body);
+	}
+	return body->awakeIndex != TB_NULL_INDEX ? body : NULL;
+}
+
+bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbVec2 point, bool wake)
+{
+	const char* f = "tbBody_ApplyForce";
+	if (tbCheckVec2(f, "force", force) == false || tbCheckVec2(f, "point", point) == false)
+	{
+		return false;
+	}
+	tbWorld* world;
+	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
+	if (body != NULL)
+	{
+		body->force = tbAdd(body->force, force);
+		body->torque += tbCross(tbSub(point, body->center), force);
+	}
+	return body != NULL;
+}
+
+bool tbBody_ApplyForceToCenter(tbBodyId bodyId, tbVec2 force, bool wake)
+{
+	const char* f = "tbBody_ApplyForceToCenter";
+	if (tbCheckVec2(f, "force", force) == false)
+	{
+		return false;
+	}
+	tbWorld* world;
+	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
+	if (body != NULL)
+	{
+		body->force = tbAdd(body->force, force);
+	}
+	return body != NULL;
+}
+
+bool tbBody_ApplyTorque(tbBodyId bodyId, float torque, bool wake)
+{
+	const char* f = "tbBody_ApplyTorque";
+	if (tbCheckFloat(f, "torque", torque) == false)
+	{
+		return false;
+	}
+	tbWorld* world;
+	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
+	if (body != NULL)
+	{
+		body->torque += torque;
+	}
+	return body != NULL;
+}
+
+bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbVec2 point, bool wake)
+{
+	const char* f = "tbBody_ApplyLinearImpulse";
+	if (tbCheckVec2(f, "impulse", impulse) == false || tbCheckVec2(f, "point", point) == false)
+	{
+		return false;
+	}
+	tbWorld* world;
+	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
+	if (body != NULL)
+	{
+		body->linearVelocity = tbMulAdd(body->linearVelocity, body->invMass, impulse);
+		body->angularVelocity += body->invInertia * tbCross(tbSub(point, body->center), impulse);
+	}
+	return body != NULL;
+}
+
+bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wake)
+{
+	const char* f = "tbBody_ApplyLinearImpulseToCenter";
+	if (tbCheckVec2(f, "impulse", impulse) == false)
+	{
+		return false;
+	}
+	tbWorld* world;
+	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
+	if (body != NULL)
+	{
+		body->linearVelocity = tbMulAdd(body->linearVelocity, body->invMass, impulse);
+	}
+	return body != NULL;
+}
+
+bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
+{
+	const char* f = "tbBody_ApplyAngularImpulse";
+	if (tbCheckFloat(f, "impulse", impulse) == false)
+	{
+		return false;
+	}
+	tbWorld* world;
+	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
+	if (body != NULL)
+	{
+		body->angularVelocity += body->invInertia * impulse;
+	}
+	return body != NULL;
+}
+
+float tbBody_GetMass(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetMass", NULL, false);
+	return body != NULL && body->type == tb_dynamicBody ? body->mass : 0.0f;
+}
+
+float tbBody_GetRotationalInertia(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetRotationalInertia", NULL, false);
+	return body != NULL ? body->inertia : 0.0f;
+}
+
+tbVec2 tbBody_GetLocalCenterOfMass(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalCenterOfMass", NULL, false);
+	return body != NULL ? body->localCenter : tb_vec2_zero;
+}
+
+tbVec2 tbBody_GetWorldCenterOfMass(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldCenterOfMass", NULL, false);
+	return body != NULL ? body->center : tb_vec2_zero;
+}
+
+tbMassData tbBody_GetMassData(tbBodyId bodyId)
+{
+	tbMassData md = {0};
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetMassData", NULL, false);
+	if (body != NULL && body->type == tb_dynamicBody)
+	{
+		md.mass = body->mass;
+		md.center = body->localCenter;
+		md.rotationalInertia = body->inertia;
+	}
+	return md;
+}
+
+bool tbBody_SetLinearDamping(tbBodyId bodyId, float value)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetLinearDamping", NULL, true);
+	if (body == NULL || tbCheckNonNegative("tbBody_SetLinearDamping", "linearDamping", value) == false)
+	{
+		return false;
+	}
+	body->linearDamping = value;
+	return true;
+}
+
+float tbBody_GetLinearDamping(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLinearDamping", NULL, false);
+	return body != NULL ? body->linearDamping : 0.0f;
+}
+
+bool tbBody_SetAngularDamping(tbBodyId bodyId, float value)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetAngularDamping", NULL, true);
+	if (body == NULL || tbCheckNonNegative("tbBody_SetAngularDamping", "angularDamping", value) == false)
+	{
+		return false;
+	}
+	body->angularDamping = value;
+	return true;
+}
+
+float tbBody_GetAngularDamping(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetAngularDamping", NULL, false);
+	return body != NULL ? body->angularDamping : 0.0f;
+}
+
+bool tbBody_SetGravityScale(tbBodyId bodyId, float value)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetGravityScale", NULL, true);
+	if (body == NULL || tbCheckFloat("tbBody_SetGravityScale", "gravityScale", value) == false)
+	{
+		return false;
+	}
+	body->gravityScale = value;
+	return true;
+}
+
+float tbBody_GetGravityScale(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetGravityScale", NULL, false);
+	return body != NULL ? body->gravityScale : 0.0f;
+}
+
+bool tbBody_IsAwake(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_IsAwake", NULL, false);
+	return body != NULL && body->awakeIndex != TB_NULL_INDEX;
+}
+
+void tbBody_SetAwake(tbBodyId bodyId, bool awake)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetAwake", &world, true);
+	if (body == NULL)
+	{
+		return;
+	}
+	if (awake)
+	{
+		tbWakeBody(world, body);
+	}
+	else
+	{
+		tbSleepBody(world, body);
+	}
+}
+
+void tbBody_EnableSleep(tbBodyId bodyId, bool enableSleep)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_EnableSleep", &world, true);
+	if (body != NULL)
+	{
+		body->enableSleep = enableSleep;
+		if (enableSleep == false)
+		{
+			tbWakeBody(world, body);
+		}
+	}
+}
+
+bool tbBody_IsBullet(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_IsBullet", NULL, false);
+	return body != NULL && body->isBullet;
+}
+
+void tbBody_SetBullet(tbBodyId bodyId, bool flag)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetBullet", NULL, true);
+	if (body != NULL)
+	{
+		body->isBullet = flag;
+	}
+}
+
+void tbBody_SetFixedRotation(tbBodyId bodyId, bool flag)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetFixedRotation", &world, true);
+	if (body != NULL && body->fixedRotation != flag)
+	{
+		body->fixedRotation = flag;
+		body->angularVelocity = 0.0f;
+		tbUpdateBodyMass(world, body);
+	}
+}
+
+void tbBody_SetUserData(tbBodyId bodyId, void* userData)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetUserData", NULL, false);
+	if (body != NULL)
+	{
+		body->userData = userData;
+	}
+}
+
+void* tbBody_GetUserData(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetUserData", NULL, false);
+	return body != NULL ? body->userData : NULL;
+}
+
+const char* tbBody_GetName(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetName", NULL, false);
+	return body != NULL ? body->name : NULL;
+}
+
+tbWorldId tbBody_GetWorld(tbBodyId bodyId)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorld", &world, false);
+	if (body == NULL)
+	{
+		return TB_NULL_WORLD_ID;
+	}
+	tbWorldId id = {(uint16_t)(world->worldId + 1), world->generation};
+	return id;
+}
+
+int tbBody_GetShapeCount(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetShapeCount", NULL, false);
+	return body != NULL ? body->shapeCount : 0;
+}
+
+int tbBody_GetShapes(tbBodyId bodyId, tbShapeId* shapeArray, int capacity)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetShapes", &world, false);
+	if (body == NULL || tbCheckPointer("tbBody_GetShapes", "shapeArray", shapeArray) == false)
+	{
+		return 0;
+	}
+	int count = 0;
+	for (int id = body->headShapeId; id != TB_NULL_INDEX && count < capacity; id = world->shapes[id].nextShapeId)
+	{
+		shapeArray[count++] = tbMakeShapeId(world, id);
+	}
+	return count;
+}
+
+tbAABB tbBody_ComputeAABB(tbBodyId bodyId)
+{
+	tbWorld* world;
+	tbAABB box = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_ComputeAABB", &world, false);
+	if (body == NULL || body->headShapeId == TB_NULL_INDEX)
+	{
+		if (body != NULL)
+		{
+			box.lowerBound = box.upperBound = body->transform.p;
+		}
+		return box;
+	}
+	box = tbComputeShapeAABBInternal(world->shapes + body->headShapeId, body->transform);
+	for (int id = world->shapes[body->headShapeId].nextShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		box = tbAABB_Union(box, tbComputeShapeAABBInternal(world->shapes + id, body->transform));
+	}
+	return box;
+}
+
+// --- the finalize stage -----------------------------------------------------------------------
+
+static void tbUpdateSleepTime(const tbWorld* world, tbBody* body, float timeStep)
+{
+	if (world->def.enableSleep == false || body->enableSleep == false)
+	{
+		body->sleepTime = 0.0f;
+		return;
+	}
+	// A body rests when its fastest point moves slower than the threshold: |v| + |ω|·maxExtent.
+	float speed = tbLength(body->linearVelocity) + tbAbsFloat(body->angularVelocity) * body->maxExtent;
+	bool slowSpin = tbAbsFloat(body->angularVelocity) < TB_ANGULAR_SLEEP_TOLERANCE;
+	if (speed > body->sleepThreshold && !(body->maxExtent == 0.0f && slowSpin))
+	{
+		body->sleepTime = 0.0f;
+	}
+	else
+	{
+		body->sleepTime += timeStep;
+	}
+}
+
+static void tbPushMoveEvent(tbWorld* world, tbBody* body, int bodyId)
+{
+	tbBodyMoveEvent event;
+	event.transform = body->transform;
+	event.bodyId = tbMakeBodyId(world, bodyId);
+	event.userData = body->userData;
+	event.fellAsleep = false;
+	TB_ARRAY_PUSH(world->moveEvents, world->moveCount, world->moveCapacity, event);
+}
+
+void tbFinalizeStage(tbWorld* world, float timeStep)
+{
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		int bodyId = world->awakeBodies[i];
+		tbBody* body = world->bodies + bodyId;
+		tbUpdateSleepTime(world, body, timeStep);
+		tbUpdateBodyShapeBoxes(world, body, false);
+		tbPushMoveEvent(world, body, bodyId);
+	}
+	tbReportHitEvents(world);
+}

@@ -1,0 +1,556 @@
+// Broad phase: the proxy table, the move buffer and the pair set, dispatching to one of three
+// methods (dynamic tree, sort-and-sweep, brute force). See broad_phase.h for the contract; the
+// pair set is the same under every method, so switching methods never changes a trajectory.
+//
+// Tree method: static proxies live in a static tree and movable ones in a movable tree, so the
+// many static boxes of a level are never re-inserted and a moved static proxy queries only the
+// movable tree (static–static pairs never exist). A batch of static inserts triggers one binned
+// SAH rebuild of the static tree on the next UpdatePairs (a top-down build gives a better tree
+// than incremental insertion, at O(n log n) once).
+//
+// Pair set: each moved proxy queries with its fat box. When both proxies of a pair moved, each
+// finds the other; the one with the larger key skips it. UpdatePairs then sorts the pairs by
+// (shapeIndexA, shapeIndexB) and drops duplicates, which makes the set independent of the method
+// and of the order of the moves.
+//
+// Category bits: the broad phase does not filter pairs (the world does), but the trees prune
+// user queries by mask. To let pair queries see proxies whose category bits are zero, the trees
+// store categoryBits | TB_PAIR_QUERY_BIT and pair queries use that bit as their mask; user
+// queries re-check the proxy's true bits before calling back.
+
+#include "broad_phase.h"
+
+#include "brute_force.h"
+#include "core.h"
+#include "sort_and_sweep.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/// Bit set in every tree leaf of the broad phase so pair queries (mask = this bit) see all proxies.
+#define TB_PAIR_QUERY_BIT (UINT64_C(1) << 63)
+
+/// Static inserts since the last rebuild that trigger a static-tree rebuild: at least 16 and at
+/// least half the static tree (a rebuild is O(n log n); small trickles are inserted one by one).
+#define TB_STATIC_REBUILD_MIN 16
+
+static tbDynamicTree* tbTreeOf(tbBroadPhase* bp, const tbBroadProxy* proxy)
+{
+	return proxy->type == tb_proxyStatic ? &bp->staticTree : &bp->movableTree;
+}
+
+// --------------------------------------------------------------------------------------------
+// Method state
+
+static void tbAddToMethod(tbBroadPhase* bp, int key)
+{
+	tbBroadProxy* p = bp->proxies + key;
+	switch (bp->method)
+	{
+		case tb_broadPhaseTree:
+			p->handle = tbDynamicTree_CreateProxy(tbTreeOf(bp, p), p->aabb, p->categoryBits | TB_PAIR_QUERY_BIT, key);
+			bp->staticInsertCount += p->type == tb_proxyStatic ? 1 : 0;
+			break;
+		case tb_broadPhaseSortAndSweep:
+			tbSortAndSweep_AddProxy(bp->sweep, bp, key);
+			break;
+		default:
+			tbBruteForce_AddProxy(bp->brute, bp, key);
+			break;
+	}
+}
+
+static void tbRemoveFromMethod(tbBroadPhase* bp, int key)
+{
+	tbBroadProxy* p = bp->proxies + key;
+	switch (bp->method)
+	{
+		case tb_broadPhaseTree:
+			tbDynamicTree_DestroyProxy(tbTreeOf(bp, p), p->handle);
+			break;
+		case tb_broadPhaseSortAndSweep:
+			tbSortAndSweep_RemoveProxy(bp->sweep, key);
+			break;
+		default:
+			tbBruteForce_RemoveProxy(bp->brute, key);
+			break;
+	}
+	p->handle = -1;
+}
+
+/// Build the selected method's state from the proxy table.
+static void tbCreateMethodState(tbBroadPhase* bp)
+{
+	bp->staticTree = tbDynamicTree_Create();
+	bp->movableTree = tbDynamicTree_Create();
+	bp->sweep = bp->method == tb_broadPhaseSortAndSweep ? tbSortAndSweep_Create() : NULL;
+	bp->brute = bp->method == tb_broadPhaseBruteForce ? tbBruteForce_Create() : NULL;
+	bp->staticInsertCount = 0;
+	for (int key = 0; key < bp->proxyCapacity; ++key)
+	{
+		if (bp->proxies[key].isFree == false)
+		{
+			tbAddToMethod(bp, key);
+		}
+	}
+}
+
+static void tbDestroyMethodState(tbBroadPhase* bp)
+{
+	tbDynamicTree_Destroy(&bp->staticTree);
+	tbDynamicTree_Destroy(&bp->movableTree);
+	if (bp->sweep != NULL)
+	{
+		tbSortAndSweep_Destroy(bp->sweep);
+		bp->sweep = NULL;
+	}
+	if (bp->brute != NULL)
+	{
+		tbBruteForce_Destroy(bp->brute);
+		bp->brute = NULL;
+	}
+}
+
+static tbBroadPhaseMethod tbResolveMethod(tbBroadPhaseMethod method)
+{
+	if (method <= tb_broadPhaseAuto || method >= tb_broadPhaseMethodCount)
+	{
+		return tb_broadPhaseTree;
+	}
+	return method;
+}
+
+// --------------------------------------------------------------------------------------------
+// Lifetime
+
+void tbBroadPhase_Create(tbBroadPhase* bp, tbBroadPhaseMethod method)
+{
+	memset(bp, 0, sizeof(*bp));
+	bp->method = tbResolveMethod(method);
+	bp->freeProxy = -1;
+	tbCreateMethodState(bp);
+}
+
+void tbBroadPhase_Destroy(tbBroadPhase* bp)
+{
+	tbDestroyMethodState(bp);
+	tbFree(bp->proxies, bp->proxyCapacity * (int)sizeof(tbBroadProxy));
+	tbFree(bp->moveBuffer, bp->moveCapacity * (int)sizeof(int));
+	tbFree(bp->pairs, bp->pairCapacity * (int)sizeof(tbShapePair));
+	memset(bp, 0, sizeof(*bp));
+	bp->freeProxy = -1;
+}
+
+/// Put a proxy in the move buffer unless it is there already.
+static void tbMarkMoved(tbBroadPhase* bp, int key)
+{
+	tbBroadProxy* p = bp->proxies + key;
+	if (p->moveIndex >= 0)
+	{
+		return;
+	}
+	if (bp->moveCount == bp->moveCapacity)
+	{
+		int n = bp->moveCapacity;
+		int m = tbMaxInt(16, 2 * n);
+		bp->moveBuffer = tbGrowAlloc(bp->moveBuffer, n * (int)sizeof(int), m * (int)sizeof(int));
+		bp->moveCapacity = m;
+	}
+	p->moveIndex = bp->moveCount;
+	bp->moveBuffer[bp->moveCount++] = key;
+}
+
+static void tbClearMoveBuffer(tbBroadPhase* bp)
+{
+	for (int i = 0; i < bp->moveCount; ++i)
+	{
+		int key = bp->moveBuffer[i];
+		if (key >= 0)
+		{
+			bp->proxies[key].moveIndex = -1;
+		}
+	}
+	bp->moveCount = 0;
+}
+
+void tbBroadPhase_SetMethod(tbBroadPhase* bp, tbBroadPhaseMethod method)
+{
+	tbDestroyMethodState(bp);
+	bp->method = tbResolveMethod(method);
+	tbCreateMethodState(bp);
+	tbClearMoveBuffer(bp);
+	for (int key = 0; key < bp->proxyCapacity; ++key)
+	{
+		if (bp->proxies[key].isFree == false)
+		{
+			tbMarkMoved(bp, key);
+		}
+	}
+}
+
+// --------------------------------------------------------------------------------------------
+// Proxies
+
+/// Take a slot from the free list, doubling the table when empty.
+static int tbAllocateProxy(tbBroadPhase* bp)
+{
+	if (bp->freeProxy < 0)
+	{
+		int n = bp->proxyCapacity;
+		int m = tbMaxInt(16, 2 * n);
+		bp->proxies = tbGrowAlloc(bp->proxies, n * (int)sizeof(tbBroadProxy), m * (int)sizeof(tbBroadProxy));
+		for (int i = n; i < m; ++i)
+		{
+			bp->proxies[i] = (tbBroadProxy){.handle = i + 1 < m ? i + 1 : -1, .moveIndex = -1, .isFree = true};
+		}
+		bp->freeProxy = n;
+		bp->proxyCapacity = m;
+	}
+	int key = bp->freeProxy;
+	bp->freeProxy = bp->proxies[key].handle;
+	return key;
+}
+
+int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex, tbProxyType type)
+{
+	int key = tbAllocateProxy(bp);
+	bp->proxies[key] = (tbBroadProxy){fatAABB, categoryBits, shapeIndex, type, -1, -1, false};
+	bp->proxyCount += 1;
+	tbAddToMethod(bp, key);
+	tbMarkMoved(bp, key);
+	return key;
+}
+
+void tbBroadPhase_DestroyProxy(tbBroadPhase* bp, int proxyKey)
+{
+	TB_ASSERT(0 <= proxyKey && proxyKey < bp->proxyCapacity && bp->proxies[proxyKey].isFree == false);
+	tbBroadProxy* p = bp->proxies + proxyKey;
+	tbRemoveFromMethod(bp, proxyKey);
+	if (p->moveIndex >= 0)
+	{
+		bp->moveBuffer[p->moveIndex] = -1;
+	}
+	*p = (tbBroadProxy){.handle = bp->freeProxy, .moveIndex = -1, .isFree = true};
+	bp->freeProxy = proxyKey;
+	bp->proxyCount -= 1;
+}
+
+void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB)
+{
+	TB_ASSERT(0 <= proxyKey && proxyKey < bp->proxyCapacity && bp->proxies[proxyKey].isFree == false);
+	tbBroadProxy* p = bp->proxies + proxyKey;
+	p->aabb = fatAABB;
+	if (bp->method == tb_broadPhaseTree)
+	{
+		tbDynamicTree_MoveProxy(tbTreeOf(bp, p), p->handle, fatAABB);
+	}
+	// Sort-and-sweep reloads endpoint values from the table; brute force reads the table.
+	tbMarkMoved(bp, proxyKey);
+}
+
+tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey)
+{
+	TB_ASSERT(0 <= proxyKey && proxyKey < bp->proxyCapacity);
+	return bp->proxies[proxyKey].aabb;
+}
+
+bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)
+{
+	return tbAABB_Overlaps(bp->proxies[proxyKeyA].aabb, bp->proxies[proxyKeyB].aabb);
+}
+
+// --------------------------------------------------------------------------------------------
+// Pairs
+
+void tbBroadPhase_AddPair(tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)
+{
+	int a = bp->proxies[proxyKeyA].shapeIndex;
+	int b = bp->proxies[proxyKeyB].shapeIndex;
+	if (bp->pairCount == bp->pairCapacity)
+	{
+		int n = bp->pairCapacity;
+		int m = tbMaxInt(64, 2 * n);
+		bp->pairs = tbGrowAlloc(bp->pairs, n * (int)sizeof(tbShapePair), m * (int)sizeof(tbShapePair));
+		bp->pairCapacity = m;
+	}
+	bp->pairs[bp->pairCount++] = a < b ? (tbShapePair){a, b} : (tbShapePair){b, a};
+}
+
+static int tbComparePairs(const void* left, const void* right)
+{
+	const tbShapePair* p = left;
+	const tbShapePair* q = right;
+	if (p->a != q->a)
+	{
+		return p->a < q->a ? -1 : 1;
+	}
+	return p->b < q->b ? -1 : (p->b > q->b ? 1 : 0);
+}
+
+/// Sort by (a, b) and drop repeats.
+static void tbSortUniquePairs(tbBroadPhase* bp)
+{
+	if (bp->pairCount < 2)
+	{
+		return;
+	}
+	qsort(bp->pairs, (size_t)bp->pairCount, sizeof(tbShapePair), tbComparePairs);
+	int n = 1;
+	for (int i = 1; i < bp->pairCount; ++i)
+	{
+		tbShapePair p = bp->pairs[i];
+		if (p.a != bp->pairs[n - 1].a || p.b != bp->pairs[n - 1].b)
+		{
+			bp->pairs[n++] = p;
+		}
+	}
+	bp->pairCount = n;
+}
+
+typedef struct tbPairQueryContext
+{
+	tbBroadPhase* bp;
+	int queryKey;
+} tbPairQueryContext;
+
+static bool tbPairQueryCallback(int treeProxyId, int otherKey, void* context)
+{
+	(void)treeProxyId;
+	tbPairQueryContext* c = context;
+	if (otherKey == c->queryKey)
+	{
+		return true;
+	}
+	// Both moved: both queries find the pair; the larger key reports it.
+	if (c->bp->proxies[otherKey].moveIndex >= 0 && otherKey > c->queryKey)
+	{
+		return true;
+	}
+	tbBroadPhase_AddPair(c->bp, c->queryKey, otherKey);
+	return true;
+}
+
+static void tbTreeFindPairs(tbBroadPhase* bp)
+{
+	int staticCount = bp->staticTree.proxyCount;
+	if (bp->staticInsertCount >= TB_STATIC_REBUILD_MIN && 2 * bp->staticInsertCount >= staticCount)
+	{
+		tbDynamicTree_Rebuild(&bp->staticTree);
+		bp->staticInsertCount = 0;
+	}
+	for (int i = 0; i < bp->moveCount; ++i)
+	{
+		int key = bp->moveBuffer[i];
+		if (key < 0)
+		{
+			continue; // destroyed after it moved
+		}
+		const tbBroadProxy* p = bp->proxies + key;
+		tbPairQueryContext context = {bp, key};
+		tbDynamicTree_Query(&bp->movableTree, p->aabb, TB_PAIR_QUERY_BIT, tbPairQueryCallback, &context);
+		if (p->type != tb_proxyStatic)
+		{
+			tbDynamicTree_Query(&bp->staticTree, p->aabb, TB_PAIR_QUERY_BIT, tbPairQueryCallback, &context);
+		}
+	}
+}
+
+void tbBroadPhase_UpdatePairs(tbBroadPhase* bp)
+{
+	bp->pairCount = 0;
+	switch (bp->method)
+	{
+		case tb_broadPhaseTree:
+			tbTreeFindPairs(bp);
+			break;
+		case tb_broadPhaseSortAndSweep:
+			tbSortAndSweep_FindPairs(bp->sweep, bp);
+			break;
+		default:
+			tbBruteForce_FindPairs(bp->brute, bp);
+			break;
+	}
+	tbSortUniquePairs(bp);
+	tbClearMoveBuffer(bp);
+}
+
+// --------------------------------------------------------------------------------------------
+// Queries (the tree prunes; the other methods scan the table)
+
+/// Translates tree callbacks (tree id, proxy key) into broad-phase ones (proxy key, shape index),
+/// re-checks the true category bits, and carries stop and clip across the two trees.
+typedef struct tbUserQueryContext
+{
+	const tbBroadPhase* bp;
+	uint64_t maskBits;
+	tbTreeQueryCallbackFcn* queryCallback;
+	tbTreeRayCastCallbackFcn* rayCallback;
+	void* userContext;
+	float maxFraction;
+	bool stopped;
+} tbUserQueryContext;
+
+static bool tbUserQueryCallback(int treeProxyId, int key, void* context)
+{
+	(void)treeProxyId;
+	tbUserQueryContext* c = context;
+	const tbBroadProxy* p = c->bp->proxies + key;
+	if ((p->categoryBits & c->maskBits) == 0)
+	{
+		return true;
+	}
+	c->stopped = c->queryCallback(key, p->shapeIndex, c->userContext) == false;
+	return c->stopped == false;
+}
+
+void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+						void* context)
+{
+	switch (bp->method)
+	{
+		case tb_broadPhaseTree:
+		{
+			tbUserQueryContext c = {bp, maskBits, callback, NULL, context, 0.0f, false};
+			tbDynamicTree_Query(&bp->staticTree, aabb, maskBits, tbUserQueryCallback, &c);
+			if (c.stopped == false)
+			{
+				tbDynamicTree_Query(&bp->movableTree, aabb, maskBits, tbUserQueryCallback, &c);
+			}
+			break;
+		}
+		case tb_broadPhaseSortAndSweep:
+			tbSortAndSweep_Query(bp, aabb, maskBits, callback, context);
+			break;
+		default:
+			tbBruteForce_Query(bp, aabb, maskBits, callback, context);
+			break;
+	}
+}
+
+static float tbUserRayCastCallback(const tbRayCastInput* input, int treeProxyId, int key, void* context)
+{
+	(void)treeProxyId;
+	tbUserQueryContext* c = context;
+	const tbBroadProxy* p = c->bp->proxies + key;
+	if ((p->categoryBits & c->maskBits) == 0)
+	{
+		return input->maxFraction;
+	}
+	float value = c->rayCallback(input, key, p->shapeIndex, c->userContext);
+	if (value == 0.0f)
+	{
+		c->stopped = true;
+	}
+	else if (0.0f < value && value < c->maxFraction)
+	{
+		c->maxFraction = value;
+	}
+	return value;
+}
+
+void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
+						  tbTreeRayCastCallbackFcn* callback, void* context)
+{
+	switch (bp->method)
+	{
+		case tb_broadPhaseTree:
+		{
+			tbUserQueryContext c = {bp, maskBits, NULL, callback, context, input->maxFraction, false};
+			tbDynamicTree_RayCast(&bp->staticTree, input, maskBits, tbUserRayCastCallback, &c);
+			if (c.stopped == false)
+			{
+				// The movable tree sees the ray as clipped by hits in the static tree.
+				tbRayCastInput clipped = *input;
+				clipped.maxFraction = c.maxFraction;
+				tbDynamicTree_RayCast(&bp->movableTree, &clipped, maskBits, tbUserRayCastCallback, &c);
+			}
+			break;
+		}
+		case tb_broadPhaseSortAndSweep:
+			tbSortAndSweep_RayCast(bp, input, maskBits, callback, context);
+			break;
+		default:
+			tbBruteForce_RayCast(bp, input, maskBits, callback, context);
+			break;
+	}
+}
+
+int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp)
+{
+	return bp->method == tb_broadPhaseTree ? tbDynamicTree_GetHeight(&bp->movableTree) : 0;
+}
+
+void tbBroadPhase_VisitTreeNodes(const tbBroadPhase* bp, tbTreeNodeFcn* fcn, void* context)
+{
+	if (bp->method == tb_broadPhaseTree)
+	{
+		tbDynamicTree_VisitNodes(&bp->staticTree, fcn, context);
+		tbDynamicTree_VisitNodes(&bp->movableTree, fcn, context);
+	}
+}
+
+// --------------------------------------------------------------------------------------------
+// Validation
+
+/// Each live proxy is a leaf of the right tree carrying its key and box.
+static bool tbValidateTreeProxies(const tbBroadPhase* bp)
+{
+	if (tbDynamicTree_Validate(&bp->staticTree) == false || tbDynamicTree_Validate(&bp->movableTree) == false ||
+		bp->staticTree.proxyCount + bp->movableTree.proxyCount != bp->proxyCount)
+	{
+		return false;
+	}
+	for (int key = 0; key < bp->proxyCapacity; ++key)
+	{
+		const tbBroadProxy* p = bp->proxies + key;
+		if (p->isFree)
+		{
+			continue;
+		}
+		const tbDynamicTree* tree = p->type == tb_proxyStatic ? &bp->staticTree : &bp->movableTree;
+		tbAABB box = tbDynamicTree_GetAABB(tree, p->handle);
+		if (tbDynamicTree_GetUserData(tree, p->handle) != key || memcmp(&box, &p->aabb, sizeof(box)) != 0)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/// Live count, free list and move buffer agree with the table.
+static bool tbValidateProxyTable(const tbBroadPhase* bp)
+{
+	int live = 0;
+	for (int key = 0; key < bp->proxyCapacity; ++key)
+	{
+		const tbBroadProxy* p = bp->proxies + key;
+		live += p->isFree ? 0 : 1;
+		if (p->moveIndex >= 0 && (p->moveIndex >= bp->moveCount || bp->moveBuffer[p->moveIndex] != key))
+		{
+			return false;
+		}
+	}
+	int freeCount = 0;
+	for (int key = bp->freeProxy; key >= 0 && freeCount <= bp->proxyCapacity; key = bp->proxies[key].handle)
+	{
+		freeCount += bp->proxies[key].isFree ? 1 : bp->proxyCapacity + 1;
+	}
+	return live == bp->proxyCount && live + freeCount == bp->proxyCapacity;
+}
+
+bool tbBroadPhase_Validate(const tbBroadPhase* bp)
+{
+	if (tbValidateProxyTable(bp) == false)
+	{
+		return false;
+	}
+	switch (bp->method)
+	{
+		case tb_broadPhaseTree:
+			return tbValidateTreeProxies(bp);
+		case tb_broadPhaseSortAndSweep:
+			return tbSortAndSweep_Validate(bp->sweep, bp);
+		default:
+			return tbBruteForce_Validate(bp->brute, bp);
+	}
+}

@@ -1,0 +1,370 @@
+// Contacts: a contact exists while two shapes' fat boxes overlap. This file owns the two stages
+// that find and update them: the pair stage turns broad-phase pairs into contacts (after
+// filtering), and the collide stage (the narrow phase) recomputes each awake contact's
+// manifold, carries impulses over by feature id for warm starting, and reports begin/end events.
+#include "world.h"
+
+#include "array.h"
+
+#include <string.h>
+
+static float tbMixFriction(const tbWorld* world, const tbShape* a, const tbShape* b)
+{
+	if (world->def.frictionCallback != NULL)
+	{
+		return world->def.frictionCallback(a->friction, a->userMaterialId, b->friction, b->userMaterialId);
+	}
+	return sqrtf(a->friction * b->friction);
+}
+
+static float tbMixRestitution(const tbWorld* world, const tbShape* a, const tbShape* b)
+{
+	if (world->def.restitutionCallback != NULL)
+	{
+		return world->def.restitutionCallback(a->restitution, a->userMaterialId, b->restitution, b->userMaterialId);
+	}
+	return tbMaxFloat(a->restitution, b->restitution);
+}
+
+static void tbLinkEdge(tbWorld* world, int contactId, int edgeIndex)
+{
+	tbContact* contact = world->contacts + contactId;
+	tbBody* body = world->bodies + contact->edges[edgeIndex].bodyId;
+	int key = (contactId << 1) | edgeIndex;
+	contact->edges[edgeIndex].prevKey = TB_NULL_INDEX;
+	contact->edges[edgeIndex].nextKey = body->headContactKey;
+	if (body->headContactKey != TB_NULL_INDEX)
+	{
+		int head = body->headContactKey;
+		world->contacts[head >> 1].edges[head & 1].prevKey = key;
+	}
+	body->headContactKey = key;
+	body->contactCount += 1;
+}
+
+static void tbUnlinkEdge(tbWorld* world, int contactId, int edgeIndex)
+{
+	tbContactEdge* edge = world->contacts[contactId].edges + edgeIndex;
+	tbBody* body = world->bodies + edge->bodyId;
+	if (edge->prevKey != TB_NULL_INDEX)
+	{
+		world->contacts[edge->prevKey >> 1].edges[edge->prevKey & 1].nextKey = edge->nextKey;
+	}
+	else
+	{
+		body->headContactKey = edge->nextKey;
+	}
+	if (edge->nextKey != TB_NULL_INDEX)
+	{
+		world->contacts[edge->nextKey >> 1].edges[edge->nextKey & 1].prevKey = edge->prevKey;
+	}
+	body->contactCount -= 1;
+}
+
+void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
+{
+	int id;
+	if (world->contactFreeCount > 0)
+	{
+		id = world->contactFree[--world->contactFreeCount];
+	}
+	else
+	{
+		TB_ARRAY_RESERVE(world->contacts, world->contactCapacity, world->contactHighWater + 1);
+		id = world->contactHighWater++;
+	}
+	tbContact* contact = world->contacts + id;
+	memset(contact, 0, sizeof(tbContact));
+	const tbShape* a = world->shapes + shapeIdA;
+	const tbShape* b = world->shapes + shapeIdB;
+	contact->inUse = true;
+	contact->shapeIdA = shapeIdA;
+	contact->shapeIdB = shapeIdB;
+	contact->edges[0].bodyId = a->bodyId;
+	contact->edges[1].bodyId = b->bodyId;
+	contact->friction = tbMixFriction(world, a, b);
+	contact->restitution = tbMixRestitution(world, a, b);
+	contact->stamp = -1;
+	if (a->isSensor || b->isSensor)
+	{
+		contact->flags |= tb_contactSensor;
+	}
+	if (a->enableContactEvents && b->enableContactEvents)
+	{
+		contact->flags |= tb_contactEnableEvents;
+	}
+	if (a->enableHitEvents || b->enableHitEvents)
+	{
+		contact->flags |= tb_contactEnableHits;
+	}
+	tbLinkEdge(world, id, 0);
+	tbLinkEdge(world, id, 1);
+	tbHashSet_Add(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB));
+	world->contactCount += 1;
+}
+
+static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
+{
+	if (contact->flags & tb_contactSensor)
+	{
+		const tbShape* a = world->shapes + contact->shapeIdA;
+		bool aIsSensor = a->isSensor;
+		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
+		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
+		if (world->shapes[sensor].enableSensorEvents)
+		{
+			tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
+			TB_ARRAY_PUSH(world->sensorEndEvents, world->sensorEndCount, world->sensorEndCapacity, e);
+		}
+	}
+	else if (contact->flags & tb_contactEnableEvents)
+	{
+		tbContactEndTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB)};
+		TB_ARRAY_PUSH(world->endEvents, world->endCount, world->endCapacity, e);
+	}
+}
+
+void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
+{
+	tbContact* contact = world->contacts + contactId;
+	if (contact->flags & tb_contactTouching)
+	{
+		tbPushEndEvent(world, contact);
+	}
+	tbHashSet_Remove(&world->pairSet, tbShapePairKey(contact->shapeIdA, contact->shapeIdB));
+	tbUnlinkEdge(world, contactId, 0);
+	tbUnlinkEdge(world, contactId, 1);
+	if (wakeBodies && (contact->flags & tb_contactTouching))
+	{
+		tbWakeBody(world, world->bodies + contact->edges[0].bodyId);
+		tbWakeBody(world, world->bodies + contact->edges[1].bodyId);
+	}
+	contact->inUse = false;
+	contact->flags = 0;
+	TB_ARRAY_PUSH(world->contactFree, world->contactFreeCount, world->contactFreeCapacity, contactId);
+	world->contactCount -= 1;
+}
+
+/// Should a broad-phase pair become a contact? Same body, no dynamic body, filtered out, or an
+/// existing contact: no.
+static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeIdB)
+{
+	const tbShape* a = world->shapes + shapeIdA;
+	const tbShape* b = world->shapes + shapeIdB;
+	if (a->bodyId == b->bodyId)
+	{
+		return false;
+	}
+	const tbBody* bodyA = world->bodies + a->bodyId;
+	const tbBody* bodyB = world->bodies + b->bodyId;
+	if (bodyA->type != tb_dynamicBody && bodyB->type != tb_dynamicBody)
+	{
+		return false;
+	}
+	if (a->isSensor && b->isSensor)
+	{
+		return false;
+	}
+	if (tbShouldShapesCollide(a->filter, b->filter) == false)
+	{
+		return false;
+	}
+	return tbHashSet_Contains(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB)) == false;
+}
+
+void tbUpdatePairsStage(tbWorld* world)
+{
+	tbBroadPhase* bp = &world->broadPhase;
+	tbBroadPhase_UpdatePairs(bp);
+	world->counters.pairCandidates = bp->pairCount;
+	for (int i = 0; i < bp->pairCount; ++i)
+	{
+		tbShapePair pair = bp->pairs[i];
+		if (tbShouldCreateContact(world, pair.a, pair.b))
+		{
+			tbCreateContact(world, pair.a, pair.b);
+		}
+	}
+}
+
+/// Carry accumulated impulses from the old manifold to points of the new one with the same
+/// feature id (warm starting).
+static void tbMatchPoints(tbManifold* manifold, const tbManifold* old)
+{
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		tbManifoldPoint* mp = manifold->points + i;
+		mp->normalImpulse = 0.0f;
+		mp->tangentImpulse = 0.0f;
+		mp->persisted = false;
+		for (int j = 0; j < old->pointCount; ++j)
+		{
+			if (old->points[j].id == mp->id)
+			{
+				mp->normalImpulse = old->points[j].normalImpulse;
+				mp->tangentImpulse = old->points[j].tangentImpulse;
+				mp->persisted = true;
+				break;
+			}
+		}
+	}
+}
+
+static bool tbIsSensorOverlap(const tbManifold* manifold)
+{
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		if (manifold->points[i].separation < 0.0f)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+int tbUpdateContact(tbWorld* world, tbContact* contact)
+{
+	const tbShape* a = world->shapes + contact->shapeIdA;
+	const tbShape* b = world->shapes + contact->shapeIdB;
+	const tbBody* bodyA = world->bodies + a->bodyId;
+	const tbBody* bodyB = world->bodies + b->bodyId;
+	tbManifold old = contact->manifold;
+	tbNarrowPhaseMethod method = world->def.narrowPhase;
+	contact->manifold = tbCollideShapes(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method);
+	if (a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape)
+	{
+		world->counters.gjkManifolds += method == tb_narrowPhaseGJK ? 1 : 0;
+		world->counters.satManifolds += method == tb_narrowPhaseGJK ? 0 : 1;
+	}
+	tbManifold* m = &contact->manifold;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		m->points[i].anchorA = tbSub(m->points[i].point, bodyA->center);
+		m->points[i].anchorB = tbSub(m->points[i].point, bodyB->center);
+	}
+	bool touching = (contact->flags & tb_contactSensor) ? tbIsSensorOverlap(m) : m->pointCount > 0;
+	if (world->def.enableWarmStarting)
+	{
+		tbMatchPoints(m, &old);
+	}
+	bool wasTouching = (contact->flags & tb_contactTouching) != 0;
+	if (touching)
+	{
+		contact->flags |= tb_contactTouching;
+	}
+	else
+	{
+		contact->flags &= ~(uint32_t)tb_contactTouching;
+	}
+	return touching == wasTouching ? 0 : (touching ? 1 : -1);
+}
+
+static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
+{
+	if (contact->flags & tb_contactSensor)
+	{
+		bool aIsSensor = world->shapes[contact->shapeIdA].isSensor;
+		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
+		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
+		if (world->shapes[sensor].enableSensorEvents)
+		{
+			tbSensorBeginTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
+			TB_ARRAY_PUSH(world->sensorBeginEvents, world->sensorBeginCount, world->sensorBeginCapacity, e);
+		}
+	}
+	else if (contact->flags & tb_contactEnableEvents)
+	{
+		tbContactBeginTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB)};
+		TB_ARRAY_PUSH(world->beginEvents, world->beginCount, world->beginCapacity, e);
+	}
+}
+
+/// Gather each contact of an awake body once, in awake-body order (deterministic).
+static void tbGatherAwakeContacts(tbWorld* world)
+{
+	int stamp = 2 * world->stepIndex;
+	world->stepContactCount = 0;
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		const tbBody* body = world->bodies + world->awakeBodies[i];
+		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+		{
+			tbContact* contact = world->contacts + (key >> 1);
+			if (contact->stamp != stamp)
+			{
+				contact->stamp = stamp;
+				TB_ARRAY_PUSH(world->stepContacts, world->stepContactCount, world->stepContactCapacity, key >> 1);
+			}
+			key = contact->edges[key & 1].nextKey;
+		}
+	}
+}
+
+void tbCollideStage(tbWorld* world)
+{
+	tbGatherAwakeContacts(world);
+	const tbBroadPhase* bp = &world->broadPhase;
+	int kept = 0;
+	for (int i = 0; i < world->stepContactCount; ++i)
+	{
+		int contactId = world->stepContacts[i];
+		tbContact* contact = world->contacts + contactId;
+		const tbShape* a = world->shapes + contact->shapeIdA;
+		const tbShape* b = world->shapes + contact->shapeIdB;
+		if (tbBroadPhase_TestOverlap(bp, a->proxyKey, b->proxyKey) == false)
+		{
+			tbDestroyContact(world, contactId, false);
+			continue;
+		}
+		world->stepContacts[kept++] = contactId;
+		int change = tbUpdateContact(world, contact);
+		if (change > 0)
+		{
+			tbPushBeginEvent(world, contact);
+			// A new touch wakes both bodies (the sleeping one joins the awake island).
+			tbWakeBody(world, world->bodies + a->bodyId);
+			tbWakeBody(world, world->bodies + b->bodyId);
+		}
+		else if (change < 0)
+		{
+			tbPushEndEvent(world, contact);
+		}
+	}
+	world->stepContactCount = kept;
+}
+
+/// Hit events: the fastest approaching point of each touching contact that wants them, when the
+/// approach speed exceeds the world's threshold.
+void tbReportHitEvents(tbWorld* world)
+{
+	float threshold = world->def.hitEventThreshold;
+	for (int i = 0; i < world->solverContactCount; ++i)
+	{
+		const tbContact* contact = world->contacts + world->solverContacts[i];
+		if ((contact->flags & tb_contactEnableHits) == 0)
+		{
+			continue;
+		}
+		tbContactHitEvent event;
+		event.approachSpeed = threshold;
+		bool hit = false;
+		for (int j = 0; j < contact->manifold.pointCount; ++j)
+		{
+			const tbManifoldPoint* mp = contact->manifold.points + j;
+			float approach = -mp->normalVelocity;
+			if (approach > event.approachSpeed && mp->maxNormalImpulse > 0.0f)
+			{
+				event.approachSpeed = approach;
+				event.point = mp->point;
+				hit = true;
+			}
+		}
+		if (hit)
+		{
+			event.normal = contact->manifold.normal;
+			event.shapeIdA = tbMakeShapeId(world, contact->shapeIdA);
+			event.shapeIdB = tbMakeShapeId(world, contact->shapeIdB);
+			TB_ARRAY_PUSH(world->hitEvents, world->hitCount, world->hitCapacity, event);
+		}
+	}
+}

@@ -1,0 +1,351 @@
+// Contact constraints solved by sequential impulses, shared by the three position methods.
+//
+// Non-penetration. For a manifold point p with normal n (from A to B) and anchors
+// rA = p − cA, rB = p − cB, the position constraint is the separation
+//     C = dot((cB + rB) − (cA + rA), n) ≥ 0,
+// whose time derivative (n held fixed) is the relative normal velocity
+//     Ċ = dot(vB + ωB × rB − vA − ωA × rA, n) = J·v,  J = [−n, −rA × n, n, rB × n].
+// An impulse λ along J changes Ċ by K·λ with
+//     K = mA⁻¹ + mB⁻¹ + IA⁻¹ (rA × n)² + IB⁻¹ (rB × n)²,  m_eff = 1/K,
+// so the impulse that brings Ċ to −bias is λ = −m_eff (Ċ + bias). Sequential impulses visit each
+// point in turn and clamp the accumulated impulse, not the increment: λn ≥ 0 (contacts push,
+// never pull), friction |λt| ≤ μ·λn (Coulomb cone, 2D: a segment), with the same K along the
+// tangent t = rightPerp(n). The accumulated impulse is kept between sub-steps and steps (warm
+// starting) so that resting stacks start each iteration at the converged answer.
+//
+// Separation during the step is linearised, not re-collided: with dp the centre motion and dq
+// the rotation since the start of the step,
+//     s = s0 + dot((dpB + dqB·rB) − (dpA + dqA·rA) − (rB − rA), n).
+//
+// Bias policies (tbBiasPolicy): speculative gaps s > 0 always get bias s/h, so a body may close
+// the gap within one sub-step but not overshoot it (speculative contact, Catto GDC 2014). Overlap
+// s ≤ 0 gets a soft spring (soft step), a Baumgarte bias, or nothing (NGS corrects positions).
+//
+// Soft constraint (Catto GDC 2011 "Soft Constraints", GDC 2024 / Solver2D blog "soft step"):
+// a spring of angular frequency ω and damping ratio ζ solved implicitly over h gives
+//     λ = −m_eff·massScale·(Ċ + biasRate·C) − impulseScale·λ_acc,
+// with the coefficients of tbMakeSoftness. The λ_acc term bleeds the spring's stored impulse.
+//
+// Restitution is applied once after the sub-steps, on the velocities: target Ċ = −e·Ċ0 with Ċ0
+// the relative normal velocity at the start of the step (Catto GDC 2009; Box2D v3 does the same).
+//
+// References: E. Catto, "Fast and Simple Physics using Sequential Impulses", GDC 2006;
+// "Modeling and Solving Constraints", GDC 2009; "Soft Constraints", GDC 2011;
+// "Understanding Constraints", GDC 2014; "Solver2D" blog post, 2024.
+#include "solver.h"
+
+#include "tumble/constants.h"
+
+// The solver index of a body, or `staticIndex` for bodies that are not in the awake set (static,
+// asleep, or a stale index). The check against awakeBodies makes a stale solverIndex harmless.
+static int tbGetSolverIndex(const tbWorld* world, int bodyId, int staticIndex)
+{
+	tbBody* body = world->bodies + bodyId;
+	int index = body->solverIndex;
+	if (index >= 0 && index < staticIndex && world->awakeBodies[index] == bodyId)
+	{
+		return index;
+	}
+	body->solverIndex = TB_NULL_INDEX;
+	return staticIndex;
+}
+
+tbSoftness tbMakeSoftness(float hertz, float dampingRatio, float h)
+{
+	if (hertz <= 0.0f)
+	{
+		tbSoftness rigid = {0.0f, 1.0f, 0.0f};
+		return rigid;
+	}
+	float omega = 2.0f * TB_PI * hertz;
+	float a1 = 2.0f * dampingRatio + h * omega;
+	float a2 = h * omega * a1;
+	float a3 = 1.0f / (1.0f + a2);
+	tbSoftness soft = {omega / a1, a2 * a3, a3};
+	return soft;
+}
+
+// Inverse effective mass along direction u for anchors rA, rB.
+static float tbInverseEffectiveMass(const tbContactConstraint* c, tbVec2 rA, tbVec2 rB, tbVec2 u)
+{
+	float rnA = tbCross(rA, u);
+	float rnB = tbCross(rB, u);
+	return c->invMassA + c->invMassB + c->invIA * rnA * rnA + c->invIB * rnB * rnB;
+}
+
+static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact, tbContactConstraint* c)
+{
+	tbWorld* world = context->world;
+	int bodyIdA = world->shapes[contact->shapeIdA].bodyId;
+	int bodyIdB = world->shapes[contact->shapeIdB].bodyId;
+	const tbBody* bodyA = world->bodies + bodyIdA;
+	const tbBody* bodyB = world->bodies + bodyIdB;
+
+	c->indexA = tbGetSolverIndex(world, bodyIdA, context->bodyCount);
+	c->indexB = tbGetSolverIndex(world, bodyIdB, context->bodyCount);
+
+	// Only awake dynamic bodies respond; kinematic and static ends have infinite mass.
+	bool dynamicA = bodyA->type == tb_dynamicBody && c->indexA != context->bodyCount;
+	bool dynamicB = bodyB->type == tb_dynamicBody && c->indexB != context->bodyCount;
+	c->invMassA = dynamicA ? bodyA->invMass : 0.0f;
+	c->invIA = dynamicA && !bodyA->fixedRotation ? bodyA->invInertia : 0.0f;
+	c->invMassB = dynamicB ? bodyB->invMass : 0.0f;
+	c->invIB = dynamicB && !bodyB->fixedRotation ? bodyB->invInertia : 0.0f;
+	c->softness = dynamicA && dynamicB ? context->contactSoftness : context->staticSoftness;
+
+	const tbManifold* manifold = &contact->manifold;
+	tbVec2 normal = manifold->normal;
+	tbVec2 tangent = tbRightPerp(normal);
+	c->normal = normal;
+	c->friction = contact->friction;
+	c->restitution = contact->restitution;
+	c->pointCount = manifold->pointCount;
+
+	const tbSolverBody* sA = context->bodies + c->indexA;
+	const tbSolverBody* sB = context->bodies + c->indexB;
+	float warmScale = context->enableWarmStarting ? 1.0f : 0.0f;
+
+	for (int j = 0; j < c->pointCount; ++j)
+	{
+		const tbManifoldPoint* mp = manifold->points + j;
+		tbContactConstraintPoint* cp = c->points + j;
+		tbVec2 rA = mp->anchorA;
+		tbVec2 rB = mp->anchorB;
+		cp->anchorA = rA;
+		cp->anchorB = rB;
+		cp->baseSeparation = mp->separation - tbDot(tbSub(rB, rA), normal);
+		cp->normalImpulse = warmScale * mp->normalImpulse;
+		cp->tangentImpulse = warmScale * mp->tangentImpulse;
+		cp->maxNormalImpulse = 0.0f;
+
+		float kNormal = tbInverseEffectiveMass(c, rA, rB, normal);
+		float kTangent = tbInverseEffectiveMass(c, rA, rB, tangent);
+		cp->normalMass = kNormal > 0.0f ? 1.0f / kNormal : 0.0f;
+		cp->tangentMass = kTangent > 0.0f ? 1.0f / kTangent : 0.0f;
+
+		tbVec2 vA = tbAdd(sA->linearVelocity, tbCrossSV(sA->angularVelocity, rA));
+		tbVec2 vB = tbAdd(sB->linearVelocity, tbCrossSV(sB->angularVelocity, rB));
+		cp->relativeVelocity = tbDot(tbSub(vB, vA), normal);
+	}
+}
+
+void tbPrepareContacts(tbStepContext* context)
+{
+	tbWorld* world = context->world;
+	const int* contactIds = world->solverContacts;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		tbPrepareConstraint(context, world->contacts + contactIds[i], context->constraints + i);
+	}
+}
+
+// Apply impulse P at anchors rA, rB: A receives −P, B receives +P.
+static inline void tbApplyImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbContactConstraint* c, tbVec2 rA,
+								  tbVec2 rB, tbVec2 P)
+{
+	sA->linearVelocity = tbMulSub(sA->linearVelocity, c->invMassA, P);
+	sA->angularVelocity -= c->invIA * tbCross(rA, P);
+	sB->linearVelocity = tbMulAdd(sB->linearVelocity, c->invMassB, P);
+	sB->angularVelocity += c->invIB * tbCross(rB, P);
+}
+
+// Without warm starting each sub-step starts from zero accumulated impulse instead.
+void tbWarmStartContacts(tbStepContext* context)
+{
+	if (context->enableWarmStarting == false)
+	{
+		for (int i = 0; i < context->constraintCount; ++i)
+		{
+			tbContactConstraint* c = context->constraints + i;
+			for (int j = 0; j < c->pointCount; ++j)
+			{
+				c->points[j].normalImpulse = 0.0f;
+				c->points[j].tangentImpulse = 0.0f;
+			}
+		}
+		return;
+	}
+
+	tbSolverBody* bodies = context->bodies;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		const tbContactConstraint* c = context->constraints + i;
+		tbSolverBody* sA = bodies + c->indexA;
+		tbSolverBody* sB = bodies + c->indexB;
+		tbVec2 normal = c->normal;
+		tbVec2 tangent = tbRightPerp(normal);
+		for (int j = 0; j < c->pointCount; ++j)
+		{
+			const tbContactConstraintPoint* cp = c->points + j;
+			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
+			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
+		}
+	}
+}
+
+// Relative velocity of the anchors: vB + ωB × rB − vA − ωA × rA.
+static inline tbVec2 tbRelativeVelocity(const tbSolverBody* sA, const tbSolverBody* sB, tbVec2 rA, tbVec2 rB)
+{
+	tbVec2 vA = tbAdd(sA->linearVelocity, tbCrossSV(sA->angularVelocity, rA));
+	tbVec2 vB = tbAdd(sB->linearVelocity, tbCrossSV(sB->angularVelocity, rB));
+	return tbSub(vB, vA);
+}
+
+// Body state is loaded into locals once per constraint and stored once at the end: the two
+// bodies never alias, and keeping them in registers avoids a store-to-load round trip per impulse.
+static void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, tbSolverBody* sB,
+							  const tbStepContext* context, tbBiasPolicy policy)
+{
+	tbVec2 vA = sA->linearVelocity;
+	float wA = sA->angularVelocity;
+	tbVec2 vB = sB->linearVelocity;
+	float wB = sB->angularVelocity;
+	tbRot qA = sA->deltaRotation;
+	tbRot qB = sB->deltaRotation;
+	tbVec2 dp = tbSub(sB->deltaPosition, sA->deltaPosition);
+
+	float mA = c->invMassA, iA = c->invIA;
+	float mB = c->invMassB, iB = c->invIB;
+	tbVec2 normal = c->normal;
+	tbVec2 tangent = tbRightPerp(normal);
+	float inv_h = context->inv_h;
+	int pointCount = c->pointCount;
+
+	// Normal first, then friction against the fresh normal impulse: the friction bound is then
+	// exact for this pass and the last thing a pass does is stop sliding (slopes do not creep).
+	for (int j = 0; j < pointCount; ++j)
+	{
+		tbContactConstraintPoint* cp = c->points + j;
+		tbVec2 rA = cp->anchorA;
+		tbVec2 rB = cp->anchorB;
+
+		// Linearised current separation from the body deltas.
+		tbVec2 prA = tbRotateVector(qA, rA);
+		tbVec2 prB = tbRotateVector(qB, rB);
+		float s = cp->baseSeparation + tbDot(tbAdd(dp, tbSub(prB, prA)), normal);
+
+		float bias = 0.0f;
+		float massScale = 1.0f;
+		float impulseScale = 0.0f;
+		if (s > 0.0f)
+		{
+			bias = s * inv_h; // speculative: close the gap, no more
+		}
+		else if (policy == tb_biasSoft)
+		{
+			bias = tbMaxFloat(c->softness.biasRate * s, -context->maxContactPushSpeed);
+			massScale = c->softness.massScale;
+			impulseScale = c->softness.impulseScale;
+		}
+		else if (policy == tb_biasBaumgarte)
+		{
+			bias = TB_BAUMGARTE * inv_h * tbMinFloat(0.0f, s + TB_LINEAR_SLOP);
+		}
+
+		tbVec2 dv = tbSub(tbAdd(vB, tbCrossSV(wB, rB)), tbAdd(vA, tbCrossSV(wA, rA)));
+		float vn = tbDot(dv, normal);
+		float impulse = -cp->normalMass * massScale * (vn + bias) - impulseScale * cp->normalImpulse;
+		float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
+		impulse = newImpulse - cp->normalImpulse;
+		cp->normalImpulse = newImpulse;
+		cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
+
+		tbVec2 P = tbMulSV(impulse, normal);
+		vA = tbMulSub(vA, mA, P);
+		wA -= iA * tbCross(rA, P);
+		vB = tbMulAdd(vB, mB, P);
+		wB += iB * tbCross(rB, P);
+	}
+
+	float friction = c->friction;
+	for (int j = 0; j < pointCount; ++j)
+	{
+		tbContactConstraintPoint* cp = c->points + j;
+		tbVec2 rA = cp->anchorA;
+		tbVec2 rB = cp->anchorB;
+		tbVec2 dv = tbSub(tbAdd(vB, tbCrossSV(wB, rB)), tbAdd(vA, tbCrossSV(wA, rA)));
+		float vt = tbDot(dv, tangent);
+		float impulse = -cp->tangentMass * vt;
+		float maxFriction = friction * cp->normalImpulse;
+		float newImpulse = tbClampFloat(cp->tangentImpulse + impulse, -maxFriction, maxFriction);
+		impulse = newImpulse - cp->tangentImpulse;
+		cp->tangentImpulse = newImpulse;
+
+		tbVec2 P = tbMulSV(impulse, tangent);
+		vA = tbMulSub(vA, mA, P);
+		wA -= iA * tbCross(rA, P);
+		vB = tbMulAdd(vB, mB, P);
+		wB += iB * tbCross(rB, P);
+	}
+
+	sA->linearVelocity = vA;
+	sA->angularVelocity = wA;
+	sB->linearVelocity = vB;
+	sB->angularVelocity = wB;
+}
+
+void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy)
+{
+	tbSolverBody* bodies = context->bodies;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		tbContactConstraint* c = context->constraints + i;
+		tbSolveConstraint(c, bodies + c->indexA, bodies + c->indexB, context, policy);
+	}
+}
+
+void tbApplyRestitution(tbStepContext* context)
+{
+	float threshold = context->world->def.restitutionThreshold;
+	tbSolverBody* bodies = context->bodies;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		tbContactConstraint* c = context->constraints + i;
+		float e = c->restitution;
+		if (e == 0.0f)
+		{
+			continue;
+		}
+		tbSolverBody* sA = bodies + c->indexA;
+		tbSolverBody* sB = bodies + c->indexB;
+		tbVec2 normal = c->normal;
+		for (int j = 0; j < c->pointCount; ++j)
+		{
+			tbContactConstraintPoint* cp = c->points + j;
+			// Only real impacts: fast enough and the point actually pushed during the step.
+			if (cp->relativeVelocity > -threshold || cp->maxNormalImpulse == 0.0f)
+			{
+				continue;
+			}
+			tbVec2 rA = cp->anchorA;
+			tbVec2 rB = cp->anchorB;
+			float vn = tbDot(tbRelativeVelocity(sA, sB, rA, rB), normal);
+			float impulse = -cp->normalMass * (vn + e * cp->relativeVelocity);
+			float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
+			impulse = newImpulse - cp->normalImpulse;
+			cp->normalImpulse = newImpulse;
+			cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
+			tbApplyImpulse(sA, sB, c, rA, rB, tbMulSV(impulse, normal));
+		}
+	}
+}
+
+void tbStoreImpulses(tbStepContext* context)
+{
+	tbWorld* world = context->world;
+	const int* contactIds = world->solverContacts;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		const tbContactConstraint* c = context->constraints + i;
+		tbManifold* manifold = &world->contacts[contactIds[i]].manifold;
+		for (int j = 0; j < c->pointCount; ++j)
+		{
+			const tbContactConstraintPoint* cp = c->points + j;
+			tbManifoldPoint* mp = manifold->points + j;
+			mp->normalImpulse = cp->normalImpulse;
+			mp->tangentImpulse = cp->tangentImpulse;
+			mp->maxNormalImpulse = cp->maxNormalImpulse;
+			mp->normalVelocity = cp->relativeVelocity;
+		}
+	}
+}

@@ -1,0 +1,23 @@
+// Internal: GJK building blocks shared by distance.c (GJK, shape cast), epa.c (EPA) and
+// manifold_gjk.c. Everything here works in one frame, normally the local frame of shape A, so
+// that shapes far from the world origin keep their float precision.
+#pragma once
+
+#include "tumble/collision.h"
+
+/// Index of the proxy point furthest along direction (the support mapping of a point cloud).
+int tbFindSupport(const tbShapeProxy* proxy, tbVec2 direction);
+
+/// proxyB with its points mapped by the relative transform A⁻¹·B, i.e. expressed in A's frame.
+tbShapeProxy tbMakeRelativeProxy(const tbShapeProxy* proxyB, tbTransform relative);
+
+/// Largest |point| of two proxies in their common frame: the length scale for relative tolerances.
+float tbProxyScale(const tbShapeProxy* proxyA, const tbShapeProxy* proxyB);
+
+/// GJK on two proxies given in one frame, radii ignored (core to core). The output points, normal
+/// and simplex are in that frame. cache and simplex may be NULL.
+tbDistanceOutput tbLocalShapeDistance(const tbShapeProxy* proxyA, const tbShapeProxy* proxyB, tbSimplexCache* cache,
+									  tbSimplex* simplex);
+
+/// Vertex of the Minkowski difference B − A furthest along direction: s_B(d) − s_A(−d).
+tbSimplexVertex tbMakeSupportVertex(const tbShapeProxy* proxyA, const tbShapeProxy* proxyB, tbVec2 direction);

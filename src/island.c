@@ -1,0 +1,172 @@
+// Islands: bodies linked by touching contacts. Two stages live here.
+//
+// The island stage runs before the solve: it wakes every sleeping body touching an awake one
+// (transitively, so a woken pile wakes whole) and gathers the touching, non-sensor contacts that
+// the solver will see. The sleep stage runs after the solve: it finds the islands of awake bodies
+// by depth-first search over touching contacts (not through static or kinematic bodies, which do
+// not transmit motion between islands) and puts to sleep each island whose every body has rested
+// for TB_TIME_TO_SLEEP. Sleeping bodies leave the awake set, so they cost nothing in any stage.
+// (The per-step search follows Box2D 2.4's design; persistent islands as in Box2D v3 would
+// avoid the search but need island splitting.)
+#include "world.h"
+
+#include "array.h"
+
+static bool tbIsSolverContact(const tbWorld* world, const tbContact* contact)
+{
+	if ((contact->flags & tb_contactTouching) == 0 || (contact->flags & tb_contactSensor) != 0)
+	{
+		return false;
+	}
+	const tbBody* a = world->bodies + contact->edges[0].bodyId;
+	const tbBody* b = world->bodies + contact->edges[1].bodyId;
+	return a->type == tb_dynamicBody || b->type == tb_dynamicBody;
+}
+
+void tbIslandStage(tbWorld* world)
+{
+	// The awake list grows while we walk it: bodies woken here are visited too.
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		const tbBody* body = world->bodies + world->awakeBodies[i];
+		if (body->type != tb_dynamicBody)
+		{
+			continue; // kinematic bodies do not wake what they touch through islands
+		}
+		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+		{
+			const tbContact* contact = world->contacts + (key >> 1);
+			if (tbIsSolverContact(world, contact))
+			{
+				tbBody* other = world->bodies + contact->edges[(key & 1) ^ 1].bodyId;
+				if (other->type != tb_staticBody && other->awakeIndex == TB_NULL_INDEX)
+				{
+					tbWakeBody(world, other);
+				}
+			}
+			key = contact->edges[key & 1].nextKey;
+		}
+	}
+	// Solver contacts: each touching contact of an awake body once.
+	int stamp = 2 * world->stepIndex + 1;
+	world->solverContactCount = 0;
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		const tbBody* body = world->bodies + world->awakeBodies[i];
+		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+		{
+			tbContact* contact = world->contacts + (key >> 1);
+			if (contact->stamp != stamp && tbIsSolverContact(world, contact))
+			{
+				contact->stamp = stamp;
+				TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, key >> 1);
+			}
+			key = contact->edges[key & 1].nextKey;
+		}
+	}
+}
+
+/// Depth-first search from a seed: collects the island's bodies in world->islandBodies and
+/// returns their count and the smallest sleep time among them.
+static int tbCollectIsland(tbWorld* world, int seed, int stamp, float* minSleepTime)
+{
+	int count = 0, top = 0;
+	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, 1);
+	world->islandStack[top++] = seed;
+	world->bodies[seed].islandStamp = stamp;
+	*minSleepTime = TB_HUGE;
+	while (top > 0)
+	{
+		int bodyId = world->islandStack[--top];
+		tbBody* body = world->bodies + bodyId;
+		TB_ARRAY_RESERVE(world->islandBodies, world->islandBodyCapacity, count + 1);
+		world->islandBodies[count++] = bodyId;
+		*minSleepTime = tbMinFloat(*minSleepTime, body->sleepTime);
+		if (body->type != tb_dynamicBody)
+		{
+			continue; // kinematic: member of the island, but the search does not pass through it
+		}
+		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+		{
+			const tbContact* contact = world->contacts + (key >> 1);
+			int otherId = contact->edges[(key & 1) ^ 1].bodyId;
+			tbBody* other = world->bodies + otherId;
+			if (other->type != tb_staticBody && other->islandStamp != stamp && other->awakeIndex != TB_NULL_INDEX &&
+				tbIsSolverContact(world, contact))
+			{
+				other->islandStamp = stamp;
+				TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, top + 1);
+				world->islandStack[top++] = otherId;
+			}
+			key = contact->edges[key & 1].nextKey;
+		}
+	}
+	return count;
+}
+
+/// Remove the marked bodies from the awake set in one pass (order preserved).
+static void tbCompactAwakeSet(tbWorld* world)
+{
+	int kept = 0;
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		int bodyId = world->awakeBodies[i];
+		tbBody* body = world->bodies + bodyId;
+		if (body->isMarked)
+		{
+			body->isMarked = false;
+			body->awakeIndex = TB_NULL_INDEX;
+			continue;
+		}
+		body->awakeIndex = kept;
+		world->awakeBodies[kept++] = bodyId;
+	}
+	world->awakeBodyCount = kept;
+}
+
+static void tbPutIslandToSleep(tbWorld* world, int count)
+{
+	for (int i = 0; i < count; ++i)
+	{
+		tbBody* body = world->bodies + world->islandBodies[i];
+		if (body->awakeIndex < world->moveCount)
+		{
+			world->moveEvents[body->awakeIndex].fellAsleep = true;
+		}
+		body->isMarked = true;
+		body->linearVelocity = tb_vec2_zero;
+		body->angularVelocity = 0.0f;
+		body->force = tb_vec2_zero;
+		body->torque = 0.0f;
+	}
+}
+
+void tbSleepStage(tbWorld* world, float timeStep)
+{
+	(void)timeStep;
+	// Stamps: a fresh value per step, distinct from the contact stamps.
+	int stamp = world->stepIndex;
+	int islands = 0;
+	bool anySleep = false;
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		int seed = world->awakeBodies[i];
+		if (world->bodies[seed].islandStamp == stamp)
+		{
+			continue;
+		}
+		float minSleepTime;
+		int count = tbCollectIsland(world, seed, stamp, &minSleepTime);
+		islands += 1;
+		if (world->def.enableSleep && minSleepTime >= TB_TIME_TO_SLEEP)
+		{
+			tbPutIslandToSleep(world, count);
+			anySleep = true;
+		}
+	}
+	world->counters.islandCount = islands;
+	if (anySleep)
+	{
+		tbCompactAwakeSet(world);
+	}
+}

@@ -1,0 +1,729 @@
+// Contact manifolds: one function per shape pair, closed forms for round shapes and the
+// separating axis test (SAT) with face clipping for polygons.
+//
+// Conventions (the solver relies on them):
+// - the normal n is a world unit vector from A to B;
+// - a point's separation is the signed surface gap, radii included (< 0 is penetration);
+// - the point is the world point midway between the two surfaces: if qA, qB are the closest
+//   points of the cores (the shapes without their radii) then
+//       surfaceA = qA + rA·n,  surfaceB = qB − rB·n,  point = ½(surfaceA + surfaceB),
+//       separation = (qB − qA)·n − rA − rB;
+// - points are kept while separation < TB_SPECULATIVE_DISTANCE (speculative contact), so the
+//   solver can stop an approach before it turns into an overlap;
+// - feature ids are TB_MAKE_FEATURE_ID(featureOnA, featureOnB) and stay the same while the
+//   same features touch (warm starting). Pairs with a circle have one point and id 0.
+//
+// Every routine works in the frame of A (B is brought into it by the relative transform
+// A⁻¹·B) and moves the result to world space at the end: the arithmetic then sees small
+// coordinates even when the bodies sit kilometres from the origin.
+//
+// Polygons (Gregorius, "The Separating Axis Test between convex polyhedra", GDC 2013, in 2D):
+// the cores of two convex polygons are separated along some face normal of either, or they
+// overlap. The face of largest separation over both polygons is the reference face; the edge
+// of the other polygon most anti-parallel to its normal is the incident edge; clipping the
+// incident edge against the side planes of the reference face (Sutherland–Hodgman; Catto,
+// "Contact manifolds", GDC 2007) gives up to two points. Capsules and segments are 2-vertex
+// polygons (with radius and without), so one SAT serves every pair with a straight side.
+// The alternative rejected here is GJK/EPA for all pairs (manifold_gjk.c offers it for
+// polygons): it gives one normal but needs the same clipping afterwards and costs more.
+#include "core.h"
+
+#include "tumble/collision.h"
+
+#include <float.h>
+
+// A point is kept while its separation is below this (m): TB_SPECULATIVE_DISTANCE = 0.02 m.
+#define TB_KEEP_DISTANCE TB_SPECULATIVE_DISTANCE
+
+// Relative tolerance of the reference face choice, 0.1 × linear slop = 0.0005 m: B's face is
+// the reference only when its separation exceeds A's by more than this, so that two
+// near-parallel faces (a box resting on a box, turning by 1e-4 rad) do not swap roles from
+// step to step and the feature ids, hence warm starting, survive.
+#define TB_REFERENCE_TOLERANCE (0.1f * TB_LINEAR_SLOP)
+
+// Core gap (m) above which polygons are "separated": 0.1 × linear slop = 0.0005 m. Below it the
+// clipped face contact is exact enough; above it a corner may face a corner, and the face
+// normal would misstate the gap of rounded polygons, so the closest points decide.
+#define TB_GAP_TOLERANCE (0.1f * TB_LINEAR_SLOP)
+
+// An incident corner up to this far (m) outside a side plane of the reference face is kept
+// rather than clipped: 0.1 × linear slop = 0.0005 m. Equal-width boxes stacked flush put B's
+// corners exactly on A's side planes; without slack a 1e-4 rad wobble would clip a corner one
+// step and keep it the next, changing its feature id and losing the warm start. A corner
+// 0.5 mm beyond the face costs nothing; clipped points still lie exactly on the plane.
+#define TB_CLIP_SLACK (0.1f * TB_LINEAR_SLOP)
+
+// Two capsule axes count as parallel when |sin θ| < 0.1 (θ < 5.7°). Beyond that a 1 m overlap
+// lifts its far end by more than 0.1 m, five times the speculative distance, so a second
+// point would be dropped anyway; below it the clipped second point keeps the capsule flat.
+#define TB_PARALLEL_SINE 0.1f
+
+// A capsule or segment shorter than this (m), 1e-3 × linear slop, has no axis: it is a circle.
+#define TB_DEGENERATE_LENGTH (0.001f * TB_LINEAR_SLOP)
+
+// Feature byte flags: the reference face's byte carries TB_FEATURE_REFERENCE so that "edge i of
+// A against vertex j of B" and "edge j of B against vertex i of A" differ; a clipped point is
+// made by a side plane (a reference vertex) and the incident edge, flagged TB_FEATURE_CLIPPED;
+// a corner-to-corner point of separated polygons is flagged TB_FEATURE_VERTEX on both.
+#define TB_FEATURE_REFERENCE 0x80
+#define TB_FEATURE_CLIPPED 0x40
+#define TB_FEATURE_VERTEX 0x20
+
+static const tbManifold tb_emptyManifold = {0};
+
+// ---------------------------------------------------------------------------------------------
+// Shared helpers
+
+// The manifold point of core points qA, qB along n with radii rA, rB (see the file comment).
+static tbManifoldPoint tbMakeManifoldPoint(tbVec2 qA, tbVec2 qB, tbVec2 n, float rA, float rB, uint16_t id)
+{
+	tbManifoldPoint mp = {0};
+	tbVec2 surfaceA = tbMulAdd(qA, rA, n);
+	tbVec2 surfaceB = tbMulSub(qB, rB, n);
+	mp.point = tbLerp(surfaceA, surfaceB, 0.5f);
+	mp.separation = tbDot(tbSub(qB, qA), n) - rA - rB;
+	mp.id = id;
+	return mp;
+}
+
+// Moves a manifold computed in A's frame to world space.
+static tbManifold tbManifoldToWorld(tbManifold m, tbTransform xfA)
+{
+	m.normal = tbRotateVector(xfA.q, m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].point = tbTransformPoint(xfA, m.points[i].point);
+	}
+	return m;
+}
+
+// One point between two core points (circle centres, closest points of segments), in A's frame.
+// The normal is along qB − qA; when the cores touch (|qB − qA| < FLT_EPSILON) it is `fallback`,
+// so coincident shapes still get a unit normal and never a NaN.
+static tbManifold tbPointManifold(tbVec2 qA, float rA, tbVec2 qB, float rB, tbVec2 fallback, uint16_t id)
+{
+	tbManifold m = {0};
+	float distance;
+	tbVec2 n = tbGetLengthAndNormalize(&distance, tbSub(qB, qA));
+	if (distance - rA - rB >= TB_KEEP_DISTANCE)
+	{
+		return m;
+	}
+	if (distance < FLT_EPSILON)
+	{
+		n = fallback;
+	}
+	m.normal = n;
+	m.points[0] = tbMakeManifoldPoint(qA, qB, n, rA, rB, id);
+	m.pointCount = 1;
+	return m;
+}
+
+// One point between a core point q on a face with unit normal n and a core point c of B, in
+// A's frame. Unlike tbPointManifold the normal is the face's own, exact even when c is behind
+// the face (then (c − q)·n < 0 and the separation says how deep).
+static tbManifold tbFacePointManifold(tbVec2 q, float rA, tbVec2 c, float rB, tbVec2 n, uint16_t id)
+{
+	tbManifold m = {0};
+	tbManifoldPoint mp = tbMakeManifoldPoint(q, c, n, rA, rB, id);
+	if (mp.separation >= TB_KEEP_DISTANCE)
+	{
+		return m;
+	}
+	m.normal = n;
+	m.points[0] = mp;
+	m.pointCount = 1;
+	return m;
+}
+
+// Closest point to p on the segment a–b (Ericson §5.1.2), with its fraction t along a → b.
+static tbVec2 tbClosestPointOnSegment(float* t, tbVec2 p, tbVec2 a, tbVec2 b)
+{
+	tbVec2 e = tbSub(b, a);
+	float ee = tbDot(e, e);
+	*t = ee > 0.0f ? tbClampFloat(tbDot(tbSub(p, a), e) / ee, 0.0f, 1.0f) : 0.0f;
+	return tbMulAdd(a, *t, e);
+}
+
+// A capsule core or a segment as a 2-vertex polygon: edge 0 runs p1 → p2 with outward normal
+// n = rightPerp(p2 − p1)/|p2 − p1| and edge 1 runs back with −n. Needs |p2 − p1| > 0.
+static tbPolygon tbMakeSegmentPolygon(tbVec2 p1, tbVec2 p2, float radius)
+{
+	tbPolygon polygon = {0};
+	tbVec2 n = tbNormalize(tbRightPerp(tbSub(p2, p1)));
+	polygon.vertices[0] = p1;
+	polygon.vertices[1] = p2;
+	polygon.normals[0] = n;
+	polygon.normals[1] = tbNeg(n);
+	polygon.centroid = tbLerp(p1, p2, 0.5f);
+	polygon.radius = radius;
+	polygon.count = 2;
+	return polygon;
+}
+
+static bool tbIsDegenerateSegment(tbVec2 p1, tbVec2 p2)
+{
+	return tbDistanceSquared(p1, p2) < TB_DEGENERATE_LENGTH * TB_DEGENERATE_LENGTH;
+}
+
+// Polygon moved by a rigid transform (vertices and normals).
+static tbPolygon tbPolygonInFrame(const tbPolygon* polygon, tbTransform xf)
+{
+	tbPolygon result = *polygon;
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		result.vertices[i] = tbTransformPoint(xf, polygon->vertices[i]);
+		result.normals[i] = tbRotateVector(xf.q, polygon->normals[i]);
+	}
+	result.centroid = tbTransformPoint(xf, polygon->centroid);
+	return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Circles and capsules: closed forms
+
+tbManifold tbCollideCircles(const tbCircle* circleA, tbTransform xfA, const tbCircle* circleB, tbTransform xfB)
+{
+	// Concentric circles push along A's x-axis: any unit vector is right, this one is defined.
+	tbTransform xf = tbInvMulTransforms(xfA, xfB);
+	tbVec2 centerB = tbTransformPoint(xf, circleB->center);
+	tbVec2 xAxis = {1.0f, 0.0f};
+	tbManifold m = tbPointManifold(circleA->center, circleA->radius, centerB, circleB->radius, xAxis, 0);
+	return tbManifoldToWorld(m, xfA);
+}
+
+// Capsule core a1–a2 against a point c with radius rB, in A's frame.
+static tbManifold tbCapsuleAndPoint(tbVec2 a1, tbVec2 a2, float rA, tbVec2 c, float rB)
+{
+	// A centre on the core pushes out along the capsule's side normal (x-axis if no axis).
+	tbVec2 side = tbNormalize(tbLeftPerp(tbSub(a2, a1)));
+	tbVec2 fallback = tbIsDegenerateSegment(a1, a2) ? tbMakeVec2(1.0f, 0.0f) : side;
+	float t;
+	tbVec2 q = tbClosestPointOnSegment(&t, c, a1, a2);
+	return tbPointManifold(q, rA, c, rB, fallback, 0);
+}
+
+tbManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB)
+{
+	tbTransform xf = tbInvMulTransforms(xfA, xfB);
+	tbVec2 c = tbTransformPoint(xf, circleB->center);
+	tbManifold m = tbCapsuleAndPoint(capsuleA->center1, capsuleA->center2, capsuleA->radius, c, circleB->radius);
+	return tbManifoldToWorld(m, xfA);
+}
+
+static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB);
+
+// True when the capsule axes are parallel (|sin θ| < TB_PARALLEL_SINE) and B's axis projected on
+// A's overlaps A's by more than the linear slop: then the contact is a side against a side.
+static bool tbAxesOverlapInParallel(tbVec2 a1, tbVec2 a2, tbVec2 b1, tbVec2 b2)
+{
+	float lengthA, lengthB;
+	tbVec2 u = tbGetLengthAndNormalize(&lengthA, tbSub(a2, a1));
+	tbVec2 v = tbGetLengthAndNormalize(&lengthB, tbSub(b2, b1));
+	if (tbAbsFloat(tbCross(u, v)) >= TB_PARALLEL_SINE)
+	{
+		return false;
+	}
+	float t1 = tbDot(tbSub(b1, a1), u);
+	float t2 = tbDot(tbSub(b2, a1), u);
+	float overlap = tbMinFloat(lengthA, tbMaxFloat(t1, t2)) - tbMaxFloat(0.0f, tbMinFloat(t1, t2));
+	return overlap > TB_LINEAR_SLOP;
+}
+
+// Capsule cores a1–a2 and b1–b2 in A's frame. The closest points of the two segments
+// (tbSegmentDistance, Ericson §5.1.9) give one point along the line joining them. Two cases need
+// the SAT on 2-vertex polygons instead: parallel sides overlapping along the axes (the clip
+// gives two points, so a capsule lying on a capsule does not rock on one point), and crossing
+// cores, whose closest points coincide and define no normal.
+static tbManifold tbCapsulesLocal(tbVec2 a1, tbVec2 a2, float rA, tbVec2 b1, tbVec2 b2, float rB)
+{
+	if (tbIsDegenerateSegment(b1, b2))
+	{
+		tbManifold m = tbCapsuleAndPoint(a1, a2, rA, tbLerp(b1, b2, 0.5f), rB);
+		return m;
+	}
+	if (tbIsDegenerateSegment(a1, a2))
+	{
+		// B against the point A: collide B with A and flip the normal back to A → B.
+		tbManifold m = tbCapsuleAndPoint(b1, b2, rB, tbLerp(a1, a2, 0.5f), rA);
+		m.normal = tbNeg(m.normal);
+		return m;
+	}
+
+	tbSegmentDistanceResult r = tbSegmentDistance(a1, a2, b1, b2);
+	float reach = rA + rB + TB_KEEP_DISTANCE;
+	if (r.distanceSquared >= reach * reach)
+	{
+		return tb_emptyManifold;
+	}
+
+	bool crossing = r.distanceSquared < TB_GAP_TOLERANCE * TB_GAP_TOLERANCE;
+	if (crossing || tbAxesOverlapInParallel(a1, a2, b1, b2))
+	{
+		tbPolygon polygonA = tbMakeSegmentPolygon(a1, a2, rA);
+		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, rB);
+		return tbCollidePolygonsLocal(&polygonA, &polygonB);
+	}
+
+	tbVec2 side = tbNormalize(tbLeftPerp(tbSub(a2, a1)));
+	return tbPointManifold(r.closest1, rA, r.closest2, rB, side, 0);
+}
+
+tbManifold tbCollideCapsules(const tbCapsule* capsuleA, tbTransform xfA, const tbCapsule* capsuleB, tbTransform xfB)
+{
+	tbTransform xf = tbInvMulTransforms(xfA, xfB);
+	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
+	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
+	tbManifold m = tbCapsulesLocal(capsuleA->center1, capsuleA->center2, capsuleA->radius, b1, b2, capsuleB->radius);
+	return tbManifoldToWorld(m, xfA);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Polygon and circle
+
+// Polygon A against a circle centred at c (A's frame). Inside the core (every face separation
+// ≤ 0) the face of largest separation is the way out (least penetration). Outside, the closest
+// point of the boundary is found over all edges (at most 8): on an edge interior the normal is
+// that edge's normal, exactly; at a vertex it is along c − vertex (Ericson §5.1.2 and the
+// Voronoi regions of §5.2.7, without relying on the largest face being the closest).
+static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB)
+{
+	int bestFace = 0;
+	float maxSeparation = -FLT_MAX;
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		float s = tbDot(polygon->normals[i], tbSub(c, polygon->vertices[i]));
+		if (s > maxSeparation)
+		{
+			maxSeparation = s;
+			bestFace = i;
+		}
+	}
+	float rA = polygon->radius;
+	tbVec2 faceNormal = polygon->normals[bestFace];
+	if (maxSeparation - rA - rB >= TB_KEEP_DISTANCE)
+	{
+		return tb_emptyManifold;
+	}
+	if (maxSeparation <= 0.0f)
+	{
+		tbVec2 q = tbMulSub(c, maxSeparation, faceNormal);
+		return tbFacePointManifold(q, rA, c, rB, faceNormal, 0);
+	}
+
+	float bestDistanceSquared = FLT_MAX;
+	float bestT = 0.0f;
+	tbVec2 bestPoint = c;
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		int j = i + 1 < polygon->count ? i + 1 : 0;
+		float t;
+		tbVec2 q = tbClosestPointOnSegment(&t, c, polygon->vertices[i], polygon->vertices[j]);
+		float dd = tbDistanceSquared(q, c);
+		if (dd < bestDistanceSquared)
+		{
+			bestDistanceSquared = dd;
+			bestPoint = q;
+			bestT = t;
+			bestFace = i;
+		}
+	}
+	faceNormal = polygon->normals[bestFace];
+	if (0.0f < bestT && bestT < 1.0f)
+	{
+		// Edge interior: project along the face normal, no normalisation noise.
+		float h = tbDot(faceNormal, tbSub(c, bestPoint));
+		tbVec2 q = tbMulSub(c, h, faceNormal);
+		return tbFacePointManifold(q, rA, c, rB, faceNormal, 0);
+	}
+	return tbPointManifold(bestPoint, rA, c, rB, faceNormal, 0);
+}
+
+tbManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB)
+{
+	tbTransform xf = tbInvMulTransforms(xfA, xfB);
+	tbVec2 c = tbTransformPoint(xf, circleB->center);
+	tbManifold m = tbPolygonAndPoint(polygonA, c, circleB->radius);
+	return tbManifoldToWorld(m, xfA);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Polygons: separating axis test and clipping
+
+// Largest separation of polygon2 from the face planes of polygon1 (cores, no radii):
+//     s(i) = min over j of nᵢ·(v2ⱼ − v1ᵢ),   result = max over i of s(i),
+// with the face i that gives it. A positive result proves the cores apart by at least that.
+static float tbFindMaxSeparation(int* edgeIndex, const tbPolygon* polygon1, const tbPolygon* polygon2)
+{
+	int bestIndex = 0;
+	float maxSeparation = -FLT_MAX;
+	for (int i = 0; i < polygon1->count; ++i)
+	{
+		tbVec2 n = polygon1->normals[i];
+		tbVec2 v1 = polygon1->vertices[i];
+		float si = FLT_MAX;
+		for (int j = 0; j < polygon2->count; ++j)
+		{
+			si = tbMinFloat(si, tbDot(n, tbSub(polygon2->vertices[j], v1)));
+		}
+		if (si > maxSeparation)
+		{
+			maxSeparation = si;
+			bestIndex = i;
+		}
+	}
+	*edgeIndex = bestIndex;
+	return maxSeparation;
+}
+
+// The edge of polygon most anti-parallel to the reference normal n: argmin over j of mⱼ·n.
+// It holds the support vertex of polygon along −n (the deepest one).
+static int tbFindIncidentEdge(const tbPolygon* polygon, tbVec2 n)
+{
+	int bestIndex = 0;
+	float minDot = FLT_MAX;
+	for (int j = 0; j < polygon->count; ++j)
+	{
+		float d = tbDot(polygon->normals[j], n);
+		if (d < minDot)
+		{
+			minDot = d;
+			bestIndex = j;
+		}
+	}
+	return bestIndex;
+}
+
+// A point of the incident edge during clipping, with its feature bytes (reference, incident).
+typedef struct tbClipVertex
+{
+	tbVec2 v;
+	uint8_t featureRef;
+	uint8_t featureInc;
+} tbClipVertex;
+
+// Sutherland–Hodgman on a segment: keeps the part of in[0]–in[1] with plane·x ≤ offset. An
+// endpoint within TB_CLIP_SLACK outside is kept as it is (stable ids); otherwise the crossing
+// x = in0 + t·(in1 − in0), t = d0/(d0 − d1), replaces it and belongs to the reference vertex
+// `refVertex` and the incident edge `incEdge`. Returns the number of points (0 to 2).
+static int tbClipSegment(tbClipVertex out[2], const tbClipVertex in[2], tbVec2 plane, float offset, int refVertex,
+						 int incEdge)
+{
+	float d0 = tbDot(plane, in[0].v) - offset;
+	float d1 = tbDot(plane, in[1].v) - offset;
+	bool keep0 = d0 <= TB_CLIP_SLACK;
+	bool keep1 = d1 <= TB_CLIP_SLACK;
+	int count = 0;
+	if (keep0)
+	{
+		out[count++] = in[0];
+	}
+	if (keep1)
+	{
+		out[count++] = in[1];
+	}
+	float t = keep0 != keep1 ? d0 / (d0 - d1) : -1.0f;
+	if (0.0f <= t && t <= 1.0f)
+	{
+		out[count].v = tbLerp(in[0].v, in[1].v, t);
+		out[count].featureRef = (uint8_t)(TB_FEATURE_CLIPPED | refVertex);
+		out[count].featureInc = (uint8_t)(TB_FEATURE_CLIPPED | incEdge);
+		++count;
+	}
+	return count;
+}
+
+// Feature id with the reference byte flagged; bytes in (reference, incident) order, swapped by
+// the caller when B is the reference.
+static uint16_t tbReferenceId(uint8_t featureRef, uint8_t featureInc)
+{
+	return TB_MAKE_FEATURE_ID(featureRef | TB_FEATURE_REFERENCE, featureInc);
+}
+
+// One point between the closest points of the reference edge v11–v12 and the incident edge
+// v21–v22 (Ericson §5.1.9): the corner-to-corner case of separated polygons, and the fallback
+// when clipping leaves nothing. Normal from reference to incident, else the face normal n.
+static tbManifold tbEdgeDistanceManifold(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
+										 tbVec2 n)
+{
+	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
+	int incNext = incEdge + 1 < inc->count ? incEdge + 1 : 0;
+	tbSegmentDistanceResult r = tbSegmentDistance(ref->vertices[refEdge], ref->vertices[refNext],
+												  inc->vertices[incEdge], inc->vertices[incNext]);
+	int refVertex = r.fraction1 < 0.5f ? refEdge : refNext;
+	int incVertex = r.fraction2 < 0.5f ? incEdge : incNext;
+	uint16_t id = TB_MAKE_FEATURE_ID(TB_FEATURE_VERTEX | refVertex, TB_FEATURE_VERTEX | incVertex);
+	return tbPointManifold(r.closest1, ref->radius, r.closest2, inc->radius, n, id);
+}
+
+// True when the closest points of the two edges are corners of both (fractions 0 or 1) and
+// further apart than the face separation says. Parallel edges also report corner fractions
+// (the closest pair is not unique) but at exactly the face separation: those are face contacts.
+static bool tbIsVertexVertex(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
+							 float coreSeparation)
+{
+	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
+	int incNext = incEdge + 1 < inc->count ? incEdge + 1 : 0;
+	tbSegmentDistanceResult r = tbSegmentDistance(ref->vertices[refEdge], ref->vertices[refNext],
+												  inc->vertices[incEdge], inc->vertices[incNext]);
+	bool endpoint1 = r.fraction1 <= 0.0f || r.fraction1 >= 1.0f;
+	bool endpoint2 = r.fraction2 <= 0.0f || r.fraction2 >= 1.0f;
+	float limit = coreSeparation + TB_GAP_TOLERANCE;
+	return endpoint1 && endpoint2 && r.distanceSquared > limit * limit;
+}
+
+// Clips the incident edge against the two side planes of the reference face v11–v12 (tangent t):
+//     −t·x ≤ −t·v11   and   t·x ≤ t·v12,
+// then measures each survivor p against the face: h = n·(p − v11), core point on the face
+// p − h·n. Points with separation ≥ TB_KEEP_DISTANCE are dropped.
+static tbManifold tbClipIncidentEdge(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge)
+{
+	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
+	int incNext = incEdge + 1 < inc->count ? incEdge + 1 : 0;
+	tbVec2 v11 = ref->vertices[refEdge];
+	tbVec2 v12 = ref->vertices[refNext];
+	tbVec2 n = ref->normals[refEdge];
+	tbVec2 t = tbNormalize(tbSub(v12, v11));
+
+	tbClipVertex incident[2] = {
+		{inc->vertices[incEdge], (uint8_t)refEdge, (uint8_t)incEdge},
+		{inc->vertices[incNext], (uint8_t)refEdge, (uint8_t)incNext},
+	};
+	tbClipVertex clip1[2], clip2[2];
+	int count = tbClipSegment(clip1, incident, tbNeg(t), -tbDot(t, v11), refEdge, incEdge);
+	if (count == 2)
+	{
+		count = tbClipSegment(clip2, clip1, t, tbDot(t, v12), refNext, incEdge);
+	}
+	if (count < 2)
+	{
+		// The incident edge misses the face (only with the tolerance or a degenerate edge).
+		return tbEdgeDistanceManifold(ref, inc, refEdge, incEdge, n);
+	}
+
+	tbManifold m = {0};
+	m.normal = n;
+	for (int i = 0; i < 2; ++i)
+	{
+		tbVec2 p = clip2[i].v;
+		tbVec2 q = tbMulSub(p, tbDot(n, tbSub(p, v11)), n);
+		uint16_t id = tbReferenceId(clip2[i].featureRef, clip2[i].featureInc);
+		tbManifoldPoint mp = tbMakeManifoldPoint(q, p, n, ref->radius, inc->radius, id);
+		if (mp.separation < TB_KEEP_DISTANCE)
+		{
+			m.points[m.pointCount++] = mp;
+		}
+	}
+	return m;
+}
+
+// Manifold with `ref`'s face refEdge as reference (normal from ref to inc). coreSeparation is
+// the SAT separation of the cores along that face.
+static tbManifold tbReferenceFaceManifold(const tbPolygon* ref, const tbPolygon* inc, int refEdge,
+										  float coreSeparation)
+{
+	tbVec2 n = ref->normals[refEdge];
+	int incEdge = tbFindIncidentEdge(inc, n);
+	if (coreSeparation > TB_GAP_TOLERANCE && tbIsVertexVertex(ref, inc, refEdge, incEdge, coreSeparation))
+	{
+		// Corner against corner across a gap: the true gap is the corner distance, larger than
+		// the face separation; rounded polygons need it to place the round corners right.
+		return tbEdgeDistanceManifold(ref, inc, refEdge, incEdge, n);
+	}
+	return tbClipIncidentEdge(ref, inc, refEdge, incEdge);
+}
+
+// Swaps the bytes of a feature id: (featureOnA, featureOnB) → (featureOnB, featureOnA).
+static uint16_t tbSwapFeatureId(uint16_t id)
+{
+	return (uint16_t)((id >> 8) | (id << 8));
+}
+
+// SAT of two polygons, both in A's frame. Prefers A's face unless B's separation is larger by
+// TB_REFERENCE_TOLERANCE; with B as reference the normal and the feature bytes are flipped.
+static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB)
+{
+	int edgeA, edgeB;
+	float separationA = tbFindMaxSeparation(&edgeA, polygonA, polygonB);
+	float separationB = tbFindMaxSeparation(&edgeB, polygonB, polygonA);
+	float radius = polygonA->radius + polygonB->radius;
+	if (tbMaxFloat(separationA, separationB) - radius >= TB_KEEP_DISTANCE)
+	{
+		return tb_emptyManifold;
+	}
+	if (separationB <= separationA + TB_REFERENCE_TOLERANCE)
+	{
+		return tbReferenceFaceManifold(polygonA, polygonB, edgeA, separationA);
+	}
+	tbManifold m = tbReferenceFaceManifold(polygonB, polygonA, edgeB, separationB);
+	m.normal = tbNeg(m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].id = tbSwapFeatureId(m.points[i].id);
+	}
+	return m;
+}
+
+tbManifold tbCollidePolygons(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB, tbTransform xfB)
+{
+	tbPolygon localB = tbPolygonInFrame(polygonB, tbInvMulTransforms(xfA, xfB));
+	tbManifold m = tbCollidePolygonsLocal(polygonA, &localB);
+	return tbManifoldToWorld(m, xfA);
+}
+
+tbManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, tbTransform xfA, const tbCapsule* capsuleB,
+									  tbTransform xfB)
+{
+	tbTransform xf = tbInvMulTransforms(xfA, xfB);
+	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
+	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
+	tbManifold m;
+	if (tbIsDegenerateSegment(b1, b2))
+	{
+		m = tbPolygonAndPoint(polygonA, tbLerp(b1, b2, 0.5f), capsuleB->radius);
+	}
+	else
+	{
+		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
+		m = tbCollidePolygonsLocal(polygonA, &polygonB);
+	}
+	return tbManifoldToWorld(m, xfA);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Segments: a segment is a capsule of radius zero, i.e. a 2-vertex polygon without radius
+
+tbManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB)
+{
+	tbCapsule capsuleA = {segmentA->point1, segmentA->point2, 0.0f};
+	return tbCollideCapsuleAndCircle(&capsuleA, xfA, circleB, xfB);
+}
+
+tbManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
+									  tbTransform xfB)
+{
+	tbCapsule capsuleA = {segmentA->point1, segmentA->point2, 0.0f};
+	return tbCollideCapsules(&capsuleA, xfA, capsuleB, xfB);
+}
+
+tbManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
+									  tbTransform xfB)
+{
+	if (tbIsDegenerateSegment(segmentA->point1, segmentA->point2))
+	{
+		// A point against B: collide B with it and turn the normal back to A → B.
+		tbCircle point = {tbLerp(segmentA->point1, segmentA->point2, 0.5f), 0.0f};
+		tbManifold m = tbCollidePolygonAndCircle(polygonB, xfB, &point, xfA);
+		m.normal = tbNeg(m.normal);
+		return m;
+	}
+	tbPolygon polygonA = tbMakeSegmentPolygon(segmentA->point1, segmentA->point2, 0.0f);
+	tbPolygon localB = tbPolygonInFrame(polygonB, tbInvMulTransforms(xfA, xfB));
+	tbManifold m = tbCollidePolygonsLocal(&polygonA, &localB);
+	return tbManifoldToWorld(m, xfA);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Dispatch
+
+// Role of a shape kind as the first argument of a pair routine: the routines take A as the
+// shape with the larger rank (segment > polygon > capsule > circle), e.g. tbCollidePolygonAndCircle.
+static int tbDispatchRank(tbShapeType type)
+{
+	switch (type)
+	{
+		case tb_circleShape:
+			return 0;
+		case tb_capsuleShape:
+			return 1;
+		case tb_polygonShape:
+			return 2;
+		case tb_segmentShape:
+			return 3;
+		default:
+			return -1;
+	}
+}
+
+static tbManifold tbCollidePolygonPair(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
+									   tbTransform xfB, tbNarrowPhaseMethod method)
+{
+	if (method == tb_narrowPhaseGJK)
+	{
+		return tbCollidePolygonsGJK(polygonA, xfA, polygonB, xfB);
+	}
+	return tbCollidePolygons(polygonA, xfA, polygonB, xfB);
+}
+
+// Pair in routine order: rank(A) ≥ rank(B).
+static tbManifold tbCollideOrdered(const tbGeometry* a, tbTransform xfA, const tbGeometry* b, tbTransform xfB,
+								   tbNarrowPhaseMethod method)
+{
+	switch (a->type)
+	{
+		case tb_circleShape:
+			return tbCollideCircles(&a->circle, xfA, &b->circle, xfB);
+		case tb_capsuleShape:
+			if (b->type == tb_circleShape)
+			{
+				return tbCollideCapsuleAndCircle(&a->capsule, xfA, &b->circle, xfB);
+			}
+			return tbCollideCapsules(&a->capsule, xfA, &b->capsule, xfB);
+		case tb_polygonShape:
+			if (b->type == tb_circleShape)
+			{
+				return tbCollidePolygonAndCircle(&a->polygon, xfA, &b->circle, xfB);
+			}
+			if (b->type == tb_capsuleShape)
+			{
+				return tbCollidePolygonAndCapsule(&a->polygon, xfA, &b->capsule, xfB);
+			}
+			return tbCollidePolygonPair(&a->polygon, xfA, &b->polygon, xfB, method);
+		case tb_segmentShape:
+			if (b->type == tb_circleShape)
+			{
+				return tbCollideSegmentAndCircle(&a->segment, xfA, &b->circle, xfB);
+			}
+			if (b->type == tb_capsuleShape)
+			{
+				return tbCollideSegmentAndCapsule(&a->segment, xfA, &b->capsule, xfB);
+			}
+			if (b->type == tb_polygonShape)
+			{
+				return tbCollideSegmentAndPolygon(&a->segment, xfA, &b->polygon, xfB);
+			}
+			return tb_emptyManifold; // two segments have no area: no contact
+		default:
+			return tb_emptyManifold;
+	}
+}
+
+tbManifold tbCollideShapes(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB, tbTransform xfB,
+						   tbNarrowPhaseMethod method)
+{
+	int rankA = tbDispatchRank(shapeA->type);
+	int rankB = tbDispatchRank(shapeB->type);
+	if (rankA < 0 || rankB < 0)
+	{
+		tbReportError("tbCollideShapes", "unknown shape type %d or %d; use a tbShapeType value.",
+					  (int)shapeA->type, (int)shapeB->type);
+		return tb_emptyManifold;
+	}
+	if (rankA >= rankB)
+	{
+		return tbCollideOrdered(shapeA, xfA, shapeB, xfB, method);
+	}
+
+	// B → A in routine order, then the normal turned to A → B and the feature bytes swapped so
+	// the first byte still names a feature of A. Points and separations do not depend on order.
+	tbManifold m = tbCollideOrdered(shapeB, xfB, shapeA, xfA, method);
+	m.normal = tbNeg(m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].id = tbSwapFeatureId(m.points[i].id);
+	}
+	return m;
+}

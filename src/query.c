@@ -1,0 +1,288 @@
+// World queries: AABB overlap, point, shape overlap, ray casts and shape casts. All go through
+// the broad phase and respect the query filter (category of the query against the shape's mask
+// and the shape's category against the query's mask).
+#include "world.h"
+
+#include <string.h>
+
+static bool tbQueryFilterAccepts(tbQueryFilter filter, const tbShape* shape)
+{
+	return (shape->filter.categoryBits & filter.maskBits) != 0 && (shape->filter.maskBits & filter.categoryBits) != 0;
+}
+
+typedef struct tbQueryContext
+{
+	tbWorld* world;
+	tbQueryFilter filter;
+	tbOverlapResultFcn* fcn;
+	void* userContext;
+	// point and shape queries
+	tbVec2 point;
+	const tbGeometry* shape;
+	tbShapeProxy proxy;
+	tbTransform transform;
+	// casts
+	tbCastResultFcn* castFcn;
+	tbVec2 translation;
+	float maxFraction;
+} tbQueryContext;
+
+static bool tbAABBQueryCallback(int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	tbQueryContext* q = context;
+	const tbShape* shape = q->world->shapes + shapeIndex;
+	if (tbQueryFilterAccepts(q->filter, shape) == false)
+	{
+		return true;
+	}
+	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
+}
+
+static bool tbCheckQueryWorld(tbWorld* world, const char* f, bool hasFcn)
+{
+	if (world != NULL && hasFcn == false)
+	{
+		tbReportError(f, "fcn is NULL; pass a result callback");
+	}
+	return world != NULL && hasFcn;
+}
+
+static tbQueryContext tbMakeQueryContext(tbWorld* world, tbQueryFilter filter, void* userContext)
+{
+	tbQueryContext q;
+	memset(&q, 0, sizeof(q));
+	q.world = world;
+	q.filter = filter;
+	q.userContext = userContext;
+	q.maxFraction = 1.0f;
+	return q;
+}
+
+bool tbWorld_OverlapAABB(tbWorldId worldId, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn, void* context)
+{
+	const char* f = "tbWorld_OverlapAABB";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false)
+	{
+		return false;
+	}
+	if (tbIsValidAABB(aabb) == false)
+	{
+		tbReportError(f, "aabb is not finite or has lowerBound > upperBound; pass a valid box");
+		return false;
+	}
+	tbQueryContext q = tbMakeQueryContext(world, filter, context);
+	q.fcn = fcn;
+	tbBroadPhase_Query(&world->broadPhase, aabb, filter.maskBits, tbAABBQueryCallback, &q);
+	return true;
+}
+
+static bool tbPointQueryCallback(int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	tbQueryContext* q = context;
+	const tbShape* shape = q->world->shapes + shapeIndex;
+	if (tbQueryFilterAccepts(q->filter, shape) == false)
+	{
+		return true;
+	}
+	tbVec2 local = tbInvTransformPoint(q->world->bodies[shape->bodyId].transform, q->point);
+	if (tbPointInShape(local, &shape->geometry) == false)
+	{
+		return true;
+	}
+	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
+}
+
+bool tbWorld_OverlapPoint(tbWorldId worldId, tbVec2 point, tbQueryFilter filter, tbOverlapResultFcn* fcn, void* context)
+{
+	const char* f = "tbWorld_OverlapPoint";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckVec2(f, "point", point) == false)
+	{
+		return false;
+	}
+	tbQueryContext q = tbMakeQueryContext(world, filter, context);
+	q.fcn = fcn;
+	q.point = point;
+	tbAABB box = {point, point};
+	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbPointQueryCallback, &q);
+	return true;
+}
+
+static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	tbQueryContext* q = context;
+	const tbShape* shape = q->world->shapes + shapeIndex;
+	if (tbQueryFilterAccepts(q->filter, shape) == false)
+	{
+		return true;
+	}
+	tbDistanceInput input;
+	input.proxyA = tbMakeShapeProxy(&shape->geometry);
+	input.proxyB = q->proxy;
+	input.transformA = q->world->bodies[shape->bodyId].transform;
+	input.transformB = q->transform;
+	input.useRadii = true;
+	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL);
+	if (output.distance > 0.0f)
+	{
+		return true;
+	}
+	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
+}
+
+bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform, tbQueryFilter filter,
+						  tbOverlapResultFcn* fcn, void* context)
+{
+	const char* f = "tbWorld_OverlapShape";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPointer(f, "shape", shape) == false)
+	{
+		return false;
+	}
+	if (tbIsValidTransform(transform) == false)
+	{
+		tbReportError(f, "transform is not finite or its rotation is not normalised; build it with tbMakeRot");
+		return false;
+	}
+	tbQueryContext q = tbMakeQueryContext(world, filter, context);
+	q.fcn = fcn;
+	q.shape = shape;
+	q.proxy = tbMakeShapeProxy(shape);
+	q.transform = transform;
+	tbBroadPhase_Query(&world->broadPhase, tbComputeShapeAABB(shape, transform), filter.maskBits, tbShapeQueryCallback,
+					   &q);
+	return true;
+}
+
+static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	tbQueryContext* q = context;
+	const tbShape* shape = q->world->shapes + shapeIndex;
+	if (tbQueryFilterAccepts(q->filter, shape) == false)
+	{
+		return input->maxFraction;
+	}
+	tbTransform xf = q->world->bodies[shape->bodyId].transform;
+	tbRayCastInput local = *input;
+	local.origin = tbInvTransformPoint(xf, input->origin);
+	local.translation = tbInvRotateVector(xf.q, input->translation);
+	tbCastOutput output = tbRayCastShape(&local, &shape->geometry);
+	if (output.hit == false)
+	{
+		return input->maxFraction;
+	}
+	tbVec2 point = tbTransformPoint(xf, output.point);
+	tbVec2 normal = tbRotateVector(xf.q, output.normal);
+	float result = q->castFcn(tbMakeShapeId(q->world, shapeIndex), point, normal, output.fraction, q->userContext);
+	// −1 ignores this shape: keep the current clip.
+	return result < 0.0f ? input->maxFraction : result;
+}
+
+static bool tbCheckRay(const char* f, tbVec2 origin, tbVec2 translation)
+{
+	return tbCheckVec2(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
+}
+
+bool tbWorld_CastRay(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
+					 void* context)
+{
+	const char* f = "tbWorld_CastRay";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckRay(f, origin, translation) == false)
+	{
+		return false;
+	}
+	tbQueryContext q = tbMakeQueryContext(world, filter, context);
+	q.castFcn = fcn;
+	tbRayCastInput input = {origin, translation, 1.0f};
+	tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
+	return true;
+}
+
+static float tbClosestCallback(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+{
+	tbRayResult* result = context;
+	result->shapeId = shapeId;
+	result->point = point;
+	result->normal = normal;
+	result->fraction = fraction;
+	result->hit = true;
+	return fraction;
+}
+
+tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQueryFilter filter)
+{
+	tbRayResult result;
+	memset(&result, 0, sizeof(result));
+	tbWorld_CastRay(worldId, origin, translation, filter, tbClosestCallback, &result);
+	return result;
+}
+
+/// Shape cast candidate: cast against one shape, report, and clip later casts by the result.
+static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	tbQueryContext* q = context;
+	const tbShape* shape = q->world->shapes + shapeIndex;
+	if (tbQueryFilterAccepts(q->filter, shape) == false)
+	{
+		return true;
+	}
+	tbShapeCastPairInput cast;
+	memset(&cast, 0, sizeof(cast));
+	cast.proxyA = tbMakeShapeProxy(&shape->geometry);
+	cast.proxyB = q->proxy;
+	cast.transformA = q->world->bodies[shape->bodyId].transform;
+	cast.transformB = q->transform;
+	cast.translationB = q->translation;
+	cast.maxFraction = q->maxFraction;
+	tbCastOutput output = tbShapeCast(&cast);
+	if (output.hit == false)
+	{
+		return true;
+	}
+	float result = q->castFcn(tbMakeShapeId(q->world, shapeIndex), output.point, output.normal, output.fraction,
+							  q->userContext);
+	if (result == 0.0f)
+	{
+		return false;
+	}
+	if (result > 0.0f && result < q->maxFraction)
+	{
+		q->maxFraction = result;
+	}
+	return true;
+}
+
+bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform, tbVec2 translation,
+					   tbQueryFilter filter, tbCastResultFcn* fcn, void* context)
+{
+	const char* f = "tbWorld_CastShape";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPointer(f, "shape", shape) == false ||
+		tbCheckVec2(f, "translation", translation) == false)
+	{
+		return false;
+	}
+	if (tbIsValidTransform(transform) == false)
+	{
+		tbReportError(f, "transform is not finite or its rotation is not normalised; build it with tbMakeRot");
+		return false;
+	}
+	tbQueryContext q = tbMakeQueryContext(world, filter, context);
+	q.castFcn = fcn;
+	q.proxy = tbMakeShapeProxy(shape);
+	q.transform = transform;
+	q.translation = translation;
+	q.maxFraction = 1.0f;
+	// Candidates: shapes whose boxes overlap the shape's box swept over the translation.
+	tbAABB box = tbComputeShapeAABB(shape, transform);
+	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
+	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);
+	return true;
+}

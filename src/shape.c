@@ -1,0 +1,571 @@
+// Shapes: validation of geometry and materials, creation and destruction, broad-phase proxies,
+// filtering, getters and setters.
+#include "world.h"
+
+#include "array.h"
+
+#include <string.h>
+
+#define TB_SHAPE_DEF_MAGIC 0x7B3A1C03
+
+tbShapeDef tbDefaultShapeDef(void)
+{
+	tbShapeDef def;
+	memset(&def, 0, sizeof(def));
+	def.friction = 0.6f;
+	def.density = 1.0f;
+	def.filter = tbDefaultFilter();
+	def.enableSensorEvents = true;
+	def.enableContactEvents = true;
+	def.updateBodyMass = true;
+	def.internalValue = TB_SHAPE_DEF_MAGIC;
+	return def;
+}
+
+tbFilter tbDefaultFilter(void)
+{
+	tbFilter filter = {TB_DEFAULT_CATEGORY_BITS, TB_DEFAULT_MASK_BITS, 0};
+	return filter;
+}
+
+tbQueryFilter tbDefaultQueryFilter(void)
+{
+	tbQueryFilter filter = {TB_DEFAULT_CATEGORY_BITS, TB_DEFAULT_MASK_BITS};
+	return filter;
+}
+
+tbShapeId tbMakeShapeId(const tbWorld* world, int shapeId)
+{
+	tbShapeId id = {shapeId + 1, world->worldId, world->shapes[shapeId].generation};
+	return id;
+}
+
+tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** worldOut, bool mutating)
+{
+	if (id.index1 <= 0)
+	{
+		tbReportError(function, "shapeId is null; pass an id returned by a tbCreate*Shape function");
+		return NULL;
+	}
+	tbWorld* world = id.world0 < TB_MAX_WORLDS ? tbGetWorldFromIndex(id.world0) : NULL;
+	int index = id.index1 - 1;
+	if (world == NULL || index >= world->shapeHighWater || world->shapes[index].inUse == false ||
+		world->shapes[index].generation != id.generation)
+	{
+		tbReportError(function, "shapeId refers to a destroyed shape, body or world; do not use a shape id after it "
+								"was destroyed (check with tbShape_IsValid)");
+		return NULL;
+	}
+	if (mutating && world->locked)
+	{
+		tbReportError(function, "the world is stepping; change shapes between steps");
+		return NULL;
+	}
+	if (worldOut != NULL)
+	{
+		*worldOut = world;
+	}
+	return world->shapes + index;
+}
+
+bool tbShape_IsValid(tbShapeId id)
+{
+	if (id.index1 <= 0 || id.world0 >= TB_MAX_WORLDS)
+	{
+		return false;
+	}
+	tbWorld* world = tbGetWorldFromIndex(id.world0);
+	int index = id.index1 - 1;
+	return world != NULL && index < world->shapeHighWater && world->shapes[index].inUse &&
+		   world->shapes[index].generation == id.generation;
+}
+
+tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbTransform transform)
+{
+	return tbComputeShapeAABB(&shape->geometry, transform);
+}
+
+bool tbShouldShapesCollide(tbFilter a, tbFilter b)
+{
+	if (a.groupIndex == b.groupIndex && a.groupIndex != 0)
+	{
+		return a.groupIndex > 0;
+	}
+	return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
+}
+
+void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body)
+{
+	shape->aabb = tbComputeShapeAABBInternal(shape, body->transform);
+	// Static shapes never move: no margin, so static boxes stay tight.
+	float margin = body->type == tb_staticBody ? 0.0f : TB_AABB_MARGIN;
+	shape->fatAABB = tbAABB_Fatten(shape->aabb, margin);
+	tbProxyType type = body->type == tb_staticBody ? tb_proxyStatic : tb_proxyMovable;
+	shape->proxyKey = tbBroadPhase_CreateProxy(&world->broadPhase, shape->fatAABB, shape->filter.categoryBits,
+											   (int)(shape - world->shapes), type);
+}
+
+void tbDestroyShapeProxy(tbWorld* world, tbShape* shape)
+{
+	if (shape->proxyKey != TB_NULL_INDEX)
+	{
+		tbBroadPhase_DestroyProxy(&world->broadPhase, shape->proxyKey);
+		shape->proxyKey = TB_NULL_INDEX;
+	}
+}
+
+void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
+{
+	float margin = body->type == tb_staticBody ? 0.0f : TB_AABB_MARGIN;
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		tbShape* shape = world->shapes + id;
+		shape->aabb = tbComputeShapeAABBInternal(shape, body->transform);
+		if (forceMove || tbAABB_Contains(shape->fatAABB, shape->aabb) == false)
+		{
+			shape->fatAABB = tbAABB_Fatten(shape->aabb, margin);
+			tbBroadPhase_MoveProxy(&world->broadPhase, shape->proxyKey, shape->fatAABB);
+			world->counters.proxyMoves += 1;
+		}
+	}
+}
+
+static bool tbCheckShapeDef(const tbShapeDef* def, const char* f)
+{
+	if (tbCheckPointer(f, "def", def) == false)
+	{
+		return false;
+	}
+	if (def->internalValue != TB_SHAPE_DEF_MAGIC)
+	{
+		tbReportError(f, "def was not initialised by tbDefaultShapeDef(); start from tbDefaultShapeDef() and change "
+						 "fields");
+		return false;
+	}
+	return tbCheckNonNegative(f, "def->density", def->density) && tbCheckNonNegative(f, "def->friction", def->friction) &&
+		   tbCheckNonNegative(f, "def->restitution", def->restitution);
+}
+
+static bool tbCheckRadius(const char* f, const char* name, float radius)
+{
+	return tbCheckPositive(f, name, radius);
+}
+
+/// Reject a polygon that is not a convex counter-clockwise hull of 3..8 finite vertices.
+static bool tbCheckPolygon(const char* f, const tbPolygon* p)
+{
+	if (p->count < 3 || p->count > TB_MAX_POLYGON_VERTICES)
+	{
+		tbReportError(f, "polygon->count is %d (must be 3..%d); build polygons with tbMakePolygon(tbComputeHull(...))",
+					  p->count, TB_MAX_POLYGON_VERTICES);
+		return false;
+	}
+	if (tbCheckNonNegative(f, "polygon->radius", p->radius) == false)
+	{
+		return false;
+	}
+	tbHull hull;
+	hull.count = p->count;
+	for (int i = 0; i < p->count; ++i)
+	{
+		if (tbIsValidVec2(p->vertices[i]) == false)
+		{
+			tbReportError(f, "polygon->vertices[%d] is not finite; pass finite coordinates", i);
+			return false;
+		}
+		hull.points[i] = p->vertices[i];
+	}
+	if (tbValidateHull(&hull) == false)
+	{
+		tbReportError(f, "polygon is degenerate or not convex and counter-clockwise (duplicate or collinear vertices); "
+						 "build it with tbMakePolygon(tbComputeHull(...))");
+		return false;
+	}
+	return true;
+}
+
+static bool tbCheckGeometry(const char* f, const tbGeometry* g)
+{
+	switch (g->type)
+	{
+		case tb_circleShape:
+			return tbCheckVec2(f, "circle->center", g->circle.center) && tbCheckRadius(f, "circle->radius", g->circle.radius);
+		case tb_capsuleShape:
+			if (tbCheckVec2(f, "capsule->center1", g->capsule.center1) == false ||
+				tbCheckVec2(f, "capsule->center2", g->capsule.center2) == false ||
+				tbCheckRadius(f, "capsule->radius", g->capsule.radius) == false)
+			{
+				return false;
+			}
+			if (tbDistanceSquared(g->capsule.center1, g->capsule.center2) < TB_LINEAR_SLOP * TB_LINEAR_SLOP)
+			{
+				tbReportError(f, "capsule centers are closer than %g m; use a circle instead", (double)TB_LINEAR_SLOP);
+				return false;
+			}
+			return true;
+		case tb_segmentShape:
+			if (tbCheckVec2(f, "segment->point1", g->segment.point1) == false ||
+				tbCheckVec2(f, "segment->point2", g->segment.point2) == false)
+			{
+				return false;
+			}
+			if (tbDistanceSquared(g->segment.point1, g->segment.point2) < TB_LINEAR_SLOP * TB_LINEAR_SLOP)
+			{
+				tbReportError(f, "segment points are closer than %g m; give the segment a length", (double)TB_LINEAR_SLOP);
+				return false;
+			}
+			return true;
+		case tb_polygonShape:
+			return tbCheckPolygon(f, &g->polygon);
+		default:
+			tbReportError(f, "geometry->type is %d; use a tbShapeType value", (int)g->type);
+			return false;
+	}
+}
+
+static int tbAllocShapeSlot(tbWorld* world)
+{
+	if (world->shapeFreeCount > 0)
+	{
+		return world->shapeFree[--world->shapeFreeCount];
+	}
+	TB_ARRAY_RESERVE(world->shapes, world->shapeCapacity, world->shapeHighWater + 1);
+	int id = world->shapeHighWater++;
+	memset(world->shapes + id, 0, sizeof(tbShape));
+	return id;
+}
+
+static tbShapeId tbCreateShapeInternal(tbBodyId bodyId, const tbShapeDef* def, const tbGeometry* geometry, const char* f)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
+	if (body == NULL || tbCheckShapeDef(def, f) == false || tbCheckGeometry(f, geometry) == false)
+	{
+		return TB_NULL_SHAPE_ID;
+	}
+	int id = tbAllocShapeSlot(world);
+	body = world->bodies + (bodyId.index1 - 1); // the body array did not move, but be explicit
+	tbShape* shape = world->shapes + id;
+	uint16_t generation = (uint16_t)(shape->generation + 1);
+	memset(shape, 0, sizeof(tbShape));
+	shape->generation = generation;
+	shape->inUse = true;
+	shape->geometry = *geometry;
+	shape->userData = def->userData;
+	shape->filter = def->filter;
+	shape->density = def->density;
+	shape->friction = def->friction;
+	shape->restitution = def->restitution;
+	shape->userMaterialId = def->userMaterialId;
+	shape->isSensor = def->isSensor;
+	shape->enableSensorEvents = def->enableSensorEvents;
+	shape->enableContactEvents = def->enableContactEvents;
+	shape->enableHitEvents = def->enableHitEvents;
+	shape->bodyId = bodyId.index1 - 1;
+	shape->nextShapeId = body->headShapeId;
+	shape->proxyKey = TB_NULL_INDEX;
+	body->headShapeId = id;
+	body->shapeCount += 1;
+	world->shapeCount += 1;
+	tbCreateShapeProxy(world, shape, body);
+	if (def->updateBodyMass)
+	{
+		tbUpdateBodyMass(world, body);
+	}
+	return tbMakeShapeId(world, id);
+}
+
+tbShapeId tbCreateShape(tbBodyId bodyId, const tbShapeDef* def, const tbGeometry* geometry)
+{
+	if (tbCheckPointer("tbCreateShape", "geometry", geometry) == false)
+	{
+		return TB_NULL_SHAPE_ID;
+	}
+	return tbCreateShapeInternal(bodyId, def, geometry, "tbCreateShape");
+}
+
+tbShapeId tbCreateCircleShape(tbBodyId bodyId, const tbShapeDef* def, const tbCircle* circle)
+{
+	if (tbCheckPointer("tbCreateCircleShape", "circle", circle) == false)
+	{
+		return TB_NULL_SHAPE_ID;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_circleShape;
+	g.circle = *circle;
+	return tbCreateShapeInternal(bodyId, def, &g, "tbCreateCircleShape");
+}
+
+tbShapeId tbCreateCapsuleShape(tbBodyId bodyId, const tbShapeDef* def, const tbCapsule* capsule)
+{
+	if (tbCheckPointer("tbCreateCapsuleShape", "capsule", capsule) == false)
+	{
+		return TB_NULL_SHAPE_ID;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_capsuleShape;
+	g.capsule = *capsule;
+	return tbCreateShapeInternal(bodyId, def, &g, "tbCreateCapsuleShape");
+}
+
+tbShapeId tbCreatePolygonShape(tbBodyId bodyId, const tbShapeDef* def, const tbPolygon* polygon)
+{
+	if (tbCheckPointer("tbCreatePolygonShape", "polygon", polygon) == false)
+	{
+		return TB_NULL_SHAPE_ID;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_polygonShape;
+	g.polygon = *polygon;
+	return tbCreateShapeInternal(bodyId, def, &g, "tbCreatePolygonShape");
+}
+
+tbShapeId tbCreateSegmentShape(tbBodyId bodyId, const tbShapeDef* def, const tbSegment* segment)
+{
+	if (tbCheckPointer("tbCreateSegmentShape", "segment", segment) == false)
+	{
+		return TB_NULL_SHAPE_ID;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_segmentShape;
+	g.segment = *segment;
+	return tbCreateShapeInternal(bodyId, def, &g, "tbCreateSegmentShape");
+}
+
+static void tbUnlinkShape(tbWorld* world, tbBody* body, int shapeId)
+{
+	int* link = &body->headShapeId;
+	while (*link != TB_NULL_INDEX)
+	{
+		if (*link == shapeId)
+		{
+			*link = world->shapes[shapeId].nextShapeId;
+			body->shapeCount -= 1;
+			return;
+		}
+		link = &world->shapes[*link].nextShapeId;
+	}
+}
+
+void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbDestroyShape", &world, true);
+	if (shape == NULL)
+	{
+		return;
+	}
+	int id = shapeId.index1 - 1;
+	tbBody* body = world->bodies + shape->bodyId;
+	// Destroy the contacts of this shape.
+	int key = body->headContactKey;
+	while (key != TB_NULL_INDEX)
+	{
+		tbContact* contact = world->contacts + (key >> 1);
+		int next = contact->edges[key & 1].nextKey;
+		if (contact->shapeIdA == id || contact->shapeIdB == id)
+		{
+			tbDestroyContact(world, key >> 1, true);
+		}
+		key = next;
+	}
+	tbDestroyShapeProxy(world, shape);
+	tbUnlinkShape(world, body, id);
+	shape->inUse = false;
+	shape->generation += 1;
+	world->shapeCount -= 1;
+	TB_ARRAY_PUSH(world->shapeFree, world->shapeFreeCount, world->shapeFreeCapacity, id);
+	if (updateBodyMass)
+	{
+		tbUpdateBodyMass(world, body);
+	}
+}
+
+tbShapeType tbShape_GetType(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetType", NULL, false);
+	return shape != NULL ? shape->geometry.type : tb_circleShape;
+}
+
+tbBodyId tbShape_GetBody(tbShapeId shapeId)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetBody", &world, false);
+	return shape != NULL ? tbMakeBodyId(world, shape->bodyId) : TB_NULL_BODY_ID;
+}
+
+tbGeometry tbShape_GetGeometry(tbShapeId shapeId)
+{
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetGeometry", NULL, false);
+	return shape != NULL ? shape->geometry : g;
+}
+
+bool tbShape_IsSensor(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_IsSensor", NULL, false);
+	return shape != NULL && shape->isSensor;
+}
+
+bool tbShape_SetDensity(tbShapeId shapeId, float density, bool updateBodyMass)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetDensity", &world, true);
+	if (shape == NULL || tbCheckNonNegative("tbShape_SetDensity", "density", density) == false)
+	{
+		return false;
+	}
+	shape->density = density;
+	if (updateBodyMass)
+	{
+		tbUpdateBodyMass(world, world->bodies + shape->bodyId);
+	}
+	return true;
+}
+
+float tbShape_GetDensity(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetDensity", NULL, false);
+	return shape != NULL ? shape->density : 0.0f;
+}
+
+bool tbShape_SetFriction(tbShapeId shapeId, float friction)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetFriction", NULL, true);
+	if (shape == NULL || tbCheckNonNegative("tbShape_SetFriction", "friction", friction) == false)
+	{
+		return false;
+	}
+	shape->friction = friction;
+	return true;
+}
+
+float tbShape_GetFriction(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetFriction", NULL, false);
+	return shape != NULL ? shape->friction : 0.0f;
+}
+
+bool tbShape_SetRestitution(tbShapeId shapeId, float restitution)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetRestitution", NULL, true);
+	if (shape == NULL || tbCheckNonNegative("tbShape_SetRestitution", "restitution", restitution) == false)
+	{
+		return false;
+	}
+	shape->restitution = restitution;
+	return true;
+}
+
+float tbShape_GetRestitution(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetRestitution", NULL, false);
+	return shape != NULL ? shape->restitution : 0.0f;
+}
+
+tbFilter tbShape_GetFilter(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetFilter", NULL, false);
+	return shape != NULL ? shape->filter : tbDefaultFilter();
+}
+
+bool tbShape_SetFilter(tbShapeId shapeId, tbFilter filter)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetFilter", &world, true);
+	if (shape == NULL)
+	{
+		return false;
+	}
+	shape->filter = filter;
+	// Re-create the proxy so that pairs are re-evaluated under the new filter.
+	tbBody* body = world->bodies + shape->bodyId;
+	int id = shapeId.index1 - 1;
+	int key = body->headContactKey;
+	while (key != TB_NULL_INDEX)
+	{
+		tbContact* contact = world->contacts + (key >> 1);
+		int next = contact->edges[key & 1].nextKey;
+		if (contact->shapeIdA == id || contact->shapeIdB == id)
+		{
+			tbDestroyContact(world, key >> 1, true);
+		}
+		key = next;
+	}
+	tbDestroyShapeProxy(world, shape);
+	tbCreateShapeProxy(world, shape, body);
+	return true;
+}
+
+void tbShape_SetUserData(tbShapeId shapeId, void* userData)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetUserData", NULL, false);
+	if (shape != NULL)
+	{
+		shape->userData = userData;
+	}
+}
+
+void* tbShape_GetUserData(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetUserData", NULL, false);
+	return shape != NULL ? shape->userData : NULL;
+}
+
+tbAABB tbShape_GetAABB(tbShapeId shapeId)
+{
+	tbWorld* world;
+	tbAABB empty = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetAABB", &world, false);
+	return shape != NULL ? tbComputeShapeAABBInternal(shape, world->bodies[shape->bodyId].transform) : empty;
+}
+
+bool tbShape_TestPoint(tbShapeId shapeId, tbVec2 point)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_TestPoint", &world, false);
+	if (shape == NULL || tbCheckVec2("tbShape_TestPoint", "point", point) == false)
+	{
+		return false;
+	}
+	tbVec2 local = tbInvTransformPoint(world->bodies[shape->bodyId].transform, point);
+	return tbPointInShape(local, &shape->geometry);
+}
+
+tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input)
+{
+	tbCastOutput output;
+	memset(&output, 0, sizeof(output));
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_RayCast", &world, false);
+	if (shape == NULL || tbCheckPointer("tbShape_RayCast", "input", input) == false ||
+		tbCheckVec2("tbShape_RayCast", "input->origin", input->origin) == false ||
+		tbCheckVec2("tbShape_RayCast", "input->translation", input->translation) == false ||
+		tbCheckNonNegative("tbShape_RayCast", "input->maxFraction", input->maxFraction) == false)
+	{
+		return output;
+	}
+	tbTransform xf = world->bodies[shape->bodyId].transform;
+	tbRayCastInput local = *input;
+	local.origin = tbInvTransformPoint(xf, input->origin);
+	local.translation = tbInvRotateVector(xf.q, input->translation);
+	output = tbRayCastShape(&local, &shape->geometry);
+	if (output.hit)
+	{
+		output.point = tbTransformPoint(xf, output.point);
+		output.normal = tbRotateVector(xf.q, output.normal);
+	}
+	return output;
+}
+
+tbMassData tbShape_GetMassData(tbShapeId shapeId)
+{
+	tbMassData md = {0};
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetMassData", NULL, false);
+	return shape != NULL ? tbComputeShapeMass(&shape->geometry, shape->density) : md;
+}

@@ -1,0 +1,558 @@
+// The world: creation and destruction, the registry that turns handles into worlds, the step as
+// a pipeline of named stages, settings, events, profile and counters.
+//
+// Handles: a world id is (slot + 1, generation). The registry below is the one piece of global
+// state besides the hooks in core.c; it exists because value handles must be resolved without
+// pointers. Body and shape ids carry the world slot too.
+#include "world.h"
+
+#include "array.h"
+
+#include <string.h>
+
+static tbWorld* s_worlds[TB_MAX_WORLDS];
+static uint16_t s_worldGenerations[TB_MAX_WORLDS];
+
+#define TB_WORLD_DEF_MAGIC 0x7B3A1C01
+
+tbWorldDef tbDefaultWorldDef(void)
+{
+	tbWorldDef def;
+	memset(&def, 0, sizeof(def));
+	def.gravity = tbMakeVec2(0.0f, -10.0f);
+	def.restitutionThreshold = 1.0f;
+	def.hitEventThreshold = 1.0f;
+	def.contactHertz = 30.0f;
+	def.contactDampingRatio = 10.0f;
+	def.contactHertzFollowsSubStep = false;
+	def.maxContactPushSpeed = 3.0f;
+	def.maximumLinearSpeed = 4000.0f;
+	def.enableSleep = true;
+	def.broadPhase = tb_broadPhaseAuto;
+	def.narrowPhase = tb_narrowPhaseAuto;
+	def.continuous = tb_continuousDefault;
+	def.solver = tb_solverSoft;
+	def.velocityIterations = 8;
+	def.positionIterations = 3;
+	def.relaxIterations = 1;
+	def.enableWarmStarting = true;
+	def.internalValue = TB_WORLD_DEF_MAGIC;
+	return def;
+}
+
+tbDebugDraw tbDefaultDebugDraw(void)
+{
+	tbDebugDraw draw;
+	memset(&draw, 0, sizeof(draw));
+	draw.drawShapes = true;
+	return draw;
+}
+
+tbWorld* tbGetWorldFromIndex(int index)
+{
+	return s_worlds[index];
+}
+
+tbWorld* tbGetWorldChecked(tbWorldId id, const char* function)
+{
+	if (id.index1 == 0)
+	{
+		tbReportError(function, "worldId is null; create a world with tbCreateWorld first");
+		return NULL;
+	}
+	int index = id.index1 - 1;
+	if (index >= TB_MAX_WORLDS || s_worlds[index] == NULL || s_worlds[index]->generation != id.generation)
+	{
+		tbReportError(function, "worldId refers to a destroyed world; do not use a world id after tbDestroyWorld");
+		return NULL;
+	}
+	return s_worlds[index];
+}
+
+static bool tbCheckMethods(const tbWorldDef* def, const char* function)
+{
+	if ((unsigned)def->broadPhase >= tb_broadPhaseMethodCount || (unsigned)def->continuous >= tb_continuousMethodCount ||
+		(unsigned)def->solver >= tb_solverMethodCount || (unsigned)def->narrowPhase > tb_narrowPhaseGJK)
+	{
+		tbReportError(function, "def has an unknown method value; use the tb_broadPhase*/tb_narrowPhase*/tb_continuous*/"
+								"tb_solver* enum values");
+		return false;
+	}
+	if (def->velocityIterations < 1 || def->positionIterations < 0 || def->relaxIterations < 0)
+	{
+		tbReportError(function, "def iterations are %d velocity, %d position, %d relax (velocity must be >= 1, the "
+								"others >= 0)", def->velocityIterations, def->positionIterations, def->relaxIterations);
+		return false;
+	}
+	return true;
+}
+
+static bool tbCheckWorldDef(const tbWorldDef* def)
+{
+	const char* f = "tbCreateWorld";
+	if (tbCheckPointer(f, "def", def) == false)
+	{
+		return false;
+	}
+	if (def->internalValue != TB_WORLD_DEF_MAGIC)
+	{
+		tbReportError(f, "def was not initialised by tbDefaultWorldDef(); start from tbDefaultWorldDef() and change "
+						 "fields");
+		return false;
+	}
+	return tbCheckVec2(f, "def->gravity", def->gravity) &&
+		   tbCheckNonNegative(f, "def->restitutionThreshold", def->restitutionThreshold) &&
+		   tbCheckNonNegative(f, "def->hitEventThreshold", def->hitEventThreshold) &&
+		   tbCheckPositive(f, "def->contactHertz", def->contactHertz) &&
+		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
+		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
+		   tbCheckPositive(f, "def->maximumLinearSpeed", def->maximumLinearSpeed) && tbCheckMethods(def, f);
+}
+
+static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
+{
+	// Auto: the dynamic tree. It costs nothing for sleeping and static bodies and handles any
+	// size spread; sort-and-sweep only wins when nearly everything moves and sizes are uniform.
+	return method == tb_broadPhaseAuto ? tb_broadPhaseTree : method;
+}
+
+tbWorldId tbCreateWorld(const tbWorldDef* def)
+{
+	if (tbCheckWorldDef(def) == false)
+	{
+		return TB_NULL_WORLD_ID;
+	}
+	int slot = -1;
+	for (int i = 0; i < TB_MAX_WORLDS; ++i)
+	{
+		if (s_worlds[i] == NULL)
+		{
+			slot = i;
+			break;
+		}
+	}
+	if (slot < 0)
+	{
+		tbReportError("tbCreateWorld", "%d worlds exist already (TB_MAX_WORLDS); destroy one first", TB_MAX_WORLDS);
+		return TB_NULL_WORLD_ID;
+	}
+	tbWorld* world = tbAlloc((int)sizeof(tbWorld));
+	memset(world, 0, sizeof(tbWorld));
+	world->def = *def;
+	world->worldId = (uint16_t)slot;
+	world->generation = (uint16_t)(s_worldGenerations[slot] + 1);
+	s_worldGenerations[slot] = world->generation;
+	world->inUse = true;
+	world->userData = def->userData;
+	tbHashSet_Create(&world->pairSet, 64);
+	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
+	s_worlds[slot] = world;
+	tbWorldId id = {(uint16_t)(slot + 1), world->generation};
+	return id;
+}
+
+static void tbFreeWorldArrays(tbWorld* w)
+{
+	TB_ARRAY_FREE(w->bodies, w->bodyCapacity);
+	TB_ARRAY_FREE(w->bodyFree, w->bodyFreeCapacity);
+	TB_ARRAY_FREE(w->shapes, w->shapeCapacity);
+	TB_ARRAY_FREE(w->shapeFree, w->shapeFreeCapacity);
+	TB_ARRAY_FREE(w->contacts, w->contactCapacity);
+	TB_ARRAY_FREE(w->contactFree, w->contactFreeCapacity);
+	TB_ARRAY_FREE(w->awakeBodies, w->awakeBodyCapacity);
+	TB_ARRAY_FREE(w->stepContacts, w->stepContactCapacity);
+	TB_ARRAY_FREE(w->solverContacts, w->solverContactCapacity);
+	TB_ARRAY_FREE(w->islandStack, w->islandStackCapacity);
+	TB_ARRAY_FREE(w->islandBodies, w->islandBodyCapacity);
+	TB_ARRAY_FREE(w->beginEvents, w->beginCapacity);
+	TB_ARRAY_FREE(w->endEvents, w->endCapacity);
+	TB_ARRAY_FREE(w->hitEvents, w->hitCapacity);
+	TB_ARRAY_FREE(w->sensorBeginEvents, w->sensorBeginCapacity);
+	TB_ARRAY_FREE(w->sensorEndEvents, w->sensorEndCapacity);
+	TB_ARRAY_FREE(w->moveEvents, w->moveCapacity);
+}
+
+void tbDestroyWorld(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbDestroyWorld");
+	if (world == NULL)
+	{
+		return;
+	}
+	if (world->locked)
+	{
+		tbReportError("tbDestroyWorld", "the world is stepping; do not destroy it from a callback");
+		return;
+	}
+	tbBroadPhase_Destroy(&world->broadPhase);
+	tbHashSet_Destroy(&world->pairSet);
+	tbFreeWorldArrays(world);
+	s_worlds[world->worldId] = NULL;
+	tbFree(world, (int)sizeof(tbWorld));
+}
+
+bool tbWorld_IsValid(tbWorldId id)
+{
+	if (id.index1 == 0 || id.index1 > TB_MAX_WORLDS)
+	{
+		return false;
+	}
+	tbWorld* world = s_worlds[id.index1 - 1];
+	return world != NULL && world->generation == id.generation;
+}
+
+static void tbClearEvents(tbWorld* world)
+{
+	world->beginCount = 0;
+	world->endCount = 0;
+	world->hitCount = 0;
+	world->sensorBeginCount = 0;
+	world->sensorEndCount = 0;
+	world->moveCount = 0;
+}
+
+static void tbUpdateCounters(tbWorld* world)
+{
+	tbCounters* c = &world->counters;
+	c->bodyCount = world->bodyCount;
+	c->shapeCount = world->shapeCount;
+	c->contactCount = world->contactCount;
+	c->awakeBodyCount = world->awakeBodyCount;
+	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
+	c->byteCount = tbGetByteCount();
+	int touching = 0;
+	for (int i = 0; i < world->stepContactCount; ++i)
+	{
+		touching += (world->contacts[world->stepContacts[i]].flags & tb_contactTouching) ? 1 : 0;
+	}
+	c->touchingCount = touching;
+}
+
+/// The step: each stage is a function in the file of its concept, run top to bottom.
+bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
+{
+	const char* f = "tbWorld_Step";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (world == NULL)
+	{
+		return false;
+	}
+	if (tbIsValidFloat(timeStep) == false || timeStep <= 0.0f)
+	{
+		tbReportError(f, "timeStep is %g (must be finite and > 0); pass the frame time in seconds, e.g. 1/60",
+					  (double)timeStep);
+		return false;
+	}
+	if (subStepCount < 1)
+	{
+		tbReportError(f, "subStepCount is %d (must be >= 1); 4 is typical", subStepCount);
+		return false;
+	}
+	if (world->locked)
+	{
+		tbReportError(f, "the world is already stepping; do not step from a callback");
+		return false;
+	}
+	world->locked = true;
+	world->stepIndex += 1;
+	tbClearEvents(world);
+	memset(&world->profile, 0, sizeof(world->profile));
+	int byteCount = world->counters.byteCount;
+	memset(&world->counters, 0, sizeof(world->counters));
+	world->counters.byteCount = byteCount;
+
+	uint64_t stepTicks = tbGetTicks();
+	uint64_t t = tbGetTicks();
+	tbUpdatePairsStage(world);
+	world->profile.pairs = tbGetMilliseconds(t);
+
+	t = tbGetTicks();
+	tbCollideStage(world);
+	world->profile.collide = tbGetMilliseconds(t);
+
+	t = tbGetTicks();
+	tbIslandStage(world);
+	world->profile.islands = tbGetMilliseconds(t);
+
+	t = tbGetTicks();
+	tbSolveStage(world, timeStep, subStepCount);
+	world->profile.solve = tbGetMilliseconds(t);
+
+	t = tbGetTicks();
+	tbContinuousStage(world);
+	world->profile.continuous = tbGetMilliseconds(t);
+
+	t = tbGetTicks();
+	tbFinalizeStage(world, timeStep);
+	tbSleepStage(world, timeStep);
+	world->profile.sleep = tbGetMilliseconds(t);
+
+	tbUpdateCounters(world);
+	world->profile.step = tbGetMilliseconds(stepTicks);
+	world->locked = false;
+	return true;
+}
+
+tbBodyEvents tbWorld_GetBodyEvents(tbWorldId worldId)
+{
+	tbBodyEvents events = {0};
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetBodyEvents");
+	if (world != NULL)
+	{
+		events.moveEvents = world->moveEvents;
+		events.moveCount = world->moveCount;
+	}
+	return events;
+}
+
+tbSensorEvents tbWorld_GetSensorEvents(tbWorldId worldId)
+{
+	tbSensorEvents events = {0};
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetSensorEvents");
+	if (world != NULL)
+	{
+		events.beginEvents = world->sensorBeginEvents;
+		events.beginCount = world->sensorBeginCount;
+		events.endEvents = world->sensorEndEvents;
+		events.endCount = world->sensorEndCount;
+	}
+	return events;
+}
+
+tbContactEvents tbWorld_GetContactEvents(tbWorldId worldId)
+{
+	tbContactEvents events = {0};
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetContactEvents");
+	if (world != NULL)
+	{
+		events.beginEvents = world->beginEvents;
+		events.beginCount = world->beginCount;
+		events.endEvents = world->endEvents;
+		events.endCount = world->endCount;
+		events.hitEvents = world->hitEvents;
+		events.hitCount = world->hitCount;
+	}
+	return events;
+}
+
+static tbWorld* tbGetUnlockedWorld(tbWorldId worldId, const char* function)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, function);
+	if (world != NULL && world->locked)
+	{
+		tbReportError(function, "the world is stepping; change it between steps");
+		return NULL;
+	}
+	return world;
+}
+
+bool tbWorld_SetGravity(tbWorldId worldId, tbVec2 gravity)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetGravity");
+	if (world == NULL || tbCheckVec2("tbWorld_SetGravity", "gravity", gravity) == false)
+	{
+		return false;
+	}
+	world->def.gravity = gravity;
+	return true;
+}
+
+tbVec2 tbWorld_GetGravity(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetGravity");
+	return world != NULL ? world->def.gravity : tb_vec2_zero;
+}
+
+void tbWorld_EnableSleeping(tbWorldId worldId, bool flag)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableSleeping");
+	if (world == NULL)
+	{
+		return;
+	}
+	world->def.enableSleep = flag;
+	if (flag == false)
+	{
+		for (int i = 0; i < world->bodyHighWater; ++i)
+		{
+			tbBody* body = world->bodies + i;
+			if (body->inUse && body->type != tb_staticBody)
+			{
+				tbWakeBody(world, body);
+			}
+		}
+	}
+}
+
+bool tbWorld_IsSleepingEnabled(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_IsSleepingEnabled");
+	return world != NULL && world->def.enableSleep;
+}
+
+bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio, float pushSpeed)
+{
+	const char* f = "tbWorld_SetContactTuning";
+	tbWorld* world = tbGetUnlockedWorld(worldId, f);
+	if (world == NULL || tbCheckPositive(f, "hertz", hertz) == false ||
+		tbCheckNonNegative(f, "dampingRatio", dampingRatio) == false || tbCheckPositive(f, "pushSpeed", pushSpeed) == false)
+	{
+		return false;
+	}
+	world->def.contactHertz = hertz;
+	world->def.contactDampingRatio = dampingRatio;
+	world->def.maxContactPushSpeed = pushSpeed;
+	return true;
+}
+
+bool tbWorld_SetRestitutionThreshold(tbWorldId worldId, float value)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetRestitutionThreshold");
+	if (world == NULL || tbCheckNonNegative("tbWorld_SetRestitutionThreshold", "value", value) == false)
+	{
+		return false;
+	}
+	world->def.restitutionThreshold = value;
+	return true;
+}
+
+bool tbWorld_SetHitEventThreshold(tbWorldId worldId, float value)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetHitEventThreshold");
+	if (world == NULL || tbCheckNonNegative("tbWorld_SetHitEventThreshold", "value", value) == false)
+	{
+		return false;
+	}
+	world->def.hitEventThreshold = value;
+	return true;
+}
+
+void tbWorld_SetFrictionCallback(tbWorldId worldId, tbFrictionCallback* callback)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetFrictionCallback");
+	if (world != NULL)
+	{
+		world->def.frictionCallback = callback;
+	}
+}
+
+void tbWorld_SetRestitutionCallback(tbWorldId worldId, tbRestitutionCallback* callback)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetRestitutionCallback");
+	if (world != NULL)
+	{
+		world->def.restitutionCallback = callback;
+	}
+}
+
+void* tbWorld_GetUserData(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetUserData");
+	return world != NULL ? world->userData : NULL;
+}
+
+bool tbWorld_SetBroadPhaseMethod(tbWorldId worldId, tbBroadPhaseMethod method)
+{
+	const char* f = "tbWorld_SetBroadPhaseMethod";
+	tbWorld* world = tbGetUnlockedWorld(worldId, f);
+	if (world == NULL)
+	{
+		return false;
+	}
+	if ((unsigned)method >= tb_broadPhaseMethodCount)
+	{
+		tbReportError(f, "method is %d; use a tb_broadPhase* value", (int)method);
+		return false;
+	}
+	world->def.broadPhase = method;
+	tbBroadPhase_SetMethod(&world->broadPhase, tbResolveBroadPhase(method));
+	return true;
+}
+
+bool tbWorld_SetNarrowPhaseMethod(tbWorldId worldId, tbNarrowPhaseMethod method)
+{
+	const char* f = "tbWorld_SetNarrowPhaseMethod";
+	tbWorld* world = tbGetUnlockedWorld(worldId, f);
+	if (world == NULL)
+	{
+		return false;
+	}
+	if ((unsigned)method > tb_narrowPhaseGJK)
+	{
+		tbReportError(f, "method is %d; use a tb_narrowPhase* value", (int)method);
+		return false;
+	}
+	world->def.narrowPhase = method;
+	return true;
+}
+
+bool tbWorld_SetContinuousMethod(tbWorldId worldId, tbContinuousMethod method)
+{
+	const char* f = "tbWorld_SetContinuousMethod";
+	tbWorld* world = tbGetUnlockedWorld(worldId, f);
+	if (world == NULL)
+	{
+		return false;
+	}
+	if ((unsigned)method >= tb_continuousMethodCount)
+	{
+		tbReportError(f, "method is %d; use a tb_continuous* value", (int)method);
+		return false;
+	}
+	world->def.continuous = method;
+	return true;
+}
+
+bool tbWorld_SetSolverMethod(tbWorldId worldId, tbSolverMethod method, int velocityIterations, int positionIterations)
+{
+	const char* f = "tbWorld_SetSolverMethod";
+	tbWorld* world = tbGetUnlockedWorld(worldId, f);
+	if (world == NULL)
+	{
+		return false;
+	}
+	tbWorldDef def = world->def;
+	def.solver = method;
+	def.velocityIterations = velocityIterations;
+	def.positionIterations = positionIterations;
+	if (tbCheckMethods(&def, f) == false)
+	{
+		return false;
+	}
+	world->def = def;
+	return true;
+}
+
+tbWorldDef tbWorld_GetDef(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetDef");
+	if (world == NULL)
+	{
+		return tbDefaultWorldDef();
+	}
+	tbWorldDef def = world->def;
+	def.broadPhase = world->broadPhase.method;
+	return def;
+}
+
+tbProfile tbWorld_GetProfile(tbWorldId worldId)
+{
+	tbProfile profile = {0};
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetProfile");
+	return world != NULL ? world->profile : profile;
+}
+
+tbCounters tbWorld_GetCounters(tbWorldId worldId)
+{
+	tbCounters counters = {0};
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetCounters");
+	if (world == NULL)
+	{
+		return counters;
+	}
+	world->counters.bodyCount = world->bodyCount;
+	world->counters.shapeCount = world->shapeCount;
+	world->counters.contactCount = world->contactCount;
+	world->counters.awakeBodyCount = world->awakeBodyCount;
+	return world->counters;
+}

@@ -1,0 +1,236 @@
+// Internal: the world and the data it owns. Bodies, shapes and contacts live in pools indexed by
+// small integers (ids); a free list recycles slots and a generation counter makes stale handles
+// detectable. Hot per-step solver data is gathered into dense arrays by the solver stage.
+#pragma once
+
+#include "broad_phase.h"
+#include "core.h"
+#include "table.h"
+
+#include "tumble/tumble.h"
+
+#define TB_NULL_INDEX (-1)
+
+// ---------------------------------------------------------------------------------------------
+// Bodies (body.c)
+
+/// A body. Cold fields (user data, name, lists) sit beside the state because the solver copies
+/// what it touches into tbSolverBody arrays each step.
+typedef struct tbBody
+{
+	const char* name;
+	void* userData;
+
+	tbTransform transform; ///< body origin and rotation
+	tbVec2 center;		   ///< world centre of mass
+	tbVec2 center0;		   ///< centre of mass at the start of the step (continuous collision)
+	tbRot rotation0;	   ///< rotation at the start of the step
+	tbVec2 localCenter;	   ///< centre of mass in the body frame
+
+	tbVec2 linearVelocity;
+	float angularVelocity;
+	tbVec2 force;
+	float torque;
+
+	float mass, invMass;
+	float inertia, invInertia; ///< about the centre of mass
+	float minExtent;		   ///< smallest distance from the centre of mass to the surface (continuous collision)
+	float maxExtent;		   ///< largest distance from the centre of mass to any shape point
+
+	float linearDamping;
+	float angularDamping;
+	float gravityScale;
+	float sleepThreshold;
+	float sleepTime;
+
+	int headShapeId; ///< singly linked through tbShape::nextShapeId
+	int shapeCount;
+	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
+	int contactCount;
+
+	int awakeIndex;	 ///< index in world->awakeBodies, or TB_NULL_INDEX when asleep or static
+	int solverIndex; ///< index in the solver's body arrays this step, or TB_NULL_INDEX
+	int islandStamp; ///< step stamp used by the island search
+
+	uint16_t generation;
+	uint8_t type; ///< tbBodyType
+	bool inUse;
+	bool enableSleep;
+	bool fixedRotation;
+	bool isBullet;
+	bool isFast; ///< moved far this step: swept by continuous collision
+	bool isMarked;
+} tbBody;
+
+// ---------------------------------------------------------------------------------------------
+// Shapes (shape.c)
+
+typedef struct tbShape
+{
+	tbGeometry geometry; ///< in the body frame
+	void* userData;
+	tbAABB aabb;	///< tight world box, updated after each step
+	tbAABB fatAABB; ///< the broad-phase box (aabb enlarged by TB_AABB_MARGIN)
+	tbFilter filter;
+	float density;
+	float friction;
+	float restitution;
+	int userMaterialId;
+	int bodyId;
+	int nextShapeId;
+	int proxyKey;
+	uint16_t generation;
+	bool inUse;
+	bool isSensor;
+	bool enableSensorEvents;
+	bool enableContactEvents;
+	bool enableHitEvents;
+} tbShape;
+
+// ---------------------------------------------------------------------------------------------
+// Contacts (contact.c)
+
+/// One end of a contact in a body's contact list.
+typedef struct tbContactEdge
+{
+	int bodyId;
+	int prevKey;
+	int nextKey;
+} tbContactEdge;
+
+enum tbContactFlags
+{
+	tb_contactTouching = 0x01,		///< the manifold has points
+	tb_contactSensor = 0x02,		///< one shape is a sensor: overlap only, no response
+	tb_contactEnableEvents = 0x04,	///< both shapes want begin/end events
+	tb_contactEnableHits = 0x08,	///< either shape wants hit events
+};
+
+/// A pair of shapes whose fat boxes overlap. Exists from the step the boxes start to overlap
+/// until the step they stop.
+typedef struct tbContact
+{
+	tbContactEdge edges[2];
+	int shapeIdA;
+	int shapeIdB;
+	tbManifold manifold;
+	tbSimplexCache cache; ///< GJK warm start for the GJK/EPA narrow phase
+	float friction;
+	float restitution;
+	uint32_t flags;
+	int stamp;			 ///< last step this contact was gathered for update
+	bool inUse;
+} tbContact;
+
+// ---------------------------------------------------------------------------------------------
+// The world (world.c)
+
+typedef struct tbWorld
+{
+	tbWorldDef def; ///< methods and tuning in force (auto resolved where it must be)
+	uint16_t worldId;
+	uint16_t generation;
+	bool inUse;
+	bool locked; ///< true during the step: the API refuses changes
+
+	tbBody* bodies;
+	int bodyCapacity;
+	int bodyCount; ///< live bodies
+	int bodyHighWater;
+	int* bodyFree;
+	int bodyFreeCount, bodyFreeCapacity;
+
+	tbShape* shapes;
+	int shapeCapacity;
+	int shapeCount;
+	int shapeHighWater;
+	int* shapeFree;
+	int shapeFreeCount, shapeFreeCapacity;
+
+	tbContact* contacts;
+	int contactCapacity;
+	int contactCount;
+	int contactHighWater;
+	int* contactFree;
+	int contactFreeCount, contactFreeCapacity;
+
+	tbHashSet pairSet; ///< shape pairs that have a contact
+	tbBroadPhase broadPhase;
+
+	/// Awake non-static bodies, in a deterministic order.
+	int* awakeBodies;
+	int awakeBodyCount, awakeBodyCapacity;
+
+	/// Per-step scratch: contacts gathered for the narrow phase, touching contacts for the solver.
+	int* stepContacts;
+	int stepContactCount, stepContactCapacity;
+	int* solverContacts;
+	int solverContactCount, solverContactCapacity;
+	int* islandStack;
+	int islandStackCapacity;
+	int* islandBodies;
+	int islandBodyCapacity;
+
+	// Events of the last step.
+	tbContactBeginTouchEvent* beginEvents;
+	int beginCount, beginCapacity;
+	tbContactEndTouchEvent* endEvents;
+	int endCount, endCapacity;
+	tbContactHitEvent* hitEvents;
+	int hitCount, hitCapacity;
+	tbSensorBeginTouchEvent* sensorBeginEvents;
+	int sensorBeginCount, sensorBeginCapacity;
+	tbSensorEndTouchEvent* sensorEndEvents;
+	int sensorEndCount, sensorEndCapacity;
+	tbBodyMoveEvent* moveEvents;
+	int moveCount, moveCapacity;
+
+	int stepIndex;
+	tbProfile profile;
+	tbCounters counters;
+	int byteCount;
+	void* userData;
+} tbWorld;
+
+/// The world for an id, or NULL (reports an error naming `function` when the id is stale or null).
+tbWorld* tbGetWorldChecked(tbWorldId id, const char* function);
+/// The world by index (no checks).
+tbWorld* tbGetWorldFromIndex(int index);
+/// The world, body for a body id, or NULL after reporting an error; also refuses a locked world
+/// when `mutating`.
+tbBody* tbGetBodyChecked(tbBodyId id, const char* function, tbWorld** world, bool mutating);
+tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** world, bool mutating);
+
+tbBodyId tbMakeBodyId(const tbWorld* world, int bodyId);
+tbShapeId tbMakeShapeId(const tbWorld* world, int shapeId);
+
+// body.c
+void tbUpdateBodyMass(tbWorld* world, tbBody* body);
+void tbWakeBody(tbWorld* world, tbBody* body);
+void tbSleepBody(tbWorld* world, tbBody* body);
+void tbDestroyBodyContacts(tbWorld* world, tbBody* body, bool wakeBodies);
+
+// shape.c
+tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbTransform transform);
+void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body);
+void tbDestroyShapeProxy(tbWorld* world, tbShape* shape);
+bool tbShouldShapesCollide(tbFilter a, tbFilter b);
+/// Refresh the shape boxes of a body and move broad-phase proxies that left their fat boxes.
+void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);
+
+// contact.c
+void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB);
+void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies);
+/// Narrow phase for one contact: recompute its manifold; returns the touching flag change:
+/// +1 began touching, −1 stopped, 0 no change.
+int tbUpdateContact(tbWorld* world, tbContact* contact);
+
+// Stages of the step, in order (world.c drives them; each lives in the file of its concept).
+void tbUpdatePairsStage(tbWorld* world);		// contact.c: broad-phase pairs → new contacts
+void tbCollideStage(tbWorld* world);			// contact.c: narrow phase, begin/end events
+void tbIslandStage(tbWorld* world);				// island.c: wake touching neighbours, gather solver contacts
+void tbSolveStage(tbWorld* world, float timeStep, int subStepCount); // solver.c: integrate and solve
+void tbFinalizeStage(tbWorld* world, float timeStep);	// body.c: boxes, proxies, sleep timers, move events
+void tbContinuousStage(tbWorld* world);					// continuous.c: time of impact for fast bodies
+void tbSleepStage(tbWorld* world, float timeStep);		// island.c: islands that stayed slow fall asleep
+void tbReportHitEvents(tbWorld* world); // contact.c: after the solve

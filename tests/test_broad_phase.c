@@ -1,0 +1,379 @@
+// Broad phase: the three methods (tree, sort-and-sweep, brute force) must report identical pair
+// sets — same pairs, same order — on a moving scene, across method switches and destroys.
+#include <criterion/criterion.h>
+
+#include "broad_phase.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+// Linear congruential generator, constants from Numerical Recipes (Press et al., §7.1).
+static uint32_t s_seed = 1u;
+
+static float RandomFloat(float lower, float upper)
+{
+	s_seed = 1664525u * s_seed + 1013904223u;
+	return lower + (upper - lower) * (float)(s_seed >> 8) / 16777216.0f;
+}
+
+#define METHOD_COUNT 3
+static const tbBroadPhaseMethod s_methods[METHOD_COUNT] = {tb_broadPhaseTree, tb_broadPhaseSortAndSweep,
+															tb_broadPhaseBruteForce};
+
+#define MAX_BODIES 2000
+
+/// A moving scene as a world drives it: each body has a tight box and a fat box (tight box grown
+/// by TB_AABB_MARGIN); a body whose tight box leaves its fat box gets a new fat box and is moved.
+typedef struct Scene
+{
+	tbBroadPhase bp[METHOD_COUNT];
+	int keys[METHOD_COUNT][MAX_BODIES];
+	tbAABB tight[MAX_BODIES];
+	tbAABB fat[MAX_BODIES];
+	tbVec2 velocity[MAX_BODIES];
+	bool isStatic[MAX_BODIES];
+	bool alive[MAX_BODIES];
+	int count;
+	float halfWidth; ///< bodies drift inside [−halfWidth, halfWidth]²
+} Scene;
+
+static Scene s_scene;
+
+/// Shape index of body i: a permutation (7919 is prime, coprime to 2000) so that pair order by
+/// shape index differs from the order of proxy keys.
+static int ShapeIndex(int i)
+{
+	return (i * 7919) % MAX_BODIES;
+}
+
+static void CreateScene(Scene* scene, int count, float halfWidth, float staticFraction)
+{
+	memset(scene, 0, sizeof(*scene));
+	scene->count = count;
+	scene->halfWidth = halfWidth;
+	for (int m = 0; m < METHOD_COUNT; ++m)
+	{
+		tbBroadPhase_Create(&scene->bp[m], s_methods[m]);
+	}
+	for (int i = 0; i < count; ++i)
+	{
+		// Sizes from 0.2 m to 2 m: a factor of 10.
+		float w = RandomFloat(0.2f, 2.0f), h = RandomFloat(0.2f, 2.0f);
+		float x = RandomFloat(-halfWidth, halfWidth - w), y = RandomFloat(-halfWidth, halfWidth - h);
+		scene->tight[i] = (tbAABB){{x, y}, {x + w, y + h}};
+		scene->fat[i] = tbAABB_Fatten(scene->tight[i], TB_AABB_MARGIN);
+		scene->isStatic[i] = RandomFloat(0.0f, 1.0f) < staticFraction;
+		scene->velocity[i] = scene->isStatic[i] ? tb_vec2_zero : (tbVec2){RandomFloat(-3.0f, 3.0f), RandomFloat(-3.0f, 3.0f)};
+		scene->alive[i] = true;
+		tbProxyType type = scene->isStatic[i] ? tb_proxyStatic : tb_proxyMovable;
+		for (int m = 0; m < METHOD_COUNT; ++m)
+		{
+			scene->keys[m][i] = tbBroadPhase_CreateProxy(&scene->bp[m], scene->fat[i], (uint64_t)1 << (i % 4), ShapeIndex(i), type);
+		}
+	}
+}
+
+static void DestroyScene(Scene* scene)
+{
+	for (int m = 0; m < METHOD_COUNT; ++m)
+	{
+		tbBroadPhase_Destroy(&scene->bp[m]);
+	}
+}
+
+static void MoveBody(Scene* scene, int i, tbAABB fat)
+{
+	scene->fat[i] = fat;
+	for (int m = 0; m < METHOD_COUNT; ++m)
+	{
+		tbBroadPhase_MoveProxy(&scene->bp[m], scene->keys[m][i], fat);
+	}
+}
+
+/// Advance one step of 1/60 s: drift, bounce off the region's walls, re-fatten when needed.
+static void StepScene(Scene* scene)
+{
+	const float dt = 1.0f / 60.0f;
+	float L = scene->halfWidth;
+	for (int i = 0; i < scene->count; ++i)
+	{
+		if (scene->alive[i] == false || scene->isStatic[i])
+		{
+			continue;
+		}
+		tbVec2 d = tbMulSV(dt, scene->velocity[i]);
+		tbAABB b = {tbAdd(scene->tight[i].lowerBound, d), tbAdd(scene->tight[i].upperBound, d)};
+		if (b.lowerBound.x < -L || b.upperBound.x > L)
+		{
+			scene->velocity[i].x = -scene->velocity[i].x;
+		}
+		if (b.lowerBound.y < -L || b.upperBound.y > L)
+		{
+			scene->velocity[i].y = -scene->velocity[i].y;
+		}
+		scene->tight[i] = b;
+		if (tbAABB_Contains(scene->fat[i], b) == false)
+		{
+			MoveBody(scene, i, tbAABB_Fatten(b, TB_AABB_MARGIN));
+		}
+	}
+}
+
+/// Update every method's pairs and require the same pairs in the same order; returns the count.
+static int UpdateAndCompare(Scene* scene, int step)
+{
+	for (int m = 0; m < METHOD_COUNT; ++m)
+	{
+		tbBroadPhase_UpdatePairs(&scene->bp[m]);
+	}
+	const tbBroadPhase* reference = &scene->bp[METHOD_COUNT - 1];
+	for (int m = 0; m < METHOD_COUNT - 1; ++m)
+	{
+		const tbBroadPhase* bp = &scene->bp[m];
+		cr_assert_eq(bp->pairCount, reference->pairCount, "step %d: method %d found %d pairs, brute force %d", step,
+					 (int)s_methods[m], bp->pairCount, reference->pairCount);
+		cr_assert(memcmp(bp->pairs, reference->pairs, (size_t)bp->pairCount * sizeof(tbShapePair)) == 0,
+				  "step %d: method %d pairs differ from brute force", step, (int)s_methods[m]);
+	}
+	for (int k = 1; k < reference->pairCount; ++k)
+	{
+		tbShapePair p = reference->pairs[k - 1], q = reference->pairs[k];
+		cr_assert(p.a < q.a || (p.a == q.a && p.b < q.b), "pairs sorted and unique");
+	}
+	return reference->pairCount;
+}
+
+static void ValidateAll(const Scene* scene)
+{
+	for (int m = 0; m < METHOD_COUNT; ++m)
+	{
+		cr_assert(tbBroadPhase_Validate(&scene->bp[m]), "method %d invalid", (int)s_methods[m]);
+	}
+}
+
+Test(broad_phase, identical_pairs_2000_moving_boxes_200_steps)
+{
+	// Acceptance: 2,000 boxes (sizes 0.2–2 m), 10% static, drifting for 200 steps in a 70 m
+	// square; every method reports the same pair set at every step.
+	int startBytes = tbGetByteCount();
+	s_seed = 2024u;
+	Scene* scene = &s_scene;
+	CreateScene(scene, 2000, 35.0f, 0.1f);
+	int firstCount = UpdateAndCompare(scene, 0);
+	cr_assert_gt(firstCount, 100, "the scene has overlaps (%d)", firstCount);
+	long total = 0;
+	for (int step = 1; step <= 200; ++step)
+	{
+		if (step % 50 == 0)
+		{
+			// A static body is teleported now and then: it pairs with movables only.
+			for (int i = 0; i < scene->count; ++i)
+			{
+				if (scene->isStatic[i])
+				{
+					tbVec2 d = {RandomFloat(-2.0f, 2.0f), RandomFloat(-2.0f, 2.0f)};
+					scene->tight[i] = (tbAABB){tbAdd(scene->tight[i].lowerBound, d), tbAdd(scene->tight[i].upperBound, d)};
+					MoveBody(scene, i, tbAABB_Fatten(scene->tight[i], TB_AABB_MARGIN));
+					break;
+				}
+			}
+		}
+		StepScene(scene);
+		total += UpdateAndCompare(scene, step);
+		if (step % 40 == 0)
+		{
+			ValidateAll(scene);
+		}
+	}
+	cr_assert_gt(total, 0);
+	cr_log_info("pairs reported over 200 steps: %ld; tree height %d", total, tbBroadPhase_GetTreeHeight(&scene->bp[0]));
+	DestroyScene(scene);
+	cr_assert_eq(tbGetByteCount(), startBytes, "bytes left: %d", tbGetByteCount() - startBytes);
+}
+
+Test(broad_phase, static_static_never_reported)
+{
+	for (int m = 0; m < METHOD_COUNT; ++m)
+	{
+		tbBroadPhase bp;
+		tbBroadPhase_Create(&bp, s_methods[m]);
+		// 40 overlapping static boxes: no pairs, even after moving one.
+		int keys[40];
+		for (int i = 0; i < 40; ++i)
+		{
+			keys[i] = tbBroadPhase_CreateProxy(&bp, (tbAABB){{(float)i * 0.5f, 0.0f}, {(float)i * 0.5f + 2.0f, 1.0f}}, 1, i,
+											   tb_proxyStatic);
+		}
+		tbBroadPhase_UpdatePairs(&bp);
+		cr_assert_eq(bp.pairCount, 0, "method %d", (int)s_methods[m]);
+		tbBroadPhase_MoveProxy(&bp, keys[3], (tbAABB){{1.0f, 0.0f}, {3.0f, 1.0f}});
+		tbBroadPhase_UpdatePairs(&bp);
+		cr_assert_eq(bp.pairCount, 0, "method %d", (int)s_methods[m]);
+		// One movable box over statics 0..4 (x in [0, 2.2]) pairs with them only.
+		tbBroadPhase_CreateProxy(&bp, (tbAABB){{-1.0f, 0.5f}, {0.2f, 2.0f}}, 1, 100, tb_proxyMovable);
+		tbBroadPhase_UpdatePairs(&bp);
+		cr_assert_eq(bp.pairCount, 1, "method %d: movable box overlaps static 0 only", (int)s_methods[m]);
+		cr_assert_eq(bp.pairs[0].a, 0);
+		cr_assert_eq(bp.pairs[0].b, 100);
+		tbBroadPhase_Destroy(&bp);
+	}
+}
+
+Test(broad_phase, set_method_mid_run_keeps_pairs_identical)
+{
+	int startBytes = tbGetByteCount();
+	s_seed = 77u;
+	Scene* scene = &s_scene;
+	CreateScene(scene, 1000, 25.0f, 0.2f);
+	UpdateAndCompare(scene, 0);
+	for (int step = 1; step <= 120; ++step)
+	{
+		StepScene(scene);
+		if (step % 30 == 0)
+		{
+			// Rotate the methods of the first two broad phases; re-set the reference so all count
+			// as moved there too.
+			int shift = step / 30;
+			tbBroadPhase_SetMethod(&scene->bp[0], s_methods[shift % 3]);
+			tbBroadPhase_SetMethod(&scene->bp[1], s_methods[(shift + 1) % 3]);
+			tbBroadPhase_SetMethod(&scene->bp[2], tb_broadPhaseBruteForce);
+			ValidateAll(scene);
+		}
+		UpdateAndCompare(scene, step);
+	}
+	ValidateAll(scene);
+	DestroyScene(scene);
+	cr_assert_eq(tbGetByteCount(), startBytes);
+}
+
+static bool PairHasDeadBody(const tbBroadPhase* bp, const Scene* scene)
+{
+	for (int k = 0; k < bp->pairCount; ++k)
+	{
+		for (int i = 0; i < scene->count; ++i)
+		{
+			if (scene->alive[i] == false && (bp->pairs[k].a == ShapeIndex(i) || bp->pairs[k].b == ShapeIndex(i)))
+			{
+				return true;
+			}
+		}
+	}
+	return false;
+}
+
+Test(broad_phase, destroyed_proxies_never_pair)
+{
+	s_seed = 31u;
+	Scene* scene = &s_scene;
+	CreateScene(scene, 600, 15.0f, 0.1f);
+	UpdateAndCompare(scene, 0);
+	for (int step = 1; step <= 60; ++step)
+	{
+		StepScene(scene);
+		if (step % 10 == 0)
+		{
+			// Destroy every 7th live body, including some just moved (still in the move buffer).
+			for (int i = step / 10; i < scene->count; i += 7)
+			{
+				if (scene->alive[i])
+				{
+					scene->alive[i] = false;
+					for (int m = 0; m < METHOD_COUNT; ++m)
+					{
+						tbBroadPhase_DestroyProxy(&scene->bp[m], scene->keys[m][i]);
+					}
+				}
+			}
+			ValidateAll(scene);
+		}
+		UpdateAndCompare(scene, step);
+		for (int m = 0; m < METHOD_COUNT; ++m)
+		{
+			cr_assert_not(PairHasDeadBody(&scene->bp[m], scene), "method %d reports a destroyed proxy",
+						  (int)s_methods[m]);
+		}
+	}
+	DestroyScene(scene);
+}
+
+typedef struct QueryResult
+{
+	int shapes[MAX_BODIES];
+	int count;
+} QueryResult;
+
+static bool CollectShape(int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	QueryResult* r = context;
+	r->shapes[r->count++] = shapeIndex;
+	return true;
+}
+
+static int CompareInts(const void* a, const void* b)
+{
+	int x = *(const int*)a, y = *(const int*)b;
+	return (x > y) - (x < y);
+}
+
+typedef struct ClosestHit
+{
+	const tbBroadPhase* bp;
+	float fraction;
+} ClosestHit;
+
+/// Clip by the hit fraction of the fat box itself (slab test): the closest box wins.
+static float ClosestBoxCallback(const tbRayCastInput* input, int proxyKey, int shapeIndex, void* context)
+{
+	(void)shapeIndex;
+	ClosestHit* hit = context;
+	tbAABB box = tbBroadPhase_GetFatAABB(hit->bp, proxyKey);
+	float t0 = 0.0f, t1 = input->maxFraction;
+	float p[2] = {input->origin.x, input->origin.y}, d[2] = {input->translation.x, input->translation.y};
+	float lo[2] = {box.lowerBound.x, box.lowerBound.y}, hi[2] = {box.upperBound.x, box.upperBound.y};
+	for (int k = 0; k < 2; ++k)
+	{
+		float a = (lo[k] - p[k]) / d[k], b = (hi[k] - p[k]) / d[k];
+		t0 = fmaxf(t0, fminf(a, b));
+		t1 = fminf(t1, fmaxf(a, b));
+	}
+	if (t0 > t1 || t0 <= 0.0f)
+	{
+		return input->maxFraction;
+	}
+	hit->fraction = fminf(hit->fraction, t0);
+	return t0;
+}
+
+Test(broad_phase, queries_and_ray_casts_agree_across_methods)
+{
+	s_seed = 4u;
+	Scene* scene = &s_scene;
+	CreateScene(scene, 800, 20.0f, 0.3f);
+	UpdateAndCompare(scene, 0);
+	static QueryResult results[METHOD_COUNT];
+	for (int q = 0; q < 50; ++q)
+	{
+		float x = RandomFloat(-20.0f, 20.0f), y = RandomFloat(-20.0f, 20.0f);
+		tbAABB box = {{x, y}, {x + RandomFloat(0.5f, 6.0f), y + RandomFloat(0.5f, 6.0f)}};
+		tbRayCastInput ray = {{x, y}, {RandomFloat(-30.0f, 30.0f), RandomFloat(-30.0f, 30.0f)}, 1.0f};
+		float fractions[METHOD_COUNT];
+		for (int m = 0; m < METHOD_COUNT; ++m)
+		{
+			results[m].count = 0;
+			tbBroadPhase_Query(&scene->bp[m], box, 0x5, CollectShape, &results[m]);
+			qsort(results[m].shapes, (size_t)results[m].count, sizeof(int), CompareInts);
+			ClosestHit hit = {&scene->bp[m], 2.0f};
+			tbBroadPhase_RayCast(&scene->bp[m], &ray, 0x3, ClosestBoxCallback, &hit);
+			fractions[m] = hit.fraction;
+		}
+		for (int m = 0; m < METHOD_COUNT - 1; ++m)
+		{
+			cr_assert_eq(results[m].count, results[2].count);
+			cr_assert(memcmp(results[m].shapes, results[2].shapes, (size_t)results[m].count * sizeof(int)) == 0);
+			cr_assert_float_eq(fractions[m], fractions[2], 1e-6f, "ray %d method %d", q, (int)s_methods[m]);
+		}
+	}
+	DestroyScene(scene);
+}

@@ -1,0 +1,402 @@
+// Dynamic AABB tree: structure (Validate) under random edits, balance (height bounds), queries and
+// ray casts against brute-force scans, the binned SAH rebuild, mask pruning and memory.
+#include <criterion/criterion.h>
+
+#include "tumble/collision.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+// Linear congruential generator, constants from Numerical Recipes (Press et al., §7.1):
+// x ← 1664525·x + 1013904223 mod 2^32.
+static uint32_t s_seed = 12345u;
+
+static float RandomFloat(float lower, float upper)
+{
+	s_seed = 1664525u * s_seed + 1013904223u;
+	return lower + (upper - lower) * (float)(s_seed >> 8) / 16777216.0f;
+}
+
+static tbAABB RandomBox(float range, float minSize, float maxSize)
+{
+	float x = RandomFloat(-range, range), y = RandomFloat(-range, range);
+	float w = RandomFloat(minSize, maxSize), h = RandomFloat(minSize, maxSize);
+	return (tbAABB){{x, y}, {x + w, y + h}};
+}
+
+#define MAX_PROXIES 2048
+
+typedef struct Collector
+{
+	int ids[MAX_PROXIES];
+	int count;
+} Collector;
+
+static bool CollectCallback(int proxyId, int userData, void* context)
+{
+	(void)userData;
+	Collector* c = context;
+	c->ids[c->count++] = proxyId;
+	return true;
+}
+
+static int CompareInts(const void* a, const void* b)
+{
+	int x = *(const int*)a, y = *(const int*)b;
+	return (x > y) - (x < y);
+}
+
+/// Tree query results (sorted) must equal a scan over all proxies.
+static void CheckQuery(const tbDynamicTree* tree, const int* ids, const tbAABB* boxes, const uint64_t* bits, int count,
+					   tbAABB query, uint64_t mask)
+{
+	static Collector fromTree, fromScan;
+	fromTree.count = 0;
+	fromScan.count = 0;
+	tbDynamicTree_Query(tree, query, mask, CollectCallback, &fromTree);
+	for (int i = 0; i < count; ++i)
+	{
+		if (ids[i] >= 0 && (bits[i] & mask) != 0 && tbAABB_Overlaps(boxes[i], query))
+		{
+			fromScan.ids[fromScan.count++] = ids[i];
+		}
+	}
+	qsort(fromTree.ids, (size_t)fromTree.count, sizeof(int), CompareInts);
+	qsort(fromScan.ids, (size_t)fromScan.count, sizeof(int), CompareInts);
+	cr_assert_eq(fromTree.count, fromScan.count, "query found %d proxies, scan %d", fromTree.count, fromScan.count);
+	cr_assert(memcmp(fromTree.ids, fromScan.ids, (size_t)fromTree.count * sizeof(int)) == 0);
+}
+
+Test(dynamic_tree, validate_after_random_insert_move_remove)
+{
+	s_seed = 1u;
+	tbDynamicTree tree = tbDynamicTree_Create();
+	static int ids[MAX_PROXIES];
+	int count = 0;
+	for (int i = 0; i < 300; ++i)
+	{
+		ids[count++] = tbDynamicTree_CreateProxy(&tree, RandomBox(50.0f, 0.5f, 5.0f), 1, i);
+	}
+	cr_assert(tbDynamicTree_Validate(&tree));
+	for (int step = 0; step < 3000; ++step)
+	{
+		int i = (int)RandomFloat(0.0f, (float)count);
+		float op = RandomFloat(0.0f, 1.0f);
+		if (op < 0.5f && ids[i] >= 0)
+		{
+			tbDynamicTree_MoveProxy(&tree, ids[i], RandomBox(50.0f, 0.5f, 5.0f));
+		}
+		else if (op < 0.75f && ids[i] >= 0)
+		{
+			tbDynamicTree_DestroyProxy(&tree, ids[i]);
+			ids[i] = -1;
+		}
+		else if (op < 0.9f && ids[i] >= 0)
+		{
+			tbAABB box = tbDynamicTree_GetAABB(&tree, ids[i]);
+			tbDynamicTree_EnlargeProxy(&tree, ids[i], tbAABB_Fatten(box, 1.0f));
+		}
+		else if (ids[i] < 0)
+		{
+			ids[i] = tbDynamicTree_CreateProxy(&tree, RandomBox(50.0f, 0.5f, 5.0f), 1, i);
+		}
+		cr_assert(tbDynamicTree_Validate(&tree), "invalid after step %d", step);
+	}
+	tbDynamicTree_Destroy(&tree);
+}
+
+Test(dynamic_tree, height_of_row_and_grid)
+{
+	// Acceptance: height < 2·log2(n) after inserting a row of 200 unit boxes (15.3) and a 20×20
+	// grid (17.3), and < 3·log2(n) after moving every proxy of the grid (25.9). An AVL-balanced
+	// tree stays below 1.44·log2(n + 2) (Knuth, TAOCP vol. 3, §6.2.3).
+	tbDynamicTree row = tbDynamicTree_Create();
+	for (int i = 0; i < 200; ++i)
+	{
+		tbAABB box = {{(float)i, 0.0f}, {(float)i + 1.0f, 1.0f}};
+		tbDynamicTree_CreateProxy(&row, box, 1, i);
+	}
+	cr_assert(tbDynamicTree_Validate(&row));
+	int rowHeight = tbDynamicTree_GetHeight(&row);
+	cr_assert_lt((float)rowHeight, 2.0f * log2f(200.0f), "row height %d", rowHeight);
+	tbDynamicTree_Destroy(&row);
+
+	tbDynamicTree grid = tbDynamicTree_Create();
+	int ids[400];
+	for (int i = 0; i < 20; ++i)
+	{
+		for (int j = 0; j < 20; ++j)
+		{
+			tbAABB box = {{(float)i, (float)j}, {(float)i + 1.0f, (float)j + 1.0f}};
+			ids[20 * i + j] = tbDynamicTree_CreateProxy(&grid, box, 1, 20 * i + j);
+		}
+	}
+	cr_assert(tbDynamicTree_Validate(&grid));
+	int gridHeight = tbDynamicTree_GetHeight(&grid);
+	cr_assert_lt((float)gridHeight, 2.0f * log2f(400.0f), "grid height %d", gridHeight);
+
+	for (int k = 0; k < 400; ++k)
+	{
+		tbAABB box = tbDynamicTree_GetAABB(&grid, ids[k]);
+		tbVec2 shift = {0.3f, -0.2f};
+		tbDynamicTree_MoveProxy(&grid, ids[k], (tbAABB){tbAdd(box.lowerBound, shift), tbAdd(box.upperBound, shift)});
+	}
+	cr_assert(tbDynamicTree_Validate(&grid));
+	int movedHeight = tbDynamicTree_GetHeight(&grid);
+	cr_assert_lt((float)movedHeight, 3.0f * log2f(400.0f), "moved grid height %d", movedHeight);
+	cr_log_info("heights: row %d, grid %d, moved grid %d; area ratio %g", rowHeight, gridHeight, movedHeight,
+				(double)tbDynamicTree_GetAreaRatio(&grid));
+	tbDynamicTree_Destroy(&grid);
+}
+
+Test(dynamic_tree, query_matches_brute_force)
+{
+	s_seed = 7u;
+	tbDynamicTree tree = tbDynamicTree_Create();
+	static int ids[1000];
+	static tbAABB boxes[1000];
+	static uint64_t bits[1000];
+	for (int i = 0; i < 1000; ++i)
+	{
+		boxes[i] = RandomBox(100.0f, 0.2f, 8.0f);
+		bits[i] = 1;
+		ids[i] = tbDynamicTree_CreateProxy(&tree, boxes[i], 1, i);
+	}
+	for (int q = 0; q < 200; ++q)
+	{
+		CheckQuery(&tree, ids, boxes, bits, 1000, RandomBox(100.0f, 0.1f, 30.0f), 1);
+	}
+	tbDynamicTree_Destroy(&tree);
+}
+
+/// Exact ray–box hit fraction by slabs (Kay & Kajiya 1986), or −1 when missed.
+static float RayBoxFraction(const tbRayCastInput* input, tbAABB box)
+{
+	float t0 = 0.0f, t1 = input->maxFraction;
+	float p[2] = {input->origin.x, input->origin.y};
+	float d[2] = {input->translation.x, input->translation.y};
+	float lo[2] = {box.lowerBound.x, box.lowerBound.y};
+	float hi[2] = {box.upperBound.x, box.upperBound.y};
+	for (int k = 0; k < 2; ++k)
+	{
+		if (d[k] == 0.0f)
+		{
+			if (p[k] < lo[k] || p[k] > hi[k])
+			{
+				return -1.0f;
+			}
+			continue;
+		}
+		float a = (lo[k] - p[k]) / d[k], b = (hi[k] - p[k]) / d[k];
+		t0 = fmaxf(t0, fminf(a, b));
+		t1 = fminf(t1, fmaxf(a, b));
+		if (t0 > t1)
+		{
+			return -1.0f;
+		}
+	}
+	return t0;
+}
+
+typedef struct RayContext
+{
+	const tbDynamicTree* tree;
+	float closest;
+	int closestId;
+	int calls;
+} RayContext;
+
+static float ClosestRayCallback(const tbRayCastInput* input, int proxyId, int userData, void* context)
+{
+	(void)userData;
+	RayContext* c = context;
+	c->calls += 1;
+	float t = RayBoxFraction(input, tbDynamicTree_GetAABB(c->tree, proxyId));
+	if (t <= 0.0f)
+	{
+		return input->maxFraction; // missed (or starts inside): leave the ray as it is
+	}
+	if (t < c->closest)
+	{
+		c->closest = t;
+		c->closestId = proxyId;
+	}
+	return t; // clip: nothing farther can be the closest
+}
+
+Test(dynamic_tree, ray_cast_closest_matches_brute_force)
+{
+	s_seed = 99u;
+	tbDynamicTree tree = tbDynamicTree_Create();
+	static tbAABB boxes[800];
+	static int ids[800];
+	for (int i = 0; i < 800; ++i)
+	{
+		boxes[i] = RandomBox(100.0f, 0.5f, 6.0f);
+		ids[i] = tbDynamicTree_CreateProxy(&tree, boxes[i], 1, i);
+	}
+	for (int r = 0; r < 200; ++r)
+	{
+		tbVec2 origin = {RandomFloat(-120.0f, 120.0f), RandomFloat(-120.0f, 120.0f)};
+		tbVec2 target = {RandomFloat(-120.0f, 120.0f), RandomFloat(-120.0f, 120.0f)};
+		tbRayCastInput input = {origin, tbSub(target, origin), 1.0f};
+		RayContext c = {&tree, 2.0f, -1, 0};
+		tbDynamicTree_RayCast(&tree, &input, 1, ClosestRayCallback, &c);
+
+		float best = 2.0f;
+		for (int i = 0; i < 800; ++i)
+		{
+			float t = RayBoxFraction(&input, boxes[i]);
+			if (t > 0.0f && t < best)
+			{
+				best = t;
+			}
+		}
+		if (best <= 1.0f)
+		{
+			cr_assert_float_eq(c.closest, best, 1e-6f, "ray %d: tree %g, scan %g", r, (double)c.closest, (double)best);
+		}
+		else
+		{
+			cr_assert(c.closest > 1.0f, "ray %d: tree hit %g but scan none", r, (double)c.closest);
+		}
+	}
+	(void)ids;
+	tbDynamicTree_Destroy(&tree);
+}
+
+static float StopRayCallback(const tbRayCastInput* input, int proxyId, int userData, void* context)
+{
+	(void)input;
+	(void)proxyId;
+	(void)userData;
+	*(int*)context += 1;
+	return 0.0f;
+}
+
+Test(dynamic_tree, ray_cast_zero_stops)
+{
+	tbDynamicTree tree = tbDynamicTree_Create();
+	for (int i = 0; i < 10; ++i)
+	{
+		tbDynamicTree_CreateProxy(&tree, (tbAABB){{(float)i * 2.0f, -1.0f}, {(float)i * 2.0f + 1.0f, 1.0f}}, 1, i);
+	}
+	tbRayCastInput input = {{-5.0f, 0.0f}, {30.0f, 0.0f}, 1.0f};
+	int calls = 0;
+	tbDynamicTree_RayCast(&tree, &input, 1, StopRayCallback, &calls);
+	cr_assert_eq(calls, 1);
+	tbDynamicTree_Destroy(&tree);
+}
+
+Test(dynamic_tree, rebuild_is_valid_and_queries_match)
+{
+	s_seed = 2024u;
+	tbDynamicTree tree = tbDynamicTree_Create();
+	static int ids[1000];
+	static tbAABB boxes[1000];
+	static uint64_t bits[1000];
+	for (int i = 0; i < 1000; ++i)
+	{
+		boxes[i] = RandomBox(200.0f, 0.3f, 3.0f);
+		bits[i] = (uint64_t)1 << (i % 3);
+		ids[i] = tbDynamicTree_CreateProxy(&tree, boxes[i], bits[i], i);
+	}
+	// Remove a few so the node array has holes.
+	for (int i = 0; i < 1000; i += 7)
+	{
+		tbDynamicTree_DestroyProxy(&tree, ids[i]);
+		ids[i] = -1;
+	}
+	int leaves = tbDynamicTree_Rebuild(&tree);
+	cr_assert_eq(leaves, tree.proxyCount);
+	cr_assert(tbDynamicTree_Validate(&tree));
+	for (int i = 0; i < 1000; ++i)
+	{
+		if (ids[i] >= 0)
+		{
+			cr_assert_eq(tbDynamicTree_GetUserData(&tree, ids[i]), i);
+			cr_assert_eq(tbDynamicTree_GetCategoryBits(&tree, ids[i]), bits[i]);
+		}
+	}
+	for (int q = 0; q < 200; ++q)
+	{
+		CheckQuery(&tree, ids, boxes, bits, 1000, RandomBox(200.0f, 1.0f, 40.0f), 7);
+	}
+	cr_log_info("rebuilt height %d, area ratio %g", tbDynamicTree_GetHeight(&tree),
+				(double)tbDynamicTree_GetAreaRatio(&tree));
+	// Edits after a rebuild keep the tree valid.
+	for (int i = 1; i < 1000; i += 5)
+	{
+		if (ids[i] >= 0)
+		{
+			boxes[i] = RandomBox(200.0f, 0.3f, 3.0f);
+			tbDynamicTree_MoveProxy(&tree, ids[i], boxes[i]);
+		}
+	}
+	cr_assert(tbDynamicTree_Validate(&tree));
+	CheckQuery(&tree, ids, boxes, bits, 1000, RandomBox(200.0f, 50.0f, 100.0f), 7);
+	tbDynamicTree_Destroy(&tree);
+}
+
+static int s_visited;
+
+static bool CountingCallback(int proxyId, int userData, void* context)
+{
+	(void)proxyId;
+	(void)userData;
+	(void)context;
+	s_visited += 1;
+	return true;
+}
+
+Test(dynamic_tree, mask_bits_prune)
+{
+	s_seed = 5u;
+	tbDynamicTree tree = tbDynamicTree_Create();
+	static int ids[600];
+	static tbAABB boxes[600];
+	static uint64_t bits[600];
+	for (int i = 0; i < 600; ++i)
+	{
+		boxes[i] = RandomBox(50.0f, 0.5f, 4.0f);
+		bits[i] = i < 300 ? 0x1 : 0x2; // two categories
+		ids[i] = tbDynamicTree_CreateProxy(&tree, boxes[i], bits[i], i);
+	}
+	tbAABB everything = {{-100.0f, -100.0f}, {100.0f, 100.0f}};
+	CheckQuery(&tree, ids, boxes, bits, 600, everything, 0x2);
+	CheckQuery(&tree, ids, boxes, bits, 600, everything, 0x1);
+	s_visited = 0;
+	tbDynamicTree_Query(&tree, everything, 0x4, CountingCallback, NULL);
+	cr_assert_eq(s_visited, 0, "no proxy has category 0x4");
+	cr_assert_eq(tbDynamicTree_GetCategoryBits(&tree, ids[0]), 0x1);
+	tbDynamicTree_Destroy(&tree);
+}
+
+static void CountNode(tbAABB aabb, int depth, bool isLeaf, void* context)
+{
+	(void)aabb;
+	(void)depth;
+	int* counts = context;
+	counts[isLeaf ? 1 : 0] += 1;
+}
+
+Test(dynamic_tree, visit_nodes_and_no_bytes_left)
+{
+	int startBytes = tbGetByteCount();
+	s_seed = 11u;
+	tbDynamicTree tree = tbDynamicTree_Create();
+	for (int i = 0; i < 500; ++i)
+	{
+		tbDynamicTree_CreateProxy(&tree, RandomBox(40.0f, 0.5f, 2.0f), 1, i);
+	}
+	tbDynamicTree_Rebuild(&tree);
+	int counts[2] = {0, 0};
+	tbDynamicTree_VisitNodes(&tree, CountNode, counts);
+	// A full binary tree with n leaves has n − 1 internal nodes.
+	cr_assert_eq(counts[1], 500);
+	cr_assert_eq(counts[0], 499);
+	cr_assert_gt(tbGetByteCount(), startBytes);
+	tbDynamicTree_Destroy(&tree);
+	cr_assert_eq(tbGetByteCount(), startBytes, "bytes left after destroy: %d", tbGetByteCount() - startBytes);
+}

@@ -1,0 +1,223 @@
+// Tests of the inline value math in tumble/math_functions.h: vector and rotation identities,
+// transforms, rotation integration, the 2×2 solve and bounding-box operations.
+//
+// Tolerances: a float has a unit roundoff of u = 2⁻²⁴ ≈ 6e-8. A rotation or transform of a
+// vector of length ~1 costs a few roundings per component, so a round trip through two of them
+// is exact to ~10u ≈ 6e-7; tests allow 1e-6 (times the magnitude of the numbers involved).
+
+#include "tumble/math_functions.h"
+
+#include <criterion/criterion.h>
+#include <math.h>
+
+// Round-trip tolerance for numbers of magnitude ~1 (see the header comment).
+#define ROUND_TRIP_TOL 1e-6f
+
+static void expectVec2Near(tbVec2 a, tbVec2 b, float tolerance)
+{
+	cr_expect(fabsf(a.x - b.x) <= tolerance && fabsf(a.y - b.y) <= tolerance,
+			  "(%.9g, %.9g) differs from (%.9g, %.9g) by more than %g", (double)a.x, (double)a.y, (double)b.x,
+			  (double)b.y, (double)tolerance);
+}
+
+static const tbVec2 s_vectors[] = {{1.0f, 0.0f}, {0.0f, 1.0f}, {0.3f, -0.7f}, {-2.5f, 1.25f}, {0.0f, 0.0f}};
+static const float s_angles[] = {0.0f, 0.5f, -1.2f, 2.9f, -3.1f, 1.5707963f};
+
+#define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
+Test(math, rotate_and_inverse_rotate_are_inverses)
+{
+	for (int i = 0; i < COUNT(s_angles); ++i)
+	{
+		tbRot q = tbMakeRot(s_angles[i]);
+		for (int j = 0; j < COUNT(s_vectors); ++j)
+		{
+			tbVec2 v = s_vectors[j];
+			float scale = fmaxf(1.0f, tbLength(v));
+			expectVec2Near(tbInvRotateVector(q, tbRotateVector(q, v)), v, ROUND_TRIP_TOL * scale);
+			expectVec2Near(tbRotateVector(q, tbInvRotateVector(q, v)), v, ROUND_TRIP_TOL * scale);
+			// A rotation preserves length: |Rv| = |v| to float rounding.
+			cr_expect_float_eq(tbLength(tbRotateVector(q, v)), tbLength(v), ROUND_TRIP_TOL * scale);
+		}
+	}
+}
+
+Test(math, rotation_composition_adds_angles)
+{
+	for (int i = 0; i < COUNT(s_angles); ++i)
+	{
+		for (int j = 0; j < COUNT(s_angles); ++j)
+		{
+			tbRot q = tbMakeRot(s_angles[i]);
+			tbRot r = tbMakeRot(s_angles[j]);
+			// q·r is the rotation by a + b; qᵀ·r by b − a. Compare as rotations (angles wrap).
+			tbRot sum = tbMakeRot(s_angles[i] + s_angles[j]);
+			tbRot difference = tbMakeRot(s_angles[j] - s_angles[i]);
+			tbRot qr = tbMulRot(q, r);
+			tbRot qTr = tbInvMulRot(q, r);
+			expectVec2Near(tbMakeVec2(qr.c, qr.s), tbMakeVec2(sum.c, sum.s), ROUND_TRIP_TOL);
+			expectVec2Near(tbMakeVec2(qTr.c, qTr.s), tbMakeVec2(difference.c, difference.s), ROUND_TRIP_TOL);
+			// tbRelativeAngle(q, r) is the angle of qᵀ·r.
+			cr_expect_float_eq(tbRelativeAngle(q, r), tbRot_GetAngle(difference), 2.0f * ROUND_TRIP_TOL);
+		}
+	}
+}
+
+Test(math, transform_point_round_trip)
+{
+	tbTransform t = {{3.0f, -1.5f}, tbMakeRot(0.7f)};
+	for (int j = 0; j < COUNT(s_vectors); ++j)
+	{
+		tbVec2 p = s_vectors[j];
+		// Magnitudes reach |t.p| + |p| ≈ 6, so scale the tolerance by 6.
+		expectVec2Near(tbInvTransformPoint(t, tbTransformPoint(t, p)), p, 6.0f * ROUND_TRIP_TOL);
+		expectVec2Near(tbTransformPoint(t, tbInvTransformPoint(t, p)), p, 6.0f * ROUND_TRIP_TOL);
+	}
+	// Hand-computed: rotating (1, 0) by 90° gives (0, 1), then translating by (3, −1.5).
+	tbTransform quarter = {{3.0f, -1.5f}, {0.0f, 1.0f}};
+	expectVec2Near(tbTransformPoint(quarter, tbMakeVec2(1.0f, 0.0f)), tbMakeVec2(3.0f, -0.5f), 0.0f);
+}
+
+Test(math, transform_composition)
+{
+	tbTransform A = {{1.0f, 2.0f}, tbMakeRot(0.4f)};
+	tbTransform B = {{-0.5f, 0.25f}, tbMakeRot(-1.1f)};
+	tbTransform AB = tbMulTransforms(A, B);
+	tbTransform AinvB = tbInvMulTransforms(A, B);
+	for (int j = 0; j < COUNT(s_vectors); ++j)
+	{
+		tbVec2 p = s_vectors[j];
+		// (A·B)(p) = A(B(p)) and (A⁻¹·B)(p) = A⁻¹(B(p)); magnitudes ≲ 6.
+		expectVec2Near(tbTransformPoint(AB, p), tbTransformPoint(A, tbTransformPoint(B, p)), 6.0f * ROUND_TRIP_TOL);
+		expectVec2Near(tbTransformPoint(AinvB, p), tbInvTransformPoint(A, tbTransformPoint(B, p)),
+					   6.0f * ROUND_TRIP_TOL);
+	}
+	// A · (A⁻¹ · B) = B
+	tbTransform back = tbMulTransforms(A, AinvB);
+	expectVec2Near(back.p, B.p, 6.0f * ROUND_TRIP_TOL);
+	expectVec2Near(tbMakeVec2(back.q.c, back.q.s), tbMakeVec2(B.q.c, B.q.s), ROUND_TRIP_TOL);
+}
+
+Test(math, integrate_rotation_is_third_order)
+{
+	// q2 = normalize(q1 + Δθ·perp(q1)) turns by exactly atan(Δθ) = Δθ − Δθ³/3 + O(Δθ⁵),
+	// so the angle error is Δθ − atan(Δθ) ≈ Δθ³/3. Checked against the double-precision value
+	// to 2e-6 (atan2f near 1 rad and the normalisation each round to ~1e-7), and the error
+	// must shrink by ~8 when Δθ halves.
+	const float theta = 0.8f;
+	tbRot q1 = tbMakeRot(theta);
+	float previousError = 0.0f;
+	for (int k = 0; k < 4; ++k)
+	{
+		float dTheta = 0.2f / (float)(1 << k);
+		tbRot q2 = tbIntegrateRotation(q1, dTheta);
+		float error = (theta + dTheta) - tbRot_GetAngle(q2);
+		double expected = (double)dTheta - atan((double)dTheta);
+		cr_expect(fabs((double)error - expected) < 2e-6, "dθ=%g error %g expected %g", (double)dTheta, (double)error,
+				  expected);
+		cr_expect(error <= dTheta * dTheta * dTheta / 3.0f + 2e-6f);
+		cr_expect(tbIsNormalized(tbMakeVec2(q2.c, q2.s)));
+		if (k > 0 && k < 3)
+		{
+			float ratio = previousError / error;
+			cr_expect(ratio > 7.0f && ratio < 9.0f, "error ratio %g, expected ~8 for third order", (double)ratio);
+		}
+		previousError = error;
+	}
+}
+
+Test(math, normalize_is_never_nan)
+{
+	tbVec2 zero = tbNormalize(tb_vec2_zero);
+	cr_expect(zero.x == 0.0f && zero.y == 0.0f);
+	tbVec2 tiny = tbNormalize(tbMakeVec2(1e-30f, -1e-30f));
+	cr_expect(tiny.x == 0.0f && tiny.y == 0.0f);
+	float length = -1.0f;
+	tbVec2 n = tbGetLengthAndNormalize(&length, tb_vec2_zero);
+	cr_expect(n.x == 0.0f && n.y == 0.0f && length == 0.0f);
+	// 3-4-5 triangle: exact up to one rounding of 0.6 and 0.8.
+	n = tbGetLengthAndNormalize(&length, tbMakeVec2(3.0f, -4.0f));
+	cr_expect_float_eq(length, 5.0f, 1e-6f);
+	expectVec2Near(n, tbMakeVec2(0.6f, -0.8f), 1e-7f);
+	tbRot q = tbNormalizeRot((tbRot){0.0f, 0.0f});
+	cr_expect(q.c == 0.0f && q.s == 0.0f);
+}
+
+Test(math, cross_product_identities)
+{
+	for (int i = 0; i < COUNT(s_vectors); ++i)
+	{
+		for (int j = 0; j < COUNT(s_vectors); ++j)
+		{
+			tbVec2 a = s_vectors[i], b = s_vectors[j];
+			// Anti-symmetry, a × a = 0, a × b = leftPerp(a)·b, and Lagrange's identity
+			// (a × b)² + (a·b)² = |a|²|b|² (magnitudes ≤ 7.8, rounding ≲ 1e-5).
+			cr_expect(tbCross(a, b) == -tbCross(b, a));
+			cr_expect(tbCross(a, a) == 0.0f);
+			cr_expect_float_eq(tbCross(a, b), tbDot(tbLeftPerp(a), b), 1e-6f);
+			float lhs = tbCross(a, b) * tbCross(a, b) + tbDot(a, b) * tbDot(a, b);
+			cr_expect_float_eq(lhs, tbLengthSquared(a) * tbLengthSquared(b), 1e-5f);
+		}
+		// s × v is perpendicular to v and equals −(v × s); (s × v) × ... hand value for s = 2.
+		tbVec2 v = s_vectors[i];
+		tbVec2 sv = tbCrossSV(2.0f, v);
+		tbVec2 vs = tbCrossVS(v, 2.0f);
+		cr_expect(tbDot(sv, v) == 0.0f);
+		expectVec2Near(sv, tbNeg(vs), 0.0f);
+		expectVec2Near(sv, tbMakeVec2(-2.0f * v.y, 2.0f * v.x), 0.0f);
+		expectVec2Near(tbRightPerp(v), tbNeg(tbLeftPerp(v)), 0.0f);
+	}
+}
+
+Test(math, solve22)
+{
+	// A = [3 1; 2 4] (columns (3, 2) and (1, 4)), x = (1, −2) ⇒ b = A·x = (1, −6).
+	tbMat22 A = {{3.0f, 2.0f}, {1.0f, 4.0f}};
+	tbVec2 x = {1.0f, -2.0f};
+	tbVec2 b = tbMulMV(A, x);
+	expectVec2Near(b, tbMakeVec2(1.0f, -6.0f), 0.0f);
+	// det = 10; Cramer's rule is exact up to a few roundings of numbers ~1.
+	expectVec2Near(tbSolve22(A, b), x, 1e-6f);
+	tbMat22 inverse = tbGetInverse22(A);
+	expectVec2Near(tbMulMV(inverse, b), x, 1e-6f);
+	// Singular matrix: zero, not NaN or infinity.
+	tbMat22 singular = {{1.0f, 2.0f}, {2.0f, 4.0f}};
+	tbVec2 zero = tbSolve22(singular, b);
+	cr_expect(zero.x == 0.0f && zero.y == 0.0f);
+}
+
+Test(math, aabb_overlap_and_contains)
+{
+	tbAABB a = {{0.0f, 0.0f}, {2.0f, 1.0f}};
+	tbAABB touching = {{2.0f, 0.5f}, {3.0f, 2.0f}};
+	tbAABB apartX = {{2.1f, 0.0f}, {3.0f, 1.0f}};
+	tbAABB apartY = {{0.0f, -2.0f}, {1.0f, -0.1f}};
+	tbAABB inner = {{0.5f, 0.25f}, {1.5f, 0.75f}};
+	cr_expect(tbAABB_Overlaps(a, touching) && tbAABB_Overlaps(touching, a));
+	cr_expect(tbAABB_Overlaps(a, apartX) == false && tbAABB_Overlaps(apartX, a) == false);
+	cr_expect(tbAABB_Overlaps(a, apartY) == false);
+	cr_expect(tbAABB_Overlaps(a, inner));
+	cr_expect(tbAABB_Contains(a, inner) && tbAABB_Contains(inner, a) == false);
+	cr_expect(tbAABB_Contains(a, a), "touching boundaries count as inside");
+	cr_expect(tbAABB_Contains(a, touching) == false);
+}
+
+Test(math, aabb_union_perimeter_and_fatten)
+{
+	tbAABB a = {{0.0f, 0.0f}, {2.0f, 1.0f}};
+	tbAABB b = {{-1.0f, 0.5f}, {1.0f, 3.0f}};
+	tbAABB u = tbAABB_Union(a, b);
+	expectVec2Near(u.lowerBound, tbMakeVec2(-1.0f, 0.0f), 0.0f);
+	expectVec2Near(u.upperBound, tbMakeVec2(2.0f, 3.0f), 0.0f);
+	cr_expect(tbAABB_Contains(u, a) && tbAABB_Contains(u, b));
+	// Perimeter 2(w + h): a is 2 × 1 → 6, the union is 3 × 3 → 12 (exact in float).
+	cr_expect(tbAABB_Perimeter(a) == 6.0f);
+	cr_expect(tbAABB_Perimeter(u) == 12.0f);
+	expectVec2Near(tbAABB_Center(a), tbMakeVec2(1.0f, 0.5f), 0.0f);
+	expectVec2Near(tbAABB_Extents(a), tbMakeVec2(1.0f, 0.5f), 0.0f);
+	tbAABB fat = tbAABB_Fatten(a, 0.25f);
+	cr_expect(tbAABB_Perimeter(fat) == 8.0f);
+	cr_expect(tbIsValidAABB(fat));
+	tbAABB inverted = {{1.0f, 0.0f}, {0.0f, 1.0f}};
+	cr_expect(tbIsValidAABB(inverted) == false);
+}

@@ -1,0 +1,485 @@
+// World, bodies and shapes: the step's integrator against closed forms, bad input rejected with
+// the world unchanged, stale handles refused, no bytes left after tbDestroyWorld.
+#include <criterion/criterion.h>
+
+#include "tumble/tumble.h"
+
+#include <math.h>
+#include <string.h>
+
+// --- error recording --------------------------------------------------------------------------
+
+static char s_lastError[512];
+static int s_errors;
+
+static void RecordError(const char* message, void* context)
+{
+	(void)context;
+	strncpy(s_lastError, message, sizeof(s_lastError) - 1);
+	s_errors += 1;
+}
+
+static void SetupErrors(void)
+{
+	s_lastError[0] = 0;
+	s_errors = 0;
+	tbSetErrorCallback(RecordError, NULL);
+}
+
+static void TeardownErrors(void)
+{
+	tbSetErrorCallback(NULL, NULL);
+}
+
+/// Expect exactly one new error whose message contains both fragments.
+static void ExpectError(int before, const char* function, const char* argument)
+{
+	cr_assert_eq(s_errors, before + 1, "expected one error from %s, got %d", function, s_errors - before);
+	cr_assert(strstr(s_lastError, function) != NULL, "message '%s' should name %s", s_lastError, function);
+	cr_assert(strstr(s_lastError, argument) != NULL, "message '%s' should name %s", s_lastError, argument);
+}
+
+// --- a small world ----------------------------------------------------------------------------
+
+typedef struct Snapshot
+{
+	tbCounters counters;
+	tbVec2 position;
+	tbVec2 velocity;
+	int shapeCount;
+} Snapshot;
+
+static Snapshot TakeSnapshot(tbWorldId world, tbBodyId body)
+{
+	Snapshot s;
+	memset(&s, 0, sizeof(s));
+	s.counters = tbWorld_GetCounters(world);
+	s.position = tbBody_GetPosition(body);
+	s.velocity = tbBody_GetLinearVelocity(body);
+	s.shapeCount = tbBody_GetShapeCount(body);
+	return s;
+}
+
+static void ExpectUnchanged(Snapshot a, Snapshot b)
+{
+	cr_assert_eq(a.counters.bodyCount, b.counters.bodyCount);
+	cr_assert_eq(a.counters.shapeCount, b.counters.shapeCount);
+	cr_assert_eq(a.counters.contactCount, b.counters.contactCount);
+	cr_assert_eq(a.shapeCount, b.shapeCount);
+	cr_assert(a.position.x == b.position.x && a.position.y == b.position.y);
+	cr_assert(a.velocity.x == b.velocity.x && a.velocity.y == b.velocity.y);
+}
+
+static tbBodyId MakeBall(tbWorldId world, tbVec2 position, tbVec2 velocity)
+{
+	tbBodyDef def = tbDefaultBodyDef();
+	def.type = tb_dynamicBody;
+	def.position = position;
+	def.linearVelocity = velocity;
+	tbBodyId body = tbCreateBody(world, &def);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	tbCreateCircleShape(body, &shapeDef, &circle);
+	return body;
+}
+
+// --- integration --------------------------------------------------------------------------------
+
+/// Free fall: the step must reproduce the symplectic-Euler sequence v += g·h; x += v·h, in float,
+/// for 60 steps at 60 Hz with `subSteps` sub-steps. Tolerance: the engine computes the same
+/// float operations, but may group them differently (e.g. damping multiplies by exactly 1), so
+/// allow 4 ulp-scale relative error (4·FLT_EPSILON·|x| per step, accumulated over 60·subSteps
+/// updates).
+static void CheckFreeFall(int subSteps)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, -10.0f);
+	tbWorldId world = tbCreateWorld(&def);
+	tbVec2 x0 = {1.0f, 100.0f}, v0 = {2.0f, 3.0f};
+	tbBodyId ball = MakeBall(world, x0, v0);
+	float dt = 1.0f / 60.0f, h = dt / (float)subSteps;
+	tbVec2 x = x0, v = v0;
+	for (int step = 0; step < 60; ++step)
+	{
+		cr_assert(tbWorld_Step(world, dt, subSteps));
+		for (int s = 0; s < subSteps; ++s)
+		{
+			v.y = v.y + h * -10.0f;
+			x.x = x.x + h * v.x;
+			x.y = x.y + h * v.y;
+		}
+		tbVec2 p = tbBody_GetPosition(ball);
+		float tol = 4.0f * FLT_EPSILON * (float)((step + 1) * subSteps) * fabsf(x.y);
+		cr_assert_float_eq(p.y, x.y, tol, "step %d: y %.9g vs symplectic Euler %.9g", step, (double)p.y, (double)x.y);
+		cr_assert_float_eq(p.x, x.x, tol);
+	}
+	// Closed form x0 + v0·t + ½·g·t² differs from symplectic Euler by exactly ½·|g|·h·t
+	// (x_n = x0 + n·h·v0 + g·h²·n(n+1)/2); allow float rounding on top.
+	float t = 1.0f;
+	float exact = x0.y + v0.y * t - 5.0f * t * t;
+	float bound = 0.5f * 10.0f * h * t;
+	tbVec2 p = tbBody_GetPosition(ball);
+	cr_assert_float_eq(fabsf(p.y - exact), bound, 1e-4f, "O(h) error %.6g vs bound %.6g", (double)fabsf(p.y - exact),
+					   (double)bound);
+	tbVec2 vel = tbBody_GetLinearVelocity(ball);
+	cr_assert_float_eq(vel.y, v0.y - 10.0f * t, 1e-4f, "velocity is exact up to rounding: v0 + g·t");
+	tbDestroyWorld(world);
+}
+
+Test(world, free_fall_matches_symplectic_euler)
+{
+	CheckFreeFall(1);
+}
+
+Test(world, free_fall_substeps_match_symplectic_euler)
+{
+	CheckFreeFall(4);
+}
+
+Test(world, gravity_scale_and_damping)
+{
+	// gravityScale 0 and linear damping c: v_n = v0 / (1 + h·c)^n exactly in the implicit
+	// damping used by the step. After 60 steps of 1/60 s with c = 1: v0 · (61/60)^−60.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId ball = MakeBall(world, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(10.0f, 0.0f));
+	tbBody_SetGravityScale(ball, 0.0f);
+	tbBody_SetLinearDamping(ball, 1.0f);
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 1);
+	}
+	double expected = 10.0 * pow(61.0 / 60.0, -60.0);
+	// float rounding over 60 multiplications: 60·FLT_EPSILON relative
+	cr_assert_float_eq(tbBody_GetLinearVelocity(ball).x, (float)expected, 60.0 * FLT_EPSILON * expected);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(ball).y, 0.0f, 1e-7f);
+	tbDestroyWorld(world);
+}
+
+Test(world, angular_velocity_integrates_rotation)
+{
+	// ω = 1 rad/s, no torque: after 1 s the angle is 1 rad. tbIntegrateRotation is exact to O(Δθ³)
+	// per step: 60 steps of Δθ = 1/60 give error ≈ 60·(1/60)³/3 ≈ 1e-4 rad.
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, 0.0f);
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId ball = MakeBall(world, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+	tbBody_SetAngularVelocity(ball, 1.0f);
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 1);
+	}
+	cr_assert_float_eq(tbBody_GetAngle(ball), 1.0f, 2e-4f);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(ball), 1.0f, 1e-6f);
+	tbDestroyWorld(world);
+}
+
+Test(world, force_and_impulse)
+{
+	// Disc of radius 0.5, density 1: m = π/4. An impulse J gives Δv = J/m; a force F for one
+	// step of 1/60 s gives Δv = F·h/m (symplectic Euler applies forces before moving).
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, 0.0f);
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId ball = MakeBall(world, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+	float m = tbBody_GetMass(ball);
+	cr_assert_float_eq(m, 0.25f * TB_PI, 1e-6f);
+	tbBody_ApplyLinearImpulseToCenter(ball, tbMakeVec2(1.0f, 0.0f), true);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(ball).x, 1.0f / m, 1e-6f);
+	tbBody_ApplyForceToCenter(ball, tbMakeVec2(0.0f, 60.0f), true);
+	tbWorld_Step(world, 1.0f / 60.0f, 1);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(ball).y, 1.0f / m, 1e-5f);
+	// Forces are cleared after the step.
+	tbWorld_Step(world, 1.0f / 60.0f, 1);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(ball).y, 1.0f / m, 1e-5f);
+	// Angular impulse: Δω = L/I with I = ½·m·r².
+	float inertia = tbBody_GetRotationalInertia(ball);
+	cr_assert_float_eq(inertia, 0.5f * m * 0.25f, 1e-6f);
+	tbBody_ApplyAngularImpulse(ball, 0.5f, true);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(ball), 0.5f / inertia, 1e-5f);
+	tbDestroyWorld(world);
+}
+
+Test(world, mass_follows_shapes)
+{
+	// Two boxes 1×1 (density 1) offset to x = ±1: m = 2, centre 0, I = 2·(1/6 + 1) = 7/3.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bd = tbDefaultBodyDef();
+	bd.type = tb_dynamicBody;
+	bd.position = tbMakeVec2(3.0f, 4.0f);
+	tbBodyId body = tbCreateBody(world, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbPolygon left = tbMakeOffsetBox(0.5f, 0.5f, tbMakeVec2(-1.0f, 0.0f), tb_rot_identity);
+	tbPolygon right = tbMakeOffsetBox(0.5f, 0.5f, tbMakeVec2(1.0f, 0.0f), tb_rot_identity);
+	tbCreatePolygonShape(body, &sd, &left);
+	tbShapeId rightId = tbCreatePolygonShape(body, &sd, &right);
+	cr_assert_float_eq(tbBody_GetMass(body), 2.0f, 1e-5f);
+	cr_assert_float_eq(tbBody_GetRotationalInertia(body), 7.0f / 3.0f, 1e-5f);
+	tbVec2 c = tbBody_GetWorldCenterOfMass(body);
+	cr_assert_float_eq(c.x, 3.0f, 1e-6f);
+	cr_assert_float_eq(c.y, 4.0f, 1e-6f);
+	// Remove one box: m = 1, centre at the left box, I = 1/6.
+	tbDestroyShape(rightId, true);
+	cr_assert_float_eq(tbBody_GetMass(body), 1.0f, 1e-5f);
+	cr_assert_float_eq(tbBody_GetWorldCenterOfMass(body).x, 2.0f, 1e-5f);
+	cr_assert_float_eq(tbBody_GetRotationalInertia(body), 1.0f / 6.0f, 1e-5f);
+	tbDestroyWorld(world);
+}
+
+// --- bad input ----------------------------------------------------------------------------------
+
+typedef struct Fixture
+{
+	tbWorldId world;
+	tbBodyId body;
+	Snapshot before;
+} Fixture;
+
+static Fixture MakeFixture(void)
+{
+	Fixture f;
+	tbWorldDef def = tbDefaultWorldDef();
+	f.world = tbCreateWorld(&def);
+	f.body = MakeBall(f.world, tbMakeVec2(0.0f, 2.0f), tbMakeVec2(1.0f, 0.0f));
+	f.before = TakeSnapshot(f.world, f.body);
+	return f;
+}
+
+Test(bad_input, body_def_rejected, .init = SetupErrors, .fini = TeardownErrors)
+{
+	Fixture f = MakeFixture();
+	int n = s_errors;
+	tbBodyDef def = tbDefaultBodyDef();
+	def.position = tbMakeVec2(NAN, 0.0f);
+	cr_assert(TB_IS_NULL(tbCreateBody(f.world, &def)));
+	ExpectError(n, "tbCreateBody", "position");
+	def = tbDefaultBodyDef();
+	def.linearVelocity = tbMakeVec2(INFINITY, 0.0f);
+	cr_assert(TB_IS_NULL(tbCreateBody(f.world, &def)));
+	ExpectError(n + 1, "tbCreateBody", "linearVelocity");
+	def = tbDefaultBodyDef();
+	def.angularVelocity = NAN;
+	cr_assert(TB_IS_NULL(tbCreateBody(f.world, &def)));
+	ExpectError(n + 2, "tbCreateBody", "angularVelocity");
+	def = tbDefaultBodyDef();
+	def.linearDamping = -1.0f;
+	cr_assert(TB_IS_NULL(tbCreateBody(f.world, &def)));
+	ExpectError(n + 3, "tbCreateBody", "linearDamping");
+	def = tbDefaultBodyDef();
+	def.rotation.c = 2.0f;
+	cr_assert(TB_IS_NULL(tbCreateBody(f.world, &def)));
+	ExpectError(n + 4, "tbCreateBody", "rotation");
+	cr_assert(TB_IS_NULL(tbCreateBody(f.world, NULL)));
+	ExpectError(n + 5, "tbCreateBody", "def");
+	tbBodyDef raw;
+	memset(&raw, 0, sizeof(raw));
+	cr_assert(TB_IS_NULL(tbCreateBody(f.world, &raw)));
+	ExpectError(n + 6, "tbCreateBody", "tbDefaultBodyDef");
+	ExpectUnchanged(f.before, TakeSnapshot(f.world, f.body));
+	tbDestroyWorld(f.world);
+}
+
+Test(bad_input, shape_rejected, .init = SetupErrors, .fini = TeardownErrors)
+{
+	Fixture f = MakeFixture();
+	int n = s_errors;
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbCircle badCircle = {{0.0f, 0.0f}, -1.0f};
+	cr_assert(TB_IS_NULL(tbCreateCircleShape(f.body, &sd, &badCircle)));
+	ExpectError(n, "tbCreateCircleShape", "radius");
+	badCircle.radius = 0.0f;
+	cr_assert(TB_IS_NULL(tbCreateCircleShape(f.body, &sd, &badCircle)));
+	ExpectError(n + 1, "tbCreateCircleShape", "radius");
+	tbCircle nanCircle = {{NAN, 0.0f}, 1.0f};
+	cr_assert(TB_IS_NULL(tbCreateCircleShape(f.body, &sd, &nanCircle)));
+	ExpectError(n + 2, "tbCreateCircleShape", "center");
+	sd.density = -1.0f;
+	tbCircle circle = {{0.0f, 0.0f}, 1.0f};
+	cr_assert(TB_IS_NULL(tbCreateCircleShape(f.body, &sd, &circle)));
+	ExpectError(n + 3, "tbCreateCircleShape", "density");
+	sd = tbDefaultShapeDef();
+	sd.friction = NAN;
+	cr_assert(TB_IS_NULL(tbCreateCircleShape(f.body, &sd, &circle)));
+	ExpectError(n + 4, "tbCreateCircleShape", "friction");
+	sd = tbDefaultShapeDef();
+	tbCapsule capsule = {{0.0f, 0.0f}, {1.0f, 0.0f}, -0.5f};
+	cr_assert(TB_IS_NULL(tbCreateCapsuleShape(f.body, &sd, &capsule)));
+	ExpectError(n + 5, "tbCreateCapsuleShape", "radius");
+	cr_assert(TB_IS_NULL(tbCreateCircleShape(f.body, &sd, NULL)));
+	ExpectError(n + 6, "tbCreateCircleShape", "circle");
+	ExpectUnchanged(f.before, TakeSnapshot(f.world, f.body));
+	tbDestroyWorld(f.world);
+}
+
+Test(bad_input, polygon_rejected, .init = SetupErrors, .fini = TeardownErrors)
+{
+	Fixture f = MakeFixture();
+	int n = s_errors;
+	tbShapeDef sd = tbDefaultShapeDef();
+	// Degenerate: collinear points give no hull.
+	tbVec2 collinear[3] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {2.0f, 0.0f}};
+	tbHull hull = tbComputeHull(collinear, 3);
+	cr_assert_eq(hull.count, 0);
+	// A hand-filled polygon that is degenerate (collinear).
+	tbPolygon poly = tbMakeBox(0.5f, 0.5f);
+	poly.vertices[1] = tbMakeVec2(0.0f, -0.5f);
+	poly.vertices[0] = tbMakeVec2(-0.5f, -0.5f);
+	poly.vertices[2] = tbMakeVec2(0.5f, -0.5f);
+	poly.count = 3;
+	cr_assert(TB_IS_NULL(tbCreatePolygonShape(f.body, &sd, &poly)));
+	ExpectError(n, "tbCreatePolygonShape", "polygon");
+	// Non-convex (clockwise order).
+	tbPolygon cw = tbMakeBox(0.5f, 0.5f);
+	tbVec2 tmp = cw.vertices[1];
+	cw.vertices[1] = cw.vertices[3];
+	cw.vertices[3] = tmp;
+	cr_assert(TB_IS_NULL(tbCreatePolygonShape(f.body, &sd, &cw)));
+	ExpectError(n + 1, "tbCreatePolygonShape", "convex");
+	// More than 8 vertices.
+	tbPolygon many = tbMakeBox(0.5f, 0.5f);
+	many.count = 9;
+	cr_assert(TB_IS_NULL(tbCreatePolygonShape(f.body, &sd, &many)));
+	ExpectError(n + 2, "tbCreatePolygonShape", "count");
+	// Too many hull points.
+	tbVec2 cloud[9];
+	for (int i = 0; i < 9; ++i)
+	{
+		cloud[i] = tbMakeVec2(cosf(0.7f * (float)i), sinf(0.7f * (float)i));
+	}
+	tbHull tooMany = tbComputeHull(cloud, 9);
+	cr_assert_eq(tooMany.count, 0);
+	ExpectError(n + 3, "tbComputeHull", "count");
+	// NaN vertex.
+	tbPolygon nanPoly = tbMakeBox(0.5f, 0.5f);
+	nanPoly.vertices[2].x = NAN;
+	cr_assert(TB_IS_NULL(tbCreatePolygonShape(f.body, &sd, &nanPoly)));
+	ExpectError(n + 4, "tbCreatePolygonShape", "vertices");
+	ExpectUnchanged(f.before, TakeSnapshot(f.world, f.body));
+	tbDestroyWorld(f.world);
+}
+
+Test(bad_input, step_rejected, .init = SetupErrors, .fini = TeardownErrors)
+{
+	Fixture f = MakeFixture();
+	int n = s_errors;
+	cr_assert_not(tbWorld_Step(f.world, 0.0f, 4));
+	ExpectError(n, "tbWorld_Step", "timeStep");
+	cr_assert_not(tbWorld_Step(f.world, -1.0f / 60.0f, 4));
+	ExpectError(n + 1, "tbWorld_Step", "timeStep");
+	cr_assert_not(tbWorld_Step(f.world, NAN, 4));
+	ExpectError(n + 2, "tbWorld_Step", "timeStep");
+	cr_assert_not(tbWorld_Step(f.world, 1.0f / 60.0f, 0));
+	ExpectError(n + 3, "tbWorld_Step", "subStepCount");
+	ExpectUnchanged(f.before, TakeSnapshot(f.world, f.body));
+	cr_assert_not(tbWorld_SetGravity(f.world, tbMakeVec2(0.0f, INFINITY)));
+	ExpectError(n + 4, "tbWorld_SetGravity", "gravity");
+	cr_assert_float_eq(tbWorld_GetGravity(f.world).y, -10.0f, 0.0f);
+	cr_assert_not(tbBody_SetLinearVelocity(f.body, tbMakeVec2(NAN, 0.0f)));
+	ExpectError(n + 5, "tbBody_SetLinearVelocity", "linearVelocity");
+	cr_assert_not(tbBody_ApplyForceToCenter(f.body, tbMakeVec2(INFINITY, 0.0f), true));
+	ExpectError(n + 6, "tbBody_ApplyForceToCenter", "force");
+	cr_assert_not(tbBody_SetTransform(f.body, tbMakeVec2(0.0f, NAN), tb_rot_identity));
+	ExpectError(n + 7, "tbBody_SetTransform", "position");
+	ExpectUnchanged(f.before, TakeSnapshot(f.world, f.body));
+	tbDestroyWorld(f.world);
+}
+
+Test(bad_input, world_def_rejected, .init = SetupErrors, .fini = TeardownErrors)
+{
+	int n = s_errors;
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity.x = NAN;
+	cr_assert(TB_IS_NULL(tbCreateWorld(&def)));
+	ExpectError(n, "tbCreateWorld", "gravity");
+	def = tbDefaultWorldDef();
+	def.contactHertz = -5.0f;
+	cr_assert(TB_IS_NULL(tbCreateWorld(&def)));
+	ExpectError(n + 1, "tbCreateWorld", "contactHertz");
+	cr_assert(TB_IS_NULL(tbCreateWorld(NULL)));
+	ExpectError(n + 2, "tbCreateWorld", "def");
+}
+
+// --- handles ------------------------------------------------------------------------------------
+
+Test(handles, destroyed_body_refused, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId body = MakeBall(world, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+	tbShapeId shapes[1];
+	cr_assert_eq(tbBody_GetShapes(body, shapes, 1), 1);
+	cr_assert(tbBody_IsValid(body));
+	cr_assert(tbShape_IsValid(shapes[0]));
+	tbDestroyBody(body);
+	cr_assert_not(tbBody_IsValid(body));
+	cr_assert_not(tbShape_IsValid(shapes[0]));
+	int n = s_errors;
+	tbVec2 p = tbBody_GetPosition(body);
+	cr_assert(p.x == 0.0f && p.y == 0.0f);
+	ExpectError(n, "tbBody_GetPosition", "destroyed");
+	tbDestroyBody(body);
+	ExpectError(n + 1, "tbDestroyBody", "destroyed");
+	float friction = tbShape_GetFriction(shapes[0]); // evaluate once: the assert macros may evaluate twice
+	cr_assert(friction == 0.0f);
+	ExpectError(n + 2, "tbShape_GetFriction", "destroyed");
+	// The slot is reused with a new generation: the old id stays invalid.
+	tbBodyId again = MakeBall(world, tbMakeVec2(1.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+	cr_assert_eq(again.index1, body.index1);
+	cr_assert_neq(again.generation, body.generation);
+	cr_assert_not(tbBody_IsValid(body));
+	cr_assert(tbBody_IsValid(again));
+	// Null ids.
+	cr_assert_not(tbBody_IsValid(TB_NULL_BODY_ID));
+	tbBody_GetMass(TB_NULL_BODY_ID);
+	ExpectError(n + 3, "tbBody_GetMass", "null");
+	tbDestroyWorld(world);
+	cr_assert_not(tbWorld_IsValid(world));
+	cr_assert_not(tbBody_IsValid(again));
+	tbWorld_Step(world, 1.0f / 60.0f, 4);
+	ExpectError(n + 4, "tbWorld_Step", "destroyed");
+}
+
+Test(handles, worlds_side_by_side)
+{
+	// Two worlds with different gravity evolve independently: after 1 s of free fall from rest
+	// v = g·t exactly up to rounding.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId a = tbCreateWorld(&def);
+	def.gravity = tbMakeVec2(0.0f, -1.0f);
+	tbWorldId b = tbCreateWorld(&def);
+	tbBodyId ballA = MakeBall(a, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+	tbBodyId ballB = MakeBall(b, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(a, 1.0f / 60.0f, 4);
+		tbWorld_Step(b, 1.0f / 60.0f, 4);
+	}
+	cr_assert_float_eq(tbBody_GetLinearVelocity(ballA).y, -10.0f, 1e-4f);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(ballB).y, -1.0f, 1e-5f);
+	tbDestroyWorld(a);
+	tbDestroyWorld(b);
+}
+
+Test(memory, no_bytes_left_after_destroy)
+{
+	int start = tbGetByteCount();
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef gd = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &gd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbPolygon groundBox = tbMakeOffsetBox(20.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbCreatePolygonShape(ground, &sd, &groundBox);
+	for (int i = 0; i < 50; ++i)
+	{
+		MakeBall(world, tbMakeVec2(0.1f * (float)i - 2.5f, 1.0f + 1.1f * (float)i), tbMakeVec2(0.0f, 0.0f));
+	}
+	for (int i = 0; i < 120; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_assert_gt(tbGetByteCount(), start);
+	tbDestroyWorld(world);
+	cr_assert_eq(tbGetByteCount(), start, "%d bytes leaked", tbGetByteCount() - start);
+}
