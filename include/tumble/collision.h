@@ -335,8 +335,9 @@ typedef enum tbNarrowPhaseMethod
 	tb_narrowPhaseGJK,	 ///< GJK/EPA normal and depth, then clipping
 } tbNarrowPhaseMethod;
 
-/// Manifold for any pair of shapes. Requires typeA ≤ typeB in tbShapeType order except that
-/// segments may be either; the function swaps internally and flips the normal when needed.
+/// Manifold for any pair of shapes, in either order: the routine for the pair is called with the
+/// shapes swapped when needed and the normal flipped, so the normal always points from A to B.
+/// Segment–segment pairs never touch (segments are for static geometry).
 TB_API tbManifold tbCollideShapes(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB, tbTransform xfB,
 								  tbNarrowPhaseMethod method);
 
