@@ -22,6 +22,9 @@ typedef struct tbContinuousContext
 	const tbShape* fastShape;
 	tbShapeProxy fastProxy;
 	float fraction; ///< earliest time of impact so far
+	bool coreHit;	///< the earliest impact came from the core sweep
+	tbVec2 normal;	///< its normal, from the other shape to the fast body
+	tbVec2 otherVelocity;
 } tbContinuousContext;
 
 static tbSweep tbMakeBodySweep(const tbBody* body)
@@ -82,6 +85,42 @@ static tbTOIOutput tbComputeTOI(tbContinuousContext* c, const tbShape* other, co
 	return output;
 }
 
+/// The shapes already touch at the start of the sweep (the body was stopped there last step), so
+/// the full shape cannot be advanced. The contact handles the touching features, but a fast body
+/// that turns can still carry its centre through the other shape. Sweep the body's core instead:
+/// a circle of half its thickness around the centre of mass, which lies inside the body. The core
+/// never crosses a surface, so the body cannot pass through, though it may end partly embedded
+/// (by at most its extent), which the solver then resolves. The core may itself start near the
+/// surface (it was stopped there last step): its target is then half its current gap, so it can
+/// still be stopped short of the surface; a core already on the surface is left to the solver.
+static tbTOIOutput tbComputeCoreTOI(tbContinuousContext* c, const tbShape* other, const tbSweep* otherSweep)
+{
+	tbTOIInput input;
+	input.proxyA = tbMakeShapeProxy(&other->geometry);
+	input.proxyB = tbMakeProxy(&c->sweep.localCenter, 1, 0.5f * c->fastBody->minExtent);
+	input.sweepA = *otherSweep;
+	input.sweepB = c->sweep;
+	input.maxFraction = c->fraction;
+	tbDistanceInput start;
+	start.proxyA = input.proxyA;
+	start.proxyB = input.proxyB;
+	start.transformA = tbGetSweepTransform(otherSweep, 0.0f);
+	start.transformB = tbGetSweepTransform(&c->sweep, 0.0f);
+	start.useRadii = true;
+	float gap = tbShapeDistance(&start, NULL, NULL).distance;
+	tbTOIOutput output = {tb_toiStateOverlapped, 0.0f, 0, {0.0f, 0.0f}, {0.0f, 0.0f}};
+	if (gap < 1e-5f)
+	{
+		return output;
+	}
+	input.targetSeparation = tbMinFloat(TB_TOI_TARGET_SEPARATION, 0.5f * gap);
+	c->world->counters.toiCalls += 1;
+	output = tbTimeOfImpact(&input);
+	c->world->counters.toiIterationsMax = tbMaxInt(c->world->counters.toiIterationsMax, output.iterations);
+	c->world->counters.toiFailures += output.state == tb_toiStateFailed ? 1 : 0;
+	return output;
+}
+
 /// Broad-phase callback: time of impact of the fast shape against one candidate shape.
 static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* context)
 {
@@ -107,11 +146,19 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 		otherSweep.q1 = otherSweep.q2;
 	}
 	tbTOIOutput output = tbComputeTOI(c, other, &otherSweep);
-	// A hit strictly inside the sweep moves the body back. Overlap at t = 0 means the shapes were
-	// already touching: the solver's contact handles that case.
+	bool core = false;
+	if (output.state == tb_toiStateOverlapped || (output.state == tb_toiStateHit && output.fraction == 0.0f))
+	{
+		output = tbComputeCoreTOI(c, other, &otherSweep);
+		core = true;
+	}
+	// A hit strictly inside the sweep moves the body back.
 	if (output.state == tb_toiStateHit && output.fraction > 0.0f && output.fraction < c->fraction)
 	{
 		c->fraction = output.fraction;
+		c->coreHit = core;
+		c->normal = output.normal;
+		c->otherVelocity = otherBody->awakeIndex != TB_NULL_INDEX ? otherBody->linearVelocity : tb_vec2_zero;
 	}
 	return true;
 }
@@ -123,6 +170,20 @@ static tbAABB tbSweptShapeBox(const tbShape* shape, const tbSweep* sweep)
 	return tbAABB_Union(tbComputeShapeAABB(&shape->geometry, xf1), tbComputeShapeAABB(&shape->geometry, xf2));
 }
 
+/// The core hit while the body was already touching: the contact points the solver saw did not
+/// cover the part that is closing (it was beyond the speculative distance), so without help the
+/// body would be pinned here step after step with its velocity intact. Stop the core's approach
+/// along the normal, a perfectly inelastic impact of the centre of mass: energy is removed, never
+/// added (restitution is not applied on this rare path).
+static void tbStopCoreApproach(tbBody* body, tbVec2 normal, tbVec2 otherVelocity)
+{
+	float vn = tbDot(tbSub(body->linearVelocity, otherVelocity), normal);
+	if (vn < 0.0f)
+	{
+		body->linearVelocity = tbMulSub(body->linearVelocity, vn, normal);
+	}
+}
+
 static void tbSolveFastBody(tbWorld* world, int bodyId)
 {
 	tbBody* body = world->bodies + bodyId;
@@ -132,6 +193,7 @@ static void tbSolveFastBody(tbWorld* world, int bodyId)
 	c.fastBodyId = bodyId;
 	c.sweep = tbMakeBodySweep(body);
 	c.fraction = 1.0f;
+	c.coreHit = false;
 	// Rotation can carry points outside both end boxes by at most the arc's sagitta,
 	// maxExtent·(1 − cos(Δθ/2)) ≤ maxExtent·Δθ²/8 (capped at maxExtent).
 	float dTheta = tbAbsFloat(tbRelativeAngle(c.sweep.q1, c.sweep.q2));
@@ -153,6 +215,10 @@ static void tbSolveFastBody(tbWorld* world, int bodyId)
 		tbTransform xf = tbGetSweepTransform(&c.sweep, c.fraction);
 		body->transform = xf;
 		body->center = tbTransformPoint(xf, body->localCenter);
+		if (c.coreHit)
+		{
+			tbStopCoreApproach(body, c.normal, c.otherVelocity);
+		}
 	}
 }
 

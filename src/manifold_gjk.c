@@ -17,8 +17,8 @@
 // 4. Otherwise the incident edge is the edge of the other polygon most anti-parallel to the
 //    reference normal nR; its two ends are clipped to the slab between the side planes of the
 //    reference face (Sutherland–Hodgman in one dimension: along the face tangent t the face is
-//    [0, L] and the incident edge is the interval [a, b], each end moved onto the plane it
-//    crosses). A surviving point p has core separation h = nR·(p − v1); its separation is
+//    [0, L] and the incident edge is the interval [a, b], each end more than TB_GJK_CLIP_SLACK
+//    outside moved onto the plane it crosses). A surviving point p has core separation h = nR·(p − v1); its separation is
 //    h − rA − rB, and its world point is midway between the surfaces:
 //        point = p + ½(rR − rI − h)·nR.
 //    Points are kept while the separation is below TB_SPECULATIVE_DISTANCE.
@@ -43,6 +43,12 @@
 // Corner–corner threshold, 0.1 × linear slop = 0.0005 m: a GJK gap larger than the best face
 // separation by more than this is a corner facing a corner, not a face contact.
 #define TB_GJK_CORNER_TOLERANCE (0.1f * TB_LINEAR_SLOP)
+
+// Clip slack, 0.1 × linear slop = 0.0005 m: an incident corner this close outside a side plane
+// is kept as it is, not clipped. It is the convention of manifold.c's SAT (flush stacked boxes
+// keep their corners while wobbling by 1e-4 rad), adopted here so that the two interchangeable
+// paths give the same points and can be compared and swapped point for point.
+#define TB_GJK_CLIP_SLACK (0.1f * TB_LINEAR_SLOP)
 
 // Feature flags (polygon indices are below 8, so bits 5 to 7 are free).
 #define TB_GJK_FEATURE_REFERENCE 0x40
@@ -133,8 +139,8 @@ static tbManifold tbClipToReferenceFace(const tbPolygon* ref, int refEdge, const
 	{
 		return m; // edge-on or outside the slab
 	}
-	tbVec2 first = a < 0.0f ? tbLerp(w2, w1, (0.0f - a) / (b - a)) : w2;
-	tbVec2 second = b > L ? tbLerp(w2, w1, (L - a) / (b - a)) : w1;
+	tbVec2 first = a < -TB_GJK_CLIP_SLACK ? tbLerp(w2, w1, (0.0f - a) / (b - a)) : w2;
+	tbVec2 second = b > L + TB_GJK_CLIP_SLACK ? tbLerp(w2, w1, (L - a) / (b - a)) : w1;
 
 	tbManifoldPoint points[2] = {
 		tbMakeClipPoint(first, v1, nR, ref->radius, inc->radius, tbClipFeatureId(refEdge, incNext, flip)),

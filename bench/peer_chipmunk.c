@@ -1,0 +1,198 @@
+// Chipmunk 7 adapter for tumble-bench (see peers.h): builds a Scene as a cpSpace.
+#include "peers.h"
+
+#include <chipmunk/chipmunk_private.h>
+
+#include <math.h>
+#include <stdlib.h>
+
+struct PeerWorld
+{
+	cpSpace* space;
+	cpBody** bodies; // scene body index -> body
+	int bodyCount;
+	float timeStep;
+};
+
+static cpVect ToCp(tbVec2 v)
+{
+	return cpv(v.x, v.y);
+}
+
+static cpShape* MakeShape(cpBody* body, const tbGeometry* g)
+{
+	switch (g->type)
+	{
+		case tb_circleShape:
+			return cpCircleShapeNew(body, g->circle.radius, ToCp(g->circle.center));
+		case tb_capsuleShape:
+			return cpSegmentShapeNew(body, ToCp(g->capsule.center1), ToCp(g->capsule.center2), g->capsule.radius);
+		case tb_segmentShape:
+			return cpSegmentShapeNew(body, ToCp(g->segment.point1), ToCp(g->segment.point2), 0.0);
+		case tb_polygonShape:
+		{
+			cpVect points[TB_MAX_POLYGON_VERTICES];
+			for (int i = 0; i < g->polygon.count; ++i)
+			{
+				points[i] = ToCp(g->polygon.vertices[i]);
+			}
+			return cpPolyShapeNew(body, g->polygon.count, points, cpTransformIdentity, g->polygon.radius);
+		}
+		default:
+			return NULL;
+	}
+}
+
+static int CompareFloats(const void* a, const void* b)
+{
+	float x = *(const float*)a, y = *(const float*)b;
+	return (x > y) - (x < y);
+}
+
+// Spatial-hash cell: the median extent of the dynamic shapes (Chipmunk's advice: about the
+// size of the typical shape).
+static float HashCellSize(const Scene* scene)
+{
+	int count = Scene_ShapeCount(scene), n = 0;
+	float* sizes = malloc(sizeof(float) * (size_t)(count > 0 ? count : 1));
+	tbTransform identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		for (int s = 0; s < scene->bodies[i].shapeCount && scene->bodies[i].type == tb_dynamicBody; ++s)
+		{
+			tbAABB box = tbComputeShapeAABB(&scene->bodies[i].shapes[s].geometry, identity);
+			float w = box.upperBound.x - box.lowerBound.x, h = box.upperBound.y - box.lowerBound.y;
+			sizes[n++] = w > h ? w : h;
+		}
+	}
+	float size = 1.0f;
+	if (n > 0)
+	{
+		qsort(sizes, (size_t)n, sizeof(float), CompareFloats);
+		size = sizes[n / 2];
+	}
+	free(sizes);
+	return size;
+}
+
+static cpBody* MakeBody(cpSpace* space, const SceneBody* sb)
+{
+	cpBody* body;
+	switch (sb->type)
+	{
+		case tb_dynamicBody:
+			body = cpBodyNew(0.0, 0.0); // mass and inertia accumulate from the shapes' densities
+			break;
+		case tb_kinematicBody:
+			body = cpBodyNewKinematic();
+			break;
+		default:
+			body = cpBodyNewStatic();
+			break;
+	}
+	cpSpaceAddBody(space, body);
+	for (int s = 0; s < sb->shapeCount; ++s)
+	{
+		const SceneShape* shape = sb->shapes + s;
+		cpShape* cs = MakeShape(body, &shape->geometry);
+		if (cs == NULL)
+		{
+			continue;
+		}
+		if (sb->type == tb_dynamicBody)
+		{
+			cpShapeSetDensity(cs, shape->density);
+		}
+		cpShapeSetFriction(cs, sqrtf(shape->friction));
+		cpShapeSetElasticity(cs, sqrtf(shape->restitution));
+		cpShapeSetSensor(cs, shape->isSensor);
+		cpSpaceAddShape(space, cs);
+	}
+	cpBodySetAngle(body, sb->angle);
+	cpBodySetPosition(body, ToCp(sb->position));
+	if (sb->type != tb_staticBody)
+	{
+		cpBodySetVelocity(body, ToCp(sb->linearVelocity));
+		cpBodySetAngularVelocity(body, sb->angularVelocity);
+	}
+	return body;
+}
+
+PeerWorld* PeerChipmunk_Create(const Scene* scene, bool useTree)
+{
+	PeerWorld* peer = calloc(1, sizeof(PeerWorld));
+	peer->space = cpSpaceNew();
+	peer->timeStep = scene->timeStep;
+	cpSpaceSetIterations(peer->space, 10);
+	cpSpaceSetGravity(peer->space, ToCp(scene->gravity));
+	cpSpaceSetCollisionSlop(peer->space, 0.01);
+	if (scene->enableSleep)
+	{
+		cpSpaceSetSleepTimeThreshold(peer->space, 0.5);
+	}
+	if (!useTree)
+	{
+		int count = 10 * Scene_ShapeCount(scene);
+		cpSpaceUseSpatialHash(peer->space, HashCellSize(scene), count > 1000 ? count : 1000);
+	}
+	peer->bodyCount = scene->bodyCount;
+	peer->bodies = calloc((size_t)(scene->bodyCount > 0 ? scene->bodyCount : 1), sizeof(cpBody*));
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		peer->bodies[i] = MakeBody(peer->space, scene->bodies + i);
+	}
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		if (scene->enableSleep && !scene->bodies[i].isAwake && scene->bodies[i].type == tb_dynamicBody)
+		{
+			cpBodySleep(peer->bodies[i]);
+		}
+	}
+	return peer;
+}
+
+void PeerChipmunk_Step(PeerWorld* peer)
+{
+	cpSpaceStep(peer->space, peer->timeStep);
+}
+
+PeerBody PeerChipmunk_GetBody(PeerWorld* peer, int bodyIndex)
+{
+	cpBody* body = peer->bodies[bodyIndex];
+	cpVect p = cpBodyGetPosition(body), v = cpBodyGetVelocity(body);
+	double angle = cpBodyGetAngle(body);
+	PeerBody result = {{(float)p.x, (float)p.y}, {(float)cos(angle), (float)sin(angle)}, {(float)v.x, (float)v.y},
+					   (float)cpBodyGetAngularVelocity(body)};
+	return result;
+}
+
+PeerCounters PeerChipmunk_GetCounters(PeerWorld* peer)
+{
+	PeerCounters counters = {peer->bodyCount, peer->space->arbiters->num, 0};
+	for (int i = 0; i < peer->bodyCount; ++i)
+	{
+		cpBody* body = peer->bodies[i];
+		counters.awakeBodyCount += cpBodyGetType(body) != CP_BODY_TYPE_STATIC && !cpBodyIsSleeping(body) ? 1 : 0;
+	}
+	return counters;
+}
+
+static void FreeShape(cpBody* body, cpShape* shape, void* data)
+{
+	(void)body;
+	cpSpaceRemoveShape((cpSpace*)data, shape);
+	cpShapeFree(shape);
+}
+
+void PeerChipmunk_Destroy(PeerWorld* peer)
+{
+	for (int i = 0; i < peer->bodyCount; ++i)
+	{
+		cpBodyEachShape(peer->bodies[i], FreeShape, peer->space);
+		cpSpaceRemoveBody(peer->space, peer->bodies[i]);
+		cpBodyFree(peer->bodies[i]);
+	}
+	cpSpaceFree(peer->space);
+	free(peer->bodies);
+	free(peer);
+}

@@ -1,0 +1,56 @@
+// Peer engines for tumble-bench: adapters that build the same catalogue Scene in another engine,
+// step it and read it back, so Tumble and its peers are timed one after another in one process.
+//
+// Each adapter is compiled only when its engine's development package is found (bench/peers.cmake
+// defines TUMBLE_HAVE_BOX2D / TUMBLE_HAVE_CHIPMUNK). Body indices are scene body indices.
+#pragma once
+
+#include "scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct PeerWorld PeerWorld;
+
+/// State of one body read back from a peer: origin position, rotation, velocity of the centre of mass.
+typedef struct PeerBody
+{
+	tbVec2 position;
+	tbRot rotation;
+	tbVec2 linearVelocity;
+	float angularVelocity;
+} PeerBody;
+
+/// Counts comparable with tbCounters: bodies, contacts (pairs whose boxes overlap), awake non-static bodies.
+typedef struct PeerCounters
+{
+	int bodyCount;
+	int contactCount;
+	int awakeBodyCount;
+} PeerCounters;
+
+/// Box2D 2.4.1: 8 velocity and 3 position iterations, continuous collision on (its default).
+/// Polygons carry Box2D's fixed 0.01 m skin (b2_polygonRadius); rounded polygons are inflated
+/// by their radius (mitred corners); capsules become two circles and a box on one body.
+PeerWorld* PeerBox2D_Create(const Scene* scene);
+void PeerBox2D_Step(PeerWorld* world);
+PeerBody PeerBox2D_GetBody(PeerWorld* world, int bodyIndex);
+PeerCounters PeerBox2D_GetCounters(PeerWorld* world);
+void PeerBox2D_Destroy(PeerWorld* world);
+
+/// Chipmunk 7: 10 iterations, collision slop 0.01 m (its default 0.1 m is ten box skins),
+/// spatial hash by default (cell = median dynamic shape size) or the BBTree (useTree),
+/// sleep time threshold 0.5 s when the scene allows sleep. Chipmunk multiplies friction and
+/// restitution where Tumble takes sqrt(a·b) and max(a, b): the adapter passes sqrt of each value,
+/// which reproduces friction mixing exactly and restitution whenever both sides agree.
+/// Capsules are rounded segments, rounded polygons keep their radius; no per-body damping or gravity scale.
+PeerWorld* PeerChipmunk_Create(const Scene* scene, bool useTree);
+void PeerChipmunk_Step(PeerWorld* world);
+PeerBody PeerChipmunk_GetBody(PeerWorld* world, int bodyIndex);
+PeerCounters PeerChipmunk_GetCounters(PeerWorld* world);
+void PeerChipmunk_Destroy(PeerWorld* world);
+
+#ifdef __cplusplus
+}
+#endif

@@ -1,0 +1,949 @@
+// tumble-bench: the scene benchmark. Runs catalogue scenes single-threaded, times only the
+// stepping loop (world construction excluded), repeats and reports the median and minimum
+// milliseconds per step with the body, contact and awake-body counts, and writes CSV. With
+// --peers the same Scene is built and timed in Box2D 2.4.1 and Chipmunk 7 right after Tumble, in
+// the same process, so the ratios come from one run on one (shared, noisy) machine.
+//
+// Subcommands produce the data behind the charts in docs/performance.md:
+//   solver-chart       time per step vs stack drift, largest penetration and bounce-energy error
+//                      for each solver × iterations / sub-steps (1, 2, 4, 8), peers as points
+//   narrowphase-chart  ns per polygon pair vs normal and depth error, SAT and GJK/EPA, against a
+//                      double-precision separating-axis reference
+//   toi-chart          ns per time-of-impact query vs error against closed forms
+//   tunnel-chart       fraction of bodies that pass through a thin wall vs speed, per method
+//   sleep              10,000 sleeping bodies plus 10 awake ones vs the 10 awake ones alone
+#include "catalogue.h"
+#include "peers.h"
+#include "scene.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+// ---------------------------------------------------------------------------------------------
+// Clock and statistics
+
+static double NowMs(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return 1e3 * (double)t.tv_sec + 1e-6 * (double)t.tv_nsec;
+}
+
+static int CompareDoubles(const void* a, const void* b)
+{
+	double x = *(const double*)a, y = *(const double*)b;
+	return (x > y) - (x < y);
+}
+
+static double Median(double* values, int count)
+{
+	qsort(values, (size_t)count, sizeof(double), CompareDoubles);
+	return count % 2 == 1 ? values[count / 2] : 0.5 * (values[count / 2 - 1] + values[count / 2]);
+}
+
+static uint32_t s_seed = 1u;
+
+// Linear congruential generator (Numerical Recipes, §7.1), so every run sees the same cases.
+static float RandomFloat(float lower, float upper)
+{
+	s_seed = 1664525u * s_seed + 1013904223u;
+	return lower + (upper - lower) * (float)(s_seed >> 8) / 16777216.0f;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Engines behind one small interface (tagged by Engine, dispatched by switch)
+
+typedef enum Engine
+{
+	engineTumble,
+	engineBox2D,
+	engineChipmunk,
+	engineCount
+} Engine;
+
+static const char* EngineName(Engine engine)
+{
+	switch (engine)
+	{
+		case engineTumble:
+			return "tumble";
+		case engineBox2D:
+			return "box2d-2.4.1";
+		default:
+			return "chipmunk-7";
+	}
+}
+
+static bool EngineAvailable(Engine engine)
+{
+	switch (engine)
+	{
+		case engineTumble:
+			return true;
+		case engineBox2D:
+#ifdef TUMBLE_HAVE_BOX2D
+			return true;
+#else
+			return false;
+#endif
+		default:
+#ifdef TUMBLE_HAVE_CHIPMUNK
+			return true;
+#else
+			return false;
+#endif
+	}
+}
+
+/// How Tumble is configured for a run (peers have fixed settings, see peers.h).
+typedef struct TumbleConfig
+{
+	SceneOverrides overrides; ///< methods and velocity iterations
+	int positionIterations;	  ///< > 0 replaces the NGS default
+	int subSteps;			  ///< > 0 replaces the scene's (soft) or 1 (Baumgarte, NGS)
+	bool chipmunkTree;		  ///< Chipmunk peer: BBTree instead of the spatial hash
+} TumbleConfig;
+
+typedef struct Sim
+{
+	Engine engine;
+	const Scene* scene;
+	SceneWorld tumble;
+	PeerWorld* peer;
+	int subSteps;
+} Sim;
+
+static bool Sim_Create(Sim* sim, const Scene* scene, Engine engine, const TumbleConfig* config)
+{
+	memset(sim, 0, sizeof(*sim));
+	sim->engine = engine;
+	sim->scene = scene;
+	switch (engine)
+	{
+		case engineTumble:
+		{
+			tbWorldDef def = Scene_MakeWorldDef(scene, &config->overrides);
+			if (config->positionIterations > 0)
+			{
+				def.positionIterations = config->positionIterations;
+			}
+			sim->tumble = Scene_BuildWorldWithDef(scene, &def);
+			bool soft = def.solver == tb_solverSoft;
+			sim->subSteps = config->subSteps > 0 ? config->subSteps : (soft ? scene->subSteps : 1);
+			return !tbWorld_IsValid(sim->tumble.worldId) ? false : true;
+		}
+		case engineBox2D:
+#ifdef TUMBLE_HAVE_BOX2D
+			sim->peer = PeerBox2D_Create(scene);
+#endif
+			return sim->peer != NULL;
+		default:
+#ifdef TUMBLE_HAVE_CHIPMUNK
+			sim->peer = PeerChipmunk_Create(scene, config->chipmunkTree);
+#endif
+			return sim->peer != NULL;
+	}
+}
+
+static void Sim_Step(Sim* sim)
+{
+	switch (sim->engine)
+	{
+		case engineTumble:
+			tbWorld_Step(sim->tumble.worldId, sim->scene->timeStep, sim->subSteps);
+			break;
+		case engineBox2D:
+#ifdef TUMBLE_HAVE_BOX2D
+			PeerBox2D_Step(sim->peer);
+#endif
+			break;
+		default:
+#ifdef TUMBLE_HAVE_CHIPMUNK
+			PeerChipmunk_Step(sim->peer);
+#endif
+			break;
+	}
+}
+
+static PeerBody Sim_GetBody(const Sim* sim, int index)
+{
+	PeerBody body = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 0.0f}, 0.0f};
+	switch (sim->engine)
+	{
+		case engineTumble:
+		{
+			tbBodyId id = sim->tumble.bodyIds[index];
+			body.position = tbBody_GetPosition(id);
+			body.rotation = tbBody_GetRotation(id);
+			body.linearVelocity = tbBody_GetLinearVelocity(id);
+			body.angularVelocity = tbBody_GetAngularVelocity(id);
+			break;
+		}
+		case engineBox2D:
+#ifdef TUMBLE_HAVE_BOX2D
+			body = PeerBox2D_GetBody(sim->peer, index);
+#endif
+			break;
+		default:
+#ifdef TUMBLE_HAVE_CHIPMUNK
+			body = PeerChipmunk_GetBody(sim->peer, index);
+#endif
+			break;
+	}
+	return body;
+}
+
+static PeerCounters Sim_GetCounters(const Sim* sim)
+{
+	PeerCounters counters = {0, 0, 0};
+	switch (sim->engine)
+	{
+		case engineTumble:
+		{
+			tbCounters c = tbWorld_GetCounters(sim->tumble.worldId);
+			counters = (PeerCounters){c.bodyCount, c.contactCount, c.awakeBodyCount};
+			break;
+		}
+		case engineBox2D:
+#ifdef TUMBLE_HAVE_BOX2D
+			counters = PeerBox2D_GetCounters(sim->peer);
+#endif
+			break;
+		default:
+#ifdef TUMBLE_HAVE_CHIPMUNK
+			counters = PeerChipmunk_GetCounters(sim->peer);
+#endif
+			break;
+	}
+	return counters;
+}
+
+static void Sim_Destroy(Sim* sim)
+{
+	switch (sim->engine)
+	{
+		case engineTumble:
+			SceneWorld_Destroy(&sim->tumble);
+			break;
+		case engineBox2D:
+#ifdef TUMBLE_HAVE_BOX2D
+			PeerBox2D_Destroy(sim->peer);
+#endif
+			break;
+		default:
+#ifdef TUMBLE_HAVE_CHIPMUNK
+			PeerChipmunk_Destroy(sim->peer);
+#endif
+			break;
+	}
+	sim->peer = NULL;
+}
+
+/// Largest penetration (m, ≥ 0) over every pair of shapes on different bodies, measured the same
+/// way for every engine: the scene's own geometry at the engine's body poses, collided by
+/// Tumble's manifold routines. Brute force over body pairs: for error measures on small scenes.
+/// Box2D's polygon skin is not part of the geometry, so its boxes rest 0.01 m apart here.
+static float LargestPenetration(const Sim* sim)
+{
+	const Scene* scene = sim->scene;
+	int n = scene->bodyCount;
+	tbTransform* transforms = malloc(sizeof(tbTransform) * (size_t)n);
+	for (int i = 0; i < n; ++i)
+	{
+		PeerBody body = Sim_GetBody(sim, i);
+		transforms[i] = (tbTransform){body.position, body.rotation};
+	}
+	float largest = 0.0f;
+	for (int i = 0; i < n; ++i)
+	{
+		const SceneBody* a = scene->bodies + i;
+		for (int j = i + 1; j < n; ++j)
+		{
+			const SceneBody* b = scene->bodies + j;
+			if (a->type != tb_dynamicBody && b->type != tb_dynamicBody)
+			{
+				continue;
+			}
+			for (int sa = 0; sa < a->shapeCount; ++sa)
+			{
+				tbAABB boxA = tbComputeShapeAABB(&a->shapes[sa].geometry, transforms[i]);
+				for (int sb = 0; sb < b->shapeCount; ++sb)
+				{
+					tbAABB boxB = tbComputeShapeAABB(&b->shapes[sb].geometry, transforms[j]);
+					if (!tbAABB_Overlaps(boxA, boxB))
+					{
+						continue;
+					}
+					tbManifold m = tbCollideShapes(&a->shapes[sa].geometry, transforms[i], &b->shapes[sb].geometry,
+												   transforms[j], tb_narrowPhaseAuto);
+					for (int p = 0; p < m.pointCount; ++p)
+					{
+						largest = fmaxf(largest, -m.points[p].separation);
+					}
+				}
+			}
+		}
+	}
+	free(transforms);
+	return largest;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scene benchmark
+
+typedef struct Options
+{
+	const char* scenes[64];
+	int sceneCount;
+	int steps; ///< > 0 replaces each scene's step count
+	int repeat;
+	const char* csvPath;
+	bool peers;
+	TumbleConfig config;
+} Options;
+
+typedef struct RunResult
+{
+	const char* scene;
+	Engine engine;
+	int steps;
+	double msMedian, msMin;
+	PeerCounters counters;
+	bool valid;
+} RunResult;
+
+static RunResult RunScene(const Scene* scene, const char* name, Engine engine, int steps, int repeat,
+						  const TumbleConfig* config)
+{
+	RunResult result = {name, engine, steps, 0.0, 0.0, {0, 0, 0}, false};
+	double* times = malloc(sizeof(double) * (size_t)repeat);
+	for (int r = 0; r < repeat; ++r)
+	{
+		Sim sim;
+		if (!Sim_Create(&sim, scene, engine, config))
+		{
+			free(times);
+			return result;
+		}
+		double start = NowMs();
+		for (int i = 0; i < steps; ++i)
+		{
+			Sim_Step(&sim);
+		}
+		times[r] = (NowMs() - start) / (double)steps;
+		result.counters = Sim_GetCounters(&sim);
+		Sim_Destroy(&sim);
+	}
+	result.msMedian = Median(times, repeat);
+	result.msMin = times[0]; // sorted by Median
+	result.valid = true;
+	free(times);
+	return result;
+}
+
+static const char* MethodOr(const char* name, const char* fallback)
+{
+	return name != NULL ? name : fallback;
+}
+
+static void WriteCsvRow(FILE* file, const RunResult* r, const Options* options, int repeat)
+{
+	const SceneMethods* m = &options->config.overrides.methods;
+	bool tumble = r->engine == engineTumble;
+	fprintf(file, "%s,%s,%d,%d,%.4f,%.4f,%d,%d,%d,%s,%s,%s,%s,%d,%d\n", r->scene, EngineName(r->engine), r->steps,
+			repeat, r->msMedian, r->msMin, r->counters.bodyCount, r->counters.contactCount, r->counters.awakeBodyCount,
+			tumble && m->hasBroadPhase ? MethodOr(Scene_BroadPhaseName(m->broadPhase), "?") : "default",
+			tumble && m->hasNarrowPhase ? MethodOr(Scene_NarrowPhaseName(m->narrowPhase), "?") : "default",
+			tumble && m->hasContinuous ? MethodOr(Scene_ContinuousName(m->continuous), "?") : "default",
+			tumble && m->hasSolver ? MethodOr(Scene_SolverName(m->solver), "?") : "default",
+			tumble ? options->config.subSteps : 0, tumble ? options->config.overrides.velocityIterations : 0);
+}
+
+static const char* s_defaultScenes[] = {"large_pyramid", "many_pyramids", "tumbler", "smash", "spinner", "rain"};
+
+static int RunScenes(const Options* options)
+{
+	FILE* csv = options->csvPath != NULL ? fopen(options->csvPath, "w") : NULL;
+	if (options->csvPath != NULL && csv == NULL)
+	{
+		fprintf(stderr, "tumble-bench: cannot write %s\n", options->csvPath);
+		return 1;
+	}
+	if (csv != NULL)
+	{
+		fprintf(csv, "scene,engine,steps,repeat,ms_median,ms_min,bodies,contacts,awake,broadphase,narrowphase,toi,"
+					 "solver,substeps,iterations\n");
+	}
+	int sceneCount = options->sceneCount;
+	const char* const* names = options->scenes;
+	if (sceneCount == 0)
+	{
+		sceneCount = (int)(sizeof(s_defaultScenes) / sizeof(s_defaultScenes[0]));
+		names = s_defaultScenes;
+	}
+	RunResult results[64][engineCount];
+	memset(results, 0, sizeof(results));
+	printf("%-16s %-12s %6s %10s %10s %8s %9s %8s\n", "scene", "engine", "steps", "ms median", "ms min", "bodies",
+		   "contacts", "awake");
+	for (int s = 0; s < sceneCount && s < 64; ++s)
+	{
+		Scene* scene = Catalogue_Build(names[s]);
+		if (scene == NULL)
+		{
+			fprintf(stderr, "tumble-bench: unknown scene '%s'\n", names[s]);
+			continue;
+		}
+		int steps = options->steps > 0 ? options->steps : scene->steps;
+		for (int e = 0; e < engineCount; ++e)
+		{
+			if ((e != engineTumble && !options->peers) || !EngineAvailable((Engine)e))
+			{
+				continue;
+			}
+			RunResult* r = &results[s][e];
+			*r = RunScene(scene, names[s], (Engine)e, steps, options->repeat, &options->config);
+			if (!r->valid)
+			{
+				fprintf(stderr, "tumble-bench: %s could not build '%s'\n", EngineName((Engine)e), names[s]);
+				continue;
+			}
+			printf("%-16s %-12s %6d %10.3f %10.3f %8d %9d %8d\n", names[s], EngineName((Engine)e), steps, r->msMedian,
+				   r->msMin, r->counters.bodyCount, r->counters.contactCount, r->counters.awakeBodyCount);
+			fflush(stdout);
+			if (csv != NULL)
+			{
+				WriteCsvRow(csv, r, options, options->repeat);
+				fflush(csv);
+			}
+		}
+		Scene_Destroy(scene);
+	}
+	if (options->peers)
+	{
+		printf("\nratios (median ms per step; > 1 means the peer is slower than Tumble)\n");
+		printf("| scene | Tumble ms | Box2D 2.4.1 ms | Chipmunk 7 ms | Box2D/Tumble | Chipmunk/Tumble |\n");
+		printf("|---|---|---|---|---|---|\n");
+		for (int s = 0; s < sceneCount && s < 64; ++s)
+		{
+			const RunResult* r = results[s];
+			if (!r[engineTumble].valid)
+			{
+				continue;
+			}
+			double t = r[engineTumble].msMedian;
+			printf("| %s | %.2f |", names[s], t);
+			for (int e = engineBox2D; e < engineCount; ++e)
+			{
+				r[e].valid ? printf(" %.2f |", r[e].msMedian) : printf(" — |");
+			}
+			for (int e = engineBox2D; e < engineCount; ++e)
+			{
+				r[e].valid ? printf(" %.2f |", r[e].msMedian / t) : printf(" — |");
+			}
+			printf("\n");
+		}
+	}
+	if (csv != NULL)
+	{
+		fclose(csv);
+	}
+	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Solver chart: cost against three error measures
+
+// A ball (r 0.5, e 0.5) whose bottom starts 4.5 m above a ground box; the closed-form first
+// apex is e²·h = 1.125 m. The ground's restitution is 0.5 too so that every engine's mixing rule
+// (max, product of square roots) gives 0.5.
+static Scene* BuildBounceScene(void)
+{
+	Scene* scene = Scene_Create();
+	scene->enableSleep = false;
+	int ground = Scene_AddBody(scene, tb_staticBody, (tbVec2){0.0f, -1.0f}, 0.0f);
+	SceneShape shape = Scene_DefaultShape();
+	shape.geometry = Scene_MakeBoxGeometry(20.0f, 1.0f, (tbVec2){0.0f, 0.0f}, 0.0f);
+	shape.restitution = 0.5f;
+	Scene_AddShape(scene, ground, &shape);
+	int ball = Scene_AddBody(scene, tb_dynamicBody, (tbVec2){0.0f, 5.0f}, 0.0f);
+	shape.geometry = Scene_MakeCircleGeometry((tbVec2){0.0f, 0.0f}, 0.5f);
+	Scene_AddShape(scene, ball, &shape);
+	return scene;
+}
+
+typedef struct SolverPoint
+{
+	char label[32];
+	const char* method;
+	int n;
+	double msPerStep;
+	float drift, penetration, energyError;
+	bool front[3];
+} SolverPoint;
+
+static int TopBody(const Scene* scene)
+{
+	int top = -1;
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		if (scene->bodies[i].type == tb_dynamicBody && (top < 0 || scene->bodies[i].position.y > scene->bodies[top].position.y))
+		{
+			top = i;
+		}
+	}
+	return top;
+}
+
+static void MeasureSolver(SolverPoint* point, Engine engine, const TumbleConfig* config)
+{
+	// Cost and penetration: the 210-box pyramid, 300 steps; poses sampled every 10 steps outside the clock.
+	Scene* pyramid = Catalogue_Build("pyramid");
+	Sim sim;
+	Sim_Create(&sim, pyramid, engine, config);
+	double elapsed = 0.0;
+	point->penetration = 0.0f;
+	const int pyramidSteps = 300;
+	for (int i = 0; i < pyramidSteps; ++i)
+	{
+		double start = NowMs();
+		Sim_Step(&sim);
+		elapsed += NowMs() - start;
+		if (i % 10 == 9)
+		{
+			point->penetration = fmaxf(point->penetration, LargestPenetration(&sim));
+		}
+	}
+	point->msPerStep = elapsed / pyramidSteps;
+	Sim_Destroy(&sim);
+	Scene_Destroy(pyramid);
+
+	// Drift: the top box of a 10-box stack after 10 s.
+	Scene* stack = Catalogue_Build("vertical_stack");
+	int top = TopBody(stack);
+	Sim_Create(&sim, stack, engine, config);
+	for (int i = 0; i < 600; ++i)
+	{
+		Sim_Step(&sim);
+	}
+	PeerBody body = Sim_GetBody(&sim, top);
+	point->drift = tbLength(tbSub(body.position, stack->bodies[top].position));
+	Sim_Destroy(&sim);
+	Scene_Destroy(stack);
+
+	// Energy: the first apex after the bounce against e²h, relative.
+	Scene* bounce = BuildBounceScene();
+	Sim_Create(&sim, bounce, engine, config);
+	bool bounced = false;
+	float apex = 0.0f;
+	for (int i = 0; i < 300; ++i)
+	{
+		Sim_Step(&sim);
+		body = Sim_GetBody(&sim, 1);
+		if (!bounced && body.linearVelocity.y > 0.0f)
+		{
+			bounced = true;
+		}
+		if (bounced)
+		{
+			apex = fmaxf(apex, body.position.y - 0.5f);
+			if (body.linearVelocity.y < 0.0f)
+			{
+				break;
+			}
+		}
+	}
+	point->energyError = fabsf(apex - 1.125f) / 1.125f;
+	Sim_Destroy(&sim);
+	Scene_Destroy(bounce);
+}
+
+static float SolverError(const SolverPoint* p, int measure)
+{
+	return measure == 0 ? p->drift : (measure == 1 ? p->penetration : p->energyError);
+}
+
+static int SolverChart(FILE* out)
+{
+	SolverPoint points[16];
+	int count = 0;
+	const tbSolverMethod methods[3] = {tb_solverSoft, tb_solverBaumgarte, tb_solverNGS};
+	const int ns[4] = {1, 2, 4, 8};
+	for (int m = 0; m < 3; ++m)
+	{
+		for (int k = 0; k < 4; ++k)
+		{
+			TumbleConfig config;
+			memset(&config, 0, sizeof(config));
+			config.overrides.methods.solver = methods[m];
+			config.overrides.methods.hasSolver = true;
+			if (methods[m] == tb_solverSoft)
+			{
+				config.subSteps = ns[k]; // soft: one biased and one relaxing iteration per sub-step
+			}
+			else
+			{
+				config.subSteps = 1; // Baumgarte, NGS: one step of n velocity iterations
+				config.overrides.velocityIterations = ns[k];
+			}
+			SolverPoint* p = points + count++;
+			p->method = Scene_SolverName(methods[m]);
+			p->n = ns[k];
+			snprintf(p->label, sizeof(p->label), "%s-%d", p->method, ns[k]);
+			MeasureSolver(p, engineTumble, &config);
+			fprintf(stderr, "solver %s done\n", p->label);
+		}
+	}
+	int tumbleCount = count;
+	for (int e = engineBox2D; e < engineCount; ++e)
+	{
+		if (!EngineAvailable((Engine)e))
+		{
+			continue;
+		}
+		TumbleConfig config;
+		memset(&config, 0, sizeof(config));
+		SolverPoint* p = points + count++;
+		p->method = EngineName((Engine)e);
+		p->n = e == engineBox2D ? 8 : 10;
+		snprintf(p->label, sizeof(p->label), "%s", p->method);
+		MeasureSolver(p, (Engine)e, &config);
+	}
+	// Pareto front among Tumble's configurations: nothing else is both cheaper and more accurate.
+	for (int i = 0; i < tumbleCount; ++i)
+	{
+		for (int measure = 0; measure < 3; ++measure)
+		{
+			bool dominated = false;
+			for (int j = 0; j < tumbleCount && !dominated; ++j)
+			{
+				float ei = SolverError(points + i, measure), ej = SolverError(points + j, measure);
+				dominated = j != i && points[j].msPerStep <= points[i].msPerStep && ej <= ei &&
+							(points[j].msPerStep < points[i].msPerStep || ej < ei);
+			}
+			points[i].front[measure] = !dominated;
+		}
+	}
+	fprintf(out, "label,method,n,ms_per_step,drift_m,penetration_m,energy_error,front_drift,front_penetration,front_"
+				 "energy\n");
+	for (int i = 0; i < count; ++i)
+	{
+		const SolverPoint* p = points + i;
+		fprintf(out, "%s,%s,%d,%.4f,%.6f,%.6f,%.6f,%d,%d,%d\n", p->label, p->method, p->n, p->msPerStep, p->drift,
+				p->penetration, p->energyError, p->front[0], p->front[1], p->front[2]);
+	}
+	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Narrow-phase chart: cost against normal and depth error
+
+typedef struct PolygonPair
+{
+	tbPolygon a, b;
+	tbTransform xfA, xfB;
+	double depth;	 ///< reference penetration depth (m, > 0)
+	double normalX, normalY; ///< reference normal from A to B
+} PolygonPair;
+
+// Reference: the minimum-overlap face axis of two convex polygons, in double precision. For
+// convex polygons the minimum translation lies along one of the face normals (separating axis
+// theorem), so this is the exact penetration depth and direction.
+static bool ReferencePenetration(PolygonPair* pair)
+{
+	double ax[TB_MAX_POLYGON_VERTICES][2], bx[TB_MAX_POLYGON_VERTICES][2];
+	for (int i = 0; i < pair->a.count; ++i)
+	{
+		tbVec2 p = tbTransformPoint(pair->xfA, pair->a.vertices[i]);
+		ax[i][0] = p.x, ax[i][1] = p.y;
+	}
+	for (int i = 0; i < pair->b.count; ++i)
+	{
+		tbVec2 p = tbTransformPoint(pair->xfB, pair->b.vertices[i]);
+		bx[i][0] = p.x, bx[i][1] = p.y;
+	}
+	double best = 1e30, bestX = 0.0, bestY = 0.0;
+	for (int side = 0; side < 2; ++side)
+	{
+		double(*v)[2] = side == 0 ? ax : bx;
+		int count = side == 0 ? pair->a.count : pair->b.count;
+		for (int i = 0; i < count; ++i)
+		{
+			int j = (i + 1) % count;
+			double ex = v[j][0] - v[i][0], ey = v[j][1] - v[i][1], len = sqrt(ex * ex + ey * ey);
+			double nx = ey / len, ny = -ex / len;
+			double minA = 1e30, maxA = -1e30, minB = 1e30, maxB = -1e30;
+			for (int k = 0; k < pair->a.count; ++k)
+			{
+				double d = ax[k][0] * nx + ax[k][1] * ny;
+				minA = fmin(minA, d), maxA = fmax(maxA, d);
+			}
+			for (int k = 0; k < pair->b.count; ++k)
+			{
+				double d = bx[k][0] * nx + bx[k][1] * ny;
+				minB = fmin(minB, d), maxB = fmax(maxB, d);
+			}
+			double forward = maxA - minB, backward = maxB - minA; // overlap with B pushed along +n / −n
+			if (forward <= 0.0 || backward <= 0.0)
+			{
+				return false;
+			}
+			if (forward < best)
+			{
+				best = forward, bestX = nx, bestY = ny;
+			}
+			if (backward < best)
+			{
+				best = backward, bestX = -nx, bestY = -ny;
+			}
+		}
+	}
+	pair->depth = best, pair->normalX = bestX, pair->normalY = bestY;
+	return true;
+}
+
+static tbPolygon RandomPolygon(bool box)
+{
+	if (box)
+	{
+		return tbMakeBox(RandomFloat(0.1f, 1.0f), RandomFloat(0.1f, 1.0f));
+	}
+	for (;;)
+	{
+		tbVec2 points[8];
+		int count = 3 + (int)RandomFloat(0.0f, 5.99f);
+		for (int i = 0; i < count; ++i)
+		{
+			float angle = 2.0f * TB_PI * ((float)i + RandomFloat(0.0f, 0.8f)) / (float)count;
+			float r = RandomFloat(0.3f, 1.0f);
+			points[i] = (tbVec2){r * cosf(angle), r * sinf(angle)};
+		}
+		tbHull hull = tbComputeHull(points, count);
+		if (hull.count >= 3)
+		{
+			return tbMakePolygon(&hull, 0.0f);
+		}
+	}
+}
+
+#define NARROW_PAIRS 4096
+
+static int NarrowPhaseChart(FILE* out)
+{
+	PolygonPair* pairs = malloc(sizeof(PolygonPair) * NARROW_PAIRS);
+	fprintf(out, "method,family,pairs,ns_per_pair,normal_error_mean_rad,normal_error_max_rad,depth_error_mean_m,"
+				 "depth_error_max_m\n");
+	for (int family = 0; family < 2; ++family)
+	{
+		const char* familyName = family == 0 ? "boxes" : "hulls";
+		s_seed = 777u + (uint32_t)family;
+		int n = 0;
+		while (n < NARROW_PAIRS)
+		{
+			PolygonPair* p = pairs + n;
+			p->a = RandomPolygon(family == 0);
+			p->b = RandomPolygon(family == 0);
+			p->xfA = (tbTransform){{0.0f, 0.0f}, tbMakeRot(RandomFloat(-TB_PI, TB_PI))};
+			// shallow overlaps (what a solver sees) up to a few centimetres
+			p->xfB = (tbTransform){{RandomFloat(-1.5f, 1.5f), RandomFloat(-1.5f, 1.5f)}, tbMakeRot(RandomFloat(-TB_PI, TB_PI))};
+			if (ReferencePenetration(p) && p->depth < 0.1)
+			{
+				++n;
+			}
+		}
+		const tbNarrowPhaseMethod methods[2] = {tb_narrowPhaseSAT, tb_narrowPhaseGJK};
+		for (int m = 0; m < 2; ++m)
+		{
+			tbGeometry ga = {.type = tb_polygonShape}, gb = {.type = tb_polygonShape};
+			double normalSum = 0.0, normalMax = 0.0, depthSum = 0.0, depthMax = 0.0;
+			int measured = 0;
+			for (int i = 0; i < NARROW_PAIRS; ++i)
+			{
+				ga.polygon = pairs[i].a, gb.polygon = pairs[i].b;
+				tbManifold manifold = tbCollideShapes(&ga, pairs[i].xfA, &gb, pairs[i].xfB, methods[m]);
+				if (manifold.pointCount == 0)
+				{
+					normalMax = fmax(normalMax, TB_PI), depthMax = fmax(depthMax, pairs[i].depth);
+					normalSum += TB_PI, depthSum += pairs[i].depth, ++measured;
+					continue;
+				}
+				double c = manifold.normal.x * pairs[i].normalX + manifold.normal.y * pairs[i].normalY;
+				double angle = acos(fmin(1.0, fmax(-1.0, c)));
+				double depth = 0.0;
+				for (int k = 0; k < manifold.pointCount; ++k)
+				{
+					depth = fmax(depth, -manifold.points[k].separation);
+				}
+				double depthError = fabs(depth - pairs[i].depth);
+				normalSum += angle, normalMax = fmax(normalMax, angle);
+				depthSum += depthError, depthMax = fmax(depthMax, depthError);
+				++measured;
+			}
+			// Cost: the whole set, repeated; the best of five passes (the machine is shared).
+			double best = 1e30;
+			float sink = 0.0f;
+			for (int pass = 0; pass < 5; ++pass)
+			{
+				double start = NowMs();
+				for (int repeat = 0; repeat < 20; ++repeat)
+				{
+					for (int i = 0; i < NARROW_PAIRS; ++i)
+					{
+						ga.polygon = pairs[i].a, gb.polygon = pairs[i].b;
+						tbManifold manifold = tbCollideShapes(&ga, pairs[i].xfA, &gb, pairs[i].xfB, methods[m]);
+						sink += manifold.normal.x;
+					}
+				}
+				best = fmin(best, (NowMs() - start) * 1e6 / (20.0 * NARROW_PAIRS));
+			}
+			fprintf(out, "%s,%s,%d,%.1f,%.3e,%.3e,%.3e,%.3e\n", Scene_NarrowPhaseName(methods[m]), familyName,
+					NARROW_PAIRS, best + 0.0 * sink, normalSum / measured, normalMax, depthSum / measured, depthMax);
+		}
+	}
+	free(pairs);
+	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Time-of-impact chart: cost against error, closed forms as the reference
+
+#define TOI_QUERIES 4096
+
+typedef struct TOICase
+{
+	tbSweep sweepA, sweepB;
+	double exact; ///< fraction at which the surfaces are targetSeparation apart
+} TOICase;
+
+// Circles (r 0.1–0.5) approaching at 1–40 m per step along a random line with some offset, B at rest:
+// the exact fraction solves |d + v t| = R in double precision.
+static void MakeCircleCases(TOICase* cases, tbCircle* circlesA, tbCircle* circlesB, float target)
+{
+	s_seed = 99u;
+	int n = 0;
+	while (n < TOI_QUERIES)
+	{
+		TOICase* c = cases + n;
+		circlesA[n] = (tbCircle){{0.0f, 0.0f}, RandomFloat(0.1f, 0.5f)};
+		circlesB[n] = (tbCircle){{0.0f, 0.0f}, RandomFloat(0.1f, 0.5f)};
+		tbVec2 start = {RandomFloat(-5.0f, -1.5f), RandomFloat(-0.5f, 0.5f)};
+		tbVec2 travel = {RandomFloat(2.0f, 40.0f), RandomFloat(-0.3f, 0.3f)};
+		tbRot q = {1.0f, 0.0f};
+		c->sweepA = (tbSweep){{0.0f, 0.0f}, start, tbAdd(start, travel), q, q};
+		c->sweepB = (tbSweep){{0.0f, 0.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}, q, q};
+		double R = (double)circlesA[n].radius + circlesB[n].radius + target;
+		double dx = start.x, dy = start.y, vx = travel.x, vy = travel.y;
+		double a = vx * vx + vy * vy, b = 2.0 * (dx * vx + dy * vy), cc = dx * dx + dy * dy - R * R;
+		double disc = b * b - 4.0 * a * cc;
+		if (cc <= 0.0 || disc <= 0.0)
+		{
+			continue;
+		}
+		double t = (-b - sqrt(disc)) / (2.0 * a);
+		if (t <= 0.0 || t >= 1.0)
+		{
+			continue;
+		}
+		c->exact = t;
+		++n;
+	}
+}
+
+// Boxes (half size 0.5) translating along x into a box at rest, rows offset in y by less than a
+// box: the exact fraction is the gap over the travel.
+static void MakeBoxCases(TOICase* cases, float target)
+{
+	s_seed = 55u;
+	for (int n = 0; n < TOI_QUERIES; ++n)
+	{
+		TOICase* c = cases + n;
+		tbVec2 start = {RandomFloat(1.5f, 5.0f), RandomFloat(-0.9f, 0.9f)};
+		float travel = RandomFloat(start.x, 40.0f);
+		tbRot q = {1.0f, 0.0f};
+		c->sweepA = (tbSweep){{0.0f, 0.0f}, start, {start.x - travel, start.y}, q, q};
+		c->sweepB = (tbSweep){{0.0f, 0.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}, q, q};
+		c->exact = ((double)start.x - 1.0 - target) / travel;
+	}
+}
+
+static void WriteTOIRow(FILE* out, const char* method, const char* family, const TOICase* cases,
+						const tbTOIOutput* outputs, double ns, double metresPerFraction)
+{
+	double sum = 0.0, largest = 0.0;
+	int failures = 0;
+	for (int i = 0; i < TOI_QUERIES; ++i)
+	{
+		if (outputs[i].state != tb_toiStateHit)
+		{
+			++failures;
+			continue;
+		}
+		double travel = metresPerFraction > 0.0 ? metresPerFraction : tbLength(tbSub(cases[i].sweepA.c2, cases[i].sweepA.c1));
+		double error = fabs((double)outputs[i].fraction - cases[i].exact) * travel;
+		sum += error, largest = fmax(largest, error);
+	}
+	int hits = TOI_QUERIES - failures;
+	fprintf(out, "%s,%s,%d,%.1f,%.3e,%.3e,%d\n", method, family, TOI_QUERIES, ns, hits > 0 ? sum / hits : 0.0, largest,
+			failures);
+}
+
+static int TOIChart(FILE* out)
+{
+	const float target = TB_TOI_TARGET_SEPARATION;
+	TOICase* cases = malloc(sizeof(TOICase) * TOI_QUERIES);
+	tbCircle* circlesA = malloc(sizeof(tbCircle) * TOI_QUERIES);
+	tbCircle* circlesB = malloc(sizeof(tbCircle) * TOI_QUERIES);
+	tbTOIOutput* outputs = malloc(sizeof(tbTOIOutput) * TOI_QUERIES);
+	fprintf(out, "method,family,queries,ns_per_query,error_mean_m,error_max_m,failures\n");
+
+	MakeCircleCases(cases, circlesA, circlesB, target);
+	for (int method = 0; method < 2; ++method)
+	{
+		double best = 1e30;
+		for (int pass = 0; pass < 5; ++pass)
+		{
+			double start = NowMs();
+			for (int i = 0; i < TOI_QUERIES; ++i)
+			{
+				if (method == 0)
+				{
+					outputs[i] = tbTimeOfImpactCircles(circlesA + i, &cases[i].sweepA, circlesB + i, &cases[i].sweepB, 1.0f,
+													   target);
+				}
+				else
+				{
+					tbGeometry ga = {.type = tb_circleShape, .circle = circlesA[i]};
+					tbGeometry gb = {.type = tb_circleShape, .circle = circlesB[i]};
+					tbTOIInput input = {tbMakeShapeProxy(&ga), tbMakeShapeProxy(&gb), cases[i].sweepA, cases[i].sweepB, 1.0f,
+										target};
+					outputs[i] = tbTimeOfImpact(&input);
+				}
+			}
+			best = fmin(best, (NowMs() - start) * 1e6 / TOI_QUERIES);
+		}
+		WriteTOIRow(out, method == 0 ? "quadratic" : "conservative", "circles", cases, outputs, best, 0.0);
+	}
+
+	MakeBoxCases(cases, target);
+	tbGeometry box = {.type = tb_polygonShape, .polygon = tbMakeBox(0.5f, 0.5f)};
+	tbShapeProxy proxy = tbMakeShapeProxy(&box);
+	double best = 1e30;
+	for (int pass = 0; pass < 5; ++pass)
+	{
+		double start = NowMs();
+		for (int i = 0; i < TOI_QUERIES; ++i)
+		{
+			tbTOIInput input = {proxy, proxy, cases[i].sweepA, cases[i].sweepB, 1.0f, target};
+			outputs[i] = tbTimeOfImpact(&input);
+		}
+		best = fmin(best, (NowMs() - start) * 1e6 / TOI_QUERIES);
+	}
+	WriteTOIRow(out, "conservative", "boxes", cases, outputs, best, 0.0);
+	free(cases);
+	free(circlesA);
+	free(circlesB);
+	free(outputs);
+	return 0;
+}

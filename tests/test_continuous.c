@@ -1,0 +1,232 @@
+// Continuous collision in the world: fast bodies against a thin static wall, bullets against a
+// thin dynamic plank, a spinning thin box, and no continuous work in a scene without fast bodies.
+// "Passes through" means the body's centre ends beyond the wall's far face by more than its own
+// half thickness — it was never stopped.
+#include <criterion/criterion.h>
+
+#include "tumble/tumble.h"
+
+#include <math.h>
+#include <string.h>
+
+#define WALL_X 5.0f
+#define WALL_HALF_THICKNESS 0.05f // the 0.1 m thick wall of the issue
+
+static tbWorldId MakeWallWorld(tbContinuousMethod method)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, 0.0f);
+	def.continuous = method;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bd = tbDefaultBodyDef();
+	bd.position = tbMakeVec2(WALL_X, 0.0f);
+	tbBodyId wall = tbCreateBody(world, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbPolygon box = tbMakeBox(WALL_HALF_THICKNESS, 10.0f);
+	tbCreatePolygonShape(wall, &sd, &box);
+	return world;
+}
+
+static tbBodyId Launch(tbWorldId world, const tbGeometry* geometry, float speed, float angularVelocity, tbRot rotation,
+					   bool bullet)
+{
+	tbBodyDef bd = tbDefaultBodyDef();
+	bd.type = tb_dynamicBody;
+	// Start 0.3 m from the origin so that no step ends exactly inside the wall.
+	bd.position = tbMakeVec2(0.3f, 0.0f);
+	bd.rotation = rotation;
+	bd.linearVelocity = tbMakeVec2(speed, 0.0f);
+	bd.angularVelocity = angularVelocity;
+	bd.isBullet = bullet;
+	tbBodyId body = tbCreateBody(world, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbCreateShape(body, &sd, geometry);
+	return body;
+}
+
+/// Step one second; true if the body ever got past the wall.
+static bool PassesThrough(tbWorldId world, tbBodyId body)
+{
+	bool through = false;
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+		through = through || tbBody_GetPosition(body).x > WALL_X + WALL_HALF_THICKNESS;
+	}
+	return through;
+}
+
+static tbGeometry Circle(float radius)
+{
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_circleShape;
+	g.circle.radius = radius;
+	return g;
+}
+
+static tbGeometry Box(float hx, float hy)
+{
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_polygonShape;
+	g.polygon = tbMakeBox(hx, hy);
+	return g;
+}
+
+static tbGeometry Capsule(void)
+{
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_capsuleShape;
+	g.capsule.center1 = tbMakeVec2(-0.1f, 0.0f);
+	g.capsule.center2 = tbMakeVec2(0.1f, 0.0f);
+	g.capsule.radius = 0.05f;
+	return g;
+}
+
+static const float kSpeeds[4] = {10.0f, 100.0f, 300.0f, 1000.0f};
+
+static void CheckWall(tbGeometry geometry)
+{
+	for (int method = 0; method < 3; ++method)
+	{
+		if (method == tb_continuousOff)
+		{
+			continue;
+		}
+		for (int i = 0; i < 4; ++i)
+		{
+			tbWorldId world = MakeWallWorld((tbContinuousMethod)method);
+			tbBodyId body = Launch(world, &geometry, kSpeeds[i], 0.0f, tb_rot_identity, false);
+			cr_assert_not(PassesThrough(world, body), "method %d at %g m/s passed the wall", method, (double)kSpeeds[i]);
+			tbDestroyWorld(world);
+		}
+	}
+	// Without continuous collision: at ≥ 300 m/s one step moves ≥ 5 m, far more than wall plus body.
+	for (int i = 2; i < 4; ++i)
+	{
+		tbWorldId world = MakeWallWorld(tb_continuousOff);
+		tbBodyId body = Launch(world, &geometry, kSpeeds[i], 0.0f, tb_rot_identity, false);
+		cr_assert(PassesThrough(world, body), "continuous off at %g m/s should tunnel", (double)kSpeeds[i]);
+		tbDestroyWorld(world);
+	}
+}
+
+Test(continuous, circle_never_passes_thin_wall)
+{
+	CheckWall(Circle(0.1f));
+}
+
+Test(continuous, small_box_never_passes_thin_wall)
+{
+	CheckWall(Box(0.1f, 0.1f));
+}
+
+Test(continuous, capsule_never_passes_thin_wall)
+{
+	CheckWall(Capsule());
+}
+
+Test(continuous, bullet_never_passes_thin_dynamic_plank)
+{
+	// A 0.1 m thick, 4 m tall plank (dynamic, at rest, no gravity) and a bullet circle r 0.05 at
+	// 300 m/s. With continuous collision the bullet never gets past the plank's far face; without
+	// it the bullet tunnels (5 m per step against 0.2 m of plank plus bullet).
+	for (int on = 0; on < 2; ++on)
+	{
+		tbWorldDef def = tbDefaultWorldDef();
+		def.gravity = tbMakeVec2(0.0f, 0.0f);
+		def.continuous = on ? tb_continuousDefault : tb_continuousOff;
+		tbWorldId world = tbCreateWorld(&def);
+		tbBodyDef bd = tbDefaultBodyDef();
+		bd.type = tb_dynamicBody;
+		bd.position = tbMakeVec2(WALL_X, 0.0f);
+		tbBodyId plank = tbCreateBody(world, &bd);
+		tbShapeDef sd = tbDefaultShapeDef();
+		tbPolygon box = tbMakeBox(0.05f, 2.0f);
+		tbCreatePolygonShape(plank, &sd, &box);
+		tbGeometry g = Circle(0.05f);
+		tbBodyId bullet = Launch(world, &g, 300.0f, 0.0f, tb_rot_identity, true);
+		bool through = false;
+		for (int i = 0; i < 30; ++i)
+		{
+			tbWorld_Step(world, 1.0f / 60.0f, 4);
+			through = through || tbBody_GetPosition(bullet).x > tbBody_GetPosition(plank).x + 0.05f;
+		}
+		if (on)
+		{
+			cr_assert_not(through, "bullet passed the plank with continuous collision on");
+			// Momentum went into the plank: it moves in +x.
+			cr_assert_gt(tbBody_GetLinearVelocity(plank).x, 0.0f);
+		}
+		else
+		{
+			cr_assert(through, "bullet should tunnel with continuous collision off");
+		}
+		tbDestroyWorld(world);
+	}
+}
+
+Test(continuous, spinning_thin_box_never_passes)
+{
+	// 100 launches of a 4 × 0.1 m box at 100 m/s spinning at up to 50 rad/s with a random initial
+	// angle (seeded LCG). Conservative advancement must never hit its iteration cap, and stays
+	// under 20 iterations (the pass criterion in shared/STRESS.md).
+	uint32_t seed = 12345u;
+	int maxIterations = 0;
+	for (int launch = 0; launch < 100; ++launch)
+	{
+		seed = seed * 1664525u + 1013904223u;
+		float omega = 50.0f * ((float)(seed >> 8) / 16777216.0f * 2.0f - 1.0f);
+		seed = seed * 1664525u + 1013904223u;
+		float angle = TB_PI * ((float)(seed >> 8) / 16777216.0f);
+		tbWorldId world = MakeWallWorld(tb_continuousDefault);
+		tbGeometry g = Box(2.0f, 0.05f);
+		tbBodyId body = Launch(world, &g, 100.0f, omega, tbMakeRot(angle), false);
+		bool through = false;
+		for (int i = 0; i < 40; ++i)
+		{
+			tbWorld_Step(world, 1.0f / 60.0f, 4);
+			tbCounters c = tbWorld_GetCounters(world);
+			cr_assert_eq(c.toiFailures, 0, "launch %d: time of impact hit its iteration cap", launch);
+			maxIterations = c.toiIterationsMax > maxIterations ? c.toiIterationsMax : maxIterations;
+			through = through || tbBody_GetPosition(body).x > WALL_X + WALL_HALF_THICKNESS;
+		}
+		cr_assert_not(through, "launch %d (omega %.2f, angle %.3f) passed the wall", launch, (double)omega, (double)angle);
+		tbDestroyWorld(world);
+	}
+	cr_assert_lt(maxIterations, 20);
+	cr_log_info("largest conservative-advancement iteration count: %d", maxIterations);
+}
+
+Test(continuous, resting_scene_does_no_continuous_work)
+{
+	// A settled stack has no fast bodies: zero time-of-impact queries in every step.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bd = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbPolygon groundBox = tbMakeOffsetBox(20.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbCreatePolygonShape(ground, &sd, &groundBox);
+	bd.type = tb_dynamicBody;
+	for (int i = 0; i < 5; ++i)
+	{
+		bd.position = tbMakeVec2(0.0f, 0.5f + (float)i);
+		tbBodyId b = tbCreateBody(world, &bd);
+		tbPolygon square = tbMakeSquare(0.5f);
+		tbCreatePolygonShape(b, &sd, &square);
+	}
+	int calls = 0, fast = 0;
+	for (int i = 0; i < 120; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+		tbCounters c = tbWorld_GetCounters(world);
+		calls += c.toiCalls;
+		fast += c.fastBodies;
+	}
+	cr_assert_eq(calls, 0);
+	cr_assert_eq(fast, 0);
+	tbDestroyWorld(world);
+}

@@ -1,0 +1,205 @@
+// World queries: ray casts (closest and all hits with clipping), AABB, point and shape overlap,
+// shape casts, and query filters. Expected answers are hand-computed from the scene geometry.
+#include <criterion/criterion.h>
+
+#include "tumble/tumble.h"
+
+#include <string.h>
+
+/// Ground box top at y = 0 from x = −10 to 10; a unit box centred at (3, 0.5) resting on it (category 2);
+/// a circle of radius 0.5 at (−3, 2) (category 4).
+typedef struct Scene
+{
+	tbWorldId world;
+	tbShapeId ground, box, ball;
+} Scene;
+
+static Scene MakeScene(void)
+{
+	Scene s;
+	tbWorldDef def = tbDefaultWorldDef();
+	s.world = tbCreateWorld(&def);
+	tbBodyDef bd = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(s.world, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbPolygon groundBox = tbMakeOffsetBox(10.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	s.ground = tbCreatePolygonShape(ground, &sd, &groundBox);
+
+	bd.type = tb_dynamicBody;
+	bd.position = tbMakeVec2(3.0f, 0.5f);
+	tbBodyId box = tbCreateBody(s.world, &bd);
+	sd.filter.categoryBits = 2;
+	tbPolygon square = tbMakeSquare(0.5f);
+	s.box = tbCreatePolygonShape(box, &sd, &square);
+
+	bd.position = tbMakeVec2(-3.0f, 2.0f);
+	tbBodyId ball = tbCreateBody(s.world, &bd);
+	sd.filter.categoryBits = 4;
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	s.ball = tbCreateCircleShape(ball, &sd, &circle);
+	return s;
+}
+
+Test(query, ray_closest_hits_box_face)
+{
+	// A ray from (0, 0.5) to (10, 0.5) meets the box's left face x = 2.5 at fraction 0.25.
+	Scene s = MakeScene();
+	tbRayResult r = tbWorld_CastRayClosest(s.world, tbMakeVec2(0.0f, 0.5f), tbMakeVec2(10.0f, 0.0f), tbDefaultQueryFilter());
+	cr_assert(r.hit);
+	cr_assert(TB_ID_EQUALS(r.shapeId, s.box));
+	cr_assert_float_eq(r.fraction, 0.25f, 1e-6f);
+	cr_assert_float_eq(r.point.x, 2.5f, 1e-5f);
+	cr_assert_float_eq(r.normal.x, -1.0f, 1e-6f);
+	tbDestroyWorld(s.world);
+}
+
+Test(query, ray_closest_hits_circle_then_ground)
+{
+	// Straight down through the circle centre at x = −3: top of the circle y = 2.5 from origin y = 5
+	// over a 10 m ray is fraction 0.25; with the circle filtered out, the ground at y = 0 (0.5).
+	Scene s = MakeScene();
+	tbRayResult r = tbWorld_CastRayClosest(s.world, tbMakeVec2(-3.0f, 5.0f), tbMakeVec2(0.0f, -10.0f), tbDefaultQueryFilter());
+	cr_assert(r.hit && TB_ID_EQUALS(r.shapeId, s.ball));
+	cr_assert_float_eq(r.fraction, 0.25f, 1e-6f);
+	cr_assert_float_eq(r.normal.y, 1.0f, 1e-6f);
+	tbQueryFilter noBalls = {TB_DEFAULT_CATEGORY_BITS, ~(uint64_t)4};
+	r = tbWorld_CastRayClosest(s.world, tbMakeVec2(-3.0f, 5.0f), tbMakeVec2(0.0f, -10.0f), noBalls);
+	cr_assert(r.hit && TB_ID_EQUALS(r.shapeId, s.ground));
+	cr_assert_float_eq(r.fraction, 0.5f, 1e-6f);
+	tbDestroyWorld(s.world);
+}
+
+typedef struct Hits
+{
+	int count;
+	float fractions[8];
+	float returnValue; // what the callback returns: 1 continue, 0 stop, −1 ignore, fraction clip
+} Hits;
+
+static float CollectHit(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+{
+	(void)shapeId;
+	(void)point;
+	(void)normal;
+	Hits* hits = context;
+	if (hits->count < 8)
+	{
+		hits->fractions[hits->count] = fraction;
+	}
+	hits->count += 1;
+	return hits->returnValue < -0.5f ? -1.0f : (hits->returnValue > 0.5f ? 1.0f : hits->returnValue);
+}
+
+Test(query, ray_all_hits_continue_and_stop)
+{
+	// A horizontal ray at y = 0.25 from x = −20 to 20 crosses the ball? No (ball spans y 1.5..2.5);
+	// it crosses the box (x 2.5..3.5) only. At y = −0.5 it starts outside the ground (x −20) and
+	// enters the ground at x = −10 (fraction 0.25).
+	Scene s = MakeScene();
+	Hits hits = {0, {0}, 1.0f};
+	tbWorld_CastRay(s.world, tbMakeVec2(-20.0f, 0.25f), tbMakeVec2(40.0f, 0.0f), tbDefaultQueryFilter(), CollectHit, &hits);
+	cr_assert_eq(hits.count, 1);
+	cr_assert_float_eq(hits.fractions[0], (2.5f + 20.0f) / 40.0f, 1e-6f);
+	Hits ground = {0, {0}, 1.0f};
+	tbWorld_CastRay(s.world, tbMakeVec2(-20.0f, -0.5f), tbMakeVec2(40.0f, 0.0f), tbDefaultQueryFilter(), CollectHit, &ground);
+	cr_assert_eq(ground.count, 1);
+	cr_assert_float_eq(ground.fractions[0], 0.25f, 1e-6f);
+	// A ray through ball (top) and then box is impossible; use a diagonal hitting both ball and ground:
+	// from (−3, 5) down: ball at 0.25 and ground at 0.5. With "continue" both are reported.
+	Hits both = {0, {0}, 1.0f};
+	tbWorld_CastRay(s.world, tbMakeVec2(-3.0f, 5.0f), tbMakeVec2(0.0f, -10.0f), tbDefaultQueryFilter(), CollectHit, &both);
+	cr_assert_eq(both.count, 2);
+	// With "stop" (return 0) exactly one is reported.
+	Hits stop = {0, {0}, 0.0f};
+	tbWorld_CastRay(s.world, tbMakeVec2(-3.0f, 5.0f), tbMakeVec2(0.0f, -10.0f), tbDefaultQueryFilter(), CollectHit, &stop);
+	cr_assert_eq(stop.count, 1);
+	tbDestroyWorld(s.world);
+}
+
+static bool CountOverlap(tbShapeId shapeId, void* context)
+{
+	(void)shapeId;
+	*(int*)context += 1;
+	return true;
+}
+
+Test(query, overlap_aabb_point_and_shape)
+{
+	Scene s = MakeScene();
+	// A box around the ball only (fat boxes are 0.1 m larger than the ball's tight box [−3.5, −2.5]×[1.5, 2.5]).
+	int count = 0;
+	tbAABB box = {{-4.0f, 1.0f}, {-2.0f, 3.0f}};
+	tbWorld_OverlapAABB(s.world, box, tbDefaultQueryFilter(), CountOverlap, &count);
+	cr_assert_eq(count, 1);
+	// A box covering everything finds all three shapes.
+	count = 0;
+	tbAABB all = {{-20.0f, -5.0f}, {20.0f, 5.0f}};
+	tbWorld_OverlapAABB(s.world, all, tbDefaultQueryFilter(), CountOverlap, &count);
+	cr_assert_eq(count, 3);
+	// Point inside the box body (3, 0.5) and one just outside its corner (3.6, 1.1).
+	count = 0;
+	tbWorld_OverlapPoint(s.world, tbMakeVec2(3.0f, 0.5f), tbDefaultQueryFilter(), CountOverlap, &count);
+	cr_assert_eq(count, 1);
+	count = 0;
+	tbWorld_OverlapPoint(s.world, tbMakeVec2(3.6f, 1.1f), tbDefaultQueryFilter(), CountOverlap, &count);
+	cr_assert_eq(count, 0);
+	// A circle of radius 0.3 at (−3, 2.7) overlaps the ball (centre distance 0.7 < 0.8); at (−3, 2.9) it does not (0.9 > 0.8).
+	tbGeometry probe;
+	memset(&probe, 0, sizeof(probe));
+	probe.type = tb_circleShape;
+	probe.circle.radius = 0.3f;
+	tbTransform xf = {{-3.0f, 2.7f}, {1.0f, 0.0f}};
+	count = 0;
+	tbWorld_OverlapShape(s.world, &probe, xf, tbDefaultQueryFilter(), CountOverlap, &count);
+	cr_assert_eq(count, 1);
+	xf.p.y = 2.9f;
+	count = 0;
+	tbWorld_OverlapShape(s.world, &probe, xf, tbDefaultQueryFilter(), CountOverlap, &count);
+	cr_assert_eq(count, 0);
+	tbDestroyWorld(s.world);
+}
+
+static float ClosestCast(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+{
+	(void)point;
+	(void)normal;
+	tbRayResult* r = context;
+	r->shapeId = shapeId;
+	r->fraction = fraction;
+	r->hit = true;
+	return fraction;
+}
+
+Test(query, shape_cast_circle_onto_box)
+{
+	// A circle of radius 0.25 at (0, 0.5) moving +10 m in x touches the box's left face x = 2.5
+	// when its centre reaches x = 2.25: fraction 0.225 (shape casts stop within a linear slop).
+	Scene s = MakeScene();
+	tbGeometry probe;
+	memset(&probe, 0, sizeof(probe));
+	probe.type = tb_circleShape;
+	probe.circle.radius = 0.25f;
+	tbTransform xf = {{0.0f, 0.5f}, {1.0f, 0.0f}};
+	tbRayResult r;
+	memset(&r, 0, sizeof(r));
+	tbQueryFilter onlyBox = {TB_DEFAULT_CATEGORY_BITS, 2};
+	tbWorld_CastShape(s.world, &probe, xf, tbMakeVec2(10.0f, 0.0f), onlyBox, ClosestCast, &r);
+	cr_assert(r.hit && TB_ID_EQUALS(r.shapeId, s.box));
+	cr_assert_float_eq(r.fraction, 0.225f, TB_LINEAR_SLOP / 10.0f);
+	tbDestroyWorld(s.world);
+}
+
+Test(query, bad_query_input_rejected)
+{
+	Scene s = MakeScene();
+	int before = tbGetErrorCount();
+	tbRayResult r = tbWorld_CastRayClosest(s.world, tbMakeVec2(NAN, 0.0f), tbMakeVec2(1.0f, 0.0f), tbDefaultQueryFilter());
+	cr_assert_not(r.hit);
+	tbAABB bad = {{1.0f, 1.0f}, {0.0f, 0.0f}};
+	int count = 0;
+	cr_assert_not(tbWorld_OverlapAABB(s.world, bad, tbDefaultQueryFilter(), CountOverlap, &count));
+	cr_assert_not(tbWorld_OverlapPoint(s.world, tbMakeVec2(0.0f, 0.0f), tbDefaultQueryFilter(), NULL, NULL));
+	cr_assert_eq(tbGetErrorCount(), before + 3);
+	cr_assert_eq(count, 0);
+	tbDestroyWorld(s.world);
+}

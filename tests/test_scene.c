@@ -1,0 +1,356 @@
+// Scene model, scene files and catalogue: every catalogue scene survives export → parse with the
+// same bodies, shapes and materials; malformed files give the exact field-path message.
+#include "catalogue.h"
+#include "scene_file.h"
+
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TOLERANCE 1e-6f
+
+static bool Near(float a, float b)
+{
+	return fabsf(a - b) <= TOLERANCE * (1.0f + fabsf(a));
+}
+
+static bool NearVec(tbVec2 a, tbVec2 b)
+{
+	return Near(a.x, b.x) && Near(a.y, b.y);
+}
+
+static void ExpectSameGeometry(const tbGeometry* a, const tbGeometry* b, const char* where)
+{
+	cr_assert_eq(a->type, b->type, "%s: shape kind", where);
+	switch (a->type)
+	{
+		case tb_circleShape:
+			cr_assert(NearVec(a->circle.center, b->circle.center) && Near(a->circle.radius, b->circle.radius), "%s",
+					  where);
+			break;
+		case tb_capsuleShape:
+			cr_assert(NearVec(a->capsule.center1, b->capsule.center1) &&
+						  NearVec(a->capsule.center2, b->capsule.center2) && Near(a->capsule.radius, b->capsule.radius),
+					  "%s", where);
+			break;
+		case tb_segmentShape:
+			cr_assert(NearVec(a->segment.point1, b->segment.point1) && NearVec(a->segment.point2, b->segment.point2),
+					  "%s", where);
+			break;
+		default:
+			cr_assert_eq(a->polygon.count, b->polygon.count, "%s: vertex count", where);
+			cr_assert(Near(a->polygon.radius, b->polygon.radius), "%s: radius", where);
+			for (int i = 0; i < a->polygon.count; ++i)
+			{
+				cr_assert(NearVec(a->polygon.vertices[i], b->polygon.vertices[i]), "%s: vertex %d", where, i);
+				cr_assert(NearVec(a->polygon.normals[i], b->polygon.normals[i]), "%s: normal %d", where, i);
+			}
+			cr_assert(NearVec(a->polygon.centroid, b->polygon.centroid), "%s: centroid", where);
+			break;
+	}
+}
+
+static void ExpectSameBody(const SceneBody* a, const SceneBody* b, const char* where)
+{
+	cr_assert_eq(a->type, b->type, "%s: type", where);
+	cr_assert_str_eq(a->name, b->name, "%s: name", where);
+	cr_assert(NearVec(a->position, b->position) && Near(a->angle, b->angle), "%s: placement", where);
+	cr_assert(NearVec(a->linearVelocity, b->linearVelocity) && Near(a->angularVelocity, b->angularVelocity), "%s",
+			  where);
+	cr_assert(Near(a->linearDamping, b->linearDamping) && Near(a->angularDamping, b->angularDamping), "%s", where);
+	cr_assert(Near(a->gravityScale, b->gravityScale), "%s: gravity scale", where);
+	cr_assert(a->bullet == b->bullet && a->isAwake == b->isAwake, "%s: flags", where);
+	cr_assert_eq(a->shapeCount, b->shapeCount, "%s: shape count", where);
+	for (int i = 0; i < a->shapeCount; ++i)
+	{
+		const SceneShape* sa = a->shapes + i;
+		const SceneShape* sb = b->shapes + i;
+		ExpectSameGeometry(&sa->geometry, &sb->geometry, where);
+		cr_assert(Near(sa->density, sb->density) && Near(sa->friction, sb->friction), "%s: material", where);
+		cr_assert(Near(sa->restitution, sb->restitution) && sa->isSensor == sb->isSensor, "%s: material", where);
+	}
+}
+
+static void ExpectSameScene(const Scene* a, const Scene* b, const char* name)
+{
+	cr_assert(NearVec(a->gravity, b->gravity), "%s: gravity", name);
+	cr_assert(Near(a->timeStep, b->timeStep), "%s: time step", name);
+	cr_assert_eq(a->subSteps, b->subSteps, "%s", name);
+	cr_assert_eq(a->steps, b->steps, "%s", name);
+	cr_assert_eq(a->enableSleep, b->enableSleep, "%s", name);
+	cr_assert_eq(memcmp(&a->methods, &b->methods, sizeof(SceneMethods)), 0, "%s: methods", name);
+	cr_assert_eq(a->bodyCount, b->bodyCount, "%s: body count", name);
+	char where[128];
+	for (int i = 0; i < a->bodyCount; ++i)
+	{
+		snprintf(where, sizeof(where), "%s body %d", name, i);
+		ExpectSameBody(a->bodies + i, b->bodies + i, where);
+	}
+}
+
+static Scene* RoundTrip(const Scene* scene)
+{
+	char* text = SceneFile_Export(scene);
+	cr_assert_not_null(text);
+	char error[256] = "";
+	Scene* loaded = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(loaded, "reload failed: %s", error);
+	free(text);
+	return loaded;
+}
+
+Test(scene, catalogue_has_the_required_scenes)
+{
+	static const char* const required[] = {
+		"pyramid",		 "vertical_stack", "card_house",	"dominoes", "newtons_cradle", "ramp",
+		"mass_ratio",	 "bullets_wall",   "spinning_box",	"rain",		"confined",		  "large_pyramid",
+		"many_pyramids", "tumbler",		   "smash",			"spinner"};
+	for (size_t i = 0; i < sizeof(required) / sizeof(required[0]); ++i)
+	{
+		cr_assert_geq(Catalogue_Find(required[i]), 0, "missing %s", required[i]);
+	}
+	cr_assert_null(Catalogue_Build("no_such_scene"));
+	cr_assert_null(Catalogue_Name(Catalogue_Count()));
+}
+
+Test(scene, catalogue_counts_follow_the_set_ups)
+{
+	static const struct
+	{
+		const char* name;
+		int dynamicCount;
+		int steps;
+	} expected[] = {{"pyramid", 210, 300},		 {"card_house", 40, 600}, {"large_pyramid", 5050, 500},
+					{"many_pyramids", 22000, 200}, {"tumbler", 2025, 750},	{"smash", 9601, 300},
+					{"confined", 625, 600},		   {"spinner", 6076, 1000}, {"newtons_cradle", 6, 180}};
+	for (size_t i = 0; i < sizeof(expected) / sizeof(expected[0]); ++i)
+	{
+		Scene* scene = Catalogue_Build(expected[i].name);
+		int dynamicCount = 0;
+		for (int b = 0; b < scene->bodyCount; ++b)
+		{
+			dynamicCount += scene->bodies[b].type == tb_dynamicBody ? 1 : 0;
+		}
+		cr_assert_eq(dynamicCount, expected[i].dynamicCount, "%s", expected[i].name);
+		cr_assert_eq(scene->steps, expected[i].steps, "%s", expected[i].name);
+		Scene_Destroy(scene);
+	}
+}
+
+Test(scene, every_catalogue_scene_round_trips_through_json)
+{
+	for (int i = 0; i < Catalogue_Count(); ++i)
+	{
+		Scene* scene = Catalogue_Build(Catalogue_Name(i));
+		cr_assert_not_null(scene);
+		cr_assert_gt(scene->steps, 0);
+		Scene* loaded = RoundTrip(scene);
+		ExpectSameScene(scene, loaded, Catalogue_Name(i));
+		Scene_Destroy(loaded);
+		Scene_Destroy(scene);
+	}
+}
+
+// The world built from the reloaded scene matches the world built from the original.
+static void ExpectSameWorld(const char* name)
+{
+	Scene* scene = Catalogue_Build(name);
+	Scene* loaded = RoundTrip(scene);
+	SceneWorld a = Scene_BuildWorld(scene, NULL);
+	SceneWorld b = Scene_BuildWorld(loaded, NULL);
+	cr_assert(TB_IS_NON_NULL(a.worldId) && TB_IS_NON_NULL(b.worldId), "%s", name);
+	cr_assert_eq(a.bodyCount, b.bodyCount);
+	for (int i = 0; i < a.bodyCount; ++i)
+	{
+		tbBodyId ia = a.bodyIds[i], ib = b.bodyIds[i];
+		cr_assert_eq(tbBody_GetType(ia), tbBody_GetType(ib), "%s body %d", name, i);
+		cr_assert(NearVec(tbBody_GetPosition(ia), tbBody_GetPosition(ib)), "%s body %d", name, i);
+		cr_assert(Near(tbBody_GetAngle(ia), tbBody_GetAngle(ib)), "%s body %d", name, i);
+		cr_assert(Near(tbBody_GetMass(ia), tbBody_GetMass(ib)), "%s body %d mass", name, i);
+		cr_assert_eq(tbBody_GetShapeCount(ia), tbBody_GetShapeCount(ib), "%s body %d", name, i);
+		tbShapeId sa[8], sb[8];
+		int count = tbBody_GetShapes(ia, sa, 8);
+		cr_assert_eq(tbBody_GetShapes(ib, sb, 8), count);
+		for (int s = 0; s < count; ++s)
+		{
+			tbGeometry ga = tbShape_GetGeometry(sa[s]), gb = tbShape_GetGeometry(sb[s]);
+			ExpectSameGeometry(&ga, &gb, name);
+			cr_assert(Near(tbShape_GetFriction(sa[s]), tbShape_GetFriction(sb[s])), "%s", name);
+			cr_assert(Near(tbShape_GetRestitution(sa[s]), tbShape_GetRestitution(sb[s])), "%s", name);
+		}
+	}
+	SceneWorld_Destroy(&a);
+	SceneWorld_Destroy(&b);
+	Scene_Destroy(loaded);
+	Scene_Destroy(scene);
+}
+
+Test(scene, reloaded_scenes_build_the_same_world)
+{
+	const char* names[] = {"pyramid", "card_house", "newtons_cradle", "ramp", "confined", "bullets_wall", "dominoes"};
+	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); ++i)
+	{
+		ExpectSameWorld(names[i]);
+	}
+	cr_assert_eq(tbGetByteCount(), 0, "worlds leak");
+}
+
+Test(scene, build_world_maps_bodies_and_applies_overrides)
+{
+	Scene* scene = Catalogue_Build("smash");
+	SceneOverrides overrides;
+	memset(&overrides, 0, sizeof(overrides));
+	overrides.methods.hasSolver = true;
+	overrides.methods.solver = tb_solverNGS;
+	overrides.velocityIterations = 12;
+	tbWorldDef def = Scene_MakeWorldDef(scene, &overrides);
+	cr_assert_eq(def.solver, tb_solverNGS);
+	cr_assert_eq(def.velocityIterations, 12);
+	cr_assert_float_eq(def.gravity.y, 0.0f, 1e-9f);
+	SceneWorld world = Scene_BuildWorld(scene, &overrides);
+	cr_assert_eq(world.bodyCount, 9601);
+	cr_assert(tbBody_IsAwake(world.bodyIds[0]));
+	cr_assert_not(tbBody_IsAwake(world.bodyIds[9600]));
+	cr_assert_float_eq(tbBody_GetLinearVelocity(world.bodyIds[0]).x, 40.0f, 1e-5f);
+	cr_assert_float_eq(tbBody_GetMass(world.bodyIds[0]), 8.0f * 64.0f, 1e-2f);
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+}
+
+Test(scene, the_documented_example_parses)
+{
+	const char* text =
+		"{\"gravity\": [0, -10], \"time_step\": 0.0166666667, \"sub_steps\": 4,"
+		" \"methods\": {\"broadphase\": \"tree\", \"narrowphase\": \"sat\", \"toi\": \"ca\", \"solver\": \"soft\"},"
+		" \"bodies\": [{\"type\": \"dynamic\", \"name\": \"crate\", \"position\": [0, 4], \"angle\": 0,"
+		" \"linear_velocity\": [0, 0], \"angular_velocity\": 0, \"linear_damping\": 0, \"angular_damping\": 0,"
+		" \"gravity_scale\": 1, \"bullet\": false, \"shapes\": ["
+		" {\"box\": {\"half_width\": 0.5, \"half_height\": 0.5, \"center\": [0, 0], \"angle\": 0}, \"density\": 1,"
+		" \"friction\": 0.6, \"restitution\": 0, \"sensor\": false},"
+		" {\"circle\": {\"center\": [0, 1], \"radius\": 0.25}},"
+		" {\"polygon\": {\"vertices\": [[0, 0], [1, 0], [0, 1]], \"radius\": 0}},"
+		" {\"capsule\": {\"center1\": [-0.5, 0], \"center2\": [0.5, 0], \"radius\": 0.25}},"
+		" {\"segment\": {\"point1\": [-10, 0], \"point2\": [10, 0]}}]}]}";
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(scene, "%s", error);
+	cr_assert_eq(scene->bodyCount, 1);
+	cr_assert_eq(scene->bodies[0].shapeCount, 5);
+	cr_assert_str_eq(scene->bodies[0].name, "crate");
+	cr_assert(scene->methods.hasContinuous && scene->methods.continuous == tb_continuousConservative);
+	cr_assert_eq(scene->bodies[0].shapes[0].geometry.polygon.count, 4);
+	cr_assert_float_eq(scene->bodies[0].shapes[0].geometry.polygon.vertices[2].x, 0.5f, 1e-6f);
+	cr_assert_eq(scene->bodies[0].shapes[2].geometry.type, tb_polygonShape);
+	cr_assert_eq(scene->bodies[0].shapes[4].geometry.type, tb_segmentShape);
+	Scene_Destroy(scene);
+}
+
+Test(scene, defaults_fill_missing_keys)
+{
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse("{\"bodies\": [{\"shapes\": [{\"circle\": {\"radius\": 1}}]}]}", error, 256);
+	cr_assert_not_null(scene, "%s", error);
+	cr_assert_float_eq(scene->gravity.y, -10.0f, 1e-9f);
+	cr_assert_float_eq(scene->timeStep, 1.0f / 60.0f, 1e-9f);
+	cr_assert_eq(scene->subSteps, 4);
+	cr_assert_eq(scene->bodies[0].type, tb_staticBody);
+	cr_assert(scene->bodies[0].isAwake);
+	cr_assert_float_eq(scene->bodies[0].gravityScale, 1.0f, 1e-9f);
+	cr_assert_float_eq(scene->bodies[0].shapes[0].friction, 0.6f, 1e-9f);
+	cr_assert_float_eq(scene->bodies[0].shapes[0].density, 1.0f, 1e-9f);
+	cr_assert_not(scene->methods.hasSolver);
+	Scene_Destroy(scene);
+}
+
+typedef struct BadFile
+{
+	const char* text;
+	const char* message;
+} BadFile;
+
+static const BadFile s_badFiles[] = {
+	{"{\"gravity\": [0]}", "gravity: must be an array of 2 numbers"},
+	{"{\"bodies\": [{}, {}, {}, {\"shapes\": [{\"circle\": {\"radius\": -1}}]}]}",
+	 "bodies[3].shapes[0].circle.radius: must be > 0"},
+	{"{\"bodies\": [{\"positon\": [0, 0]}]}", "bodies[0].positon: unknown key"},
+	{"{\"bodies\": [{\"shapes\": [{\"circle\": {\"radius\": 1}, \"box\": {\"half_width\": 1, \"half_height\": 1}}]}]}",
+	 "bodies[0].shapes[0]: must have exactly one of box, circle, polygon, capsule, segment (has box and circle)"},
+	{"{\"bodies\": [{\"shapes\": [{\"polygon\": {\"vertices\": [[0, 0], [1, 0]]}}]}]}",
+	 "bodies[0].shapes[0].polygon.vertices: must have 3 to 8 vertices (has 2)"},
+	{"{\"bodies\": [{\"shapes\": [{\"polygon\": {\"vertices\": [[0, 0], [1, 0], [2, 0]]}}]}]}",
+	 "bodies[0].shapes[0].polygon.vertices: no valid convex hull (points collinear, duplicate or closer than 0.005 m)"},
+	{"{\"methods\": {\"solver\": \"pgs\"}}", "methods.solver: must be one of baumgarte, ngs, soft"},
+	{"{\"time_step\": \"fast\"}", "time_step: must be a number"},
+	{"{\"sub_steps\": 0}", "sub_steps: must be >= 1"},
+	{"{\"bodies\": [{\"type\": \"rigid\"}]}", "bodies[0].type: must be one of static, kinematic, dynamic"},
+	{"{\"bodies\": [{\"angle\": 1e999}]}", "bodies[0].angle: must be a finite number"},
+	{"{\"bodies\": [{\"shapes\": [{\"circle\": {\"center\": [0, 0]}}]}]}",
+	 "bodies[0].shapes[0].circle.radius: missing (required)"},
+	{"{\"bodies\": [{\"shapes\": [{\"capsule\": {\"center1\": [1, 1], \"center2\": [1, 1], \"radius\": 1}}]}]}",
+	 "bodies[0].shapes[0].capsule.center2: must be more than 0.005 m from center1"},
+	{"{\"bodies\": [{\"shapes\": [{\"polygon\": {\"vertices\": [[0, 0], [2, 0], [2, 2], [0, 2], [1, 1]]}}]}]}",
+	 "bodies[0].shapes[0].polygon.vertices: not convex: the hull keeps 4 of 5 points"},
+	{"{\"bodies\": [{\"bullet\": 1}]}", "bodies[0].bullet: must be true or false"},
+	{"{\"gravity\": [0, -10], \"gravity\": [0, 0]}", "gravity: duplicate key"},
+	{"[1, 2]", "scene: must be a JSON object"},
+	{"{\"gravity\": [0, -10],\n \"bodies\": [}", "line 2, column 13: invalid JSON"},
+};
+
+Test(scene, malformed_files_name_the_field)
+{
+	for (size_t i = 0; i < sizeof(s_badFiles) / sizeof(s_badFiles[0]); ++i)
+	{
+		char error[256] = "";
+		Scene* scene = SceneFile_Parse(s_badFiles[i].text, error, (int)sizeof(error));
+		cr_assert_null(scene, "case %zu parsed", i);
+		cr_assert_str_eq(error, s_badFiles[i].message, "case %zu", i);
+	}
+}
+
+// Every prefix of a valid file is parsed without a crash (and rejected, except the whole file).
+Test(scene, truncated_files_never_crash)
+{
+	Scene* scene = Catalogue_Build("rain");
+	int bodyCount = scene->bodyCount;
+	scene->bodyCount = 3;
+	char* text = SceneFile_Export(scene);
+	scene->bodyCount = bodyCount;
+	size_t length = strlen(text);
+	for (size_t cut = 0; cut < length; cut += 7)
+	{
+		char saved = text[cut];
+		text[cut] = '\0';
+		char error[256] = "";
+		Scene* partial = SceneFile_Parse(text, error, (int)sizeof(error));
+		cr_assert(partial == NULL && error[0] != '\0', "prefix of %zu bytes", cut);
+		text[cut] = saved;
+	}
+	free(text);
+	Scene_Destroy(scene);
+}
+
+Test(scene, load_reports_missing_files)
+{
+	char error[512] = "";
+	cr_assert_null(SceneFile_Load("/nonexistent/scene.json", error, (int)sizeof(error)));
+	cr_assert_str_eq(error, "/nonexistent/scene.json: cannot open (No such file or directory)");
+}
+
+Test(scene, measures_of_a_resting_stack)
+{
+	Scene* scene = Catalogue_Build("vertical_stack");
+	SceneWorld world = Scene_BuildWorld(scene, NULL);
+	cr_assert_float_eq(SceneWorld_KineticEnergy(&world), 0.0f, 1e-9f);
+	cr_assert_eq(SceneWorld_AwakeCount(&world), 10);
+	for (int i = 0; i < 30; ++i)
+	{
+		tbWorld_Step(world.worldId, scene->timeStep, scene->subSteps);
+	}
+	float penetration = SceneWorld_LargestPenetration(&world);
+	cr_assert(penetration >= 0.0f && penetration < 0.02f, "penetration %g", (double)penetration);
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+}
