@@ -12,6 +12,9 @@
 //   toi-chart          ns per time-of-impact query vs error against closed forms
 //   tunnel-chart       fraction of bodies that pass through a thin wall vs speed, per method
 //   sleep              10,000 sleeping bodies plus 10 awake ones vs the 10 awake ones alone
+// clock_gettime(CLOCK_MONOTONIC) is POSIX, not C17
+#define _POSIX_C_SOURCE 200809L
+
 #include "catalogue.h"
 #include "peers.h"
 #include "scene.h"
@@ -946,4 +949,342 @@ static int TOIChart(FILE* out)
 	free(circlesB);
 	free(outputs);
 	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tunnelling chart: fraction of bodies that pass through a thin wall
+
+#define TUNNEL_BODIES 20
+
+// A 0.1 m static wall at x = 0 (100 m tall), no gravity; TUNNEL_BODIES circles (r 0.1) or boxes
+// (0.2 m) 1 m apart in y, fired along +x at `speed`, each starting at a different phase of a step
+// so that the wall falls at every fraction of the step's travel. Restitution 0.
+static Scene* BuildTunnelScene(bool boxes, float speed)
+{
+	Scene* scene = Scene_Create();
+	scene->gravity = (tbVec2){0.0f, 0.0f};
+	scene->enableSleep = false;
+	int wall = Scene_AddBody(scene, tb_staticBody, (tbVec2){0.0f, 0.0f}, 0.0f);
+	tbGeometry wallShape = Scene_MakeBoxGeometry(0.05f, 50.0f, (tbVec2){0.0f, 0.0f}, 0.0f);
+	Scene_AddGeometry(scene, wall, &wallShape, 1.0f, 0.0f);
+	float travel = speed * scene->timeStep;
+	for (int i = 0; i < TUNNEL_BODIES; ++i)
+	{
+		float x = -2.0f - travel * (float)i / (float)TUNNEL_BODIES;
+		int body = Scene_AddBody(scene, tb_dynamicBody, (tbVec2){x, -10.0f + (float)i}, 0.0f);
+		scene->bodies[body].linearVelocity = (tbVec2){speed, 0.0f};
+		tbGeometry shape = boxes ? Scene_MakeBoxGeometry(0.1f, 0.1f, (tbVec2){0.0f, 0.0f}, 0.0f)
+								 : Scene_MakeCircleGeometry((tbVec2){0.0f, 0.0f}, 0.1f);
+		Scene_AddGeometry(scene, body, &shape, 1.0f, 0.0f);
+	}
+	return scene;
+}
+
+static int TunnelChart(FILE* out)
+{
+	const float speeds[] = {10.0f, 30.0f, 100.0f, 300.0f, 1000.0f};
+	const int speedCount = (int)(sizeof(speeds) / sizeof(speeds[0]));
+	fprintf(out, "method,shape,speed,fraction\n");
+	for (int kind = 0; kind < 2; ++kind)
+	{
+		for (int variant = 0; variant < 5; ++variant)
+		{
+			// variants 0–2: Tumble's methods; 3, 4: the peers
+			Engine engine = variant < 3 ? engineTumble : (variant == 3 ? engineBox2D : engineChipmunk);
+			if (!EngineAvailable(engine))
+			{
+				continue;
+			}
+			TumbleConfig config;
+			memset(&config, 0, sizeof(config));
+			const char* name = EngineName(engine);
+			if (variant < 3)
+			{
+				const tbContinuousMethod methods[3] = {tb_continuousOff, tb_continuousDefault, tb_continuousConservative};
+				const char* names[3] = {"off", "quadratic", "conservative"};
+				config.overrides.methods.continuous = methods[variant];
+				config.overrides.methods.hasContinuous = true;
+				name = names[variant];
+			}
+			for (int s = 0; s < speedCount; ++s)
+			{
+				Scene* scene = BuildTunnelScene(kind == 1, speeds[s]);
+				Sim sim;
+				Sim_Create(&sim, scene, engine, &config);
+				float travel = speeds[s] * scene->timeStep;
+				int steps = (int)ceilf(4.0f / travel) + 10;
+				for (int i = 0; i < steps; ++i)
+				{
+					Sim_Step(&sim);
+				}
+				int through = 0;
+				for (int i = 1; i <= TUNNEL_BODIES; ++i)
+				{
+					through += Sim_GetBody(&sim, i).position.x > 0.05f ? 1 : 0;
+				}
+				Sim_Destroy(&sim);
+				Scene_Destroy(scene);
+				fprintf(out, "%s,%s,%.0f,%.3f\n", name, kind == 1 ? "boxes" : "circles", (double)speeds[s],
+						(double)through / TUNNEL_BODIES);
+			}
+		}
+	}
+	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// "A model no more than a scene needs": sleeping bodies should cost next to nothing
+
+// The 10 awake bodies: unit boxes bouncing (restitution 0.8) on a ground box, never allowed to sleep.
+// With `sleepers`, 10,000 unit boxes resting on a second ground 200 m away in 100 stacks of 100,
+// all asleep from the start (their contacts exist; their islands are asleep).
+static Scene* BuildSleepScene(bool sleepers)
+{
+	Scene* scene = Scene_Create();
+	int ground = Scene_AddBody(scene, tb_staticBody, (tbVec2){0.0f, 0.0f}, 0.0f);
+	tbGeometry groundBox = Scene_MakeBoxGeometry(20.0f, 0.5f, (tbVec2){0.0f, -0.5f}, 0.0f);
+	Scene_AddGeometry(scene, ground, &groundBox, 1.0f, 0.6f);
+	for (int i = 0; i < 10; ++i)
+	{
+		int body = Scene_AddBody(scene, tb_dynamicBody, (tbVec2){-13.5f + 3.0f * (float)i, 2.0f + 0.5f * (float)i}, 0.0f);
+		SceneShape shape = Scene_DefaultShape();
+		shape.geometry = Scene_MakeBoxGeometry(0.5f, 0.5f, (tbVec2){0.0f, 0.0f}, 0.0f);
+		shape.restitution = 0.8f;
+		Scene_AddShape(scene, body, &shape);
+	}
+	if (sleepers)
+	{
+		int far = Scene_AddBody(scene, tb_staticBody, (tbVec2){300.0f, 0.0f}, 0.0f);
+		tbGeometry farBox = Scene_MakeBoxGeometry(110.0f, 0.5f, (tbVec2){0.0f, -0.5f}, 0.0f);
+		Scene_AddGeometry(scene, far, &farBox, 1.0f, 0.6f);
+		for (int column = 0; column < 100; ++column)
+		{
+			for (int row = 0; row < 100; ++row)
+			{
+				tbVec2 p = {300.0f - 100.0f + 2.0f * (float)column, 0.5f + (float)row};
+				int body = Scene_AddBody(scene, tb_dynamicBody, p, 0.0f);
+				tbGeometry box = Scene_MakeBoxGeometry(0.5f, 0.5f, (tbVec2){0.0f, 0.0f}, 0.0f);
+				Scene_AddGeometry(scene, body, &box, 1.0f, 0.6f);
+				scene->bodies[body].isAwake = false;
+			}
+		}
+	}
+	return scene;
+}
+
+static double TimeSleepScene(bool sleepers, int steps, int repeat, PeerCounters* counters)
+{
+	Scene* scene = BuildSleepScene(sleepers);
+	TumbleConfig config;
+	memset(&config, 0, sizeof(config));
+	double times[32];
+	repeat = repeat > 32 ? 32 : repeat;
+	for (int r = 0; r < repeat; ++r)
+	{
+		Sim sim;
+		Sim_Create(&sim, scene, engineTumble, &config);
+		for (int i = 1; i <= 10; ++i)
+		{
+			tbBody_EnableSleep(sim.tumble.bodyIds[i], false);
+		}
+		double start = NowMs();
+		for (int i = 0; i < steps; ++i)
+		{
+			Sim_Step(&sim);
+		}
+		times[r] = (NowMs() - start) / steps;
+		*counters = Sim_GetCounters(&sim);
+		Sim_Destroy(&sim);
+	}
+	Scene_Destroy(scene);
+	return Median(times, repeat);
+}
+
+static int SleepBenchmark(FILE* out, int steps, int repeat)
+{
+	PeerCounters alone, crowd;
+	double msAlone = TimeSleepScene(false, steps, repeat, &alone);
+	double msCrowd = TimeSleepScene(true, steps, repeat, &crowd);
+	fprintf(out, "case,bodies,awake,contacts,ms_median\n");
+	fprintf(out, "awake_only,%d,%d,%d,%.5f\n", alone.bodyCount, alone.awakeBodyCount, alone.contactCount, msAlone);
+	fprintf(out, "with_10000_sleeping,%d,%d,%d,%.5f\n", crowd.bodyCount, crowd.awakeBodyCount, crowd.contactCount, msCrowd);
+	fprintf(out, "ratio,,,,%.3f\n", msCrowd / msAlone);
+	fprintf(stderr, "sleeping: %.4f ms vs %.4f ms awake alone: ratio %.2f (target <= 3)\n", msCrowd, msAlone,
+			msCrowd / msAlone);
+	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Command line
+
+static void PrintUsage(void)
+{
+	printf("usage: tumble-bench [SCENE...] [--steps N] [--repeat R] [--csv FILE] [--peers]\n"
+		   "                    [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
+		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
+		   "                    [--substeps N] [--iterations N] [--chipmunk-tree]\n"
+		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
+		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
+		   "       tumble-bench --list\n"
+		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain, each at its\n"
+		   "catalogue step count, 60 Hz, 4 sub-steps for the soft solver (1 for baumgarte/ngs).\n");
+}
+
+static bool ParseMethod(const char* option, const char* value, SceneMethods* methods)
+{
+	if (strcmp(option, "--broadphase") == 0)
+	{
+		const char* name = strcmp(value, "sap") == 0 ? "sort_and_sweep" : (strcmp(value, "brute") == 0 ? "brute_force" : value);
+		methods->hasBroadPhase = Scene_ParseBroadPhase(name, &methods->broadPhase) || Scene_ParseBroadPhase(value, &methods->broadPhase);
+		return methods->hasBroadPhase;
+	}
+	if (strcmp(option, "--narrowphase") == 0)
+	{
+		methods->hasNarrowPhase = Scene_ParseNarrowPhase(value, &methods->narrowPhase);
+		return methods->hasNarrowPhase;
+	}
+	if (strcmp(option, "--toi") == 0)
+	{
+		// quadratic = the default (closed form for circles, conservative advancement for the rest)
+		methods->continuous = strcmp(value, "off") == 0 ? tb_continuousOff
+							  : strcmp(value, "ca") == 0 ? tb_continuousConservative
+														  : tb_continuousDefault;
+		methods->hasContinuous = strcmp(value, "off") == 0 || strcmp(value, "ca") == 0 || strcmp(value, "quadratic") == 0 ||
+								 Scene_ParseContinuous(value, &methods->continuous);
+		return methods->hasContinuous;
+	}
+	methods->hasSolver = Scene_ParseSolver(value, &methods->solver);
+	return methods->hasSolver;
+}
+
+static FILE* OpenOutput(const char* path)
+{
+	FILE* file = path != NULL ? fopen(path, "w") : stdout;
+	if (file == NULL)
+	{
+		fprintf(stderr, "tumble-bench: cannot write %s\n", path);
+	}
+	return file;
+}
+
+int main(int argc, char** argv)
+{
+	Options options;
+	memset(&options, 0, sizeof(options));
+	options.repeat = 3;
+	const char* command = NULL;
+	for (int i = 1; i < argc; ++i)
+	{
+		const char* arg = argv[i];
+		bool hasValue = i + 1 < argc;
+		if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0)
+		{
+			PrintUsage();
+			return 0;
+		}
+		else if (strcmp(arg, "--list") == 0)
+		{
+			for (int s = 0; s < Catalogue_Count(); ++s)
+			{
+				printf("%-18s %s\n", Catalogue_Name(s), Catalogue_Description(s));
+			}
+			return 0;
+		}
+		else if (strcmp(arg, "--peers") == 0)
+		{
+			options.peers = true;
+		}
+		else if (strcmp(arg, "--chipmunk-tree") == 0)
+		{
+			options.config.chipmunkTree = true;
+		}
+		else if (strcmp(arg, "--steps") == 0 && hasValue)
+		{
+			options.steps = atoi(argv[++i]);
+		}
+		else if (strcmp(arg, "--repeat") == 0 && hasValue)
+		{
+			options.repeat = atoi(argv[++i]);
+		}
+		else if (strcmp(arg, "--csv") == 0 && hasValue)
+		{
+			options.csvPath = argv[++i];
+		}
+		else if (strcmp(arg, "--substeps") == 0 && hasValue)
+		{
+			options.config.subSteps = atoi(argv[++i]);
+		}
+		else if (strcmp(arg, "--iterations") == 0 && hasValue)
+		{
+			options.config.overrides.velocityIterations = atoi(argv[++i]);
+		}
+		else if ((strcmp(arg, "--broadphase") == 0 || strcmp(arg, "--narrowphase") == 0 || strcmp(arg, "--toi") == 0 ||
+				  strcmp(arg, "--solver") == 0) &&
+				 hasValue)
+		{
+			if (!ParseMethod(arg, argv[i + 1], &options.config.overrides.methods))
+			{
+				fprintf(stderr, "tumble-bench: unknown value '%s' for %s\n", argv[i + 1], arg);
+				return 2;
+			}
+			++i;
+		}
+		else if (arg[0] == '-')
+		{
+			fprintf(stderr, "tumble-bench: unknown option '%s' (try --help)\n", arg);
+			return 2;
+		}
+		else if (command == NULL && (strstr(arg, "-chart") != NULL || strcmp(arg, "sleep") == 0))
+		{
+			command = arg;
+		}
+		else if (options.sceneCount < 64)
+		{
+			options.scenes[options.sceneCount++] = arg;
+		}
+	}
+	if (options.repeat < 1 || options.steps < 0)
+	{
+		fprintf(stderr, "tumble-bench: --repeat must be >= 1 and --steps >= 0\n");
+		return 2;
+	}
+	if (command == NULL)
+	{
+		return RunScenes(&options);
+	}
+	FILE* out = OpenOutput(options.csvPath);
+	if (out == NULL)
+	{
+		return 1;
+	}
+	int status = 2;
+	if (strcmp(command, "solver-chart") == 0)
+	{
+		status = SolverChart(out);
+	}
+	else if (strcmp(command, "narrowphase-chart") == 0)
+	{
+		status = NarrowPhaseChart(out);
+	}
+	else if (strcmp(command, "toi-chart") == 0)
+	{
+		status = TOIChart(out);
+	}
+	else if (strcmp(command, "tunnel-chart") == 0)
+	{
+		status = TunnelChart(out);
+	}
+	else if (strcmp(command, "sleep") == 0)
+	{
+		status = SleepBenchmark(out, options.steps > 0 ? options.steps : 300, options.repeat);
+	}
+	else
+	{
+		fprintf(stderr, "tumble-bench: unknown command '%s'\n", command);
+	}
+	if (out != stdout)
+	{
+		fclose(out);
+	}
+	return status;
 }

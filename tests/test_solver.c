@@ -261,6 +261,11 @@ Test(solver, slope_hold_soft)
 	SlopeHold(tb_solverSoft);
 }
 
+Test(solver, slope_hold_baumgarte)
+{
+	SlopeHold(tb_solverBaumgarte);
+}
+
 Test(solver, slope_hold_ngs)
 {
 	SlopeHold(tb_solverNGS);
@@ -312,6 +317,11 @@ Test(solver, stack_soft)
 	Stack(tb_solverSoft);
 }
 
+Test(solver, stack_baumgarte)
+{
+	Stack(tb_solverBaumgarte);
+}
+
 Test(solver, stack_ngs)
 {
 	Stack(tb_solverNGS);
@@ -346,6 +356,11 @@ static void HeavyOnLight(tbSolverMethod method)
 Test(solver, heavy_on_light_soft)
 {
 	HeavyOnLight(tb_solverSoft);
+}
+
+Test(solver, heavy_on_light_baumgarte)
+{
+	HeavyOnLight(tb_solverBaumgarte);
 }
 
 Test(solver, heavy_on_light_ngs)
@@ -392,3 +407,11 @@ Test(solver, overlap_recovery_soft)
 {
 	OverlapRecovery(tb_solverSoft);
 }
+
+Test(solver, overlap_recovery_ngs)
+{
+	OverlapRecovery(tb_solverNGS);
+}
+
+// Not asserted for Baumgarte: the velocity bias (β/h)·overlap = 0.2·240·0.25 = 12 m/s per
+// sub-step flings the boxes (measured peak 33 m/s), the failure STRESS.md describes.

@@ -1,0 +1,15 @@
+# Scene chart: ms per step per scene for Tumble and its peers (same run).
+# Input: DATA (scenes_wide.csv: scene,tumble,box2d,chipmunk, made by scripts/bench.sh); output: OUT.
+set terminal pngcairo size 1000,520 font ",10"
+set output OUT
+set datafile separator ","
+set style data histogram
+set style histogram cluster gap 1
+set style fill solid 0.8 border -1
+set logscale y
+set ylabel "ms per step (median)"
+set grid ytics
+set key top left
+set title "Scenes: Tumble vs Box2D 2.4.1 vs Chipmunk 7 (one process, one run)"
+plot DATA every ::1 using 2:xtic(1) title "Tumble", '' every ::1 using 3 title "Box2D 2.4.1", \
+     '' every ::1 using 4 title "Chipmunk 7"
