@@ -19,6 +19,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
 typedef struct Options
 {
@@ -318,6 +319,7 @@ typedef struct Run
 	RenderImage frame;
 	RenderSheet sheet;
 	double stepMilliseconds;
+	bool interactive; ///< stderr is a terminal
 } Run;
 
 static void WriteCsvRows(Run* run, int step)
@@ -403,14 +405,16 @@ static bool StepAll(Run* run)
 		{
 			return false;
 		}
-		if (WallSeconds() - lastReport > 1.0)
+		// progress: in place each second on a terminal, one line each 10 s otherwise
+		double interval = run->interactive ? 1.0 : 10.0;
+		if (WallSeconds() - lastReport > interval)
 		{
-			fprintf(stderr, "\rstep %d/%d", step, run->steps);
+			fprintf(stderr, run->interactive ? "\rstep %d/%d" : "step %d/%d\n", step, run->steps);
 			lastReport = WallSeconds();
 			reported = true;
 		}
 	}
-	if (reported)
+	if (reported && run->interactive)
 	{
 		fprintf(stderr, "\rstep %d/%d\n", run->steps, run->steps);
 	}
@@ -497,6 +501,7 @@ static int RunScene(const char* name, const Options* options, bool summary)
 	memset(&run, 0, sizeof(run));
 	run.options = options;
 	run.scene = scene;
+	run.interactive = isatty(fileno(stderr)) != 0;
 	run.steps = options->steps >= 0 ? options->steps : scene->steps;
 	run.subSteps = options->overrides.subSteps > 0 ? options->overrides.subSteps : scene->subSteps;
 	run.world = Scene_BuildWorld(scene, &options->overrides);

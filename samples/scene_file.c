@@ -845,6 +845,75 @@ static void AppendString(TextBuffer* buffer, const char* text)
 	Append(buffer, "\"");
 }
 
+typedef struct BoxForm
+{
+	float halfWidth, halfHeight, angle;
+	tbVec2 center;
+} BoxForm;
+
+// A polygon that tbMakeBox / tbMakeOffsetBox would rebuild (to 1e-6) is written in box form:
+// shorter, and it keeps boxes thinner than the hull tolerance (cards) loadable.
+static bool AsBox(const tbPolygon* polygon, BoxForm* box)
+{
+	if (polygon->count != 4 || polygon->radius != 0.0f)
+	{
+		return false;
+	}
+	const tbVec2* v = polygon->vertices;
+	tbVec2 edge = tbSub(v[1], v[0]);
+	box->halfWidth = 0.5f * tbLength(edge);
+	box->halfHeight = 0.5f * tbDistance(v[2], v[1]);
+	box->angle = atan2f(edge.y, edge.x);
+	box->center = tbMulSV(0.5f, tbAdd(v[0], v[2]));
+	if (box->halfWidth <= 0.0f || box->halfHeight <= 0.0f)
+	{
+		return false;
+	}
+	tbGeometry rebuilt = Scene_MakeBoxGeometry(box->halfWidth, box->halfHeight, box->center, box->angle);
+	float tolerance = 1e-6f * (1.0f + tbLength(box->center) + box->halfWidth + box->halfHeight);
+	for (int i = 0; i < 4; ++i)
+	{
+		if (tbDistance(rebuilt.polygon.vertices[i], v[i]) > tolerance)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+static void AppendBox(TextBuffer* buffer, const BoxForm* box)
+{
+	Append(buffer, "\"box\": {\"half_width\": %.9g, \"half_height\": %.9g", (double)box->halfWidth,
+		   (double)box->halfHeight);
+	if (box->center.x != 0.0f || box->center.y != 0.0f)
+	{
+		Append(buffer, ", \"center\": ");
+		AppendVec2(buffer, box->center);
+	}
+	if (box->angle != 0.0f)
+	{
+		Append(buffer, ", \"angle\": %.9g", (double)box->angle);
+	}
+	Append(buffer, "}");
+}
+
+static void AppendPolygon(TextBuffer* buffer, const tbPolygon* polygon)
+{
+	BoxForm box;
+	if (AsBox(polygon, &box))
+	{
+		AppendBox(buffer, &box);
+		return;
+	}
+	Append(buffer, "\"polygon\": {\"vertices\": [");
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		Append(buffer, i > 0 ? ", " : "");
+		AppendVec2(buffer, polygon->vertices[i]);
+	}
+	Append(buffer, "], \"radius\": %.9g}", (double)polygon->radius);
+}
+
 static void AppendGeometry(TextBuffer* buffer, const tbGeometry* geometry)
 {
 	switch (geometry->type)
@@ -869,13 +938,7 @@ static void AppendGeometry(TextBuffer* buffer, const tbGeometry* geometry)
 			Append(buffer, "}");
 			break;
 		default:
-			Append(buffer, "\"polygon\": {\"vertices\": [");
-			for (int i = 0; i < geometry->polygon.count; ++i)
-			{
-				Append(buffer, i > 0 ? ", " : "");
-				AppendVec2(buffer, geometry->polygon.vertices[i]);
-			}
-			Append(buffer, "], \"radius\": %.9g}", (double)geometry->polygon.radius);
+			AppendPolygon(buffer, &geometry->polygon);
 			break;
 	}
 }

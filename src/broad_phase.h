@@ -73,6 +73,7 @@ typedef struct tbBroadPhase
 	// Static proxies inserted into the static tree since its last rebuild (tree method): a bulk
 	// of them triggers a binned SAH rebuild on the next UpdatePairs.
 	int staticInsertCount;
+	int enlargedCount; ///< movable tree leaves enlarged in place since the last UpdatePairs
 } tbBroadPhase;
 
 /// Used by the method files while finding pairs: append the pair of two proxies, named by shape

@@ -230,7 +230,16 @@ int tbUpdateContact(tbWorld* world, tbContact* contact)
 	const tbBody* bodyB = world->bodies + b->bodyId;
 	tbManifold old = contact->manifold;
 	tbNarrowPhaseMethod method = world->def.narrowPhase;
-	contact->manifold = tbCollideShapes(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method);
+	// Most contacts (fat boxes overlapping) are not touching. The tight boxes, current since the
+	// last finalize, grown by the speculative distance, rule them out for a few comparisons.
+	if (tbAABB_Overlaps(tbAABB_Fatten(a->aabb, TB_SPECULATIVE_DISTANCE), b->aabb) == false)
+	{
+		contact->manifold.pointCount = 0;
+	}
+	else
+	{
+		contact->manifold = tbCollideShapes(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method);
+	}
 	if (a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape)
 	{
 		world->counters.gjkManifolds += method == tb_narrowPhaseGJK ? 1 : 0;

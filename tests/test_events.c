@@ -1,0 +1,520 @@
+// Events: contact begin/end/hit, sensor begin/end, body move and fell-asleep events, waking and
+// collision filtering, each checked against free fall computed here in closed form.
+//
+// Sources of the expected numbers:
+// - the step integrates each sub-step with symplectic Euler, v += g·h then y += v·h (h = dt/n),
+//   so after m sub-steps from rest v = −g·h·m and y = y0 − g·h²·m(m+1)/2 (exact for constant g);
+// - the step runs pairs → collide → solve, so a contact's manifold is computed from the positions
+//   at the end of the previous step, and a point is kept while its separation is below
+//   TB_SPECULATIVE_DISTANCE = 0.02 m (manifold.c): a falling ball begins touching at the first
+//   step whose starting gap is below 0.02 m, up to 0.02 m before it reaches the ground;
+// - hit events carry the approach speed at impact, √(2·g·h) for a drop of h from rest;
+// - a body falls asleep after TB_TIME_TO_SLEEP = 0.5 s below the sleep tolerances;
+// - filters as Box2D: (A.category & B.mask) && (B.category & A.mask) unless the group index is
+//   shared: positive always collides, negative never.
+#include <criterion/criterion.h>
+
+#include "tumble/tumble.h"
+
+#include <math.h>
+#include <string.h>
+
+#define TIME_STEP (1.0f / 60.0f)
+#define SUB_STEPS 4
+#define GRAVITY 10.0f
+
+// --- helpers ----------------------------------------------------------------------------------
+
+static tbWorldId CreateWorld(void)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = (tbVec2){0.0f, -GRAVITY};
+	tbWorldId world = tbCreateWorld(&def);
+	cr_assert(tbWorld_IsValid(world));
+	return world;
+}
+
+/// Static ground box of half size (20, 1) whose top face is at y = 0.
+static tbShapeId CreateGround(tbWorldId world, const tbShapeDef* shapeDef)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.position = (tbVec2){0.0f, -1.0f};
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef def = shapeDef != NULL ? *shapeDef : tbDefaultShapeDef();
+	tbPolygon box = tbMakeBox(20.0f, 1.0f);
+	tbShapeId shape = tbCreatePolygonShape(body, &def, &box);
+	cr_assert(tbShape_IsValid(shape));
+	return shape;
+}
+
+static tbShapeId CreateBall(tbWorldId world, tbVec2 position, float radius, const tbShapeDef* shapeDef, tbBodyId* bodyOut)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = position;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef def = shapeDef != NULL ? *shapeDef : tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, radius};
+	tbShapeId shape = tbCreateCircleShape(body, &def, &circle);
+	cr_assert(tbShape_IsValid(shape));
+	*bodyOut = body;
+	return shape;
+}
+
+static tbBodyId CreateBox(tbWorldId world, tbVec2 position, float halfSize)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = position;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef def = tbDefaultShapeDef();
+	tbPolygon box = tbMakeSquare(halfSize);
+	tbCreatePolygonShape(body, &def, &box);
+	return body;
+}
+
+/// Free-fall height after `steps` steps from rest at y0 (symplectic Euler, SUB_STEPS sub-steps).
+static double FreeFallHeight(double y0, int steps)
+{
+	double h = (double)TIME_STEP / SUB_STEPS;
+	double m = (double)steps * SUB_STEPS;
+	return y0 - GRAVITY * h * h * m * (m + 1.0) / 2.0;
+}
+
+static bool SamePair(tbShapeId a, tbShapeId b, tbShapeId x, tbShapeId y)
+{
+	return (TB_ID_EQUALS(a, x) && TB_ID_EQUALS(b, y)) || (TB_ID_EQUALS(a, y) && TB_ID_EQUALS(b, x));
+}
+
+/// Step a resting body until its move event says it fell asleep; returns the step index (1-based)
+/// or −1 when it does not within maxSteps.
+static int StepUntilAsleep(tbWorldId world, tbBodyId body, int maxSteps)
+{
+	for (int step = 1; step <= maxSteps; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		tbBodyEvents events = tbWorld_GetBodyEvents(world);
+		for (int i = 0; i < events.moveCount; ++i)
+		{
+			if (TB_ID_EQUALS(events.moveEvents[i].bodyId, body) && events.moveEvents[i].fellAsleep)
+			{
+				return step;
+			}
+		}
+	}
+	return -1;
+}
+
+// --- contact events ---------------------------------------------------------------------------
+
+// A ball r 0.5 dropped from a 1 m gap above the ground: one begin event, with the two shape ids,
+// at the first step whose starting gap is below the speculative distance; touchingCount (contacts
+// with manifold points) becomes 1 in that same step.
+Test(events, contact_begin_touch_on_landing)
+{
+	tbWorldId world = CreateWorld();
+	tbShapeId ground = CreateGround(world, NULL);
+	const float radius = 0.5f;
+	const double y0 = radius + 1.0;
+	tbBodyId ball;
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, radius, NULL, &ball);
+
+	// Expected step: first k with gap(k − 1) < TB_SPECULATIVE_DISTANCE.
+	int expected = -1;
+	for (int k = 1; k < 1000; ++k)
+	{
+		double gapBefore = FreeFallHeight(y0, k - 1) - radius;
+		if (gapBefore < TB_SPECULATIVE_DISTANCE)
+		{
+			expected = k;
+			// Not a knife-edge case: float rounding cannot move the crossing to another step.
+			cr_assert(TB_SPECULATIVE_DISTANCE - gapBefore > 1e-3, "gap %g too close to the threshold", gapBefore);
+			break;
+		}
+	}
+	cr_assert(expected > 1);
+
+	int beginTotal = 0;
+	for (int step = 1; step <= expected + 60; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		tbContactEvents events = tbWorld_GetContactEvents(world);
+		tbCounters counters = tbWorld_GetCounters(world);
+		if (step < expected)
+		{
+			cr_assert_eq(events.beginCount, 0, "begin event at step %d, expected at %d", step, expected);
+			cr_assert_eq(counters.touchingCount, 0, "manifold points at step %d, expected from %d", step, expected);
+			double y = FreeFallHeight(y0, step);
+			cr_assert(fabs(tbBody_GetPosition(ball).y - y) < 1e-4, "step %d: y %g, free fall %g", step,
+					  (double)tbBody_GetPosition(ball).y, y);
+		}
+		else if (step == expected)
+		{
+			cr_assert_eq(events.beginCount, 1, "step %d: %d begin events, expected 1", step, events.beginCount);
+			cr_assert(SamePair(events.beginEvents[0].shapeIdA, events.beginEvents[0].shapeIdB, ground, ballShape));
+			cr_assert_eq(counters.touchingCount, 1, "step %d: touchingCount %d", step, counters.touchingCount);
+		}
+		beginTotal += events.beginCount;
+		cr_assert_eq(events.endCount, 0, "end event at step %d while resting", step);
+	}
+	cr_assert_eq(beginTotal, 1, "%d begin events in all, expected exactly 1", beginTotal);
+	// It rests on the ground (soft contact: within a few linear slops).
+	cr_assert(fabsf(tbBody_GetPosition(ball).y - radius) < 4.0f * TB_LINEAR_SLOP);
+	tbDestroyWorld(world);
+}
+
+// The resting ball is teleported 5 m up: exactly one end event, in the next step.
+Test(events, contact_end_touch_when_lifted)
+{
+	tbWorldId world = CreateWorld();
+	tbShapeId ground = CreateGround(world, NULL);
+	tbBodyId ball;
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f}, 0.5f, NULL, &ball);
+	int begins = 0;
+	for (int step = 0; step < 20; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		begins += tbWorld_GetContactEvents(world).beginCount;
+	}
+	cr_assert_eq(begins, 1);
+	cr_assert_eq(tbWorld_GetCounters(world).touchingCount, 1);
+
+	cr_assert(tbBody_SetTransform(ball, (tbVec2){0.0f, 5.0f}, tb_rot_identity));
+	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+	tbContactEvents events = tbWorld_GetContactEvents(world);
+	cr_assert_eq(events.endCount, 1, "%d end events after the lift, expected 1", events.endCount);
+	cr_assert(SamePair(events.endEvents[0].shapeIdA, events.endEvents[0].shapeIdB, ground, ballShape));
+	cr_assert_eq(events.beginCount, 0);
+	cr_assert_eq(tbWorld_GetCounters(world).touchingCount, 0);
+
+	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+	cr_assert_eq(tbWorld_GetContactEvents(world).endCount, 0, "a second end event");
+	tbDestroyWorld(world);
+}
+
+// A ball dropped from a 2 m gap, hit events enabled: one hit whose approach speed is √(2·g·2)
+// = 6.32 m/s within 5%, with the two shape ids and a vertical normal.
+Test(events, hit_event_above_threshold)
+{
+	tbWorldId world = CreateWorld();
+	tbShapeId ground = CreateGround(world, NULL);
+	tbShapeDef def = tbDefaultShapeDef();
+	def.enableHitEvents = true;
+	tbBodyId ball;
+	const float drop = 2.0f;
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f + drop}, 0.5f, &def, &ball);
+	const float expected = sqrtf(2.0f * GRAVITY * drop);
+
+	int hits = 0;
+	for (int step = 0; step < 120; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		tbContactEvents events = tbWorld_GetContactEvents(world);
+		for (int i = 0; i < events.hitCount; ++i)
+		{
+			const tbContactHitEvent* e = events.hitEvents + i;
+			cr_assert(SamePair(e->shapeIdA, e->shapeIdB, ground, ballShape));
+			cr_assert(fabsf(e->approachSpeed - expected) < 0.05f * expected, "approach %g, expected %g ± 5%%",
+					  (double)e->approachSpeed, (double)expected);
+			cr_assert(fabsf(fabsf(e->normal.y) - 1.0f) < 1e-3f, "normal (%g, %g)", (double)e->normal.x,
+					  (double)e->normal.y);
+			cr_assert(fabsf(e->point.y) < 0.05f, "hit point y %g, expected on the ground", (double)e->point.y);
+		}
+		hits += events.hitCount;
+	}
+	cr_assert_eq(hits, 1, "%d hit events, expected 1 (restitution 0: no bounce)", hits);
+	tbDestroyWorld(world);
+}
+
+// The same 6.32 m/s landing with the threshold raised to 10 m/s: no hit event; and with hit
+// events left disabled on both shapes (the default) at the default 1 m/s threshold: none either.
+Test(events, no_hit_event_below_threshold)
+{
+	for (int variant = 0; variant < 2; ++variant)
+	{
+		tbWorldId world = CreateWorld();
+		CreateGround(world, NULL);
+		tbShapeDef def = tbDefaultShapeDef();
+		def.enableHitEvents = variant == 0;
+		if (variant == 0)
+		{
+			cr_assert(tbWorld_SetHitEventThreshold(world, 10.0f));
+		}
+		tbBodyId ball;
+		CreateBall(world, (tbVec2){0.0f, 2.5f}, 0.5f, &def, &ball);
+		int hits = 0, begins = 0;
+		for (int step = 0; step < 120; ++step)
+		{
+			tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+			hits += tbWorld_GetContactEvents(world).hitCount;
+			begins += tbWorld_GetContactEvents(world).beginCount;
+		}
+		cr_assert_eq(begins, 1, "variant %d: the ball must still land", variant);
+		cr_assert_eq(hits, 0, "variant %d: %d hit events, expected none", variant, hits);
+		tbDestroyWorld(world);
+	}
+}
+
+// --- sensor events ----------------------------------------------------------------------------
+
+// A ball r 0.25 falls from y = 8 through a static sensor box half (1, 0.5) at y = 5: one begin
+// and one end event with (sensor, visitor) ids. Sensor overlaps go through the contact pipeline
+// (contact.c: a sensor pair touches when a manifold point has separation < 0), which collides
+// at the start of the step: the event of step k reports the overlap of the positions at the end
+// of step k − 1 (Box2D v3.0 does the same). The sensor does not touch the ball: its velocity
+// stays −g·t within 1e-4.
+Test(events, sensor_begin_end_ball_falls_through)
+{
+	tbWorldId world = CreateWorld();
+	tbBodyDef sensorBodyDef = tbDefaultBodyDef();
+	sensorBodyDef.position = (tbVec2){0.0f, 5.0f};
+	tbBodyId sensorBody = tbCreateBody(world, &sensorBodyDef);
+	tbShapeDef sensorDef = tbDefaultShapeDef();
+	sensorDef.isSensor = true;
+	sensorDef.enableSensorEvents = true;
+	tbPolygon box = tbMakeBox(1.0f, 0.5f);
+	tbShapeId sensor = tbCreatePolygonShape(sensorBody, &sensorDef, &box);
+
+	const float radius = 0.25f;
+	const double y0 = 8.0;
+	tbBodyId ball;
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, radius, NULL, &ball);
+
+	int beginStep = -1, endStep = -1;
+	const float top = 5.5f, bottom = 4.5f;
+	// Ball heights at the end of the previous two steps.
+	float previousY = (float)y0, earlierY = (float)y0;
+	for (int step = 1; step <= 90; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		float y = tbBody_GetPosition(ball).y;
+		float vy = tbBody_GetLinearVelocity(ball).y;
+		double expectedV = -GRAVITY * (double)TIME_STEP * step;
+		cr_assert(fabs(vy - expectedV) < 1e-4 * fmax(1.0, fabs(expectedV)), "step %d: vy %.6f, free fall %.6f",
+				  step, (double)vy, expectedV);
+		cr_assert(fabs(y - FreeFallHeight(y0, step)) < 1e-3, "step %d: y %g, free fall %g", step, (double)y,
+				  FreeFallHeight(y0, step));
+		cr_assert_eq(tbWorld_GetContactEvents(world).beginCount, 0, "a sensor must not make contacts");
+
+		tbSensorEvents events = tbWorld_GetSensorEvents(world);
+		for (int i = 0; i < events.beginCount; ++i)
+		{
+			cr_assert_eq(beginStep, -1, "a second begin event at step %d", step);
+			cr_assert(TB_ID_EQUALS(events.beginEvents[i].sensorShapeId, sensor));
+			cr_assert(TB_ID_EQUALS(events.beginEvents[i].visitorShapeId, ballShape));
+			beginStep = step;
+			// Overlapping at the end of the previous step, not at the end of the one before.
+			cr_assert(previousY - radius < top, "begin at step %d: y was %g, not overlapping", step, (double)previousY);
+			cr_assert(earlierY - radius >= top, "begin at step %d: late, y was already %g", step, (double)earlierY);
+		}
+		for (int i = 0; i < events.endCount; ++i)
+		{
+			cr_assert_eq(endStep, -1, "a second end event at step %d", step);
+			cr_assert(TB_ID_EQUALS(events.endEvents[i].sensorShapeId, sensor));
+			cr_assert(TB_ID_EQUALS(events.endEvents[i].visitorShapeId, ballShape));
+			endStep = step;
+			cr_assert(previousY + radius < bottom, "end at step %d: y was %g, still overlapping", step,
+					  (double)previousY);
+			cr_assert(earlierY + radius >= bottom, "end at step %d: late, y was already %g", step, (double)earlierY);
+		}
+		earlierY = previousY;
+		previousY = y;
+	}
+	cr_assert(beginStep > 0, "no sensor begin event");
+	cr_assert(endStep > beginStep, "no sensor end event after the begin (begin %d, end %d)", beginStep, endStep);
+	tbDestroyWorld(world);
+}
+
+// --- body events and sleep --------------------------------------------------------------------
+
+// Three falling boxes: one move event per awake body each step, carrying its id and transform.
+Test(events, body_move_events_for_awake_bodies)
+{
+	tbWorldId world = CreateWorld();
+	CreateGround(world, NULL);
+	tbBodyId boxes[3];
+	for (int i = 0; i < 3; ++i)
+	{
+		boxes[i] = CreateBox(world, (tbVec2){-3.0f + 3.0f * (float)i, 5.0f}, 0.5f);
+	}
+	for (int step = 0; step < 30; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		tbBodyEvents events = tbWorld_GetBodyEvents(world);
+		cr_assert_eq(events.moveCount, 3, "step %d: %d move events, expected 3", step, events.moveCount);
+		for (int i = 0; i < 3; ++i)
+		{
+			int found = 0;
+			for (int j = 0; j < events.moveCount; ++j)
+			{
+				const tbBodyMoveEvent* e = events.moveEvents + j;
+				if (TB_ID_EQUALS(e->bodyId, boxes[i]))
+				{
+					found += 1;
+					tbTransform t = tbBody_GetTransform(boxes[i]);
+					cr_assert_eq(e->transform.p.x, t.p.x);
+					cr_assert_eq(e->transform.p.y, t.p.y);
+					cr_assert_eq(e->transform.q.c, t.q.c);
+					cr_assert_eq(e->transform.q.s, t.q.s);
+					cr_assert_not(e->fellAsleep);
+				}
+			}
+			cr_assert_eq(found, 1, "step %d: box %d has %d move events", step, i, found);
+		}
+	}
+	tbDestroyWorld(world);
+}
+
+// A box resting on the ground: one fellAsleep move event after TB_TIME_TO_SLEEP = 0.5 s of rest
+// (30 steps at 60 Hz; allow 15 more for the first steps of settling), then no more move events.
+Test(events, fell_asleep_event_after_time_to_sleep)
+{
+	tbWorldId world = CreateWorld();
+	CreateGround(world, NULL);
+	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	int minSteps = (int)floorf(TB_TIME_TO_SLEEP / TIME_STEP);
+	int step = StepUntilAsleep(world, box, 120);
+	cr_assert(step >= minSteps && step <= minSteps + 15, "fell asleep at step %d, expected %d..%d", step, minSteps,
+			  minSteps + 15);
+	cr_assert_not(tbBody_IsAwake(box));
+	for (int i = 0; i < 10; ++i)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		cr_assert_eq(tbWorld_GetBodyEvents(world).moveCount, 0, "a sleeping body reported a move");
+	}
+	tbDestroyWorld(world);
+}
+
+// --- waking -----------------------------------------------------------------------------------
+
+// A sleeping box is woken by a ball landing on it: awake no later than the step after the ball's
+// begin-touch event, and the ball comes to rest on it (centre at 1 + 0.25 m).
+Test(events, sleeping_box_woken_by_landing_ball)
+{
+	tbWorldId world = CreateWorld();
+	CreateGround(world, NULL);
+	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	cr_assert(StepUntilAsleep(world, box, 120) > 0);
+	cr_assert_not(tbBody_IsAwake(box));
+
+	tbBodyId ball;
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 2.25f}, 0.25f, NULL, &ball);
+	int beginStep = -1, wokenStep = -1;
+	for (int step = 1; step <= 60; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		tbContactEvents events = tbWorld_GetContactEvents(world);
+		for (int i = 0; i < events.beginCount; ++i)
+		{
+			if (TB_ID_EQUALS(events.beginEvents[i].shapeIdA, ballShape) ||
+				TB_ID_EQUALS(events.beginEvents[i].shapeIdB, ballShape))
+			{
+				beginStep = beginStep < 0 ? step : beginStep;
+			}
+		}
+		if (wokenStep < 0 && tbBody_IsAwake(box))
+		{
+			wokenStep = step;
+		}
+	}
+	cr_assert(beginStep > 0, "the ball never touched the box");
+	cr_assert(wokenStep > 0, "the box never woke");
+	cr_assert(wokenStep <= beginStep + 1, "woke at step %d, touch began at %d", wokenStep, beginStep);
+	cr_assert(fabsf(tbBody_GetPosition(ball).y - 1.25f) < 0.02f, "ball at %g", (double)tbBody_GetPosition(ball).y);
+	tbDestroyWorld(world);
+}
+
+// An upward impulse of 5 N·s on a sleeping 1 kg box wakes it at once and lifts it
+// (Δv = 5 m/s: after one step it has risen by about 5/60 m).
+Test(events, impulse_wakes_sleeping_body)
+{
+	tbWorldId world = CreateWorld();
+	CreateGround(world, NULL);
+	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	cr_assert(StepUntilAsleep(world, box, 120) > 0);
+	cr_assert_not(tbBody_IsAwake(box));
+	float y0 = tbBody_GetPosition(box).y;
+	cr_assert(tbBody_ApplyLinearImpulseToCenter(box, (tbVec2){0.0f, 5.0f * tbBody_GetMass(box)}, true));
+	cr_assert(tbBody_IsAwake(box), "the impulse did not wake the box");
+	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+	float rise = tbBody_GetPosition(box).y - y0;
+	cr_assert(fabsf(rise - 5.0f * TIME_STEP) < 0.01f, "rose %g m in one step, expected ~%g", (double)rise,
+			  (double)(5.0f * TIME_STEP));
+	cr_assert_eq(tbWorld_GetBodyEvents(world).moveCount, 1);
+	tbDestroyWorld(world);
+}
+
+// --- filtering --------------------------------------------------------------------------------
+
+/// Drop a ball r 0.5 from a 1 m gap onto the ground for 1.5 s with the given filters; returns
+/// its final height and the number of begin events.
+static float DropWithFilters(tbFilter groundFilter, tbFilter ballFilter, int* beginsOut)
+{
+	tbWorldId world = CreateWorld();
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.filter = groundFilter;
+	CreateGround(world, &groundDef);
+	tbShapeDef ballDef = tbDefaultShapeDef();
+	ballDef.filter = ballFilter;
+	tbBodyId ball;
+	CreateBall(world, (tbVec2){0.0f, 1.5f}, 0.5f, &ballDef, &ball);
+	int begins = 0;
+	for (int step = 0; step < 90; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		begins += tbWorld_GetContactEvents(world).beginCount;
+	}
+	float y = tbBody_GetPosition(ball).y;
+	tbDestroyWorld(world);
+	*beginsOut = begins;
+	return y;
+}
+
+// Ground category 1; the ball's category 2 and mask 2 exclude it: the ball falls through
+// (free fall for 1.5 s: y = 1.5 − ½·10·1.5² ≈ −9.8 m) and no contact ever begins.
+Test(filter, category_mask_exclusion_falls_through)
+{
+	tbFilter ground = tbDefaultFilter();
+	ground.categoryBits = 0x1;
+	tbFilter ball = tbDefaultFilter();
+	ball.categoryBits = 0x2;
+	ball.maskBits = 0x2;
+	int begins;
+	float y = DropWithFilters(ground, ball, &begins);
+	cr_assert_eq(begins, 0);
+	cr_assert(y < -9.0f, "ball at y %g, expected to fall through", (double)y);
+
+	// Control: the default filters collide and the ball rests on the ground.
+	y = DropWithFilters(tbDefaultFilter(), tbDefaultFilter(), &begins);
+	cr_assert_eq(begins, 1);
+	cr_assert(fabsf(y - 0.5f) < 0.02f, "ball at y %g, expected resting at 0.5", (double)y);
+}
+
+// Same negative group index on both shapes (categories and masks would collide): never collide.
+Test(filter, negative_group_never_collides)
+{
+	tbFilter filter = tbDefaultFilter();
+	filter.groupIndex = -3;
+	int begins;
+	float y = DropWithFilters(filter, filter, &begins);
+	cr_assert_eq(begins, 0);
+	cr_assert(y < -9.0f, "ball at y %g, expected to fall through", (double)y);
+}
+
+// Same positive group index on both shapes while categories and masks exclude each other:
+// always collide, the ball rests on the ground.
+Test(filter, positive_group_always_collides)
+{
+	tbFilter ground = tbDefaultFilter();
+	ground.categoryBits = 0x1;
+	ground.maskBits = 0x1;
+	ground.groupIndex = 3;
+	tbFilter ball = tbDefaultFilter();
+	ball.categoryBits = 0x2;
+	ball.maskBits = 0x2;
+	ball.groupIndex = 3;
+	int begins;
+	float y = DropWithFilters(ground, ball, &begins);
+	cr_assert_eq(begins, 1);
+	cr_assert(fabsf(y - 0.5f) < 0.02f, "ball at y %g, expected resting at 0.5", (double)y);
+}
