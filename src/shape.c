@@ -151,7 +151,39 @@ static bool tbCheckRadius(const char* f, const char* name, float radius)
 	return tbCheckPositive(f, name, radius);
 }
 
-/// Reject a polygon that is not a convex counter-clockwise hull of 3..8 finite vertices.
+/// Is the polygon strictly convex and counter-clockwise, with no duplicate or collinear vertices,
+/// and do its normals match its edges? This is a geometric check, not tbValidateHull: a hull from
+/// tbComputeHull welds points closer than the linear slop, but a valid thin box (a 2 mm card from
+/// tbMakeBox) has edges shorter than that. Tolerances are relative to the polygon's size:
+/// an edge shorter than 1e-6 × size is a duplicate, and |sin| < 1e-6 between neighbouring edges is
+/// collinear; a normal must be unit (1e-3) and perpendicular to its edge (1e-3).
+static bool tbIsConvexPolygon(const tbPolygon* p)
+{
+	float size = 0.0f;
+	for (int i = 0; i < p->count; ++i)
+	{
+		size = tbMaxFloat(size, tbLength(tbSub(p->vertices[i], p->vertices[0])));
+	}
+	for (int i = 0; i < p->count; ++i)
+	{
+		tbVec2 e1 = tbSub(p->vertices[(i + 1) % p->count], p->vertices[i]);
+		tbVec2 e2 = tbSub(p->vertices[(i + 2) % p->count], p->vertices[(i + 1) % p->count]);
+		float l1 = tbLength(e1), l2 = tbLength(e2);
+		if (l1 <= 1e-6f * size || l2 <= 1e-6f * size || tbCross(e1, e2) <= 1e-6f * l1 * l2)
+		{
+			return false;
+		}
+		tbVec2 n = p->normals[i];
+		if (tbAbsFloat(tbLength(n) - 1.0f) > 1e-3f || tbAbsFloat(tbDot(n, e1)) > 1e-3f * l1 ||
+			tbDot(n, tbRightPerp(e1)) <= 0.0f)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/// Reject a polygon that is not convex and counter-clockwise with 3..8 finite vertices.
 static bool tbCheckPolygon(const char* f, const tbPolygon* p)
 {
 	if (p->count < 3 || p->count > TB_MAX_POLYGON_VERTICES)
@@ -160,25 +192,23 @@ static bool tbCheckPolygon(const char* f, const tbPolygon* p)
 					  p->count, TB_MAX_POLYGON_VERTICES);
 		return false;
 	}
-	if (tbCheckNonNegative(f, "polygon->radius", p->radius) == false)
+	if (tbCheckNonNegative(f, "polygon->radius", p->radius) == false ||
+		tbCheckVec2(f, "polygon->centroid", p->centroid) == false)
 	{
 		return false;
 	}
-	tbHull hull;
-	hull.count = p->count;
 	for (int i = 0; i < p->count; ++i)
 	{
-		if (tbIsValidVec2(p->vertices[i]) == false)
+		if (tbIsValidVec2(p->vertices[i]) == false || tbIsValidVec2(p->normals[i]) == false)
 		{
-			tbReportError(f, "polygon->vertices[%d] is not finite; pass finite coordinates", i);
+			tbReportError(f, "polygon->vertices[%d] or normals[%d] is not finite; pass finite coordinates", i, i);
 			return false;
 		}
-		hull.points[i] = p->vertices[i];
 	}
-	if (tbValidateHull(&hull) == false)
+	if (tbIsConvexPolygon(p) == false)
 	{
-		tbReportError(f, "polygon is degenerate or not convex and counter-clockwise (duplicate or collinear vertices); "
-						 "build it with tbMakePolygon(tbComputeHull(...))");
+		tbReportError(f, "polygon is degenerate or not convex and counter-clockwise (duplicate or collinear vertices, "
+						 "or normals that do not match the edges); build it with tbMakePolygon(tbComputeHull(...))");
 		return false;
 	}
 	return true;

@@ -233,7 +233,7 @@ typedef struct tbCounters
 	int bodyCount;
 	int shapeCount;
 	int contactCount;		 ///< contacts whose fat boxes overlap
-	int touchingCount;		 ///< contacts with manifold points
+	int touchingCount;		 ///< contacts with manifold points among awake bodies (sleeping islands are not visited)
 	int awakeBodyCount;
 	int islandCount;		 ///< awake islands
 	int treeHeight;			 ///< dynamic-tree height (0 when another broad phase runs)
