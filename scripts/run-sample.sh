@@ -8,5 +8,6 @@ cmake --build build/release --target tumble_cli -j"$(nproc)"
 scene="${1:-pyramid}"
 out="out/$scene"
 rm -rf "$out"
+mkdir -p "$out"
 build/release/samples/tumble run "$scene" --steps 300 --every 10 --png "$out" --size 640x480
 echo "Frames written to $(pwd)/$out/ (frame_00000.png ...)"
