@@ -284,26 +284,9 @@ static void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, tbSolver
 	sB->angularVelocity = wB;
 }
 
-#include <stdlib.h>
-int tbExpSweep = -1;
 void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy)
 {
-	if (tbExpSweep < 0) { const char* e = getenv("TB_SWEEP"); tbExpSweep = e ? atoi(e) : 0; }
 	tbSolverBody* bodies = context->bodies;
-	bool reverse = false;
-	if (tbExpSweep == 1) reverse = (context->sweepCount & 1) != 0;           // alternate every pass
-	if (tbExpSweep == 2) reverse = (context->subStepIndex & 1) != 0;         // alternate per sub-step
-	if (tbExpSweep == 3) reverse = ((context->subStepIndex + context->sweepCount) & 1) != 0;
-	context->sweepCount += 1;
-	if (reverse)
-	{
-		for (int i = context->constraintCount - 1; i >= 0; --i)
-		{
-			tbContactConstraint* c = context->constraints + i;
-			tbSolveConstraint(c, bodies + c->indexA, bodies + c->indexB, context, policy);
-		}
-		return;
-	}
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
 		tbContactConstraint* c = context->constraints + i;

@@ -12,79 +12,62 @@
 
 #include "array.h"
 
-#include <stdlib.h>
-#include <stdio.h>
 #include <stdint.h>
-static tbWorld* s_sortWorld;
-static uint64_t tbExpKey(int id, int mode)
+
+// Solve order of the contacts. Gauss–Seidel is order dependent: the contacts gathered body by
+// body (bottom row first, left to right in a pyramid) form a sweep across the structure, and a
+// fixed sweep direction biases the result sideways. Measured on the 5,050-box pyramid (60 Hz, 4
+// sub-steps, soft step): gathered order drifts the top box 0.98 m sideways in 5 s (the reversed
+// order drifts −0.88 m); sorting by contact id or by body pair −0.37 m; alternating the sweep
+// direction per sub-step 0.6–0.7 m; greedy graph colouring 0.97 m; shuffling blocks of 4–16
+// neighbouring contacts 0.3–0.6 m. Scattering single contacts removes the bias: drift
+// |0.01–0.05| m over 10 s for different hash seeds, sag 0.84 m instead of 0.91 m, kinetic
+// energy 1 J instead of 27 J. So the contacts are bucketed by a hash of their id (stable while the
+// contact lives, independent of memory addresses, so the order is deterministic) into
+// TB_SOLVE_ORDER_BUCKETS buckets with a stable counting sort; within a bucket the gathered order is
+// kept, which keeps some locality (cost: about +10% solve time on the large pyramid, from the
+// scattered body accesses). 4 buckets leave 0.11 m of drift, 8 0.05 m, 16 0.04 m.
+#define TB_SOLVE_ORDER_BUCKETS 16
+
+static inline int tbSolveOrderBucket(int contactId)
 {
-	const tbContact* c = s_sortWorld->contacts + id;
-	uint32_t a = (uint32_t)c->edges[0].bodyId, b = (uint32_t)c->edges[1].bodyId;
-	if (a > b) { uint32_t t = a; a = b; b = t; }
-	if (mode == 1) return (uint64_t)id;
-	if (mode == 2) return ((uint64_t)a << 32) | b;
-	if (mode == 5) return ((uint64_t)b << 32) | a;
-	static uint32_t seed = 0xFFFFFFFFu; if (seed == 0xFFFFFFFFu) { const char* e = getenv("TB_SEED"); seed = e ? (uint32_t)atoi(e) : 0; }
-	uint32_t x = ((uint32_t)id + seed * 7919u) * 2654435761u; x ^= x >> 15; x *= 2246822519u; x ^= x >> 13;
-	return ((uint64_t)x << 32) | (uint32_t)id;
+	uint32_t x = (uint32_t)contactId * 2654435761u; // Knuth's multiplicative hash, then a mix
+	x ^= x >> 15;
+	x *= 2246822519u;
+	x ^= x >> 13;
+	return (int)(x & (TB_SOLVE_ORDER_BUCKETS - 1));
 }
-static int s_mode;
-static int tbExpCmp(const void* x, const void* y)
+
+static void tbOrderSolverContacts(tbWorld* world)
 {
-	uint64_t a = tbExpKey(*(const int*)x, s_mode), b = tbExpKey(*(const int*)y, s_mode);
-	return a < b ? -1 : a > b;
-}
-static void tbExpOrder(tbWorld* world)
-{
-	static int mode = -1;
-	if (mode < 0) { const char* e = getenv("TB_ORDER"); mode = e ? atoi(e) : 0; }
-	s_mode = mode; s_sortWorld = world;
-	int n = world->solverContactCount; int* ids = world->solverContacts;
-	if (mode == 3) { for (int i = 0; i < n / 2; ++i) { int t = ids[i]; ids[i] = ids[n - 1 - i]; ids[n - 1 - i] = t; } return; }
-	if (mode == 0) return;
-	if (mode >= 10)
+	int n = world->solverContactCount;
+	if (n < 2)
 	{
-		int B = 1 << (mode - 10);
-		int counts[1025] = {0};
-		int* sorted = tbAlloc((int)sizeof(int) * (n > 0 ? n : 1));
-		for (int i = 0; i < n; ++i) counts[(tbExpKey(ids[i], 4) >> 32) & (uint64_t)(B - 1)] += 1;
-		int off = 0; for (int k = 0; k < B; ++k) { int c = counts[k]; counts[k] = off; off += c; }
-		for (int i = 0; i < n; ++i) sorted[counts[(tbExpKey(ids[i], 4) >> 32) & (uint64_t)(B - 1)]++] = ids[i];
-		for (int i = 0; i < n; ++i) ids[i] = sorted[i];
-		tbFree(sorted, (int)sizeof(int) * (n > 0 ? n : 1));
 		return;
 	}
-	if (mode == 6 || mode == 7)
+	// islandStack is free scratch here: the sleep stage uses it only after the solve.
+	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, n);
+	int* ids = world->solverContacts;
+	int* scratch = world->islandStack;
+	int offsets[TB_SOLVE_ORDER_BUCKETS] = {0};
+	for (int i = 0; i < n; ++i)
 	{
-		int bodyCount = world->awakeBodyCount;
-		uint64_t* masks = tbAlloc((int)sizeof(uint64_t) * (bodyCount > 0 ? bodyCount : 1));
-		for (int i = 0; i < bodyCount; ++i) masks[i] = 0;
-		unsigned char* colors = tbAlloc(n > 0 ? n : 1);
-		int counts[65] = {0};
-		for (int i = 0; i < n; ++i)
-		{
-			const tbContact* c = world->contacts + ids[i];
-			const tbBody* a = world->bodies + c->edges[0].bodyId;
-			const tbBody* b = world->bodies + c->edges[1].bodyId;
-			int ia = a->type == tb_dynamicBody ? a->awakeIndex : -1;
-			int ib = b->type == tb_dynamicBody ? b->awakeIndex : -1;
-			uint64_t used = (ia >= 0 ? masks[ia] : 0) | (ib >= 0 ? masks[ib] : 0);
-			int color = 64;
-			if (~used != 0) { color = __builtin_ctzll(~used); uint64_t bit = (uint64_t)1 << color; if (ia >= 0) masks[ia] |= bit; if (ib >= 0) masks[ib] |= bit; }
-			colors[i] = (unsigned char)color; counts[color] += 1;
-		}
-		int offsets[66]; offsets[0] = 0;
-		for (int k = 0; k < 65; ++k) offsets[k + 1] = offsets[k] + counts[k];
-		int* sorted = tbAlloc((int)sizeof(int) * (n > 0 ? n : 1));
-		for (int i = 0; i < n; ++i) sorted[offsets[colors[i]]++] = ids[i];
-		for (int i = 0; i < n; ++i) ids[i] = sorted[i];
-		tbFree(sorted, (int)sizeof(int) * (n > 0 ? n : 1));
-		tbFree(colors, n > 0 ? n : 1);
-		tbFree(masks, (int)sizeof(uint64_t) * (bodyCount > 0 ? bodyCount : 1));
-		if (getenv("TB_COLORS")) { int used = 0; for (int k = 0; k < 65; ++k) used += counts[k] > 0; fprintf(stderr, "colors %d (c0 %d c1 %d c2 %d overflow %d)\n", used, counts[0], counts[1], counts[2], counts[64]); }
-		return;
+		int id = ids[i];
+		scratch[i] = id;
+		offsets[tbSolveOrderBucket(id)] += 1;
 	}
-	qsort(ids, (size_t)n, sizeof(int), tbExpCmp);
+	int offset = 0;
+	for (int k = 0; k < TB_SOLVE_ORDER_BUCKETS; ++k)
+	{
+		int count = offsets[k];
+		offsets[k] = offset;
+		offset += count;
+	}
+	for (int i = 0; i < n; ++i)
+	{
+		int id = scratch[i];
+		ids[offsets[tbSolveOrderBucket(id)]++] = id;
+	}
 }
 
 static bool tbIsSolverContact(const tbWorld* world, const tbContact* contact)
@@ -139,7 +122,7 @@ void tbIslandStage(tbWorld* world)
 			key = contact->edges[key & 1].nextKey;
 		}
 	}
-	tbExpOrder(world);
+	tbOrderSolverContacts(world);
 }
 
 /// Depth-first search from a seed: collects the island's bodies in world->islandBodies and

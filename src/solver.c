@@ -201,8 +201,6 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 
 	for (int i = 0; i < subStepCount; ++i)
 	{
-		context.subStepIndex = i;
-		context.sweepCount = 0;
 		tbIntegrateVelocities(&context);
 		tbWarmStartContacts(&context);
 		tbMethodSubStep(&context);

@@ -115,8 +115,6 @@ typedef struct tbStepContext
 	float maxLinearSpeed;		///< m/s
 	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step
 	bool enableWarmStarting;
-	int subStepIndex;
-	int sweepCount;
 } tbStepContext;
 
 // solver.c: body integration shared by the methods.

@@ -185,6 +185,12 @@ typedef struct tbWorld
 	tbBodyMoveEvent* moveEvents;
 	int moveCount, moveCapacity;
 
+	// Statistics for the automatic broad-phase choice, accumulated over a window of steps.
+	int autoWindowSteps;
+	int autoMovedProxies;
+	int autoFastBodies;
+	int autoVotes; ///< consecutive windows that voted for a change
+
 	int stepIndex;
 	tbProfile profile;
 	tbCounters counters;

@@ -9,6 +9,7 @@
 
 #include "tumble/tumble.h"
 
+#include <math.h>
 #include <string.h>
 
 /// FNV-1a over the bytes of every body's transform and velocities.
@@ -72,4 +73,59 @@ Test(determinism, same_scene_twice_gives_same_bits)
 	int a, b;
 	cr_assert_eq(RunRain(tb_broadPhaseAuto, 180, &a), RunRain(tb_broadPhaseAuto, 180, &b));
 	cr_assert_eq(a, b);
+}
+
+/// 1,000 circles (r 0.5) drifting at 7.5 m/s in random directions with no gravity: each moves
+/// 0.125 m per step, more than the 0.1 m fat-box margin, so ~40 % of the proxies move each step,
+/// yet no body moves more than half its thickness (0.25 m) per step, so none is fast; there is no
+/// static geometry. The automatic broad phase
+/// must pick sort-and-sweep here and the trajectory must equal the tree's bit for bit.
+static uint64_t RunDrift(tbBroadPhaseMethod method, tbBroadPhaseMethod* chosen)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, 0.0f);
+	def.broadPhase = method;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId bodies[1000];
+	uint32_t seed = 7u;
+	for (int i = 0; i < 1000; ++i)
+	{
+		seed = seed * 1664525u + 1013904223u;
+		float angle = 2.0f * TB_PI * (float)(seed >> 8) / 16777216.0f;
+		tbBodyDef bd = tbDefaultBodyDef();
+		bd.type = tb_dynamicBody;
+		bd.position = tbMakeVec2(2.0f * (float)(i % 32), 2.0f * (float)(i / 32));
+		bd.linearVelocity = tbMakeVec2(7.5f * cosf(angle), 7.5f * sinf(angle));
+		bodies[i] = tbCreateBody(world, &bd);
+		tbShapeDef sd = tbDefaultShapeDef();
+		tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+		tbCreateCircleShape(bodies[i], &sd, &circle);
+	}
+	for (int i = 0; i < 240; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	*chosen = tbWorld_GetDef(world).broadPhase;
+	uint64_t hash = 1469598103934665603ull;
+	for (int i = 0; i < 1000; ++i)
+	{
+		tbTransform xf = tbBody_GetTransform(bodies[i]);
+		const unsigned char* bytes = (const unsigned char*)&xf;
+		for (size_t k = 0; k < sizeof(xf); ++k)
+		{
+			hash = (hash ^ bytes[k]) * 1099511628211ull;
+		}
+	}
+	tbDestroyWorld(world);
+	return hash;
+}
+
+Test(determinism, auto_broad_phase_picks_sweep_for_small_moving_scenes)
+{
+	tbBroadPhaseMethod autoChoice, treeChoice;
+	uint64_t autoHash = RunDrift(tb_broadPhaseAuto, &autoChoice);
+	uint64_t treeHash = RunDrift(tb_broadPhaseTree, &treeChoice);
+	cr_assert_eq(autoChoice, tb_broadPhaseSortAndSweep, "auto chose %d", (int)autoChoice);
+	cr_assert_eq(treeChoice, tb_broadPhaseTree);
+	cr_assert_eq(autoHash, treeHash, "switching broad phase changed the trajectory");
 }
