@@ -381,17 +381,9 @@ static void tbUnlinkShape(tbWorld* world, tbBody* body, int shapeId)
 	}
 }
 
-void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
+/// Destroy every contact of one shape (walking its body's contact list), waking the other bodies.
+static void tbDestroyShapeContacts(tbWorld* world, const tbBody* body, int id)
 {
-	tbWorld* world;
-	tbShape* shape = tbGetShapeChecked(shapeId, "tbDestroyShape", &world, true);
-	if (shape == NULL)
-	{
-		return;
-	}
-	int id = shapeId.index1 - 1;
-	tbBody* body = world->bodies + shape->bodyId;
-	// Destroy the contacts of this shape.
 	int key = body->headContactKey;
 	while (key != TB_NULL_INDEX)
 	{
@@ -403,6 +395,19 @@ void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
 		}
 		key = next;
 	}
+}
+
+void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbDestroyShape", &world, true);
+	if (shape == NULL)
+	{
+		return;
+	}
+	int id = shapeId.index1 - 1;
+	tbBody* body = world->bodies + shape->bodyId;
+	tbDestroyShapeContacts(world, body, id);
 	tbDestroyShapeProxy(world, shape);
 	tbUnlinkShape(world, body, id);
 	shape->inUse = false;
@@ -515,18 +520,7 @@ bool tbShape_SetFilter(tbShapeId shapeId, tbFilter filter)
 	shape->filter = filter;
 	// Re-create the proxy so that pairs are re-evaluated under the new filter.
 	tbBody* body = world->bodies + shape->bodyId;
-	int id = shapeId.index1 - 1;
-	int key = body->headContactKey;
-	while (key != TB_NULL_INDEX)
-	{
-		tbContact* contact = world->contacts + (key >> 1);
-		int next = contact->edges[key & 1].nextKey;
-		if (contact->shapeIdA == id || contact->shapeIdB == id)
-		{
-			tbDestroyContact(world, key >> 1, true);
-		}
-		key = next;
-	}
+	tbDestroyShapeContacts(world, body, shapeId.index1 - 1);
 	tbDestroyShapeProxy(world, shape);
 	tbCreateShapeProxy(world, shape, body);
 	return true;
