@@ -46,7 +46,8 @@ tbBody* tbGetBodyChecked(tbBodyId id, const char* function, tbWorld** worldOut, 
 	}
 	if (mutating && world->locked)
 	{
-		tbReportError(function, "the world is stepping; change bodies between steps");
+		tbReportError(function, "the world is locked (stepping, or inside a query callback); change bodies "
+								"between steps and outside callbacks");
 		return NULL;
 	}
 	if (worldOut != NULL)
@@ -164,7 +165,8 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	}
 	if (world->locked)
 	{
-		tbReportError("tbCreateBody", "the world is stepping; create bodies between steps");
+		tbReportError("tbCreateBody", "the world is locked (stepping, or inside a query callback); create bodies "
+									   "between steps and outside callbacks");
 		return TB_NULL_BODY_ID;
 	}
 	int id = tbAllocBodySlot(world);
@@ -277,8 +279,16 @@ static void tbComputeExtents(tbWorld* world, tbBody* body)
 	body->maxExtent = maxExtent;
 }
 
+/// Keep the velocity of the body origin when the centre of mass moves from oldCenter to
+/// body->center: v_center = v_old + ω × (c_new − c_old).
+static void tbKeepOriginVelocity(tbBody* body, tbVec2 oldCenter)
+{
+	body->linearVelocity = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
+}
+
 void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 {
+	tbVec2 oldCenter = body->center;
 	body->mass = 0.0f;
 	body->invMass = 0.0f;
 	body->inertia = 0.0f;
@@ -287,6 +297,7 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 	if (body->type != tb_dynamicBody)
 	{
 		body->center = tbTransformPoint(body->transform, body->localCenter);
+		tbKeepOriginVelocity(body, oldCenter);
 		tbComputeExtents(world, body);
 		return;
 	}
@@ -322,12 +333,10 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 		body->inertia = rotationalInertia - body->mass * tbDot(localCenter, localCenter);
 		body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
 	}
-	tbVec2 oldCenter = body->center;
 	body->localCenter = localCenter;
 	body->center = tbTransformPoint(body->transform, localCenter);
 	body->center0 = body->center;
-	// Keep the velocity of the body origin: v_center = v_old + ω × (c_new − c_old).
-	body->linearVelocity = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
+	tbKeepOriginVelocity(body, oldCenter);
 	tbComputeExtents(world, body);
 }
 
@@ -405,6 +414,22 @@ tbTransform tbBody_GetTransform(tbBodyId bodyId)
 	return body != NULL ? body->transform : tb_transform_identity;
 }
 
+/// Wake the bodies touching this one. A teleport takes their support away, and a contact between
+/// two sleeping bodies (or a sleeping and a static one) is never updated: without this a box left
+/// resting on a moved body would hang in the air.
+static void tbWakeTouchingBodies(tbWorld* world, const tbBody* body)
+{
+	for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+	{
+		const tbContact* contact = world->contacts + (key >> 1);
+		if (contact->flags & tb_contactTouching)
+		{
+			tbWakeBody(world, world->bodies + contact->edges[(key & 1) ^ 1].bodyId);
+		}
+		key = contact->edges[key & 1].nextKey;
+	}
+}
+
 bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation)
 {
 	const char* f = "tbBody_SetTransform";
@@ -426,6 +451,7 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation)
 	body->center0 = body->center;
 	body->rotation0 = body->transform.q;
 	tbWakeBody(world, body);
+	tbWakeTouchingBodies(world, body);
 	tbUpdateBodyShapeBoxes(world, body, true);
 	return true;
 }

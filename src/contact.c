@@ -84,7 +84,7 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	contact->edges[1].bodyId = b->bodyId;
 	contact->friction = tbMixFriction(world, a, b);
 	contact->restitution = tbMixRestitution(world, a, b);
-	contact->stamp = -1;
+	contact->stamp = UINT32_MAX;
 	if (a->isSensor || b->isSensor)
 	{
 		contact->flags |= tb_contactSensor;
@@ -103,6 +103,9 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	world->contactCount += 1;
 }
 
+/// End events of the step go to the event arrays; those of a change between steps (the world is
+/// unlocked) wait in the pending arrays for the next step, so they are neither cleared unseen at its
+/// start nor pushed into an array the user may be reading.
 static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 {
 	if (contact->flags & tb_contactSensor)
@@ -114,13 +117,28 @@ static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 		if (world->shapes[sensor].enableSensorEvents)
 		{
 			tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
-			TB_ARRAY_PUSH(world->sensorEndEvents, world->sensorEndCount, world->sensorEndCapacity, e);
+			if (world->locked)
+			{
+				TB_ARRAY_PUSH(world->sensorEndEvents, world->sensorEndCount, world->sensorEndCapacity, e);
+			}
+			else
+			{
+				TB_ARRAY_PUSH(world->pendingSensorEndEvents, world->pendingSensorEndCount,
+							  world->pendingSensorEndCapacity, e);
+			}
 		}
 	}
 	else if (contact->flags & tb_contactEnableEvents)
 	{
 		tbContactEndTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB)};
-		TB_ARRAY_PUSH(world->endEvents, world->endCount, world->endCapacity, e);
+		if (world->locked)
+		{
+			TB_ARRAY_PUSH(world->endEvents, world->endCount, world->endCapacity, e);
+		}
+		else
+		{
+			TB_ARRAY_PUSH(world->pendingEndEvents, world->pendingEndCount, world->pendingEndCapacity, e);
+		}
 	}
 }
 
@@ -291,7 +309,7 @@ static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 /// Gather each contact of an awake body once, in awake-body order (deterministic).
 static void tbGatherAwakeContacts(tbWorld* world)
 {
-	int stamp = 2 * world->stepIndex;
+	uint32_t stamp = 2u * world->stepIndex;
 	world->stepContactCount = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{

@@ -73,6 +73,47 @@ static float tbInverseEffectiveMass(const tbContactConstraint* c, tbVec2 rA, tbV
 	return c->invMassA + c->invMassB + c->invIA * rnA * rnA + c->invIB * rnB * rnB;
 }
 
+// Velocity of body `index` after the first velocity integration of the step (the stand-in: 0).
+static void tbIntegratedVelocity(const tbStepContext* context, int index, tbVec2* v, float* w)
+{
+	if (index >= context->bodyCount)
+	{
+		*v = tb_vec2_zero;
+		*w = 0.0f;
+		return;
+	}
+	const tbSolverBody* sb = context->bodies + index;
+	const tbSolverMotion* m = context->motions + index;
+	*v = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
+	*w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
+}
+
+// NGS is the Box2D 2.4 emulation: 2.4 has no speculative contacts, so a point that is apart at
+// the start of the step (s > 0; with the 0.01 m polygon skins, exactly the points 2.4 would not
+// report) takes no part in the step: no warm start, no impulse, no position correction (the
+// contact itself still exists). 2.4 prepares its constraints after integrating the velocities,
+// so the relative normal velocity that decides restitution includes this step's gravity and
+// damping: v = (v0 + h·a)/(1 + h·c), as tbIntegrateVelocities will compute it.
+static void tbPrepareConstraintNGS(const tbStepContext* context, const tbManifold* manifold, tbContactConstraint* c)
+{
+	tbVec2 vA, vB;
+	float wA, wB;
+	tbIntegratedVelocity(context, c->indexA, &vA, &wA);
+	tbIntegratedVelocity(context, c->indexB, &vB, &wB);
+	for (int j = 0; j < c->pointCount; ++j)
+	{
+		tbContactConstraintPoint* cp = c->points + j;
+		if (manifold->points[j].separation > 0.0f)
+		{
+			cp->normalImpulse = 0.0f;
+			cp->tangentImpulse = 0.0f;
+		}
+		tbVec2 dvA = tbAdd(vA, tbCrossSV(wA, cp->anchorA));
+		tbVec2 dvB = tbAdd(vB, tbCrossSV(wB, cp->anchorB));
+		cp->relativeVelocity = tbDot(tbSub(dvB, dvA), c->normal);
+	}
+}
+
 static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact, tbContactConstraint* c)
 {
 	tbWorld* world = context->world;
@@ -126,6 +167,11 @@ static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact
 		tbVec2 vA = tbAdd(sA->linearVelocity, tbCrossSV(sA->angularVelocity, rA));
 		tbVec2 vB = tbAdd(sB->linearVelocity, tbCrossSV(sB->angularVelocity, rB));
 		cp->relativeVelocity = tbDot(tbSub(vB, vA), normal);
+	}
+
+	if (world->def.solver == tb_solverNGS)
+	{
+		tbPrepareConstraintNGS(context, manifold, c);
 	}
 }
 
@@ -296,6 +342,10 @@ void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy)
 
 void tbApplyRestitution(tbStepContext* context)
 {
+	if (context->world->def.solver == tb_solverNGS)
+	{
+		return; // NGS (Box2D 2.4) applies restitution as a velocity bias inside its iterations
+	}
 	float threshold = context->world->def.restitutionThreshold;
 	tbSolverBody* bodies = context->bodies;
 	for (int i = 0; i < context->constraintCount; ++i)

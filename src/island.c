@@ -87,9 +87,11 @@ void tbIslandStage(tbWorld* world)
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		const tbBody* body = world->bodies + world->awakeBodies[i];
-		if (body->type != tb_dynamicBody)
+		bool movingKinematic = body->type == tb_kinematicBody &&
+							   (tbLengthSquared(body->linearVelocity) > 0.0f || body->angularVelocity != 0.0f);
+		if (body->type != tb_dynamicBody && movingKinematic == false)
 		{
-			continue; // kinematic bodies do not wake what they touch through islands
+			continue; // a resting kinematic body does not wake what lies on it; a moving one does
 		}
 		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
 		{
@@ -106,7 +108,7 @@ void tbIslandStage(tbWorld* world)
 		}
 	}
 	// Solver contacts: each touching contact of an awake body once.
-	int stamp = 2 * world->stepIndex + 1;
+	uint32_t stamp = 2u * world->stepIndex + 1u;
 	world->solverContactCount = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
@@ -127,7 +129,7 @@ void tbIslandStage(tbWorld* world)
 
 /// Depth-first search from a seed: collects the island's bodies in world->islandBodies and
 /// returns their count and the smallest sleep time among them.
-static int tbCollectIsland(tbWorld* world, int seed, int stamp, float* minSleepTime)
+static int tbCollectIsland(tbWorld* world, int seed, uint32_t stamp, float* minSleepTime)
 {
 	int count = 0, top = 0;
 	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, 1);
@@ -204,7 +206,7 @@ void tbSleepStage(tbWorld* world, float timeStep)
 {
 	(void)timeStep;
 	// Stamps: a fresh value per step, distinct from the contact stamps.
-	int stamp = world->stepIndex;
+	uint32_t stamp = world->stepIndex;
 	int islands = 0;
 	bool anySleep = false;
 	for (int i = 0; i < world->awakeBodyCount; ++i)

@@ -39,6 +39,17 @@ static bool tbAABBQueryCallback(int proxyKey, int shapeIndex, void* context)
 	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
 }
 
+/// Queries hold the world locked while they call back: a callback that created or destroyed a body
+/// or shape would free or move the broad-phase nodes the query is walking. Such calls are refused
+/// with an error; collect ids in the callback and change the world after the query. Nested queries
+/// keep the lock of the outer one.
+static bool tbLockForQuery(tbWorld* world)
+{
+	bool wasLocked = world->locked;
+	world->locked = true;
+	return wasLocked;
+}
+
 static bool tbCheckQueryWorld(tbWorld* world, const char* f, bool hasFcn)
 {
 	if (world != NULL && hasFcn == false)
@@ -74,7 +85,9 @@ bool tbWorld_OverlapAABB(tbWorldId worldId, tbAABB aabb, tbQueryFilter filter, t
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
+	bool wasLocked = tbLockForQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, aabb, filter.maskBits, tbAABBQueryCallback, &q);
+	world->locked = wasLocked;
 	return true;
 }
 
@@ -107,7 +120,9 @@ bool tbWorld_OverlapPoint(tbWorldId worldId, tbVec2 point, tbQueryFilter filter,
 	q.fcn = fcn;
 	q.point = point;
 	tbAABB box = {point, point};
+	bool wasLocked = tbLockForQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbPointQueryCallback, &q);
+	world->locked = wasLocked;
 	return true;
 }
 
@@ -139,7 +154,8 @@ bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransfor
 {
 	const char* f = "tbWorld_OverlapShape";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
-	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPointer(f, "shape", shape) == false)
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPointer(f, "shape", shape) == false ||
+		tbCheckGeometry(f, shape) == false)
 	{
 		return false;
 	}
@@ -153,8 +169,10 @@ bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransfor
 	q.shape = shape;
 	q.proxy = tbMakeShapeProxy(shape);
 	q.transform = transform;
+	bool wasLocked = tbLockForQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, tbComputeShapeAABB(shape, transform), filter.maskBits, tbShapeQueryCallback,
 					   &q);
+	world->locked = wasLocked;
 	return true;
 }
 
@@ -200,7 +218,9 @@ bool tbWorld_CastRay(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQue
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.castFcn = fcn;
 	tbRayCastInput input = {origin, translation, 1.0f};
+	bool wasLocked = tbLockForQuery(world);
 	tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
+	world->locked = wasLocked;
 	return true;
 }
 
@@ -265,7 +285,7 @@ bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform t
 	const char* f = "tbWorld_CastShape";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPointer(f, "shape", shape) == false ||
-		tbCheckVec2(f, "translation", translation) == false)
+		tbCheckGeometry(f, shape) == false || tbCheckVec2(f, "translation", translation) == false)
 	{
 		return false;
 	}
@@ -283,6 +303,8 @@ bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform t
 	// Candidates: shapes whose boxes overlap the shape's box swept over the translation.
 	tbAABB box = tbComputeShapeAABB(shape, transform);
 	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
+	bool wasLocked = tbLockForQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);
+	world->locked = wasLocked;
 	return true;
 }

@@ -58,7 +58,8 @@ tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** worldOu
 	}
 	if (mutating && world->locked)
 	{
-		tbReportError(function, "the world is stepping; change shapes between steps");
+		tbReportError(function, "the world is locked (stepping, or inside a query callback); change shapes "
+								"between steps and outside callbacks");
 		return NULL;
 	}
 	if (worldOut != NULL)
@@ -214,7 +215,7 @@ static bool tbCheckPolygon(const char* f, const tbPolygon* p)
 	return true;
 }
 
-static bool tbCheckGeometry(const char* f, const tbGeometry* g)
+bool tbCheckGeometry(const char* f, const tbGeometry* g)
 {
 	switch (g->type)
 	{

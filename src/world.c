@@ -222,6 +222,8 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->sensorBeginEvents, w->sensorBeginCapacity);
 	TB_ARRAY_FREE(w->sensorEndEvents, w->sensorEndCapacity);
 	TB_ARRAY_FREE(w->moveEvents, w->moveCapacity);
+	TB_ARRAY_FREE(w->pendingEndEvents, w->pendingEndCapacity);
+	TB_ARRAY_FREE(w->pendingSensorEndEvents, w->pendingSensorEndCapacity);
 }
 
 void tbDestroyWorld(tbWorldId worldId)
@@ -233,7 +235,8 @@ void tbDestroyWorld(tbWorldId worldId)
 	}
 	if (world->locked)
 	{
-		tbReportError("tbDestroyWorld", "the world is stepping; do not destroy it from a callback");
+		tbReportError("tbDestroyWorld", "the world is locked (stepping, or inside a query callback); destroy it "
+									   "between steps and outside callbacks");
 		return;
 	}
 	tbBroadPhase_Destroy(&world->broadPhase);
@@ -261,6 +264,18 @@ static void tbClearEvents(tbWorld* world)
 	world->sensorBeginCount = 0;
 	world->sensorEndCount = 0;
 	world->moveCount = 0;
+	// End events from changes since the last step are reported with this step's events.
+	for (int i = 0; i < world->pendingEndCount; ++i)
+	{
+		TB_ARRAY_PUSH(world->endEvents, world->endCount, world->endCapacity, world->pendingEndEvents[i]);
+	}
+	for (int i = 0; i < world->pendingSensorEndCount; ++i)
+	{
+		TB_ARRAY_PUSH(world->sensorEndEvents, world->sensorEndCount, world->sensorEndCapacity,
+					  world->pendingSensorEndEvents[i]);
+	}
+	world->pendingEndCount = 0;
+	world->pendingSensorEndCount = 0;
 }
 
 static void tbUpdateCounters(tbWorld* world)
@@ -302,7 +317,8 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	}
 	if (world->locked)
 	{
-		tbReportError(f, "the world is already stepping; do not step from a callback");
+		tbReportError(f, "the world is locked (stepping, or inside a query callback); do not step "
+							 "from a callback");
 		return false;
 	}
 	world->locked = true;
@@ -393,7 +409,8 @@ static tbWorld* tbGetUnlockedWorld(tbWorldId worldId, const char* function)
 	tbWorld* world = tbGetWorldChecked(worldId, function);
 	if (world != NULL && world->locked)
 	{
-		tbReportError(function, "the world is stepping; change it between steps");
+		tbReportError(function, "the world is locked (stepping, or inside a query callback); change it "
+									 "between steps and outside callbacks");
 		return NULL;
 	}
 	return world;

@@ -50,7 +50,7 @@ typedef struct tbBody
 
 	int awakeIndex;	 ///< index in world->awakeBodies, or TB_NULL_INDEX when asleep or static
 	int solverIndex; ///< index in the solver's body arrays this step, or TB_NULL_INDEX
-	int islandStamp; ///< step stamp used by the island search
+	uint32_t islandStamp; ///< step stamp used by the island search (unsigned: wraps without overflow)
 
 	uint16_t generation;
 	uint8_t type; ///< tbBodyType
@@ -118,7 +118,7 @@ typedef struct tbContact
 	float friction;
 	float restitution;
 	uint32_t flags;
-	int stamp;			 ///< last step this contact was gathered for update
+	uint32_t stamp;		 ///< last step stamp at which this contact was gathered (unsigned: wraps)
 	bool inUse;
 } tbContact;
 
@@ -131,7 +131,7 @@ typedef struct tbWorld
 	uint16_t worldId;
 	uint16_t generation;
 	bool inUse;
-	bool locked; ///< true during the step: the API refuses changes
+	bool locked; ///< true during the step and query callbacks: the API refuses changes
 
 	tbBody* bodies;
 	int bodyCapacity;
@@ -184,6 +184,12 @@ typedef struct tbWorld
 	int sensorEndCount, sensorEndCapacity;
 	tbBodyMoveEvent* moveEvents;
 	int moveCount, moveCapacity;
+	/// End events from changes between steps (destroying a body or shape, a new filter): held here
+	/// so that the arrays the user is reading do not grow under them, and reported after the next step.
+	tbContactEndTouchEvent* pendingEndEvents;
+	int pendingEndCount, pendingEndCapacity;
+	tbSensorEndTouchEvent* pendingSensorEndEvents;
+	int pendingSensorEndCount, pendingSensorEndCapacity;
 
 	// Statistics for the automatic broad-phase choice, accumulated over a window of steps.
 	int autoWindowSteps;
@@ -191,7 +197,7 @@ typedef struct tbWorld
 	int autoFastBodies;
 	int autoVotes; ///< consecutive windows that voted for a change
 
-	int stepIndex;
+	uint32_t stepIndex; ///< steps taken (unsigned: wraps after 2^32 steps without overflow)
 	tbProfile profile;
 	tbCounters counters;
 	int byteCount;
@@ -221,6 +227,8 @@ tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbTransform transform);
 void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body);
 void tbDestroyShapeProxy(tbWorld* world, tbShape* shape);
 bool tbShouldShapesCollide(tbFilter a, tbFilter b);
+/// Check user geometry (finite, positive radii, valid polygon); reports an error naming `f`.
+bool tbCheckGeometry(const char* f, const tbGeometry* geometry);
 /// Refresh the shape boxes of a body and move broad-phase proxies that left their fat boxes.
 void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);
 
