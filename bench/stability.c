@@ -32,6 +32,7 @@ typedef struct Config
 	int subSteps;	  ///< passed to tbWorld_Step
 	int velocityIterations;
 	int positionIterations;
+	bool followSubStep; ///< soft: contactHertzFollowsSubStep (the follow-stiffness sweep)
 } Config;
 
 static const char* SolverLabel(tbSolverMethod solver)
@@ -54,6 +55,7 @@ static Config MakeConfig(tbSolverMethod solver, int count)
 	Config c;
 	c.solver = solver;
 	c.count = count;
+	c.followSubStep = tbDefaultWorldDef().contactHertzFollowsSubStep;
 	tbWorldDef defaults = tbDefaultWorldDef();
 	if (solver == tb_solverSoft)
 	{
@@ -78,6 +80,7 @@ static SceneWorld BuildWorld(const Scene* scene, const Config* config)
 	def.solver = config->solver;
 	def.velocityIterations = config->velocityIterations;
 	def.positionIterations = config->positionIterations;
+	def.contactHertzFollowsSubStep = config->followSubStep;
 	SceneWorld world = Scene_BuildWorldWithDef(scene, &def);
 	if (TB_IS_NULL(world.worldId))
 	{
@@ -484,6 +487,86 @@ static const int s_counts[] = {1, 2, 4, 8};
 #define CONFIG_COUNT (SOLVER_COUNT * COUNT_COUNT)
 
 // ---------------------------------------------------------------------------------------------
+// Follow-stiffness sweep: soft at 1, 2, 4, 8, 16 sub-steps with the contact stiffness fixed
+// (contactHertz) or following the sub-step rate (contactHertzFollowsSubStep).
+
+static const int s_sweepCounts[] = {1, 2, 4, 8, 16};
+#define SWEEP_COUNT 5
+
+typedef struct SweepResult
+{
+	float stackSink;   ///< m, touching stack 20, top box after 10 s
+	bool stackStands;  ///< top within 0.1 m of x = 0
+	float pyramidSag;  ///< m, pyramid 20, top box drop after 5 s
+	float penetration; ///< m, mass 1:100, deepest over 10 s
+} SweepResult;
+
+static SweepResult RunSweep(int subSteps, bool follow)
+{
+	Config config = MakeConfig(tb_solverSoft, subSteps);
+	config.followSubStep = follow;
+	SweepResult out;
+	Scene* scene = BuildCatalogue("touching_stack");
+	SceneWorld world = BuildWorld(scene, &config);
+	int top = scene->bodyCount - 1;
+	tbVec2 start = scene->bodies[top].position;
+	for (int i = 0; i < STACK_SECONDS * 60; ++i)
+	{
+		Step(&world, &config);
+	}
+	tbVec2 p = tbBody_GetPosition(world.bodyIds[top]);
+	out.stackSink = start.y - p.y;
+	out.stackStands = out.stackSink < 1.0f && fabsf(p.x - start.x) < 0.1f;
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+
+	scene = BuildCatalogue("pyramid");
+	world = BuildWorld(scene, &config);
+	top = scene->bodyCount - 1;
+	float startY = scene->bodies[top].position.y;
+	for (int i = 0; i < PYRAMID_SECONDS * 60; ++i)
+	{
+		Step(&world, &config);
+	}
+	out.pyramidSag = startY - tbBody_GetPosition(world.bodyIds[top]).y;
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+
+	out.penetration = RunMassRatio(&config, 100.0f).value;
+	return out;
+}
+
+static void WriteSweep(FILE* f, SweepResult sweep[2][SWEEP_COUNT])
+{
+	fprintf(f, "\n## Contact stiffness: fixed or following the sub-step rate\n\n");
+	fprintf(f, "Soft step at 1–16 sub-steps. *fixed*: contactHertz 30 Hz (¼ sub-step rate cap, static contacts 2×);\n"
+			   "*follow*: `contactHertzFollowsSubStep`, 30·n/4 Hz (the same as fixed at 4 sub-steps). Both with the\n"
+			   "load-aware stiffening of resting contacts (src/solver_soft.c). Stack: top box sink after 10 s\n"
+			   "(\"fell\" when it toppled or slid > 0.1 m); pyramid: top box drop after 5 s; penetration: deepest over\n"
+			   "10 s in mass 1:100.\n\n");
+	fprintf(f, "| sub-steps | stack sink fixed | stack sink follow | pyramid sag fixed | pyramid sag follow | "
+			   "penetration fixed | penetration follow |\n|---|---|---|---|---|---|---|\n");
+	for (int k = 0; k < SWEEP_COUNT; ++k)
+	{
+		fprintf(f, "| %d |", s_sweepCounts[k]);
+		for (int m = 0; m < 2; ++m)
+		{
+			const SweepResult* r = &sweep[m][k];
+			if (r->stackStands)
+			{
+				fprintf(f, " %.3f m |", (double)r->stackSink);
+			}
+			else
+			{
+				fprintf(f, " fell |");
+			}
+		}
+		fprintf(f, " %.3f m | %.3f m | %.4f m | %.4f m |\n", (double)sweep[0][k].pyramidSag,
+				(double)sweep[1][k].pyramidSag, (double)sweep[0][k].penetration, (double)sweep[1][k].penetration);
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
 // Output
 
 static const char* RowLabel(const Config* c, char* buffer, size_t size)
@@ -499,7 +582,8 @@ static const char* RowLabel(const Config* c, char* buffer, size_t size)
 	return buffer;
 }
 
-static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_COUNT][SCENE_COUNT], double seconds)
+static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_COUNT][SCENE_COUNT], double seconds,
+						  SweepResult sweep[2][SWEEP_COUNT])
 {
 	fprintf(f, "# Stability: position methods on the stress scenes\n\n");
 	fprintf(f, "Produced by `scripts/stability.sh` (Release build, no sanitizers, `tumble-stability`); the measured\n"
@@ -614,6 +698,7 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 	fprintf(f, "\nDurations are shortened from STRESS.md's 10 s where the scene is settled or costly (pyramid and"
 			   "\nconfined 5 s, as their criteria are stated at 5 s; overlap recovery 2 s; cradle 3 s, the last ball"
 			   "\nleaves at about 0.75 s).\n");
+	WriteSweep(f, sweep);
 }
 
 static int s_errorCount;
@@ -696,6 +781,18 @@ int main(int argc, char** argv)
 			}
 		}
 	}
+	static SweepResult sweep[2][SWEEP_COUNT];
+	for (int m = 0; m < 2; ++m)
+	{
+		for (int k = 0; k < SWEEP_COUNT; ++k)
+		{
+			sweep[m][k] = RunSweep(s_sweepCounts[k], m == 1);
+			printf("sweep %-6s %2d  stack %.3f m%s  pyramid sag %.3f m  penetration %.4f m\n", m == 1 ? "follow" : "fixed",
+				   s_sweepCounts[k], (double)sweep[m][k].stackSink, sweep[m][k].stackStands ? "" : " (fell)",
+				   (double)sweep[m][k].pyramidSag, (double)sweep[m][k].penetration);
+			fflush(stdout);
+		}
+	}
 	timespec_get(&t1, TIME_UTC);
 	double seconds = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
 	if (csv != NULL)
@@ -710,7 +807,7 @@ int main(int argc, char** argv)
 			fprintf(stderr, "tumble-stability: cannot write %s\n", markdownPath);
 			return 1;
 		}
-		WriteMarkdown(md, configs, results, seconds);
+		WriteMarkdown(md, configs, results, seconds, sweep);
 		fclose(md);
 	}
 	printf("total %.1f s, %d library errors\n", seconds, s_errorCount);

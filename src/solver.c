@@ -198,6 +198,10 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbGatherBodies(&context);
 	tbPrepareMethod(&context);
 	tbPrepareContacts(&context);
+	if (world->def.solver == tb_solverSoft)
+	{
+		tbSoftPrepareContacts(&context);
+	}
 
 	for (int i = 0; i < subStepCount; ++i)
 	{

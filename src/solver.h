@@ -134,6 +134,7 @@ void tbStoreImpulses(tbStepContext* context);
 // SubStep: after velocity integration and warm starting, solve, integrate positions and correct.
 void tbSoftPrepare(tbStepContext* context);
 void tbSoftSubStep(tbStepContext* context);
+void tbSoftPrepareContacts(tbStepContext* context);
 void tbBaumgartePrepare(tbStepContext* context);
 void tbBaumgarteSubStep(tbStepContext* context);
 void tbNGSPrepare(tbStepContext* context);

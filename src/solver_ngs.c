@@ -1,25 +1,68 @@
-// Sequential impulses plus non-linear Gauss–Seidel position correction (Box2D 2.4 style;
-// Catto GDC 2009 "Modeling and Solving Constraints", position projection section).
+// Sequential impulses plus non-linear Gauss–Seidel position correction: the Box2D 2.4 emulation
+// (Catto GDC 2009 "Modeling and Solving Constraints"; Box2D 2.4's documented b2Island::Solve).
+// With one sub-step, one NGS step is 2.4's step, in 2.4's order:
+//   1. integrate velocities, v ← (v + h·a)/(1 + h·c) (solver.c, shared);
+//   2. prepare (contact_solver.c, NGS branch): points apart at the start of the step (s > 0) are
+//      left out for the whole step, since 2.4 has no speculative contacts and reports a polygon
+//      point only once the 0.01 m skins touch (Tumble's rounded separation ≤ 0); the restitution
+//      velocity bias is taken from the relative normal velocity after step 1:
+//          bias = −e·Ċ0 if Ċ0 < −restitutionThreshold, else 0;
+//   3. warm start (shared);
+//   4. velocity iterations, per contact friction FIRST (bounded by the normal impulse of the
+//      previous iteration, as 2.4 does), then the normal, rigid, no position bias:
+//          Ċ = J·v, J = [−n, −rA × n, n, rB × n], λ = −m_eff·(Ċ − bias), λ_acc ≥ 0;
+//      two-point manifolds use Catto's block solver (below) as 2.4 does with b2_blockSolve;
+//   5. integrate positions (shared);
+//   6. position iterations: for every active point,
+//          s from the current deltas (anchors rotated with the bodies, normal held fixed),
+//          C = clamp(β·(s + linear slop), −TB_MAX_LINEAR_CORRECTION, 0), β = 0.2, slop 5 mm,
+//          K with the current anchors, P = (−C/K)·n,
+//          ΔpA −= mA⁻¹P, ΔθA −= IA⁻¹ rA × P, ΔpB += mB⁻¹P, ΔθB += IB⁻¹ rB × P,
+//      stopping when the deepest overlap seen in a pass is within 3 slops (2.4's test).
+// Restitution is not applied again after the step (tbApplyRestitution skips NGS).
 //
-// Velocity pass: rigid contacts with no position bias (speculative gaps s > 0 still get s/h),
-//     Ċ = J·v, J = [−n, −rA × n, n, rB × n], λ = −m_eff·Ċ,
-//     m_eff = 1/(mA⁻¹ + mB⁻¹ + IA⁻¹(rA × n)² + IB⁻¹(rB × n)²),
-// so the velocities carry no push-out energy. After the positions are integrated, overlap is
-// removed directly on positions, positionIterations times per sub-step:
-//     s from the current deltas (anchors rotated with the bodies, normal held fixed),
-//     C = clamp(β·(s + linear slop), −TB_MAX_LINEAR_CORRECTION, 0),
-//     K with the current anchors, P = (−C/K)·n,
-//     ΔpA −= mA⁻¹P, ΔθA −= IA⁻¹ rA × P, ΔpB += mB⁻¹P, ΔθB += IB⁻¹ rB × P.
-// Non-linear because s and K are recomputed from the moved bodies at every point; Gauss–Seidel
-// because each point sees the corrections of the points before it. The passes stop early when
-// the deepest overlap is within 3 slops (Box2D 2.4's test).
+// Block solver (Catto, Box2D's b2ContactSolver notes). The two normal impulses x = (x1, x2) of a
+// two-point manifold solve the linear complementarity problem
+//     w = K·x + b,  x ≥ 0,  w ≥ 0,  xᵢ·wᵢ = 0,
+// with K the 2×2 effective-mass matrix (K11, K22 the single-point K, K12 the coupling) and
+// b = Ċ − bias − K·x_acc the velocity the current accumulated impulse leaves. In 2D the LCP is
+// solved exactly by trying its four cases in turn and keeping the first consistent one:
+//     both active  x = −K⁻¹b                       (needs x1, x2 ≥ 0)
+//     only x1      x1 = −b1/K11, x2 = 0            (needs x1 ≥ 0, w2 = K21·x1 + b2 ≥ 0)
+//     only x2      x2 = −b2/K22, x1 = 0            (needs x2 ≥ 0, w1 = K12·x2 + b1 ≥ 0)
+//     neither      x = 0                           (needs b1, b2 ≥ 0)
+// (if none holds, rounding: keep the previous impulse). Solving the pair together removes the
+// see-saw of point-by-point Gauss–Seidel on a box resting on two corners, which otherwise leaves
+// a small rotation per step that makes stacks walk. K is accepted only when well conditioned,
+// K11² < 1000·det K; otherwise, as in 2.4, only the first point is solved for velocity (its
+// partner still takes part in the position pass).
 //
-// Weakness (measured in STRESS.md scenes): the position pass ignores mass ratios' effect on
-// velocity, so heavy bodies on light ones sink, and velocity iterations without bias need many
-// iterations for tall stacks.
+// Differences from 2.4 that remain: the position pass uses the linearised separation with the
+// normal held fixed (2.4 rotates the reference face normal with its body and re-derives the
+// point from local coordinates; the two agree to second order in the step's rotation), and the
+// contact order is Tumble's (island.c), not 2.4's island traversal.
 #include "solver.h"
 
 #include "tumble/constants.h"
+
+#include <stdbool.h>
+
+/// Per-constraint NGS data, rebuilt at every sub-step from the constraint and its manifold.
+typedef struct tbNGSConstraint
+{
+	float bias[2];		  ///< m/s, restitution velocity bias (2.4's velocityBias)
+	bool active[2];		  ///< takes part in the velocity iterations
+	bool positionActive[2]; ///< takes part in the position iterations
+	bool block;			  ///< two active points solved together
+	float k11, k12, k22;  ///< K (1/kg)
+	float m11, m12, m22;  ///< K⁻¹ (kg)
+	bool toi[2];		  ///< made active by the time-of-impact sub-step
+	bool toiSolve;		  ///< part of the current time-of-impact solve
+	float savedNormalImpulse[2], savedTangentImpulse[2];
+} tbNGSConstraint;
+
+// 2.4's b2_maxConditionNumber for the block solver.
+#define TB_NGS_MAX_CONDITION 1000.0f
 
 void tbNGSPrepare(tbStepContext* context)
 {
@@ -28,8 +71,231 @@ void tbNGSPrepare(tbStepContext* context)
 	context->staticSoftness = rigid;
 }
 
+static void tbApplyPointImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbContactConstraint* c, tbVec2 rA,
+								tbVec2 rB, tbVec2 P)
+{
+	sA->linearVelocity = tbMulSub(sA->linearVelocity, c->invMassA, P);
+	sA->angularVelocity -= c->invIA * tbCross(rA, P);
+	sB->linearVelocity = tbMulAdd(sB->linearVelocity, c->invMassB, P);
+	sB->angularVelocity += c->invIB * tbCross(rB, P);
+}
+
+// Block solver set-up of a constraint whose active points are known: K and K⁻¹ when both points
+// are active and K is well conditioned; otherwise, as 2.4, only the first point is solved for
+// velocity, and its partner's warm start is taken back (when `context` is given).
+static void tbSetupBlock(tbNGSConstraint* info, tbContactConstraint* c, tbStepContext* context)
+{
+	info->block = false;
+		if (info->active[0] == false || info->active[1] == false)
+		{
+			return;
+		}
+
+		const tbContactConstraintPoint* cp1 = c->points + 0;
+		const tbContactConstraintPoint* cp2 = c->points + 1;
+		tbVec2 n = c->normal;
+		float rn1A = tbCross(cp1->anchorA, n), rn1B = tbCross(cp1->anchorB, n);
+		float rn2A = tbCross(cp2->anchorA, n), rn2B = tbCross(cp2->anchorB, n);
+		float mAB = c->invMassA + c->invMassB;
+		float k11 = mAB + c->invIA * rn1A * rn1A + c->invIB * rn1B * rn1B;
+		float k22 = mAB + c->invIA * rn2A * rn2A + c->invIB * rn2B * rn2B;
+		float k12 = mAB + c->invIA * rn1A * rn2A + c->invIB * rn1B * rn2B;
+		float det = k11 * k22 - k12 * k12;
+		if (k11 * k11 < TB_NGS_MAX_CONDITION * det)
+		{
+			info->block = true;
+			info->k11 = k11;
+			info->k12 = k12;
+			info->k22 = k22;
+			float invDet = 1.0f / det;
+			info->m11 = invDet * k22;
+			info->m12 = -invDet * k12;
+			info->m22 = invDet * k11;
+		}
+		else
+		{
+			// Ill-conditioned (the points nearly coincide): 2.4 solves the first point alone and
+			// does not warm start the second; take back the second point's warm start.
+			info->active[1] = false;
+			tbContactConstraintPoint* cp = c->points + 1;
+			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, n), tbMulSV(cp->tangentImpulse, tbRightPerp(n)));
+			tbApplyPointImpulse(context->bodies + c->indexA, context->bodies + c->indexB, c, cp->anchorA,
+								cp->anchorB, tbNeg(P));
+			cp->normalImpulse = 0.0f;
+			cp->tangentImpulse = 0.0f;
+		}
+	}
+}
+
+
+static void tbBuildNGSConstraints(tbStepContext* context, tbNGSConstraint* infos)
+{
+	const tbWorld* world = context->world;
+	float threshold = world->def.restitutionThreshold;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		tbContactConstraint* c = context->constraints + i;
+		const tbManifold* manifold = &world->contacts[world->solverContacts[i]].manifold;
+		tbNGSConstraint* info = infos + i;
+		info->block = false;
+		info->k11 = info->k12 = info->k22 = 0.0f;
+		info->m11 = info->m12 = info->m22 = 0.0f;
+		for (int j = 0; j < 2; ++j)
+		{
+			bool active = j < c->pointCount && manifold->points[j].separation <= 0.0f;
+			info->active[j] = active;
+			info->positionActive[j] = active;
+			info->bias[j] = 0.0f;
+			if (active && c->points[j].relativeVelocity < -threshold)
+			{
+				info->bias[j] = -c->restitution * c->points[j].relativeVelocity;
+			}
+		}
+		tbSetupBlock(info, c, context);
+	}
+}
+
+// Two-point normal constraint by the block solver (see the header comment).
+static void tbSolveBlock(tbContactConstraint* c, const tbNGSConstraint* info, tbVec2* vA, float* wA, tbVec2* vB,
+						 float* wB)
+{
+	tbContactConstraintPoint* cp1 = c->points + 0;
+	tbContactConstraintPoint* cp2 = c->points + 1;
+	tbVec2 n = c->normal;
+	tbVec2 r1A = cp1->anchorA, r1B = cp1->anchorB;
+	tbVec2 r2A = cp2->anchorA, r2B = cp2->anchorB;
+
+	float a1 = cp1->normalImpulse, a2 = cp2->normalImpulse;
+	tbVec2 dv1 = tbSub(tbAdd(*vB, tbCrossSV(*wB, r1B)), tbAdd(*vA, tbCrossSV(*wA, r1A)));
+	tbVec2 dv2 = tbSub(tbAdd(*vB, tbCrossSV(*wB, r2B)), tbAdd(*vA, tbCrossSV(*wA, r2A)));
+	float vn1 = tbDot(dv1, n), vn2 = tbDot(dv2, n);
+	float b1 = vn1 - info->bias[0] - (info->k11 * a1 + info->k12 * a2);
+	float b2 = vn2 - info->bias[1] - (info->k12 * a1 + info->k22 * a2);
+
+	float x1, x2;
+	bool found = true;
+	// Case 1: both points push.
+	x1 = -(info->m11 * b1 + info->m12 * b2);
+	x2 = -(info->m12 * b1 + info->m22 * b2);
+	if (x1 < 0.0f || x2 < 0.0f)
+	{
+		// Case 2: only point 1 pushes; point 2 must then separate (w2 ≥ 0).
+		x1 = -b1 / info->k11;
+		x2 = 0.0f;
+		if (x1 < 0.0f || info->k12 * x1 + b2 < 0.0f)
+		{
+			// Case 3: only point 2 pushes.
+			x1 = 0.0f;
+			x2 = -b2 / info->k22;
+			if (x2 < 0.0f || info->k12 * x2 + b1 < 0.0f)
+			{
+				// Case 4: neither pushes.
+				x1 = 0.0f;
+				x2 = 0.0f;
+				found = b1 >= 0.0f && b2 >= 0.0f;
+			}
+		}
+	}
+	if (found == false)
+	{
+		return; // no consistent case (rounding): keep the accumulated impulses
+	}
+
+	float d1 = x1 - a1, d2 = x2 - a2;
+	tbVec2 P1 = tbMulSV(d1, n);
+	tbVec2 P2 = tbMulSV(d2, n);
+	*vA = tbMulSub(*vA, c->invMassA, tbAdd(P1, P2));
+	*wA -= c->invIA * (tbCross(r1A, P1) + tbCross(r2A, P2));
+	*vB = tbMulAdd(*vB, c->invMassB, tbAdd(P1, P2));
+	*wB += c->invIB * (tbCross(r1B, P1) + tbCross(r2B, P2));
+	cp1->normalImpulse = x1;
+	cp2->normalImpulse = x2;
+	cp1->maxNormalImpulse = tbMaxFloat(cp1->maxNormalImpulse, x1);
+	cp2->maxNormalImpulse = tbMaxFloat(cp2->maxNormalImpulse, x2);
+}
+
+// One velocity iteration over all contacts, Box2D 2.4's order: friction, then normal.
+static void tbSolveVelocityConstraints(tbStepContext* context, const tbNGSConstraint* infos)
+{
+	tbSolverBody* bodies = context->bodies;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		tbContactConstraint* c = context->constraints + i;
+		const tbNGSConstraint* info = infos + i;
+		tbSolverBody* sA = bodies + c->indexA;
+		tbSolverBody* sB = bodies + c->indexB;
+		tbVec2 vA = sA->linearVelocity;
+		float wA = sA->angularVelocity;
+		tbVec2 vB = sB->linearVelocity;
+		float wB = sB->angularVelocity;
+		float mA = c->invMassA, iA = c->invIA;
+		float mB = c->invMassB, iB = c->invIB;
+		tbVec2 normal = c->normal;
+		tbVec2 tangent = tbRightPerp(normal);
+
+		// Friction first, bounded by the normal impulse of the previous iteration (or warm start).
+		for (int j = 0; j < c->pointCount; ++j)
+		{
+			if (info->active[j] == false)
+			{
+				continue;
+			}
+			tbContactConstraintPoint* cp = c->points + j;
+			tbVec2 rA = cp->anchorA;
+			tbVec2 rB = cp->anchorB;
+			tbVec2 dv = tbSub(tbAdd(vB, tbCrossSV(wB, rB)), tbAdd(vA, tbCrossSV(wA, rA)));
+			float vt = tbDot(dv, tangent);
+			float impulse = -cp->tangentMass * vt;
+			float maxFriction = c->friction * cp->normalImpulse;
+			float newImpulse = tbClampFloat(cp->tangentImpulse + impulse, -maxFriction, maxFriction);
+			impulse = newImpulse - cp->tangentImpulse;
+			cp->tangentImpulse = newImpulse;
+			tbVec2 P = tbMulSV(impulse, tangent);
+			vA = tbMulSub(vA, mA, P);
+			wA -= iA * tbCross(rA, P);
+			vB = tbMulAdd(vB, mB, P);
+			wB += iB * tbCross(rB, P);
+		}
+
+		if (info->block)
+		{
+			tbSolveBlock(c, info, &vA, &wA, &vB, &wB);
+		}
+		else
+		{
+			for (int j = 0; j < c->pointCount; ++j)
+			{
+				if (info->active[j] == false)
+				{
+					continue;
+				}
+				tbContactConstraintPoint* cp = c->points + j;
+				tbVec2 rA = cp->anchorA;
+				tbVec2 rB = cp->anchorB;
+				tbVec2 dv = tbSub(tbAdd(vB, tbCrossSV(wB, rB)), tbAdd(vA, tbCrossSV(wA, rA)));
+				float vn = tbDot(dv, normal);
+				float impulse = -cp->normalMass * (vn - info->bias[j]);
+				float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
+				impulse = newImpulse - cp->normalImpulse;
+				cp->normalImpulse = newImpulse;
+				cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
+				tbVec2 P = tbMulSV(impulse, normal);
+				vA = tbMulSub(vA, mA, P);
+				wA -= iA * tbCross(rA, P);
+				vB = tbMulAdd(vB, mB, P);
+				wB += iB * tbCross(rB, P);
+			}
+		}
+
+		sA->linearVelocity = vA;
+		sA->angularVelocity = wA;
+		sB->linearVelocity = vB;
+		sB->angularVelocity = wB;
+	}
+}
+
 // One position pass over all contacts; returns the smallest separation seen (m).
-static float tbSolvePositionConstraints(tbStepContext* context)
+static float tbSolvePositionConstraints(tbStepContext* context, const tbNGSConstraint* infos)
 {
 	float minSeparation = 0.0f;
 	tbSolverBody* bodies = context->bodies;
@@ -41,6 +307,10 @@ static float tbSolvePositionConstraints(tbStepContext* context)
 		tbVec2 normal = c->normal;
 		for (int j = 0; j < c->pointCount; ++j)
 		{
+			if (infos[i].positionActive[j] == false)
+			{
+				continue;
+			}
 			const tbContactConstraintPoint* cp = c->points + j;
 			tbVec2 rA = tbRotateVector(sA->deltaRotation, cp->anchorA);
 			tbVec2 rB = tbRotateVector(sB->deltaRotation, cp->anchorB);
@@ -67,17 +337,22 @@ static float tbSolvePositionConstraints(tbStepContext* context)
 void tbNGSSubStep(tbStepContext* context)
 {
 	const tbWorldDef* def = &context->world->def;
+	int byteCount = (int)sizeof(tbNGSConstraint) * tbMaxInt(context->constraintCount, 1);
+	tbNGSConstraint* infos = tbAlloc(byteCount);
+	tbBuildNGSConstraints(context, infos);
+
 	int velocityIterations = tbMaxInt(def->velocityIterations, 1);
 	for (int i = 0; i < velocityIterations; ++i)
 	{
-		tbSolveContacts(context, tb_biasSpeculative);
+		tbSolveVelocityConstraints(context, infos);
 	}
 	tbIntegratePositions(context);
 	for (int i = 0; i < def->positionIterations; ++i)
 	{
-		if (tbSolvePositionConstraints(context) >= -3.0f * TB_LINEAR_SLOP)
+		if (tbSolvePositionConstraints(context, infos) >= -3.0f * TB_LINEAR_SLOP)
 		{
 			break;
 		}
 	}
+	tbFree(infos, byteCount);
 }

@@ -572,3 +572,74 @@ Test(solver, stack_sleeps)
 	cr_expect_eq(awake, 0, "%d boxes still awake after 10 s", awake);
 	tbDestroyWorld(scene.worldId);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Soft step: touching stack of 20 (STRESS.md). At 30 Hz the soft contacts make the column buckle
+// (tilt grows exponentially, critical stiffness ≈ 45–50 Hz); the load-aware stiffening in
+// solver_soft.c keeps it standing, and more sub-steps must not be worse than fewer.
+
+static float TouchingStack20(int subSteps, float* slide)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, -GRAVITY);
+	def.enableSleep = false;
+	tbWorldId worldId = tbCreateWorld(&def);
+	tbBodyDef gd = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(worldId, &gd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	sd.friction = 0.6f;
+	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbCreatePolygonShape(ground, &sd, &groundBox);
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	tbBodyId top = tbCreateBody(worldId, &gd);
+	for (int i = 0; i < 20; ++i)
+	{
+		tbBodyDef bd = tbDefaultBodyDef();
+		bd.type = tb_dynamicBody;
+		bd.position = tbMakeVec2(0.0f, 0.5f + (float)i);
+		top = tbCreateBody(worldId, &bd);
+		tbCreatePolygonShape(top, &sd, &box);
+	}
+	for (int i = 0; i < 600; ++i)
+	{
+		tbWorld_Step(worldId, TIME_STEP, subSteps);
+	}
+	tbVec2 p = tbBody_GetPosition(top);
+	tbDestroyWorld(worldId);
+	*slide = p.x;
+	return 19.5f - p.y;
+}
+
+Test(solver, touching_stack_20_soft_more_substeps_not_worse)
+{
+	float slide4 = 0.0f, slide8 = 0.0f, slide16 = 0.0f;
+	float sink4 = TouchingStack20(4, &slide4);
+	float sink8 = TouchingStack20(8, &slide8);
+	float sink16 = TouchingStack20(16, &slide16);
+	fprintf(stderr, "touching stack 20: sink/slide 4: %.3f/%.3f, 8: %.3f/%.3f, 16: %.3f/%.3f m\n", sink4, slide4, sink8,
+			slide8, sink16, slide16);
+	// STRESS.md: top within 0.1 m of its rigid height (and standing).
+	cr_expect(sink4 < 0.1f && fabsf(slide4) < 0.1f, "4 sub-steps: sink %f slide %f", sink4, slide4);
+	cr_expect(sink8 < 0.1f && fabsf(slide8) < 0.1f, "8 sub-steps: sink %f slide %f", sink8, slide8);
+	cr_expect(sink16 < 0.1f && fabsf(slide16) < 0.1f, "16 sub-steps: sink %f slide %f", sink16, slide16);
+	cr_expect(sink8 <= sink4 + 0.01f, "8 sub-steps sink %f worse than 4 (%f)", sink8, sink4);
+}
+
+Test(solver, heavy_on_light_soft_load_aware_penetration)
+{
+	// 1:100 at the default 4 sub-steps: the load-aware stiffening keeps the depth near 1.4 cm
+	// (it was 3.7 cm with the fixed 30/60 Hz springs).
+	Scene scene = CreateScene(tb_solverSoft, false);
+	AddGround(&scene, 0.0f, 0.6f, 0.0f);
+	AddBox(&scene, tbMakeVec2(0.0f, 0.5f), 0.0f, 0.5f, 1.0f, 0.6f);
+	AddBox(&scene, tbMakeVec2(0.0f, 1.5f), 0.0f, 0.5f, 100.0f, 0.6f);
+	float worst = 0.0f;
+	for (int i = 0; i < 300; ++i)
+	{
+		Step(&scene, 1);
+		worst = fmaxf(worst, MaxPenetration(&scene));
+	}
+	fprintf(stderr, "heavy on light soft: worst penetration %.4f m\n", worst);
+	cr_expect(worst < 0.025f, "penetration %f", worst);
+	tbDestroyWorld(scene.worldId);
+}

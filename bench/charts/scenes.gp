@@ -2,6 +2,7 @@
 # Input: DATA (scenes_wide.csv: scene,tumble,box2d,chipmunk, made by scripts/bench.sh); output: OUT.
 set terminal pngcairo size 1000,520 font ",10"
 set output OUT
+set termoption noenhanced
 set datafile separator ","
 set style data histogram
 set style histogram cluster gap 1
