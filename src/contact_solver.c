@@ -88,7 +88,7 @@ static void tbIntegratedVelocity(const tbStepContext* context, int index, tbVec2
 	*w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
 }
 
-// NGS is the Box2D 2.4 emulation: 2.4 has no speculative contacts, so a point that is apart at
+// NGS at one sub-step is the Box2D 2.4 emulation (solver_ngs.c): 2.4 has no speculative contacts, so a point that is apart at
 // the start of the step (s > 0; with the 0.01 m polygon skins, exactly the points 2.4 would not
 // report) takes no part in the step: no warm start, no impulse, no position correction (the
 // contact itself still exists). 2.4 prepares its constraints after integrating the velocities,
@@ -169,7 +169,7 @@ static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact
 		cp->relativeVelocity = tbDot(tbSub(vB, vA), normal);
 	}
 
-	if (world->def.solver == tb_solverNGS)
+	if (world->def.solver == tb_solverNGS && context->subStepCount == 1)
 	{
 		tbPrepareConstraintNGS(context, manifold, c);
 	}
@@ -342,9 +342,9 @@ void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy)
 
 void tbApplyRestitution(tbStepContext* context)
 {
-	if (context->world->def.solver == tb_solverNGS)
+	if (context->world->def.solver == tb_solverNGS && context->subStepCount == 1)
 	{
-		return; // NGS (Box2D 2.4) applies restitution as a velocity bias inside its iterations
+		return; // NGS at one sub-step (Box2D 2.4) applies restitution as a velocity bias in its iterations
 	}
 	float threshold = context->world->def.restitutionThreshold;
 	tbSolverBody* bodies = context->bodies;

@@ -86,47 +86,45 @@ static void tbApplyPointImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbCont
 static void tbSetupBlock(tbNGSConstraint* info, tbContactConstraint* c, tbStepContext* context)
 {
 	info->block = false;
-		if (info->active[0] == false || info->active[1] == false)
-		{
-			return;
-		}
-
-		const tbContactConstraintPoint* cp1 = c->points + 0;
-		const tbContactConstraintPoint* cp2 = c->points + 1;
-		tbVec2 n = c->normal;
-		float rn1A = tbCross(cp1->anchorA, n), rn1B = tbCross(cp1->anchorB, n);
-		float rn2A = tbCross(cp2->anchorA, n), rn2B = tbCross(cp2->anchorB, n);
-		float mAB = c->invMassA + c->invMassB;
-		float k11 = mAB + c->invIA * rn1A * rn1A + c->invIB * rn1B * rn1B;
-		float k22 = mAB + c->invIA * rn2A * rn2A + c->invIB * rn2B * rn2B;
-		float k12 = mAB + c->invIA * rn1A * rn2A + c->invIB * rn1B * rn2B;
-		float det = k11 * k22 - k12 * k12;
-		if (k11 * k11 < TB_NGS_MAX_CONDITION * det)
-		{
-			info->block = true;
-			info->k11 = k11;
-			info->k12 = k12;
-			info->k22 = k22;
-			float invDet = 1.0f / det;
-			info->m11 = invDet * k22;
-			info->m12 = -invDet * k12;
-			info->m22 = invDet * k11;
-		}
-		else
-		{
-			// Ill-conditioned (the points nearly coincide): 2.4 solves the first point alone and
-			// does not warm start the second; take back the second point's warm start.
-			info->active[1] = false;
-			tbContactConstraintPoint* cp = c->points + 1;
-			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, n), tbMulSV(cp->tangentImpulse, tbRightPerp(n)));
-			tbApplyPointImpulse(context->bodies + c->indexA, context->bodies + c->indexB, c, cp->anchorA,
-								cp->anchorB, tbNeg(P));
-			cp->normalImpulse = 0.0f;
-			cp->tangentImpulse = 0.0f;
-		}
+	if (info->active[0] == false || info->active[1] == false)
+	{
+		return;
 	}
-}
 
+	const tbContactConstraintPoint* cp1 = c->points + 0;
+	const tbContactConstraintPoint* cp2 = c->points + 1;
+	tbVec2 n = c->normal;
+	float rn1A = tbCross(cp1->anchorA, n), rn1B = tbCross(cp1->anchorB, n);
+	float rn2A = tbCross(cp2->anchorA, n), rn2B = tbCross(cp2->anchorB, n);
+	float mAB = c->invMassA + c->invMassB;
+	float k11 = mAB + c->invIA * rn1A * rn1A + c->invIB * rn1B * rn1B;
+	float k22 = mAB + c->invIA * rn2A * rn2A + c->invIB * rn2B * rn2B;
+	float k12 = mAB + c->invIA * rn1A * rn2A + c->invIB * rn1B * rn2B;
+	float det = k11 * k22 - k12 * k12;
+	if (k11 * k11 < TB_NGS_MAX_CONDITION * det)
+	{
+		info->block = true;
+		info->k11 = k11;
+		info->k12 = k12;
+		info->k22 = k22;
+		float invDet = 1.0f / det;
+		info->m11 = invDet * k22;
+		info->m12 = -invDet * k12;
+		info->m22 = invDet * k11;
+	}
+	else
+	{
+		// Ill-conditioned (the points nearly coincide): 2.4 solves the first point alone and
+		// does not warm start the second; take back the second point's warm start.
+		info->active[1] = false;
+		tbContactConstraintPoint* cp = c->points + 1;
+		tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, n), tbMulSV(cp->tangentImpulse, tbRightPerp(n)));
+		tbApplyPointImpulse(context->bodies + c->indexA, context->bodies + c->indexB, c, cp->anchorA,
+							cp->anchorB, tbNeg(P));
+		cp->normalImpulse = 0.0f;
+		cp->tangentImpulse = 0.0f;
+	}
+	}
 
 static void tbBuildNGSConstraints(tbStepContext* context, tbNGSConstraint* infos)
 {
@@ -140,19 +138,33 @@ static void tbBuildNGSConstraints(tbStepContext* context, tbNGSConstraint* infos
 		info->block = false;
 		info->k11 = info->k12 = info->k22 = 0.0f;
 		info->m11 = info->m12 = info->m22 = 0.0f;
+		info->toiSolve = false;
+		bool emulate = context->subStepCount == 1;
 		for (int j = 0; j < 2; ++j)
 		{
-			bool active = j < c->pointCount && manifold->points[j].separation <= 0.0f;
+			info->toi[j] = false;
+			info->savedNormalImpulse[j] = 0.0f;
+			info->savedTangentImpulse[j] = 0.0f;
+			bool active = j < c->pointCount && (manifold->points[j].separation <= 0.0f || emulate == false);
 			info->active[j] = active;
 			info->positionActive[j] = active;
 			info->bias[j] = 0.0f;
-			if (active && c->points[j].relativeVelocity < -threshold)
+			if (emulate && active && c->points[j].relativeVelocity < -threshold)
 			{
 				info->bias[j] = -c->restitution * c->points[j].relativeVelocity;
 			}
 		}
 		tbSetupBlock(info, c, context);
 	}
+}
+
+static float tbLinearSeparation(const tbContactConstraint* c, const tbContactConstraintPoint* cp,
+								const tbSolverBody* sA, const tbSolverBody* sB)
+{
+	tbVec2 rA = tbRotateVector(sA->deltaRotation, cp->anchorA);
+	tbVec2 rB = tbRotateVector(sB->deltaRotation, cp->anchorB);
+	tbVec2 d = tbAdd(tbSub(sB->deltaPosition, sA->deltaPosition), tbSub(rB, rA));
+	return cp->baseSeparation + tbDot(d, c->normal);
 }
 
 // Two-point normal constraint by the block solver (see the header comment).
@@ -215,13 +227,18 @@ static void tbSolveBlock(tbContactConstraint* c, const tbNGSConstraint* info, tb
 }
 
 // One velocity iteration over all contacts, Box2D 2.4's order: friction, then normal.
-static void tbSolveVelocityConstraints(tbStepContext* context, const tbNGSConstraint* infos)
+// With `toiOnly`, only the constraints of the current time-of-impact solve.
+static void tbSolveVelocityConstraints(tbStepContext* context, const tbNGSConstraint* infos, bool toiOnly)
 {
 	tbSolverBody* bodies = context->bodies;
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
 		tbContactConstraint* c = context->constraints + i;
 		const tbNGSConstraint* info = infos + i;
+		if (toiOnly && info->toiSolve == false)
+		{
+			continue;
+		}
 		tbSolverBody* sA = bodies + c->indexA;
 		tbSolverBody* sB = bodies + c->indexB;
 		tbVec2 vA = sA->linearVelocity;
@@ -232,6 +249,21 @@ static void tbSolveVelocityConstraints(tbStepContext* context, const tbNGSConstr
 		float mB = c->invMassB, iB = c->invIB;
 		tbVec2 normal = c->normal;
 		tbVec2 tangent = tbRightPerp(normal);
+
+		// Sub-stepped: speculative gaps s > 0 may close within the sub-step, no more (bias s/h).
+		tbNGSConstraint biased = *info;
+		if (context->subStepCount > 1)
+		{
+			for (int j = 0; j < c->pointCount; ++j)
+			{
+				float s = tbLinearSeparation(c, c->points + j, sA, sB);
+				if (s > 0.0f)
+				{
+					biased.bias[j] -= s * context->inv_h;
+				}
+			}
+		}
+		info = &biased;
 
 		// Friction first, bounded by the normal impulse of the previous iteration (or warm start).
 		for (int j = 0; j < c->pointCount; ++j)
@@ -334,6 +366,208 @@ static float tbSolvePositionConstraints(tbStepContext* context, const tbNGSConst
 	return minSeparation;
 }
 
+// Box2D 2.4's time-of-impact sub-step for a dynamic body against static or kinematic ground
+// (b2World::SolveTOI as documented: 2.4 sweeps every such pair continuously). A point that was
+// apart at the start of the step took no part in it; if the body's motion over the step carries
+// that point below 2.4's time-of-impact target (surface separation −3·slop, i.e. core distance
+// totalRadius − 3·slop), then, as 2.4 does:
+//   1. the body is moved back to the time α at which the separation reaches the target
+//      (linear in the sweep: α = (s0 − target)/(s0 − s1));
+//   2. its contacts with infinite-mass partners are solved with the points overlapping there:
+//      up to 20 position passes with β = 0.75 until the deepest overlap is within 1.5 slops,
+//      then the velocity iterations from zero impulse (no warm start), with the restitution bias
+//      of the current approach speed;
+//   3. the body moves on with its new velocity for the remaining (1 − α)·h.
+// TOI impulses are not kept for warm starting (2.4 discards them too). Only with one sub-step:
+// sub-stepped NGS keeps speculative contacts' own protection from the next sub-step.
+#define TB_NGS_TOI_BAUMGARTE 0.75f
+#define TB_NGS_TOI_POSITION_ITERATIONS 20
+
+static bool tbIsGroundPair(const tbContactConstraint* c)
+{
+	bool fixedA = c->invMassA == 0.0f && c->invIA == 0.0f;
+	bool fixedB = c->invMassB == 0.0f && c->invIB == 0.0f;
+	return fixedA != fixedB;
+}
+
+static void tbSolveTimeOfImpact(tbStepContext* context, tbNGSConstraint* infos)
+{
+	const tbWorld* world = context->world;
+	const float target = -3.0f * TB_LINEAR_SLOP;
+	int bodyCount = context->bodyCount;
+	tbSolverBody* bodies = context->bodies;
+
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		const tbContactConstraint* c = context->constraints + i;
+		if (tbIsGroundPair(c) == false)
+		{
+			continue;
+		}
+		int bodyIndex = c->invMassA == 0.0f && c->invIA == 0.0f ? c->indexB : c->indexA;
+		if (bodyIndex >= bodyCount)
+		{
+			continue;
+		}
+
+		// Earliest time of impact of this body over all its ground contacts.
+		float alpha = 1.0f;
+		for (int k = 0; k < context->constraintCount; ++k)
+		{
+			const tbContactConstraint* ck = context->constraints + k;
+			if (tbIsGroundPair(ck) == false || (ck->indexA != bodyIndex && ck->indexB != bodyIndex))
+			{
+				continue;
+			}
+			const tbManifold* manifold = &world->contacts[world->solverContacts[k]].manifold;
+			for (int j = 0; j < ck->pointCount; ++j)
+			{
+				float s0 = manifold->points[j].separation;
+				if (infos[k].positionActive[j] || s0 <= target)
+				{
+					continue;
+				}
+				float s1 = tbLinearSeparation(ck, ck->points + j, bodies + ck->indexA, bodies + ck->indexB);
+				if (s1 < target)
+				{
+					alpha = tbMinFloat(alpha, (s0 - target) / (s0 - s1));
+				}
+			}
+		}
+		if (alpha >= 1.0f)
+		{
+			continue;
+		}
+
+		// 1. Back to the time of impact.
+		tbSolverBody* body = bodies + bodyIndex;
+		float angle = tbRot_GetAngle(body->deltaRotation);
+		body->deltaPosition = tbMulSV(alpha, body->deltaPosition);
+		body->deltaRotation = tbMakeRot(alpha * angle);
+
+		// 2. Points overlapping at the time of impact become active (for the rest of the step).
+		for (int k = 0; k < context->constraintCount; ++k)
+		{
+			tbContactConstraint* ck = context->constraints + k;
+			if (tbIsGroundPair(ck) == false || (ck->indexA != bodyIndex && ck->indexB != bodyIndex))
+			{
+				continue;
+			}
+			for (int j = 0; j < ck->pointCount; ++j)
+			{
+				if (infos[k].positionActive[j] == false &&
+					tbLinearSeparation(ck, ck->points + j, bodies + ck->indexA, bodies + ck->indexB) <= 0.0f)
+				{
+					infos[k].positionActive[j] = true;
+					infos[k].toi[j] = true;
+				}
+			}
+		}
+
+		for (int iteration = 0; iteration < TB_NGS_TOI_POSITION_ITERATIONS; ++iteration)
+		{
+			float minSeparation = 0.0f;
+			for (int k = 0; k < context->constraintCount; ++k)
+			{
+				const tbContactConstraint* ck = context->constraints + k;
+				if (tbIsGroundPair(ck) == false || (ck->indexA != bodyIndex && ck->indexB != bodyIndex))
+				{
+					continue;
+				}
+				tbSolverBody* sA = bodies + ck->indexA;
+				tbSolverBody* sB = bodies + ck->indexB;
+				for (int j = 0; j < ck->pointCount; ++j)
+				{
+					if (infos[k].positionActive[j] == false)
+					{
+						continue;
+					}
+					const tbContactConstraintPoint* cp = ck->points + j;
+					float sep = tbLinearSeparation(ck, cp, sA, sB);
+					minSeparation = tbMinFloat(minSeparation, sep);
+					float C = tbClampFloat(TB_NGS_TOI_BAUMGARTE * (sep + TB_LINEAR_SLOP), -TB_MAX_LINEAR_CORRECTION, 0.0f);
+					tbVec2 rA = tbRotateVector(sA->deltaRotation, cp->anchorA);
+					tbVec2 rB = tbRotateVector(sB->deltaRotation, cp->anchorB);
+					float rnA = tbCross(rA, ck->normal);
+					float rnB = tbCross(rB, ck->normal);
+					float K = ck->invMassA + ck->invMassB + ck->invIA * rnA * rnA + ck->invIB * rnB * rnB;
+					float impulse = K > 0.0f ? -C / K : 0.0f;
+					tbVec2 P = tbMulSV(impulse, ck->normal);
+					sA->deltaPosition = tbMulSub(sA->deltaPosition, ck->invMassA, P);
+					sA->deltaRotation = tbIntegrateRotation(sA->deltaRotation, -ck->invIA * tbCross(rA, P));
+					sB->deltaPosition = tbMulAdd(sB->deltaPosition, ck->invMassB, P);
+					sB->deltaRotation = tbIntegrateRotation(sB->deltaRotation, ck->invIB * tbCross(rB, P));
+				}
+			}
+			if (minSeparation >= -1.5f * TB_LINEAR_SLOP)
+			{
+				break;
+			}
+		}
+
+		// Velocity solve of this body's ground contacts only, from zero impulse; restitution bias
+		// from the current approach speed.
+		float threshold = world->def.restitutionThreshold;
+		for (int k = 0; k < context->constraintCount; ++k)
+		{
+			tbContactConstraint* ck = context->constraints + k;
+			tbNGSConstraint* info = infos + k;
+			bool mine = tbIsGroundPair(ck) && (ck->indexA == bodyIndex || ck->indexB == bodyIndex);
+			info->toiSolve = mine;
+			if (mine == false)
+			{
+				continue;
+			}
+			const tbSolverBody* sA = bodies + ck->indexA;
+			const tbSolverBody* sB = bodies + ck->indexB;
+			for (int j = 0; j < ck->pointCount; ++j)
+			{
+				tbContactConstraintPoint* cp = ck->points + j;
+				info->savedNormalImpulse[j] = cp->normalImpulse;
+				info->savedTangentImpulse[j] = cp->tangentImpulse;
+				cp->normalImpulse = 0.0f;
+				cp->tangentImpulse = 0.0f;
+				info->active[j] = info->positionActive[j];
+				info->bias[j] = 0.0f;
+				tbVec2 vA = tbAdd(sA->linearVelocity, tbCrossSV(sA->angularVelocity, cp->anchorA));
+				tbVec2 vB = tbAdd(sB->linearVelocity, tbCrossSV(sB->angularVelocity, cp->anchorB));
+				float vRel = tbDot(tbSub(vB, vA), ck->normal);
+				if (vRel < -threshold)
+				{
+					info->bias[j] = -ck->restitution * vRel;
+				}
+			}
+			tbSetupBlock(info, ck, context);
+		}
+		int velocityIterations = tbMaxInt(world->def.velocityIterations, 1);
+		for (int iteration = 0; iteration < velocityIterations; ++iteration)
+		{
+			tbSolveVelocityConstraints(context, infos, true);
+		}
+		for (int k = 0; k < context->constraintCount; ++k)
+		{
+			tbContactConstraint* ck = context->constraints + k;
+			tbNGSConstraint* info = infos + k;
+			if (info->toiSolve == false)
+			{
+				continue;
+			}
+			info->toiSolve = false;
+			for (int j = 0; j < ck->pointCount; ++j)
+			{
+				tbContactConstraintPoint* cp = ck->points + j;
+				cp->normalImpulse = info->savedNormalImpulse[j];
+				cp->tangentImpulse = info->savedTangentImpulse[j];
+			}
+		}
+
+		// 3. The rest of the step.
+		float rest = (1.0f - alpha) * context->h;
+		body->deltaPosition = tbMulAdd(body->deltaPosition, rest, body->linearVelocity);
+		body->deltaRotation = tbIntegrateRotation(body->deltaRotation, rest * body->angularVelocity);
+	}
+}
+
 void tbNGSSubStep(tbStepContext* context)
 {
 	const tbWorldDef* def = &context->world->def;
@@ -344,7 +578,7 @@ void tbNGSSubStep(tbStepContext* context)
 	int velocityIterations = tbMaxInt(def->velocityIterations, 1);
 	for (int i = 0; i < velocityIterations; ++i)
 	{
-		tbSolveVelocityConstraints(context, infos);
+		tbSolveVelocityConstraints(context, infos, false);
 	}
 	tbIntegratePositions(context);
 	for (int i = 0; i < def->positionIterations; ++i)
@@ -353,6 +587,10 @@ void tbNGSSubStep(tbStepContext* context)
 		{
 			break;
 		}
+	}
+	if (context->subStepCount == 1)
+	{
+		tbSolveTimeOfImpact(context, infos);
 	}
 	tbFree(infos, byteCount);
 }
