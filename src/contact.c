@@ -1,7 +1,9 @@
 // Contacts: a contact exists while two shapes' fat boxes overlap. This file owns the two stages
 // that find and update them: the pair stage turns broad-phase pairs into contacts (after
 // filtering), and the collide stage (the narrow phase) recomputes each awake contact's
-// manifold, carries impulses over by feature id for warm starting, and reports begin/end events.
+// manifold with a speculative margin that grows with the pair's approach speed (see
+// tbSpeculativeMargin), carries impulses over by feature id for warm starting, and reports
+// begin/end events when a point comes within the fixed TB_SPECULATIVE_DISTANCE.
 #include "world.h"
 
 #include "array.h"
@@ -145,7 +147,7 @@ static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 {
 	tbContact* contact = world->contacts + contactId;
-	if (contact->flags & tb_contactTouching)
+	if (contact->flags & tb_contactReported)
 	{
 		tbPushEndEvent(world, contact);
 	}
@@ -240,7 +242,64 @@ static bool tbIsSensorOverlap(const tbManifold* manifold)
 	return false;
 }
 
-int tbUpdateContact(tbWorld* world, tbContact* contact)
+/// True when a point is closer than the fixed speculative distance: the begin/end event notion
+/// of touching (tb_contactReported), independent of the speed-dependent manifold margin.
+static bool tbIsWithinSpeculativeDistance(const tbManifold* manifold)
+{
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		if (manifold->points[i].separation < TB_SPECULATIVE_DISTANCE)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+/// Gravity scale that acts on a body (only dynamic bodies are accelerated by gravity).
+static float tbEffectiveGravityScale(const tbBody* body)
+{
+	return body->type == tb_dynamicBody ? body->gravityScale : 0.0f;
+}
+
+/// Speculative margin of a pair for this step (m): how far apart the manifold keeps points.
+///
+/// A point kept at separation s lets the solver stop an approach that would close s within the
+/// step; a point not kept cannot, so the pair penetrates by (closing distance − s). The margin
+/// is therefore a bound on how far any point of A can approach any point of B during the step,
+/// from what is known when the narrow phase runs (positions and velocities at the end of the
+/// last step):
+/// - a point of body X at r from its centre of mass moves at v_X + ω_X × r, and |ω_X × r| ≤
+///   |ω_X|·maxExtent_X, so the relative speed of two points is at most
+///       |vA − vB| + |ωA|·maxExtentA + |ωB|·maxExtentB;
+/// - during the step gravity adds g·sX·t to the velocity of a dynamic body X (sX its gravity
+///   scale); the sub-stepped symplectic Euler moves it by at most g·sX·dt² (exactly
+///   g·sX·dt²·(n + 1)/(2n) after n sub-steps), so the relative displacement grows by at most
+///   |g|·|sA − sB|·dt²;
+/// - damping only slows bodies; forces applied by the user are not included (small, and a
+///   body pushed hard enough is caught by the fixed TB_SPECULATIVE_DISTANCE or pushed out).
+/// Margin = TB_SPECULATIVE_DISTANCE + min(TB_AABB_MARGIN, dt·(relative point speed + dt·|g|·|sA − sB|)).
+/// The cap: a contact exists only while the broad-phase boxes overlap, and a moving body's box is
+/// its tight box enlarged by TB_AABB_MARGIN (static boxes are not enlarged), so a pair further
+/// apart than that may have no contact to keep points in; the cap also bounds the extra points
+/// a fast scene pays for. Resting bodies get TB_SPECULATIVE_DISTANCE + g·dt² (0.0228 m at 60 Hz)
+/// against the ground and exactly TB_SPECULATIVE_DISTANCE against each other.
+static float tbSpeculativeMargin(const tbWorld* world, const tbBody* bodyA, const tbBody* bodyB)
+{
+	float dt = world->stepTime;
+	tbVec2 dv = tbSub(bodyA->linearVelocity, bodyB->linearVelocity);
+	float speed = tbLength(dv) + tbAbsFloat(bodyA->angularVelocity) * bodyA->maxExtent +
+				  tbAbsFloat(bodyB->angularVelocity) * bodyB->maxExtent;
+	float gravity = tbLength(world->def.gravity) *
+					tbAbsFloat(tbEffectiveGravityScale(bodyA) - tbEffectiveGravityScale(bodyB));
+	float closing = dt * (speed + dt * gravity);
+	// NaN-safe: a non-finite velocity gets the cap rather than poisoning the comparison.
+	float cap = tbMaxFloat(TB_AABB_MARGIN, TB_CONTINUOUS_FRACTION * tbMaxFloat(bodyA->minExtent, bodyB->minExtent));
+	float extra = closing < cap ? closing : cap;
+	return TB_SPECULATIVE_DISTANCE + tbMaxFloat(extra, 0.0f);
+}
+
+int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 {
 	const tbShape* a = world->shapes + contact->shapeIdA;
 	const tbShape* b = world->shapes + contact->shapeIdB;
@@ -248,15 +307,19 @@ int tbUpdateContact(tbWorld* world, tbContact* contact)
 	const tbBody* bodyB = world->bodies + b->bodyId;
 	tbManifold old = contact->manifold;
 	tbNarrowPhaseMethod method = world->def.narrowPhase;
+	bool isSensor = (contact->flags & tb_contactSensor) != 0;
+	// Sensors only ask whether the shapes overlap: the fixed distance is plenty.
+	float margin = isSensor ? TB_SPECULATIVE_DISTANCE : tbSpeculativeMargin(world, bodyA, bodyB);
 	// Most contacts (fat boxes overlapping) are not touching. The tight boxes, current since the
-	// last finalize, grown by the speculative distance, rule them out for a few comparisons.
-	if (tbAABB_Overlaps(tbAABB_Fatten(a->aabb, TB_SPECULATIVE_DISTANCE), b->aabb) == false)
+	// last finalize, grown by the speculative margin, rule them out for a few comparisons.
+	if (tbAABB_Overlaps(tbAABB_Fatten(a->aabb, margin), b->aabb) == false)
 	{
 		contact->manifold.pointCount = 0;
 	}
 	else
 	{
-		contact->manifold = tbCollideShapes(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method);
+		contact->manifold =
+			tbCollideShapesWithMargin(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin);
 	}
 	if (a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape)
 	{
@@ -269,21 +332,18 @@ int tbUpdateContact(tbWorld* world, tbContact* contact)
 		m->points[i].anchorA = tbSub(m->points[i].point, bodyA->center);
 		m->points[i].anchorB = tbSub(m->points[i].point, bodyB->center);
 	}
-	bool touching = (contact->flags & tb_contactSensor) ? tbIsSensorOverlap(m) : m->pointCount > 0;
+	bool touching = isSensor ? tbIsSensorOverlap(m) : m->pointCount > 0;
+	bool reported = isSensor ? touching : tbIsWithinSpeculativeDistance(m);
 	if (world->def.enableWarmStarting)
 	{
 		tbMatchPoints(m, &old);
 	}
 	bool wasTouching = (contact->flags & tb_contactTouching) != 0;
-	if (touching)
-	{
-		contact->flags |= tb_contactTouching;
-	}
-	else
-	{
-		contact->flags &= ~(uint32_t)tb_contactTouching;
-	}
-	return touching == wasTouching ? 0 : (touching ? 1 : -1);
+	bool wasReported = (contact->flags & tb_contactReported) != 0;
+	contact->flags &= ~(uint32_t)(tb_contactTouching | tb_contactReported);
+	contact->flags |= (touching ? (uint32_t)tb_contactTouching : 0u) | (reported ? (uint32_t)tb_contactReported : 0u);
+	*beganTouching = touching && wasTouching == false;
+	return reported == wasReported ? 0 : (reported ? 1 : -1);
 }
 
 static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
@@ -344,13 +404,18 @@ void tbCollideStage(tbWorld* world)
 			continue;
 		}
 		world->stepContacts[kept++] = contactId;
-		int change = tbUpdateContact(world, contact);
+		bool beganTouching = false;
+		int change = tbUpdateContact(world, contact, &beganTouching);
+		if (beganTouching)
+		{
+			// New manifold points (speculative ones too) wake both bodies: the sleeping one joins
+			// the awake island, so the solver never sees a contact with a sleeping body.
+			tbWakeBody(world, world->bodies + a->bodyId);
+			tbWakeBody(world, world->bodies + b->bodyId);
+		}
 		if (change > 0)
 		{
 			tbPushBeginEvent(world, contact);
-			// A new touch wakes both bodies (the sleeping one joins the awake island).
-			tbWakeBody(world, world->bodies + a->bodyId);
-			tbWakeBody(world, world->bodies + b->bodyId);
 		}
 		else if (change < 0)
 		{

@@ -114,6 +114,28 @@ static void tbPrepareConstraintNGS(const tbStepContext* context, const tbManifol
 	}
 }
 
+/// Restitution needs the approach speed at impact. A speculative point (gap s > 0) meets the
+/// surface later in the step, after gravity has sped the approach up: with relative normal
+/// acceleration aₙ < 0 (towards each other), energy gives v_impact² = v² + 2·|aₙ|·s, so
+/// v_impact = −sqrt(v² − 2·aₙ·s). Without this the rebound of a body whose contact appears one
+/// step before impact is up to g·dt too slow (4 % low apex for a ball dropped 5 m at 60 Hz).
+static void tbEstimateImpactVelocity(const tbWorld* world, const tbBody* bodyA, const tbBody* bodyB,
+									 const tbManifold* manifold, tbContactConstraint* c)
+{
+	tbVec2 gA = c->invMassA > 0.0f ? tbMulSV(bodyA->gravityScale, world->def.gravity) : tb_vec2_zero;
+	tbVec2 gB = c->invMassB > 0.0f ? tbMulSV(bodyB->gravityScale, world->def.gravity) : tb_vec2_zero;
+	float an = tbDot(tbSub(gB, gA), c->normal);
+	for (int j = 0; j < c->pointCount; ++j)
+	{
+		float sep = manifold->points[j].separation;
+		tbContactConstraintPoint* cp = c->points + j;
+		if (sep > 0.0f && cp->relativeVelocity < 0.0f && an < 0.0f)
+		{
+			cp->relativeVelocity = -sqrtf(cp->relativeVelocity * cp->relativeVelocity - 2.0f * an * sep);
+		}
+	}
+}
+
 static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact, tbContactConstraint* c)
 {
 	tbWorld* world = context->world;
@@ -173,6 +195,7 @@ static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact
 	{
 		tbPrepareConstraintNGS(context, manifold, c);
 	}
+	tbEstimateImpactVelocity(world, bodyA, bodyB, manifold, c);
 }
 
 void tbPrepareContacts(tbStepContext* context)

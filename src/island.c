@@ -1,4 +1,5 @@
-// Islands: bodies linked by touching contacts. Two stages live here.
+// Islands: bodies linked by touching contacts (contacts with manifold points, speculative points
+// included). Two stages live here.
 //
 // The island stage runs before the solve: it wakes every sleeping body touching an awake one
 // (transitively, so a woken pile wakes whole) and gathers the touching, non-sensor contacts that
@@ -107,7 +108,12 @@ void tbIslandStage(tbWorld* world)
 			key = contact->edges[key & 1].nextKey;
 		}
 	}
-	// Solver contacts: each touching contact of an awake body once.
+	// Solver contacts: each touching contact of an awake body once. Touching means "has manifold
+	// points", speculative ones included (contact.c keeps points up to a speed-dependent margin),
+	// so the loop above has already woken every non-static body within that margin of an awake
+	// dynamic or moving kinematic body. What is left asleep here touches only static bodies or a
+	// resting kinematic one: such a contact has nothing to solve (both sides would be treated as
+	// immovable) and is left out, so the solver never sees a sleeping non-static body.
 	uint32_t stamp = 2u * world->stepIndex + 1u;
 	world->solverContactCount = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
@@ -116,7 +122,9 @@ void tbIslandStage(tbWorld* world)
 		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
 		{
 			tbContact* contact = world->contacts + (key >> 1);
-			if (contact->stamp != stamp && tbIsSolverContact(world, contact))
+			const tbBody* other = world->bodies + contact->edges[(key & 1) ^ 1].bodyId;
+			bool otherAsleep = other->type != tb_staticBody && other->awakeIndex == TB_NULL_INDEX;
+			if (contact->stamp != stamp && otherAsleep == false && tbIsSolverContact(world, contact))
 			{
 				contact->stamp = stamp;
 				TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, key >> 1);

@@ -8,8 +8,11 @@
 //   points of the cores (the shapes without their radii) then
 //       surfaceA = qA + rA·n,  surfaceB = qB − rB·n,  point = ½(surfaceA + surfaceB),
 //       separation = (qB − qA)·n − rA − rB;
-// - points are kept while separation < TB_SPECULATIVE_DISTANCE (speculative contact), so the
-//   solver can stop an approach before it turns into an overlap;
+// - points are kept while separation < keep (speculative contact), so the solver can stop an
+//   approach before it turns into an overlap. keep is TB_SPECULATIVE_DISTANCE for the public
+//   pair routines and tbCollideShapes, and the caller's margin for tbCollideShapesWithMargin
+//   (the world passes a velocity-dependent one, contact.c); every internal routine takes it
+//   as its last argument;
 // - feature ids are TB_MAKE_FEATURE_ID(featureOnA, featureOnB) and stay the same while the
 //   same features touch (warm starting). Pairs with a circle have one point and id 0.
 //
@@ -32,8 +35,13 @@
 
 #include <float.h>
 
-// A point is kept while its separation is below this (m): TB_SPECULATIVE_DISTANCE = 0.02 m.
+// The public pair routines keep a point while its separation is below this (m):
+// TB_SPECULATIVE_DISTANCE = 0.02 m.
 #define TB_KEEP_DISTANCE TB_SPECULATIVE_DISTANCE
+
+// GJK/EPA polygon manifold with a caller's keep distance (manifold_gjk.c; internal).
+tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
+										  tbTransform xfB, float keep);
 
 // Relative tolerance of the reference face choice, 0.1 × linear slop = 0.0005 m: B's face is
 // the reference only when its separation exceeds A's by more than this, so that two
@@ -100,12 +108,12 @@ static tbManifold tbManifoldToWorld(tbManifold m, tbTransform xfA)
 // One point between two core points (circle centres, closest points of segments), in A's frame.
 // The normal is along qB − qA; when the cores touch (|qB − qA| < FLT_EPSILON) it is `fallback`,
 // so coincident shapes still get a unit normal and never a NaN.
-static tbManifold tbPointManifold(tbVec2 qA, float rA, tbVec2 qB, float rB, tbVec2 fallback, uint16_t id)
+static tbManifold tbPointManifold(tbVec2 qA, float rA, tbVec2 qB, float rB, tbVec2 fallback, uint16_t id, float keep)
 {
 	tbManifold m = {0};
 	float distance;
 	tbVec2 n = tbGetLengthAndNormalize(&distance, tbSub(qB, qA));
-	if (distance - rA - rB >= TB_KEEP_DISTANCE)
+	if (distance - rA - rB >= keep)
 	{
 		return m;
 	}
@@ -122,11 +130,11 @@ static tbManifold tbPointManifold(tbVec2 qA, float rA, tbVec2 qB, float rB, tbVe
 // One point between a core point q on a face with unit normal n and a core point c of B, in
 // A's frame. Unlike tbPointManifold the normal is the face's own, exact even when c is behind
 // the face (then (c − q)·n < 0 and the separation says how deep).
-static tbManifold tbFacePointManifold(tbVec2 q, float rA, tbVec2 c, float rB, tbVec2 n, uint16_t id)
+static tbManifold tbFacePointManifold(tbVec2 q, float rA, tbVec2 c, float rB, tbVec2 n, uint16_t id, float keep)
 {
 	tbManifold m = {0};
 	tbManifoldPoint mp = tbMakeManifoldPoint(q, c, n, rA, rB, id);
-	if (mp.separation >= TB_KEEP_DISTANCE)
+	if (mp.separation >= keep)
 	{
 		return m;
 	}
@@ -182,37 +190,37 @@ static tbPolygon tbPolygonInFrame(const tbPolygon* polygon, tbTransform xf)
 // ---------------------------------------------------------------------------------------------
 // Circles and capsules: closed forms
 
-tbManifold tbCollideCircles(const tbCircle* circleA, tbTransform xfA, const tbCircle* circleB, tbTransform xfB)
+static tbManifold tbCollideCirclesMargin(const tbCircle* circleA, tbTransform xfA, const tbCircle* circleB, tbTransform xfB, float keep)
 {
 	// Concentric circles push along A's x-axis: any unit vector is right, this one is defined.
 	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 centerB = tbTransformPoint(xf, circleB->center);
 	tbVec2 xAxis = {1.0f, 0.0f};
-	tbManifold m = tbPointManifold(circleA->center, circleA->radius, centerB, circleB->radius, xAxis, 0);
+	tbManifold m = tbPointManifold(circleA->center, circleA->radius, centerB, circleB->radius, xAxis, 0, keep);
 	return tbManifoldToWorld(m, xfA);
 }
 
 // Capsule core a1–a2 against a point c with radius rB, in A's frame.
-static tbManifold tbCapsuleAndPoint(tbVec2 a1, tbVec2 a2, float rA, tbVec2 c, float rB)
+static tbManifold tbCapsuleAndPoint(tbVec2 a1, tbVec2 a2, float rA, tbVec2 c, float rB, float keep)
 {
 	// A centre on the core pushes out along the capsule's side normal (x-axis if no axis).
 	tbVec2 side = tbNormalize(tbLeftPerp(tbSub(a2, a1)));
 	tbVec2 fallback = tbIsDegenerateSegment(a1, a2) ? tbMakeVec2(1.0f, 0.0f) : side;
 	float t;
 	tbVec2 q = tbClosestPointOnSegment(&t, c, a1, a2);
-	return tbPointManifold(q, rA, c, rB, fallback, 0);
+	return tbPointManifold(q, rA, c, rB, fallback, 0, keep);
 }
 
-tbManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB)
+static tbManifold tbCollideCapsuleAndCircleMargin(const tbCapsule* capsuleA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB, float keep)
 {
 	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 c = tbTransformPoint(xf, circleB->center);
-	tbManifold m = tbCapsuleAndPoint(capsuleA->center1, capsuleA->center2, capsuleA->radius, c, circleB->radius);
+	tbManifold m = tbCapsuleAndPoint(capsuleA->center1, capsuleA->center2, capsuleA->radius, c, circleB->radius, keep);
 	return tbManifoldToWorld(m, xfA);
 }
 
-static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB);
+static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB, float keep);
 
 // True when the capsule axes are parallel (|sin θ| < TB_PARALLEL_SINE) and B's axis projected on
 // A's overlaps A's by more than the linear slop: then the contact is a side against a side.
@@ -236,23 +244,23 @@ static bool tbAxesOverlapInParallel(tbVec2 a1, tbVec2 a2, tbVec2 b1, tbVec2 b2)
 // the SAT on 2-vertex polygons instead: parallel sides overlapping along the axes (the clip
 // gives two points, so a capsule lying on a capsule does not rock on one point), and crossing
 // cores, whose closest points coincide and define no normal.
-static tbManifold tbCapsulesLocal(tbVec2 a1, tbVec2 a2, float rA, tbVec2 b1, tbVec2 b2, float rB)
+static tbManifold tbCapsulesLocal(tbVec2 a1, tbVec2 a2, float rA, tbVec2 b1, tbVec2 b2, float rB, float keep)
 {
 	if (tbIsDegenerateSegment(b1, b2))
 	{
-		tbManifold m = tbCapsuleAndPoint(a1, a2, rA, tbLerp(b1, b2, 0.5f), rB);
+		tbManifold m = tbCapsuleAndPoint(a1, a2, rA, tbLerp(b1, b2, 0.5f), rB, keep);
 		return m;
 	}
 	if (tbIsDegenerateSegment(a1, a2))
 	{
 		// B against the point A: collide B with A and flip the normal back to A → B.
-		tbManifold m = tbCapsuleAndPoint(b1, b2, rB, tbLerp(a1, a2, 0.5f), rA);
+		tbManifold m = tbCapsuleAndPoint(b1, b2, rB, tbLerp(a1, a2, 0.5f), rA, keep);
 		m.normal = tbNeg(m.normal);
 		return m;
 	}
 
 	tbSegmentDistanceResult r = tbSegmentDistance(a1, a2, b1, b2);
-	float reach = rA + rB + TB_KEEP_DISTANCE;
+	float reach = rA + rB + keep;
 	if (r.distanceSquared >= reach * reach)
 	{
 		return tb_emptyManifold;
@@ -263,19 +271,19 @@ static tbManifold tbCapsulesLocal(tbVec2 a1, tbVec2 a2, float rA, tbVec2 b1, tbV
 	{
 		tbPolygon polygonA = tbMakeSegmentPolygon(a1, a2, rA);
 		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, rB);
-		return tbCollidePolygonsLocal(&polygonA, &polygonB);
+		return tbCollidePolygonsLocal(&polygonA, &polygonB, keep);
 	}
 
 	tbVec2 side = tbNormalize(tbLeftPerp(tbSub(a2, a1)));
-	return tbPointManifold(r.closest1, rA, r.closest2, rB, side, 0);
+	return tbPointManifold(r.closest1, rA, r.closest2, rB, side, 0, keep);
 }
 
-tbManifold tbCollideCapsules(const tbCapsule* capsuleA, tbTransform xfA, const tbCapsule* capsuleB, tbTransform xfB)
+static tbManifold tbCollideCapsulesMargin(const tbCapsule* capsuleA, tbTransform xfA, const tbCapsule* capsuleB, tbTransform xfB, float keep)
 {
 	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
 	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
-	tbManifold m = tbCapsulesLocal(capsuleA->center1, capsuleA->center2, capsuleA->radius, b1, b2, capsuleB->radius);
+	tbManifold m = tbCapsulesLocal(capsuleA->center1, capsuleA->center2, capsuleA->radius, b1, b2, capsuleB->radius, keep);
 	return tbManifoldToWorld(m, xfA);
 }
 
@@ -287,7 +295,7 @@ tbManifold tbCollideCapsules(const tbCapsule* capsuleA, tbTransform xfA, const t
 // point of the boundary is found over all edges (at most 8): on an edge interior the normal is
 // that edge's normal, exactly; at a vertex it is along c − vertex (Ericson §5.1.2 and the
 // Voronoi regions of §5.2.7, without relying on the largest face being the closest).
-static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB)
+static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB, float keep)
 {
 	int bestFace = 0;
 	float maxSeparation = -FLT_MAX;
@@ -302,14 +310,14 @@ static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB
 	}
 	float rA = polygon->radius;
 	tbVec2 faceNormal = polygon->normals[bestFace];
-	if (maxSeparation - rA - rB >= TB_KEEP_DISTANCE)
+	if (maxSeparation - rA - rB >= keep)
 	{
 		return tb_emptyManifold;
 	}
 	if (maxSeparation <= 0.0f)
 	{
 		tbVec2 q = tbMulSub(c, maxSeparation, faceNormal);
-		return tbFacePointManifold(q, rA, c, rB, faceNormal, 0);
+		return tbFacePointManifold(q, rA, c, rB, faceNormal, 0, keep);
 	}
 
 	float bestDistanceSquared = FLT_MAX;
@@ -335,17 +343,17 @@ static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB
 		// Edge interior: project along the face normal, no normalisation noise.
 		float h = tbDot(faceNormal, tbSub(c, bestPoint));
 		tbVec2 q = tbMulSub(c, h, faceNormal);
-		return tbFacePointManifold(q, rA, c, rB, faceNormal, 0);
+		return tbFacePointManifold(q, rA, c, rB, faceNormal, 0, keep);
 	}
-	return tbPointManifold(bestPoint, rA, c, rB, faceNormal, 0);
+	return tbPointManifold(bestPoint, rA, c, rB, faceNormal, 0, keep);
 }
 
-tbManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB)
+static tbManifold tbCollidePolygonAndCircleMargin(const tbPolygon* polygonA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB, float keep)
 {
 	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 c = tbTransformPoint(xf, circleB->center);
-	tbManifold m = tbPolygonAndPoint(polygonA, c, circleB->radius);
+	tbManifold m = tbPolygonAndPoint(polygonA, c, circleB->radius, keep);
 	return tbManifoldToWorld(m, xfA);
 }
 
@@ -446,7 +454,7 @@ static uint16_t tbReferenceId(uint8_t featureRef, uint8_t featureInc)
 // v21–v22 (Ericson §5.1.9): the corner-to-corner case of separated polygons, and the fallback
 // when clipping leaves nothing. Normal from reference to incident, else the face normal n.
 static tbManifold tbEdgeDistanceManifold(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
-										 tbVec2 n)
+										 tbVec2 n, float keep)
 {
 	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
 	int incNext = incEdge + 1 < inc->count ? incEdge + 1 : 0;
@@ -455,7 +463,7 @@ static tbManifold tbEdgeDistanceManifold(const tbPolygon* ref, const tbPolygon* 
 	int refVertex = r.fraction1 < 0.5f ? refEdge : refNext;
 	int incVertex = r.fraction2 < 0.5f ? incEdge : incNext;
 	uint16_t id = TB_MAKE_FEATURE_ID(TB_FEATURE_VERTEX | refVertex, TB_FEATURE_VERTEX | incVertex);
-	return tbPointManifold(r.closest1, ref->radius, r.closest2, inc->radius, n, id);
+	return tbPointManifold(r.closest1, ref->radius, r.closest2, inc->radius, n, id, keep);
 }
 
 // True when the closest points of the two edges are corners of both (fractions 0 or 1) and
@@ -477,8 +485,9 @@ static bool tbIsVertexVertex(const tbPolygon* ref, const tbPolygon* inc, int ref
 // Clips the incident edge against the two side planes of the reference face v11–v12 (tangent t):
 //     −t·x ≤ −t·v11   and   t·x ≤ t·v12,
 // then measures each survivor p against the face: h = n·(p − v11), core point on the face
-// p − h·n. Points with separation ≥ TB_KEEP_DISTANCE are dropped.
-static tbManifold tbClipIncidentEdge(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge)
+// p − h·n. Points with separation ≥ keep are dropped.
+static tbManifold tbClipIncidentEdge(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
+									 float keep)
 {
 	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
 	int incNext = incEdge + 1 < inc->count ? incEdge + 1 : 0;
@@ -500,7 +509,7 @@ static tbManifold tbClipIncidentEdge(const tbPolygon* ref, const tbPolygon* inc,
 	if (count < 2)
 	{
 		// The incident edge misses the face (only with the tolerance or a degenerate edge).
-		return tbEdgeDistanceManifold(ref, inc, refEdge, incEdge, n);
+		return tbEdgeDistanceManifold(ref, inc, refEdge, incEdge, n, keep);
 	}
 
 	tbManifold m = {0};
@@ -511,7 +520,7 @@ static tbManifold tbClipIncidentEdge(const tbPolygon* ref, const tbPolygon* inc,
 		tbVec2 q = tbMulSub(p, tbDot(n, tbSub(p, v11)), n);
 		uint16_t id = tbReferenceId(clip2[i].featureRef, clip2[i].featureInc);
 		tbManifoldPoint mp = tbMakeManifoldPoint(q, p, n, ref->radius, inc->radius, id);
-		if (mp.separation < TB_KEEP_DISTANCE)
+		if (mp.separation < keep)
 		{
 			m.points[m.pointCount++] = mp;
 		}
@@ -522,7 +531,7 @@ static tbManifold tbClipIncidentEdge(const tbPolygon* ref, const tbPolygon* inc,
 // Manifold with `ref`'s face refEdge as reference (normal from ref to inc). coreSeparation is
 // the SAT separation of the cores along that face.
 static tbManifold tbReferenceFaceManifold(const tbPolygon* ref, const tbPolygon* inc, int refEdge,
-										  float coreSeparation)
+										  float coreSeparation, float keep)
 {
 	tbVec2 n = ref->normals[refEdge];
 	int incEdge = tbFindIncidentEdge(inc, n);
@@ -530,9 +539,9 @@ static tbManifold tbReferenceFaceManifold(const tbPolygon* ref, const tbPolygon*
 	{
 		// Corner against corner across a gap: the true gap is the corner distance, larger than
 		// the face separation; rounded polygons need it to place the round corners right.
-		return tbEdgeDistanceManifold(ref, inc, refEdge, incEdge, n);
+		return tbEdgeDistanceManifold(ref, inc, refEdge, incEdge, n, keep);
 	}
-	return tbClipIncidentEdge(ref, inc, refEdge, incEdge);
+	return tbClipIncidentEdge(ref, inc, refEdge, incEdge, keep);
 }
 
 // Swaps the bytes of a feature id: (featureOnA, featureOnB) → (featureOnB, featureOnA).
@@ -543,21 +552,21 @@ static uint16_t tbSwapFeatureId(uint16_t id)
 
 // SAT of two polygons, both in A's frame. Prefers A's face unless B's separation is larger by
 // TB_REFERENCE_TOLERANCE; with B as reference the normal and the feature bytes are flipped.
-static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB)
+static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB, float keep)
 {
 	int edgeA, edgeB;
 	float separationA = tbFindMaxSeparation(&edgeA, polygonA, polygonB);
 	float separationB = tbFindMaxSeparation(&edgeB, polygonB, polygonA);
 	float radius = polygonA->radius + polygonB->radius;
-	if (tbMaxFloat(separationA, separationB) - radius >= TB_KEEP_DISTANCE)
+	if (tbMaxFloat(separationA, separationB) - radius >= keep)
 	{
 		return tb_emptyManifold;
 	}
 	if (separationB <= separationA + TB_REFERENCE_TOLERANCE)
 	{
-		return tbReferenceFaceManifold(polygonA, polygonB, edgeA, separationA);
+		return tbReferenceFaceManifold(polygonA, polygonB, edgeA, separationA, keep);
 	}
-	tbManifold m = tbReferenceFaceManifold(polygonB, polygonA, edgeB, separationB);
+	tbManifold m = tbReferenceFaceManifold(polygonB, polygonA, edgeB, separationB, keep);
 	m.normal = tbNeg(m.normal);
 	for (int i = 0; i < m.pointCount; ++i)
 	{
@@ -566,15 +575,15 @@ static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPoly
 	return m;
 }
 
-tbManifold tbCollidePolygons(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB, tbTransform xfB)
+static tbManifold tbCollidePolygonsMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB, tbTransform xfB, float keep)
 {
 	tbPolygon localB = tbPolygonInFrame(polygonB, tbInvMulTransforms(xfA, xfB));
-	tbManifold m = tbCollidePolygonsLocal(polygonA, &localB);
+	tbManifold m = tbCollidePolygonsLocal(polygonA, &localB, keep);
 	return tbManifoldToWorld(m, xfA);
 }
 
-tbManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, tbTransform xfA, const tbCapsule* capsuleB,
-									  tbTransform xfB)
+static tbManifold tbCollidePolygonAndCapsuleMargin(const tbPolygon* polygonA, tbTransform xfA, const tbCapsule* capsuleB,
+									  tbTransform xfB, float keep)
 {
 	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
@@ -582,12 +591,12 @@ tbManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, tbTransform xfA
 	tbManifold m;
 	if (tbIsDegenerateSegment(b1, b2))
 	{
-		m = tbPolygonAndPoint(polygonA, tbLerp(b1, b2, 0.5f), capsuleB->radius);
+		m = tbPolygonAndPoint(polygonA, tbLerp(b1, b2, 0.5f), capsuleB->radius, keep);
 	}
 	else
 	{
 		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
-		m = tbCollidePolygonsLocal(polygonA, &polygonB);
+		m = tbCollidePolygonsLocal(polygonA, &polygonB, keep);
 	}
 	return tbManifoldToWorld(m, xfA);
 }
@@ -595,34 +604,34 @@ tbManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, tbTransform xfA
 // ---------------------------------------------------------------------------------------------
 // Segments: a segment is a capsule of radius zero, i.e. a 2-vertex polygon without radius
 
-tbManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB)
+static tbManifold tbCollideSegmentAndCircleMargin(const tbSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB, float keep)
 {
 	tbCapsule capsuleA = {segmentA->point1, segmentA->point2, 0.0f};
-	return tbCollideCapsuleAndCircle(&capsuleA, xfA, circleB, xfB);
+	return tbCollideCapsuleAndCircleMargin(&capsuleA, xfA, circleB, xfB, keep);
 }
 
-tbManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
-									  tbTransform xfB)
+static tbManifold tbCollideSegmentAndCapsuleMargin(const tbSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
+									  tbTransform xfB, float keep)
 {
 	tbCapsule capsuleA = {segmentA->point1, segmentA->point2, 0.0f};
-	return tbCollideCapsules(&capsuleA, xfA, capsuleB, xfB);
+	return tbCollideCapsulesMargin(&capsuleA, xfA, capsuleB, xfB, keep);
 }
 
-tbManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
-									  tbTransform xfB)
+static tbManifold tbCollideSegmentAndPolygonMargin(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
+									  tbTransform xfB, float keep)
 {
 	if (tbIsDegenerateSegment(segmentA->point1, segmentA->point2))
 	{
 		// A point against B: collide B with it and turn the normal back to A → B.
 		tbCircle point = {tbLerp(segmentA->point1, segmentA->point2, 0.5f), 0.0f};
-		tbManifold m = tbCollidePolygonAndCircle(polygonB, xfB, &point, xfA);
+		tbManifold m = tbCollidePolygonAndCircleMargin(polygonB, xfB, &point, xfA, keep);
 		m.normal = tbNeg(m.normal);
 		return m;
 	}
 	tbPolygon polygonA = tbMakeSegmentPolygon(segmentA->point1, segmentA->point2, 0.0f);
 	tbPolygon localB = tbPolygonInFrame(polygonB, tbInvMulTransforms(xfA, xfB));
-	tbManifold m = tbCollidePolygonsLocal(&polygonA, &localB);
+	tbManifold m = tbCollidePolygonsLocal(&polygonA, &localB, keep);
 	return tbManifoldToWorld(m, xfA);
 }
 
@@ -649,56 +658,91 @@ static int tbDispatchRank(tbShapeType type)
 }
 
 static tbManifold tbCollidePolygonPair(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-									   tbTransform xfB, tbNarrowPhaseMethod method)
+									   tbTransform xfB, tbNarrowPhaseMethod method, float keep)
 {
 	if (method == tb_narrowPhaseGJK)
 	{
-		return tbCollidePolygonsGJK(polygonA, xfA, polygonB, xfB);
+		return tbCollidePolygonsGJKWithMargin(polygonA, xfA, polygonB, xfB, keep);
 	}
-	return tbCollidePolygons(polygonA, xfA, polygonB, xfB);
+	return tbCollidePolygonsMargin(polygonA, xfA, polygonB, xfB, keep);
 }
 
 // Pair in routine order: rank(A) ≥ rank(B).
 static tbManifold tbCollideOrdered(const tbGeometry* a, tbTransform xfA, const tbGeometry* b, tbTransform xfB,
-								   tbNarrowPhaseMethod method)
+								   tbNarrowPhaseMethod method, float keep)
 {
 	switch (a->type)
 	{
 		case tb_circleShape:
-			return tbCollideCircles(&a->circle, xfA, &b->circle, xfB);
+			return tbCollideCirclesMargin(&a->circle, xfA, &b->circle, xfB, keep);
 		case tb_capsuleShape:
 			if (b->type == tb_circleShape)
 			{
-				return tbCollideCapsuleAndCircle(&a->capsule, xfA, &b->circle, xfB);
+				return tbCollideCapsuleAndCircleMargin(&a->capsule, xfA, &b->circle, xfB, keep);
 			}
-			return tbCollideCapsules(&a->capsule, xfA, &b->capsule, xfB);
+			return tbCollideCapsulesMargin(&a->capsule, xfA, &b->capsule, xfB, keep);
 		case tb_polygonShape:
 			if (b->type == tb_circleShape)
 			{
-				return tbCollidePolygonAndCircle(&a->polygon, xfA, &b->circle, xfB);
+				return tbCollidePolygonAndCircleMargin(&a->polygon, xfA, &b->circle, xfB, keep);
 			}
 			if (b->type == tb_capsuleShape)
 			{
-				return tbCollidePolygonAndCapsule(&a->polygon, xfA, &b->capsule, xfB);
+				return tbCollidePolygonAndCapsuleMargin(&a->polygon, xfA, &b->capsule, xfB, keep);
 			}
-			return tbCollidePolygonPair(&a->polygon, xfA, &b->polygon, xfB, method);
+			return tbCollidePolygonPair(&a->polygon, xfA, &b->polygon, xfB, method, keep);
 		case tb_segmentShape:
 			if (b->type == tb_circleShape)
 			{
-				return tbCollideSegmentAndCircle(&a->segment, xfA, &b->circle, xfB);
+				return tbCollideSegmentAndCircleMargin(&a->segment, xfA, &b->circle, xfB, keep);
 			}
 			if (b->type == tb_capsuleShape)
 			{
-				return tbCollideSegmentAndCapsule(&a->segment, xfA, &b->capsule, xfB);
+				return tbCollideSegmentAndCapsuleMargin(&a->segment, xfA, &b->capsule, xfB, keep);
 			}
 			if (b->type == tb_polygonShape)
 			{
-				return tbCollideSegmentAndPolygon(&a->segment, xfA, &b->polygon, xfB);
+				return tbCollideSegmentAndPolygonMargin(&a->segment, xfA, &b->polygon, xfB, keep);
 			}
 			return tb_emptyManifold; // two segments have no area: no contact
 		default:
 			return tb_emptyManifold;
 	}
+}
+
+tbManifold tbCollideShapesWithMargin(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB,
+									 tbTransform xfB, tbNarrowPhaseMethod method, float speculativeDistance)
+{
+	const char* f = "tbCollideShapesWithMargin";
+	int rankA = tbDispatchRank(shapeA->type);
+	int rankB = tbDispatchRank(shapeB->type);
+	if (rankA < 0 || rankB < 0)
+	{
+		tbReportError(f, "unknown shape type %d or %d; use a tbShapeType value.", (int)shapeA->type,
+					  (int)shapeB->type);
+		return tb_emptyManifold;
+	}
+	if (tbIsValidFloat(speculativeDistance) == false)
+	{
+		tbReportError(f, "speculativeDistance is %g (must be finite); TB_SPECULATIVE_DISTANCE is the default",
+					  (double)speculativeDistance);
+		return tb_emptyManifold;
+	}
+	float keep = speculativeDistance;
+	if (rankA >= rankB)
+	{
+		return tbCollideOrdered(shapeA, xfA, shapeB, xfB, method, keep);
+	}
+
+	// B → A in routine order, then the normal turned to A → B and the feature bytes swapped so
+	// the first byte still names a feature of A. Points and separations do not depend on order.
+	tbManifold m = tbCollideOrdered(shapeB, xfB, shapeA, xfA, method, keep);
+	m.normal = tbNeg(m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].id = tbSwapFeatureId(m.points[i].id);
+	}
+	return m;
 }
 
 tbManifold tbCollideShapes(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB, tbTransform xfB,
@@ -708,22 +752,64 @@ tbManifold tbCollideShapes(const tbGeometry* shapeA, tbTransform xfA, const tbGe
 	int rankB = tbDispatchRank(shapeB->type);
 	if (rankA < 0 || rankB < 0)
 	{
+		// Same message and function name as before the margin variant existed.
 		tbReportError("tbCollideShapes", "unknown shape type %d or %d; use a tbShapeType value.",
 					  (int)shapeA->type, (int)shapeB->type);
 		return tb_emptyManifold;
 	}
-	if (rankA >= rankB)
-	{
-		return tbCollideOrdered(shapeA, xfA, shapeB, xfB, method);
-	}
+	return tbCollideShapesWithMargin(shapeA, xfA, shapeB, xfB, method, TB_SPECULATIVE_DISTANCE);
+}
 
-	// B → A in routine order, then the normal turned to A → B and the feature bytes swapped so
-	// the first byte still names a feature of A. Points and separations do not depend on order.
-	tbManifold m = tbCollideOrdered(shapeB, xfB, shapeA, xfA, method);
-	m.normal = tbNeg(m.normal);
-	for (int i = 0; i < m.pointCount; ++i)
-	{
-		m.points[i].id = tbSwapFeatureId(m.points[i].id);
-	}
-	return m;
+// ---------------------------------------------------------------------------------------------
+// Public pair routines: the fixed speculative distance TB_SPECULATIVE_DISTANCE.
+
+tbManifold tbCollideCircles(const tbCircle* circleA, tbTransform xfA, const tbCircle* circleB, tbTransform xfB)
+{
+	return tbCollideCirclesMargin(circleA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB)
+{
+	return tbCollideCapsuleAndCircleMargin(capsuleA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollideCapsules(const tbCapsule* capsuleA, tbTransform xfA, const tbCapsule* capsuleB, tbTransform xfB)
+{
+	return tbCollideCapsulesMargin(capsuleA, xfA, capsuleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB)
+{
+	return tbCollidePolygonAndCircleMargin(polygonA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollidePolygons(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB, tbTransform xfB)
+{
+	return tbCollidePolygonsMargin(polygonA, xfA, polygonB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, tbTransform xfA, const tbCapsule* capsuleB,
+									  tbTransform xfB)
+{
+	return tbCollidePolygonAndCapsuleMargin(polygonA, xfA, capsuleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
+									 tbTransform xfB)
+{
+	return tbCollideSegmentAndCircleMargin(segmentA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
+									  tbTransform xfB)
+{
+	return tbCollideSegmentAndCapsuleMargin(segmentA, xfA, capsuleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
+									  tbTransform xfB)
+{
+	return tbCollideSegmentAndPolygonMargin(segmentA, xfA, polygonB, xfB, TB_KEEP_DISTANCE);
 }

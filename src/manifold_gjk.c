@@ -21,7 +21,8 @@
 //    outside moved onto the plane it crosses). A surviving point p has core separation h = nR·(p − v1); its separation is
 //    h − rA − rB, and its world point is midway between the surfaces:
 //        point = p + ½(rR − rI − h)·nR.
-//    Points are kept while the separation is below TB_SPECULATIVE_DISTANCE.
+//    Points are kept while the separation is below the keep distance: TB_SPECULATIVE_DISTANCE
+//    for tbCollidePolygonsGJK, the caller's margin for tbCollidePolygonsGJKWithMargin.
 // Feature ids: the point at the reference face's first end is (first vertex of the face, the
 // incident vertex on that side) and likewise at the second end, whether or not it was clipped:
 // the same corners and edges touching keep the same ids. Bytes are (feature on A, feature on B);
@@ -106,7 +107,8 @@ static uint16_t tbClipFeatureId(int refVertex, int incVertex, bool flip)
 // Clip the incident edge of `inc` against reference face `refEdge` of `ref` (both in A's
 // frame). Returns the manifold in A's frame with normal nR (the caller flips it when B is the
 // reference); pointCount 0 when the incident edge misses the face's slab.
-static tbManifold tbClipToReferenceFace(const tbPolygon* ref, int refEdge, const tbPolygon* inc, bool flip)
+static tbManifold tbClipToReferenceFace(const tbPolygon* ref, int refEdge, const tbPolygon* inc, bool flip,
+										float keep)
 {
 	tbManifold m = {0};
 	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
@@ -149,7 +151,7 @@ static tbManifold tbClipToReferenceFace(const tbPolygon* ref, int refEdge, const
 	m.normal = nR;
 	for (int i = 0; i < 2; ++i)
 	{
-		if (points[i].separation < TB_SPECULATIVE_DISTANCE)
+		if (points[i].separation < keep)
 		{
 			m.points[m.pointCount++] = points[i];
 		}
@@ -201,8 +203,19 @@ static tbManifold tbLocalManifoldToWorld(tbManifold m, tbTransform xfA)
 	return m;
 }
 
+// Internal (declared in manifold.c too, which dispatches to it): points kept while the
+// separation is below `keep`.
+tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
+										  tbTransform xfB, float keep);
+
 tbManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
 								tbTransform xfB)
+{
+	return tbCollidePolygonsGJKWithMargin(polygonA, xfA, polygonB, xfB, TB_SPECULATIVE_DISTANCE);
+}
+
+tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
+										  tbTransform xfB, float keep)
 {
 	tbManifold empty = {0};
 
@@ -213,7 +226,7 @@ tbManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, tbTransform xfA, cons
 	input.transformB = xfB;
 	input.useRadii = true;
 	tbSeparationOutput separation = tbShapeSeparation(&input, NULL);
-	if (separation.separation >= TB_SPECULATIVE_DISTANCE)
+	if (separation.separation >= keep)
 	{
 		return empty;
 	}
@@ -236,12 +249,12 @@ tbManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, tbTransform xfA, cons
 	tbManifold m;
 	if (separationB > separationA + TB_GJK_REFERENCE_TOLERANCE)
 	{
-		m = tbClipToReferenceFace(&localB, faceB, polygonA, true);
+		m = tbClipToReferenceFace(&localB, faceB, polygonA, true, keep);
 		m.normal = tbNeg(m.normal);
 	}
 	else
 	{
-		m = tbClipToReferenceFace(polygonA, faceA, &localB, false);
+		m = tbClipToReferenceFace(polygonA, faceA, &localB, false, keep);
 	}
 	if (m.pointCount == 0)
 	{

@@ -118,11 +118,22 @@ void tbDestroyShapeProxy(tbWorld* world, tbShape* shape)
 void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
 {
 	float margin = body->type == tb_staticBody ? 0.0f : TB_AABB_MARGIN;
+	float reach = 0.0f;
+	if (body->type != tb_staticBody)
+	{
+		float dt = world->stepTime;
+		float speed = tbLength(body->linearVelocity) + tbAbsFloat(body->angularVelocity) * body->maxExtent;
+		float g = body->type == tb_dynamicBody ? tbLength(world->def.gravity) * tbAbsFloat(body->gravityScale) : 0.0f;
+		float cap = tbMaxFloat(TB_AABB_MARGIN, TB_CONTINUOUS_FRACTION * body->minExtent);
+		float closing = dt * (speed + dt * g);
+		reach = closing < cap ? closing : cap;
+		margin = tbMaxFloat(margin, reach);
+	}
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
 		tbShape* shape = world->shapes + id;
 		shape->aabb = tbComputeShapeAABBInternal(shape, body->transform);
-		if (forceMove || tbAABB_Contains(shape->fatAABB, shape->aabb) == false)
+		if (forceMove || tbAABB_Contains(shape->fatAABB, tbAABB_Fatten(shape->aabb, reach)) == false)
 		{
 			shape->fatAABB = tbAABB_Fatten(shape->aabb, margin);
 			tbBroadPhase_MoveProxy(&world->broadPhase, shape->proxyKey, shape->fatAABB);

@@ -290,7 +290,7 @@ static void tbUpdateCounters(tbWorld* world)
 	int touching = 0;
 	for (int i = 0; i < world->stepContactCount; ++i)
 	{
-		touching += (world->contacts[world->stepContacts[i]].flags & tb_contactTouching) ? 1 : 0;
+		touching += (world->contacts[world->stepContacts[i]].flags & tb_contactReported) ? 1 : 0;
 	}
 	c->touchingCount = touching;
 }
@@ -323,6 +323,7 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	}
 	world->locked = true;
 	world->stepIndex += 1;
+	world->stepTime = timeStep;
 	tbClearEvents(world);
 	memset(&world->profile, 0, sizeof(world->profile));
 	int byteCount = world->counters.byteCount;

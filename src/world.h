@@ -100,10 +100,15 @@ typedef struct tbContactEdge
 
 enum tbContactFlags
 {
-	tb_contactTouching = 0x01,		///< the manifold has points
+	tb_contactTouching = 0x01,		///< the manifold has points (solver, islands, waking); sensors: overlap
 	tb_contactSensor = 0x02,		///< one shape is a sensor: overlap only, no response
 	tb_contactEnableEvents = 0x04,	///< both shapes want begin/end events
 	tb_contactEnableHits = 0x08,	///< either shape wants hit events
+	/// Begin/end events and counters.touchingCount: a point's separation is below the fixed
+	/// TB_SPECULATIVE_DISTANCE (sensors: the shapes overlap). The manifold itself may hold points
+	/// further apart (the velocity-dependent margin of tbUpdateContact), which would otherwise make
+	/// event timing depend on speed.
+	tb_contactReported = 0x10,
 };
 
 /// A pair of shapes whose fat boxes overlap. Exists from the step the boxes start to overlap
@@ -198,6 +203,7 @@ typedef struct tbWorld
 	int autoVotes; ///< consecutive windows that voted for a change
 
 	uint32_t stepIndex; ///< steps taken (unsigned: wraps after 2^32 steps without overflow)
+	float stepTime;		///< time step of the current (or last) tbWorld_Step (s); 0 before the first
 	tbProfile profile;
 	tbCounters counters;
 	int byteCount;
@@ -235,9 +241,10 @@ void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);
 // contact.c
 void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB);
 void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies);
-/// Narrow phase for one contact: recompute its manifold; returns the touching flag change:
-/// +1 began touching, −1 stopped, 0 no change.
-int tbUpdateContact(tbWorld* world, tbContact* contact);
+/// Narrow phase for one contact: recompute its manifold and its touching and reported flags.
+/// Returns the reported flag change (begin/end events): +1 began, −1 stopped, 0 no change; sets
+/// *beganTouching when the manifold gained points (the bodies must be woken).
+int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching);
 
 // Stages of the step, in order (world.c drives them; each lives in the file of its concept).
 void tbUpdatePairsStage(tbWorld* world);		// contact.c: broad-phase pairs → new contacts

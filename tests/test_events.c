@@ -144,8 +144,10 @@ Test(events, contact_begin_touch_on_landing)
 		{
 			cr_assert_eq(events.beginCount, 0, "begin event at step %d, expected at %d", step, expected);
 			cr_assert_eq(counters.touchingCount, 0, "manifold points at step %d, expected from %d", step, expected);
-			double y = FreeFallHeight(y0, step);
-			cr_assert(fabs(tbBody_GetPosition(ball).y - y) < 1e-4, "step %d: y %g, free fall %g", step,
+			// Free fall, except that a step whose free fall would end below the surface ends on it:
+			// the speculative contact (its margin grows with the approach speed) stops the ball there.
+			double y = fmax(FreeFallHeight(y0, step), (double)radius);
+			cr_assert(fabs(tbBody_GetPosition(ball).y - y) < 1e-4, "step %d: y %g, expected %g", step,
 					  (double)tbBody_GetPosition(ball).y, y);
 		}
 		else if (step == expected)

@@ -341,6 +341,15 @@ typedef enum tbNarrowPhaseMethod
 TB_API tbManifold tbCollideShapes(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB, tbTransform xfB,
 								  tbNarrowPhaseMethod method);
 
+/// tbCollideShapes with a caller's speculative distance (m): points are kept while their
+/// separation is below speculativeDistance instead of TB_SPECULATIVE_DISTANCE (tbCollideShapes
+/// is this function with TB_SPECULATIVE_DISTANCE). The world passes a margin that grows with
+/// the pair's approach speed, so that a body closing more than 0.02 m in a step still gets
+/// points before it reaches the other shape. A larger margin only adds points with positive
+/// separation; the points of a smaller margin are unchanged.
+TB_API tbManifold tbCollideShapesWithMargin(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB,
+											tbTransform xfB, tbNarrowPhaseMethod method, float speculativeDistance);
+
 // ---------------------------------------------------------------------------------------------
 // Time of impact (toi_quadratic.c, toi_conservative.c)
 
