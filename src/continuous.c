@@ -1,8 +1,8 @@
 // The continuous stage: time of impact for bodies fast enough to tunnel.
 //
-// After the solve, a dynamic body whose motion in the step exceeds TB_CONTINUOUS_FRACTION of its
-// thickness (minExtent: the smallest distance from its centre of mass to its surface), or any
-// bullet, is swept from its start transform (center0, rotation0) to its end transform against
+// After the solve, a dynamic body whose motion in the step exceeds what speculative contacts cover,
+// max(TB_AABB_MARGIN, TB_CONTINUOUS_FRACTION × its thickness) (minExtent: the smallest distance
+// from its centre of mass to its surface), or any bullet, is swept from its start transform (center0, rotation0) to its end transform against
 // static shapes (bullets also against non-bullet dynamic bodies, which are swept along their own
 // motion). The body is moved back to the earliest time of impact; its velocity is kept, and the
 // contact that the next step finds stops it (Box2D's approach: no energy is invented, some time
@@ -46,7 +46,10 @@ static bool tbIsFast(const tbWorld* world, const tbBody* body, float* motion)
 	float rotation = tbAbsFloat(tbRelativeAngle(body->rotation0, body->transform.q));
 	*motion = translation + rotation * body->maxExtent;
 	(void)world;
-	return body->isBullet || *motion > TB_CONTINUOUS_FRACTION * body->minExtent;
+	// Speculative contacts cover a closing distance of up to max(TB_AABB_MARGIN, ½·thickness) per
+	// step (contact.c, shape.c); only motion beyond that can tunnel.
+	float covered = tbMaxFloat(TB_AABB_MARGIN, TB_CONTINUOUS_FRACTION * body->minExtent);
+	return body->isBullet || *motion > covered;
 }
 
 /// A circle whose motion over the sweep is linear: centred on the centre of mass, or no rotation.

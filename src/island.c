@@ -213,6 +213,18 @@ static void tbPutIslandToSleep(tbWorld* world, int count)
 void tbSleepStage(tbWorld* world, float timeStep)
 {
 	(void)timeStep;
+	// No island can sleep unless some awake body has rested long enough: then skip the search
+	// (a scene in motion, like a turning drum, pays one comparison per awake body).
+	bool anyRested = false;
+	for (int i = 0; i < world->awakeBodyCount && world->def.enableSleep; ++i)
+	{
+		anyRested = anyRested || world->bodies[world->awakeBodies[i]].sleepTime >= TB_TIME_TO_SLEEP;
+	}
+	if (anyRested == false)
+	{
+		world->counters.islandCount = 0;
+		return;
+	}
 	// Stamps: a fresh value per step, distinct from the contact stamps.
 	uint32_t stamp = world->stepIndex;
 	int islands = 0;

@@ -115,27 +115,45 @@ void tbDestroyShapeProxy(tbWorld* world, tbShape* shape)
 	}
 }
 
+/// The box swept by `box` moving by d, grown by pad on every side.
+static tbAABB tbSweepBox(tbAABB box, tbVec2 d, float pad)
+{
+	tbAABB moved = {tbAdd(box.lowerBound, d), tbAdd(box.upperBound, d)};
+	return tbAABB_Fatten(tbAABB_Union(box, moved), pad);
+}
+
+/// Broad-phase boxes must contain where a body's shapes can go during the next step, so that every
+/// pair that can touch in that step has its contact (and speculative points) when the step begins:
+/// two bodies that meet during the step have overlapping sweeps, hence overlapping fat boxes. The
+/// next step's sweep is the tight box and the tight box displaced by d = dt·(v + dt·g) (the velocity
+/// after the next step's gravity), grown by the rotation pad |ω|·maxExtent·dt. When the fat box no
+/// longer contains that sweep it is re-made around the sweep of four steps plus TB_AABB_MARGIN, so
+/// steady motion stays inside it for several steps (re-making boxes every step doubled the proxy
+/// moves on the tumbler). Displacements beyond what speculative contacts cover, max(TB_AABB_MARGIN,
+/// ½·thickness), are clipped there: faster bodies are continuous collision's job.
 void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
 {
 	float margin = body->type == tb_staticBody ? 0.0f : TB_AABB_MARGIN;
-	float reach = 0.0f;
+	tbVec2 d = tb_vec2_zero;
+	float pad = 0.0f;
 	if (body->type != tb_staticBody)
 	{
 		float dt = world->stepTime;
-		float speed = tbLength(body->linearVelocity) + tbAbsFloat(body->angularVelocity) * body->maxExtent;
-		float g = body->type == tb_dynamicBody ? tbLength(world->def.gravity) * tbAbsFloat(body->gravityScale) : 0.0f;
 		float cap = tbMaxFloat(TB_AABB_MARGIN, TB_CONTINUOUS_FRACTION * body->minExtent);
-		float closing = dt * (speed + dt * g);
-		reach = closing < cap ? closing : cap;
-		margin = tbMaxFloat(margin, reach);
+		tbVec2 g = body->type == tb_dynamicBody ? tbMulSV(body->gravityScale, world->def.gravity) : tb_vec2_zero;
+		d = tbMulSV(dt, tbMulAdd(body->linearVelocity, dt, g));
+		float length = tbLength(d);
+		// NaN-safe: a non-finite displacement is replaced by none (the step rejects nothing here).
+		d = length > cap ? tbMulSV(cap / length, d) : (length <= cap ? d : tb_vec2_zero);
+		pad = tbMinFloat(tbAbsFloat(body->angularVelocity) * body->maxExtent * dt, cap);
 	}
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
 		tbShape* shape = world->shapes + id;
 		shape->aabb = tbComputeShapeAABBInternal(shape, body->transform);
-		if (forceMove || tbAABB_Contains(shape->fatAABB, tbAABB_Fatten(shape->aabb, reach)) == false)
+		if (forceMove || tbAABB_Contains(shape->fatAABB, tbSweepBox(shape->aabb, d, pad)) == false)
 		{
-			shape->fatAABB = tbAABB_Fatten(shape->aabb, margin);
+			shape->fatAABB = tbAABB_Fatten(tbSweepBox(shape->aabb, tbMulSV(2.0f, d), pad), margin);
 			tbBroadPhase_MoveProxy(&world->broadPhase, shape->proxyKey, shape->fatAABB);
 			world->counters.proxyMoves += 1;
 		}

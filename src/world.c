@@ -118,7 +118,8 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 
 // The automatic broad phase, from the scene's statistics over a window of steps. Measured with
 // tumble-bench-broadphase (every body moving): sort-and-sweep is ~1.5× faster than the tree up to
-// ~4k bodies when about a third of the proxies move each step, and 1.5× slower at 64k; it also sweeps sleeping and static proxies every step, and
+// ~4k bodies when about a third of the proxies move each step (break-even near a quarter: the
+// tree's cost follows the moves, sort-and-sweep's does not), and 1.5× slower at 64k; it also sweeps sleeping and static proxies every step, and
 // its queries (continuous collision, user queries) scan linearly. So sort-and-sweep is chosen
 // only when few movable proxies mostly all move, static proxies do not dominate and fast bodies
 // are rare; otherwise the tree. A switch needs two windows in a row that agree (hysteresis).
@@ -138,7 +139,7 @@ static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 	float window = (float)world->autoWindowSteps;
 	float movedFraction = movable > 0 ? (float)world->autoMovedProxies / (window * (float)movable) : 0.0f;
 	float fastFraction = movable > 0 ? (float)world->autoFastBodies / (window * (float)movable) : 0.0f;
-	bool sweep = movable <= TB_AUTO_SWEEP_MAX_PROXIES && movedFraction > 0.3f && statics <= movable &&
+	bool sweep = movable <= TB_AUTO_SWEEP_MAX_PROXIES && movedFraction > 0.25f && statics <= movable &&
 				 fastFraction < 0.01f;
 	return sweep ? tb_broadPhaseSortAndSweep : tb_broadPhaseTree;
 }

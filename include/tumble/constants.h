@@ -43,9 +43,10 @@
 #define TB_MAX_ROTATION (0.25f * 3.14159265359f)
 
 /// A body is "fast" and gets swept for continuous collision when its motion in one step exceeds
-/// this fraction of its extent (smallest distance from its centre of mass to its surface).
-/// 0.5: a body that moves less than half its own thickness cannot skip over a wall that it
-/// touches at the start of the step plus the speculative margin.
+/// what speculative contacts cover: max(TB_AABB_MARGIN, this fraction × its extent, the smallest
+/// distance from its centre of mass to its surface). 0.5: the speculative margin and the
+/// broad-phase reach grow with speed up to that distance, so slower bodies are stopped by
+/// speculative contacts and never tunnel.
 #define TB_CONTINUOUS_FRACTION 0.5f
 
 /// Conservative advancement stops when the shapes are within this separation, 0.25 × slop.

@@ -235,7 +235,7 @@ typedef struct tbCounters
 	int contactCount;		 ///< contacts whose fat boxes overlap
 	int touchingCount;		 ///< contacts with manifold points among awake bodies (sleeping islands are not visited)
 	int awakeBodyCount;
-	int islandCount;		 ///< awake islands
+	int islandCount;		 ///< awake islands (searched only when some body has rested TB_TIME_TO_SLEEP; else 0)
 	int treeHeight;			 ///< dynamic-tree height (0 when another broad phase runs)
 	int pairCandidates;		 ///< new pairs found by the broad phase this step
 	int proxyMoves;			 ///< proxies whose fat box was updated this step
