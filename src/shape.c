@@ -133,7 +133,9 @@ static tbAABB tbSweepBox(tbAABB box, tbVec2 d, float pad)
 /// ½·thickness), are clipped there: faster bodies are continuous collision's job.
 void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
 {
-	float margin = body->type == tb_staticBody ? 0.0f : TB_AABB_MARGIN;
+	// Margin relative to the body's size (a quarter of its largest extent, at most TB_AABB_MARGIN):
+	// a fixed 0.1 m around 0.25 m boxes (the tumbler) made four times as many contacts as touch.
+	float margin = body->type == tb_staticBody ? 0.0f : tbMinFloat(TB_AABB_MARGIN, 0.25f * body->maxExtent);
 	tbVec2 d = tb_vec2_zero;
 	float pad = 0.0f;
 	if (body->type != tb_staticBody)
