@@ -9,27 +9,7 @@
 
 // --- error recording --------------------------------------------------------------------------
 
-static char s_lastError[512];
-static int s_errors;
-
-static void RecordError(const char* message, void* context)
-{
-	(void)context;
-	strncpy(s_lastError, message, sizeof(s_lastError) - 1);
-	s_errors += 1;
-}
-
-static void SetupErrors(void)
-{
-	s_lastError[0] = 0;
-	s_errors = 0;
-	tbSetErrorCallback(RecordError, NULL);
-}
-
-static void TeardownErrors(void)
-{
-	tbSetErrorCallback(NULL, NULL);
-}
+#include "error_recorder.h"
 
 // --- scene helpers ----------------------------------------------------------------------------
 

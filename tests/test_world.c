@@ -9,35 +9,7 @@
 
 // --- error recording --------------------------------------------------------------------------
 
-static char s_lastError[512];
-static int s_errors;
-
-static void RecordError(const char* message, void* context)
-{
-	(void)context;
-	strncpy(s_lastError, message, sizeof(s_lastError) - 1);
-	s_errors += 1;
-}
-
-static void SetupErrors(void)
-{
-	s_lastError[0] = 0;
-	s_errors = 0;
-	tbSetErrorCallback(RecordError, NULL);
-}
-
-static void TeardownErrors(void)
-{
-	tbSetErrorCallback(NULL, NULL);
-}
-
-/// Expect exactly one new error whose message contains both fragments.
-static void ExpectError(int before, const char* function, const char* argument)
-{
-	cr_assert_eq(s_errors, before + 1, "expected one error from %s, got %d", function, s_errors - before);
-	cr_assert(strstr(s_lastError, function) != NULL, "message '%s' should name %s", s_lastError, function);
-	cr_assert(strstr(s_lastError, argument) != NULL, "message '%s' should name %s", s_lastError, argument);
-}
+#include "error_recorder.h"
 
 // --- a small world ----------------------------------------------------------------------------
 
