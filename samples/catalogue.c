@@ -74,15 +74,24 @@ static Scene* BuildPyramid(void)
 	return scene;
 }
 
+/// A column of `count` unit boxes on the ground, `gap` metres apart (0: resting exactly on each
+/// other), with x alternating ±`wobble` (0: straight), density 1.
+static void AddBoxColumn(Scene* scene, int count, float gap, float wobble, float friction)
+{
+	for (int i = 0; i < count; ++i)
+	{
+		float x = (i % 2 == 0) ? wobble : -wobble;
+		float y = 0.5f + 0.5f * gap + (1.0f + gap) * (float)i;
+		AddBoxBody(scene, tb_dynamicBody, V(x, y), 0.0f, 0.5f, 0.5f, 1.0f, friction);
+	}
+}
+
 static Scene* BuildVerticalStack(void)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 300;
 	AddGround(scene, 20.0f, 0.6f);
-	for (int i = 0; i < 10; ++i)
-	{
-		AddBoxBody(scene, tb_dynamicBody, V(0.0f, 0.5f + (float)i), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
-	}
+	AddBoxColumn(scene, 10, 0.0f, 0.0f, 0.6f);
 	return scene;
 }
 
@@ -91,11 +100,7 @@ static Scene* BuildDroppedStack(void)
 	Scene* scene = Scene_Create();
 	scene->steps = 600;
 	AddGround(scene, 100.0f, 0.6f);
-	for (int i = 0; i < 15; ++i)
-	{
-		float x = (i % 2 == 0) ? 0.01f : -0.01f;
-		AddBoxBody(scene, tb_dynamicBody, V(x, 0.55f + 1.1f * (float)i), 0.0f, 0.5f, 0.5f, 1.0f, 0.3f);
-	}
+	AddBoxColumn(scene, 15, 0.1f, 0.01f, 0.3f);
 	return scene;
 }
 
@@ -104,10 +109,7 @@ static Scene* BuildTouchingStack(void)
 	Scene* scene = Scene_Create();
 	scene->steps = 600;
 	AddGround(scene, 100.0f, 0.6f);
-	for (int i = 0; i < 20; ++i)
-	{
-		AddBoxBody(scene, tb_dynamicBody, V(0.0f, 0.5f + (float)i), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
-	}
+	AddBoxColumn(scene, 20, 0.0f, 0.0f, 0.6f);
 	return scene;
 }
 
