@@ -104,6 +104,7 @@ static void tbAddToAwakeSet(tbWorld* world, tbBody* body, int bodyId)
 {
 	body->awakeIndex = world->awakeBodyCount;
 	TB_ARRAY_PUSH(world->awakeBodies, world->awakeBodyCount, world->awakeBodyCapacity, bodyId);
+	world->awakeSetVersion += 1;
 }
 
 static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
@@ -118,6 +119,7 @@ static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
 	}
 	world->awakeBodyCount -= 1;
 	body->awakeIndex = TB_NULL_INDEX;
+	world->awakeSetVersion += 1;
 }
 
 void tbWakeBody(tbWorld* world, tbBody* body)

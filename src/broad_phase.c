@@ -261,6 +261,12 @@ tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey)
 	return bp->proxies[proxyKey].aabb;
 }
 
+void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, void* context)
+{
+	bp->pairFilter = filter;
+	bp->pairFilterContext = context;
+}
+
 bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)
 {
 	return tbAABB_Overlaps(bp->proxies[proxyKeyA].aabb, bp->proxies[proxyKeyB].aabb);
@@ -273,6 +279,10 @@ void tbBroadPhase_AddPair(tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)
 {
 	int a = bp->proxies[proxyKeyA].shapeIndex;
 	int b = bp->proxies[proxyKeyB].shapeIndex;
+	if (bp->pairFilter != NULL && bp->pairFilter(a, b, bp->pairFilterContext) == false)
+	{
+		return;
+	}
 	if (bp->pairCount == bp->pairCapacity)
 	{
 		int n = bp->pairCapacity;

@@ -43,6 +43,9 @@ typedef struct tbBroadProxy
 	bool isFree;
 } tbBroadProxy;
 
+/// Pair filter: return false to drop the pair of two shapes (shape indices).
+typedef bool tbPairFilterFcn(int shapeIndexA, int shapeIndexB, void* context);
+
 typedef struct tbBroadPhase
 {
 	tbBroadPhaseMethod method; ///< resolved (never auto)
@@ -74,7 +77,16 @@ typedef struct tbBroadPhase
 	// of them triggers a binned SAH rebuild on the next UpdatePairs.
 	int staticInsertCount;
 	int enlargedCount; ///< movable tree leaves enlarged in place since the last UpdatePairs
+
+	// Optional pair filter (NULL keeps every pair), applied as each pair is found, before the sort.
+	tbPairFilterFcn* pairFilter;
+	void* pairFilterContext;
 } tbBroadPhase;
+
+/// Install a pair filter. The world drops pairs that already have a contact or may not collide
+/// (a moving pile re-finds mostly existing pairs: filtering first keeps the sort small). The
+/// filter must depend only on the two shapes, so the sorted result is the same as filtering after.
+void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, void* context);
 
 /// Used by the method files while finding pairs: append the pair of two proxies, named by shape
 /// index with a < b. UpdatePairs sorts and removes duplicates afterwards.

@@ -192,6 +192,11 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	return tbHashSet_Contains(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB)) == false;
 }
 
+bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* context)
+{
+	return tbShouldCreateContact(context, shapeIdA, shapeIdB);
+}
+
 void tbUpdatePairsStage(tbWorld* world)
 {
 	tbBroadPhase* bp = &world->broadPhase;
@@ -371,6 +376,7 @@ static void tbGatherAwakeContacts(tbWorld* world)
 {
 	uint32_t stamp = 2u * world->stepIndex;
 	world->stepContactCount = 0;
+	world->gatheredVersion = world->awakeSetVersion;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		const tbBody* body = world->bodies + world->awakeBodies[i];
@@ -392,6 +398,7 @@ void tbCollideStage(tbWorld* world)
 	tbGatherAwakeContacts(world);
 	const tbBroadPhase* bp = &world->broadPhase;
 	int kept = 0;
+	world->touchingContactCount = 0;
 	for (int i = 0; i < world->stepContactCount; ++i)
 	{
 		int contactId = world->stepContacts[i];
@@ -406,6 +413,11 @@ void tbCollideStage(tbWorld* world)
 		world->stepContacts[kept++] = contactId;
 		bool beganTouching = false;
 		int change = tbUpdateContact(world, contact, &beganTouching);
+		if ((contact->flags & (tb_contactTouching | tb_contactSensor)) == tb_contactTouching)
+		{
+			TB_ARRAY_PUSH(world->touchingContacts, world->touchingContactCount, world->touchingContactCapacity,
+						  contactId);
+		}
 		if (beganTouching)
 		{
 			// New manifold points (speculative ones too) wake both bodies: the sleeping one joins

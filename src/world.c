@@ -199,6 +199,7 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	world->userData = def->userData;
 	tbHashSet_Create(&world->pairSet, 64);
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
+	tbBroadPhase_SetPairFilter(&world->broadPhase, tbContactPairFilter, world);
 	s_worlds[slot] = world;
 	tbWorldId id = {(uint16_t)(slot + 1), world->generation};
 	return id;
@@ -215,6 +216,7 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->awakeBodies, w->awakeBodyCapacity);
 	TB_ARRAY_FREE(w->stepContacts, w->stepContactCapacity);
 	TB_ARRAY_FREE(w->solverContacts, w->solverContactCapacity);
+	TB_ARRAY_FREE(w->touchingContacts, w->touchingContactCapacity);
 	TB_ARRAY_FREE(w->islandStack, w->islandStackCapacity);
 	TB_ARRAY_FREE(w->islandBodies, w->islandBodyCapacity);
 	TB_ARRAY_FREE(w->beginEvents, w->beginCapacity);

@@ -115,16 +115,18 @@ enum tbContactFlags
 /// until the step they stop.
 typedef struct tbContact
 {
+	// Hot while walking a body's contact list (island and gather passes): the edges, flags and
+	// stamp share the first cache line, so a walk touches one line per contact, not three.
 	tbContactEdge edges[2];
+	uint32_t flags;
+	uint32_t stamp; ///< last step stamp at which this contact was gathered (unsigned: wraps)
 	int shapeIdA;
 	int shapeIdB;
-	tbManifold manifold;
-	tbSimplexCache cache; ///< GJK warm start for the GJK/EPA narrow phase
 	float friction;
 	float restitution;
-	uint32_t flags;
-	uint32_t stamp;		 ///< last step stamp at which this contact was gathered (unsigned: wraps)
 	bool inUse;
+	tbSimplexCache cache; ///< GJK warm start for the GJK/EPA narrow phase
+	tbManifold manifold;
 } tbContact;
 
 // ---------------------------------------------------------------------------------------------
@@ -171,6 +173,12 @@ typedef struct tbWorld
 	int stepContactCount, stepContactCapacity;
 	int* solverContacts;
 	int solverContactCount, solverContactCapacity;
+	/// Touching non-sensor contacts in stepContacts order, recorded by the collide stage, and the
+	/// awake-set version at its gather: the island stage's fast path (island.c).
+	int* touchingContacts;
+	int touchingContactCount, touchingContactCapacity;
+	uint32_t awakeSetVersion;  ///< bumped whenever a body joins or leaves the awake set
+	uint32_t gatheredVersion; ///< awakeSetVersion when the collide stage gathered its contacts
 	int* islandStack;
 	int islandStackCapacity;
 	int* islandBodies;
@@ -247,6 +255,7 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies);
 int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching);
 
 // Stages of the step, in order (world.c drives them; each lives in the file of its concept).
+bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* world); // contact.c: broad-phase pair filter
 void tbUpdatePairsStage(tbWorld* world);		// contact.c: broad-phase pairs → new contacts
 void tbCollideStage(tbWorld* world);			// contact.c: narrow phase, begin/end events
 void tbIslandStage(tbWorld* world);				// island.c: wake touching neighbours, gather solver contacts
