@@ -18,42 +18,44 @@
 /// what it touches into tbSolverBody arrays each step.
 typedef struct tbBody
 {
-	const char* name;
-	void* userData;
-
+	// Hot in the collide and island stages (speculative margin, anchors, contact-list walks):
+	// grouped at the front so a visit touches one or two cache lines.
 	tbTransform transform; ///< body origin and rotation
 	tbVec2 center;		   ///< world centre of mass
-	tbVec2 center0;		   ///< centre of mass at the start of the step (continuous collision)
-	tbRot rotation0;	   ///< rotation at the start of the step
-	tbVec2 localCenter;	   ///< centre of mass in the body frame
-
 	tbVec2 linearVelocity;
 	float angularVelocity;
+	float minExtent;	///< smallest distance from the centre of mass to the surface (continuous collision)
+	float maxExtent;	///< largest distance from the centre of mass to any shape point
+	float gravityScale;
+	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
+	int awakeIndex;		///< index in world->awakeBodies, or TB_NULL_INDEX when asleep or static
+	uint8_t type;		///< tbBodyType
+
+	tbVec2 center0;		///< centre of mass at the start of the step (continuous collision)
+	tbRot rotation0;	///< rotation at the start of the step
+	tbVec2 localCenter; ///< centre of mass in the body frame
 	tbVec2 force;
 	float torque;
 
 	float mass, invMass;
 	float inertia, invInertia; ///< about the centre of mass
-	float minExtent;		   ///< smallest distance from the centre of mass to the surface (continuous collision)
-	float maxExtent;		   ///< largest distance from the centre of mass to any shape point
 
 	float linearDamping;
 	float angularDamping;
-	float gravityScale;
 	float sleepThreshold;
 	float sleepTime;
 
 	int headShapeId; ///< singly linked through tbShape::nextShapeId
 	int shapeCount;
-	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
 	int contactCount;
 
-	int awakeIndex;	 ///< index in world->awakeBodies, or TB_NULL_INDEX when asleep or static
-	int solverIndex; ///< index in the solver's body arrays this step, or TB_NULL_INDEX
+	int solverIndex;	  ///< index in the solver's body arrays this step, or TB_NULL_INDEX
 	uint32_t islandStamp; ///< step stamp used by the island search (unsigned: wraps without overflow)
 
+	const char* name;
+	void* userData;
+
 	uint16_t generation;
-	uint8_t type; ///< tbBodyType
 	bool inUse;
 	bool enableSleep;
 	bool fixedRotation;
@@ -67,21 +69,24 @@ typedef struct tbBody
 
 typedef struct tbShape
 {
+	// Hot in the collide stage, which visits every contact each step (most are only fat-box
+	// overlaps, rejected with these fields): first cache line.
+	tbAABB aabb; ///< tight world box, updated after each step
+	int bodyId;
+	int proxyKey;
+	bool isSensor;
+
 	tbGeometry geometry; ///< in the body frame
 	void* userData;
-	tbAABB aabb;	///< tight world box, updated after each step
 	tbAABB fatAABB; ///< the broad-phase box (aabb enlarged by TB_AABB_MARGIN)
 	tbFilter filter;
 	float density;
 	float friction;
 	float restitution;
 	int userMaterialId;
-	int bodyId;
 	int nextShapeId;
-	int proxyKey;
 	uint16_t generation;
 	bool inUse;
-	bool isSensor;
 	bool enableSensorEvents;
 	bool enableContactEvents;
 	bool enableHitEvents;
