@@ -6,6 +6,8 @@
 // begin/end events when a point comes within the fixed TB_SPECULATIVE_DISTANCE.
 #include "world.h"
 
+#include "sort.h"
+
 #include "array.h"
 
 #include <string.h>
@@ -371,12 +373,30 @@ static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 	}
 }
 
-/// Gather each contact of an awake body once, in awake-body order (deterministic).
+/// Gather each contact of an awake body once, in contact-id order: every later stage inherits
+/// this order (solver order included), so it must not depend on how the contacts were found.
+/// A mostly awake world scans the contact array (sequential memory, the fast case for a moving
+/// pile); a mostly sleeping one walks the awake bodies' contact lists (cost proportional to the
+/// awake part) and sorts the ids.
 static void tbGatherAwakeContacts(tbWorld* world)
 {
-	uint32_t stamp = 2u * world->stepIndex;
-	world->stepContactCount = 0;
 	world->gatheredVersion = world->awakeSetVersion;
+	world->stepContactCount = 0;
+	if (2 * world->awakeBodyCount >= world->bodyCount)
+	{
+		TB_ARRAY_RESERVE(world->stepContacts, world->stepContactCapacity, world->contactCount);
+		for (int id = 0; id < world->contactHighWater; ++id)
+		{
+			const tbContact* contact = world->contacts + id;
+			if (contact->inUse && (world->bodies[contact->edges[0].bodyId].awakeIndex != TB_NULL_INDEX ||
+								   world->bodies[contact->edges[1].bodyId].awakeIndex != TB_NULL_INDEX))
+			{
+				world->stepContacts[world->stepContactCount++] = id;
+			}
+		}
+		return;
+	}
+	uint32_t stamp = 2u * world->stepIndex;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		const tbBody* body = world->bodies + world->awakeBodies[i];
@@ -391,6 +411,9 @@ static void tbGatherAwakeContacts(tbWorld* world)
 			key = contact->edges[key & 1].nextKey;
 		}
 	}
+	// islandStack is free scratch here: the island stage uses it later in the step.
+	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, world->stepContactCount);
+	tbSortIndices(world->stepContacts, world->stepContactCount, world->islandStack);
 }
 
 void tbCollideStage(tbWorld* world)

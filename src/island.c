@@ -12,6 +12,7 @@
 #include "world.h"
 
 #include "array.h"
+#include "sort.h"
 
 #include <stdint.h>
 
@@ -25,9 +26,10 @@
 // |0.01–0.05| m over 10 s for different hash seeds, sag 0.84 m instead of 0.91 m, kinetic
 // energy 1 J instead of 27 J. So the contacts are bucketed by a hash of their id (stable while the
 // contact lives, independent of memory addresses, so the order is deterministic) into
-// TB_SOLVE_ORDER_BUCKETS buckets with a stable counting sort; within a bucket the gathered order is
-// kept, which keeps some locality (cost: about +10% solve time on the large pyramid, from the
-// scattered body accesses). 4 buckets leave 0.11 m of drift, 8 0.05 m, 16 0.04 m.
+// TB_SOLVE_ORDER_BUCKETS buckets with a stable counting sort; within a bucket the gathered order
+// (contact-id order: contacts made in one step get consecutive ids in shape-pair order, which keeps
+// some locality) is kept (cost: about +10% solve time on the large pyramid, from the scattered
+// body accesses). 4 buckets leave 0.11 m of drift, 8 0.05 m, 16 0.04 m.
 #define TB_SOLVE_ORDER_BUCKETS 16
 
 static inline int tbSolveOrderBucket(int contactId)
@@ -83,9 +85,9 @@ static bool tbIsSolverContact(const tbWorld* world, const tbContact* contact)
 }
 
 /// Fast path: when no body joined or left the awake set since the collide stage gathered its
-/// contacts, the walk below would visit contacts in exactly the collide stage's order, so its
-/// solver contacts are the recorded touching contacts, in that order, less those with a sleeping
-/// side. Returns false (nothing gathered) when some sleeping body must be woken: the walk does it.
+/// contacts, the solver contacts are the touching contacts the collide stage recorded (in
+/// contact-id order) less those with a sleeping side: the same set as the walk below gathers.
+/// Returns false (nothing gathered) when some sleeping body must be woken: the walk does it.
 static bool tbGatherRecordedContacts(tbWorld* world)
 {
 	if (world->gatheredVersion != world->awakeSetVersion)
@@ -138,9 +140,7 @@ void tbIslandStage(tbWorld* world)
 	// wakes nothing; a contact whose other side is still asleep after that (it touches only static
 	// bodies or a resting kinematic one) has nothing to solve (both sides would be treated as
 	// immovable) and is left out, so the solver never sees a sleeping non-static body. One walk
-	// instead of a wake pass then a gather pass halves the memory traffic (the walk is bound by
-	// cache misses on the contact lists); the order is the same except for a contact between a
-	// resting kinematic body and a body woken later in the walk, taken from the woken side.
+	// does both (the walk is bound by cache misses on the contact lists).
 	uint32_t stamp = 2u * world->stepIndex + 1u;
 	world->solverContactCount = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
@@ -173,6 +173,10 @@ void tbIslandStage(tbWorld* world)
 			key = next;
 		}
 	}
+	// Contact-id order, as the fast path (and the collide stage) gives: the solver order must not
+	// depend on whether a body was woken this step.
+	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, world->solverContactCount);
+	tbSortIndices(world->solverContacts, world->solverContactCount, world->islandStack);
 	tbOrderSolverContacts(world);
 }
 
