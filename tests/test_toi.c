@@ -593,3 +593,239 @@ Test(toi, conservative_spinning_thin_box_never_tunnels)
 	cr_log_info("spinning thin box: 100 launches, iterations mean %.2f, max %d (cap %d)", iterationSum / 100.0,
 				maxIterations, TB_TOI_MAX_ITERATIONS);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Long faces turning while the other shape slides onto them or past them: the fixed-axis bound
+// converges linearly there and used to hit the iteration cap; the axis turning with the witness
+// face (toi_conservative.c) must converge, and never step past the first time the separation
+// reaches the target.
+
+// Reference by dense sampling of the exact distance (tbShapeDistance, independent of the
+// advancement) at `samples` + 1 evenly spaced times over [0, maxFraction].
+typedef struct DenseReference
+{
+	int firstBelow;		   // first sample index with separation < target, −1 if none
+	float minSeparation;   // smallest sampled separation
+	float spacing;		   // time between samples
+	float lipschitz;	   // |vB − vA| + |ωA|·ρA + |ωB|·ρB: no separation changes faster (m per sweep)
+	float beforeSeparation; // separation at sample firstBelow − 1
+	float belowSeparation;	// separation at sample firstBelow
+} DenseReference;
+
+static float coreReach(const tbShapeProxy* proxy, tbVec2 localCenter)
+{
+	float reach = 0.0f;
+	for (int i = 0; i < proxy->count; ++i)
+	{
+		reach = fmaxf(reach, tbDistance(proxy->points[i], localCenter));
+	}
+	return reach;
+}
+
+static DenseReference denseReference(const tbTOIInput* input, int samples)
+{
+	DenseReference reference = {-1, FLT_MAX, input->maxFraction / (float)samples, 0.0f, 0.0f, 0.0f};
+	tbVec2 relative = tbSub(tbSub(input->sweepB.c2, input->sweepB.c1), tbSub(input->sweepA.c2, input->sweepA.c1));
+	reference.lipschitz =
+		tbLength(relative) +
+		fabsf(tbRelativeAngle(input->sweepA.q1, input->sweepA.q2)) * coreReach(&input->proxyA, input->sweepA.localCenter) +
+		fabsf(tbRelativeAngle(input->sweepB.q1, input->sweepB.q2)) * coreReach(&input->proxyB, input->sweepB.localCenter);
+	float previous = 0.0f;
+	for (int i = 0; i <= samples; ++i)
+	{
+		float separation = sweptSeparation(input, input->maxFraction * (float)i / (float)samples);
+		reference.minSeparation = fminf(reference.minSeparation, separation);
+		if (reference.firstBelow < 0 && separation < input->targetSeparation)
+		{
+			reference.firstBelow = i;
+			reference.beforeSeparation = previous;
+			reference.belowSeparation = separation;
+		}
+		previous = separation;
+	}
+	return reference;
+}
+
+static tbRot rotation(float c, float s)
+{
+	tbRot q = {c, s};
+	return q;
+}
+
+// Box2D verification test (tests/verification/test_box2d_collision.cpp), seed 3001, case 3557, as
+// that test passes it to tbTimeOfImpact: cores (radius 0) and Box2D's core target
+// max(0.005, 0.0280768629 + 0.01 − 0.015). Exact floats printed with %a from its generator: a
+// circle core drifting 0.16 m, and a 3.65 × 7.43 m box core moving (0.82, 8.06) m while turning
+// 0.688 rad, whose long face sweeps onto the circle.
+static tbTOIInput circleAndTurningLongBox(void)
+{
+	tbVec2 center = {0.0f, 0.0f};
+	tbTOIInput input;
+	input.proxyA = tbMakeProxy(&center, 1, 0.0f);
+	input.proxyB = boxProxy(0x1.d2c6e4p+0f, 0x1.dba546p+1f, 0.0f); // hx 1.82334733, hy 3.71598125
+	input.sweepA.localCenter = tb_vec2_zero;
+	input.sweepA.c1 = tbMakeVec2(0x1.a7b158p+1f, -0x1.202726p+1f); // (3.3101, -2.25119)
+	input.sweepA.c2 = tbMakeVec2(0x1.9f86e4p+1f, -0x1.0d9892p+1f); // (3.2463, -2.10622)
+	input.sweepA.q1 = rotation(0x1.ff5572p-1f, -0x1.a1c596p-5f);	   // angle -0.0510197
+	input.sweepA.q2 = rotation(0x1.ffde92p-1f, -0x1.720572p-6f);	   // angle -0.0225862
+	input.sweepB.localCenter = tb_vec2_zero;
+	input.sweepB.c1 = tbMakeVec2(0x1.58017cp+2f, -0x1.8c56e4p+2f); // (5.37509, -6.1928)
+	input.sweepB.c2 = tbMakeVec2(0x1.8c95fp+2f, 0x1.dd5cap+0f);	   // (6.19665, 1.86469)
+	input.sweepB.q1 = rotation(-0x1.346958p-1f, 0x1.98b046p-1f);   // angle 2.21726
+	input.sweepB.q2 = rotation(-0x1.f1bab8p-1f, 0x1.e0286ap-3f);   // angle 2.90494
+	input.maxFraction = 1.0f;
+	input.targetSeparation = 0x1.7a176p-6f; // 0.0230768621 m
+	return input;
+}
+
+// Same test, seed 3001, case 6129: a 0.38 × 6.30 m box core turning −0.892 rad while a triangle
+// core (centre of mass at its centroid) flies 9.5 m past it turning 0.801 rad. Box2D's core target
+// for two 0.01 m skins is max(0.005, 0.02 − 0.015) = 0.005 m; the cores come within 0.0156 m.
+static tbTOIInput turningLongBoxAndPassingTriangle(void)
+{
+	tbVec2 triangle[3] = {{-0x1.1cdb6ap+0f, 0x1.4706e2p-1f},  // (-1.11272299, 0.638724387)
+						  {-0x1.59c5bcp-1f, -0x1.174496p+0f}, // (-0.675336719, -1.09089029)
+						  {0x1.3c59b2p-1f, 0x1.1fdb06p+0f}};  // (0.617871821, 1.12443578)
+	tbTOIInput input;
+	input.proxyA = boxProxy(0x1.8369eap-3f, 0x1.935b62p+1f, 0.0f); // hx 0.189166859, hy 3.15122628
+	input.proxyB = tbMakeProxy(triangle, 3, 0.0f);
+	input.sweepA.localCenter = tb_vec2_zero;
+	input.sweepA.c1 = tbMakeVec2(-0x1.111486p+2f, -0x1.9af3a2p+1f); // (-4.26688, -3.21056)
+	input.sweepA.c2 = tbMakeVec2(-0x1.15b94ep+2f, -0x1.bcc7aep+1f); // (-4.33944, -3.47484)
+	input.sweepA.q1 = rotation(0x1.b7407cp-2f, 0x1.ce809cp-1f);		// angle 1.12746
+	input.sweepA.q2 = rotation(0x1.f1df88p-1f, 0x1.ddc44cp-3f);		// angle 0.235454
+	input.sweepB.localCenter = tbMakeVec2(-0x1.8f6c9cp-2f, 0x1.caefa8p-3f);
+	input.sweepB.c1 = tbMakeVec2(-0x1.514656p+2f, 0x1.8159d4p+0f); // (-5.26992, 1.50528)
+	input.sweepB.c2 = tbMakeVec2(-0x1.e8ff9p-1f, -0x1.baa7fp+2f);  // (-0.955075, -6.9165)
+	input.sweepB.q1 = rotation(-0x1.a6069p-2f, -0x1.d27eb8p-1f);   // angle -1.99559
+	input.sweepB.q2 = rotation(0x1.781dcep-2f, -0x1.dc3656p-1f);   // angle -1.19469
+	input.maxFraction = 1.0f;
+	input.targetSeparation = 0x1.47ae14p-8f; // 0.005 m
+	return input;
+}
+
+Test(toi, conservative_circle_meets_turning_long_box)
+{
+	tbTOIInput input = circleAndTurningLongBox();
+	tbTOIOutput output = tbTimeOfImpact(&input);
+	checkHitProperty(&input, output, "circle vs turning long box (Box2D seed 3001 case 3557)");
+
+	// Reference: 100,000 samples (spacing 1e-5 of the sweep). The time of impact lies between the
+	// last sample above the target and the first one below. The advancement must not pass the first
+	// sample below (safety), and stops once the separation is within its tolerance band of
+	// CA_TOLERANCE above the target, which at the sampled approach speed s = (before − below)/spacing
+	// is at most CA_TOLERANCE/s of the sweep before the last sample above.
+	DenseReference reference = denseReference(&input, 100000);
+	cr_assert_gt(reference.firstBelow, 0);
+	float below = reference.spacing * (float)reference.firstBelow;
+	float above = below - reference.spacing;
+	float approachSpeed = (reference.beforeSeparation - reference.belowSeparation) / reference.spacing;
+	cr_assert_gt(approachSpeed, 0.5f, "approach speed %g m per sweep", approachSpeed);
+	cr_assert_leq(output.fraction, below, "fraction %.7f passes the first sample below the target (%.7f)",
+				  output.fraction, below);
+	cr_assert_geq(output.fraction, above - CA_TOLERANCE / approachSpeed, "fraction %.7f, reference in [%.7f, %.7f]",
+				  output.fraction, above, below);
+	cr_log_info("case 3557: hit at %.7f after %d iterations; reference crossing in [%.5f, %.5f], approach %.3g m per "
+				"sweep",
+				output.fraction, output.iterations, above, below, approachSpeed);
+}
+
+Test(toi, conservative_turning_long_box_passes_triangle)
+{
+	tbTOIInput input = turningLongBoxAndPassingTriangle();
+	tbTOIOutput output = tbTimeOfImpact(&input);
+	cr_assert_eq(output.state, tb_toiStateSeparated, "state %d at %.7f after %d iterations", (int)output.state,
+				 output.fraction, output.iterations);
+	cr_assert_lt(output.iterations, TB_TOI_MAX_ITERATIONS);
+	cr_assert_float_eq(output.fraction, input.maxFraction, 0.0f);
+	cr_assert(isFiniteOutput(output));
+
+	// Reference: 100,000 samples. Between two samples 1e-5 of the sweep apart the separation can
+	// fall below the smaller of them by at most lipschitz × spacing / 2 (no point of either body
+	// moves faster than |vB − vA| + |ωA|·ρA + |ωB|·ρB relative to the other), so the sampled
+	// minimum minus that margin is a lower bound of the true closest approach.
+	DenseReference reference = denseReference(&input, 100000);
+	float margin = 0.5f * reference.lipschitz * reference.spacing;
+	cr_assert_eq(reference.firstBelow, -1);
+	cr_assert_gt(reference.minSeparation - margin, input.targetSeparation,
+				 "closest sampled separation %g m, margin %g m, target %g m", reference.minSeparation, margin,
+				 input.targetSeparation);
+	cr_log_info("case 6129: separated after %d iterations; closest approach %.7f m (sampling margin %.2g m), target "
+				"%.4f m",
+				output.iterations, reference.minSeparation, margin, input.targetSeparation);
+}
+
+// A long thin box (0.1–0.4 × 4–8 m) turning 0.5–1 rad about its centre while a small circle or
+// square comes at its long face from 1–3 m away at 2–10 m per step, aimed anywhere along the face.
+// Measured on the first 2,000 sweeps of this generator: with the fixed axis alone 38 hit the
+// iteration cap (8 of the 300 below) and the mean was 10.1 iterations; with the turning axis none
+// does, mean 4.5, max 15.
+static tbTOIInput turningLongFaceSweep(uint32_t* seed)
+{
+	float halfWidth = lcgRange(seed, 0.05f, 0.2f);
+	float halfLength = lcgRange(seed, 2.0f, 4.0f);
+	tbTOIInput input;
+	input.proxyA = boxProxy(halfWidth, halfLength, 0.0f);
+	if (lcgNext(seed) & 1u)
+	{
+		tbVec2 center = {0.0f, 0.0f};
+		input.proxyB = tbMakeProxy(&center, 1, lcgRange(seed, 0.02f, 0.2f));
+	}
+	else
+	{
+		float half = lcgRange(seed, 0.05f, 0.3f);
+		input.proxyB = boxProxy(half, half, 0.0f);
+	}
+	float angleA = lcgRange(seed, -3.1f, 3.1f);
+	float turnA = lcgRange(seed, 0.5f, 1.0f) * ((lcgNext(seed) & 1u) ? 1.0f : -1.0f);
+	tbRot qA = tbMakeRot(angleA);
+	tbVec2 start = tbRotateVector(qA, tbMakeVec2(halfWidth + lcgRange(seed, 1.0f, 3.0f),
+												 lcgRange(seed, -halfLength, halfLength)));
+	tbVec2 aim = tbRotateVector(qA, tbMakeVec2(0.0f, lcgRange(seed, -halfLength, halfLength)));
+	tbVec2 travel = tbMulSV(lcgRange(seed, 2.0f, 10.0f), tbNormalize(tbSub(aim, start)));
+	float angleB = lcgRange(seed, -3.0f, 3.0f);
+	input.sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, tb_vec2_zero, angleA, angleA + turnA);
+	input.sweepB = makeSweep(tb_vec2_zero, start, tbAdd(start, travel), angleB, angleB + lcgRange(seed, -1.0f, 1.0f));
+	input.maxFraction = 1.0f;
+	input.targetSeparation = TB_TOI_TARGET_SEPARATION;
+	return input;
+}
+
+Test(toi, conservative_turning_long_faces_converge)
+{
+	uint32_t seed = 31u;
+	int hits = 0, misses = 0, maxIterations = 0;
+	double iterationSum = 0.0;
+	const int count = 300;
+	for (int k = 0; k < count; ++k)
+	{
+		tbTOIInput input = turningLongFaceSweep(&seed);
+		tbTOIOutput output = tbTimeOfImpact(&input);
+		cr_assert(output.state == tb_toiStateHit || output.state == tb_toiStateSeparated,
+				  "sweep %d: state %d after %d iterations", k, (int)output.state, output.iterations);
+		cr_assert(isFiniteOutput(output), "sweep %d", k);
+		// Safe in both outcomes: no sampled time before the reported one (the whole sweep when
+		// separated) comes closer than the target, beyond 1e-5 m of GJK float noise.
+		for (int i = 0; i <= 200; ++i)
+		{
+			float t = output.fraction * (float)i / 200.0f;
+			cr_assert_geq(sweptSeparation(&input, t), input.targetSeparation - 1.0e-5f, "sweep %d passed at %g", k, t);
+		}
+		if (output.state == tb_toiStateHit)
+		{
+			float atImpact = sweptSeparation(&input, output.fraction);
+			cr_assert_leq(atImpact, input.targetSeparation + CA_TOLERANCE, "sweep %d: separation %g at the hit", k,
+						  atImpact);
+			hits += 1;
+		}
+		else
+		{
+			misses += 1;
+		}
+		maxIterations = output.iterations > maxIterations ? output.iterations : maxIterations;
+		iterationSum += output.iterations;
+	}
+	cr_log_info("turning long faces: %d hits, %d misses, iterations mean %.2f, max %d (cap %d)", hits, misses,
+				iterationSum / count, maxIterations, TB_TOI_MAX_ITERATIONS);
+	cr_assert_gt(hits, count / 2);
+}
