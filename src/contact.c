@@ -196,7 +196,14 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 
 bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* context)
 {
-	return tbShouldCreateContact(context, shapeIdA, shapeIdB);
+	// Most pairs a moving pile finds have a contact already: one hash probe rejects them before
+	// the shape and body loads of the full test.
+	const tbWorld* world = context;
+	if (tbHashSet_Contains(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB)))
+	{
+		return false;
+	}
+	return tbShouldCreateContact(world, shapeIdA, shapeIdB);
 }
 
 void tbUpdatePairsStage(tbWorld* world)

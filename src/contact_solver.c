@@ -262,8 +262,8 @@ static inline tbVec2 tbRelativeVelocity(const tbSolverBody* sA, const tbSolverBo
 
 // Body state is loaded into locals once per constraint and stored once at the end: the two
 // bodies never alias, and keeping them in registers avoids a store-to-load round trip per impulse.
-static void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, tbSolverBody* sB,
-							  const tbStepContext* context, tbBiasPolicy policy)
+static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, tbSolverBody* sB,
+									 const tbStepContext* context, tbBiasPolicy policy)
 {
 	tbVec2 vA = sA->linearVelocity;
 	float wA = sA->angularVelocity;
@@ -293,23 +293,26 @@ static void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, tbSolver
 		tbVec2 prB = tbRotateVector(qB, rB);
 		float s = cp->baseSeparation + tbDot(tbAdd(dp, tbSub(prB, prA)), normal);
 
-		float bias = 0.0f;
-		float massScale = 1.0f;
-		float impulseScale = 0.0f;
-		if (s > 0.0f)
+		// Speculative (s > 0): close the gap, no more. Overlap: the policy's push-out. Written as
+		// selects, not branches: whether a point is speculative is data, and a mispredicted branch
+		// per point costs more than computing both (the policy is a constant in each caller's loop).
+		bool speculative = s > 0.0f;
+		float overlapBias = 0.0f;
+		float overlapMassScale = 1.0f;
+		float overlapImpulseScale = 0.0f;
+		if (policy == tb_biasSoft)
 		{
-			bias = s * inv_h; // speculative: close the gap, no more
-		}
-		else if (policy == tb_biasSoft)
-		{
-			bias = tbMaxFloat(c->softness.biasRate * s, -context->maxContactPushSpeed);
-			massScale = c->softness.massScale;
-			impulseScale = c->softness.impulseScale;
+			overlapBias = tbMaxFloat(c->softness.biasRate * s, -context->maxContactPushSpeed);
+			overlapMassScale = c->softness.massScale;
+			overlapImpulseScale = c->softness.impulseScale;
 		}
 		else if (policy == tb_biasBaumgarte)
 		{
-			bias = TB_BAUMGARTE * inv_h * tbMinFloat(0.0f, s + TB_LINEAR_SLOP);
+			overlapBias = TB_BAUMGARTE * inv_h * tbMinFloat(0.0f, s + TB_LINEAR_SLOP);
 		}
+		float bias = speculative ? s * inv_h : overlapBias;
+		float massScale = speculative ? 1.0f : overlapMassScale;
+		float impulseScale = speculative ? 0.0f : overlapImpulseScale;
 
 		tbVec2 dv = tbSub(tbAdd(vB, tbCrossSV(wB, rB)), tbAdd(vA, tbCrossSV(wA, rA)));
 		float vn = tbDot(dv, normal);
@@ -353,15 +356,36 @@ static void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, tbSolver
 	sB->angularVelocity = wB;
 }
 
+// One loop per policy, each with the policy a compile-time constant, so the per-point code has no
+// policy tests left in it.
+#define TB_SOLVE_LOOP(POLICY)                                                                                          \
+	for (int i = 0; i < context->constraintCount; ++i)                                                                 \
+	{                                                                                                                  \
+		tbContactConstraint* c = context->constraints + i;                                                             \
+		tbSolveConstraint(c, bodies + c->indexA, bodies + c->indexB, context, POLICY);                                 \
+	}
+
 void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy)
 {
 	tbSolverBody* bodies = context->bodies;
-	for (int i = 0; i < context->constraintCount; ++i)
+	switch (policy)
 	{
-		tbContactConstraint* c = context->constraints + i;
-		tbSolveConstraint(c, bodies + c->indexA, bodies + c->indexB, context, policy);
+		case tb_biasSoft:
+			TB_SOLVE_LOOP(tb_biasSoft)
+			break;
+		case tb_biasRelax:
+			TB_SOLVE_LOOP(tb_biasRelax)
+			break;
+		case tb_biasBaumgarte:
+			TB_SOLVE_LOOP(tb_biasBaumgarte)
+			break;
+		default:
+			TB_SOLVE_LOOP(tb_biasSpeculative)
+			break;
 	}
 }
+
+#undef TB_SOLVE_LOOP
 
 void tbApplyRestitution(tbStepContext* context)
 {
