@@ -25,11 +25,15 @@
 // overlap. The face of largest separation over both polygons is the reference face; the edge
 // of the other polygon most anti-parallel to its normal is the incident edge; clipping the
 // incident edge against the side planes of the reference face (Sutherland–Hodgman; Catto,
-// "Contact manifolds", GDC 2007) gives up to two points. Capsules and segments are 2-vertex
-// polygons (with radius and without), so one SAT serves every pair with a straight side.
+// "Contact manifolds", GDC 2007) gives up to two points. A pair that is no face contact (a
+// corner facing a corner across a gap, or an incident edge wholly beside the reference face)
+// gets one point between the closest features of the cores, found by GJK (distance.c).
+// Capsules and segments are 2-vertex polygons (with radius and without), so one SAT serves
+// every pair with a straight side.
 // The alternative rejected here is GJK/EPA for all pairs (manifold_gjk.c offers it for
 // polygons): it gives one normal but needs the same clipping afterwards and costs more.
 #include "core.h"
+#include "distance_internal.h"
 
 #include "tumble/collision.h"
 
@@ -49,9 +53,12 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 // step to step and the feature ids, hence warm starting, survive.
 #define TB_REFERENCE_TOLERANCE (0.1f * TB_LINEAR_SLOP)
 
-// Core gap (m) above which polygons are "separated": 0.1 × linear slop = 0.0005 m. Below it the
-// clipped face contact is exact enough; above it a corner may face a corner, and the face
-// normal would misstate the gap of rounded polygons, so the closest points decide.
+// Core gap (m) above which polygons are "separated": 0.1 × linear slop = 0.0005 m, Box2D v3's
+// threshold. Below it the clipped face contact is exact enough; above it a corner may face a
+// corner, and the face normal would misstate the gap of rounded polygons, so the closest points
+// decide. It is also the shortest vector qB − qA a normal is ever taken from: each coordinate
+// carries its float rounding (6e-8 m at 1 m, 5e-7 m at 8 m from A's origin), which turns a
+// vector of length d by up to about that over d, 1e-3 rad at d = 5e-4 m and worse below.
 #define TB_GAP_TOLERANCE (0.1f * TB_LINEAR_SLOP)
 
 // An incident corner up to this far (m) outside a side plane of the reference face is kept
@@ -68,6 +75,15 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 
 // A capsule or segment shorter than this (m), 1e-3 × linear slop, has no axis: it is a circle.
 #define TB_DEGENERATE_LENGTH (0.001f * TB_LINEAR_SLOP)
+
+// Two points of a clipped manifold closer than this (m), 1e-3 × linear slop = 5e-6 m, are one
+// point, as a segment that short is a point. The clip makes such pairs: an incident corner exactly on a
+// side plane with its edge running outward comes out twice, as itself and as the crossing at
+// t = 0, i.e. the same spot; so do an incident edge or a reference face of (nearly) zero length.
+// Coincident points make the 2×2 block of the normal solver singular. Pairs further apart, yet
+// close, are left as they are: solver_ngs.c's condition test (K11² < 1000·det K, as Box2D 2.4)
+// solves the first point alone when the block is ill-conditioned.
+#define TB_MERGE_DISTANCE TB_DEGENERATE_LENGTH
 
 // Feature byte flags: the reference face's byte carries TB_FEATURE_REFERENCE so that "edge i of
 // A against vertex j of B" and "edge j of B against vertex i of A" differ; a clipped point is
@@ -450,22 +466,6 @@ static uint16_t tbReferenceId(uint8_t featureRef, uint8_t featureInc)
 	return TB_MAKE_FEATURE_ID(featureRef | TB_FEATURE_REFERENCE, featureInc);
 }
 
-// One point between the closest points of the reference edge v11–v12 and the incident edge
-// v21–v22 (Ericson §5.1.9): the corner-to-corner case of separated polygons, and the fallback
-// when clipping leaves nothing. Normal from reference to incident, else the face normal n.
-static tbManifold tbEdgeDistanceManifold(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
-										 tbVec2 n, float keep)
-{
-	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
-	int incNext = incEdge + 1 < inc->count ? incEdge + 1 : 0;
-	tbSegmentDistanceResult r = tbSegmentDistance(ref->vertices[refEdge], ref->vertices[refNext],
-												  inc->vertices[incEdge], inc->vertices[incNext]);
-	int refVertex = r.fraction1 < 0.5f ? refEdge : refNext;
-	int incVertex = r.fraction2 < 0.5f ? incEdge : incNext;
-	uint16_t id = TB_MAKE_FEATURE_ID(TB_FEATURE_VERTEX | refVertex, TB_FEATURE_VERTEX | incVertex);
-	return tbPointManifold(r.closest1, ref->radius, r.closest2, inc->radius, n, id, keep);
-}
-
 // True when the closest points of the two edges are corners of both (fractions 0 or 1) and
 // further apart than the face separation says. Parallel edges also report corner fractions
 // (the closest pair is not unique) but at exactly the face separation: those are face contacts.
@@ -482,12 +482,40 @@ static bool tbIsVertexVertex(const tbPolygon* ref, const tbPolygon* inc, int ref
 	return endpoint1 && endpoint2 && r.distanceSquared > limit * limit;
 }
 
+// Two clipped points closer than TB_MERGE_DISTANCE are one point; returns the number left (1 or
+// 2), the survivor in points[0]. Ids are in (reference, incident) order, so the low byte holds
+// the incident feature. Which point survives is fixed by features, not by depth (depths that
+// close swap with rounding from step to step, and the id with them): an incident vertex
+// (unclipped, its id independent of the side planes) rather than a crossing, and points[0] when
+// both are of the same kind. Their separations differ by at most twice TB_MERGE_DISTANCE.
+static int tbMergeCoincidentPoints(tbManifoldPoint points[2])
+{
+	if (tbDistanceSquared(points[0].point, points[1].point) >= TB_MERGE_DISTANCE * TB_MERGE_DISTANCE)
+	{
+		return 2;
+	}
+	bool crossing0 = (points[0].id & TB_FEATURE_CLIPPED) != 0;
+	bool crossing1 = (points[1].id & TB_FEATURE_CLIPPED) != 0;
+	if (crossing0 && crossing1 == false)
+	{
+		points[0] = points[1];
+	}
+	return 1;
+}
+
 // Clips the incident edge against the two side planes of the reference face v11–v12 (tangent t):
 //     −t·x ≤ −t·v11   and   t·x ≤ t·v12,
 // then measures each survivor p against the face: h = n·(p − v11), core point on the face
-// p − h·n. Points with separation ≥ keep are dropped.
-static tbManifold tbClipIncidentEdge(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
-									 float keep)
+// p − h·n, merges manifold points closer than TB_MERGE_DISTANCE and drops points with
+// separation ≥ keep. Returns false, leaving m alone, when fewer than two points survive the planes: the
+// incident edge lies wholly beside the face span (beyond a side plane by more than
+// TB_CLIP_SLACK, or only one end inside the slack band) and this is no face contact. Not only a
+// tolerance or a degenerate edge leads here: the reference face may be A's kept within
+// TB_REFERENCE_TOLERANCE of B's larger separation, with a corner of A against a face of B; and
+// the corner-to-corner test (tbIsVertexVertex) is skipped when the face separation is below
+// TB_GAP_TOLERANCE and declines when the corner gap is within TB_GAP_TOLERANCE of it.
+static bool tbClipIncidentEdge(tbManifold* m, const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
+							   float keep)
 {
 	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
 	int incNext = incEdge + 1 < inc->count ? incEdge + 1 : 0;
@@ -508,40 +536,45 @@ static tbManifold tbClipIncidentEdge(const tbPolygon* ref, const tbPolygon* inc,
 	}
 	if (count < 2)
 	{
-		// The incident edge misses the face (only with the tolerance or a degenerate edge).
-		return tbEdgeDistanceManifold(ref, inc, refEdge, incEdge, n, keep);
+		return false;
 	}
 
-	tbManifold m = {0};
-	m.normal = n;
+	tbManifoldPoint points[2];
 	for (int i = 0; i < 2; ++i)
 	{
 		tbVec2 p = clip2[i].v;
 		tbVec2 q = tbMulSub(p, tbDot(n, tbSub(p, v11)), n);
 		uint16_t id = tbReferenceId(clip2[i].featureRef, clip2[i].featureInc);
-		tbManifoldPoint mp = tbMakeManifoldPoint(q, p, n, ref->radius, inc->radius, id);
-		if (mp.separation < keep)
+		points[i] = tbMakeManifoldPoint(q, p, n, ref->radius, inc->radius, id);
+	}
+	count = tbMergeCoincidentPoints(points);
+
+	*m = tb_emptyManifold;
+	m->normal = n;
+	for (int i = 0; i < count; ++i)
+	{
+		if (points[i].separation < keep)
 		{
-			m.points[m.pointCount++] = mp;
+			m->points[m->pointCount++] = points[i];
 		}
 	}
-	return m;
+	return true;
 }
 
-// Manifold with `ref`'s face refEdge as reference (normal from ref to inc). coreSeparation is
-// the SAT separation of the cores along that face.
-static tbManifold tbReferenceFaceManifold(const tbPolygon* ref, const tbPolygon* inc, int refEdge,
-										  float coreSeparation, float keep)
+// Face contact with `ref`'s face refEdge as reference (normal from ref to inc) into m.
+// coreSeparation is the SAT separation of the cores along that face. Returns false when the pair
+// is no face contact: a corner faces a corner across a gap (the true gap is the corner distance,
+// larger than the face separation, and rounded polygons need it to place their round corners
+// right), or the incident edge misses the face span (tbClipIncidentEdge).
+static bool tbReferenceFaceManifold(tbManifold* m, const tbPolygon* ref, const tbPolygon* inc, int refEdge,
+									float coreSeparation, float keep)
 {
-	tbVec2 n = ref->normals[refEdge];
-	int incEdge = tbFindIncidentEdge(inc, n);
+	int incEdge = tbFindIncidentEdge(inc, ref->normals[refEdge]);
 	if (coreSeparation > TB_GAP_TOLERANCE && tbIsVertexVertex(ref, inc, refEdge, incEdge, coreSeparation))
 	{
-		// Corner against corner across a gap: the true gap is the corner distance, larger than
-		// the face separation; rounded polygons need it to place the round corners right.
-		return tbEdgeDistanceManifold(ref, inc, refEdge, incEdge, n, keep);
+		return false;
 	}
-	return tbClipIncidentEdge(ref, inc, refEdge, incEdge, keep);
+	return tbClipIncidentEdge(m, ref, inc, refEdge, incEdge, keep);
 }
 
 // Swaps the bytes of a feature id: (featureOnA, featureOnB) → (featureOnB, featureOnA).
@@ -550,8 +583,93 @@ static uint16_t tbSwapFeatureId(uint16_t id)
 	return (uint16_t)((id >> 8) | (id << 8));
 }
 
-// SAT of two polygons, both in A's frame. Prefers A's face unless B's separation is larger by
-// TB_REFERENCE_TOLERANCE; with B as reference the normal and the feature bytes are flipped.
+// A manifold computed with B as the first polygon, turned to A → B: normal negated, feature
+// bytes swapped.
+static tbManifold tbFlipManifold(tbManifold m)
+{
+	m.normal = tbNeg(m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].id = tbSwapFeatureId(m.points[i].id);
+	}
+	return m;
+}
+
+// One point on ref's face refEdge (normal n from ref to inc) at inc's deepest vertex p along −n:
+// h = n·(p − v11), core point on the face p − h·n, id as an unclipped vertex of the clip.
+static tbManifold tbDeepestVertexManifold(const tbPolygon* ref, const tbPolygon* inc, int refEdge, float keep)
+{
+	tbVec2 n = ref->normals[refEdge];
+	tbVec2 v11 = ref->vertices[refEdge];
+	int deepest = 0;
+	float h = FLT_MAX;
+	for (int j = 0; j < inc->count; ++j)
+	{
+		float hj = tbDot(n, tbSub(inc->vertices[j], v11));
+		if (hj < h)
+		{
+			h = hj;
+			deepest = j;
+		}
+	}
+	tbVec2 p = inc->vertices[deepest];
+	uint16_t id = tbReferenceId((uint8_t)refEdge, (uint8_t)deepest);
+	return tbFacePointManifold(tbMulSub(p, h, n), ref->radius, p, inc->radius, n, id, keep);
+}
+
+// One point between the closest features of the cores, for a pair that is no face contact: a
+// corner faces a corner across a gap, or the incident edge misses the reference face span.
+// The reference edge and the incident edge need not hold the closest features (the reference
+// face may be A's kept by TB_REFERENCE_TOLERANCE while a corner of A faces a face of B, or the
+// nearest corner of the incident polygon may be on its next edge), so they come from GJK on the
+// cores (tbLocalShapeDistance, both polygons in A's frame). With d the core distance and s the
+// largest SAT separation over the faces of both polygons, n that face's normal (A → B):
+// - overlapping cores (GJK ends on a triangle): there are no closest points; n is the least
+//   penetration and the other polygon's deepest vertex along it gives the point, at depth s, as
+//   an unclipped vertex of the clip would;
+// - d ≥ TB_GAP_TOLERANCE: GJK's normal, the edge's perpendicular for a vertex against an edge
+//   (exact: it comes from the edge, not from qB − qA) and (qB − qA)/d for two vertices;
+// - d < TB_GAP_TOLERANCE: the normal is n. For two vertices qB − qA is too short to give a
+//   direction (see TB_GAP_TOLERANCE: 1.4e-3 rad of rounding for boxes of 3 m to 4 m at
+//   d = 1.1e-4 m); Box2D v3 also keeps the face normal below 0.1 × linear slop. For a vertex
+//   against an edge that edge is the face of largest separation (its separation is d, and none
+//   exceeds d), so n is its normal, exact, and with its sign known (GJK's edge perpendicular
+//   takes its sign from qB − qA). The separation (qB − qA)·n lies between s and d: the face's
+//   own polygon lies behind the face line and the other at least s in front of it, so any two
+//   of their points are at least s apart along n, and |qB − qA| = d.
+// Ids: TB_FEATURE_VERTEX on both bytes, each naming its polygon's vertex of largest barycentric
+// weight in GJK's final simplex (the nearest vertex), the same on both sides of the
+// TB_GAP_TOLERANCE boundary so that warm starting carries over.
+static tbManifold tbClosestFeaturesManifold(const tbPolygon* polygonA, const tbPolygon* polygonB, int edgeA,
+											float separationA, int edgeB, float separationB, float keep)
+{
+	bool faceOfB = separationB > separationA;
+	tbShapeProxy proxyA = tbMakeProxy(polygonA->vertices, polygonA->count, 0.0f);
+	tbShapeProxy proxyB = tbMakeProxy(polygonB->vertices, polygonB->count, 0.0f);
+	tbSimplex simplex;
+	tbDistanceOutput closest = tbLocalShapeDistance(&proxyA, &proxyB, NULL, &simplex);
+
+	if (closest.simplexCount == 3)
+	{
+		return faceOfB ? tbFlipManifold(tbDeepestVertexManifold(polygonB, polygonA, edgeB, keep))
+					   : tbDeepestVertexManifold(polygonA, polygonB, edgeA, keep);
+	}
+
+	const tbSimplexVertex* nearest = &simplex.v1;
+	if (simplex.count == 2 && simplex.v2.a > simplex.v1.a)
+	{
+		nearest = &simplex.v2;
+	}
+	uint16_t id = TB_MAKE_FEATURE_ID(TB_FEATURE_VERTEX | nearest->indexA, TB_FEATURE_VERTEX | nearest->indexB);
+	tbVec2 n = faceOfB ? tbNeg(polygonB->normals[edgeB]) : polygonA->normals[edgeA];
+	tbVec2 normal = closest.distance >= TB_GAP_TOLERANCE ? closest.normal : n;
+	return tbFacePointManifold(closest.pointA, polygonA->radius, closest.pointB, polygonB->radius, normal, id, keep);
+}
+
+// SAT of two polygons, both in A's frame. The reference face is A's unless B's separation is
+// larger by TB_REFERENCE_TOLERANCE; with B as reference the normal and the feature bytes are
+// flipped. A pair that is no face contact on the reference face gets the closest features of
+// the cores instead (tbClosestFeaturesManifold).
 static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB, float keep)
 {
 	int edgeA, edgeB;
@@ -562,17 +680,20 @@ static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPoly
 	{
 		return tb_emptyManifold;
 	}
+
+	tbManifold m;
 	if (separationB <= separationA + TB_REFERENCE_TOLERANCE)
 	{
-		return tbReferenceFaceManifold(polygonA, polygonB, edgeA, separationA, keep);
+		if (tbReferenceFaceManifold(&m, polygonA, polygonB, edgeA, separationA, keep))
+		{
+			return m;
+		}
 	}
-	tbManifold m = tbReferenceFaceManifold(polygonB, polygonA, edgeB, separationB, keep);
-	m.normal = tbNeg(m.normal);
-	for (int i = 0; i < m.pointCount; ++i)
+	else if (tbReferenceFaceManifold(&m, polygonB, polygonA, edgeB, separationB, keep))
 	{
-		m.points[i].id = tbSwapFeatureId(m.points[i].id);
+		return tbFlipManifold(m);
 	}
-	return m;
+	return tbClosestFeaturesManifold(polygonA, polygonB, edgeA, separationA, edgeB, separationB, keep);
 }
 
 static tbManifold tbCollidePolygonsMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB, tbTransform xfB, float keep)

@@ -8,6 +8,7 @@
 
 #include "tumble/collision.h"
 
+#include <float.h>
 #include <math.h>
 
 #define TB_EPS 1e-5f
@@ -52,7 +53,24 @@ static void tbExpectVec(tbVec2 actual, float x, float y, float tolerance)
 	cr_expect_float_eq(actual.y, y, tolerance, "y: %.9g vs %.9g", (double)actual.y, (double)y);
 }
 
-// Finite numbers everywhere, a unit normal when there are points, at most two points.
+// Two manifold points closer than 1e-3 × linear slop = 5e-6 m in A's frame are one point
+// (manifold.c's TB_MERGE_DISTANCE): coincident points make the normal solver's 2×2 block
+// singular. World points carry the rounding of the move out of A's frame, up to about an ulp
+// per coordinate (FLT_EPSILON × |coordinate|, 4.8e-7 m at 4 m), so allow 4 of those.
+static void tbExpectNoCoincidentPoints(const tbManifold* m)
+{
+	if (m->pointCount == 2)
+	{
+		tbVec2 p0 = m->points[0].point, p1 = m->points[1].point;
+		float scale = fmaxf(fmaxf(fabsf(p0.x), fabsf(p0.y)), fmaxf(fabsf(p1.x), fabsf(p1.y)));
+		float gap = tbDistance(p0, p1);
+		cr_expect_geq(gap, 0.001f * TB_LINEAR_SLOP - 4.0f * FLT_EPSILON * scale,
+					  "points %.3g m apart (ids 0x%04x, 0x%04x)", (double)gap, m->points[0].id, m->points[1].id);
+	}
+}
+
+// Finite numbers everywhere, a unit normal when there are points, at most two points, never
+// two coincident points.
 static void tbExpectSane(const tbManifold* m)
 {
 	cr_expect(m->pointCount >= 0 && m->pointCount <= 2);
@@ -68,6 +86,7 @@ static void tbExpectSane(const tbManifold* m)
 		cr_expect(isfinite(m->points[i].separation));
 		cr_expect_lt(m->points[i].separation, TB_SPECULATIVE_DISTANCE);
 	}
+	tbExpectNoCoincidentPoints(m);
 }
 
 // The point of m whose x is nearest to x (two-point manifolds come in clip order).
@@ -351,6 +370,235 @@ Test(manifold, rounded_boxes_corner_to_corner_gap)
 	tbExpectVec(m.normal, sqrtf(0.5f), sqrtf(0.5f), TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, 0.1f * sqrtf(2.0f) - 0.2f, TB_EPS);
 	tbExpectVec(m.points[0].point, 0.55f, 0.55f, TB_EPS);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rounded boxes where the incident edge misses the reference face (reviewer's cases, Box2D 2.4.1
+// comparison over 1,000,000 random pairs). The exact answer is computed here in double precision
+// from the same float inputs: world vertices from the float local vertices and the float
+// transform, the closest features as the least point–segment distance over every vertex of one
+// polygon against every edge of the other.
+
+// Double-precision view of a manifold input: world vertices and face normals of both polygons.
+typedef struct tbExactPair
+{
+	double a[TB_MAX_POLYGON_VERTICES][2], b[TB_MAX_POLYGON_VERTICES][2];
+	double normalA[TB_MAX_POLYGON_VERTICES][2], normalB[TB_MAX_POLYGON_VERTICES][2];
+	int countA, countB;
+} tbExactPair;
+
+// Closest core features: distance, unit normal from A to B, the vertex and the edge, and the
+// fraction t of the closest point along the edge (interior when 0 < t < 1).
+typedef struct tbExactClosest
+{
+	double distance;
+	double normal[2];
+	bool vertexOfA; // true: a vertex of A against an edge of B; false: a vertex of B against an edge of A
+	int vertex, edge;
+	double t;
+} tbExactClosest;
+
+static void tbExactWorld(double out[][2], double normals[][2], const tbPolygon* polygon, tbTransform xf)
+{
+	double c = xf.q.c, s = xf.q.s;
+	for (int i = 0; i < polygon->count; ++i)
+	{
+		double x = polygon->vertices[i].x, y = polygon->vertices[i].y;
+		out[i][0] = xf.p.x + c * x - s * y;
+		out[i][1] = xf.p.y + s * x + c * y;
+		double nx = polygon->normals[i].x, ny = polygon->normals[i].y;
+		normals[i][0] = c * nx - s * ny;
+		normals[i][1] = s * nx + c * ny;
+	}
+}
+
+static tbExactPair tbMakeExactPair(const tbPolygon* a, tbTransform xfA, const tbPolygon* b, tbTransform xfB)
+{
+	tbExactPair pair;
+	tbExactWorld(pair.a, pair.normalA, a, xfA);
+	tbExactWorld(pair.b, pair.normalB, b, xfB);
+	pair.countA = a->count;
+	pair.countB = b->count;
+	return pair;
+}
+
+// SAT separation of the other polygon from face i of A (ofA) or of B: min over j of nᵢ·(xⱼ − vᵢ).
+static double tbExactFaceSeparation(const tbExactPair* pair, bool ofA, int i)
+{
+	const double* v = ofA ? pair->a[i] : pair->b[i];
+	const double* n = ofA ? pair->normalA[i] : pair->normalB[i];
+	int otherCount = ofA ? pair->countB : pair->countA;
+	double separation = HUGE_VAL;
+	for (int j = 0; j < otherCount; ++j)
+	{
+		const double* x = ofA ? pair->b[j] : pair->a[j];
+		separation = fmin(separation, n[0] * (x[0] - v[0]) + n[1] * (x[1] - v[1]));
+	}
+	return separation;
+}
+
+static tbExactClosest tbExactClosestFeatures(const tbExactPair* pair)
+{
+	tbExactClosest best = {.distance = HUGE_VAL};
+	for (int pass = 0; pass < 2; ++pass)
+	{
+		const double(*points)[2] = pass == 0 ? pair->a : pair->b;
+		const double(*edges)[2] = pass == 0 ? pair->b : pair->a;
+		int pointCount = pass == 0 ? pair->countA : pair->countB;
+		int edgeCount = pass == 0 ? pair->countB : pair->countA;
+		for (int i = 0; i < pointCount; ++i)
+		{
+			for (int j = 0; j < edgeCount; ++j)
+			{
+				const double* e1 = edges[j];
+				const double* e2 = edges[j + 1 < edgeCount ? j + 1 : 0];
+				double ex = e2[0] - e1[0], ey = e2[1] - e1[1];
+				double t = ((points[i][0] - e1[0]) * ex + (points[i][1] - e1[1]) * ey) / (ex * ex + ey * ey);
+				double clamped = fmin(fmax(t, 0.0), 1.0);
+				// From A's feature to B's: edge point → vertex of B, or vertex of A → edge point.
+				double dx = points[i][0] - (e1[0] + clamped * ex);
+				double dy = points[i][1] - (e1[1] + clamped * ey);
+				if (pass == 0)
+				{
+					dx = -dx;
+					dy = -dy;
+				}
+				double distance = sqrt(dx * dx + dy * dy);
+				if (distance < best.distance)
+				{
+					best = (tbExactClosest){distance, {dx / distance, dy / distance}, pass == 0, i, j, t};
+				}
+			}
+		}
+	}
+	return best;
+}
+
+// Angle (rad) between the float normal n and the double unit vector u.
+static double tbAngleTo(tbVec2 n, const double u[2])
+{
+	double cross = (double)n.x * u[1] - (double)n.y * u[0];
+	double dot = (double)n.x * u[0] + (double)n.y * u[1];
+	return fabs(atan2(cross, dot));
+}
+
+// The reviewer's transforms: p = position, q = (cos angle, sin angle) in float.
+static tbTransform tbReviewTransform(float x, float y, float angle)
+{
+	tbTransform xf = {{x, y}, {cosf(angle), sinf(angle)}};
+	return xf;
+}
+
+Test(manifold, missed_face_uses_true_closest_features)
+{
+	// A's face 3 (core separation 4.8e-5 m) is kept as the reference over B's face 3 (3.7e-4 m,
+	// within TB_REFERENCE_TOLERANCE = 5e-4 m), B's incident edge lies wholly beside A's face, and
+	// the closest features are A's vertex 0 against B's edge 3, not A's edge 3 against B's
+	// incident edge (which gave (−0.821, 0.570), 0.63 rad off, 8.8e-5 m too much separation).
+	tbPolygon a = tbMakeRoundedBox(0.0250000004f, 0.0317549706f, 0.01f);
+	tbPolygon b = tbMakeRoundedBox(0.0250000004f, 0.0314549468f, 0.01f);
+	tbTransform xfA = tbReviewTransform(3.52464867f, -0.438999653f, -2.0730238f);
+	tbTransform xfB = tbReviewTransform(3.52990651f, -0.367553622f, 1.90732837f);
+	tbExactPair pair = tbMakeExactPair(&a, xfA, &b, xfB);
+	tbExactClosest exact = tbExactClosestFeatures(&pair);
+	// The input is what the case says: A's vertex 0 inside B's edge 3, core gap 3.73e-4 m.
+	cr_assert(exact.vertexOfA && exact.vertex == 0 && exact.edge == 3 && exact.t > 0.0 && exact.t < 1.0);
+	cr_assert(fabs(exact.distance - 3.73e-4) < 1e-6, "core gap %.9g", exact.distance);
+
+	tbManifold m = tbCollidePolygons(&a, xfA, &b, xfB);
+	tbExpectSane(&m);
+	cr_assert_eq(m.pointCount, 1, "a corner against a face: one point");
+	tbExpectNoCoincidentPoints(&m);
+	// Normal (−0.330, 0.944): B's face normal, computed from B's stored normal by two float
+	// rotations (into A's frame and back); allow 1e-6 rad, about 8 float roundings.
+	double angle = tbAngleTo(m.normal, exact.normal);
+	cr_expect(angle < 1e-6, "normal (%.9g, %.9g) is %.3g rad off the exact (%.9g, %.9g)", (double)m.normal.x,
+			  (double)m.normal.y, angle, exact.normal[0], exact.normal[1]);
+	// Separation: the core gap less both radii. The pair's relative coordinates are below 0.1 m
+	// (float rounding ~1e-8 m); allow 1e-6 m.
+	cr_expect_float_eq(m.points[0].separation, (float)(exact.distance - 0.02), 1e-6f);
+	// The point lies midway between the surfaces: A's vertex pushed out by 0.01 along n and B's
+	// face point pushed back by 0.01, i.e. A's vertex + ½(gap)·n. World coordinates near 3.5 m
+	// (ulp 2.4e-7 m): allow 1e-6 m.
+	double half = 0.5 * exact.distance;
+	tbExpectVec(m.points[0].point, (float)(pair.a[0][0] + half * exact.normal[0]),
+				(float)(pair.a[0][1] + half * exact.normal[1]), 1e-6f);
+}
+
+Test(manifold, missed_face_short_vector_keeps_face_normal)
+{
+	// Corner against corner 1.1e-4 m apart, below TB_GAP_TOLERANCE = 0.1 × linear slop: the
+	// direction between the two corners is not resolvable in float (they sit 3.8 m from A's
+	// origin, ulp 4.8e-7 m; the old closest-points normal was 1.4e-3 rad off the exact
+	// direction), so the normal is the SAT face's, here A's face 0 (largest separation), as
+	// Box2D v3 does below 0.1 × linear slop.
+	tbPolygon a = tbMakeRoundedBox(0.386531144f, 3.78882146f, 0.01f);
+	tbPolygon b = tbMakeRoundedBox(1.21687388f, 3.31934595f, 0.01f);
+	tbTransform xfA = tbReviewTransform(4.01262474f, -2.9321785f, -0.751027107f);
+	tbTransform xfB = tbReviewTransform(3.12804008f, -9.20401764f, 0.764200449f);
+	tbExactPair pair = tbMakeExactPair(&a, xfA, &b, xfB);
+	tbExactClosest exact = tbExactClosestFeatures(&pair);
+	cr_assert(exact.distance < 0.1 * TB_LINEAR_SLOP, "core gap %.9g", exact.distance);
+	cr_assert(exact.t <= 0.0 || exact.t >= 1.0, "closest features are two corners (t = %.9g)", exact.t);
+	double separationA = tbExactFaceSeparation(&pair, true, 0);
+	for (int i = 0; i < pair.countA; ++i)
+	{
+		cr_assert(tbExactFaceSeparation(&pair, true, i) <= separationA);
+	}
+	for (int i = 0; i < pair.countB; ++i)
+	{
+		cr_assert(tbExactFaceSeparation(&pair, false, i) < separationA);
+	}
+
+	tbManifold m = tbCollidePolygons(&a, xfA, &b, xfB);
+	tbExpectSane(&m);
+	cr_assert_eq(m.pointCount, 1);
+	tbExpectNoCoincidentPoints(&m);
+	// A's face 0 normal is A's stored normal rotated once in float: allow 1e-6 rad (a few
+	// roundings of FLT_EPSILON = 1.2e-7). Same inputs, same answer: no rounding noise left.
+	double angle = tbAngleTo(m.normal, pair.normalA[0]);
+	cr_expect(angle < 1e-6, "normal (%.9g, %.9g) is %.3g rad off A's face normal (%.9g, %.9g)", (double)m.normal.x,
+			  (double)m.normal.y, angle, pair.normalA[0][0], pair.normalA[0][1]);
+	// The separation along the face normal lies between the face separation (1.2e-5 m below the
+	// gap here) and the gap: conservative, never more than the true gap. Tolerance 1e-6 m: the
+	// closest points lie 3.8 m from A's origin (ulp 4.8e-7 m).
+	double lower = separationA - 0.02, upper = exact.distance - 0.02;
+	cr_expect(m.points[0].separation >= lower - 1e-6 && m.points[0].separation <= upper + 1e-6,
+			  "separation %.9g outside [%.9g, %.9g]", (double)m.points[0].separation, lower, upper);
+}
+
+Test(manifold, clip_merges_coincident_points)
+{
+	// A's vertex 0 lies exactly (in A's frame, float) on the side plane through B's vertex 0 of
+	// B's reference face 3, and A's incident edge runs outward: the clip kept the vertex and also
+	// added the crossing at the same spot (ids 0x0083 and 0x43c0). One point remains, the vertex:
+	// its id, (A's vertex 0, B's reference face 3) = 0x0083, does not depend on the side plane.
+	tbPolygon a = tbMakeRoundedBox(0.236609891f, 0.798745811f, 0.01f);
+	tbPolygon b = tbMakeRoundedBox(0.0525781885f, 0.795801938f, 0.01f);
+	tbTransform xfA = tbReviewTransform(1.37965298f, -0.343814373f, -2.97580791f);
+	tbTransform xfB = tbReviewTransform(0.982432842f, 1.10550523f, 0.743678808f);
+	tbExactPair pair = tbMakeExactPair(&a, xfA, &b, xfB);
+	tbExactClosest exact = tbExactClosestFeatures(&pair);
+	double separationB = tbExactFaceSeparation(&pair, false, 3);
+
+	tbManifold m = tbCollidePolygons(&a, xfA, &b, xfB);
+	tbExpectSane(&m);
+	cr_assert_eq(m.pointCount, 1, "the vertex and the crossing at the same spot are one point");
+	tbExpectNoCoincidentPoints(&m);
+	cr_expect_eq(m.points[0].id, TB_MAKE_FEATURE_ID(0x00, 0x83), "id 0x%04x", m.points[0].id);
+	// Normal: B's face 3 (from A to B, so −n), B's stored normal rotated twice in float: 1e-6 rad.
+	double faceNormal[2] = {-pair.normalB[3][0], -pair.normalB[3][1]};
+	double angle = tbAngleTo(m.normal, faceNormal);
+	cr_expect(angle < 1e-6, "normal is %.3g rad off B's face normal", angle);
+	// The exact closest direction differs from the face normal only by where float put A's vertex
+	// relative to the side plane: within one rounding of its world coordinates (ulp 1.2e-7 m at
+	// 1.4 m) over the gap of 1.75e-3 m, i.e. 7e-5 rad; allow 1e-4 rad.
+	angle = tbAngleTo(m.normal, exact.normal);
+	cr_expect(angle < 1e-4, "normal is %.3g rad off the exact closest direction", angle);
+	// Separation: B's face separation less both radii (relative coordinates ~1.5 m, allow 1e-6 m).
+	cr_expect_float_eq(m.points[0].separation, (float)(separationB - 0.02), 1e-6f);
+	cr_expect(fabs(separationB - exact.distance) < 1e-6, "face separation %.9g, gap %.9g", separationB,
+			  exact.distance);
 }
 
 // ---------------------------------------------------------------------------------------------
