@@ -211,13 +211,11 @@ void tbUpdatePairsStage(tbWorld* world)
 	tbBroadPhase* bp = &world->broadPhase;
 	tbBroadPhase_UpdatePairs(bp);
 	world->counters.pairCandidates = bp->pairCount;
+	// Every pair passed tbContactPairFilter as it was found, and the pairs are unique: each
+	// becomes a contact.
 	for (int i = 0; i < bp->pairCount; ++i)
 	{
-		tbShapePair pair = bp->pairs[i];
-		if (tbShouldCreateContact(world, pair.a, pair.b))
-		{
-			tbCreateContact(world, pair.a, pair.b);
-		}
+		tbCreateContact(world, bp->pairs[i].a, bp->pairs[i].b);
 	}
 }
 

@@ -73,6 +73,14 @@ static void tbOrderSolverContacts(tbWorld* world)
 	}
 }
 
+/// Does this awake body wake what touches it? A dynamic body does; a kinematic one only while
+/// moving (a resting kinematic platform does not wake what sleeps on it).
+static bool tbWakesTouchingBodies(const tbBody* body)
+{
+	bool moving = tbLengthSquared(body->linearVelocity) > 0.0f || body->angularVelocity != 0.0f;
+	return body->type == tb_dynamicBody || (body->type == tb_kinematicBody && moving);
+}
+
 static bool tbIsSolverContact(const tbWorld* world, const tbContact* contact)
 {
 	if ((contact->flags & tb_contactTouching) == 0 || (contact->flags & tb_contactSensor) != 0)
@@ -110,10 +118,7 @@ static bool tbGatherRecordedContacts(tbWorld* world)
 		bool asleepB = b->type != tb_staticBody && b->awakeIndex == TB_NULL_INDEX;
 		if (asleepA || asleepB)
 		{
-			const tbBody* awake = asleepA ? b : a;
-			bool movingKinematic = awake->type == tb_kinematicBody &&
-								   (tbLengthSquared(awake->linearVelocity) > 0.0f || awake->angularVelocity != 0.0f);
-			if (awake->type == tb_dynamicBody || movingKinematic)
+			if (tbWakesTouchingBodies(asleepA ? b : a))
 			{
 				return false; // a wake is due: let the walk do it
 			}
@@ -146,9 +151,7 @@ void tbIslandStage(tbWorld* world)
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		const tbBody* body = world->bodies + world->awakeBodies[i];
-		bool movingKinematic = body->type == tb_kinematicBody &&
-							   (tbLengthSquared(body->linearVelocity) > 0.0f || body->angularVelocity != 0.0f);
-		bool wakes = body->type == tb_dynamicBody || movingKinematic;
+		bool wakes = tbWakesTouchingBodies(body);
 		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
 		{
 			tbContact* contact = world->contacts + (key >> 1);

@@ -482,11 +482,29 @@ static double tbAngleTo(tbVec2 n, const double u[2])
 	return fabs(atan2(cross, dot));
 }
 
-// The reviewer's transforms: p = position, q = (cos angle, sin angle) in float.
-static tbTransform tbReviewTransform(float x, float y, float angle)
+// One of the reviewer's cases: two boxes rounded by 0.01 m, transforms p = position,
+// q = (cos angle, sin angle) in float; the exact (double) pair and closest features, and
+// Tumble's manifold, checked sane, with one point and no two points at the same spot.
+typedef struct tbReviewCase
 {
-	tbTransform xf = {{x, y}, {cosf(angle), sinf(angle)}};
-	return xf;
+	tbExactPair pair;
+	tbExactClosest exact;
+	tbManifold manifold;
+} tbReviewCase;
+
+static tbReviewCase tbRunReviewCase(const float boxA[5], const float boxB[5])
+{
+	tbPolygon a = tbMakeRoundedBox(boxA[0], boxA[1], 0.01f);
+	tbPolygon b = tbMakeRoundedBox(boxB[0], boxB[1], 0.01f);
+	tbTransform xfA = {{boxA[2], boxA[3]}, {cosf(boxA[4]), sinf(boxA[4])}};
+	tbTransform xfB = {{boxB[2], boxB[3]}, {cosf(boxB[4]), sinf(boxB[4])}};
+	tbReviewCase c;
+	c.pair = tbMakeExactPair(&a, xfA, &b, xfB);
+	c.exact = tbExactClosestFeatures(&c.pair);
+	c.manifold = tbCollidePolygons(&a, xfA, &b, xfB);
+	tbExpectSane(&c.manifold);
+	cr_assert_eq(c.manifold.pointCount, 1, "one point expected, got %d", c.manifold.pointCount);
+	return c;
 }
 
 Test(manifold, missed_face_uses_true_closest_features)
@@ -495,20 +513,15 @@ Test(manifold, missed_face_uses_true_closest_features)
 	// within TB_REFERENCE_TOLERANCE = 5e-4 m), B's incident edge lies wholly beside A's face, and
 	// the closest features are A's vertex 0 against B's edge 3, not A's edge 3 against B's
 	// incident edge (which gave (−0.821, 0.570), 0.63 rad off, 8.8e-5 m too much separation).
-	tbPolygon a = tbMakeRoundedBox(0.0250000004f, 0.0317549706f, 0.01f);
-	tbPolygon b = tbMakeRoundedBox(0.0250000004f, 0.0314549468f, 0.01f);
-	tbTransform xfA = tbReviewTransform(3.52464867f, -0.438999653f, -2.0730238f);
-	tbTransform xfB = tbReviewTransform(3.52990651f, -0.367553622f, 1.90732837f);
-	tbExactPair pair = tbMakeExactPair(&a, xfA, &b, xfB);
-	tbExactClosest exact = tbExactClosestFeatures(&pair);
+	const float boxA[5] = {0.0250000004f, 0.0317549706f, 3.52464867f, -0.438999653f, -2.0730238f};
+	const float boxB[5] = {0.0250000004f, 0.0314549468f, 3.52990651f, -0.367553622f, 1.90732837f};
+	tbReviewCase c = tbRunReviewCase(boxA, boxB); // a corner against a face: one point
+	const tbExactPair pair = c.pair;
+	const tbExactClosest exact = c.exact;
+	const tbManifold m = c.manifold;
 	// The input is what the case says: A's vertex 0 inside B's edge 3, core gap 3.73e-4 m.
 	cr_assert(exact.vertexOfA && exact.vertex == 0 && exact.edge == 3 && exact.t > 0.0 && exact.t < 1.0);
 	cr_assert(fabs(exact.distance - 3.73e-4) < 1e-6, "core gap %.9g", exact.distance);
-
-	tbManifold m = tbCollidePolygons(&a, xfA, &b, xfB);
-	tbExpectSane(&m);
-	cr_assert_eq(m.pointCount, 1, "a corner against a face: one point");
-	tbExpectNoCoincidentPoints(&m);
 	// Normal (−0.330, 0.944): B's face normal, computed from B's stored normal by two float
 	// rotations (into A's frame and back); allow 1e-6 rad, about 8 float roundings.
 	double angle = tbAngleTo(m.normal, exact.normal);
@@ -532,12 +545,12 @@ Test(manifold, missed_face_short_vector_keeps_face_normal)
 	// origin, ulp 4.8e-7 m; the old closest-points normal was 1.4e-3 rad off the exact
 	// direction), so the normal is the SAT face's, here A's face 0 (largest separation), as
 	// Box2D v3 does below 0.1 × linear slop.
-	tbPolygon a = tbMakeRoundedBox(0.386531144f, 3.78882146f, 0.01f);
-	tbPolygon b = tbMakeRoundedBox(1.21687388f, 3.31934595f, 0.01f);
-	tbTransform xfA = tbReviewTransform(4.01262474f, -2.9321785f, -0.751027107f);
-	tbTransform xfB = tbReviewTransform(3.12804008f, -9.20401764f, 0.764200449f);
-	tbExactPair pair = tbMakeExactPair(&a, xfA, &b, xfB);
-	tbExactClosest exact = tbExactClosestFeatures(&pair);
+	const float boxA[5] = {0.386531144f, 3.78882146f, 4.01262474f, -2.9321785f, -0.751027107f};
+	const float boxB[5] = {1.21687388f, 3.31934595f, 3.12804008f, -9.20401764f, 0.764200449f};
+	tbReviewCase c = tbRunReviewCase(boxA, boxB);
+	const tbExactPair pair = c.pair;
+	const tbExactClosest exact = c.exact;
+	const tbManifold m = c.manifold;
 	cr_assert(exact.distance < 0.1 * TB_LINEAR_SLOP, "core gap %.9g", exact.distance);
 	cr_assert(exact.t <= 0.0 || exact.t >= 1.0, "closest features are two corners (t = %.9g)", exact.t);
 	double separationA = tbExactFaceSeparation(&pair, true, 0);
@@ -549,11 +562,6 @@ Test(manifold, missed_face_short_vector_keeps_face_normal)
 	{
 		cr_assert(tbExactFaceSeparation(&pair, false, i) < separationA);
 	}
-
-	tbManifold m = tbCollidePolygons(&a, xfA, &b, xfB);
-	tbExpectSane(&m);
-	cr_assert_eq(m.pointCount, 1);
-	tbExpectNoCoincidentPoints(&m);
 	// A's face 0 normal is A's stored normal rotated once in float: allow 1e-6 rad (a few
 	// roundings of FLT_EPSILON = 1.2e-7). Same inputs, same answer: no rounding noise left.
 	double angle = tbAngleTo(m.normal, pair.normalA[0]);
@@ -573,18 +581,13 @@ Test(manifold, clip_merges_coincident_points)
 	// B's reference face 3, and A's incident edge runs outward: the clip kept the vertex and also
 	// added the crossing at the same spot (ids 0x0083 and 0x43c0). One point remains, the vertex:
 	// its id, (A's vertex 0, B's reference face 3) = 0x0083, does not depend on the side plane.
-	tbPolygon a = tbMakeRoundedBox(0.236609891f, 0.798745811f, 0.01f);
-	tbPolygon b = tbMakeRoundedBox(0.0525781885f, 0.795801938f, 0.01f);
-	tbTransform xfA = tbReviewTransform(1.37965298f, -0.343814373f, -2.97580791f);
-	tbTransform xfB = tbReviewTransform(0.982432842f, 1.10550523f, 0.743678808f);
-	tbExactPair pair = tbMakeExactPair(&a, xfA, &b, xfB);
-	tbExactClosest exact = tbExactClosestFeatures(&pair);
+	const float boxA[5] = {0.236609891f, 0.798745811f, 1.37965298f, -0.343814373f, -2.97580791f};
+	const float boxB[5] = {0.0525781885f, 0.795801938f, 0.982432842f, 1.10550523f, 0.743678808f};
+	tbReviewCase c = tbRunReviewCase(boxA, boxB); // the vertex and the crossing are one point
+	const tbExactPair pair = c.pair;
+	const tbExactClosest exact = c.exact;
+	const tbManifold m = c.manifold;
 	double separationB = tbExactFaceSeparation(&pair, false, 3);
-
-	tbManifold m = tbCollidePolygons(&a, xfA, &b, xfB);
-	tbExpectSane(&m);
-	cr_assert_eq(m.pointCount, 1, "the vertex and the crossing at the same spot are one point");
-	tbExpectNoCoincidentPoints(&m);
 	cr_expect_eq(m.points[0].id, TB_MAKE_FEATURE_ID(0x00, 0x83), "id 0x%04x", m.points[0].id);
 	// Normal: B's face 3 (from A to B, so −n), B's stored normal rotated twice in float: 1e-6 rad.
 	double faceNormal[2] = {-pair.normalB[3][0], -pair.normalB[3][1]};
