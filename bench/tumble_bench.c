@@ -1125,7 +1125,7 @@ static void PrintUsage(void)
 	printf("usage: tumble-bench [SCENE...] [--steps N] [--repeat R] [--csv FILE] [--peers]\n"
 		   "                    [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
-		   "                    [--substeps N] [--iterations N] [--chipmunk-tree]\n"
+		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
 		   "       tumble-bench --list\n"
@@ -1196,6 +1196,10 @@ int main(int argc, char** argv)
 		else if (strcmp(arg, "--peers") == 0)
 		{
 			options.peers = true;
+		}
+		else if (strcmp(arg, "--scalar-solver") == 0)
+		{
+			options.config.overrides.scalarSolver = true;
 		}
 		else if (strcmp(arg, "--chipmunk-tree") == 0)
 		{

@@ -55,7 +55,8 @@ static void PrintUsage(void)
 		   "  tumble run SCENE [--steps N] [--png DIR] [--every K] [--size WxH] [--csv FILE]\n"
 		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                   [--toi off|quadratic|ca] [--solver baumgarte|ngs|soft] [--substeps N]\n"
-		   "                   [--iterations N] [--sheet FILE.png] [--frames N] [--contacts] [--aabbs] [--tree]\n"
+		   "                   [--iterations N] [--scalar-solver] [--sheet FILE.png] [--frames N] [--contacts]\n"
+		   "                   [--aabbs] [--tree]\n"
 		   "  tumble export SCENE\n"
 		   "  tumble sheet SCENE --out FILE.png [--frames N] [run options]\n"
 		   "SCENE is a catalogue name (see `tumble list`) or a path to a .json scene file.\n");
@@ -215,6 +216,10 @@ static bool ParseFlagOption(Options* options, const char* flag)
 	if (strcmp(flag, "--tree") == 0)
 	{
 		return (options->render.drawTree = true);
+	}
+	if (strcmp(flag, "--scalar-solver") == 0)
+	{
+		return (options->overrides.scalarSolver = true);
 	}
 	return false;
 }

@@ -203,6 +203,10 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 		{
 			def.velocityIterations = overrides->velocityIterations;
 		}
+		if (overrides->scalarSolver)
+		{
+			def.enableWideSolver = false;
+		}
 	}
 	return def;
 }

@@ -100,6 +100,7 @@ typedef struct SceneOverrides
 	SceneMethods methods;	///< a method applies when its flag is set
 	int velocityIterations; ///< > 0 replaces the world default
 	int subSteps;			///< > 0 replaces the scene's sub-step count (for callers that step)
+	bool scalarSolver;		///< true: the scalar reference contact solver (tbWorldDef::enableWideSolver off)
 } SceneOverrides;
 
 /// World definition for the scene: defaults, then the scene's gravity, sleep and methods, then overrides.

@@ -218,36 +218,60 @@ static inline void tbApplyImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbCo
 	sB->angularVelocity += c->invIB * tbCross(rB, P);
 }
 
-// Without warm starting each sub-step starts from zero accumulated impulse instead.
+static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstraint* c)
+{
+	tbSolverBody* sA = bodies + c->indexA;
+	tbSolverBody* sB = bodies + c->indexB;
+	tbVec2 normal = c->normal;
+	tbVec2 tangent = tbRightPerp(normal);
+	for (int j = 0; j < c->pointCount; ++j)
+	{
+		const tbContactConstraintPoint* cp = c->points + j;
+		tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
+		tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
+	}
+}
+
+static void tbZeroImpulses(tbContactConstraint* c)
+{
+	for (int j = 0; j < c->pointCount; ++j)
+	{
+		c->points[j].normalImpulse = 0.0f;
+		c->points[j].tangentImpulse = 0.0f;
+	}
+}
+
+// Without warm starting each sub-step starts from zero accumulated impulse instead. With the wide
+// solver, the coloured constraints first, then the overflow (the solve order, constraint_graph.c).
 void tbWarmStartContacts(tbStepContext* context)
 {
-	if (context->enableWarmStarting == false)
+	if (context->wideConstraints != NULL)
 	{
-		for (int i = 0; i < context->constraintCount; ++i)
+		tbWarmStartContactsWide(context);
+		for (int i = 0; i < context->overflowCount; ++i)
 		{
-			tbContactConstraint* c = context->constraints + i;
-			for (int j = 0; j < c->pointCount; ++j)
+			tbContactConstraint* c = context->constraints + context->overflowConstraints[i];
+			if (context->enableWarmStarting)
 			{
-				c->points[j].normalImpulse = 0.0f;
-				c->points[j].tangentImpulse = 0.0f;
+				tbWarmStartConstraint(context->bodies, c);
+			}
+			else
+			{
+				tbZeroImpulses(c);
 			}
 		}
 		return;
 	}
-
-	tbSolverBody* bodies = context->bodies;
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
-		const tbContactConstraint* c = context->constraints + i;
-		tbSolverBody* sA = bodies + c->indexA;
-		tbSolverBody* sB = bodies + c->indexB;
-		tbVec2 normal = c->normal;
-		tbVec2 tangent = tbRightPerp(normal);
-		for (int j = 0; j < c->pointCount; ++j)
+		tbContactConstraint* c = context->constraints + i;
+		if (context->enableWarmStarting)
 		{
-			const tbContactConstraintPoint* cp = c->points + j;
-			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
-			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
+			tbWarmStartConstraint(context->bodies, c);
+		}
+		else
+		{
+			tbZeroImpulses(c);
 		}
 	}
 }
@@ -357,34 +381,45 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 }
 
 // One loop per policy, each with the policy a compile-time constant, so the per-point code has no
-// policy tests left in it.
-#define TB_SOLVE_LOOP(POLICY)                                                                                          \
-	for (int i = 0; i < context->constraintCount; ++i)                                                                 \
+// policy tests left in it. COUNT and INDEX say which constraints: all in order, or the overflow of
+// the wide solver.
+#define TB_SOLVE_LOOP(POLICY, COUNT, INDEX)                                                                            \
+	for (int i = 0; i < (COUNT); ++i)                                                                                  \
 	{                                                                                                                  \
-		tbContactConstraint* c = context->constraints + i;                                                             \
+		tbContactConstraint* c = context->constraints + (INDEX);                                                       \
 		tbSolveConstraint(c, bodies + c->indexA, bodies + c->indexB, context, POLICY);                                 \
+	}
+
+#define TB_SOLVE_LOOPS(COUNT, INDEX)                                                                                   \
+	switch (policy)                                                                                                    \
+	{                                                                                                                  \
+		case tb_biasSoft:                                                                                              \
+			TB_SOLVE_LOOP(tb_biasSoft, COUNT, INDEX)                                                                   \
+			break;                                                                                                     \
+		case tb_biasRelax:                                                                                             \
+			TB_SOLVE_LOOP(tb_biasRelax, COUNT, INDEX)                                                                  \
+			break;                                                                                                     \
+		case tb_biasBaumgarte:                                                                                         \
+			TB_SOLVE_LOOP(tb_biasBaumgarte, COUNT, INDEX)                                                              \
+			break;                                                                                                     \
+		default:                                                                                                       \
+			TB_SOLVE_LOOP(tb_biasSpeculative, COUNT, INDEX)                                                            \
+			break;                                                                                                     \
 	}
 
 void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy)
 {
 	tbSolverBody* bodies = context->bodies;
-	switch (policy)
+	if (context->wideConstraints != NULL)
 	{
-		case tb_biasSoft:
-			TB_SOLVE_LOOP(tb_biasSoft)
-			break;
-		case tb_biasRelax:
-			TB_SOLVE_LOOP(tb_biasRelax)
-			break;
-		case tb_biasBaumgarte:
-			TB_SOLVE_LOOP(tb_biasBaumgarte)
-			break;
-		default:
-			TB_SOLVE_LOOP(tb_biasSpeculative)
-			break;
+		tbSolveContactsWide(context, policy);
+		TB_SOLVE_LOOPS(context->overflowCount, context->overflowConstraints[i])
+		return;
 	}
+	TB_SOLVE_LOOPS(context->constraintCount, i)
 }
 
+#undef TB_SOLVE_LOOPS
 #undef TB_SOLVE_LOOP
 
 void tbApplyRestitution(tbStepContext* context)

@@ -58,7 +58,7 @@ static void tbGatherBodies(tbStepContext* context)
 		tbSolverBody* sb = context->bodies + i;
 		sb->linearVelocity = body->linearVelocity;
 		sb->angularVelocity = body->fixedRotation ? 0.0f : body->angularVelocity;
-		sb->flags = 0;
+		sb->padding = 0.0f;
 		sb->deltaPosition = tb_vec2_zero;
 		sb->deltaRotation = tb_rot_identity;
 
@@ -202,6 +202,10 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	{
 		tbSoftPrepareContacts(&context);
 	}
+	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)
+	{
+		tbColorConstraints(&context); // NGS has its own solver loops (solver_ngs.c): scalar only
+	}
 
 	for (int i = 0; i < subStepCount; ++i)
 	{
@@ -210,6 +214,11 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 		tbMethodSubStep(&context);
 	}
 
+	if (context.wideConstraints != NULL)
+	{
+		tbUnpackWideImpulses(&context);
+		tbReleaseColors(&context);
+	}
 	tbApplyRestitution(&context);
 	tbStoreImpulses(&context);
 	tbScatterBodies(&context);

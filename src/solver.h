@@ -9,6 +9,7 @@
 // world->solverContacts, with anchors, effective masses and softness precomputed once per step.
 #pragma once
 
+#include "simd.h"
 #include "world.h"
 
 /// Hot state of one body, touched by every contact in every iteration: 32 bytes, two per cache
@@ -18,7 +19,7 @@ typedef struct tbSolverBody
 {
 	tbVec2 linearVelocity; ///< m/s, of the centre of mass
 	float angularVelocity; ///< rad/s
-	int flags;			   ///< unused padding (keeps 32 bytes)
+	float padding;		   ///< unused (keeps 32 bytes; the wide solver loads the first 16 as one row)
 	tbVec2 deltaPosition;  ///< m, centre motion since the start of the step
 	tbRot deltaRotation;   ///< rotation since the start of the step
 } tbSolverBody;
@@ -93,6 +94,40 @@ typedef enum tbBiasPolicy
 	tb_biasSpeculative, ///< rigid, speculative gaps only (NGS corrects overlap on positions)
 } tbBiasPolicy;
 
+/// Colours of the constraint graph (constraint_graph.c); at most 32 (one bit each in a uint32_t
+/// mask per body). Greedy colouring of a box stack needs about 7; 24 leaves room for crowded bodies.
+#define TB_GRAPH_COLOR_COUNT 24
+
+/// One manifold point of four contacts, lane by lane (structure of arrays): 160 bytes.
+typedef struct tbWideContactPoint
+{
+	tbFloatW anchorAX, anchorAY; ///< m, as tbContactConstraintPoint
+	tbFloatW anchorBX, anchorBY;
+	tbFloatW baseSeparation;
+	tbFloatW normalImpulse;
+	tbFloatW tangentImpulse;
+	tbFloatW maxNormalImpulse;
+	tbFloatW normalMass; ///< 0 in a lane whose contact has fewer points: its impulses stay 0
+	tbFloatW tangentMass;
+} tbWideContactPoint;
+
+/// Four contacts of one graph colour, solved together (contact_solver_wide.c): 544 bytes.
+/// Padding lanes have both bodies at the static stand-in and every number 0.
+typedef struct tbWideContactConstraint
+{
+	int indexA[TB_SIMD_WIDTH];			///< solver body indices, as tbContactConstraint
+	int indexB[TB_SIMD_WIDTH];
+	int constraintIndex[TB_SIMD_WIDTH]; ///< index in tbStepContext::constraints, −1 for padding
+	int pointCount[TB_SIMD_WIDTH];
+	tbFloatW normalX, normalY;
+	tbFloatW friction;
+	tbFloatW invMassA, invIA, invMassB, invIB;
+	tbFloatW biasRate, massScale, impulseScale; ///< tbSoftness, lane by lane
+	tbWideContactPoint points[2];
+} tbWideContactConstraint;
+
+_Static_assert(sizeof(tbWideContactConstraint) == 544, "tbWideContactConstraint is meant to be 544 bytes");
+
 /// Everything the pieces of one step share. Lives on the stack of tbSolveStage.
 typedef struct tbStepContext
 {
@@ -108,6 +143,17 @@ typedef struct tbStepContext
 
 	tbContactConstraint* constraints; ///< in the order of world->solverContacts
 	int constraintCount;
+
+	// Wide solver (null when the scalar reference solver runs): constraints grouped by colour in
+	// blocks of four, and the constraints that found no colour, by index.
+	tbWideContactConstraint* wideConstraints;
+	int wideCount;
+	int* overflowConstraints;
+	int overflowCount;
+	int colorCount;											///< colours in use this step
+	int colorBlockStart[TB_GRAPH_COLOR_COUNT + 1]; ///< blocks of colour k: [start[k], start[k + 1])
+	void* wideMemory;
+	int wideMemoryBytes;
 
 	tbSoftness contactSoftness; ///< dynamic vs dynamic
 	tbSoftness staticSoftness;	///< dynamic vs static or kinematic
@@ -128,6 +174,17 @@ void tbWarmStartContacts(tbStepContext* context);
 void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy);
 void tbApplyRestitution(tbStepContext* context);
 void tbStoreImpulses(tbStepContext* context);
+
+// constraint_graph.c: colour the constraints and pack them into wide blocks (after all preparation).
+void tbColorConstraints(tbStepContext* context);
+void tbReleaseColors(tbStepContext* context);
+
+// contact_solver_wide.c: the same sequential-impulse pieces, four contacts of one colour at a time.
+void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex);
+void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactConstraint* c, int constraintIndex);
+void tbWarmStartContactsWide(tbStepContext* context);
+void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy);
+void tbUnpackWideImpulses(tbStepContext* context);
 
 // One file per position-error method, the same two functions in the same order.
 // Prepare: set the softness the constraints will copy (before tbPrepareContacts).

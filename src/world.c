@@ -35,6 +35,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.velocityIterations = 8;
 	def.positionIterations = 3;
 	def.relaxIterations = 1;
+	def.enableWideSolver = true;
 	def.enableWarmStarting = true;
 	def.internalValue = TB_WORLD_DEF_MAGIC;
 	return def;

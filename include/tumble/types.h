@@ -64,6 +64,8 @@ typedef struct tbWorldDef
 	int positionIterations;			///< NGS position iterations per sub-step, default 3
 	int relaxIterations;			///< soft: relaxing iterations per sub-step, default 1
 	bool enableWarmStarting;		///< default true
+	bool enableWideSolver;			///< soft and Baumgarte: contacts graph-coloured and solved four at a
+									///< time (SIMD); false: the scalar reference in hashed order. Default true
 	tbFrictionCallback* frictionCallback;
 	tbRestitutionCallback* restitutionCallback;
 	void* userData;

@@ -1,0 +1,330 @@
+// The wide contact solver: the sequential impulses of contact_solver.c, four contacts at a time.
+//
+// The constraint graph colouring (constraint_graph.c) puts contacts that share no moving body in
+// one colour, and the contacts of a colour in blocks of four. A block gathers the 8 bodies' hot
+// state into wide floats (the 32-byte tbSolverBody is two rows of four floats, so a gather is
+// four loads and a 4×4 transpose), runs the same per-point arithmetic as the scalar
+// tbSolveConstraint lane by lane, and scatters the velocities back. Within a colour the lanes are
+// independent, so this is exactly sequential impulses in the order colour by colour; the maths,
+// the bias policies and the references are in contact_solver.c and are not repeated here.
+//
+// The SIMD is behind simd.h (SSE2, or four plain floats with lane-for-lane identical results).
+// A lane whose contact has one point runs the second point with normal and tangent mass 0, so its
+// impulses stay 0 and its bodies receive nothing. Restitution and the storing of impulses stay
+// scalar: they run once per step, after tbUnpackWideImpulses.
+//
+// Measured (tumbler, 60 Hz, 4 sub-steps; docs/performance.md): the solve passes take about half
+// the time of the scalar loop, which is bound by the dependency chain through each body's velocity.
+#include "solver.h"
+
+#include "tumble/constants.h"
+
+#include <string.h>
+
+// Lane `lane` of a wide float field, as an lvalue. tbFloatW is either __m128 (declared
+// may_alias) or a struct of float[4], so a float pointer into it is a valid access either way.
+#define TB_LANE(field, lane) (((float*)&(field))[lane])
+
+void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex)
+{
+	memset(block, 0, sizeof(*block));
+	for (int i = 0; i < TB_SIMD_WIDTH; ++i)
+	{
+		block->indexA[i] = staticIndex;
+		block->indexB[i] = staticIndex;
+		block->constraintIndex[i] = -1;
+	}
+}
+
+// Every field of the lane is written (a second point the contact does not have as zeros), so the
+// block needs no clearing first.
+void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactConstraint* c, int constraintIndex)
+{
+	block->indexA[lane] = c->indexA;
+	block->indexB[lane] = c->indexB;
+	block->constraintIndex[lane] = constraintIndex;
+	block->pointCount[lane] = c->pointCount;
+	TB_LANE(block->normalX, lane) = c->normal.x;
+	TB_LANE(block->normalY, lane) = c->normal.y;
+	TB_LANE(block->friction, lane) = c->friction;
+	TB_LANE(block->invMassA, lane) = c->invMassA;
+	TB_LANE(block->invIA, lane) = c->invIA;
+	TB_LANE(block->invMassB, lane) = c->invMassB;
+	TB_LANE(block->invIB, lane) = c->invIB;
+	TB_LANE(block->biasRate, lane) = c->softness.biasRate;
+	TB_LANE(block->massScale, lane) = c->softness.massScale;
+	TB_LANE(block->impulseScale, lane) = c->softness.impulseScale;
+	static const tbContactConstraintPoint absent = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+	for (int j = 0; j < 2; ++j)
+	{
+		const tbContactConstraintPoint* cp = j < c->pointCount ? c->points + j : &absent;
+		tbWideContactPoint* wp = block->points + j;
+		TB_LANE(wp->anchorAX, lane) = cp->anchorA.x;
+		TB_LANE(wp->anchorAY, lane) = cp->anchorA.y;
+		TB_LANE(wp->anchorBX, lane) = cp->anchorB.x;
+		TB_LANE(wp->anchorBY, lane) = cp->anchorB.y;
+		TB_LANE(wp->baseSeparation, lane) = cp->baseSeparation;
+		TB_LANE(wp->normalImpulse, lane) = cp->normalImpulse;
+		TB_LANE(wp->tangentImpulse, lane) = cp->tangentImpulse;
+		TB_LANE(wp->maxNormalImpulse, lane) = cp->maxNormalImpulse;
+		TB_LANE(wp->normalMass, lane) = cp->normalMass;
+		TB_LANE(wp->tangentMass, lane) = cp->tangentMass;
+	}
+}
+
+void tbUnpackWideImpulses(tbStepContext* context)
+{
+	for (int b = 0; b < context->wideCount; ++b)
+	{
+		const tbWideContactConstraint* block = context->wideConstraints + b;
+		for (int lane = 0; lane < TB_SIMD_WIDTH; ++lane)
+		{
+			int index = block->constraintIndex[lane];
+			if (index < 0)
+			{
+				continue;
+			}
+			tbContactConstraint* c = context->constraints + index;
+			for (int j = 0; j < c->pointCount; ++j)
+			{
+				const tbWideContactPoint* wp = block->points + j;
+				c->points[j].normalImpulse = TB_LANE(wp->normalImpulse, lane);
+				c->points[j].tangentImpulse = TB_LANE(wp->tangentImpulse, lane);
+				c->points[j].maxNormalImpulse = TB_LANE(wp->maxNormalImpulse, lane);
+			}
+		}
+	}
+}
+
+// The velocities (v.x, v.y, ω) of four bodies and their step deltas (Δp.x, Δp.y, Δq.c, Δq.s).
+typedef struct tbWideBody
+{
+	tbFloatW vx, vy, w;
+	tbFloatW padding; ///< carried through unchanged so the scatter writes back what it read
+	tbFloatW dpx, dpy, qc, qs;
+} tbWideBody;
+
+static inline float* tbVelocityRow(tbSolverBody* bodies, int index)
+{
+	return &bodies[index].linearVelocity.x;
+}
+
+static inline float* tbDeltaRow(tbSolverBody* bodies, int index)
+{
+	return &bodies[index].deltaPosition.x;
+}
+
+static inline void tbGatherVelocities(tbSolverBody* bodies, const int index[4], tbWideBody* out)
+{
+	tbFloatW rows[4];
+	tbLoadTransposeW(tbVelocityRow(bodies, index[0]), tbVelocityRow(bodies, index[1]),
+					 tbVelocityRow(bodies, index[2]), tbVelocityRow(bodies, index[3]), rows);
+	out->vx = rows[0], out->vy = rows[1], out->w = rows[2], out->padding = rows[3];
+}
+
+static inline void tbGatherDeltas(tbSolverBody* bodies, const int index[4], tbWideBody* out)
+{
+	tbFloatW rows[4];
+	tbLoadTransposeW(tbDeltaRow(bodies, index[0]), tbDeltaRow(bodies, index[1]), tbDeltaRow(bodies, index[2]),
+					 tbDeltaRow(bodies, index[3]), rows);
+	out->dpx = rows[0], out->dpy = rows[1], out->qc = rows[2], out->qs = rows[3];
+}
+
+// Written lane 0 to 3. Only a body that does not move (static stand-in, kinematic) can appear in
+// two lanes, and it is written with the velocity it was read with.
+static inline void tbScatterVelocities(tbSolverBody* bodies, const int index[4], const tbWideBody* in)
+{
+	tbFloatW rows[4] = {in->vx, in->vy, in->w, in->padding};
+	tbTransposeStoreW(tbVelocityRow(bodies, index[0]), tbVelocityRow(bodies, index[1]),
+					  tbVelocityRow(bodies, index[2]), tbVelocityRow(bodies, index[3]), rows);
+}
+
+// Apply the impulse (px, py) at anchors rA, rB: A receives −P, B receives +P.
+static inline void tbApplyImpulseW(tbWideBody* a, tbWideBody* b, const tbWideContactConstraint* c, tbFloatW rAx,
+								   tbFloatW rAy, tbFloatW rBx, tbFloatW rBy, tbFloatW px, tbFloatW py)
+{
+	a->vx = tbSubW(a->vx, tbMulW(c->invMassA, px));
+	a->vy = tbSubW(a->vy, tbMulW(c->invMassA, py));
+	a->w = tbSubW(a->w, tbMulW(c->invIA, tbSubW(tbMulW(rAx, py), tbMulW(rAy, px))));
+	b->vx = tbAddW(b->vx, tbMulW(c->invMassB, px));
+	b->vy = tbAddW(b->vy, tbMulW(c->invMassB, py));
+	b->w = tbAddW(b->w, tbMulW(c->invIB, tbSubW(tbMulW(rBx, py), tbMulW(rBy, px))));
+}
+
+static void tbZeroWideImpulses(tbStepContext* context)
+{
+	for (int i = 0; i < context->wideCount; ++i)
+	{
+		tbWideContactConstraint* c = context->wideConstraints + i;
+		for (int j = 0; j < 2; ++j)
+		{
+			c->points[j].normalImpulse = tbZeroW();
+			c->points[j].tangentImpulse = tbZeroW();
+		}
+	}
+}
+
+void tbWarmStartContactsWide(tbStepContext* context)
+{
+	if (context->enableWarmStarting == false)
+	{
+		tbZeroWideImpulses(context);
+		return;
+	}
+	tbSolverBody* bodies = context->bodies;
+	for (int i = 0; i < context->wideCount; ++i)
+	{
+		const tbWideContactConstraint* c = context->wideConstraints + i;
+		tbWideBody a, b;
+		tbGatherVelocities(bodies, c->indexA, &a);
+		tbGatherVelocities(bodies, c->indexB, &b);
+		// tangent = rightPerp(normal) = (n.y, −n.x)
+		tbFloatW tx = c->normalY;
+		tbFloatW ty = tbSubW(tbZeroW(), c->normalX);
+		for (int j = 0; j < 2; ++j)
+		{
+			const tbWideContactPoint* cp = c->points + j;
+			tbFloatW px = tbMulAddPairW(cp->normalImpulse, c->normalX, cp->tangentImpulse, tx);
+			tbFloatW py = tbMulAddPairW(cp->normalImpulse, c->normalY, cp->tangentImpulse, ty);
+			tbApplyImpulseW(&a, &b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, px, py);
+		}
+		tbScatterVelocities(bodies, c->indexA, &a);
+		tbScatterVelocities(bodies, c->indexB, &b);
+	}
+}
+
+// Constants of one solve pass, splatted once.
+typedef struct tbWidePass
+{
+	tbFloatW inv_h;
+	tbFloatW minPushBias;	///< −maxContactPushSpeed
+	tbFloatW baumgarteRate; ///< TB_BAUMGARTE/h
+	tbFloatW slop;			///< TB_LINEAR_SLOP
+} tbWidePass;
+
+// Linearised current separation of point cp (see contact_solver.c): s0 + dot(Δp_B + Δq_B·rB − Δp_A −
+// Δq_A·rA, n) with s0 folded into baseSeparation.
+static inline tbFloatW tbSeparationW(const tbWideContactPoint* cp, const tbWideContactConstraint* c,
+									 const tbWideBody* a, const tbWideBody* b)
+{
+	tbFloatW prAx = tbSubW(tbMulW(a->qc, cp->anchorAX), tbMulW(a->qs, cp->anchorAY));
+	tbFloatW prAy = tbAddW(tbMulW(a->qs, cp->anchorAX), tbMulW(a->qc, cp->anchorAY));
+	tbFloatW prBx = tbSubW(tbMulW(b->qc, cp->anchorBX), tbMulW(b->qs, cp->anchorBY));
+	tbFloatW prBy = tbAddW(tbMulW(b->qs, cp->anchorBX), tbMulW(b->qc, cp->anchorBY));
+	tbFloatW dx = tbAddW(tbSubW(b->dpx, a->dpx), tbSubW(prBx, prAx));
+	tbFloatW dy = tbAddW(tbSubW(b->dpy, a->dpy), tbSubW(prBy, prAy));
+	return tbAddW(cp->baseSeparation, tbMulAddPairW(dx, c->normalX, dy, c->normalY));
+}
+
+// Relative velocity of the anchors, vB + ωB × rB − vA − ωA × rA, along (ux, uy).
+static inline tbFloatW tbRelativeVelocityW(const tbWideContactPoint* cp, const tbWideBody* a, const tbWideBody* b,
+										   tbFloatW ux, tbFloatW uy)
+{
+	tbFloatW dvx = tbSubW(tbSubW(b->vx, tbMulW(b->w, cp->anchorBY)), tbSubW(a->vx, tbMulW(a->w, cp->anchorAY)));
+	tbFloatW dvy = tbSubW(tbAddW(b->vy, tbMulW(b->w, cp->anchorBX)), tbAddW(a->vy, tbMulW(a->w, cp->anchorAX)));
+	return tbMulAddPairW(dvx, ux, dvy, uy);
+}
+
+static inline void tbSolveNormalW(tbWideContactPoint* cp, const tbWideContactConstraint* c, tbWideBody* a,
+								  tbWideBody* b, const tbWidePass* pass, tbBiasPolicy policy)
+{
+	tbFloatW zero = tbZeroW();
+	tbFloatW s = tbSeparationW(cp, c, a, b);
+
+	// Speculative (s > 0): bias s/h, rigid. Overlap: the policy's push-out (contact_solver.c).
+	tbFloatW overlapBias = zero;
+	tbFloatW overlapMassScale = tbSplatW(1.0f);
+	tbFloatW overlapImpulseScale = zero;
+	if (policy == tb_biasSoft)
+	{
+		overlapBias = tbMaxW(tbMulW(c->biasRate, s), pass->minPushBias);
+		overlapMassScale = c->massScale;
+		overlapImpulseScale = c->impulseScale;
+	}
+	else if (policy == tb_biasBaumgarte)
+	{
+		overlapBias = tbMulW(pass->baumgarteRate, tbMinW(zero, tbAddW(s, pass->slop)));
+	}
+	tbFloatW bias = tbSelectGreaterW(s, zero, tbMulW(s, pass->inv_h), overlapBias);
+	tbFloatW massScale = tbSelectGreaterW(s, zero, tbSplatW(1.0f), overlapMassScale);
+	tbFloatW impulseScale = tbSelectGreaterW(s, zero, zero, overlapImpulseScale);
+
+	tbFloatW vn = tbRelativeVelocityW(cp, a, b, c->normalX, c->normalY);
+	tbFloatW impulse = tbSubW(tbSubW(zero, tbMulW(tbMulW(cp->normalMass, massScale), tbAddW(vn, bias))),
+							  tbMulW(impulseScale, cp->normalImpulse));
+	tbFloatW newImpulse = tbMaxW(tbAddW(cp->normalImpulse, impulse), zero);
+	impulse = tbSubW(newImpulse, cp->normalImpulse);
+	cp->normalImpulse = newImpulse;
+	cp->maxNormalImpulse = tbMaxW(cp->maxNormalImpulse, newImpulse);
+
+	tbApplyImpulseW(a, b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, tbMulW(impulse, c->normalX),
+					tbMulW(impulse, c->normalY));
+}
+
+static inline void tbSolveFrictionW(tbWideContactPoint* cp, const tbWideContactConstraint* c, tbWideBody* a,
+									tbWideBody* b, tbFloatW tx, tbFloatW ty)
+{
+	tbFloatW vt = tbRelativeVelocityW(cp, a, b, tx, ty);
+	tbFloatW impulse = tbSubW(tbZeroW(), tbMulW(cp->tangentMass, vt));
+	tbFloatW maxFriction = tbMulW(c->friction, cp->normalImpulse);
+	tbFloatW minFriction = tbSubW(tbZeroW(), maxFriction);
+	// clamp(λt + Δλ, −μλn, μλn); the bounds are ordered because λn ≥ 0.
+	tbFloatW newImpulse = tbMaxW(tbMinW(tbAddW(cp->tangentImpulse, impulse), maxFriction), minFriction);
+	impulse = tbSubW(newImpulse, cp->tangentImpulse);
+	cp->tangentImpulse = newImpulse;
+	tbApplyImpulseW(a, b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, tbMulW(impulse, tx),
+					tbMulW(impulse, ty));
+}
+
+// Normal impulses first, then friction against the fresh normal impulses (as the scalar solver).
+static inline void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bodies, const tbWidePass* pass,
+									tbBiasPolicy policy)
+{
+	tbWideBody a, b;
+	tbGatherVelocities(bodies, c->indexA, &a);
+	tbGatherVelocities(bodies, c->indexB, &b);
+	tbGatherDeltas(bodies, c->indexA, &a);
+	tbGatherDeltas(bodies, c->indexB, &b);
+
+	tbSolveNormalW(c->points + 0, c, &a, &b, pass, policy);
+	tbSolveNormalW(c->points + 1, c, &a, &b, pass, policy);
+	tbFloatW tx = c->normalY;
+	tbFloatW ty = tbSubW(tbZeroW(), c->normalX);
+	tbSolveFrictionW(c->points + 0, c, &a, &b, tx, ty);
+	tbSolveFrictionW(c->points + 1, c, &a, &b, tx, ty);
+
+	tbScatterVelocities(bodies, c->indexA, &a);
+	tbScatterVelocities(bodies, c->indexB, &b);
+}
+
+#define TB_SOLVE_WIDE_LOOP(POLICY)                                                                                     \
+	for (int i = 0; i < context->wideCount; ++i)                                                                       \
+	{                                                                                                                  \
+		tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY);                               \
+	}
+
+void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy)
+{
+	tbWidePass pass;
+	pass.inv_h = tbSplatW(context->inv_h);
+	pass.minPushBias = tbSplatW(-context->maxContactPushSpeed);
+	pass.baumgarteRate = tbSplatW(TB_BAUMGARTE * context->inv_h);
+	pass.slop = tbSplatW(TB_LINEAR_SLOP);
+	switch (policy)
+	{
+		case tb_biasSoft:
+			TB_SOLVE_WIDE_LOOP(tb_biasSoft)
+			break;
+		case tb_biasRelax:
+			TB_SOLVE_WIDE_LOOP(tb_biasRelax)
+			break;
+		case tb_biasBaumgarte:
+			TB_SOLVE_WIDE_LOOP(tb_biasBaumgarte)
+			break;
+		default:
+			TB_SOLVE_WIDE_LOOP(tb_biasSpeculative)
+			break;
+	}
+}
+
+#undef TB_SOLVE_WIDE_LOOP
