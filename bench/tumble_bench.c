@@ -599,6 +599,18 @@ static int SolverChart(FILE* out)
 			fprintf(stderr, "solver %s done\n", p->label);
 		}
 	}
+	{
+		// The default again with the scalar reference contact solver: what the wide solver saves.
+		TumbleConfig config;
+		memset(&config, 0, sizeof(config));
+		config.subSteps = 4;
+		config.overrides.scalarSolver = true;
+		SolverPoint* p = points + count++;
+		p->method = "soft-scalar";
+		p->n = 4;
+		snprintf(p->label, sizeof(p->label), "soft-scalar-4");
+		MeasureSolver(p, engineTumble, &config);
+	}
 	int tumbleCount = count;
 	for (int e = engineBox2D; e < engineCount; ++e)
 	{

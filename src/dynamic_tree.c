@@ -35,6 +35,7 @@
 
 #include "tumble/collision.h"
 
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -53,6 +54,18 @@ typedef struct tbTreeNode
 } tbTreeNode;
 
 _Static_assert(sizeof(tbTreeNode) == 48, "tree node is 48 bytes");
+
+/// One leaf as the binned SAH rebuild moves it around: everything the partition reads and swaps
+/// in one 32-byte record, so a swap is one record, not four arrays.
+typedef struct tbRebuildLeaf
+{
+	tbAABB box;
+	tbVec2 center;
+	int node; ///< the leaf's node index
+	int bin;  ///< bin of the current partition
+} tbRebuildLeaf;
+
+_Static_assert(sizeof(tbRebuildLeaf) == 32, "rebuild leaf is 32 bytes");
 
 /// Initial node capacity: 16 nodes (768 bytes), doubled when full.
 #define TB_TREE_INITIAL_CAPACITY 16
@@ -129,11 +142,7 @@ tbDynamicTree tbDynamicTree_Create(void)
 void tbDynamicTree_Destroy(tbDynamicTree* tree)
 {
 	tbFree(tree->nodes, tree->nodeCapacity * (int)sizeof(tbTreeNode));
-	int n = tree->rebuildCapacity;
-	tbFree(tree->leafIndices, n * (int)sizeof(int));
-	tbFree(tree->leafBoxes, n * (int)sizeof(tbAABB));
-	tbFree(tree->leafCenters, n * (int)sizeof(tbVec2));
-	tbFree(tree->binIndices, n * (int)sizeof(int));
+	tbFree(tree->rebuildLeaves, tree->rebuildCapacity * (int)sizeof(tbRebuildLeaf));
 	*tree = tbDynamicTree_Create();
 }
 
@@ -649,44 +658,22 @@ static void tbReserveRebuild(tbDynamicTree* tree, int count)
 	{
 		return;
 	}
-	int n = tree->rebuildCapacity;
-	tbFree(tree->leafIndices, n * (int)sizeof(int));
-	tbFree(tree->leafBoxes, n * (int)sizeof(tbAABB));
-	tbFree(tree->leafCenters, n * (int)sizeof(tbVec2));
-	tbFree(tree->binIndices, n * (int)sizeof(int));
-	n = count + count / 2;
-	tree->leafIndices = tbAlloc(n * (int)sizeof(int));
-	tree->leafBoxes = tbAlloc(n * (int)sizeof(tbAABB));
-	tree->leafCenters = tbAlloc(n * (int)sizeof(tbVec2));
-	tree->binIndices = tbAlloc(n * (int)sizeof(int));
+	tbFree(tree->rebuildLeaves, tree->rebuildCapacity * (int)sizeof(tbRebuildLeaf));
+	int n = count + count / 2;
+	tree->rebuildLeaves = tbAlloc(n * (int)sizeof(tbRebuildLeaf));
 	tree->rebuildCapacity = n;
-}
-
-static void tbSwapLeaves(tbDynamicTree* tree, int i, int j)
-{
-	int leaf = tree->leafIndices[i];
-	tree->leafIndices[i] = tree->leafIndices[j];
-	tree->leafIndices[j] = leaf;
-	tbAABB box = tree->leafBoxes[i];
-	tree->leafBoxes[i] = tree->leafBoxes[j];
-	tree->leafBoxes[j] = box;
-	tbVec2 c = tree->leafCenters[i];
-	tree->leafCenters[i] = tree->leafCenters[j];
-	tree->leafCenters[j] = c;
-	int bin = tree->binIndices[i];
-	tree->binIndices[i] = tree->binIndices[j];
-	tree->binIndices[j] = bin;
 }
 
 /// Bin the leaves [start, start + count) on the axis of largest centroid extent and return the
 /// number that go left under the best SAH plane, or 0 when the centroids cannot be separated.
 static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 {
-	tbVec2 lower = tree->leafCenters[start], upper = lower;
-	for (int i = start + 1; i < start + count; ++i)
+	tbRebuildLeaf* leaves = tree->rebuildLeaves + start;
+	tbVec2 lower = leaves[0].center, upper = lower;
+	for (int i = 1; i < count; ++i)
 	{
-		lower = tbMin(lower, tree->leafCenters[i]);
-		upper = tbMax(upper, tree->leafCenters[i]);
+		lower = tbMin(lower, leaves[i].center);
+		upper = tbMax(upper, leaves[i].center);
 	}
 	tbVec2 extent = tbSub(upper, lower);
 	bool useX = extent.x >= extent.y;
@@ -697,17 +684,24 @@ static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 		return 0;
 	}
 
-	// Bin k covers centroids in [minC + k·w/B, minC + (k+1)·w/B).
+	// Bin k covers centroids in [minC + k·w/B, minC + (k+1)·w/B). Bin boxes start inverted (empty),
+	// so adding a leaf is a plain min/max.
 	tbAABB binBoxes[TB_TREE_BIN_COUNT];
 	int binCounts[TB_TREE_BIN_COUNT] = {0};
-	float scale = (float)TB_TREE_BIN_COUNT / width;
-	for (int i = start; i < start + count; ++i)
+	for (int k = 0; k < TB_TREE_BIN_COUNT; ++k)
 	{
-		float c = useX ? tree->leafCenters[i].x : tree->leafCenters[i].y;
+		binBoxes[k].lowerBound = tbMakeVec2(FLT_MAX, FLT_MAX);
+		binBoxes[k].upperBound = tbMakeVec2(-FLT_MAX, -FLT_MAX);
+	}
+	float scale = (float)TB_TREE_BIN_COUNT / width;
+	for (int i = 0; i < count; ++i)
+	{
+		float c = useX ? leaves[i].center.x : leaves[i].center.y;
 		int bin = tbMinInt((int)(scale * (c - minC)), TB_TREE_BIN_COUNT - 1);
 		bin = tbMaxInt(bin, 0);
-		tree->binIndices[i] = bin;
-		binBoxes[bin] = binCounts[bin] == 0 ? tree->leafBoxes[i] : tbAABB_Union(binBoxes[bin], tree->leafBoxes[i]);
+		leaves[i].bin = bin;
+		binBoxes[bin].lowerBound = tbMin(binBoxes[bin].lowerBound, leaves[i].box.lowerBound);
+		binBoxes[bin].upperBound = tbMax(binBoxes[bin].upperBound, leaves[i].box.upperBound);
 		binCounts[bin] += 1;
 	}
 
@@ -751,20 +745,22 @@ static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 	}
 
 	// Partition in place: bins ≤ bestPlane to the left.
-	int left = start, right = start + count - 1;
+	int left = 0, right = count - 1;
 	while (left <= right)
 	{
-		if (tree->binIndices[left] <= bestPlane)
+		if (leaves[left].bin <= bestPlane)
 		{
 			left += 1;
 		}
 		else
 		{
-			tbSwapLeaves(tree, left, right);
+			tbRebuildLeaf swap = leaves[left];
+			leaves[left] = leaves[right];
+			leaves[right] = swap;
 			right -= 1;
 		}
 	}
-	return left - start;
+	return left;
 }
 
 /// Build the subtree over leaves [start, start + count) and return its root.
@@ -772,7 +768,7 @@ static int tbBuildSubtree(tbDynamicTree* tree, int start, int count)
 {
 	if (count == 1)
 	{
-		return tree->leafIndices[start];
+		return tree->rebuildLeaves[start].node;
 	}
 	int leftCount = tbPartitionBinned(tree, start, count);
 	if (leftCount == 0 || leftCount == count)
@@ -801,9 +797,11 @@ int tbDynamicTree_Rebuild(tbDynamicTree* tree)
 		tbTreeNode* node = tree->nodes + i;
 		if (node->height == 0)
 		{
-			tree->leafIndices[leafCount] = i;
-			tree->leafBoxes[leafCount] = node->aabb;
-			tree->leafCenters[leafCount] = tbAABB_Center(node->aabb);
+			tbRebuildLeaf* leaf = tree->rebuildLeaves + leafCount;
+			leaf->box = node->aabb;
+			leaf->center = tbAABB_Center(node->aabb);
+			leaf->node = i;
+			leaf->bin = 0;
 			leafCount += 1;
 		}
 		else if (node->height > 0)

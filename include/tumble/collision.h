@@ -408,6 +408,7 @@ TB_API tbTOIOutput tbTimeOfImpactCircles(const tbCircle* circleA, const tbSweep*
 #define TB_NULL_NODE (-1)
 
 struct tbTreeNode;
+struct tbRebuildLeaf;
 
 /// Bounding-volume hierarchy of fat AABBs, balanced by rotations; insertion by the surface-area
 /// heuristic (branch and bound over the sibling candidates). Usable on its own.
@@ -420,10 +421,7 @@ typedef struct tbDynamicTree
 	int freeList;
 	int proxyCount;
 	// scratch space for the binned SAH rebuild
-	int* leafIndices;
-	tbAABB* leafBoxes;
-	tbVec2* leafCenters;
-	int* binIndices;
+	struct tbRebuildLeaf* rebuildLeaves;
 	int rebuildCapacity;
 } tbDynamicTree;
 
