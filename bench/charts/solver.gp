@@ -1,10 +1,10 @@
 # Solver chart: time per step (210-box pyramid) against three error measures, one panel each.
 # Input: DATA (solver.csv from `tumble-bench solver-chart`); output: OUT (PNG).
-set terminal pngcairo size 1500,480 font ",10"
+set terminal pngcairo size 1500,600 font ",10"
 set output OUT
 set termoption noenhanced
 set datafile separator ","
-set key top right font ",8"
+set key below horizontal maxcols 3 font ",8"
 set logscale xy
 set xlabel "ms per step (210-box pyramid)"
 set grid
