@@ -114,16 +114,15 @@ void tbColorConstraints(tbStepContext* context)
 	blockStart[TB_GRAPH_COLOR_COUNT] = blockCount;
 	int overflowCount = counts[TB_GRAPH_COLOR_COUNT];
 
-	// One allocation: wide blocks (16-byte aligned by hand; the allocator hook promises less), then
-	// the overflow list.
+	// One allocation: wide blocks, then the overflow list. tbAlloc returns TB_ALIGNMENT-aligned
+	// memory (the allocator hook must honour it), enough for the 16-byte wide floats.
 	int wideBytes = (int)sizeof(tbWideContactConstraint) * blockCount;
 	int overflowBytes = (int)sizeof(int) * overflowCount;
-	context->wideMemoryBytes = wideBytes + overflowBytes + 16;
+	context->wideMemoryBytes = tbMaxInt(wideBytes + overflowBytes, 1);
 	context->wideMemory = tbAlloc(context->wideMemoryBytes);
-	uintptr_t address = ((uintptr_t)context->wideMemory + 15u) & ~(uintptr_t)15u;
-	context->wideConstraints = (tbWideContactConstraint*)address;
+	context->wideConstraints = (tbWideContactConstraint*)context->wideMemory;
 	context->wideCount = blockCount;
-	context->overflowConstraints = (int*)(address + (uintptr_t)wideBytes);
+	context->overflowConstraints = (int*)((char*)context->wideMemory + wideBytes);
 	context->overflowCount = 0;
 	context->colorCount = 0;
 	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)

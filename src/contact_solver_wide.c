@@ -19,11 +19,8 @@
 
 #include "tumble/constants.h"
 
+#include <stddef.h>
 #include <string.h>
-
-// Lane `lane` of a wide float field, as an lvalue. tbFloatW is either __m128 (declared
-// may_alias) or a struct of float[4], so a float pointer into it is a valid access either way.
-#define TB_LANE(field, lane) (((float*)&(field))[lane])
 
 void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex)
 {
@@ -44,31 +41,31 @@ void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactCon
 	block->indexB[lane] = c->indexB;
 	block->constraintIndex[lane] = constraintIndex;
 	block->pointCount[lane] = c->pointCount;
-	TB_LANE(block->normalX, lane) = c->normal.x;
-	TB_LANE(block->normalY, lane) = c->normal.y;
-	TB_LANE(block->friction, lane) = c->friction;
-	TB_LANE(block->invMassA, lane) = c->invMassA;
-	TB_LANE(block->invIA, lane) = c->invIA;
-	TB_LANE(block->invMassB, lane) = c->invMassB;
-	TB_LANE(block->invIB, lane) = c->invIB;
-	TB_LANE(block->biasRate, lane) = c->softness.biasRate;
-	TB_LANE(block->massScale, lane) = c->softness.massScale;
-	TB_LANE(block->impulseScale, lane) = c->softness.impulseScale;
+	tbSetLaneW(&block->normalX, lane, c->normal.x);
+	tbSetLaneW(&block->normalY, lane, c->normal.y);
+	tbSetLaneW(&block->friction, lane, c->friction);
+	tbSetLaneW(&block->invMassA, lane, c->invMassA);
+	tbSetLaneW(&block->invIA, lane, c->invIA);
+	tbSetLaneW(&block->invMassB, lane, c->invMassB);
+	tbSetLaneW(&block->invIB, lane, c->invIB);
+	tbSetLaneW(&block->biasRate, lane, c->softness.biasRate);
+	tbSetLaneW(&block->massScale, lane, c->softness.massScale);
+	tbSetLaneW(&block->impulseScale, lane, c->softness.impulseScale);
 	static const tbContactConstraintPoint absent = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
 	for (int j = 0; j < 2; ++j)
 	{
 		const tbContactConstraintPoint* cp = j < c->pointCount ? c->points + j : &absent;
 		tbWideContactPoint* wp = block->points + j;
-		TB_LANE(wp->anchorAX, lane) = cp->anchorA.x;
-		TB_LANE(wp->anchorAY, lane) = cp->anchorA.y;
-		TB_LANE(wp->anchorBX, lane) = cp->anchorB.x;
-		TB_LANE(wp->anchorBY, lane) = cp->anchorB.y;
-		TB_LANE(wp->baseSeparation, lane) = cp->baseSeparation;
-		TB_LANE(wp->normalImpulse, lane) = cp->normalImpulse;
-		TB_LANE(wp->tangentImpulse, lane) = cp->tangentImpulse;
-		TB_LANE(wp->maxNormalImpulse, lane) = cp->maxNormalImpulse;
-		TB_LANE(wp->normalMass, lane) = cp->normalMass;
-		TB_LANE(wp->tangentMass, lane) = cp->tangentMass;
+		tbSetLaneW(&wp->anchorAX, lane, cp->anchorA.x);
+		tbSetLaneW(&wp->anchorAY, lane, cp->anchorA.y);
+		tbSetLaneW(&wp->anchorBX, lane, cp->anchorB.x);
+		tbSetLaneW(&wp->anchorBY, lane, cp->anchorB.y);
+		tbSetLaneW(&wp->baseSeparation, lane, cp->baseSeparation);
+		tbSetLaneW(&wp->normalImpulse, lane, cp->normalImpulse);
+		tbSetLaneW(&wp->tangentImpulse, lane, cp->tangentImpulse);
+		tbSetLaneW(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
+		tbSetLaneW(&wp->normalMass, lane, cp->normalMass);
+		tbSetLaneW(&wp->tangentMass, lane, cp->tangentMass);
 	}
 }
 
@@ -88,9 +85,9 @@ void tbUnpackWideImpulses(tbStepContext* context)
 			for (int j = 0; j < c->pointCount; ++j)
 			{
 				const tbWideContactPoint* wp = block->points + j;
-				c->points[j].normalImpulse = TB_LANE(wp->normalImpulse, lane);
-				c->points[j].tangentImpulse = TB_LANE(wp->tangentImpulse, lane);
-				c->points[j].maxNormalImpulse = TB_LANE(wp->maxNormalImpulse, lane);
+				c->points[j].normalImpulse = tbGetLaneW(&wp->normalImpulse, lane);
+				c->points[j].tangentImpulse = tbGetLaneW(&wp->tangentImpulse, lane);
+				c->points[j].maxNormalImpulse = tbGetLaneW(&wp->maxNormalImpulse, lane);
 			}
 		}
 	}
@@ -104,14 +101,19 @@ typedef struct tbWideBody
 	tbFloatW dpx, dpy, qc, qs;
 } tbWideBody;
 
-static inline float* tbVelocityRow(tbSolverBody* bodies, int index)
+_Static_assert(offsetof(tbSolverBody, angularVelocity) == 8 && offsetof(tbSolverBody, padding) == 12 &&
+				   offsetof(tbSolverBody, deltaPosition) == 16 && offsetof(tbSolverBody, deltaRotation) == 24,
+			   "tbSolverBody rows: (v, ω, padding) then (Δp, Δq), as the gathers read them");
+
+// The two 16-byte rows of a tbSolverBody: (v.x, v.y, ω, padding) and (Δp.x, Δp.y, Δq.c, Δq.s).
+static inline void* tbVelocityRow(tbSolverBody* bodies, int index)
 {
-	return &bodies[index].linearVelocity.x;
+	return (char*)(bodies + index) + offsetof(tbSolverBody, linearVelocity);
 }
 
-static inline float* tbDeltaRow(tbSolverBody* bodies, int index)
+static inline void* tbDeltaRow(tbSolverBody* bodies, int index)
 {
-	return &bodies[index].deltaPosition.x;
+	return (char*)(bodies + index) + offsetof(tbSolverBody, deltaPosition);
 }
 
 static inline void tbGatherVelocities(tbSolverBody* bodies, const int index[4], tbWideBody* out)
@@ -268,8 +270,8 @@ static inline void tbSolveFrictionW(tbWideContactPoint* cp, const tbWideContactC
 	tbFloatW impulse = tbSubW(tbZeroW(), tbMulW(cp->tangentMass, vt));
 	tbFloatW maxFriction = tbMulW(c->friction, cp->normalImpulse);
 	tbFloatW minFriction = tbSubW(tbZeroW(), maxFriction);
-	// clamp(λt + Δλ, −μλn, μλn); the bounds are ordered because λn ≥ 0.
-	tbFloatW newImpulse = tbMaxW(tbMinW(tbAddW(cp->tangentImpulse, impulse), maxFriction), minFriction);
+	// clamp(λt + Δλ, −μλn, μλn) with the scalar clamp's rule for NaN bounds (μ = ∞ and λn = 0).
+	tbFloatW newImpulse = tbClampW(tbAddW(cp->tangentImpulse, impulse), minFriction, maxFriction);
 	impulse = tbSubW(newImpulse, cp->tangentImpulse);
 	cp->tangentImpulse = newImpulse;
 	tbApplyImpulseW(a, b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, tbMulW(impulse, tx),

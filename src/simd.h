@@ -8,8 +8,10 @@
 #pragma once
 
 #include <stdint.h>
+#include <string.h>
 
-#if !defined(TB_SIMD_NONE) && (defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2))
+// 32-bit MSVC is left out: it cannot pass more than three __m128 by value.
+#if !defined(TB_SIMD_NONE) && (defined(__SSE2__) || defined(_M_X64))
 #define TB_SIMD_SSE2 1
 #include <emmintrin.h>
 #endif
@@ -64,40 +66,26 @@ static inline tbFloatW tbSelectGreaterW(tbFloatW a, tbFloatW b, tbFloatW ifTrue,
 	return _mm_or_ps(_mm_and_ps(mask, ifTrue), _mm_andnot_ps(mask, ifFalse));
 }
 
-/// Loads lanes 0..3 from four 16-byte rows and transposes: out[k] lane i = rows[i][k].
-static inline void tbLoadTransposeW(const float* row0, const float* row1, const float* row2, const float* row3,
+/// Loads four rows of four floats (16 bytes each, any alignment) and transposes:
+/// out[k] lane i = float k of row i.
+static inline void tbLoadTransposeW(const void* row0, const void* row1, const void* row2, const void* row3,
 									tbFloatW out[4])
 {
-	__m128 r0 = _mm_loadu_ps(row0), r1 = _mm_loadu_ps(row1);
-	__m128 r2 = _mm_loadu_ps(row2), r3 = _mm_loadu_ps(row3);
+	__m128 r0 = _mm_loadu_ps((const float*)row0), r1 = _mm_loadu_ps((const float*)row1);
+	__m128 r2 = _mm_loadu_ps((const float*)row2), r3 = _mm_loadu_ps((const float*)row3);
 	_MM_TRANSPOSE4_PS(r0, r1, r2, r3);
 	out[0] = r0, out[1] = r1, out[2] = r2, out[3] = r3;
 }
 
-/// The inverse of tbLoadTransposeW: rows[i][k] = in[k] lane i, stored in the order row 0..3.
-static inline void tbTransposeStoreW(float* row0, float* row1, float* row2, float* row3, const tbFloatW in[4])
+/// The inverse of tbLoadTransposeW: float k of row i = in[k] lane i, stored row 0 to 3.
+static inline void tbTransposeStoreW(void* row0, void* row1, void* row2, void* row3, const tbFloatW in[4])
 {
 	__m128 r0 = in[0], r1 = in[1], r2 = in[2], r3 = in[3];
 	_MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-	_mm_storeu_ps(row0, r0);
-	_mm_storeu_ps(row1, r1);
-	_mm_storeu_ps(row2, r2);
-	_mm_storeu_ps(row3, r3);
-}
-
-static inline float tbLaneW(tbFloatW a, int lane)
-{
-	float values[4];
-	_mm_storeu_ps(values, a);
-	return values[lane];
-}
-
-static inline tbFloatW tbSetLaneW(tbFloatW a, int lane, float value)
-{
-	float values[4];
-	_mm_storeu_ps(values, a);
-	values[lane] = value;
-	return _mm_loadu_ps(values);
+	_mm_storeu_ps((float*)row0, r0);
+	_mm_storeu_ps((float*)row1, r1);
+	_mm_storeu_ps((float*)row2, r2);
+	_mm_storeu_ps((float*)row3, r3);
 }
 
 #else // four plain floats: the portable reference, same results lane by lane
@@ -159,43 +147,54 @@ static inline tbFloatW tbSelectGreaterW(tbFloatW a, tbFloatW b, tbFloatW ifTrue,
 
 #undef TB_LANEWISE
 
-static inline void tbLoadTransposeW(const float* row0, const float* row1, const float* row2, const float* row3,
+static inline void tbLoadTransposeW(const void* row0, const void* row1, const void* row2, const void* row3,
 									tbFloatW out[4])
 {
-	const float* rows[4] = {row0, row1, row2, row3};
-	for (int k = 0; k < 4; ++k)
-	{
-		for (int i = 0; i < 4; ++i)
-		{
-			out[k].v[i] = rows[i][k];
-		}
-	}
-}
-
-static inline void tbTransposeStoreW(float* row0, float* row1, float* row2, float* row3, const tbFloatW in[4])
-{
-	float* rows[4] = {row0, row1, row2, row3};
+	const void* rows[4] = {row0, row1, row2, row3};
 	for (int i = 0; i < 4; ++i)
 	{
+		float row[4];
+		memcpy(row, rows[i], sizeof(row));
 		for (int k = 0; k < 4; ++k)
 		{
-			rows[i][k] = in[k].v[i];
+			out[k].v[i] = row[k];
 		}
 	}
 }
 
-static inline float tbLaneW(tbFloatW a, int lane)
+static inline void tbTransposeStoreW(void* row0, void* row1, void* row2, void* row3, const tbFloatW in[4])
 {
-	return a.v[lane];
-}
-
-static inline tbFloatW tbSetLaneW(tbFloatW a, int lane, float value)
-{
-	a.v[lane] = value;
-	return a;
+	void* rows[4] = {row0, row1, row2, row3};
+	for (int i = 0; i < 4; ++i)
+	{
+		float row[4] = {in[0].v[i], in[1].v[i], in[2].v[i], in[3].v[i]};
+		memcpy(rows[i], row, sizeof(row));
+	}
 }
 
 #endif
+
+/// clamp(a, lower, upper) per lane with the scalar rule a < lower ? lower : (a > upper ? upper : a):
+/// a NaN bound lets a through unchanged, as tbClampFloat does (min/max would return the bound).
+static inline tbFloatW tbClampW(tbFloatW a, tbFloatW lower, tbFloatW upper)
+{
+	tbFloatW below = tbSelectGreaterW(a, upper, upper, a);
+	return tbSelectGreaterW(lower, a, lower, below);
+}
+
+/// Lane `lane` of a wide float in memory, read or written through its bytes (well defined for
+/// either representation; compilers turn the memcpy into one move).
+static inline float tbGetLaneW(const tbFloatW* w, int lane)
+{
+	float value;
+	memcpy(&value, (const char*)w + sizeof(float) * (size_t)lane, sizeof(float));
+	return value;
+}
+
+static inline void tbSetLaneW(tbFloatW* w, int lane, float value)
+{
+	memcpy((char*)w + sizeof(float) * (size_t)lane, &value, sizeof(float));
+}
 
 /// a·b + c·d per lane, evaluated as (a·b) + (c·d): the scalar order, no fused multiply-add.
 static inline tbFloatW tbMulAddPairW(tbFloatW a, tbFloatW b, tbFloatW c, tbFloatW d)
