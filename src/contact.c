@@ -12,22 +12,45 @@
 
 #include <string.h>
 
+// Material mixing. A callback's answer is user input arriving mid-step: one the solver cannot use
+// (friction NaN or negative; restitution NaN, negative or infinite) is reported and replaced by the
+// default mix, so the contact still behaves. Infinite friction is allowed: it never slides, in
+// either contact solver (the default mix also reaches it, for frictions above about 1.8e19).
 static float tbMixFriction(const tbWorld* world, const tbShape* a, const tbShape* b)
 {
-	if (world->def.frictionCallback != NULL)
+	float mixed = sqrtf(a->friction * b->friction);
+	if (world->def.frictionCallback == NULL)
 	{
-		return world->def.frictionCallback(a->friction, a->userMaterialId, b->friction, b->userMaterialId);
+		return mixed;
 	}
-	return sqrtf(a->friction * b->friction);
+	float value = world->def.frictionCallback(a->friction, a->userMaterialId, b->friction, b->userMaterialId);
+	if (!(value >= 0.0f))
+	{
+		tbReportError("tbWorld_Step", "frictionCallback returned %g for frictions %g and %g; it must return a number >= 0 "
+					  "(the default mix sqrt(a*b) = %g is used)", (double)value, (double)a->friction,
+					  (double)b->friction, (double)mixed);
+		return mixed;
+	}
+	return value;
 }
 
 static float tbMixRestitution(const tbWorld* world, const tbShape* a, const tbShape* b)
 {
-	if (world->def.restitutionCallback != NULL)
+	float mixed = tbMaxFloat(a->restitution, b->restitution);
+	if (world->def.restitutionCallback == NULL)
 	{
-		return world->def.restitutionCallback(a->restitution, a->userMaterialId, b->restitution, b->userMaterialId);
+		return mixed;
 	}
-	return tbMaxFloat(a->restitution, b->restitution);
+	float value =
+		world->def.restitutionCallback(a->restitution, a->userMaterialId, b->restitution, b->userMaterialId);
+	if (!(value >= 0.0f) || tbIsValidFloat(value) == false)
+	{
+		tbReportError("tbWorld_Step", "restitutionCallback returned %g for restitutions %g and %g; it must return a "
+					  "finite number >= 0 (the default mix max(a, b) = %g is used)", (double)value,
+					  (double)a->restitution, (double)b->restitution, (double)mixed);
+		return mixed;
+	}
+	return value;
 }
 
 static void tbLinkEdge(tbWorld* world, int contactId, int edgeIndex)

@@ -465,6 +465,27 @@ static float MinFriction(float a, int ma, float b, int mb)
 	return a < b ? a : b;
 }
 
+// A 1 m box on a static ground slab (top at y = 0), each shape with its own friction.
+static tbWorldId BoxOnGround(const tbWorldDef* def, tbVec2 position, tbVec2 velocity, float boxFriction,
+							 float groundFriction, tbBodyId* box)
+{
+	tbWorldId world = tbCreateWorld(def);
+	tbBodyDef bd = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	sd.friction = groundFriction;
+	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbCreatePolygonShape(ground, &sd, &groundBox);
+	bd.type = tb_dynamicBody;
+	bd.position = position;
+	bd.linearVelocity = velocity;
+	*box = tbCreateBody(world, &bd);
+	sd.friction = boxFriction;
+	tbPolygon square = tbMakeSquare(0.5f);
+	tbCreatePolygonShape(*box, &sd, &square);
+	return world;
+}
+
 /// A 1 m box (friction 0.8) sliding at 5 m/s on ground (friction 0.2), g = 10: with the default
 /// mix sqrt(0.8·0.2) = 0.4 it stops after v²/(2μg) = 3.125 m; with a callback returning the
 /// minimum (0.2), after 6.25 m. Tolerance 3%: the solver issue's slide test bound (the discrete
@@ -473,20 +494,8 @@ static float SlideDistance(tbFrictionCallback* callback)
 {
 	tbWorldDef def = tbDefaultWorldDef();
 	def.frictionCallback = callback;
-	tbWorldId world = tbCreateWorld(&def);
-	tbBodyDef bd = tbDefaultBodyDef();
-	tbBodyId ground = tbCreateBody(world, &bd);
-	tbShapeDef sd = tbDefaultShapeDef();
-	sd.friction = 0.2f;
-	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
-	tbCreatePolygonShape(ground, &sd, &groundBox);
-	bd.type = tb_dynamicBody;
-	bd.position = tbMakeVec2(0.0f, 0.5f);
-	bd.linearVelocity = tbMakeVec2(5.0f, 0.0f);
-	tbBodyId box = tbCreateBody(world, &bd);
-	sd.friction = 0.8f;
-	tbPolygon square = tbMakeSquare(0.5f);
-	tbCreatePolygonShape(box, &sd, &square);
+	tbBodyId box;
+	tbWorldId world = BoxOnGround(&def, tbMakeVec2(0.0f, 0.5f), tbMakeVec2(5.0f, 0.0f), 0.8f, 0.2f, &box);
 	for (int i = 0; i < 240; ++i)
 	{
 		tbWorld_Step(world, 1.0f / 60.0f, 4);
@@ -494,6 +503,46 @@ static float SlideDistance(tbFrictionCallback* callback)
 	float distance = tbBody_GetPosition(box).x;
 	tbDestroyWorld(world);
 	return distance;
+}
+
+static float NaNFriction(float a, int ma, float b, int mb)
+{
+	(void)a, (void)ma, (void)b, (void)mb;
+	return NAN;
+}
+
+static float InfiniteRestitution(float a, int ma, float b, int mb)
+{
+	(void)a, (void)ma, (void)b, (void)mb;
+	return INFINITY;
+}
+
+Test(bad_input, mixing_callback_answers_replaced_by_default, .init = SetupErrors, .fini = TeardownErrors)
+{
+	// A friction callback answering NaN is reported once (one contact is made) and the default mix
+	// is used: the box slides the default 3.125 m (closed form and tolerance as above).
+	int before = s_errors;
+	float distance = SlideDistance(NaNFriction);
+	ExpectError(before, "tbWorld_Step", "frictionCallback");
+	cr_assert_float_eq(distance, 3.125f, 0.03f * 3.125f, "NaN callback slid %.4f m", (double)distance);
+
+	// An infinite restitution is reported and replaced by max(0, 0) = 0: a box dropped 1 m onto the
+	// ground lands and rests at its height 0.5 m after 2 s (an infinite rebound would send it to
+	// infinity or NaN).
+	tbWorldDef def = tbDefaultWorldDef();
+	def.restitutionCallback = InfiniteRestitution;
+	tbBodyId box;
+	tbWorldId world = BoxOnGround(&def, tbMakeVec2(0.0f, 1.5f), tb_vec2_zero, 0.6f, 0.6f, &box);
+	before = s_errors;
+	for (int i = 0; i < 120; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	ExpectError(before, "tbWorld_Step", "restitutionCallback");
+	tbVec2 p = tbBody_GetPosition(box);
+	cr_assert(isfinite(p.y) && fabsf(p.y - 0.5f) < 0.01f, "box at height %f, rests at 0.5 (0.01 m: twice the slop)",
+			  (double)p.y);
+	tbDestroyWorld(world);
 }
 
 Test(world, friction_mixing_default_and_callback)

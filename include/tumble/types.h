@@ -38,10 +38,12 @@ typedef enum tbSolverMethod
 	tb_solverMethodCount
 } tbSolverMethod;
 
-/// Friction mixing: return the friction of a pair. Default sqrt(frictionA · frictionB).
+/// Friction mixing: return the friction of a pair (≥ 0; infinity never slides). Default
+/// sqrt(frictionA · frictionB). A NaN or negative answer is reported and the default used.
 typedef float tbFrictionCallback(float frictionA, int userMaterialIdA, float frictionB, int userMaterialIdB);
 
-/// Restitution mixing. Default max(restitutionA, restitutionB).
+/// Restitution mixing: a finite number ≥ 0. Default max(restitutionA, restitutionB). Any other
+/// answer is reported and the default used.
 typedef float tbRestitutionCallback(float restitutionA, int userMaterialIdA, float restitutionB, int userMaterialIdB);
 
 /// World definition: start from tbDefaultWorldDef().
