@@ -49,19 +49,16 @@ static inline int tbSolveOrderBucket(int contactId)
 static void tbOrderSolverContacts(tbWorld* world)
 {
 	int n = world->solverContactCount;
-	if (n < 2)
-	{
-		return;
-	}
-	// islandStack is free scratch here: the sleep stage uses it only after the solve.
-	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, n);
+	TB_ARRAY_RESERVE(world->solverContactsById, world->solverContactsByIdCapacity, n);
+	TB_ARRAY_RESERVE(world->solverSlots, world->solverSlotCapacity, n);
 	int* ids = world->solverContacts;
-	int* scratch = world->islandStack;
+	int* byId = world->solverContactsById;
+	int* slots = world->solverSlots;
 	int offsets[TB_SOLVE_ORDER_BUCKETS] = {0};
 	for (int i = 0; i < n; ++i)
 	{
 		int id = ids[i];
-		scratch[i] = id;
+		byId[i] = id;
 		offsets[tbSolveOrderBucket(id)] += 1;
 	}
 	int offset = 0;
@@ -71,10 +68,13 @@ static void tbOrderSolverContacts(tbWorld* world)
 		offsets[k] = offset;
 		offset += count;
 	}
+	// Stable scatter: contact byId[i] is solved at position slots[i].
 	for (int i = 0; i < n; ++i)
 	{
-		int id = scratch[i];
-		ids[offsets[tbSolveOrderBucket(id)]++] = id;
+		int id = byId[i];
+		int slot = offsets[tbSolveOrderBucket(id)]++;
+		slots[i] = slot;
+		ids[slot] = id;
 	}
 }
 

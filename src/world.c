@@ -217,6 +217,8 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->awakeBodies, w->awakeBodyCapacity);
 	TB_ARRAY_FREE(w->stepContacts, w->stepContactCapacity);
 	TB_ARRAY_FREE(w->solverContacts, w->solverContactCapacity);
+	TB_ARRAY_FREE(w->solverContactsById, w->solverContactsByIdCapacity);
+	TB_ARRAY_FREE(w->solverSlots, w->solverSlotCapacity);
 	TB_ARRAY_FREE(w->touchingContacts, w->touchingContactCapacity);
 	TB_ARRAY_FREE(w->islandStack, w->islandStackCapacity);
 	TB_ARRAY_FREE(w->islandBodies, w->islandBodyCapacity);

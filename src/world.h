@@ -176,8 +176,14 @@ typedef struct tbWorld
 	/// Per-step scratch: contacts gathered for the narrow phase, touching contacts for the solver.
 	int* stepContacts;
 	int stepContactCount, stepContactCapacity;
-	int* solverContacts;
+	int* solverContacts; ///< in solve order (island.c): constraint i is contact solverContacts[i]
 	int solverContactCount, solverContactCapacity;
+	/// The same contacts in contact-id order, and each one's index in solverContacts: the solver
+	/// prepares and stores by walking contact memory in order (island.c, contact_solver.c).
+	int* solverContactsById;
+	int solverContactsByIdCapacity;
+	int* solverSlots;
+	int solverSlotCapacity;
 	/// Touching non-sensor contacts in stepContacts order, recorded by the collide stage, and the
 	/// awake-set version at its gather: the island stage's fast path (island.c).
 	int* touchingContacts;

@@ -18,6 +18,7 @@ typedef struct MiniWorld
 	tbContact contact;
 	int awake[1];
 	int solverContacts[1];
+	int solverSlots[1];
 } MiniWorld;
 
 static void InitMini(MiniWorld* m, tbSolverMethod method, tbVec2 velocity, float separation)
@@ -32,6 +33,8 @@ static void InitMini(MiniWorld* m, tbSolverMethod method, tbVec2 velocity, float
 	m->world.awakeBodies = m->awake;
 	m->world.awakeBodyCount = 1;
 	m->world.solverContacts = m->solverContacts;
+	m->world.solverContactsById = m->solverContacts; // one contact: both orders agree
+	m->world.solverSlots = m->solverSlots;
 	m->world.solverContactCount = 1;
 	for (int i = 0; i < 2; ++i)
 	{
@@ -50,6 +53,8 @@ static void InitMini(MiniWorld* m, tbSolverMethod method, tbVec2 velocity, float
 
 	m->contact.shapeIdA = 0;
 	m->contact.shapeIdB = 1;
+	m->contact.edges[0].bodyId = 0;
+	m->contact.edges[1].bodyId = 1;
 	m->contact.friction = 0.1f;
 	m->contact.manifold.normal = tbMakeVec2(0.0f, 1.0f);
 	m->contact.manifold.pointCount = 1;
