@@ -97,7 +97,7 @@ void tbColorConstraints(tbStepContext* context)
 	int maskBytes = (int)sizeof(uint32_t) * (bodyCount + 1);
 	int colorBytes = n;
 	int scratchBytes = maskBytes + colorBytes;
-	char* scratch = tbAlloc(tbMaxInt(scratchBytes, 1));
+	char* scratch = tbArenaAlloc(&context->world->stepArena, scratchBytes);
 	uint32_t* bodyMasks = (uint32_t*)scratch;
 	uint8_t* colors = (uint8_t*)(scratch + maskBytes);
 	memset(bodyMasks, 0, (size_t)maskBytes);
@@ -114,12 +114,12 @@ void tbColorConstraints(tbStepContext* context)
 	blockStart[TB_GRAPH_COLOR_COUNT] = blockCount;
 	int overflowCount = counts[TB_GRAPH_COLOR_COUNT];
 
-	// One allocation: wide blocks, then the overflow list. tbAlloc returns TB_ALIGNMENT-aligned
-	// memory (the allocator hook must honour it), enough for the 16-byte wide floats.
+	// One piece of the step arena: wide blocks, then the overflow list. The arena hands out
+	// 32-byte aligned memory, enough for the 16-byte wide floats.
 	int wideBytes = (int)sizeof(tbWideContactConstraint) * blockCount;
 	int overflowBytes = (int)sizeof(int) * overflowCount;
 	context->wideMemoryBytes = tbMaxInt(wideBytes + overflowBytes, 1);
-	context->wideMemory = tbAlloc(context->wideMemoryBytes);
+	context->wideMemory = tbArenaAlloc(&context->world->stepArena, context->wideMemoryBytes);
 	context->wideConstraints = (tbWideContactConstraint*)context->wideMemory;
 	context->wideCount = blockCount;
 	context->overflowConstraints = (int*)((char*)context->wideMemory + wideBytes);
@@ -151,15 +151,13 @@ void tbColorConstraints(tbStepContext* context)
 		tbWideContactConstraint* block = context->wideConstraints + blockStart[k] + slot / TB_SIMD_WIDTH;
 		tbPackWideLane(block, slot % TB_SIMD_WIDTH, context->constraints + i, i);
 	}
-	tbFree(scratch, tbMaxInt(scratchBytes, 1));
 }
 
 void tbReleaseColors(tbStepContext* context)
 {
 	if (context->wideMemory != NULL)
 	{
-		tbFree(context->wideMemory, context->wideMemoryBytes);
-		context->wideMemory = NULL;
+		context->wideMemory = NULL; // step arena memory: released when the step ends
 		context->wideConstraints = NULL;
 		context->wideCount = 0;
 		context->overflowCount = 0;

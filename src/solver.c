@@ -20,27 +20,18 @@
 
 #include <string.h>
 
-typedef struct tbStepBuffers
-{
-	void* memory;
-	int byteCount;
-} tbStepBuffers;
-
-// One allocation for all per-step arrays, carved in 32-byte aligned pieces.
-static tbStepBuffers tbAllocateStep(tbStepContext* context, int bodyCount, int constraintCount)
+// The per-step arrays, from the step arena (arena.h), carved in 32-byte aligned pieces.
+static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraintCount)
 {
 	int bodyBytes = (int)sizeof(tbSolverBody) * (bodyCount + 1);
 	int motionBytes = (((int)sizeof(tbSolverMotion) * bodyCount + 31) / 32) * 32;
 	int constraintBytes = (int)sizeof(tbContactConstraint) * constraintCount;
-	tbStepBuffers buffers = {NULL, bodyBytes + motionBytes + constraintBytes};
-	buffers.memory = tbAlloc(buffers.byteCount);
-	char* p = buffers.memory;
+	char* p = tbArenaAlloc(&context->world->stepArena, bodyBytes + motionBytes + constraintBytes);
 	context->bodies = (tbSolverBody*)p;
 	context->motions = (tbSolverMotion*)(p + bodyBytes);
 	context->constraints = (tbContactConstraint*)(p + bodyBytes + motionBytes);
 	context->bodyCount = bodyCount;
 	context->constraintCount = constraintCount;
-	return buffers;
 }
 
 static void tbGatherBodies(tbStepContext* context)
@@ -194,7 +185,7 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	context.maxAngularSpeed = TB_MAX_ROTATION / timeStep;
 	context.enableWarmStarting = world->def.enableWarmStarting;
 
-	tbStepBuffers buffers = tbAllocateStep(&context, world->awakeBodyCount, world->solverContactCount);
+	tbAllocateStep(&context, world->awakeBodyCount, world->solverContactCount);
 	tbGatherBodies(&context);
 	tbPrepareMethod(&context);
 	tbPrepareContacts(&context);
@@ -222,5 +213,4 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbApplyRestitution(&context);
 	tbStoreImpulses(&context);
 	tbScatterBodies(&context);
-	tbFree(buffers.memory, buffers.byteCount);
 }

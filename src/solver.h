@@ -153,8 +153,9 @@ typedef struct tbStepContext
 	int overflowCount;
 	int colorCount;											///< colours in use this step
 	int colorBlockStart[TB_GRAPH_COLOR_COUNT + 1]; ///< blocks of colour k: [start[k], start[k + 1])
-	void* wideMemory;
+	void* wideMemory; ///< step arena
 	int wideMemoryBytes;
+	void* ngsScratch; ///< solver_ngs.c's constraints, step arena (taken at the first sub-step)
 
 	tbSoftness contactSoftness; ///< dynamic vs dynamic
 	tbSoftness staticSoftness;	///< dynamic vs static or kinematic

@@ -571,8 +571,12 @@ static void tbSolveTimeOfImpact(tbStepContext* context, tbNGSConstraint* infos)
 void tbNGSSubStep(tbStepContext* context)
 {
 	const tbWorldDef* def = &context->world->def;
-	int byteCount = (int)sizeof(tbNGSConstraint) * tbMaxInt(context->constraintCount, 1);
-	tbNGSConstraint* infos = tbAlloc(byteCount);
+	if (context->ngsScratch == NULL)
+	{
+		int byteCount = (int)sizeof(tbNGSConstraint) * context->constraintCount;
+		context->ngsScratch = tbArenaAlloc(&context->world->stepArena, byteCount); // once per step
+	}
+	tbNGSConstraint* infos = context->ngsScratch;
 	tbBuildNGSConstraints(context, infos);
 
 	int velocityIterations = tbMaxInt(def->velocityIterations, 1);
@@ -592,5 +596,4 @@ void tbNGSSubStep(tbStepContext* context)
 	{
 		tbSolveTimeOfImpact(context, infos);
 	}
-	tbFree(infos, byteCount);
 }

@@ -208,6 +208,7 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 
 static void tbFreeWorldArrays(tbWorld* w)
 {
+	tbArenaDestroy(&w->stepArena);
 	TB_ARRAY_FREE(w->bodies, w->bodyCapacity);
 	TB_ARRAY_FREE(w->bodyFree, w->bodyFreeCapacity);
 	TB_ARRAY_FREE(w->shapes, w->shapeCapacity);
@@ -364,6 +365,7 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 
 	tbUpdateCounters(world);
 	tbUpdateAutoBroadPhase(world);
+	tbArenaReset(&world->stepArena);
 	world->profile.step = tbGetMilliseconds(stepTicks);
 	world->locked = false;
 	return true;

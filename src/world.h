@@ -3,6 +3,7 @@
 // detectable. Hot per-step solver data is gathered into dense arrays by the solver stage.
 #pragma once
 
+#include "arena.h"
 #include "broad_phase.h"
 #include "core.h"
 #include "table.h"
@@ -192,6 +193,7 @@ typedef struct tbWorld
 	uint32_t gatheredVersion; ///< awakeSetVersion when the collide stage gathered its contacts
 	int* islandStack;
 	int islandStackCapacity;
+	tbArena stepArena; ///< temporaries of the step (solver arrays, colours), reset when it ends
 	int* islandBodies;
 	int islandBodyCapacity;
 

@@ -80,8 +80,11 @@ static bool Moves(int index)
 Test(constraint_graph, colours_are_independent_sets_in_input_order)
 {
 	tbContactConstraint constraints[64];
+	tbWorld world; // only its step arena is used
+	memset(&world, 0, sizeof(world));
 	tbStepContext context;
 	memset(&context, 0, sizeof(context));
+	context.world = &world;
 	context.bodyCount = BODY_COUNT;
 	context.constraints = constraints;
 	context.constraintCount = BuildConstraints(constraints);
@@ -181,18 +184,23 @@ Test(constraint_graph, colours_are_independent_sets_in_input_order)
 	cr_expect_eq(context.colorCount, TB_GRAPH_COLOR_COUNT);
 	tbReleaseColors(&context);
 	cr_expect_null(context.wideConstraints);
+	tbArenaDestroy(&world.stepArena);
 }
 
 Test(constraint_graph, no_constraints_no_blocks)
 {
+	tbWorld world; // only its step arena is used
+	memset(&world, 0, sizeof(world));
 	tbStepContext context;
 	memset(&context, 0, sizeof(context));
+	context.world = &world;
 	context.bodyCount = 3;
 	tbColorConstraints(&context);
 	cr_expect_eq(context.wideCount, 0);
 	cr_expect_eq(context.overflowCount, 0);
 	cr_expect_eq(context.colorCount, 0);
 	tbReleaseColors(&context);
+	tbArenaDestroy(&world.stepArena);
 }
 
 // ---------------------------------------------------------------------------------------------

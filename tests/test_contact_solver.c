@@ -64,6 +64,14 @@ static void InitMini(MiniWorld* m, tbSolverMethod method, tbVec2 velocity, float
 	m->contact.manifold.points[0].separation = separation;
 }
 
+// The solve stage takes its arrays from the world's step arena; tbWorld_Step releases them when
+// the step ends, which the mini world does here.
+static void SolveStage(MiniWorld* m, float timeStep, int subStepCount)
+{
+	tbSolveStage(&m->world, timeStep, subStepCount);
+	tbArenaDestroy(&m->world.stepArena);
+}
+
 Test(contact_solver, softness_coefficients)
 {
 	tbSoftness rigid = tbMakeSoftness(0.0f, 10.0f, 1.0f / 240.0f);
@@ -88,7 +96,7 @@ Test(contact_solver, normal_impulse_stops_approach)
 		MiniWorld m;
 		InitMini(&m, (tbSolverMethod)method, tbMakeVec2(0.0f, -1.0f), 0.0f);
 		int bytes = tbGetByteCount();
-		tbSolveStage(&m.world, 1.0f / 60.0f, 4);
+		SolveStage(&m, 1.0f / 60.0f, 4);
 		cr_expect_eq(tbGetByteCount(), bytes, "solve stage leaked (method %d)", method);
 		const tbManifoldPoint* mp = m.contact.manifold.points;
 		// Soft contacts leave the push-out of overlap to later steps; at s = 0 all are rigid: 1e-4.
@@ -106,7 +114,7 @@ Test(contact_solver, friction_is_clamped_to_the_cone)
 {
 	MiniWorld m;
 	InitMini(&m, tb_solverBaumgarte, tbMakeVec2(5.0f, -1.0f), 0.0f);
-	tbSolveStage(&m.world, 1.0f / 60.0f, 1);
+	SolveStage(&m, 1.0f / 60.0f, 1);
 	// One sub-step: λn = 1, |λt| = μ·λn = 0.1, so vx = 4.9 (float rounding only).
 	cr_expect(fabsf(m.bodies[1].linearVelocity.x - 4.9f) < 1e-5f, "vx %f", m.bodies[1].linearVelocity.x);
 	cr_expect(fabsf(fabsf(m.contact.manifold.points[0].tangentImpulse) - 0.1f) < 1e-6f);
@@ -120,7 +128,7 @@ Test(contact_solver, restitution_reverses_normal_velocity)
 		MiniWorld m;
 		InitMini(&m, (tbSolverMethod)method, tbMakeVec2(0.0f, -4.0f), 0.0f);
 		m.contact.restitution = 0.5f;
-		tbSolveStage(&m.world, 1.0f / 60.0f, 4);
+		SolveStage(&m, 1.0f / 60.0f, 4);
 		cr_expect(fabsf(m.bodies[1].linearVelocity.y - 2.0f) < 1e-4f, "method %d: vy %f", method,
 				  m.bodies[1].linearVelocity.y);
 	}
@@ -133,7 +141,7 @@ Test(contact_solver, speculative_gap_lets_bodies_approach)
 	{
 		MiniWorld m;
 		InitMini(&m, (tbSolverMethod)method, tbMakeVec2(0.0f, -1.0f), 0.1f);
-		tbSolveStage(&m.world, 1.0f / 60.0f, 4);
+		SolveStage(&m, 1.0f / 60.0f, 4);
 		cr_expect(m.bodies[1].linearVelocity.y == -1.0f, "method %d", method);
 		cr_expect(m.contact.manifold.points[0].maxNormalImpulse == 0.0f);
 		// Moved by v·Δt (exact up to float rounding of four sub-steps).
@@ -148,7 +156,7 @@ Test(contact_solver, speculative_gap_stops_at_contact)
 	{
 		MiniWorld m;
 		InitMini(&m, (tbSolverMethod)method, tbMakeVec2(0.0f, -3.0f), 0.005f);
-		tbSolveStage(&m.world, 1.0f / 60.0f, 4);
+		SolveStage(&m, 1.0f / 60.0f, 4);
 		float travel = 0.5f - m.bodies[1].center.y;
 		cr_expect(fabsf(travel - 0.005f) < 1e-5f, "method %d: travelled %f", method, travel);
 	}
@@ -161,12 +169,12 @@ Test(contact_solver, warm_start_off_ignores_stored_impulse)
 	InitMini(&m, tb_solverSoft, tbMakeVec2(0.0f, 0.0f), 0.0f);
 	m.world.def.enableWarmStarting = false;
 	m.contact.manifold.points[0].normalImpulse = 100.0f;
-	tbSolveStage(&m.world, 1.0f / 60.0f, 4);
+	SolveStage(&m, 1.0f / 60.0f, 4);
 	cr_expect(fabsf(m.bodies[1].linearVelocity.y) < 1e-6f);
 
 	InitMini(&m, tb_solverSoft, tbMakeVec2(0.0f, 0.0f), 0.0f);
 	m.contact.manifold.points[0].normalImpulse = 100.0f;
-	tbSolveStage(&m.world, 1.0f / 60.0f, 4);
+	SolveStage(&m, 1.0f / 60.0f, 4);
 	// With warm starting the stale impulse is applied, then the solve takes back what it can:
 	// the body must not leave faster than the relax pass allows (it ends separating, > 0).
 	cr_expect(m.bodies[1].linearVelocity.y >= 0.0f);
@@ -180,7 +188,7 @@ Test(contact_solver, forces_cleared_and_transform_written)
 	m.bodies[1].force = tbMakeVec2(6.0f, 0.0f);
 	m.bodies[1].localCenter = tbMakeVec2(0.25f, 0.0f);
 	m.bodies[1].angularVelocity = 1.0f;
-	tbSolveStage(&m.world, 1.0f / 60.0f, 4);
+	SolveStage(&m, 1.0f / 60.0f, 4);
 	cr_expect(m.bodies[1].force.x == 0.0f && m.bodies[1].torque == 0.0f);
 	// v = 1 + F/m·Δt = 1.1 m/s after the step.
 	cr_expect(fabsf(m.bodies[1].linearVelocity.x - 1.1f) < 1e-5f);
