@@ -118,6 +118,7 @@ void tbColorConstraints(tbStepContext* context)
 	// 32-byte aligned memory, enough for the 16-byte wide floats.
 	int wideBytes = (int)sizeof(tbWideContactConstraint) * blockCount;
 	int overflowBytes = (int)sizeof(int) * overflowCount;
+	context->wideLocation = tbArenaAlloc(&context->world->stepArena, (int)sizeof(int) * n);
 	context->wideMemoryBytes = tbMaxInt(wideBytes + overflowBytes, 1);
 	context->wideMemory = tbArenaAlloc(&context->world->stepArena, context->wideMemoryBytes);
 	context->wideConstraints = (tbWideContactConstraint*)context->wideMemory;
@@ -145,11 +146,14 @@ void tbColorConstraints(tbStepContext* context)
 		if (k == TB_GRAPH_COLOR_COUNT)
 		{
 			context->overflowConstraints[context->overflowCount++] = i;
+			context->wideLocation[i] = -1;
 			continue;
 		}
 		int slot = filled[k]++;
-		tbWideContactConstraint* block = context->wideConstraints + blockStart[k] + slot / TB_SIMD_WIDTH;
-		tbPackWideLane(block, slot % TB_SIMD_WIDTH, context->constraints + i, i);
+		int location = blockStart[k] * TB_SIMD_WIDTH + slot;
+		context->wideLocation[i] = location;
+		tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH,
+					   context->constraints + i, i);
 	}
 }
 
@@ -158,6 +162,7 @@ void tbReleaseColors(tbStepContext* context)
 	if (context->wideMemory != NULL)
 	{
 		context->wideMemory = NULL; // step arena memory: released when the step ends
+		context->wideLocation = NULL;
 		context->wideConstraints = NULL;
 		context->wideCount = 0;
 		context->overflowCount = 0;

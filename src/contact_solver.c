@@ -136,7 +136,7 @@ static void tbEstimateImpactVelocity(const tbWorld* world, const tbBody* bodyA, 
 	}
 }
 
-static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact, tbContactConstraint* c)
+static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbContactConstraint* c)
 {
 	tbWorld* world = context->world;
 	int bodyIdA = contact->edges[0].bodyId; // the bodies of shapes A and B (contact.c)
@@ -163,6 +163,7 @@ static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact
 	c->friction = contact->friction;
 	c->restitution = contact->restitution;
 	c->pointCount = manifold->pointCount;
+	context->restitutionCount += c->restitution != 0.0f ? 1 : 0;
 
 	const tbSolverBody* sA = context->bodies + c->indexA;
 	const tbSolverBody* sB = context->bodies + c->indexB;
@@ -196,6 +197,13 @@ static void tbPrepareConstraint(tbStepContext* context, const tbContact* contact
 		tbPrepareConstraintNGS(context, manifold, c);
 	}
 	tbEstimateImpactVelocity(world, bodyA, bodyB, manifold, c);
+
+	// The approach speed is final here: store it now, while the contact is in cache (hit events
+	// and the next step read it; the store after the solve writes only impulses).
+	for (int j = 0; j < c->pointCount; ++j)
+	{
+		contact->manifold.points[j].normalVelocity = c->points[j].relativeVelocity;
+	}
 }
 
 // Contacts are read in contact-id order (memory order) and each constraint is written to its
@@ -432,6 +440,10 @@ void tbApplyRestitution(tbStepContext* context)
 	{
 		return; // NGS at one sub-step (Box2D 2.4) applies restitution as a velocity bias in its iterations
 	}
+	if (context->restitutionCount == 0)
+	{
+		return; // no contact bounces (most piles): skip the walk over the constraints
+	}
 	float threshold = context->world->def.restitutionThreshold;
 	tbSolverBody* bodies = context->bodies;
 	for (int i = 0; i < context->constraintCount; ++i)
@@ -441,6 +453,10 @@ void tbApplyRestitution(tbStepContext* context)
 		if (e == 0.0f)
 		{
 			continue;
+		}
+		if (context->wideLocation != NULL && context->wideLocation[i] >= 0)
+		{
+			tbUnpackWideConstraint(context, i); // from now on the scalar copy holds its impulses
 		}
 		tbSolverBody* sA = bodies + c->indexA;
 		tbSolverBody* sB = bodies + c->indexB;
@@ -466,15 +482,26 @@ void tbApplyRestitution(tbStepContext* context)
 	}
 }
 
+// Impulses go back to the manifolds for the next step's warm start, walking the contacts in
+// contact-id order. A constraint solved in a wide lane is read from its lane (its scalar copy
+// holds the impulses of before the solve); the others from the scalar constraint.
 void tbStoreImpulses(tbStepContext* context)
 {
 	tbWorld* world = context->world;
 	const int* contactIds = world->solverContactsById;
 	const int* slots = world->solverSlots;
+	const int* wideLocation = context->wideLocation;
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
-		const tbContactConstraint* c = context->constraints + slots[i];
+		int index = slots[i];
 		tbManifold* manifold = &world->contacts[contactIds[i]].manifold;
+		int location = wideLocation != NULL ? wideLocation[index] : -1;
+		if (location >= 0)
+		{
+			tbLoadWideImpulses(context, location, manifold->pointCount, manifold->points);
+			continue;
+		}
+		const tbContactConstraint* c = context->constraints + index;
 		for (int j = 0; j < c->pointCount; ++j)
 		{
 			const tbContactConstraintPoint* cp = c->points + j;
@@ -482,7 +509,6 @@ void tbStoreImpulses(tbStepContext* context)
 			mp->normalImpulse = cp->normalImpulse;
 			mp->tangentImpulse = cp->tangentImpulse;
 			mp->maxNormalImpulse = cp->maxNormalImpulse;
-			mp->normalVelocity = cp->relativeVelocity;
 		}
 	}
 }

@@ -205,12 +205,11 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 		tbMethodSubStep(&context);
 	}
 
-	if (context.wideConstraints != NULL)
-	{
-		tbUnpackWideImpulses(&context);
-		tbReleaseColors(&context);
-	}
 	tbApplyRestitution(&context);
 	tbStoreImpulses(&context);
+	if (context.wideConstraints != NULL)
+	{
+		tbReleaseColors(&context);
+	}
 	tbScatterBodies(&context);
 }

@@ -144,6 +144,7 @@ typedef struct tbStepContext
 
 	tbContactConstraint* constraints; ///< in the order of world->solverContacts
 	int constraintCount;
+	int restitutionCount; ///< constraints with restitution > 0 (tbApplyRestitution skips when 0)
 
 	// Wide solver (null when the scalar reference solver runs): constraints grouped by colour in
 	// blocks of four, and the constraints that found no colour, by index.
@@ -151,6 +152,7 @@ typedef struct tbStepContext
 	int wideCount;
 	int* overflowConstraints;
 	int overflowCount;
+	int* wideLocation; ///< per constraint: block·TB_SIMD_WIDTH + lane, or −1 (overflow, or unpacked)
 	int colorCount;											///< colours in use this step
 	int colorBlockStart[TB_GRAPH_COLOR_COUNT + 1]; ///< blocks of colour k: [start[k], start[k + 1])
 	void* wideMemory; ///< step arena
@@ -186,7 +188,10 @@ void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex);
 void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactConstraint* c, int constraintIndex);
 void tbWarmStartContactsWide(tbStepContext* context);
 void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy);
-void tbUnpackWideImpulses(tbStepContext* context);
+/// Copy the impulses of the lane at `location` into manifold points.
+void tbLoadWideImpulses(const tbStepContext* context, int location, int pointCount, tbManifoldPoint* points);
+/// Copy a constraint's impulses from its lane to the scalar constraint, which holds them from then on.
+void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex);
 
 // One file per position-error method, the same two functions in the same order.
 // Prepare: set the softness the constraints will copy (before tbPrepareContacts).
