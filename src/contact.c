@@ -493,9 +493,10 @@ void tbCollideStage(tbWorld* world)
 void tbReportHitEvents(tbWorld* world)
 {
 	float threshold = world->def.hitEventThreshold;
+	// Contact-id order: the walk streams through contact memory (the solve order would not).
 	for (int i = 0; i < world->solverContactCount; ++i)
 	{
-		const tbContact* contact = world->contacts + world->solverContacts[i];
+		const tbContact* contact = world->contacts + world->solverContactsById[i];
 		if ((contact->flags & tb_contactEnableHits) == 0)
 		{
 			continue;
