@@ -155,6 +155,7 @@ static int tbAllocBodySlot(tbWorld* world)
 	TB_ARRAY_RESERVE(world->bodies, world->bodyCapacity, world->bodyHighWater + 1);
 	int id = world->bodyHighWater++;
 	memset(world->bodies + id, 0, sizeof(tbBody));
+	world->bodies[id].generation = world->bodyGenerationBase; // tbCreateBody adds one
 	return id;
 }
 

@@ -294,6 +294,7 @@ static int tbAllocShapeSlot(tbWorld* world)
 	TB_ARRAY_RESERVE(world->shapes, world->shapeCapacity, world->shapeHighWater + 1);
 	int id = world->shapeHighWater++;
 	memset(world->shapes + id, 0, sizeof(tbShape));
+	world->shapes[id].generation = world->shapeGenerationBase; // the creation adds one
 	return id;
 }
 

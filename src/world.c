@@ -8,10 +8,15 @@
 
 #include "array.h"
 
+#include <stddef.h>
 #include <string.h>
 
 static tbWorld* s_worlds[TB_MAX_WORLDS];
 static uint16_t s_worldGenerations[TB_MAX_WORLDS];
+// Per world slot: the largest body and shape generations handed out by the worlds that used the
+// slot (see tbWorld::bodyGenerationBase). Generations wrap at 2^16, like every generation.
+static uint16_t s_bodyGenerations[TB_MAX_WORLDS];
+static uint16_t s_shapeGenerations[TB_MAX_WORLDS];
 
 #define TB_WORLD_DEF_MAGIC 0x7B3A1C01
 
@@ -196,6 +201,8 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	world->worldId = (uint16_t)slot;
 	world->generation = (uint16_t)(s_worldGenerations[slot] + 1);
 	s_worldGenerations[slot] = world->generation;
+	world->bodyGenerationBase = s_bodyGenerations[slot];
+	world->shapeGenerationBase = s_shapeGenerations[slot];
 	world->inUse = true;
 	world->userData = def->userData;
 	tbHashSet_Create(&world->pairSet, 64);
@@ -204,6 +211,21 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	s_worlds[slot] = world;
 	tbWorldId id = {(uint16_t)(slot + 1), world->generation};
 	return id;
+}
+
+// The largest generation of the slots, counted from base (generations wrap at 2^16): a destroyed
+// object's slot holds its id's generation + 1, so this bounds every id the world handed out.
+static uint16_t tbLargestGeneration(uint16_t base, const void* slots, int count, size_t stride, size_t offset)
+{
+	uint16_t largest = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		uint16_t generation;
+		memcpy(&generation, (const char*)slots + (size_t)i * stride + offset, sizeof(generation));
+		uint16_t sinceBase = (uint16_t)(generation - base);
+		largest = sinceBase > largest ? sinceBase : largest;
+	}
+	return (uint16_t)(base + largest);
 }
 
 static void tbFreeWorldArrays(tbWorld* w)
@@ -243,6 +265,11 @@ void tbDestroyWorld(tbWorldId worldId)
 									   "between steps and outside callbacks");
 		return;
 	}
+	int slot = world->worldId;
+	s_bodyGenerations[slot] = tbLargestGeneration(world->bodyGenerationBase, world->bodies, world->bodyHighWater,
+												   sizeof(tbBody), offsetof(tbBody, generation));
+	s_shapeGenerations[slot] = tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapeHighWater,
+													sizeof(tbShape), offsetof(tbShape, generation));
 	tbBroadPhase_Destroy(&world->broadPhase);
 	tbHashSet_Destroy(&world->pairSet);
 	tbFreeWorldArrays(world);
