@@ -84,10 +84,28 @@ static bool tbCheckMethods(const tbWorldDef* def, const char* function)
 								"tb_solver* enum values");
 		return false;
 	}
-	if (def->velocityIterations < 1 || def->positionIterations < 0 || def->relaxIterations < 0)
+	if (def->velocityIterations < 1 || def->positionIterations < 0 || def->relaxIterations < 0 ||
+		def->velocityIterations > TB_MAX_ITERATIONS || def->positionIterations > TB_MAX_ITERATIONS ||
+		def->relaxIterations > TB_MAX_ITERATIONS)
 	{
-		tbReportError(function, "def iterations are %d velocity, %d position, %d relax (velocity must be >= 1, the "
-								"others >= 0)", def->velocityIterations, def->positionIterations, def->relaxIterations);
+		tbReportError(function, "def iterations are %d velocity, %d position, %d relax (velocity must be 1..%d, the "
+								"others 0..%d, TB_MAX_ITERATIONS)", def->velocityIterations, def->positionIterations,
+					  def->relaxIterations, TB_MAX_ITERATIONS, TB_MAX_ITERATIONS);
+		return false;
+	}
+	return true;
+}
+
+static bool tbCheckMaximumSpeed(const char* f, float speed)
+{
+	if (tbCheckPositive(f, "def->maximumLinearSpeed", speed) == false)
+	{
+		return false;
+	}
+	if (speed > TB_MAX_LINEAR_SPEED)
+	{
+		tbReportError(f, "def->maximumLinearSpeed is %g m/s, above TB_MAX_LINEAR_SPEED (%g m/s); pass at most that",
+					  (double)speed, (double)TB_MAX_LINEAR_SPEED);
 		return false;
 	}
 	return true;
@@ -112,7 +130,7 @@ static bool tbCheckWorldDef(const tbWorldDef* def)
 		   tbCheckPositive(f, "def->contactHertz", def->contactHertz) &&
 		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
 		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
-		   tbCheckPositive(f, "def->maximumLinearSpeed", def->maximumLinearSpeed) && tbCheckMethods(def, f);
+		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f);
 }
 
 /// Auto starts with the dynamic tree: it costs nothing for sleeping and static bodies, handles any
@@ -335,15 +353,17 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	{
 		return false;
 	}
-	if (tbIsValidFloat(timeStep) == false || timeStep <= 0.0f)
+	if (tbIsValidFloat(timeStep) == false || timeStep <= 0.0f || timeStep > TB_MAX_TIME_STEP)
 	{
-		tbReportError(f, "timeStep is %g (must be finite and > 0); pass the frame time in seconds, e.g. 1/60",
-					  (double)timeStep);
+		tbReportError(f, "timeStep is %g (must be > 0 and at most TB_MAX_TIME_STEP = %g s); pass the frame time in "
+						 "seconds, e.g. 1/60, and step a longer span in several calls", (double)timeStep,
+					  (double)TB_MAX_TIME_STEP);
 		return false;
 	}
-	if (subStepCount < 1)
+	if (subStepCount < 1 || subStepCount > TB_MAX_SUB_STEPS)
 	{
-		tbReportError(f, "subStepCount is %d (must be >= 1); 4 is typical", subStepCount);
+		tbReportError(f, "subStepCount is %d (must be 1..%d, TB_MAX_SUB_STEPS); 4 is typical", subStepCount,
+					  TB_MAX_SUB_STEPS);
 		return false;
 	}
 	if (world->locked)
