@@ -366,7 +366,16 @@ static void tbSolveSegment(tbSimplex* simplex)
 		return;
 	}
 
-	float inverse = 1.0f / (d12Weight1 + d12Weight2);
+	// Both weights are squared lengths; below FLT_MIN (shapes of ~1e-19 m) 1/sum overflows to
+	// infinity: such an edge is a point at this precision, keep w1.
+	float sum = d12Weight1 + d12Weight2;
+	if (sum < FLT_MIN)
+	{
+		simplex->v1.a = 1.0f;
+		simplex->count = 1;
+		return;
+	}
+	float inverse = 1.0f / sum;
 	simplex->v1.a = d12Weight1 * inverse;
 	simplex->v2.a = d12Weight2 * inverse;
 	simplex->count = 2;
@@ -394,6 +403,15 @@ static void tbSolveTriangle(tbSimplex* simplex)
 	tbVec2 e23 = tbSub(w3, w2);
 	float d23Weight1 = tbDot(w3, e23);
 	float d23Weight2 = -tbDot(w2, e23);
+
+	// Each edge's two weights sum to its squared length. An edge shorter than √FLT_MIN (~1e-19 m)
+	// would make 1/sum overflow: the triangle is a segment at this precision.
+	if (tbMinFloat(tbLengthSquared(e12), tbMinFloat(tbLengthSquared(e13), tbLengthSquared(e23))) < FLT_MIN)
+	{
+		simplex->count = 2;
+		tbSolveSegment(simplex);
+		return;
+	}
 
 	float n123 = tbCross(e12, e13);
 	float d123Weight1 = n123 * tbCross(w2, w3);
@@ -455,7 +473,7 @@ static void tbSolveTriangle(tbSimplex* simplex)
 	// input beyond the float range (coordinates near FLT_MAX, NaN). No interior answer is then
 	// trustworthy: keep the edge w1–w2, whose solution is always defined.
 	float sum = d123Weight1 + d123Weight2 + d123Weight3;
-	if ((sum > 0.0f) == false)
+	if ((sum >= FLT_MIN) == false)
 	{
 		simplex->count = 2;
 		tbSolveSegment(simplex);
