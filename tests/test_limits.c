@@ -429,3 +429,25 @@ Test(world_limits, tree_rebuild_with_leaves_spanning_more_than_float_max)
 	cr_assert_eq(tbDynamicTree_GetHeight(&tree), 2);
 	tbDynamicTree_Destroy(&tree);
 }
+
+Test(collision_input, distance_between_boxes_smaller_than_sqrt_flt_min_is_finite, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// Found by fuzz_collision: two 2e-20 m boxes (tbMakeBox accepts them) gave NaN witness points,
+	// because an edge's weights sum to its squared length, 4e-40 < FLT_MIN, and 1/sum overflowed.
+	tbPolygon a = tbMakeRoundedBox(1e-20f, 1e-20f, 1e-20f);
+	tbPolygon b = tbMakeBox(1e-20f, 1e-20f);
+	tbDistanceInput input;
+	memset(&input, 0, sizeof(input));
+	input.proxyA = tbMakeShapeProxy(&(tbGeometry){.type = tb_polygonShape, .polygon = a});
+	input.proxyB = tbMakeShapeProxy(&(tbGeometry){.type = tb_polygonShape, .polygon = b});
+	input.transformA = (tbTransform){{1e-20f, 1e-20f}, {0.950232625f, 0.311541259f}};
+	input.transformB = (tbTransform){{FLT_MIN, -1e-40f}, {1.0f, 1e-20f}};
+	input.useRadii = true;
+	tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL);
+	cr_assert(isfinite(out.pointA.x) && isfinite(out.pointA.y) && isfinite(out.pointB.x) && isfinite(out.pointB.y),
+			  "(%g, %g) (%g, %g)", (double)out.pointA.x, (double)out.pointA.y, (double)out.pointB.x,
+			  (double)out.pointB.y);
+	cr_assert(isfinite(out.distance) && out.distance >= 0.0f);
+	cr_assert_eq(s_errors, 0);
+}
