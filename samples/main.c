@@ -298,11 +298,12 @@ static int Export(const char* name)
 	{
 		return 1;
 	}
-	char* text = SceneFile_Export(scene);
+	char error[256] = "";
+	char* text = SceneFile_Export(scene, error, (int)sizeof(error));
 	Scene_Destroy(scene);
 	if (text == NULL)
 	{
-		return Fail("export: out of memory");
+		return Fail("export: %s", error);
 	}
 	fputs(text, stdout);
 	free(text);

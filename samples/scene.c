@@ -211,7 +211,9 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 	return def;
 }
 
-static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const char* name)
+// Create the body and its shapes. *refusedShape is the index of the first shape the library
+// refused, or stays as it was when every shape was created.
+static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const char* name, int* refusedShape)
 {
 	tbBodyDef def = tbDefaultBodyDef();
 	def.type = body->type;
@@ -238,9 +240,39 @@ static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const 
 		shapeDef.friction = shape->friction;
 		shapeDef.restitution = shape->restitution;
 		shapeDef.isSensor = shape->isSensor;
-		tbCreateShape(bodyId, &shapeDef, &shape->geometry);
+		if (TB_IS_NULL(tbCreateShape(bodyId, &shapeDef, &shape->geometry)) && *refusedShape < 0)
+		{
+			*refusedShape = i;
+		}
 	}
 	return bodyId;
+}
+
+bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize)
+{
+	tbWorldDef def = Scene_MakeWorldDef(scene, NULL);
+	tbWorldId worldId = tbCreateWorld(&def);
+	bool refused = TB_IS_NULL(worldId);
+	snprintf(item, (size_t)itemSize, "scene");
+	for (int i = 0; i < scene->bodyCount && refused == false; ++i)
+	{
+		int shapeIndex = -1;
+		tbBodyId bodyId = CreateSceneBody(worldId, scene->bodies + i, "", &shapeIndex);
+		refused = TB_IS_NULL(bodyId) || shapeIndex >= 0;
+		if (TB_IS_NULL(bodyId))
+		{
+			snprintf(item, (size_t)itemSize, "bodies[%d]", i);
+		}
+		else if (shapeIndex >= 0)
+		{
+			snprintf(item, (size_t)itemSize, "bodies[%d].shapes[%d]", i, shapeIndex);
+		}
+	}
+	if (TB_IS_NON_NULL(worldId))
+	{
+		tbDestroyWorld(worldId);
+	}
+	return refused;
 }
 
 SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
@@ -265,7 +297,8 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 	{
 		memcpy(world.names[i], scene->bodies[i].name, SCENE_NAME_SIZE);
 		world.names[i][SCENE_NAME_SIZE - 1] = '\0';
-		world.bodyIds[i] = CreateSceneBody(world.worldId, scene->bodies + i, world.names[i]);
+		int refusedShape = -1; // scene files are checked when loaded (Scene_FindRefusedItem)
+		world.bodyIds[i] = CreateSceneBody(world.worldId, scene->bodies + i, world.names[i], &refusedShape);
 	}
 	return world;
 }

@@ -121,6 +121,10 @@ SceneWorld Scene_BuildWorld(const Scene* scene, const SceneOverrides* overrides)
 /// Build into a world made from def (start it from Scene_MakeWorldDef).
 SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def);
 
+/// Build the scene into a scratch world; true when the library refuses a body or shape, with its
+/// path ("bodies[2].shapes[0]") in item. The library's error hook has then received the reason.
+bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize);
+
 /// Destroy the world and free the mapping.
 void SceneWorld_Destroy(SceneWorld* world);
 

@@ -191,7 +191,8 @@ static bool ReadBool(Parser* parser, const cJSON* object, const char* path, cons
 	return true;
 }
 
-static bool ReadInt(Parser* parser, const cJSON* object, const char* path, const char* key, int minimum, int* out)
+static bool ReadInt(Parser* parser, const cJSON* object, const char* path, const char* key, int minimum, int maximum,
+					int* out)
 {
 	const cJSON* item = Find(object, key);
 	if (item == NULL)
@@ -205,9 +206,9 @@ static bool ReadInt(Parser* parser, const cJSON* object, const char* path, const
 	{
 		return Fail(parser, child, "must be an integer");
 	}
-	if (value < minimum)
+	if (value < minimum || value > maximum)
 	{
-		return Fail(parser, child, "must be >= %d", minimum);
+		return Fail(parser, child, "must be %d..%d", minimum, maximum);
 	}
 	*out = (int)value;
 	return true;
@@ -550,6 +551,12 @@ static bool ReadShapes(Parser* parser, const cJSON* item, const char* path, Scen
 	{
 		return Fail(parser, path, "must be an array of shapes");
 	}
+	int count = cJSON_GetArraySize(item);
+	if (Scene_ShapeCount(scene) + count > SCENE_MAX_SHAPES)
+	{
+		return Fail(parser, path, "at most %d shapes in a scene (this one reaches %d)", SCENE_MAX_SHAPES,
+					Scene_ShapeCount(scene) + count);
+	}
 	int i = 0;
 	for (const cJSON* shapeItem = item->child; shapeItem != NULL; shapeItem = shapeItem->next, ++i)
 	{
@@ -645,6 +652,11 @@ static bool ReadBodies(Parser* parser, const cJSON* item, Scene* scene)
 	{
 		return Fail(parser, "bodies", "must be an array of bodies");
 	}
+	int count = cJSON_GetArraySize(item);
+	if (count > SCENE_MAX_BODIES)
+	{
+		return Fail(parser, "bodies", "at most %d bodies (has %d)", SCENE_MAX_BODIES, count);
+	}
 	int i = 0;
 	for (const cJSON* body = item->child; body != NULL; body = body->next, ++i)
 	{
@@ -656,6 +668,27 @@ static bool ReadBodies(Parser* parser, const cJSON* item, Scene* scene)
 		}
 	}
 	return true;
+}
+
+static bool CheckAtMost(Parser* parser, const char* path, const char* key, float value, float maximum)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return value <= maximum ? true : Fail(parser, child, "must be at most %g", (double)maximum);
+}
+
+// The library's own checks decide what a shape may be (sizes within TB_MAX_COORDINATE, a polygon
+// that is not too thin to be convex in float, a density whose mass stays finite, ...). Build the
+// scene into a scratch world and name the first body or shape the library refuses; its error
+// hook has printed the reason. A scene that loads is then a scene whose every part exists.
+static bool CheckBuilds(Parser* parser, const Scene* scene)
+{
+	char item[PATH_SIZE];
+	if (Scene_FindRefusedItem(scene, item, (int)sizeof(item)) == false)
+	{
+		return true;
+	}
+	return Fail(parser, item, "refused by the library (see its message above: size, thinness, density or position)");
 }
 
 static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
@@ -670,11 +703,12 @@ static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
 	return CheckKeys(parser, root, "", keys) && ReadVec2(parser, root, "", "gravity", &scene->gravity, false) &&
 		   ReadFloat(parser, root, "", "time_step", &scene->timeStep, false) &&
 		   CheckPositive(parser, "", "time_step", scene->timeStep) &&
-		   ReadInt(parser, root, "", "sub_steps", 1, &scene->subSteps) &&
-		   ReadInt(parser, root, "", "steps", 0, &scene->steps) &&
+		   CheckAtMost(parser, "", "time_step", scene->timeStep, TB_MAX_TIME_STEP) &&
+		   ReadInt(parser, root, "", "sub_steps", 1, TB_MAX_SUB_STEPS, &scene->subSteps) &&
+		   ReadInt(parser, root, "", "steps", 0, SCENE_MAX_STEPS, &scene->steps) &&
 		   ReadBool(parser, root, "", "enable_sleep", &scene->enableSleep) &&
 		   (methods == NULL || ReadMethods(parser, methods, &scene->methods)) &&
-		   ReadBodies(parser, Find(root, "bodies"), scene);
+		   ReadBodies(parser, Find(root, "bodies"), scene) && CheckBuilds(parser, scene);
 }
 
 // Line and column (from 1) of a position in text, for syntax errors.
@@ -779,7 +813,16 @@ typedef struct TextBuffer
 	size_t size;
 	size_t capacity;
 	bool failed;
+	char item[64];	   ///< the body or shape being written, for messages
+	char error[160];   ///< why the export failed
 } TextBuffer;
+
+// Every number is written by a %.9g conversion. A non-finite one would come out as inf or nan,
+// which JSON cannot spell and which would not reload: refuse the export and name the item.
+static bool WroteNonFinite(const char* format, const char* text)
+{
+	return strstr(format, "%.9g") != NULL && (strstr(text, "inf") != NULL || strstr(text, "nan") != NULL);
+}
 
 static void Append(TextBuffer* buffer, const char* format, ...)
 {
@@ -810,6 +853,13 @@ static void Append(TextBuffer* buffer, const char* format, ...)
 	va_start(args, format);
 	vsnprintf(buffer->data + buffer->size, (size_t)length + 1, format, args);
 	va_end(args);
+	if (WroteNonFinite(format, buffer->data + buffer->size))
+	{
+		snprintf(buffer->error, sizeof(buffer->error), "%s: a number is not finite (%s); JSON cannot hold it",
+				 buffer->item[0] != '\0' ? buffer->item : "scene", buffer->data + buffer->size);
+		buffer->failed = true;
+		return;
+	}
 	buffer->size += (size_t)length;
 }
 
@@ -993,8 +1043,9 @@ static void AppendBodyExtras(TextBuffer* buffer, const SceneBody* body)
 	}
 }
 
-static void AppendBody(TextBuffer* buffer, const SceneBody* body)
+static void AppendBody(TextBuffer* buffer, const SceneBody* body, int index)
 {
+	snprintf(buffer->item, sizeof(buffer->item), "bodies[%d]", index);
 	Append(buffer, "    {\"type\": \"%s\"", Scene_BodyTypeName(body->type));
 	if (body->name[0] != '\0')
 	{
@@ -1010,6 +1061,7 @@ static void AppendBody(TextBuffer* buffer, const SceneBody* body)
 	for (int i = 0; i < body->shapeCount; ++i)
 	{
 		Append(buffer, i > 0 ? ",\n        " : "\n        ");
+		snprintf(buffer->item, sizeof(buffer->item), "bodies[%d].shapes[%d]", index, i);
 		AppendShape(buffer, body->shapes + i);
 	}
 	Append(buffer, body->shapeCount > 0 ? "\n      ]}" : "]}");
@@ -1040,9 +1092,11 @@ static void AppendMethods(TextBuffer* buffer, const SceneMethods* methods)
 	Append(buffer, "},\n");
 }
 
-char* SceneFile_Export(const Scene* scene)
+char* SceneFile_Export(const Scene* scene, char* error, int errorSize)
 {
-	TextBuffer buffer = {NULL, 0, 0, false};
+	TextBuffer buffer;
+	memset(&buffer, 0, sizeof(buffer));
+	snprintf(buffer.error, sizeof(buffer.error), "out of memory");
 	Append(&buffer, "{\n  \"gravity\": ");
 	AppendVec2(&buffer, scene->gravity);
 	Append(&buffer, ",\n  \"time_step\": %.9g,\n  \"sub_steps\": %d,\n  \"steps\": %d,\n  \"enable_sleep\": %s,\n",
@@ -1052,25 +1106,30 @@ char* SceneFile_Export(const Scene* scene)
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
 		Append(&buffer, i > 0 ? ",\n" : "\n");
-		AppendBody(&buffer, scene->bodies + i);
+		AppendBody(&buffer, scene->bodies + i, i);
 	}
 	Append(&buffer, scene->bodyCount > 0 ? "\n  ]\n}\n" : "]\n}\n");
 	if (buffer.failed)
 	{
+		snprintf(error, (size_t)errorSize, "%s", buffer.error);
 		free(buffer.data);
 		return NULL;
 	}
 	return buffer.data;
 }
 
-bool SceneFile_Save(const Scene* scene, const char* path)
+bool SceneFile_Save(const Scene* scene, const char* path, char* error, int errorSize)
 {
-	char* text = SceneFile_Export(scene);
+	char* text = SceneFile_Export(scene, error, errorSize);
 	FILE* file = text != NULL ? fopen(path, "wb") : NULL;
 	bool ok = file != NULL && fwrite(text, 1, strlen(text), file) == strlen(text);
 	if (file != NULL)
 	{
 		ok = (fclose(file) == 0) && ok;
+	}
+	if (text != NULL && ok == false)
+	{
+		snprintf(error, (size_t)errorSize, "%s: cannot write the file", path);
 	}
 	free(text);
 	return ok;

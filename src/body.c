@@ -92,7 +92,8 @@ static bool tbCheckBodyDef(const tbBodyDef* def)
 					  (double)def->rotation.c, (double)def->rotation.s);
 		return false;
 	}
-	return tbCheckVec2(f, "def->position", def->position) && tbCheckVec2(f, "def->linearVelocity", def->linearVelocity) &&
+	return tbCheckCoordinate(f, "def->position", def->position) &&
+		   tbCheckVec2(f, "def->linearVelocity", def->linearVelocity) &&
 		   tbCheckFloat(f, "def->angularVelocity", def->angularVelocity) &&
 		   tbCheckNonNegative(f, "def->linearDamping", def->linearDamping) &&
 		   tbCheckNonNegative(f, "def->angularDamping", def->angularDamping) &&
@@ -155,6 +156,7 @@ static int tbAllocBodySlot(tbWorld* world)
 	TB_ARRAY_RESERVE(world->bodies, world->bodyCapacity, world->bodyHighWater + 1);
 	int id = world->bodyHighWater++;
 	memset(world->bodies + id, 0, sizeof(tbBody));
+	world->bodies[id].generation = world->bodyGenerationBase; // tbCreateBody adds one
 	return id;
 }
 
@@ -288,6 +290,45 @@ static void tbKeepOriginVelocity(tbBody* body, tbVec2 oldCenter)
 	body->linearVelocity = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
 }
 
+static float tbSaturateToFloat(double value)
+{
+	return value < (double)FLT_MAX ? (float)value : FLT_MAX;
+}
+
+// The float sums of tbUpdateBodyMass overflowed (each shape's own mass and inertia are finite,
+// tbCreateShape checks that, but their sum or a mass × centre product was not). Redo them in
+// double, which cannot overflow for any number of float-sized terms, and saturate the mass and
+// the rotational inertia at FLT_MAX: the body then barely responds to impulses, as an enormous
+// mass should, and everything stays finite.
+static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbVec2 oldCenter)
+{
+	double mass = 0.0, cx = 0.0, cy = 0.0, inertia = 0.0;
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		const tbShape* shape = world->shapes + id;
+		tbMassData md = tbComputeShapeMass(&shape->geometry, shape->density);
+		double m = md.mass, x = md.center.x, y = md.center.y;
+		mass += m;
+		cx += m * x;
+		cy += m * y;
+		inertia += (double)md.rotationalInertia + m * (x * x + y * y);
+	}
+	cx /= mass;
+	cy /= mass;
+	body->mass = tbSaturateToFloat(mass);
+	body->invMass = 1.0f / body->mass;
+	body->localCenter = tbMakeVec2((float)cx, (float)cy);
+	if (body->fixedRotation == false)
+	{
+		body->inertia = tbSaturateToFloat(inertia - mass * (cx * cx + cy * cy));
+		body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
+	}
+	body->center = tbTransformPoint(body->transform, body->localCenter);
+	body->center0 = body->center;
+	tbKeepOriginVelocity(body, oldCenter);
+	tbComputeExtents(world, body);
+}
+
 void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 {
 	tbVec2 oldCenter = body->center;
@@ -317,6 +358,12 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 		body->mass += md.mass;
 		localCenter = tbMulAdd(localCenter, md.mass, md.center);
 		rotationalInertia += md.rotationalInertia + md.mass * tbDot(md.center, md.center);
+	}
+	if (tbIsValidFloat(body->mass) == false || tbIsValidVec2(localCenter) == false ||
+		tbIsValidFloat(rotationalInertia) == false)
+	{
+		tbSaturateBodyMass(world, body, oldCenter);
+		return;
 	}
 	if (body->mass > 0.0f)
 	{
@@ -437,7 +484,7 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation)
 	const char* f = "tbBody_SetTransform";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
-	if (body == NULL || tbCheckVec2(f, "position", position) == false)
+	if (body == NULL || tbCheckCoordinate(f, "position", position) == false)
 	{
 		return false;
 	}
@@ -886,9 +933,11 @@ static void tbUpdateSleepTime(const tbWorld* world, tbBody* body, float timeStep
 		return;
 	}
 	// A body rests when its fastest point moves slower than the threshold: |v| + |ω|·maxExtent.
+	// A body without extent (no shapes) has no fastest point but its centre: |v| alone, and its
+	// spin is judged by the angular tolerance instead.
 	float speed = tbLength(body->linearVelocity) + tbAbsFloat(body->angularVelocity) * body->maxExtent;
-	bool slowSpin = tbAbsFloat(body->angularVelocity) < TB_ANGULAR_SLEEP_TOLERANCE;
-	if (speed > body->sleepThreshold && !(body->maxExtent == 0.0f && slowSpin))
+	bool fastSpin = tbAbsFloat(body->angularVelocity) >= TB_ANGULAR_SLEEP_TOLERANCE;
+	if (speed > body->sleepThreshold || (body->maxExtent == 0.0f && fastSpin))
 	{
 		body->sleepTime = 0.0f;
 	}

@@ -2,6 +2,7 @@
 // Allocation with a live byte count, the error hook, the assert hook and timing.
 #include "core.h"
 
+#include "tumble/constants.h"
 #include "tumble/math_functions.h"
 
 #include <stdatomic.h>
@@ -179,6 +180,58 @@ uint64_t tbGetTicks(void)
 float tbGetMilliseconds(uint64_t ticks)
 {
 	return (float)((double)(tbGetTicks() - ticks) * 1e-6);
+}
+
+bool tbIsCoordinate(tbVec2 v)
+{
+	// false for NaN too: every comparison with NaN is false
+	return tbAbsFloat(v.x) <= TB_MAX_COORDINATE && tbAbsFloat(v.y) <= TB_MAX_COORDINATE;
+}
+
+bool tbCheckCoordinate(const char* function, const char* name, tbVec2 value)
+{
+	if (tbCheckVec2(function, name, value) == false)
+	{
+		return false;
+	}
+	if (tbIsCoordinate(value) == false)
+	{
+		tbReportError(function, "%s is (%g, %g), beyond TB_MAX_COORDINATE (%g m); keep coordinates within it "
+								"(float spacing there is 6 cm)", name, (double)value.x, (double)value.y,
+					  (double)TB_MAX_COORDINATE);
+		return false;
+	}
+	return true;
+}
+
+bool tbCheckLength(const char* function, const char* name, float value, bool positive)
+{
+	if ((positive ? tbCheckPositive(function, name, value) : tbCheckNonNegative(function, name, value)) == false)
+	{
+		return false;
+	}
+	if (value > TB_MAX_COORDINATE)
+	{
+		tbReportError(function, "%s is %g, beyond TB_MAX_COORDINATE (%g m); pass a smaller length", name, (double)value,
+					  (double)TB_MAX_COORDINATE);
+		return false;
+	}
+	return true;
+}
+
+bool tbCheckPoints(const char* function, const char* name, const tbVec2* points, int count)
+{
+	for (int i = 0; i < count; ++i)
+	{
+		if (tbIsCoordinate(points[i]) == false)
+		{
+			tbReportError(function, "%s[%d] is (%g, %g): not finite or beyond TB_MAX_COORDINATE (%g m); pass finite "
+									"coordinates within it", name, i, (double)points[i].x, (double)points[i].y,
+						  (double)TB_MAX_COORDINATE);
+			return false;
+		}
+	}
+	return true;
 }
 
 bool tbCheckVec2(const char* function, const char* name, tbVec2 value)

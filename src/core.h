@@ -50,3 +50,11 @@ bool tbCheckNonNegative(const char* function, const char* name, float value);
 bool tbCheckPositive(const char* function, const char* name, float value);
 bool tbCheckPointer(const char* function, const char* name, const void* pointer);
 bool tbCheckVec2(const char* function, const char* name, tbVec2 value);
+/// Finite and each coordinate within ±TB_MAX_COORDINATE (a point of a shape, a body position).
+bool tbCheckCoordinate(const char* function, const char* name, tbVec2 value);
+/// Finite, >= 0 (> 0 when positive) and at most TB_MAX_COORDINATE (a radius, a half-width).
+bool tbCheckLength(const char* function, const char* name, float value, bool positive);
+/// tbCheckCoordinate for each of count points, reported as name[i].
+bool tbCheckPoints(const char* function, const char* name, const tbVec2* points, int count);
+/// True when v is finite and each coordinate within ±TB_MAX_COORDINATE.
+bool tbIsCoordinate(tbVec2 v);

@@ -48,6 +48,7 @@
 #include "tumble/collision.h"
 
 #include <float.h>
+#include <string.h>
 
 // Squared length below which a segment counts as a point: (1e-6 m)², far below any shape size
 // Tumble is tuned for (0.1 m to 10 m) and still well above float underflow.
@@ -132,10 +133,20 @@ tbSegmentDistanceResult tbSegmentDistance(tbVec2 p1, tbVec2 q1, tbVec2 p2, tbVec
 
 tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
 {
-	TB_ASSERT(0 < count && count <= TB_MAX_POLYGON_VERTICES);
-	count = tbMinInt(tbMaxInt(count, 0), TB_MAX_POLYGON_VERTICES);
-
+	const char* f = "tbMakeProxy";
 	tbShapeProxy proxy = {0};
+	if (count < 1 || count > TB_MAX_POLYGON_VERTICES)
+	{
+		tbReportError(f, "count is %d (must be 1..TB_MAX_POLYGON_VERTICES = %d; 0 is what a refused shape "
+						 "constructor leaves); pass 1 to %d points", count, TB_MAX_POLYGON_VERTICES,
+					  TB_MAX_POLYGON_VERTICES);
+		return proxy;
+	}
+	if (tbCheckPointer(f, "points", points) == false || tbCheckPoints(f, "points", points, count) == false ||
+		tbCheckLength(f, "radius", radius, false) == false)
+	{
+		return proxy;
+	}
 	for (int i = 0; i < count; ++i)
 	{
 		proxy.points[i] = points[i];
@@ -167,6 +178,20 @@ tbShapeProxy tbMakeShapeProxy(const tbGeometry* shape)
 			TB_ASSERT(false);
 			return tbMakeProxy(&tb_vec2_zero, 1, 0.0f);
 	}
+}
+
+bool tbCheckProxyPair(const char* function, const tbShapeProxy* proxyA, const tbShapeProxy* proxyB)
+{
+	int countA = proxyA->count, countB = proxyB->count;
+	bool validA = 1 <= countA && countA <= TB_MAX_POLYGON_VERTICES;
+	if (validA && 1 <= countB && countB <= TB_MAX_POLYGON_VERTICES)
+	{
+		return true;
+	}
+	tbReportError(function, "%s has count %d (must be 1..%d); an empty proxy is what a refused tbMakeProxy returns: "
+							"build proxies from valid shapes", validA ? "proxyB" : "proxyA", validA ? countB : countA,
+				  TB_MAX_POLYGON_VERTICES);
+	return false;
 }
 
 int tbFindSupport(const tbShapeProxy* proxy, tbVec2 direction)
@@ -341,7 +366,16 @@ static void tbSolveSegment(tbSimplex* simplex)
 		return;
 	}
 
-	float inverse = 1.0f / (d12Weight1 + d12Weight2);
+	// Both weights are squared lengths; below FLT_MIN (shapes of ~1e-19 m) 1/sum overflows to
+	// infinity: such an edge is a point at this precision, keep w1.
+	float sum = d12Weight1 + d12Weight2;
+	if (sum < FLT_MIN)
+	{
+		simplex->v1.a = 1.0f;
+		simplex->count = 1;
+		return;
+	}
+	float inverse = 1.0f / sum;
 	simplex->v1.a = d12Weight1 * inverse;
 	simplex->v2.a = d12Weight2 * inverse;
 	simplex->count = 2;
@@ -369,6 +403,15 @@ static void tbSolveTriangle(tbSimplex* simplex)
 	tbVec2 e23 = tbSub(w3, w2);
 	float d23Weight1 = tbDot(w3, e23);
 	float d23Weight2 = -tbDot(w2, e23);
+
+	// Each edge's two weights sum to its squared length. An edge shorter than √FLT_MIN (~1e-19 m)
+	// would make 1/sum overflow: the triangle is a segment at this precision.
+	if (tbMinFloat(tbLengthSquared(e12), tbMinFloat(tbLengthSquared(e13), tbLengthSquared(e23))) < FLT_MIN)
+	{
+		simplex->count = 2;
+		tbSolveSegment(simplex);
+		return;
+	}
 
 	float n123 = tbCross(e12, e13);
 	float d123Weight1 = n123 * tbCross(w2, w3);
@@ -425,10 +468,18 @@ static void tbSolveTriangle(tbSimplex* simplex)
 		return;
 	}
 
-	// interior: the origin is inside, the cores overlap
+	// interior: the origin is inside, the cores overlap. The weights sum to n123² > 0 in exact
+	// arithmetic; a sum that is not positive comes from rounding in a nearly flat triangle or from
+	// input beyond the float range (coordinates near FLT_MAX, NaN). No interior answer is then
+	// trustworthy: keep the edge w1–w2, whose solution is always defined.
 	float sum = d123Weight1 + d123Weight2 + d123Weight3;
-	TB_ASSERT(sum > 0.0f);
-	float inverse = sum > 0.0f ? 1.0f / sum : 0.0f;
+	if ((sum >= FLT_MIN) == false)
+	{
+		simplex->count = 2;
+		tbSolveSegment(simplex);
+		return;
+	}
+	float inverse = 1.0f / sum;
 	simplex->v1.a = d123Weight1 * inverse;
 	simplex->v2.a = d123Weight2 * inverse;
 	simplex->v3.a = d123Weight3 * inverse;
@@ -618,6 +669,15 @@ static void tbSimplexToWorld(tbSimplex* simplex, tbTransform transformA)
 
 tbDistanceOutput tbShapeDistance(const tbDistanceInput* input, tbSimplexCache* cache, tbSimplex* simplex)
 {
+	if (tbCheckProxyPair("tbShapeDistance", &input->proxyA, &input->proxyB) == false)
+	{
+		tbDistanceOutput refused = {0};
+		if (simplex != NULL)
+		{
+			memset(simplex, 0, sizeof(*simplex));
+		}
+		return refused;
+	}
 	tbTransform relative = tbInvMulTransforms(input->transformA, input->transformB);
 	tbShapeProxy localB = tbMakeRelativeProxy(&input->proxyB, relative);
 
@@ -656,9 +716,29 @@ static tbCastOutput tbMakeCastHit(const tbDistanceOutput* distance, tbTransform 
 	return output;
 }
 
+// Shapes already within the target at λ = 0: a hit at fraction 0 with a zero normal, because no
+// direction of first contact exists (the shapes touch or overlap before moving), and the point
+// halfway between the two surface points (the cores' common point when they overlap). This is
+// Box2D v3's answer for an initial overlap, so code written for it reads ours the same way.
+static tbCastOutput tbMakeInitialOverlap(const tbDistanceOutput* distance, tbTransform transformA, float radiusA,
+										 float radiusB)
+{
+	tbVec2 surfaceA = tbMulAdd(distance->pointA, radiusA, distance->normal);
+	tbVec2 surfaceB = tbMulSub(distance->pointB, radiusB, distance->normal);
+	tbCastOutput output = {0};
+	output.point = tbTransformPoint(transformA, tbLerp(surfaceA, surfaceB, 0.5f));
+	output.iterations = 1;
+	output.hit = true;
+	return output;
+}
+
 tbCastOutput tbShapeCast(const tbShapeCastPairInput* input)
 {
 	tbCastOutput output = {0};
+	if (tbCheckProxyPair("tbShapeCast", &input->proxyA, &input->proxyB) == false)
+	{
+		return output;
+	}
 
 	// Work in A's frame: B's proxy at λ = 0 and the translation rotated into that frame.
 	tbTransform relative = tbInvMulTransforms(input->transformA, input->transformB);
@@ -688,10 +768,9 @@ tbCastOutput tbShapeCast(const tbShapeCastPairInput* input)
 		tbDistanceOutput distance = tbLocalShapeDistance(proxyA, &movedB, &cache, NULL);
 		if (distance.distance < target + TB_CAST_TOLERANCE)
 		{
-			if (iteration == 1 && distance.simplexCount == 3)
+			if (iteration == 1)
 			{
-				// cores overlap at the start: hit at 0 with the normal facing the motion
-				distance.normal = tbNormalize(tbNeg(translation));
+				return tbMakeInitialOverlap(&distance, input->transformA, proxyA->radius, proxyB.radius);
 			}
 			return tbMakeCastHit(&distance, input->transformA, proxyA->radius, fraction, iteration);
 		}

@@ -6,6 +6,10 @@
 #include "tumble/collision.h"
 
 /// Index of the proxy point furthest along direction (the support mapping of a point cloud).
+/// Both proxies have 1..TB_MAX_POLYGON_VERTICES points; otherwise reports to the error hook (an
+/// empty proxy is what a refused tbMakeProxy returns) and returns false.
+bool tbCheckProxyPair(const char* function, const tbShapeProxy* proxyA, const tbShapeProxy* proxyB);
+
 int tbFindSupport(const tbShapeProxy* proxy, tbVec2 direction);
 
 /// proxyB with its points mapped by the relative transform A⁻¹·B, i.e. expressed in A's frame.

@@ -697,8 +697,11 @@ static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 	for (int i = 0; i < count; ++i)
 	{
 		float c = useX ? leaves[i].center.x : leaves[i].center.y;
-		int bin = tbMinInt((int)(scale * (c - minC)), TB_TREE_BIN_COUNT - 1);
-		bin = tbMaxInt(bin, 0);
+		// Clamp in float before converting: when the centres span more than FLT_MAX the width is
+		// infinite, scale is 0 and scale·(c − minC) can be 0·∞ = NaN, which no int can hold
+		// (NaN fails the first test and lands in bin 0).
+		float position = scale * (c - minC);
+		int bin = position > 0.0f ? (position < (float)(TB_TREE_BIN_COUNT - 1) ? (int)position : TB_TREE_BIN_COUNT - 1) : 0;
 		leaves[i].bin = bin;
 		binBoxes[bin].lowerBound = tbMin(binBoxes[bin].lowerBound, leaves[i].box.lowerBound);
 		binBoxes[bin].upperBound = tbMax(binBoxes[bin].upperBound, leaves[i].box.upperBound);

@@ -323,6 +323,11 @@ static tbPenetration tbRunEPA(const tbSimplex* simplex, const tbShapeProxy* prox
 
 tbSeparationOutput tbShapeSeparation(const tbDistanceInput* input, tbSimplexCache* cache)
 {
+	if (tbCheckProxyPair("tbShapeSeparation", &input->proxyA, &input->proxyB) == false)
+	{
+		tbSeparationOutput refused = {{0.0f, 1.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, 0, false};
+		return refused;
+	}
 	const tbShapeProxy* proxyA = &input->proxyA;
 	tbTransform relative = tbInvMulTransforms(input->transformA, input->transformB);
 	tbShapeProxy proxyB = tbMakeRelativeProxy(&input->proxyB, relative);

@@ -81,7 +81,7 @@ static void tbFinishPolygon(tbPolygon* polygon)
 tbPolygon tbMakePolygon(const tbHull* hull, float radius)
 {
 	if (tbCheckPointer("tbMakePolygon", "hull", hull) == false ||
-		tbCheckNonNegative("tbMakePolygon", "radius", radius) == false)
+		tbCheckLength("tbMakePolygon", "radius", radius, false) == false)
 	{
 		return tbEmptyPolygon();
 	}
@@ -116,7 +116,8 @@ tbPolygon tbMakeOffsetPolygon(const tbHull* hull, tbVec2 position, tbRot rotatio
 	}
 	tbPolygon polygon = tbMakePolygon(hull, 0.0f);
 	tbTransform transform = {position, rotation};
-	return tbTransformPolygon(transform, &polygon);
+	polygon = tbTransformPolygon(transform, &polygon);
+	return tbCheckPoints("tbMakeOffsetPolygon", "vertices", polygon.vertices, polygon.count) ? polygon : tbEmptyPolygon();
 }
 
 tbPolygon tbMakeSquare(float halfWidth)
@@ -144,7 +145,7 @@ static tbPolygon tbMakeAlignedBox(float hx, float hy, float radius)
 
 static bool tbCheckBoxSize(const char* function, float halfWidth, float halfHeight)
 {
-	return tbCheckPositive(function, "halfWidth", halfWidth) && tbCheckPositive(function, "halfHeight", halfHeight);
+	return tbCheckLength(function, "halfWidth", halfWidth, true) && tbCheckLength(function, "halfHeight", halfHeight, true);
 }
 
 tbPolygon tbMakeBox(float halfWidth, float halfHeight)
@@ -159,7 +160,7 @@ tbPolygon tbMakeBox(float halfWidth, float halfHeight)
 tbPolygon tbMakeRoundedBox(float halfWidth, float halfHeight, float radius)
 {
 	if (tbCheckBoxSize("tbMakeRoundedBox", halfWidth, halfHeight) == false ||
-		tbCheckNonNegative("tbMakeRoundedBox", "radius", radius) == false)
+		tbCheckLength("tbMakeRoundedBox", "radius", radius, false) == false)
 	{
 		return tbEmptyPolygon();
 	}
@@ -181,7 +182,8 @@ tbPolygon tbMakeOffsetBox(float halfWidth, float halfHeight, tbVec2 center, tbRo
 	}
 	tbPolygon box = tbMakeAlignedBox(halfWidth, halfHeight, 0.0f);
 	tbTransform transform = {center, rotation};
-	return tbTransformPolygon(transform, &box);
+	box = tbTransformPolygon(transform, &box);
+	return tbCheckPoints("tbMakeOffsetBox", "vertices", box.vertices, box.count) ? box : tbEmptyPolygon();
 }
 
 tbPolygon tbTransformPolygon(tbTransform transform, const tbPolygon* polygon)

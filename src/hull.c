@@ -161,16 +161,7 @@ static bool tbCheckHullInput(const tbVec2* points, int count)
 		tbReportError("tbComputeHull", "points is NULL with count %d; pass an array of count points", count);
 		return false;
 	}
-	for (int i = 0; i < count; ++i)
-	{
-		if (tbIsValidVec2(points[i]) == false)
-		{
-			tbReportError("tbComputeHull", "points[%d] is (%g, %g) (NaN or infinity); pass finite coordinates", i,
-						  (double)points[i].x, (double)points[i].y);
-			return false;
-		}
-	}
-	return true;
+	return tbCheckPoints("tbComputeHull", "points", points, count);
 }
 
 // Indices of the leftmost and rightmost points (ties broken by y, so L ≠ R for distinct points).

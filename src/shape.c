@@ -180,7 +180,7 @@ static bool tbCheckShapeDef(const tbShapeDef* def, const char* f)
 
 static bool tbCheckRadius(const char* f, const char* name, float radius)
 {
-	return tbCheckPositive(f, name, radius);
+	return tbCheckLength(f, name, radius, true);
 }
 
 /// Is the polygon strictly convex and counter-clockwise, with no duplicate or collinear vertices,
@@ -224,8 +224,9 @@ static bool tbCheckPolygon(const char* f, const tbPolygon* p)
 					  p->count, TB_MAX_POLYGON_VERTICES);
 		return false;
 	}
-	if (tbCheckNonNegative(f, "polygon->radius", p->radius) == false ||
-		tbCheckVec2(f, "polygon->centroid", p->centroid) == false)
+	if (tbCheckLength(f, "polygon->radius", p->radius, false) == false ||
+		tbCheckCoordinate(f, "polygon->centroid", p->centroid) == false ||
+		tbCheckPoints(f, "polygon->vertices", p->vertices, p->count) == false)
 	{
 		return false;
 	}
@@ -251,10 +252,11 @@ bool tbCheckGeometry(const char* f, const tbGeometry* g)
 	switch (g->type)
 	{
 		case tb_circleShape:
-			return tbCheckVec2(f, "circle->center", g->circle.center) && tbCheckRadius(f, "circle->radius", g->circle.radius);
+			return tbCheckCoordinate(f, "circle->center", g->circle.center) &&
+				   tbCheckRadius(f, "circle->radius", g->circle.radius);
 		case tb_capsuleShape:
-			if (tbCheckVec2(f, "capsule->center1", g->capsule.center1) == false ||
-				tbCheckVec2(f, "capsule->center2", g->capsule.center2) == false ||
+			if (tbCheckCoordinate(f, "capsule->center1", g->capsule.center1) == false ||
+				tbCheckCoordinate(f, "capsule->center2", g->capsule.center2) == false ||
 				tbCheckRadius(f, "capsule->radius", g->capsule.radius) == false)
 			{
 				return false;
@@ -266,8 +268,8 @@ bool tbCheckGeometry(const char* f, const tbGeometry* g)
 			}
 			return true;
 		case tb_segmentShape:
-			if (tbCheckVec2(f, "segment->point1", g->segment.point1) == false ||
-				tbCheckVec2(f, "segment->point2", g->segment.point2) == false)
+			if (tbCheckCoordinate(f, "segment->point1", g->segment.point1) == false ||
+				tbCheckCoordinate(f, "segment->point2", g->segment.point2) == false)
 			{
 				return false;
 			}
@@ -285,6 +287,20 @@ bool tbCheckGeometry(const char* f, const tbGeometry* g)
 	}
 }
 
+// A density that makes the shape's mass or rotational inertia overflow float is refused: the
+// body would get an infinite mass and NaN positions.
+static bool tbCheckShapeMass(const char* f, const tbGeometry* geometry, float density)
+{
+	tbMassData md = tbComputeShapeMass(geometry, density);
+	if (tbIsValidFloat(md.mass) && tbIsValidFloat(md.rotationalInertia))
+	{
+		return true;
+	}
+	tbReportError(f, "density %g gives this shape a mass of %g kg and a rotational inertia of %g kg m^2 (not finite "
+					 "floats); lower the density", (double)density, (double)md.mass, (double)md.rotationalInertia);
+	return false;
+}
+
 static int tbAllocShapeSlot(tbWorld* world)
 {
 	if (world->shapeFreeCount > 0)
@@ -294,6 +310,7 @@ static int tbAllocShapeSlot(tbWorld* world)
 	TB_ARRAY_RESERVE(world->shapes, world->shapeCapacity, world->shapeHighWater + 1);
 	int id = world->shapeHighWater++;
 	memset(world->shapes + id, 0, sizeof(tbShape));
+	world->shapes[id].generation = world->shapeGenerationBase; // the creation adds one
 	return id;
 }
 
@@ -301,7 +318,8 @@ static tbShapeId tbCreateShapeInternal(tbBodyId bodyId, const tbShapeDef* def, c
 {
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
-	if (body == NULL || tbCheckShapeDef(def, f) == false || tbCheckGeometry(f, geometry) == false)
+	if (body == NULL || tbCheckShapeDef(def, f) == false || tbCheckGeometry(f, geometry) == false ||
+		tbCheckShapeMass(f, geometry, def->density) == false)
 	{
 		return TB_NULL_SHAPE_ID;
 	}
@@ -483,7 +501,8 @@ bool tbShape_SetDensity(tbShapeId shapeId, float density, bool updateBodyMass)
 {
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetDensity", &world, true);
-	if (shape == NULL || tbCheckNonNegative("tbShape_SetDensity", "density", density) == false)
+	if (shape == NULL || tbCheckNonNegative("tbShape_SetDensity", "density", density) == false ||
+		tbCheckShapeMass("tbShape_SetDensity", &shape->geometry, density) == false)
 	{
 		return false;
 	}

@@ -78,6 +78,32 @@ static void tbGatherBodies(tbStepContext* context)
 	fixed->deltaRotation = tb_rot_identity;
 }
 
+// The speed clamp when |v|² is not a finite float: a speed above ~1.8e19 m/s (a velocity of
+// 1e20 set by the user, gravity 3e38 m/s²) squares to infinity, and the plain clamp's factor
+// max/|v| would be 0, stopping the body. Scale v by its largest component first, so the length
+// is computed without overflow; an infinite component (the sum overflowed) gives the direction
+// alone, and a NaN component (∞ − ∞) has no direction and counts as 0.
+static tbVec2 tbClampHugeSpeed(tbVec2 v, float maxSpeed)
+{
+	float x = v.x == v.x ? v.x : 0.0f;
+	float y = v.y == v.y ? v.y : 0.0f;
+	bool infinite = isinf(x) || isinf(y);
+	if (infinite)
+	{
+		x = isinf(x) ? copysignf(1.0f, x) : 0.0f;
+		y = isinf(y) ? copysignf(1.0f, y) : 0.0f;
+	}
+	float scale = tbMaxFloat(tbAbsFloat(x), tbAbsFloat(y));
+	if (scale == 0.0f)
+	{
+		return tb_vec2_zero;
+	}
+	tbVec2 scaled = tbMakeVec2(x / scale, y / scale); // largest component ±1: |scaled| in [1, √2]
+	float length = tbLength(scaled);
+	float speed = infinite ? maxSpeed : tbMinFloat(maxSpeed, scale * length);
+	return tbMulSV(speed / length, scaled);
+}
+
 void tbIntegrateVelocities(tbStepContext* context)
 {
 	float maxLinearSpeed = context->maxLinearSpeed;
@@ -91,11 +117,15 @@ void tbIntegrateVelocities(tbStepContext* context)
 		float w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
 
 		float speedSquared = tbDot(v, v);
-		if (speedSquared > maxLinearSpeedSquared)
+		if (tbIsValidFloat(speedSquared) == false)
+		{
+			v = tbClampHugeSpeed(v, maxLinearSpeed);
+		}
+		else if (speedSquared > maxLinearSpeedSquared)
 		{
 			v = tbMulSV(maxLinearSpeed / sqrtf(speedSquared), v);
 		}
-		w = tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed);
+		w = w == w ? tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed) : 0.0f; // NaN (0 · ∞ torque): no direction
 
 		sb->linearVelocity = v;
 		sb->angularVelocity = w;

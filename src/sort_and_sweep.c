@@ -257,7 +257,11 @@ static void tbInsertionSortEndpoints(tbEndpoint* endpoints, int count)
 
 static void tbSortEndpoints(tbSortAndSweep* sweep)
 {
-	if (sweep->needsFullSort || sweep->appendedCount > TB_SWEEP_MAX_APPENDED)
+	if (sweep->endpointCount < 2)
+	{
+		// nothing to order (and qsort may not be given the NULL array of an empty world)
+	}
+	else if (sweep->needsFullSort || sweep->appendedCount > TB_SWEEP_MAX_APPENDED)
 	{
 		qsort(sweep->endpoints, (size_t)sweep->endpointCount, sizeof(tbEndpoint), tbCompareEndpoints);
 	}

@@ -92,6 +92,7 @@
 // circles.
 
 #include "core.h"
+#include "distance_internal.h"
 
 #include "tumble/collision.h"
 
@@ -147,7 +148,7 @@ static bool tbValidTOIInput(const char* function, const tbTOIInput* input)
 					  (double)input->maxFraction);
 		return false;
 	}
-	return true;
+	return tbCheckProxyPair(function, &input->proxyA, &input->proxyB);
 }
 
 // Per-query constants of the advancement: the motion over the sweep and the angular reach.

@@ -8,10 +8,15 @@
 
 #include "array.h"
 
+#include <stddef.h>
 #include <string.h>
 
 static tbWorld* s_worlds[TB_MAX_WORLDS];
 static uint16_t s_worldGenerations[TB_MAX_WORLDS];
+// Per world slot: the largest body and shape generations handed out by the worlds that used the
+// slot (see tbWorld::bodyGenerationBase). Generations wrap at 2^16, like every generation.
+static uint16_t s_bodyGenerations[TB_MAX_WORLDS];
+static uint16_t s_shapeGenerations[TB_MAX_WORLDS];
 
 #define TB_WORLD_DEF_MAGIC 0x7B3A1C01
 
@@ -79,10 +84,28 @@ static bool tbCheckMethods(const tbWorldDef* def, const char* function)
 								"tb_solver* enum values");
 		return false;
 	}
-	if (def->velocityIterations < 1 || def->positionIterations < 0 || def->relaxIterations < 0)
+	if (def->velocityIterations < 1 || def->positionIterations < 0 || def->relaxIterations < 0 ||
+		def->velocityIterations > TB_MAX_ITERATIONS || def->positionIterations > TB_MAX_ITERATIONS ||
+		def->relaxIterations > TB_MAX_ITERATIONS)
 	{
-		tbReportError(function, "def iterations are %d velocity, %d position, %d relax (velocity must be >= 1, the "
-								"others >= 0)", def->velocityIterations, def->positionIterations, def->relaxIterations);
+		tbReportError(function, "def iterations are %d velocity, %d position, %d relax (velocity must be 1..%d, the "
+								"others 0..%d, TB_MAX_ITERATIONS)", def->velocityIterations, def->positionIterations,
+					  def->relaxIterations, TB_MAX_ITERATIONS, TB_MAX_ITERATIONS);
+		return false;
+	}
+	return true;
+}
+
+static bool tbCheckMaximumSpeed(const char* f, float speed)
+{
+	if (tbCheckPositive(f, "def->maximumLinearSpeed", speed) == false)
+	{
+		return false;
+	}
+	if (speed > TB_MAX_LINEAR_SPEED)
+	{
+		tbReportError(f, "def->maximumLinearSpeed is %g m/s, above TB_MAX_LINEAR_SPEED (%g m/s); pass at most that",
+					  (double)speed, (double)TB_MAX_LINEAR_SPEED);
 		return false;
 	}
 	return true;
@@ -107,7 +130,7 @@ static bool tbCheckWorldDef(const tbWorldDef* def)
 		   tbCheckPositive(f, "def->contactHertz", def->contactHertz) &&
 		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
 		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
-		   tbCheckPositive(f, "def->maximumLinearSpeed", def->maximumLinearSpeed) && tbCheckMethods(def, f);
+		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f);
 }
 
 /// Auto starts with the dynamic tree: it costs nothing for sleeping and static bodies, handles any
@@ -196,6 +219,8 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	world->worldId = (uint16_t)slot;
 	world->generation = (uint16_t)(s_worldGenerations[slot] + 1);
 	s_worldGenerations[slot] = world->generation;
+	world->bodyGenerationBase = s_bodyGenerations[slot];
+	world->shapeGenerationBase = s_shapeGenerations[slot];
 	world->inUse = true;
 	world->userData = def->userData;
 	tbHashSet_Create(&world->pairSet, 64);
@@ -204,6 +229,21 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	s_worlds[slot] = world;
 	tbWorldId id = {(uint16_t)(slot + 1), world->generation};
 	return id;
+}
+
+// The largest generation of the slots, counted from base (generations wrap at 2^16): a destroyed
+// object's slot holds its id's generation + 1, so this bounds every id the world handed out.
+static uint16_t tbLargestGeneration(uint16_t base, const void* slots, int count, size_t stride, size_t offset)
+{
+	uint16_t largest = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		uint16_t generation;
+		memcpy(&generation, (const char*)slots + (size_t)i * stride + offset, sizeof(generation));
+		uint16_t sinceBase = (uint16_t)(generation - base);
+		largest = sinceBase > largest ? sinceBase : largest;
+	}
+	return (uint16_t)(base + largest);
 }
 
 static void tbFreeWorldArrays(tbWorld* w)
@@ -246,6 +286,11 @@ void tbDestroyWorld(tbWorldId worldId)
 									   "between steps and outside callbacks");
 		return;
 	}
+	int slot = world->worldId;
+	s_bodyGenerations[slot] = tbLargestGeneration(world->bodyGenerationBase, world->bodies, world->bodyHighWater,
+												   sizeof(tbBody), offsetof(tbBody, generation));
+	s_shapeGenerations[slot] = tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapeHighWater,
+													sizeof(tbShape), offsetof(tbShape, generation));
 	tbBroadPhase_Destroy(&world->broadPhase);
 	tbHashSet_Destroy(&world->pairSet);
 	tbFreeWorldArrays(world);
@@ -311,15 +356,17 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	{
 		return false;
 	}
-	if (tbIsValidFloat(timeStep) == false || timeStep <= 0.0f)
+	if (tbIsValidFloat(timeStep) == false || timeStep <= 0.0f || timeStep > TB_MAX_TIME_STEP)
 	{
-		tbReportError(f, "timeStep is %g (must be finite and > 0); pass the frame time in seconds, e.g. 1/60",
-					  (double)timeStep);
+		tbReportError(f, "timeStep is %g (must be > 0 and at most TB_MAX_TIME_STEP = %g s); pass the frame time in "
+						 "seconds, e.g. 1/60, and step a longer span in several calls", (double)timeStep,
+					  (double)TB_MAX_TIME_STEP);
 		return false;
 	}
-	if (subStepCount < 1)
+	if (subStepCount < 1 || subStepCount > TB_MAX_SUB_STEPS)
 	{
-		tbReportError(f, "subStepCount is %d (must be >= 1); 4 is typical", subStepCount);
+		tbReportError(f, "subStepCount is %d (must be 1..%d, TB_MAX_SUB_STEPS); 4 is typical", subStepCount,
+					  TB_MAX_SUB_STEPS);
 		return false;
 	}
 	if (world->locked)

@@ -444,3 +444,60 @@ Test(shape_cast, box_drop_onto_box_far_away)
 	out = tbShapeCast(&input);
 	cr_assert(out.hit == false);
 }
+
+// Shapes that start within the target separation have no direction of first contact. The
+// defined answer (Box2D v3's): hit at fraction 0, normal (0, 0), the point halfway between the
+// surfaces. Before: concentric circles and a zero translation gave a hit with a zero normal and a
+// point on A's core, touching boxes a normal along −translation; now every such start answers
+// the same documented way.
+static tbShapeCastPairInput CircleCast(tbVec2 centerB, float radiusA, float radiusB, tbVec2 translation)
+{
+	tbVec2 origin = {0.0f, 0.0f};
+	tbShapeCastPairInput input = {0};
+	input.proxyA = tbMakeProxy(&origin, 1, radiusA);
+	input.proxyB = tbMakeProxy(&origin, 1, radiusB);
+	input.transformA = tb_transform_identity;
+	input.transformB = (tbTransform){centerB, tb_rot_identity};
+	input.translationB = translation;
+	input.maxFraction = 1.0f;
+	return input;
+}
+
+Test(shape_cast, initial_overlap_hits_at_zero_with_zero_normal)
+{
+	// concentric circles, moving or not
+	tbVec2 moves[2] = {{1.0f, 0.0f}, {0.0f, 0.0f}};
+	for (int i = 0; i < 2; ++i)
+	{
+		tbShapeCastPairInput input = CircleCast(tbMakeVec2(0.0f, 0.0f), 0.5f, 0.25f, moves[i]);
+		tbCastOutput out = tbShapeCast(&input);
+		cr_assert(out.hit);
+		cr_assert(out.fraction == 0.0f && out.normal.x == 0.0f && out.normal.y == 0.0f);
+		cr_assert(out.point.x == 0.0f && out.point.y == 0.0f, "the common centre");
+	}
+
+	// circles overlapping by 0.25 m (centres 0.5 m apart, radii 0.5 + 0.25): the point is halfway
+	// between A's surface point (0.5, 0) and B's (0.5 − 0.25, 0), i.e. x = 0.375, exact in float
+	tbShapeCastPairInput input = CircleCast(tbMakeVec2(0.5f, 0.0f), 0.5f, 0.25f, tbMakeVec2(-1.0f, 0.0f));
+	tbCastOutput out = tbShapeCast(&input);
+	cr_assert(out.hit && out.fraction == 0.0f && out.normal.x == 0.0f && out.normal.y == 0.0f);
+	cr_assert_float_eq(out.point.x, 0.375f, 1e-6f);
+	cr_assert_float_eq(out.point.y, 0.0f, 1e-6f);
+
+	// boxes touching face to face, B moving along the face: the same answer, in world frame
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	input = (tbShapeCastPairInput){0};
+	input.proxyA = tbMakeProxy(box.vertices, 4, 0.0f);
+	input.proxyB = tbMakeProxy(box.vertices, 4, 0.0f);
+	input.transformA = (tbTransform){{10.0f, 20.0f}, tb_rot_identity};
+	input.transformB = (tbTransform){{10.0f, 21.0f}, tb_rot_identity};
+	input.translationB = tbMakeVec2(1.0f, 0.0f);
+	input.maxFraction = 1.0f;
+	out = tbShapeCast(&input);
+	cr_assert(out.hit && out.fraction == 0.0f && out.normal.x == 0.0f && out.normal.y == 0.0f);
+	cr_assert_float_eq(out.point.y, 20.5f, 1e-5f, "on the shared face");
+
+	// apart and not moving: no hit
+	input = CircleCast(tbMakeVec2(2.0f, 0.0f), 0.5f, 0.25f, tbMakeVec2(0.0f, 0.0f));
+	cr_assert_not(tbShapeCast(&input).hit);
+}

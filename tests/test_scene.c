@@ -93,9 +93,9 @@ static void ExpectSameScene(const Scene* a, const Scene* b, const char* name)
 
 static Scene* RoundTrip(const Scene* scene)
 {
-	char* text = SceneFile_Export(scene);
-	cr_assert_not_null(text);
 	char error[256] = "";
+	char* text = SceneFile_Export(scene, error, (int)sizeof(error));
+	cr_assert_not_null(text, "export failed: %s", error);
 	Scene* loaded = SceneFile_Parse(text, error, (int)sizeof(error));
 	cr_assert_not_null(loaded, "reload failed: %s", error);
 	free(text);
@@ -287,7 +287,19 @@ static const BadFile s_badFiles[] = {
 	 "bodies[0].shapes[0].polygon.vertices: no valid convex hull (points collinear, duplicate or closer than 0.005 m)"},
 	{"{\"methods\": {\"solver\": \"pgs\"}}", "methods.solver: must be one of baumgarte, ngs, soft"},
 	{"{\"time_step\": \"fast\"}", "time_step: must be a number"},
-	{"{\"sub_steps\": 0}", "sub_steps: must be >= 1"},
+	{"{\"sub_steps\": 0}", "sub_steps: must be 1..64"},
+	// an untrusted file must not hang the program (2^31 − 1 sub-steps ran for minutes a step)
+	{"{\"sub_steps\": 2147483647}", "sub_steps: must be 1..64"},
+	{"{\"time_step\": 1e30}", "time_step: must be at most 1"},
+	{"{\"steps\": 2000000000}", "steps: must be 0..1000000"},
+	// the library refuses these shapes: the file is refused and the item named (before: a box too
+	// thin to be a polygon in float loaded as a shapeless body, and the run exited 0)
+	{"{\"bodies\": [{\"type\": \"dynamic\", \"shapes\": [{\"box\": {\"half_width\": 1, \"half_height\": 1e-20}}]}]}",
+	 "bodies[0].shapes[0]: refused by the library (see its message above: size, thinness, density or position)"},
+	{"{\"bodies\": [{}, {\"shapes\": [{\"box\": {\"half_width\": 1e30, \"half_height\": 1}}]}]}",
+	 "bodies[1].shapes[0]: refused by the library (see its message above: size, thinness, density or position)"},
+	{"{\"bodies\": [{\"position\": [3e38, 0]}]}",
+	 "bodies[0]: refused by the library (see its message above: size, thinness, density or position)"},
 	{"{\"bodies\": [{\"type\": \"rigid\"}]}", "bodies[0].type: must be one of static, kinematic, dynamic"},
 	{"{\"bodies\": [{\"angle\": 1e999}]}", "bodies[0].angle: must be a finite number"},
 	{"{\"bodies\": [{\"shapes\": [{\"circle\": {\"center\": [0, 0]}}]}]}",
@@ -301,6 +313,33 @@ static const BadFile s_badFiles[] = {
 	{"[1, 2]", "scene: must be a JSON object"},
 	{"{\"gravity\": [0, -10],\n \"bodies\": [}", "line 2, column 13: invalid JSON"},
 };
+
+Test(scene, export_refuses_non_finite_numbers_naming_the_item)
+{
+	// Before: a box of 1e30 m (built in code: scene files refuse it) was written as
+	// "half_height": inf, which is not JSON and does not reload. Now the export fails and names it.
+	Scene* scene = Scene_Create();
+	int body = Scene_AddBody(scene, tb_dynamicBody, tbMakeVec2(0.0f, 0.0f), 0.0f);
+	tbGeometry geometry;
+	memset(&geometry, 0, sizeof(geometry));
+	geometry.type = tb_polygonShape;
+	geometry.polygon.count = 4;
+	float h = 1e30f;
+	tbVec2 corners[4] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+	memcpy(geometry.polygon.vertices, corners, sizeof(corners));
+	Scene_AddGeometry(scene, body, &geometry, 1.0f, 0.6f);
+	char error[256] = "";
+	char* text = SceneFile_Export(scene, error, (int)sizeof(error));
+	cr_assert_null(text);
+	cr_assert(strstr(error, "bodies[0].shapes[0]: a number is not finite") == error, "%s", error);
+
+	scene->bodies[0].shapeCount = 0;
+	scene->bodies[0].position.x = INFINITY;
+	text = SceneFile_Export(scene, error, (int)sizeof(error));
+	cr_assert_null(text);
+	cr_assert(strstr(error, "bodies[0]: a number is not finite") == error, "%s", error);
+	Scene_Destroy(scene);
+}
 
 Test(scene, malformed_files_name_the_field)
 {

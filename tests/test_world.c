@@ -412,6 +412,56 @@ Test(handles, destroyed_body_refused, .init = SetupErrors, .fini = TeardownError
 	ExpectError(n + 4, "tbWorld_Step", "destroyed");
 }
 
+Test(handles, ids_of_a_destroyed_world_refused_in_its_successor, .init = SetupErrors, .fini = TeardownErrors)
+{
+	// A new world takes the slot of a destroyed one: the ids kept from the old world name the same
+	// body and shape slots, and must stay invalid although the slots hold live objects again.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId first = tbCreateWorld(&def);
+	tbBodyId oldBody = MakeBall(first, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+	tbShapeId oldShape;
+	cr_assert_eq(tbBody_GetShapes(oldBody, &oldShape, 1), 1);
+	tbDestroyWorld(first);
+
+	tbWorldId second = tbCreateWorld(&def);
+	cr_assert_eq(second.index1, first.index1, "the new world reuses the slot");
+	tbBodyId newBody = MakeBall(second, tbMakeVec2(5.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+	tbShapeId newShape;
+	cr_assert_eq(tbBody_GetShapes(newBody, &newShape, 1), 1);
+	cr_assert_eq(newBody.index1, oldBody.index1);
+	cr_assert_eq(newBody.world0, oldBody.world0);
+	cr_assert_eq(newShape.index1, oldShape.index1);
+	cr_assert_not(tbBody_IsValid(oldBody));
+	cr_assert_not(tbShape_IsValid(oldShape));
+	cr_assert(tbBody_IsValid(newBody) && tbShape_IsValid(newShape));
+
+	// The stale ids neither read nor destroy the new world's objects.
+	int n = s_errors;
+	tbDestroyBody(oldBody);
+	ExpectError(n, "tbDestroyBody", "destroyed");
+	tbDestroyShape(oldShape, true);
+	ExpectError(n + 1, "tbDestroyShape", "destroyed");
+	cr_assert(tbBody_IsValid(newBody) && tbShape_IsValid(newShape));
+	cr_assert_float_eq(tbBody_GetPosition(newBody).x, 5.0f, 0.0f);
+
+	// Many worlds later, with bodies created and destroyed in between, the first id stays refused.
+	tbDestroyWorld(second);
+	for (int w = 0; w < 10; ++w)
+	{
+		tbWorldId world = tbCreateWorld(&def);
+		for (int i = 0; i < 3; ++i)
+		{
+			tbDestroyBody(MakeBall(world, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f)));
+		}
+		tbBodyId body = MakeBall(world, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+		cr_assert(tbBody_IsValid(body));
+		cr_assert_not(tbBody_IsValid(oldBody));
+		cr_assert_not(tbBody_IsValid(newBody));
+		cr_assert_not(tbShape_IsValid(oldShape));
+		tbDestroyWorld(world);
+	}
+}
+
 Test(handles, worlds_side_by_side)
 {
 	// Two worlds with different gravity evolve independently: after 1 s of free fall from rest

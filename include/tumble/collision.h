@@ -175,6 +175,9 @@ typedef struct tbShapeProxy
 	float radius;
 } tbShapeProxy;
 
+/// Proxy of count points (1..TB_MAX_POLYGON_VERTICES, finite, within TB_MAX_COORDINATE) and a
+/// radius (0..TB_MAX_COORDINATE). Anything else is reported to the error hook and gives an empty
+/// proxy (count 0), which the distance, separation, cast and TOI functions refuse in turn.
 TB_API tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius);
 
 /// Proxy of any shape (circle: 1 point; capsule and segment: 2; polygon: its vertices).
@@ -270,7 +273,12 @@ typedef struct tbShapeCastPairInput
 	bool canEncroach;  ///< allow the final separation to be less than the radii (for speculative use)
 } tbShapeCastPairInput;
 
-/// Shape cast by conservative advancement on GJK distance (linear motion only).
+/// Shape cast by conservative advancement on GJK distance (linear motion only). Shapes that
+/// already touch or overlap at the start (within the target separation) report a hit at
+/// fraction 0 with normal (0, 0) — there is no direction of first contact — and the point halfway
+/// between the surfaces; this holds for a zero translation too (Box2D v3 answers the same). Apart
+/// shapes that never close in (zero translation included) report no hit. A proxy with no points
+/// is refused through the error hook (no hit).
 TB_API tbCastOutput tbShapeCast(const tbShapeCastPairInput* input);
 
 // ---------------------------------------------------------------------------------------------

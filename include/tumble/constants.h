@@ -61,6 +61,30 @@
 /// A large length, 100 km: used as "infinity" for AABBs and ray lengths.
 #define TB_HUGE 100000.0f
 
+/// Largest coordinate the API accepts, 1e6 m (ten times TB_HUGE): every vertex, centre and radius
+/// of a shape in its body's frame, and a body's position. Beyond it a float's spacing exceeds
+/// 6 cm, far coarser than the linear slop, and the products the collision layer forms (up to
+/// the fourth power of a length, e.g. a·e − b² in segment distance) stay finite only while
+/// lengths stay well below 1e9 m. See docs/limits.md.
+#define TB_MAX_COORDINATE 1.0e6f
+
+/// Largest time step tbWorld_Step accepts, 1 s: a longer span is many frames and should be
+/// stepped as many calls; a single step of it would move bodies by maximumLinearSpeed × Δt.
+#define TB_MAX_TIME_STEP 1.0f
+
+/// Largest sub-step count tbWorld_Step accepts, 64 (4 is typical, 16 the most any benchmark
+/// uses): the cost of a step is linear in it, and an untrusted scene must not hang a program.
+#define TB_MAX_SUB_STEPS 64
+
+/// Largest iteration count a world accepts (velocity, position and relax iterations), 64: the
+/// same reason as TB_MAX_SUB_STEPS.
+#define TB_MAX_ITERATIONS 64
+
+/// Largest maximumLinearSpeed a world accepts, 1e6 m/s: a body then moves at most
+/// 1e6 m/s × TB_MAX_TIME_STEP per step, so positions stay finite for any number of steps a
+/// program can run.
+#define TB_MAX_LINEAR_SPEED 1.0e6f
+
 /// Default collision category and mask bits.
 #define TB_DEFAULT_CATEGORY_BITS 0x0000000000000001ULL
 #define TB_DEFAULT_MASK_BITS 0xFFFFFFFFFFFFFFFFULL

@@ -1,0 +1,354 @@
+// Fuzz harness for API call sequences on worlds: bytes become a sequence of calls (create and
+// destroy worlds, bodies and shapes; set velocities, transforms, forces, gravity, types; step;
+// query, ray and shape casts) with hostile floats and with ids that are random, live or stale
+// (kept after their body, shape or world was destroyed). Checks: no abort or sanitizer report,
+// stale ids refused (IsValid false), every position finite after every step, no bytes left after
+// the worlds are destroyed.
+#include "fuzz_input.h"
+
+#include "tumble/tumble.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#define MAX_IDS 64
+
+typedef struct Ids
+{
+	tbWorldId worlds[4];
+	tbBodyId bodies[MAX_IDS];
+	int bodyCount;
+	tbBodyId deadBodies[MAX_IDS];
+	int deadBodyCount;
+	tbShapeId shapes[MAX_IDS];
+	int shapeCount;
+	tbShapeId deadShapes[MAX_IDS];
+	int deadShapeCount;
+} Ids;
+
+static void Quiet(const char* message, void* context)
+{
+	(void)message;
+	(void)context;
+}
+
+static tbVec2 FuzzVec2(FuzzInput* in)
+{
+	float x = FuzzFloat(in);
+	return tbMakeVec2(x, FuzzFloat(in));
+}
+
+static tbBodyId PickBody(FuzzInput* in, const Ids* ids)
+{
+	int choice = FuzzInt(in, 4);
+	if (choice == 0 && ids->deadBodyCount > 0)
+	{
+		return ids->deadBodies[FuzzInt(in, ids->deadBodyCount)];
+	}
+	if (choice == 1)
+	{
+		tbBodyId random = {FuzzInt(in, 8) - 1, (uint16_t)FuzzInt(in, 4), (uint16_t)FuzzInt(in, 4)};
+		return random;
+	}
+	return ids->bodyCount > 0 ? ids->bodies[FuzzInt(in, ids->bodyCount)] : TB_NULL_BODY_ID;
+}
+
+static void Remember(tbBodyId* list, int* count, tbBodyId id)
+{
+	if (*count < MAX_IDS)
+	{
+		list[(*count)++] = id;
+	}
+	else
+	{
+		list[MAX_IDS - 1] = id;
+	}
+}
+
+static void RememberShape(tbShapeId* list, int* count, tbShapeId id)
+{
+	if (*count < MAX_IDS)
+	{
+		list[(*count)++] = id;
+	}
+	else
+	{
+		list[MAX_IDS - 1] = id;
+	}
+}
+
+static tbGeometry FuzzGeometry(FuzzInput* in)
+{
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	switch (FuzzInt(in, 4))
+	{
+		case 0:
+			g.type = tb_circleShape;
+			g.circle.center = FuzzVec2(in);
+			g.circle.radius = FuzzFloat(in);
+			break;
+		case 1:
+			g.type = tb_capsuleShape;
+			g.capsule.center1 = FuzzVec2(in);
+			g.capsule.center2 = FuzzVec2(in);
+			g.capsule.radius = FuzzFloat(in);
+			break;
+		case 2:
+			g.type = tb_segmentShape;
+			g.segment.point1 = FuzzVec2(in);
+			g.segment.point2 = FuzzVec2(in);
+			break;
+		default:
+			g.type = tb_polygonShape;
+			g.polygon = tbMakeOffsetBox(FuzzFloat(in), FuzzFloat(in), FuzzVec2(in), tbMakeRot(FuzzFloat(in)));
+			break;
+	}
+	return g;
+}
+
+static void CreateBody(FuzzInput* in, Ids* ids, tbWorldId world)
+{
+	tbBodyDef def = tbDefaultBodyDef();
+	def.type = (tbBodyType)FuzzInt(in, 3);
+	def.position = FuzzVec2(in);
+	def.linearVelocity = FuzzVec2(in);
+	def.angularVelocity = FuzzFloat(in);
+	def.gravityScale = FuzzInt(in, 2) ? FuzzFloat(in) : 1.0f;
+	def.isBullet = FuzzInt(in, 4) == 0;
+	tbBodyId body = tbCreateBody(world, &def);
+	if (TB_IS_NON_NULL(body))
+	{
+		Remember(ids->bodies, &ids->bodyCount, body);
+	}
+}
+
+static void CreateShape(FuzzInput* in, Ids* ids)
+{
+	tbShapeDef def = tbDefaultShapeDef();
+	def.density = FuzzInt(in, 2) ? FuzzFloat(in) : 1.0f;
+	def.friction = FuzzInt(in, 2) ? FuzzFloat(in) : 0.6f;
+	def.restitution = FuzzInt(in, 4) == 0 ? FuzzFloat(in) : 0.0f;
+	tbGeometry g = FuzzGeometry(in);
+	tbShapeId shape = tbCreateShape(PickBody(in, ids), &def, &g);
+	if (TB_IS_NON_NULL(shape))
+	{
+		RememberShape(ids->shapes, &ids->shapeCount, shape);
+	}
+}
+
+static void DestroyBody(FuzzInput* in, Ids* ids)
+{
+	if (ids->bodyCount == 0)
+	{
+		return;
+	}
+	int k = FuzzInt(in, ids->bodyCount);
+	tbBodyId body = ids->bodies[k];
+	tbDestroyBody(body);
+	ids->bodies[k] = ids->bodies[--ids->bodyCount];
+	Remember(ids->deadBodies, &ids->deadBodyCount, body);
+}
+
+static void DestroyShape(FuzzInput* in, Ids* ids)
+{
+	if (ids->shapeCount == 0)
+	{
+		return;
+	}
+	int k = FuzzInt(in, ids->shapeCount);
+	tbShapeId shape = ids->shapes[k];
+	tbDestroyShape(shape, true);
+	ids->shapes[k] = ids->shapes[--ids->shapeCount];
+	RememberShape(ids->deadShapes, &ids->deadShapeCount, shape);
+}
+
+static void Modify(FuzzInput* in, Ids* ids)
+{
+	tbBodyId body = PickBody(in, ids);
+	switch (FuzzInt(in, 8))
+	{
+		case 0:
+			tbBody_SetLinearVelocity(body, FuzzVec2(in));
+			break;
+		case 1:
+			tbBody_SetAngularVelocity(body, FuzzFloat(in));
+			break;
+		case 2:
+			tbBody_SetTransform(body, FuzzVec2(in), tbMakeRot(FuzzFloat(in)));
+			break;
+		case 3:
+			tbBody_ApplyForceToCenter(body, FuzzVec2(in), true);
+			break;
+		case 4:
+			tbBody_ApplyLinearImpulse(body, FuzzVec2(in), FuzzVec2(in), true);
+			break;
+		case 5:
+			tbBody_ApplyTorque(body, FuzzFloat(in), true);
+			break;
+		case 6:
+			tbBody_SetType(body, (tbBodyType)FuzzInt(in, 4));
+			break;
+		default:
+			if (ids->shapeCount > 0)
+			{
+				tbShape_SetDensity(ids->shapes[FuzzInt(in, ids->shapeCount)], FuzzFloat(in), true);
+			}
+			break;
+	}
+}
+
+static bool CountOverlap(tbShapeId shapeId, void* context)
+{
+	(void)shapeId;
+	*(int*)context += 1;
+	return true;
+}
+
+static float ClipCast(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+{
+	(void)shapeId;
+	(void)normal;
+	(void)context;
+	FUZZ_CHECK(FuzzIsFinite2(point.x, point.y) && isfinite(fraction), "cast result");
+	return fraction;
+}
+
+static void Query(FuzzInput* in, tbWorldId world)
+{
+	tbVec2 a = FuzzVec2(in), b = FuzzVec2(in);
+	tbAABB box = {tbMin(a, b), tbMax(a, b)};
+	int found = 0;
+	tbWorld_OverlapAABB(world, box, tbDefaultQueryFilter(), CountOverlap, &found);
+	tbWorld_CastRay(world, a, tbSub(b, a), tbDefaultQueryFilter(), ClipCast, NULL);
+	tbGeometry g = FuzzGeometry(in);
+	tbTransform xf = {a, tbMakeRot(FuzzFloat(in))};
+	tbWorld_CastShape(world, &g, xf, FuzzVec2(in), tbDefaultQueryFilter(), ClipCast, NULL);
+	tbWorld_OverlapShape(world, &g, xf, tbDefaultQueryFilter(), CountOverlap, &found);
+}
+
+static void CheckStep(const Ids* ids)
+{
+	for (int i = 0; i < ids->bodyCount; ++i)
+	{
+		if (tbBody_IsValid(ids->bodies[i]))
+		{
+			tbVec2 p = tbBody_GetPosition(ids->bodies[i]);
+			tbVec2 v = tbBody_GetLinearVelocity(ids->bodies[i]);
+			FUZZ_CHECK(FuzzIsFinite2(p.x, p.y) && FuzzIsFinite2(v.x, v.y), "body %d at (%g, %g) v (%g, %g)", i,
+					   (double)p.x, (double)p.y, (double)v.x, (double)v.y);
+		}
+	}
+	for (int i = 0; i < ids->deadBodyCount; ++i)
+	{
+		FUZZ_CHECK(tbBody_IsValid(ids->deadBodies[i]) == false, "stale body id %d accepted", i);
+	}
+	for (int i = 0; i < ids->deadShapeCount; ++i)
+	{
+		FUZZ_CHECK(tbShape_IsValid(ids->deadShapes[i]) == false, "stale shape id %d accepted", i);
+	}
+}
+
+// A world's bodies and shapes die with it: their ids join the stale lists.
+static void DestroyWorld(Ids* ids, int slot)
+{
+	tbWorldId world = ids->worlds[slot];
+	for (int i = ids->bodyCount - 1; i >= 0; --i)
+	{
+		if (ids->bodies[i].world0 == world.index1 - 1)
+		{
+			Remember(ids->deadBodies, &ids->deadBodyCount, ids->bodies[i]);
+			ids->bodies[i] = ids->bodies[--ids->bodyCount];
+		}
+	}
+	for (int i = ids->shapeCount - 1; i >= 0; --i)
+	{
+		if (ids->shapes[i].world0 == world.index1 - 1)
+		{
+			RememberShape(ids->deadShapes, &ids->deadShapeCount, ids->shapes[i]);
+			ids->shapes[i] = ids->shapes[--ids->shapeCount];
+		}
+	}
+	tbDestroyWorld(world);
+}
+
+static tbWorldId CreateWorld(FuzzInput* in)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = FuzzInt(in, 2) ? FuzzVec2(in) : def.gravity;
+	def.broadPhase = (tbBroadPhaseMethod)FuzzInt(in, tb_broadPhaseMethodCount);
+	def.narrowPhase = (tbNarrowPhaseMethod)FuzzInt(in, 3);
+	def.continuous = (tbContinuousMethod)FuzzInt(in, tb_continuousMethodCount);
+	def.solver = (tbSolverMethod)FuzzInt(in, tb_solverMethodCount);
+	def.enableWideSolver = FuzzInt(in, 2) == 0;
+	return tbCreateWorld(&def);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+	tbSetErrorCallback(Quiet, NULL);
+	FuzzInput in = {data, size, 0};
+	Ids ids;
+	memset(&ids, 0, sizeof(ids));
+	ids.worlds[0] = CreateWorld(&in);
+	int steps = 0;
+	while (in.offset < in.size)
+	{
+		int slot = FuzzInt(&in, 4);
+		tbWorldId world = ids.worlds[slot];
+		switch (FuzzInt(&in, 10))
+		{
+			case 0:
+			case 1:
+				CreateBody(&in, &ids, world);
+				break;
+			case 2:
+				CreateShape(&in, &ids);
+				break;
+			case 3:
+				DestroyBody(&in, &ids);
+				break;
+			case 4:
+				DestroyShape(&in, &ids);
+				break;
+			case 5:
+				Modify(&in, &ids);
+				break;
+			case 6:
+				if (steps < 200 && tbWorld_Step(world, FuzzInt(&in, 2) ? FuzzFloat(&in) : 1.0f / 60.0f, 1 + FuzzInt(&in, 8)))
+				{
+					steps += 1;
+				}
+				CheckStep(&ids);
+				break;
+			case 7:
+				Query(&in, world);
+				break;
+			case 8:
+				tbWorld_SetGravity(world, FuzzVec2(&in));
+				break;
+			default:
+				if (tbWorld_IsValid(world))
+				{
+					DestroyWorld(&ids, slot);
+				}
+				else
+				{
+					ids.worlds[slot] = CreateWorld(&in);
+				}
+				CheckStep(&ids);
+				break;
+		}
+	}
+	for (int i = 0; i < 4; ++i)
+	{
+		if (tbWorld_IsValid(ids.worlds[i]))
+		{
+			tbDestroyWorld(ids.worlds[i]);
+		}
+	}
+	FUZZ_CHECK(tbGetByteCount() == 0, "%d bytes left after destroying every world", tbGetByteCount());
+	return 0;
+}

@@ -1,0 +1,453 @@
+// The limits stated in docs/limits.md: what the API refuses (with one error naming the function
+// and the argument), what it clamps, and that the collision layer neither aborts nor leaves
+// undefined behaviour on input it does not refuse. Each test is named after the rule it guards.
+#include <criterion/criterion.h>
+
+#include "tumble/tumble.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "error_recorder.h"
+
+// --- an assertion hook that counts instead of aborting ----------------------------------------
+
+static int s_asserts;
+
+static int CountAssert(const char* condition, const char* fileName, int lineNumber)
+{
+	(void)condition;
+	(void)fileName;
+	(void)lineNumber;
+	s_asserts += 1;
+	return 0; // do not break: the test reports the count
+}
+
+static void SetupHooks(void)
+{
+	SetupErrors();
+	s_asserts = 0;
+	tbSetAssertFcn(CountAssert);
+}
+
+static void TeardownHooks(void)
+{
+	TeardownErrors();
+	tbSetAssertFcn(NULL);
+}
+
+// A box polygon built by hand (the constructors refuse these sizes): vertices ±h, unit normals.
+static tbPolygon HandBuiltBox(float h, float radius)
+{
+	tbPolygon box;
+	memset(&box, 0, sizeof(box));
+	box.count = 4;
+	box.vertices[0] = tbMakeVec2(-h, -h);
+	box.vertices[1] = tbMakeVec2(h, -h);
+	box.vertices[2] = tbMakeVec2(h, h);
+	box.vertices[3] = tbMakeVec2(-h, h);
+	box.normals[0] = tbMakeVec2(0.0f, -1.0f);
+	box.normals[1] = tbMakeVec2(1.0f, 0.0f);
+	box.normals[2] = tbMakeVec2(0.0f, 1.0f);
+	box.normals[3] = tbMakeVec2(-1.0f, 0.0f);
+	box.radius = radius;
+	return box;
+}
+
+static tbSweep StillSweep(tbVec2 center)
+{
+	tbSweep sweep = {{0.0f, 0.0f}, center, center, tb_rot_identity, tb_rot_identity};
+	return sweep;
+}
+
+// Every GJK-based query of the collision layer on one pair of proxies / polygons, B placed by xfB.
+static void QueryPair(const tbPolygon* a, const tbPolygon* b, tbTransform xfB)
+{
+	tbTransform xfA = tb_transform_identity;
+	(void)tbCollidePolygons(a, xfA, b, xfB);
+	(void)tbCollidePolygonsGJK(a, xfA, b, xfB);
+
+	tbDistanceInput input;
+	memset(&input, 0, sizeof(input));
+	// proxies built directly: tbMakeProxy would refuse these points
+	input.proxyA.count = a->count;
+	input.proxyB.count = b->count;
+	memcpy(input.proxyA.points, a->vertices, sizeof(a->vertices));
+	memcpy(input.proxyB.points, b->vertices, sizeof(b->vertices));
+	input.proxyA.radius = a->radius;
+	input.proxyB.radius = b->radius;
+	input.transformA = xfA;
+	input.transformB = xfB;
+	input.useRadii = true;
+	(void)tbShapeDistance(&input, NULL, NULL);
+	(void)tbShapeSeparation(&input, NULL);
+
+	tbShapeCastPairInput cast;
+	memset(&cast, 0, sizeof(cast));
+	cast.proxyA = input.proxyA;
+	cast.proxyB = input.proxyB;
+	cast.transformA = xfA;
+	cast.transformB = xfB;
+	cast.translationB = tbMakeVec2(3.0f, 0.0f);
+	cast.maxFraction = 1.0f;
+	(void)tbShapeCast(&cast);
+
+	tbTOIInput toi;
+	memset(&toi, 0, sizeof(toi));
+	toi.proxyA = input.proxyA;
+	toi.proxyB = input.proxyB;
+	toi.sweepA = StillSweep(tbMakeVec2(0.0f, 0.0f));
+	toi.sweepB = StillSweep(xfB.p);
+	toi.sweepB.q1 = toi.sweepB.q2 = xfB.q;
+	toi.sweepB.c2 = tbAdd(xfB.p, tbMakeVec2(3.0f, 0.0f));
+	toi.maxFraction = 1.0f;
+	toi.targetSeparation = TB_TOI_TARGET_SEPARATION;
+	(void)tbTimeOfImpact(&toi);
+}
+
+// The pair under the placements that made GJK assert before: B turned by 1 to 6 rad at a
+// small offset, and far away.
+static void QueryEverything(const tbPolygon* a, const tbPolygon* b)
+{
+	tbVec2 offsets[3] = {{0.5f, 0.25f}, {-1.0f, 0.25f}, {0.5f, 1e19f}};
+	for (int k = 0; k < 3; ++k)
+	{
+		for (int angle = 0; angle <= 6; ++angle)
+		{
+			QueryPair(a, b, (tbTransform){offsets[k], tbMakeRot((float)angle)});
+			QueryPair(b, a, (tbTransform){offsets[k], tbMakeRot((float)angle)});
+		}
+	}
+}
+
+Test(collision_input, queries_never_assert_on_input_beyond_the_float_range, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: the GJK triangle solve asserted (sum > 0) for FLT_MAX boxes, NaN or negative radii
+	// and an infinite segment end. The answers for such input are not meaningful; they must not
+	// abort.
+	tbPolygon unit = HandBuiltBox(0.5f, 0.0f);
+	tbPolygon huge = HandBuiltBox(FLT_MAX, 0.0f);
+	tbPolygon big = HandBuiltBox(1e19f, 0.0f);
+	tbPolygon infinite = HandBuiltBox(INFINITY, 0.0f);
+	QueryEverything(&big, &huge);
+	QueryEverything(&infinite, &unit);
+	tbPolygon nanRadius = HandBuiltBox(0.5f, NAN);
+	tbPolygon negativeRadius = HandBuiltBox(0.5f, -1.0f);
+	tbPolygon nanVertex = unit;
+	nanVertex.vertices[2].x = NAN;
+	QueryEverything(&huge, &huge);
+	QueryEverything(&huge, &unit);
+	QueryEverything(&unit, &nanRadius);
+	QueryEverything(&negativeRadius, &unit);
+	QueryEverything(&nanVertex, &unit);
+
+	tbSegment endless = {{0.0f, 0.0f}, {INFINITY, 1.0f}};
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	for (int angle = 0; angle <= 6; ++angle)
+	{
+		tbTransform xf = {{0.5f, 0.25f}, tbMakeRot((float)angle)};
+		(void)tbCollideSegmentAndPolygon(&endless, tb_transform_identity, &unit, xf);
+		(void)tbCollideSegmentAndCircle(&endless, tb_transform_identity, &circle, xf);
+	}
+	cr_assert_eq(s_asserts, 0, "%d internal assertions fired", s_asserts);
+}
+
+Test(collision_input, shapes_beyond_max_coordinate_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	int n = s_errors;
+	tbPolygon box = tbMakeBox(FLT_MAX, 1.0f);
+	cr_assert_eq(box.count, 0);
+	ExpectError(n, "tbMakeBox", "halfWidth");
+	box = tbMakeRoundedBox(1.0f, 2.0f * TB_MAX_COORDINATE, 0.1f);
+	cr_assert_eq(box.count, 0);
+	ExpectError(n + 1, "tbMakeRoundedBox", "halfHeight");
+	box = tbMakeOffsetBox(1.0f, 1.0f, tbMakeVec2(TB_MAX_COORDINATE, 0.0f), tb_rot_identity);
+	cr_assert_eq(box.count, 0, "a corner lies 1 m beyond the bound");
+	ExpectError(n + 2, "tbMakeOffsetBox", "vertices");
+	tbVec2 points[3] = {{0.0f, 0.0f}, {3e30f, 0.0f}, {0.0f, 1.0f}};
+	tbHull hull = tbComputeHull(points, 3);
+	cr_assert_eq(hull.count, 0);
+	ExpectError(n + 3, "tbComputeHull", "points[1]");
+	// At the bound itself the box is accepted.
+	box = tbMakeBox(TB_MAX_COORDINATE, 1.0f);
+	cr_assert_eq(box.count, 4);
+	cr_assert_eq(s_errors, n + 4);
+}
+
+Test(collision_input, proxy_with_bad_count_or_radius_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: tbMakeProxy asserted for 9 points and for the empty polygon of a refused tbMakeBox.
+	tbVec2 points[9] = {{0.0f, 0.0f}};
+	int n = s_errors;
+	tbShapeProxy proxy = tbMakeProxy(points, 9, 0.0f);
+	cr_assert_eq(proxy.count, 0);
+	ExpectError(n, "tbMakeProxy", "count");
+	tbPolygon refused = tbMakeBox(-1.0f, 1.0f);
+	ExpectError(n + 1, "tbMakeBox", "halfWidth");
+	proxy = tbMakeProxy(refused.vertices, refused.count, refused.radius);
+	cr_assert_eq(proxy.count, 0);
+	ExpectError(n + 2, "tbMakeProxy", "count");
+	proxy = tbMakeProxy(points, 1, NAN);
+	ExpectError(n + 3, "tbMakeProxy", "radius");
+	proxy = tbMakeProxy(points, 1, -0.5f);
+	ExpectError(n + 4, "tbMakeProxy", "radius");
+
+	// The empty proxy is refused by every query that takes proxies, with a zeroed answer.
+	tbDistanceInput input;
+	memset(&input, 0, sizeof(input));
+	input.proxyA = proxy;
+	input.proxyB = tbMakeProxy(points, 1, 0.5f);
+	input.transformA = input.transformB = tb_transform_identity;
+	tbDistanceOutput distance = tbShapeDistance(&input, NULL, NULL);
+	ExpectError(n + 5, "tbShapeDistance", "proxyA");
+	cr_assert(distance.distance == 0.0f && distance.iterations == 0);
+	tbSeparationOutput separation = tbShapeSeparation(&input, NULL);
+	ExpectError(n + 6, "tbShapeSeparation", "proxyA");
+	cr_assert(separation.separation == 0.0f && separation.normal.y == 1.0f, "unit normal, as the header promises");
+	tbShapeCastPairInput cast;
+	memset(&cast, 0, sizeof(cast));
+	cast.proxyA = input.proxyB;
+	cast.proxyB = proxy;
+	cast.transformA = cast.transformB = tb_transform_identity;
+	cast.maxFraction = 1.0f;
+	cr_assert_not(tbShapeCast(&cast).hit);
+	ExpectError(n + 7, "tbShapeCast", "proxyB");
+	tbTOIInput toi;
+	memset(&toi, 0, sizeof(toi));
+	toi.proxyA = proxy;
+	toi.proxyB = input.proxyB;
+	toi.sweepA = toi.sweepB = StillSweep(tb_vec2_zero);
+	toi.maxFraction = 1.0f;
+	cr_assert_eq(tbTimeOfImpact(&toi).state, tb_toiStateUnknown);
+	ExpectError(n + 8, "tbTimeOfImpact", "proxyA");
+	cr_assert_eq(s_asserts, 0);
+}
+
+// --- the world ----------------------------------------------------------------------------------
+
+static tbBodyId MakeBox(tbWorldId world, tbVec2 position, tbVec2 velocity)
+{
+	tbBodyDef def = tbDefaultBodyDef();
+	def.type = tb_dynamicBody;
+	def.position = position;
+	def.linearVelocity = velocity;
+	tbBodyId body = tbCreateBody(world, &def);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	tbCreatePolygonShape(body, &shapeDef, &box);
+	return body;
+}
+
+Test(world_limits, step_counts_and_spans_beyond_bounds_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: 2^31 − 1 sub-steps were accepted (a step then ran for minutes) and so was a time step
+	// of 1e30 s.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId body = MakeBox(world, tbMakeVec2(0.0f, 10.0f), tb_vec2_zero);
+	int n = s_errors;
+	cr_assert_not(tbWorld_Step(world, 1.0f / 60.0f, 2147483647));
+	ExpectError(n, "tbWorld_Step", "subStepCount");
+	cr_assert_not(tbWorld_Step(world, 1.0f / 60.0f, TB_MAX_SUB_STEPS + 1));
+	ExpectError(n + 1, "tbWorld_Step", "subStepCount");
+	cr_assert_not(tbWorld_Step(world, 1e30f, 4));
+	ExpectError(n + 2, "tbWorld_Step", "timeStep");
+	cr_assert_float_eq(tbBody_GetPosition(body).y, 10.0f, 0.0f, "a refused step leaves the world unchanged");
+	cr_assert(tbWorld_Step(world, TB_MAX_TIME_STEP, TB_MAX_SUB_STEPS), "the bounds themselves are accepted");
+
+	cr_assert_not(tbWorld_SetSolverMethod(world, tb_solverSoft, TB_MAX_ITERATIONS + 1, 3));
+	ExpectError(n + 3, "tbWorld_SetSolverMethod", "iterations");
+	def.relaxIterations = 1000000;
+	cr_assert(TB_IS_NULL(tbCreateWorld(&def)));
+	ExpectError(n + 4, "tbCreateWorld", "iterations");
+	def = tbDefaultWorldDef();
+	def.maximumLinearSpeed = FLT_MAX;
+	cr_assert(TB_IS_NULL(tbCreateWorld(&def)));
+	ExpectError(n + 5, "tbCreateWorld", "maximumLinearSpeed");
+
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.position = tbMakeVec2(0.0f, 2.0f * TB_MAX_COORDINATE);
+	cr_assert(TB_IS_NULL(tbCreateBody(world, &bodyDef)));
+	ExpectError(n + 6, "tbCreateBody", "def->position");
+	cr_assert_not(tbBody_SetTransform(body, tbMakeVec2(-3e38f, 0.0f), tb_rot_identity));
+	ExpectError(n + 7, "tbBody_SetTransform", "position");
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, huge_velocity_clamped_to_maximum_speed_not_zeroed, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: |v|² of 1e20 m/s overflowed, the clamp factor max/|v| became 0 and the body stopped.
+	// The clamp keeps the direction and sets |v| = maximumLinearSpeed (4000 m/s by default),
+	// exactly up to float rounding of the normalisation (4 ulps of 4000 m/s).
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tb_vec2_zero;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId body = MakeBox(world, tb_vec2_zero, tbMakeVec2(3e20f, 4e20f));
+	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	float tolerance = 4.0f * FLT_EPSILON * def.maximumLinearSpeed;
+	cr_assert_float_eq(v.x, 0.6f * def.maximumLinearSpeed, tolerance, "v = (%g, %g)", (double)v.x, (double)v.y);
+	cr_assert_float_eq(v.y, 0.8f * def.maximumLinearSpeed, tolerance);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, gravity_near_float_max_clamped_and_positions_finite, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: gravity 3e38 m/s² (and a gravity scale that makes it overflow to infinity) zeroed the
+	// velocity or gave NaN positions. Clamped: the body falls at maximumLinearSpeed.
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, -3e38f);
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId body = MakeBox(world, tb_vec2_zero, tb_vec2_zero);
+	tbBodyDef scaledDef = tbDefaultBodyDef();
+	scaledDef.type = tb_dynamicBody;
+	scaledDef.gravityScale = 10.0f; // 3e39: infinite in float
+	scaledDef.position = tbMakeVec2(10.0f, 0.0f);
+	tbBodyId scaled = tbCreateBody(world, &scaledDef);
+	for (int i = 0; i < 10; ++i)
+	{
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	}
+	float tolerance = 4.0f * FLT_EPSILON * def.maximumLinearSpeed;
+	cr_assert_float_eq(tbBody_GetLinearVelocity(body).y, -def.maximumLinearSpeed, tolerance);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(scaled).y, -def.maximumLinearSpeed, tolerance);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(scaled).x, 0.0f, 0.0f);
+	// 10 steps at 4000 m/s: 10 · 4000/60 m, to the same relative rounding
+	cr_assert_float_eq(tbBody_GetPosition(scaled).y, -10.0f * def.maximumLinearSpeed / 60.0f, 1e-3f);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, density_overflowing_mass_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: density 3e38 on a 2 m × 2 m box gave an infinite mass and NaN positions.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.density = 3e38f;
+	tbPolygon box = tbMakeBox(1.0f, 1.0f);
+	int n = s_errors;
+	cr_assert(TB_IS_NULL(tbCreatePolygonShape(body, &shapeDef, &box)));
+	ExpectError(n, "tbCreatePolygonShape", "density");
+	shapeDef.density = 1.0f;
+	tbShapeId shape = tbCreatePolygonShape(body, &shapeDef, &box);
+	cr_assert_not(tbShape_SetDensity(shape, 3e38f, true));
+	ExpectError(n + 1, "tbShape_SetDensity", "density");
+	cr_assert_float_eq(tbBody_GetMass(body), 4.0f, 0.0f, "the refused density left the mass of 4 kg");
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, body_mass_saturates_when_shape_masses_sum_past_float_max, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// Each shape's mass (1e38 kg · 4 m² / 4 ... ) is finite, their sum is not: the body's mass
+	// saturates at FLT_MAX and the body still moves with finite numbers.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.density = 1e38f; // mass 1e38 kg per 1 m² square
+	for (int i = 0; i < 5; ++i)
+	{
+		tbPolygon square = tbMakeOffsetBox(0.5f, 0.5f, tbMakeVec2((float)i, 0.0f), tb_rot_identity);
+		cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(body, &shapeDef, &square)));
+	}
+	cr_assert_eq(s_errors, 0);
+	cr_assert_float_eq(tbBody_GetMass(body), FLT_MAX, 0.0f);
+	// the centre of mass is still the middle of the five squares, computed in double
+	cr_assert_float_eq(tbBody_GetLocalCenterOfMass(body).x, 2.0f, 1e-6f);
+	cr_assert(isfinite(tbBody_GetRotationalInertia(body)));
+	for (int i = 0; i < 10; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	tbVec2 p = tbBody_GetPosition(body);
+	cr_assert(isfinite(p.x) && isfinite(p.y));
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, shapeless_body_in_flight_stays_awake)
+{
+	// Before: a dynamic body without shapes (no extent) fell asleep at 10 m/s after 0.5 s. Without
+	// gravity it must coast at 10 m/s for 2 s: x = 20 m to rounding (120 steps of 10/60 m).
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tb_vec2_zero;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.linearVelocity = tbMakeVec2(10.0f, 0.0f);
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	for (int i = 0; i < 120; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_assert(tbBody_IsAwake(body));
+	cr_assert_float_eq(tbBody_GetPosition(body).x, 20.0f, 1e-3f);
+
+	// A shapeless body at rest does fall asleep (after TB_TIME_TO_SLEEP, 0.5 s).
+	tbBody_SetLinearVelocity(body, tb_vec2_zero);
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_assert_not(tbBody_IsAwake(body));
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, empty_world_steps_with_every_broad_phase)
+{
+	// Before: sort-and-sweep called qsort with a NULL array on an empty world (undefined).
+	for (int method = tb_broadPhaseAuto; method < tb_broadPhaseMethodCount; ++method)
+	{
+		tbWorldDef def = tbDefaultWorldDef();
+		def.broadPhase = (tbBroadPhaseMethod)method;
+		tbWorldId world = tbCreateWorld(&def);
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+		tbDestroyWorld(world);
+	}
+}
+
+Test(world_limits, tree_rebuild_with_leaves_spanning_more_than_float_max)
+{
+	// Before: the binned rebuild converted 0·∞ = NaN to int (undefined) when the leaf centres
+	// spanned more than FLT_MAX. The tree stays valid and both leaves are found.
+	tbDynamicTree tree = tbDynamicTree_Create();
+	tbAABB left = {{-3e38f, 0.0f}, {-2.9e38f, 1.0f}};
+	tbAABB right = {{2.9e38f, 0.0f}, {3e38f, 1.0f}};
+	tbAABB middle = {{0.0f, 0.0f}, {1.0f, 1.0f}};
+	tbDynamicTree_CreateProxy(&tree, left, 1, 0);
+	tbDynamicTree_CreateProxy(&tree, right, 1, 1);
+	tbDynamicTree_CreateProxy(&tree, middle, 1, 2);
+	tbDynamicTree_Rebuild(&tree);
+	cr_assert(tbDynamicTree_Validate(&tree));
+	cr_assert_eq(tbDynamicTree_GetHeight(&tree), 2);
+	tbDynamicTree_Destroy(&tree);
+}
+
+Test(collision_input, distance_between_boxes_smaller_than_sqrt_flt_min_is_finite, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// Found by fuzz_collision: two 2e-20 m boxes (tbMakeBox accepts them) gave NaN witness points,
+	// because an edge's weights sum to its squared length, 4e-40 < FLT_MIN, and 1/sum overflowed.
+	tbPolygon a = tbMakeRoundedBox(1e-20f, 1e-20f, 1e-20f);
+	tbPolygon b = tbMakeBox(1e-20f, 1e-20f);
+	tbDistanceInput input;
+	memset(&input, 0, sizeof(input));
+	input.proxyA = tbMakeShapeProxy(&(tbGeometry){.type = tb_polygonShape, .polygon = a});
+	input.proxyB = tbMakeShapeProxy(&(tbGeometry){.type = tb_polygonShape, .polygon = b});
+	input.transformA = (tbTransform){{1e-20f, 1e-20f}, {0.950232625f, 0.311541259f}};
+	input.transformB = (tbTransform){{FLT_MIN, -1e-40f}, {1.0f, 1e-20f}};
+	input.useRadii = true;
+	tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL);
+	cr_assert(isfinite(out.pointA.x) && isfinite(out.pointA.y) && isfinite(out.pointB.x) && isfinite(out.pointB.y),
+			  "(%g, %g) (%g, %g)", (double)out.pointA.x, (double)out.pointA.y, (double)out.pointB.x,
+			  (double)out.pointB.y);
+	cr_assert(isfinite(out.distance) && out.distance >= 0.0f);
+	cr_assert_eq(s_errors, 0);
+}
