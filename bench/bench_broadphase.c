@@ -122,7 +122,7 @@ static float RunCase(tbBroadPhaseMethod method, int count, bool mixed, int steps
 		tbBroadPhase_UpdatePairs(&bp);
 	}
 	float ms = tbGetMilliseconds(start) / (float)steps;
-	*pairCount = bp.pairCount;
+	*pairCount = bp.pairList.count;
 	tbBroadPhase_Destroy(&bp);
 	return ms;
 }

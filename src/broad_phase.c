@@ -44,7 +44,7 @@ static tbDynamicTree* tbTreeOf(tbBroadPhase* bp, const tbBroadProxy* proxy)
 
 static void tbAddToMethod(tbBroadPhase* bp, int key)
 {
-	tbBroadProxy* p = bp->proxies + key;
+	tbBroadProxy* p = bp->table.proxies + key;
 	switch (bp->method)
 	{
 		case tb_broadPhaseTree:
@@ -52,17 +52,17 @@ static void tbAddToMethod(tbBroadPhase* bp, int key)
 			bp->staticInsertCount += p->type == tb_proxyStatic ? 1 : 0;
 			break;
 		case tb_broadPhaseSortAndSweep:
-			tbSortAndSweep_AddProxy(bp->sweep, bp, key);
+			tbSortAndSweep_AddProxy(bp->sweep, &bp->table, key);
 			break;
 		default:
-			tbBruteForce_AddProxy(bp->brute, bp, key);
+			tbBruteForce_AddProxy(bp->brute, &bp->table, key);
 			break;
 	}
 }
 
 static void tbRemoveFromMethod(tbBroadPhase* bp, int key)
 {
-	tbBroadProxy* p = bp->proxies + key;
+	tbBroadProxy* p = bp->table.proxies + key;
 	switch (bp->method)
 	{
 		case tb_broadPhaseTree:
@@ -87,9 +87,9 @@ static void tbCreateMethodState(tbBroadPhase* bp)
 	bp->brute = bp->method == tb_broadPhaseBruteForce ? tbBruteForce_Create() : NULL;
 	bp->staticInsertCount = 0;
 	bp->enlargedCount = 0;
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < bp->table.capacity; ++key)
 	{
-		if (bp->proxies[key].isFree == false)
+		if (bp->table.proxies[key].isFree == false)
 		{
 			tbAddToMethod(bp, key);
 		}
@@ -135,9 +135,9 @@ void tbBroadPhase_Create(tbBroadPhase* bp, tbBroadPhaseMethod method)
 void tbBroadPhase_Destroy(tbBroadPhase* bp)
 {
 	tbDestroyMethodState(bp);
-	tbFree(bp->proxies, bp->proxyCapacity * (int)sizeof(tbBroadProxy));
+	tbFree(bp->table.proxies, bp->table.capacity * (int)sizeof(tbBroadProxy));
 	tbFree(bp->moveBuffer, bp->moveCapacity * (int)sizeof(int));
-	tbFree(bp->pairs, bp->pairCapacity * (int)sizeof(tbShapePair));
+	tbPairList_Destroy(&bp->pairList);
 	memset(bp, 0, sizeof(*bp));
 	bp->freeProxy = -1;
 }
@@ -145,7 +145,7 @@ void tbBroadPhase_Destroy(tbBroadPhase* bp)
 /// Put a proxy in the move buffer unless it is there already.
 static void tbMarkMoved(tbBroadPhase* bp, int key)
 {
-	tbBroadProxy* p = bp->proxies + key;
+	tbBroadProxy* p = bp->table.proxies + key;
 	if (p->moveIndex >= 0)
 	{
 		return;
@@ -168,7 +168,7 @@ static void tbClearMoveBuffer(tbBroadPhase* bp)
 		int key = bp->moveBuffer[i];
 		if (key >= 0)
 		{
-			bp->proxies[key].moveIndex = -1;
+			bp->table.proxies[key].moveIndex = -1;
 		}
 	}
 	bp->moveCount = 0;
@@ -180,9 +180,9 @@ void tbBroadPhase_SetMethod(tbBroadPhase* bp, tbBroadPhaseMethod method)
 	bp->method = tbResolveMethod(method);
 	tbCreateMethodState(bp);
 	tbClearMoveBuffer(bp);
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < bp->table.capacity; ++key)
 	{
-		if (bp->proxies[key].isFree == false)
+		if (bp->table.proxies[key].isFree == false)
 		{
 			tbMarkMoved(bp, key);
 		}
@@ -197,26 +197,26 @@ static int tbAllocateProxy(tbBroadPhase* bp)
 {
 	if (bp->freeProxy < 0)
 	{
-		int n = bp->proxyCapacity;
+		int n = bp->table.capacity;
 		int m = tbMaxInt(16, 2 * n);
-		bp->proxies = tbGrowAlloc(bp->proxies, n * (int)sizeof(tbBroadProxy), m * (int)sizeof(tbBroadProxy));
+		bp->table.proxies = tbGrowAlloc(bp->table.proxies, n * (int)sizeof(tbBroadProxy), m * (int)sizeof(tbBroadProxy));
 		for (int i = n; i < m; ++i)
 		{
-			bp->proxies[i] = (tbBroadProxy){.handle = i + 1 < m ? i + 1 : -1, .moveIndex = -1, .isFree = true};
+			bp->table.proxies[i] = (tbBroadProxy){.handle = i + 1 < m ? i + 1 : -1, .moveIndex = -1, .isFree = true};
 		}
 		bp->freeProxy = n;
-		bp->proxyCapacity = m;
+		bp->table.capacity = m;
 	}
 	int key = bp->freeProxy;
-	bp->freeProxy = bp->proxies[key].handle;
+	bp->freeProxy = bp->table.proxies[key].handle;
 	return key;
 }
 
 int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex, tbProxyType type)
 {
 	int key = tbAllocateProxy(bp);
-	bp->proxies[key] = (tbBroadProxy){fatAABB, categoryBits, shapeIndex, type, -1, -1, false};
-	bp->proxyCount += 1;
+	bp->table.proxies[key] = (tbBroadProxy){fatAABB, categoryBits, shapeIndex, type, -1, -1, false};
+	bp->table.count += 1;
 	tbAddToMethod(bp, key);
 	tbMarkMoved(bp, key);
 	return key;
@@ -224,8 +224,8 @@ int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t category
 
 void tbBroadPhase_DestroyProxy(tbBroadPhase* bp, int proxyKey)
 {
-	TB_ASSERT(0 <= proxyKey && proxyKey < bp->proxyCapacity && bp->proxies[proxyKey].isFree == false);
-	tbBroadProxy* p = bp->proxies + proxyKey;
+	TB_ASSERT(0 <= proxyKey && proxyKey < bp->table.capacity && bp->table.proxies[proxyKey].isFree == false);
+	tbBroadProxy* p = bp->table.proxies + proxyKey;
 	tbRemoveFromMethod(bp, proxyKey);
 	if (p->moveIndex >= 0)
 	{
@@ -233,13 +233,13 @@ void tbBroadPhase_DestroyProxy(tbBroadPhase* bp, int proxyKey)
 	}
 	*p = (tbBroadProxy){.handle = bp->freeProxy, .moveIndex = -1, .isFree = true};
 	bp->freeProxy = proxyKey;
-	bp->proxyCount -= 1;
+	bp->table.count -= 1;
 }
 
 void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB)
 {
-	TB_ASSERT(0 <= proxyKey && proxyKey < bp->proxyCapacity && bp->proxies[proxyKey].isFree == false);
-	tbBroadProxy* p = bp->proxies + proxyKey;
+	TB_ASSERT(0 <= proxyKey && proxyKey < bp->table.capacity && bp->table.proxies[proxyKey].isFree == false);
+	tbBroadProxy* p = bp->table.proxies + proxyKey;
 	p->aabb = fatAABB;
 	if (bp->method == tb_broadPhaseTree && p->type == tb_proxyStatic)
 	{
@@ -257,41 +257,23 @@ void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB)
 
 tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey)
 {
-	TB_ASSERT(0 <= proxyKey && proxyKey < bp->proxyCapacity);
-	return bp->proxies[proxyKey].aabb;
+	TB_ASSERT(0 <= proxyKey && proxyKey < bp->table.capacity);
+	return bp->table.proxies[proxyKey].aabb;
 }
 
 void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, void* context)
 {
-	bp->pairFilter = filter;
-	bp->pairFilterContext = context;
+	bp->pairList.filter = filter;
+	bp->pairList.filterContext = context;
 }
 
 bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)
 {
-	return tbAABB_Overlaps(bp->proxies[proxyKeyA].aabb, bp->proxies[proxyKeyB].aabb);
+	return tbAABB_Overlaps(bp->table.proxies[proxyKeyA].aabb, bp->table.proxies[proxyKeyB].aabb);
 }
 
 // --------------------------------------------------------------------------------------------
 // Pairs
-
-void tbBroadPhase_AddPair(tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)
-{
-	int a = bp->proxies[proxyKeyA].shapeIndex;
-	int b = bp->proxies[proxyKeyB].shapeIndex;
-	if (bp->pairFilter != NULL && bp->pairFilter(a, b, bp->pairFilterContext) == false)
-	{
-		return;
-	}
-	if (bp->pairCount == bp->pairCapacity)
-	{
-		int n = bp->pairCapacity;
-		int m = tbMaxInt(64, 2 * n);
-		bp->pairs = tbGrowAlloc(bp->pairs, n * (int)sizeof(tbShapePair), m * (int)sizeof(tbShapePair));
-		bp->pairCapacity = m;
-	}
-	bp->pairs[bp->pairCount++] = a < b ? (tbShapePair){a, b} : (tbShapePair){b, a};
-}
 
 static int tbComparePairs(const void* left, const void* right)
 {
@@ -307,21 +289,21 @@ static int tbComparePairs(const void* left, const void* right)
 /// Sort by (a, b) and drop repeats.
 static void tbSortUniquePairs(tbBroadPhase* bp)
 {
-	if (bp->pairCount < 2)
+	if (bp->pairList.count < 2)
 	{
 		return;
 	}
-	qsort(bp->pairs, (size_t)bp->pairCount, sizeof(tbShapePair), tbComparePairs);
+	qsort(bp->pairList.pairs, (size_t)bp->pairList.count, sizeof(tbShapePair), tbComparePairs);
 	int n = 1;
-	for (int i = 1; i < bp->pairCount; ++i)
+	for (int i = 1; i < bp->pairList.count; ++i)
 	{
-		tbShapePair p = bp->pairs[i];
-		if (p.a != bp->pairs[n - 1].a || p.b != bp->pairs[n - 1].b)
+		tbShapePair p = bp->pairList.pairs[i];
+		if (p.a != bp->pairList.pairs[n - 1].a || p.b != bp->pairList.pairs[n - 1].b)
 		{
-			bp->pairs[n++] = p;
+			bp->pairList.pairs[n++] = p;
 		}
 	}
-	bp->pairCount = n;
+	bp->pairList.count = n;
 }
 
 typedef struct tbPairQueryContext
@@ -339,11 +321,11 @@ static bool tbPairQueryCallback(int treeProxyId, int otherKey, void* context)
 		return true;
 	}
 	// Both moved: both queries find the pair; the larger key reports it.
-	if (c->bp->proxies[otherKey].moveIndex >= 0 && otherKey > c->queryKey)
+	if (c->bp->table.proxies[otherKey].moveIndex >= 0 && otherKey > c->queryKey)
 	{
 		return true;
 	}
-	tbBroadPhase_AddPair(c->bp, c->queryKey, otherKey);
+	tbPairList_Add(&c->bp->pairList, &c->bp->table, c->queryKey, otherKey);
 	return true;
 }
 
@@ -368,9 +350,9 @@ static void tbRefreshMovableTree(tbBroadPhase* bp)
 		for (int i = 0; i < bp->moveCount; ++i)
 		{
 			int key = bp->moveBuffer[i];
-			if (key >= 0 && bp->proxies[key].type != tb_proxyStatic)
+			if (key >= 0 && bp->table.proxies[key].type != tb_proxyStatic)
 			{
-				tbDynamicTree_MoveProxy(&bp->movableTree, bp->proxies[key].handle, bp->proxies[key].aabb);
+				tbDynamicTree_MoveProxy(&bp->movableTree, bp->table.proxies[key].handle, bp->table.proxies[key].aabb);
 			}
 		}
 	}
@@ -393,7 +375,7 @@ static void tbTreeFindPairs(tbBroadPhase* bp)
 		{
 			continue; // destroyed after it moved
 		}
-		const tbBroadProxy* p = bp->proxies + key;
+		const tbBroadProxy* p = bp->table.proxies + key;
 		tbPairQueryContext context = {bp, key};
 		tbDynamicTree_Query(&bp->movableTree, p->aabb, TB_PAIR_QUERY_BIT, tbPairQueryCallback, &context);
 		if (p->type != tb_proxyStatic)
@@ -405,17 +387,17 @@ static void tbTreeFindPairs(tbBroadPhase* bp)
 
 void tbBroadPhase_UpdatePairs(tbBroadPhase* bp)
 {
-	bp->pairCount = 0;
+	bp->pairList.count = 0;
 	switch (bp->method)
 	{
 		case tb_broadPhaseTree:
 			tbTreeFindPairs(bp);
 			break;
 		case tb_broadPhaseSortAndSweep:
-			tbSortAndSweep_FindPairs(bp->sweep, bp);
+			tbSortAndSweep_FindPairs(bp->sweep, &bp->table, &bp->pairList);
 			break;
 		default:
-			tbBruteForce_FindPairs(bp->brute, bp);
+			tbBruteForce_FindPairs(bp->brute, &bp->table, &bp->pairList);
 			break;
 	}
 	tbSortUniquePairs(bp);
@@ -442,7 +424,7 @@ static bool tbUserQueryCallback(int treeProxyId, int key, void* context)
 {
 	(void)treeProxyId;
 	tbUserQueryContext* c = context;
-	const tbBroadProxy* p = c->bp->proxies + key;
+	const tbBroadProxy* p = c->bp->table.proxies + key;
 	if ((p->categoryBits & c->maskBits) == 0)
 	{
 		return true;
@@ -467,10 +449,10 @@ void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, 
 			break;
 		}
 		case tb_broadPhaseSortAndSweep:
-			tbSortAndSweep_Query(bp, aabb, maskBits, callback, context);
+			tbSortAndSweep_Query(&bp->table, aabb, maskBits, callback, context);
 			break;
 		default:
-			tbBruteForce_Query(bp, aabb, maskBits, callback, context);
+			tbBruteForce_Query(&bp->table, aabb, maskBits, callback, context);
 			break;
 	}
 }
@@ -479,7 +461,7 @@ static float tbUserRayCastCallback(const tbRayCastInput* input, int treeProxyId,
 {
 	(void)treeProxyId;
 	tbUserQueryContext* c = context;
-	const tbBroadProxy* p = c->bp->proxies + key;
+	const tbBroadProxy* p = c->bp->table.proxies + key;
 	if ((p->categoryBits & c->maskBits) == 0)
 	{
 		return input->maxFraction;
@@ -515,10 +497,10 @@ void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, u
 			break;
 		}
 		case tb_broadPhaseSortAndSweep:
-			tbSortAndSweep_RayCast(bp, input, maskBits, callback, context);
+			tbSortAndSweep_RayCast(&bp->table, input, maskBits, callback, context);
 			break;
 		default:
-			tbBruteForce_RayCast(bp, input, maskBits, callback, context);
+			tbBruteForce_RayCast(&bp->table, input, maskBits, callback, context);
 			break;
 	}
 }
@@ -544,13 +526,13 @@ void tbBroadPhase_VisitTreeNodes(const tbBroadPhase* bp, tbTreeNodeFcn* fcn, voi
 static bool tbValidateTreeProxies(const tbBroadPhase* bp)
 {
 	if (tbDynamicTree_Validate(&bp->staticTree) == false || tbDynamicTree_Validate(&bp->movableTree) == false ||
-		bp->staticTree.proxyCount + bp->movableTree.proxyCount != bp->proxyCount)
+		bp->staticTree.proxyCount + bp->movableTree.proxyCount != bp->table.count)
 	{
 		return false;
 	}
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < bp->table.capacity; ++key)
 	{
-		const tbBroadProxy* p = bp->proxies + key;
+		const tbBroadProxy* p = bp->table.proxies + key;
 		if (p->isFree)
 		{
 			continue;
@@ -569,9 +551,9 @@ static bool tbValidateTreeProxies(const tbBroadPhase* bp)
 static bool tbValidateProxyTable(const tbBroadPhase* bp)
 {
 	int live = 0;
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < bp->table.capacity; ++key)
 	{
-		const tbBroadProxy* p = bp->proxies + key;
+		const tbBroadProxy* p = bp->table.proxies + key;
 		live += p->isFree ? 0 : 1;
 		if (p->moveIndex >= 0 && (p->moveIndex >= bp->moveCount || bp->moveBuffer[p->moveIndex] != key))
 		{
@@ -579,11 +561,11 @@ static bool tbValidateProxyTable(const tbBroadPhase* bp)
 		}
 	}
 	int freeCount = 0;
-	for (int key = bp->freeProxy; key >= 0 && freeCount <= bp->proxyCapacity; key = bp->proxies[key].handle)
+	for (int key = bp->freeProxy; key >= 0 && freeCount <= bp->table.capacity; key = bp->table.proxies[key].handle)
 	{
-		freeCount += bp->proxies[key].isFree ? 1 : bp->proxyCapacity + 1;
+		freeCount += bp->table.proxies[key].isFree ? 1 : bp->table.capacity + 1;
 	}
-	return live == bp->proxyCount && live + freeCount == bp->proxyCapacity;
+	return live == bp->table.count && live + freeCount == bp->table.capacity;
 }
 
 bool tbBroadPhase_Validate(const tbBroadPhase* bp)
@@ -597,8 +579,8 @@ bool tbBroadPhase_Validate(const tbBroadPhase* bp)
 		case tb_broadPhaseTree:
 			return tbValidateTreeProxies(bp);
 		case tb_broadPhaseSortAndSweep:
-			return tbSortAndSweep_Validate(bp->sweep, bp);
+			return tbSortAndSweep_Validate(bp->sweep, &bp->table);
 		default:
-			return tbBruteForce_Validate(bp->brute, bp);
+			return tbBruteForce_Validate(bp->brute, &bp->table);
 	}
 }

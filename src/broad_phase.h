@@ -12,49 +12,20 @@
 // - Static proxies (bodyType static) never pair with each other.
 #pragma once
 
-#include "tumble/collision.h"
+#include "brute_force.h"
+#include "proxy_table.h"
+#include "sort_and_sweep.h"
+
 #include "tumble/types.h"
 
-typedef struct tbSortAndSweep tbSortAndSweep;
-typedef struct tbBruteForce tbBruteForce;
-
-/// A candidate pair: shape indices with a < b.
-typedef struct tbShapePair
-{
-	int a, b;
-} tbShapePair;
-
-/// Proxy kinds: static proxies are kept apart (static tree) and never pair with each other.
-typedef enum tbProxyType
-{
-	tb_proxyStatic = 0,
-	tb_proxyMovable = 1,
-} tbProxyType;
-
-/// One slot of the proxy table, shared by the method files. 48 bytes.
-typedef struct tbBroadProxy
-{
-	tbAABB aabb;		   ///< fat box
-	uint64_t categoryBits; ///< passed to queries (pairs are not filtered here)
-	int shapeIndex;		   ///< the world's shape index: pairs are named and ordered by it
-	tbProxyType type;
-	int handle;	   ///< method-specific: tree proxy id (tree method); next free slot when free
-	int moveIndex; ///< index in moveBuffer, or -1 when not moved since the last UpdatePairs
-	bool isFree;
-} tbBroadProxy;
-
-/// Pair filter: return false to drop the pair of two shapes (shape indices).
-typedef bool tbPairFilterFcn(int shapeIndexA, int shapeIndexB, void* context);
 
 typedef struct tbBroadPhase
 {
 	tbBroadPhaseMethod method; ///< resolved (never auto)
 
 	// Proxy table indexed by proxy key: the broad phase owns its proxies' boxes, categories and
-	// shape indices whatever the method.
-	struct tbBroadProxy* proxies;
-	int proxyCapacity;
-	int proxyCount;
+	// shape indices whatever the method; free slots are chained through their handle.
+	tbProxyTable table;
 	int freeProxy;
 
 	// Keys of proxies created or moved since the last UpdatePairs.
@@ -62,10 +33,8 @@ typedef struct tbBroadPhase
 	int moveCount;
 	int moveCapacity;
 
-	// Pairs found by the last UpdatePairs (sorted, unique).
-	tbShapePair* pairs;
-	int pairCount;
-	int pairCapacity;
+	// Pairs found by the last UpdatePairs (sorted, unique), with the optional pair filter.
+	tbPairList pairList;
 
 	// Method state. Only the selected method's state is live.
 	tbDynamicTree staticTree;
@@ -77,20 +46,12 @@ typedef struct tbBroadPhase
 	// of them triggers a binned SAH rebuild on the next UpdatePairs.
 	int staticInsertCount;
 	int enlargedCount; ///< movable tree leaves enlarged in place since the last UpdatePairs
-
-	// Optional pair filter (NULL keeps every pair), applied as each pair is found, before the sort.
-	tbPairFilterFcn* pairFilter;
-	void* pairFilterContext;
 } tbBroadPhase;
 
 /// Install a pair filter. The world drops pairs that already have a contact or may not collide
 /// (a moving pile re-finds mostly existing pairs: filtering first keeps the sort small). The
 /// filter must depend only on the two shapes, so the sorted result is the same as filtering after.
 void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, void* context);
-
-/// Used by the method files while finding pairs: append the pair of two proxies, named by shape
-/// index with a < b. UpdatePairs sorts and removes duplicates afterwards.
-void tbBroadPhase_AddPair(tbBroadPhase* bp, int proxyKeyA, int proxyKeyB);
 
 /// Create with a method (auto resolves to the tree).
 void tbBroadPhase_Create(tbBroadPhase* bp, tbBroadPhaseMethod method);
@@ -106,7 +67,7 @@ void tbBroadPhase_DestroyProxy(tbBroadPhase* bp, int proxyKey);
 /// Replace a proxy's fat AABB; the proxy counts as moved.
 void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB);
 
-/// Fill bp->pairs with the pair set described above and clear the move buffer.
+/// Fill bp->pairList with the pair set described above and clear the move buffer.
 void tbBroadPhase_UpdatePairs(tbBroadPhase* bp);
 
 tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey);

@@ -56,10 +56,10 @@ void tbBruteForce_Destroy(tbBruteForce* brute)
 	tbFree(brute, (int)sizeof(tbBruteForce));
 }
 
-void tbBruteForce_AddProxy(tbBruteForce* brute, const tbBroadPhase* bp, int proxyKey)
+void tbBruteForce_AddProxy(tbBruteForce* brute, const tbProxyTable* table, int proxyKey)
 {
 	(void)brute;
-	(void)bp;
+	(void)table;
 	(void)proxyKey;
 }
 
@@ -87,13 +87,13 @@ static void tbReserveBrute(tbBruteForce* brute, int count)
 }
 
 /// Copy the live proxies into the structure of arrays; returns their number.
-static int tbGatherProxies(tbBruteForce* brute, const tbBroadPhase* bp)
+static int tbGatherProxies(tbBruteForce* brute, const tbProxyTable* table)
 {
-	tbReserveBrute(brute, bp->proxyCount);
+	tbReserveBrute(brute, table->count);
 	int n = 0;
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < table->capacity; ++key)
 	{
-		const tbBroadProxy* p = bp->proxies + key;
+		const tbBroadProxy* p = table->proxies + key;
 		if (p->isFree)
 		{
 			continue;
@@ -109,9 +109,9 @@ static int tbGatherProxies(tbBruteForce* brute, const tbBroadPhase* bp)
 	return n;
 }
 
-void tbBruteForce_FindPairs(tbBruteForce* brute, tbBroadPhase* bp)
+void tbBruteForce_FindPairs(tbBruteForce* brute, const tbProxyTable* table, tbPairList* pairs)
 {
-	int n = tbGatherProxies(brute, bp);
+	int n = tbGatherProxies(brute, table);
 	const float* lx = brute->lowerX;
 	const float* ly = brute->lowerY;
 	const float* ux = brute->upperX;
@@ -132,18 +132,18 @@ void tbBruteForce_FindPairs(tbBruteForce* brute, tbBroadPhase* bp)
 			int fj = flags[j];
 			if (((fi | fj) & tb_bruteMoved) && ((fi & fj & tb_bruteStatic) == 0))
 			{
-				tbBroadPhase_AddPair(bp, brute->keys[i], brute->keys[j]);
+				tbPairList_Add(pairs, table, brute->keys[i], brute->keys[j]);
 			}
 		}
 	}
 }
 
-void tbBruteForce_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbBruteForce_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
 						void* context)
 {
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < table->capacity; ++key)
 	{
-		const tbBroadProxy* p = bp->proxies + key;
+		const tbBroadProxy* p = table->proxies + key;
 		if (p->isFree || (p->categoryBits & maskBits) == 0 || tbAABB_Overlaps(p->aabb, aabb) == false)
 		{
 			continue;
@@ -178,13 +178,13 @@ static bool tbSegmentHitsBox(tbVec2 p, tbVec2 d, float maxFraction, tbAABB box)
 		   tbClipSlab(p.y, d.y, box.lowerBound.y, box.upperBound.y, &t0, &t1);
 }
 
-void tbBruteForce_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
+void tbBruteForce_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
 						  tbTreeRayCastCallbackFcn* callback, void* context)
 {
 	tbRayCastInput subInput = *input;
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < table->capacity; ++key)
 	{
-		const tbBroadProxy* p = bp->proxies + key;
+		const tbBroadProxy* p = table->proxies + key;
 		if (p->isFree || (p->categoryBits & maskBits) == 0 ||
 			tbSegmentHitsBox(input->origin, input->translation, subInput.maxFraction, p->aabb) == false)
 		{
@@ -202,8 +202,8 @@ void tbBruteForce_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, u
 	}
 }
 
-bool tbBruteForce_Validate(const tbBruteForce* brute, const tbBroadPhase* bp)
+bool tbBruteForce_Validate(const tbBruteForce* brute, const tbProxyTable* table)
 {
-	(void)bp;
+	(void)table;
 	return brute != NULL;
 }

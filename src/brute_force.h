@@ -2,23 +2,25 @@
 // other methods are tested against. Same functions in the same order as sort_and_sweep.h.
 #pragma once
 
-#include "broad_phase.h"
+#include "proxy_table.h"
+
+typedef struct tbBruteForce tbBruteForce;
 
 tbBruteForce* tbBruteForce_Create(void);
 void tbBruteForce_Destroy(tbBruteForce* brute);
 
 /// Brute force keeps no per-proxy state: adding and removing are no-ops kept for symmetry.
-void tbBruteForce_AddProxy(tbBruteForce* brute, const tbBroadPhase* bp, int proxyKey);
+void tbBruteForce_AddProxy(tbBruteForce* brute, const tbProxyTable* table, int proxyKey);
 void tbBruteForce_RemoveProxy(tbBruteForce* brute, int proxyKey);
 
-/// Append every overlapping pair with a moved member (not static–static) through tbBroadPhase_AddPair.
-void tbBruteForce_FindPairs(tbBruteForce* brute, tbBroadPhase* bp);
+/// Append every overlapping pair with a moved member (not static–static) through tbPairList_Add.
+void tbBruteForce_FindPairs(tbBruteForce* brute, const tbProxyTable* table, tbPairList* pairs);
 
 /// Linear scans over the proxy table (also used by sort-and-sweep). Callbacks get the proxy key
 /// and the shape index.
-void tbBruteForce_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbBruteForce_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
 						void* context);
-void tbBruteForce_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
+void tbBruteForce_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
 						  tbTreeRayCastCallbackFcn* callback, void* context);
 
-bool tbBruteForce_Validate(const tbBruteForce* brute, const tbBroadPhase* bp);
+bool tbBruteForce_Validate(const tbBruteForce* brute, const tbProxyTable* table);

@@ -233,12 +233,12 @@ void tbUpdatePairsStage(tbWorld* world)
 {
 	tbBroadPhase* bp = &world->broadPhase;
 	tbBroadPhase_UpdatePairs(bp);
-	world->counters.pairCandidates = bp->pairCount;
+	world->counters.pairCandidates = bp->pairList.count;
 	// Every pair passed tbContactPairFilter as it was found, and the pairs are unique: each
 	// becomes a contact.
-	for (int i = 0; i < bp->pairCount; ++i)
+	for (int i = 0; i < bp->pairList.count; ++i)
 	{
-		tbCreateContact(world, bp->pairs[i].a, bp->pairs[i].b);
+		tbCreateContact(world, bp->pairList.pairs[i].a, bp->pairList.pairs[i].b);
 	}
 }
 

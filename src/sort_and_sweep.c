@@ -121,13 +121,13 @@ static float tbAxisValue(tbVec2 v, int axis)
 	return axis == 0 ? v.x : v.y;
 }
 
-static float tbEndpointValue(const tbBroadPhase* bp, int id, int axis)
+static float tbEndpointValue(const tbProxyTable* table, int id, int axis)
 {
-	const tbAABB* box = &bp->proxies[id >> 1].aabb;
+	const tbAABB* box = &table->proxies[id >> 1].aabb;
 	return tbAxisValue((id & 1) ? box->upperBound : box->lowerBound, axis);
 }
 
-void tbSortAndSweep_AddProxy(tbSortAndSweep* sweep, const tbBroadPhase* bp, int proxyKey)
+void tbSortAndSweep_AddProxy(tbSortAndSweep* sweep, const tbProxyTable* table, int proxyKey)
 {
 	tbReserveKeys(sweep, proxyKey + 1);
 	if (sweep->endpointCount + 2 > sweep->endpointCapacity)
@@ -141,7 +141,7 @@ void tbSortAndSweep_AddProxy(tbSortAndSweep* sweep, const tbBroadPhase* bp, int 
 	{
 		int id = 2 * proxyKey + side;
 		sweep->positions[id] = sweep->endpointCount;
-		sweep->endpoints[sweep->endpointCount++] = (tbEndpoint){tbEndpointValue(bp, id, sweep->axis), id};
+		sweep->endpoints[sweep->endpointCount++] = (tbEndpoint){tbEndpointValue(table, id, sweep->axis), id};
 	}
 	sweep->appendedCount += 2;
 }
@@ -157,13 +157,13 @@ void tbSortAndSweep_RemoveProxy(tbSortAndSweep* sweep, int proxyKey)
 // Axis choice
 
 /// Variance of the box centres on an axis, Var = E[c²] − E[c]², in double to limit cancellation.
-static double tbCentreVariance(const tbBroadPhase* bp, int axis)
+static double tbCentreVariance(const tbProxyTable* table, int axis)
 {
 	double sum = 0.0, sumSquares = 0.0;
 	int n = 0;
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < table->capacity; ++key)
 	{
-		const tbBroadProxy* p = bp->proxies + key;
+		const tbBroadProxy* p = table->proxies + key;
 		if (p->isFree)
 		{
 			continue;
@@ -181,15 +181,15 @@ static double tbCentreVariance(const tbBroadPhase* bp, int axis)
 	return sumSquares / n - mean * mean;
 }
 
-static void tbUpdateSweepAxis(tbSortAndSweep* sweep, const tbBroadPhase* bp)
+static void tbUpdateSweepAxis(tbSortAndSweep* sweep, const tbProxyTable* table)
 {
 	bool firstUpdate = sweep->updateCount == 0;
 	if (firstUpdate == false && sweep->updateCount % TB_SWEEP_AXIS_INTERVAL != 0)
 	{
 		return;
 	}
-	double current = tbCentreVariance(bp, sweep->axis);
-	double other = tbCentreVariance(bp, 1 - sweep->axis);
+	double current = tbCentreVariance(table, sweep->axis);
+	double other = tbCentreVariance(table, 1 - sweep->axis);
 	double threshold = firstUpdate ? 1.0 : TB_SWEEP_AXIS_HYSTERESIS;
 	if (other > threshold * current)
 	{
@@ -223,7 +223,7 @@ static int tbCompareEndpoints(const void* a, const void* b)
 }
 
 /// Drop dead endpoints (keeping order) and reload the values of the live ones on the sweep axis.
-static void tbRefreshEndpoints(tbSortAndSweep* sweep, const tbBroadPhase* bp)
+static void tbRefreshEndpoints(tbSortAndSweep* sweep, const tbProxyTable* table)
 {
 	int n = 0;
 	for (int i = 0; i < sweep->endpointCount; ++i)
@@ -233,7 +233,7 @@ static void tbRefreshEndpoints(tbSortAndSweep* sweep, const tbBroadPhase* bp)
 		{
 			continue;
 		}
-		e.value = tbEndpointValue(bp, e.id, sweep->axis);
+		e.value = tbEndpointValue(table, e.id, sweep->axis);
 		sweep->endpoints[n++] = e;
 	}
 	sweep->endpointCount = n;
@@ -304,7 +304,7 @@ static void tbDeactivate(tbSortAndSweep* sweep, int key)
 
 /// Pair the proxy whose min endpoint was reached with every active proxy overlapping it on the
 /// other axis, when one of the two moved and they are not both static.
-static void tbPairWithActive(const tbSortAndSweep* sweep, tbBroadPhase* bp, tbActiveProxy p)
+static void tbPairWithActive(const tbSortAndSweep* sweep, const tbProxyTable* table, tbPairList* pairs, tbActiveProxy p)
 {
 	for (int i = 0; i < sweep->activeCount; ++i)
 	{
@@ -315,12 +315,12 @@ static void tbPairWithActive(const tbSortAndSweep* sweep, tbBroadPhase* bp, tbAc
 		}
 		if (((p.flags | q->flags) & tb_sweepMoved) && (p.flags & q->flags & tb_sweepStatic) == 0)
 		{
-			tbBroadPhase_AddPair(bp, q->key, p.key);
+			tbPairList_Add(pairs, table, q->key, p.key);
 		}
 	}
 }
 
-static void tbSweepEndpoints(tbSortAndSweep* sweep, tbBroadPhase* bp)
+static void tbSweepEndpoints(tbSortAndSweep* sweep, const tbProxyTable* table, tbPairList* pairs)
 {
 	int otherAxis = 1 - sweep->axis;
 	sweep->activeCount = 0;
@@ -333,41 +333,41 @@ static void tbSweepEndpoints(tbSortAndSweep* sweep, tbBroadPhase* bp)
 			tbDeactivate(sweep, key);
 			continue;
 		}
-		const tbBroadProxy* proxy = bp->proxies + key;
+		const tbBroadProxy* proxy = table->proxies + key;
 		tbActiveProxy p;
 		p.lower = tbAxisValue(proxy->aabb.lowerBound, otherAxis);
 		p.upper = tbAxisValue(proxy->aabb.upperBound, otherAxis);
 		p.key = key;
 		p.flags = (proxy->moveIndex >= 0 ? tb_sweepMoved : 0) | (proxy->type == tb_proxyStatic ? tb_sweepStatic : 0);
-		tbPairWithActive(sweep, bp, p);
+		tbPairWithActive(sweep, table, pairs, p);
 		tbActivate(sweep, p);
 	}
 	TB_ASSERT(sweep->activeCount == 0);
 }
 
-void tbSortAndSweep_FindPairs(tbSortAndSweep* sweep, tbBroadPhase* bp)
+void tbSortAndSweep_FindPairs(tbSortAndSweep* sweep, const tbProxyTable* table, tbPairList* pairs)
 {
-	tbReserveKeys(sweep, bp->proxyCapacity);
-	tbUpdateSweepAxis(sweep, bp);
-	tbRefreshEndpoints(sweep, bp);
+	tbReserveKeys(sweep, table->capacity);
+	tbUpdateSweepAxis(sweep, table);
+	tbRefreshEndpoints(sweep, table);
 	tbSortEndpoints(sweep);
-	tbSweepEndpoints(sweep, bp);
+	tbSweepEndpoints(sweep, table, pairs);
 	sweep->updateCount += 1;
 }
 
-void tbSortAndSweep_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbSortAndSweep_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
 						  void* context)
 {
-	tbBruteForce_Query(bp, aabb, maskBits, callback, context);
+	tbBruteForce_Query(table, aabb, maskBits, callback, context);
 }
 
-void tbSortAndSweep_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
+void tbSortAndSweep_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
 							tbTreeRayCastCallbackFcn* callback, void* context)
 {
-	tbBruteForce_RayCast(bp, input, maskBits, callback, context);
+	tbBruteForce_RayCast(table, input, maskBits, callback, context);
 }
 
-bool tbSortAndSweep_Validate(const tbSortAndSweep* sweep, const tbBroadPhase* bp)
+bool tbSortAndSweep_Validate(const tbSortAndSweep* sweep, const tbProxyTable* table)
 {
 	int live = 0;
 	int sortedCount = sweep->endpointCount - sweep->appendedCount;
@@ -380,7 +380,7 @@ bool tbSortAndSweep_Validate(const tbSortAndSweep* sweep, const tbBroadPhase* bp
 			continue;
 		}
 		int key = e->id >> 1;
-		if (key >= bp->proxyCapacity || bp->proxies[key].isFree || sweep->positions[e->id] != i)
+		if (key >= table->capacity || table->proxies[key].isFree || sweep->positions[e->id] != i)
 		{
 			return false;
 		}
@@ -391,5 +391,5 @@ bool tbSortAndSweep_Validate(const tbSortAndSweep* sweep, const tbBroadPhase* bp
 		previous = e;
 		live += 1;
 	}
-	return live == 2 * bp->proxyCount;
+	return live == 2 * table->count;
 }

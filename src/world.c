@@ -155,11 +155,11 @@ static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 {
 	const tbBroadPhase* bp = &world->broadPhase;
 	int statics = 0;
-	for (int key = 0; key < bp->proxyCapacity; ++key)
+	for (int key = 0; key < bp->table.capacity; ++key)
 	{
-		statics += bp->proxies[key].isFree == false && bp->proxies[key].type == tb_proxyStatic ? 1 : 0;
+		statics += bp->table.proxies[key].isFree == false && bp->table.proxies[key].type == tb_proxyStatic ? 1 : 0;
 	}
-	int movable = bp->proxyCount - statics;
+	int movable = bp->table.count - statics;
 	float window = (float)world->autoWindowSteps;
 	float movedFraction = movable > 0 ? (float)world->autoMovedProxies / (window * (float)movable) : 0.0f;
 	float fastFraction = movable > 0 ? (float)world->autoFastBodies / (window * (float)movable) : 0.0f;

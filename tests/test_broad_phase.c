@@ -131,17 +131,17 @@ static int UpdateAndCompare(Scene* scene, int step)
 	for (int m = 0; m < METHOD_COUNT - 1; ++m)
 	{
 		const tbBroadPhase* bp = &scene->bp[m];
-		cr_assert_eq(bp->pairCount, reference->pairCount, "step %d: method %d found %d pairs, brute force %d", step,
-					 (int)s_methods[m], bp->pairCount, reference->pairCount);
-		cr_assert(memcmp(bp->pairs, reference->pairs, (size_t)bp->pairCount * sizeof(tbShapePair)) == 0,
+		cr_assert_eq(bp->pairList.count, reference->pairList.count, "step %d: method %d found %d pairs, brute force %d", step,
+					 (int)s_methods[m], bp->pairList.count, reference->pairList.count);
+		cr_assert(memcmp(bp->pairList.pairs, reference->pairList.pairs, (size_t)bp->pairList.count * sizeof(tbShapePair)) == 0,
 				  "step %d: method %d pairs differ from brute force", step, (int)s_methods[m]);
 	}
-	for (int k = 1; k < reference->pairCount; ++k)
+	for (int k = 1; k < reference->pairList.count; ++k)
 	{
-		tbShapePair p = reference->pairs[k - 1], q = reference->pairs[k];
+		tbShapePair p = reference->pairList.pairs[k - 1], q = reference->pairList.pairs[k];
 		cr_assert(p.a < q.a || (p.a == q.a && p.b < q.b), "pairs sorted and unique");
 	}
-	return reference->pairCount;
+	return reference->pairList.count;
 }
 
 static void ValidateAll(const Scene* scene)
@@ -206,16 +206,16 @@ Test(broad_phase, static_static_never_reported)
 											   tb_proxyStatic);
 		}
 		tbBroadPhase_UpdatePairs(&bp);
-		cr_assert_eq(bp.pairCount, 0, "method %d", (int)s_methods[m]);
+		cr_assert_eq(bp.pairList.count, 0, "method %d", (int)s_methods[m]);
 		tbBroadPhase_MoveProxy(&bp, keys[3], (tbAABB){{1.0f, 0.0f}, {3.0f, 1.0f}});
 		tbBroadPhase_UpdatePairs(&bp);
-		cr_assert_eq(bp.pairCount, 0, "method %d", (int)s_methods[m]);
+		cr_assert_eq(bp.pairList.count, 0, "method %d", (int)s_methods[m]);
 		// One movable box over statics 0..4 (x in [0, 2.2]) pairs with them only.
 		tbBroadPhase_CreateProxy(&bp, (tbAABB){{-1.0f, 0.5f}, {0.2f, 2.0f}}, 1, 100, tb_proxyMovable);
 		tbBroadPhase_UpdatePairs(&bp);
-		cr_assert_eq(bp.pairCount, 1, "method %d: movable box overlaps static 0 only", (int)s_methods[m]);
-		cr_assert_eq(bp.pairs[0].a, 0);
-		cr_assert_eq(bp.pairs[0].b, 100);
+		cr_assert_eq(bp.pairList.count, 1, "method %d: movable box overlaps static 0 only", (int)s_methods[m]);
+		cr_assert_eq(bp.pairList.pairs[0].a, 0);
+		cr_assert_eq(bp.pairList.pairs[0].b, 100);
 		tbBroadPhase_Destroy(&bp);
 	}
 }
@@ -249,11 +249,11 @@ Test(broad_phase, set_method_mid_run_keeps_pairs_identical)
 
 static bool PairHasDeadBody(const tbBroadPhase* bp, const Scene* scene)
 {
-	for (int k = 0; k < bp->pairCount; ++k)
+	for (int k = 0; k < bp->pairList.count; ++k)
 	{
 		for (int i = 0; i < scene->count; ++i)
 		{
-			if (scene->alive[i] == false && (bp->pairs[k].a == ShapeIndex(i) || bp->pairs[k].b == ShapeIndex(i)))
+			if (scene->alive[i] == false && (bp->pairList.pairs[k].a == ShapeIndex(i) || bp->pairList.pairs[k].b == ShapeIndex(i)))
 			{
 				return true;
 			}

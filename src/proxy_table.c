@@ -1,0 +1,30 @@
+// The pair list the broad-phase methods append to (proxy_table.h).
+#include "proxy_table.h"
+
+#include "core.h"
+
+void tbPairList_Add(tbPairList* list, const tbProxyTable* table, int proxyKeyA, int proxyKeyB)
+{
+	int a = table->proxies[proxyKeyA].shapeIndex;
+	int b = table->proxies[proxyKeyB].shapeIndex;
+	if (list->filter != NULL && list->filter(a, b, list->filterContext) == false)
+	{
+		return;
+	}
+	if (list->count == list->capacity)
+	{
+		int n = list->capacity;
+		int m = tbMaxInt(64, 2 * n);
+		list->pairs = tbGrowAlloc(list->pairs, n * (int)sizeof(tbShapePair), m * (int)sizeof(tbShapePair));
+		list->capacity = m;
+	}
+	list->pairs[list->count++] = a < b ? (tbShapePair){a, b} : (tbShapePair){b, a};
+}
+
+void tbPairList_Destroy(tbPairList* list)
+{
+	tbFree(list->pairs, list->capacity * (int)sizeof(tbShapePair));
+	list->pairs = NULL;
+	list->count = 0;
+	list->capacity = 0;
+}

@@ -1,0 +1,60 @@
+// Internal: what the broad phase shares with its methods (sort_and_sweep.c, brute_force.c): the
+// proxy table they read and the pair list they append to. It sits below broad_phase.h, so the
+// method files depend on this alone and the dispatcher (broad_phase.c) on them: no include loop.
+#pragma once
+
+#include "tumble/collision.h"
+
+/// A candidate pair: shape indices with a < b.
+typedef struct tbShapePair
+{
+	int a, b;
+} tbShapePair;
+
+/// Proxy kinds: static proxies are kept apart (static tree) and never pair with each other.
+typedef enum tbProxyType
+{
+	tb_proxyStatic = 0,
+	tb_proxyMovable = 1,
+} tbProxyType;
+
+/// One slot of the proxy table, shared by the method files. 48 bytes.
+typedef struct tbBroadProxy
+{
+	tbAABB aabb;		   ///< fat box
+	uint64_t categoryBits; ///< passed to queries (pairs are not filtered here)
+	int shapeIndex;		   ///< the world's shape index: pairs are named and ordered by it
+	tbProxyType type;
+	int handle;	   ///< method-specific: tree proxy id (tree method); next free slot when free
+	int moveIndex; ///< index in moveBuffer, or -1 when not moved since the last UpdatePairs
+	bool isFree;
+} tbBroadProxy;
+
+
+/// Pair filter: return false to drop the pair of two shapes (shape indices).
+typedef bool tbPairFilterFcn(int shapeIndexA, int shapeIndexB, void* context);
+
+/// The proxy slots, indexed by proxy key (free slots have isFree set).
+typedef struct tbProxyTable
+{
+	tbBroadProxy* proxies;
+	int capacity; ///< slots
+	int count;	  ///< live proxies
+} tbProxyTable;
+
+/// Pairs found by an update, named by shape index with a < b (sorted and made unique afterwards
+/// by the broad phase), and the optional filter applied as each is found.
+typedef struct tbPairList
+{
+	tbShapePair* pairs;
+	int count;
+	int capacity;
+	tbPairFilterFcn* filter; ///< NULL keeps every pair
+	void* filterContext;
+} tbPairList;
+
+/// Append the pair of two proxies unless the filter drops it.
+void tbPairList_Add(tbPairList* list, const tbProxyTable* table, int proxyKeyA, int proxyKeyB);
+
+/// Release the list's memory.
+void tbPairList_Destroy(tbPairList* list);
