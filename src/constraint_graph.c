@@ -26,7 +26,9 @@
 // (Box2D v3 keeps them persistent instead).
 // Reference: the graph colouring used by Box2D v3's solver (Catto, "Solver2D" and "SIMD
 // matters" blog posts, 2024).
-#include "solver.h"
+#include "constraint_graph.h"
+
+#include "contact_solver.h"
 
 #include <string.h>
 

@@ -32,7 +32,7 @@
 // References: E. Catto, "Fast and Simple Physics using Sequential Impulses", GDC 2006;
 // "Modeling and Solving Constraints", GDC 2009; "Soft Constraints", GDC 2011;
 // "Understanding Constraints", GDC 2014; "Solver2D" blog post, 2024.
-#include "solver.h"
+#include "contact_solver.h"
 
 #include "tumble/constants.h"
 

@@ -16,7 +16,7 @@
 //
 // Measured (tumbler, 60 Hz, 4 sub-steps, perf): the solve passes went from 29 % of a 4.2 ms step
 // (scalar, bound by the dependency chain through each body's velocity) to 13 % of a 3.9 ms step.
-#include "solver.h"
+#include "contact_solver.h"
 
 #include "tumble/constants.h"
 

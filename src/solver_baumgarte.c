@@ -12,7 +12,10 @@
 // Kept as the textbook reference and for measurement: the bias adds energy (stacks jitter,
 // pyramids never rest, deep overlap is resolved explosively), which is what the soft step and
 // NGS methods fix in two different ways.
-#include "solver.h"
+#include "solver_methods.h"
+
+#include "contact_solver.h"
+#include "integrator.h"
 
 void tbBaumgartePrepare(tbStepContext* context)
 {

@@ -41,7 +41,10 @@
 // normal held fixed (2.4 rotates the reference face normal with its body and re-derives the
 // point from local coordinates; the two agree to second order in the step's rotation), and the
 // contact order is Tumble's (island.c), not 2.4's island traversal.
-#include "solver.h"
+#include "solver_methods.h"
+
+#include "contact_solver.h"
+#include "integrator.h"
 
 #include "tumble/constants.h"
 

@@ -26,7 +26,10 @@
 //
 // Rejected: rigid contacts with position projection after each sub-step (fast, but it flings
 // deeply overlapping bodies apart: see the overlap recovery scene in STRESS.md).
-#include "solver.h"
+#include "solver_methods.h"
+
+#include "contact_solver.h"
+#include "integrator.h"
 
 #include "tumble/constants.h"
 

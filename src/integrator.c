@@ -1,0 +1,77 @@
+// Body integration within the solve stage: semi-implicit Euler, one sub-step at a time, on the
+// dense solver body arrays (solver_types.h).
+//
+// Velocities: v ← (v + h·(gravityScale·g + F/m))·1/(1 + h·c_lin), ω ← (ω + h·τ/I)·1/(1 + h·c_ang),
+// with the per-body increments precomputed once per step (tbSolverMotion: forces are constant
+// during a step); then |v| ≤ maximumLinearSpeed and |ω|·Δt ≤ TB_MAX_ROTATION. Positions are kept
+// as deltas from the start of the step: Δp += h·v, Δq ← integrate(Δq, h·ω).
+#include "integrator.h"
+
+#include "tumble/constants.h"
+
+#include <math.h>
+
+// The speed clamp when |v|² is not a finite float: a speed above ~1.8e19 m/s (a velocity of
+// 1e20 set by the user, gravity 3e38 m/s²) squares to infinity, and the plain clamp's factor
+// max/|v| would be 0, stopping the body. Scale v by its largest component first, so the length
+// is computed without overflow; an infinite component (the sum overflowed) gives the direction
+// alone, and a NaN component (∞ − ∞) has no direction and counts as 0.
+static tbVec2 tbClampHugeSpeed(tbVec2 v, float maxSpeed)
+{
+	float x = v.x == v.x ? v.x : 0.0f;
+	float y = v.y == v.y ? v.y : 0.0f;
+	bool infinite = isinf(x) || isinf(y);
+	if (infinite)
+	{
+		x = isinf(x) ? copysignf(1.0f, x) : 0.0f;
+		y = isinf(y) ? copysignf(1.0f, y) : 0.0f;
+	}
+	float scale = tbMaxFloat(tbAbsFloat(x), tbAbsFloat(y));
+	if (scale == 0.0f)
+	{
+		return tb_vec2_zero;
+	}
+	tbVec2 scaled = tbMakeVec2(x / scale, y / scale); // largest component ±1: |scaled| in [1, √2]
+	float length = tbLength(scaled);
+	float speed = infinite ? maxSpeed : tbMinFloat(maxSpeed, scale * length);
+	return tbMulSV(speed / length, scaled);
+}
+
+void tbIntegrateVelocities(tbStepContext* context)
+{
+	float maxLinearSpeed = context->maxLinearSpeed;
+	float maxAngularSpeed = context->maxAngularSpeed;
+	float maxLinearSpeedSquared = maxLinearSpeed * maxLinearSpeed;
+	for (int i = 0; i < context->bodyCount; ++i)
+	{
+		tbSolverBody* sb = context->bodies + i;
+		const tbSolverMotion* m = context->motions + i;
+		tbVec2 v = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
+		float w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
+
+		float speedSquared = tbDot(v, v);
+		if (tbIsValidFloat(speedSquared) == false)
+		{
+			v = tbClampHugeSpeed(v, maxLinearSpeed);
+		}
+		else if (speedSquared > maxLinearSpeedSquared)
+		{
+			v = tbMulSV(maxLinearSpeed / sqrtf(speedSquared), v);
+		}
+		w = w == w ? tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed) : 0.0f; // NaN (0 · ∞ torque): no direction
+
+		sb->linearVelocity = v;
+		sb->angularVelocity = w;
+	}
+}
+
+void tbIntegratePositions(tbStepContext* context)
+{
+	float h = context->h;
+	for (int i = 0; i < context->bodyCount; ++i)
+	{
+		tbSolverBody* sb = context->bodies + i;
+		sb->deltaPosition = tbMulAdd(sb->deltaPosition, h, sb->linearVelocity);
+		sb->deltaRotation = tbIntegrateRotation(sb->deltaRotation, h * sb->angularVelocity);
+	}
+}

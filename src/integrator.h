@@ -1,0 +1,10 @@
+// Internal: body integration within the solve stage (integrator.c), shared by the position methods.
+#pragma once
+
+#include "solver_types.h"
+
+/// Semi-implicit Euler velocity update of one sub-step, then the speed clamps.
+void tbIntegrateVelocities(tbStepContext* context);
+
+/// Position update of one sub-step: Δp += h·v, Δq ← integrate(Δq, h·ω).
+void tbIntegratePositions(tbStepContext* context);

@@ -1,0 +1,17 @@
+// Internal: the three position-error methods, one file each with the same functions in the same
+// order (solver_soft.c, solver_baumgarte.c, solver_ngs.c); the solve stage (solver.c) picks one.
+// Prepare: set the softness the constraints will copy (before tbPrepareContacts).
+// SubStep: after velocity integration and warm starting, solve, integrate positions and correct.
+#pragma once
+
+#include "solver_types.h"
+
+void tbSoftPrepare(tbStepContext* context);
+void tbSoftSubStep(tbStepContext* context);
+void tbSoftPrepareContacts(tbStepContext* context);
+
+void tbBaumgartePrepare(tbStepContext* context);
+void tbBaumgarteSubStep(tbStepContext* context);
+
+void tbNGSPrepare(tbStepContext* context);
+void tbNGSSubStep(tbStepContext* context);

@@ -1,0 +1,170 @@
+// Internal: the data every piece of the solve stage shares: the per-step body state, the contact
+// constraints (scalar and wide) and the step context. Types only: each piece declares its
+// functions in its own header (integrator.h, contact_solver.h, constraint_graph.h,
+// solver_methods.h) and includes this one, so no piece includes the stage driver (solver.c).
+//
+// Data layout. Each step the awake bodies are gathered into dense arrays indexed by
+// tbBody::solverIndex; one extra entry at the end (index bodyCount) is a motionless body with
+// infinite mass that stands for every static or non-awake body, so the contact loops never branch
+// on "is there a body here". Contacts become tbContactConstraint structs in the order of
+// world->solverContacts, with anchors, effective masses and softness precomputed once per step.
+#pragma once
+
+#include "simd.h"
+#include "world.h"
+
+/// Hot state of one body, touched by every contact in every iteration: 32 bytes, two per cache
+/// line pair. Positions are kept as deltas from the start of the step (centre and rotation), which
+/// keeps the linearised separation update exact to float rounding over large worlds.
+typedef struct tbSolverBody
+{
+	tbVec2 linearVelocity; ///< m/s, of the centre of mass
+	float angularVelocity; ///< rad/s
+	float padding;		   ///< unused (keeps 32 bytes; the wide solver loads the first 16 as one row)
+	tbVec2 deltaPosition;  ///< m, centre motion since the start of the step
+	tbRot deltaRotation;   ///< rotation since the start of the step
+} tbSolverBody;
+
+_Static_assert(sizeof(tbSolverBody) == 32, "tbSolverBody is meant to be 32 bytes");
+
+/// Per-body velocity increments of one sub-step, computed once per step (forces are constant
+/// during a step): v ← (v + linearDelta)·linearDamping, ω ← (ω + angularDelta)·angularDamping.
+/// 20 bytes; only read by the velocity integration.
+typedef struct tbSolverMotion
+{
+	tbVec2 linearDelta;	  ///< m/s per sub-step: h·(gravityScale·g + invMass·F)
+	float angularDelta;	  ///< rad/s per sub-step: h·invInertia·τ
+	float linearDamping;  ///< 1/(1 + h·linearDamping), dimensionless
+	float angularDamping; ///< 1/(1 + h·angularDamping), dimensionless
+} tbSolverMotion;
+
+_Static_assert(sizeof(tbSolverMotion) == 20, "tbSolverMotion is meant to be 20 bytes");
+
+/// Soft constraint coefficients (Catto 2024, "soft step"), for one stiffness and sub-step h:
+/// with ω = 2π·hertz, ζ the damping ratio and a = h·ω·(2ζ + h·ω),
+/// biasRate = ω/(2ζ + h·ω) (1/s), massScale = a/(1 + a), impulseScale = 1/(1 + a).
+/// Rigid: {0, 1, 0}.
+typedef struct tbSoftness
+{
+	float biasRate;
+	float massScale;
+	float impulseScale;
+} tbSoftness;
+
+/// One manifold point as the solver sees it: 44 bytes.
+typedef struct tbContactConstraintPoint
+{
+	tbVec2 anchorA;			  ///< m, point − centre of mass of A at the start of the step
+	tbVec2 anchorB;			  ///< m, point − centre of mass of B
+	float baseSeparation;	  ///< m, separation − dot(anchorB − anchorA, normal): add the current
+							  ///< dot(pB − pA, normal) to get the linearised separation
+	float normalImpulse;	  ///< N·s, accumulated over the sub-step (warm start carries it)
+	float tangentImpulse;	  ///< N·s, accumulated friction impulse
+	float maxNormalImpulse;	  ///< N·s, largest accumulated normal impulse in the step
+	float normalMass;		  ///< kg, 1/K along the normal
+	float tangentMass;		  ///< kg, 1/K along the tangent
+	float relativeVelocity;	  ///< m/s, relative normal velocity at the start of the step (< 0 approaching)
+} tbContactConstraintPoint;
+
+_Static_assert(sizeof(tbContactConstraintPoint) == 44, "tbContactConstraintPoint is meant to be 44 bytes");
+
+/// One contact as the solver sees it: 144 bytes.
+typedef struct tbContactConstraint
+{
+	int indexA;				///< solver body index of A (bodyCount for the static stand-in)
+	int indexB;				///< solver body index of B
+	tbVec2 normal;			///< from A to B
+	float invMassA, invIA;	///< 1/kg, 1/(kg·m²); 0 for static, kinematic or asleep
+	float invMassB, invIB;
+	float friction;			///< Coulomb coefficient, mixed
+	float restitution;		///< coefficient of restitution, mixed
+	tbSoftness softness;	///< used by the soft bias policy only
+	int pointCount;
+	tbContactConstraintPoint points[2];
+} tbContactConstraint;
+
+_Static_assert(sizeof(tbContactConstraint) == 144, "tbContactConstraint is meant to be 144 bytes");
+
+/// How the velocity solve treats separation. Speculative gaps (s > 0) always get bias s/h: the
+/// constraint lets the bodies close exactly the gap in one sub-step and no more.
+typedef enum tbBiasPolicy
+{
+	tb_biasSoft,		///< soft step, biased pass: soft spring-damper push-out of overlap
+	tb_biasRelax,		///< soft step, relaxing pass: rigid, no push-out (removes the bias velocity)
+	tb_biasBaumgarte,	///< rigid with a Baumgarte velocity bias beyond the linear slop
+	tb_biasSpeculative, ///< rigid, speculative gaps only (NGS corrects overlap on positions)
+} tbBiasPolicy;
+
+/// Colours of the constraint graph (constraint_graph.c); at most 32 (one bit each in a uint32_t
+/// mask per body). Measured: the pyramids need at most 9, the tumbler 11, with no overflow; 24 leaves
+/// room for crowded bodies.
+#define TB_GRAPH_COLOR_COUNT 24
+
+/// One manifold point of four contacts, lane by lane (structure of arrays): 160 bytes.
+typedef struct tbWideContactPoint
+{
+	tbFloatW anchorAX, anchorAY; ///< m, as tbContactConstraintPoint
+	tbFloatW anchorBX, anchorBY;
+	tbFloatW baseSeparation;
+	tbFloatW normalImpulse;
+	tbFloatW tangentImpulse;
+	tbFloatW maxNormalImpulse;
+	tbFloatW normalMass; ///< 0 in a lane whose contact has fewer points: its impulses stay 0
+	tbFloatW tangentMass;
+} tbWideContactPoint;
+
+/// Four contacts of one graph colour, solved together (contact_solver_wide.c): 544 bytes.
+/// Padding lanes have both bodies at the static stand-in and every number 0.
+typedef struct tbWideContactConstraint
+{
+	int indexA[TB_SIMD_WIDTH];			///< solver body indices, as tbContactConstraint
+	int indexB[TB_SIMD_WIDTH];
+	int constraintIndex[TB_SIMD_WIDTH]; ///< index in tbStepContext::constraints, −1 for padding
+	int pointCount[TB_SIMD_WIDTH];
+	tbFloatW normalX, normalY;
+	tbFloatW friction;
+	tbFloatW invMassA, invIA, invMassB, invIB;
+	tbFloatW biasRate, massScale, impulseScale; ///< tbSoftness, lane by lane
+	tbWideContactPoint points[2];
+} tbWideContactConstraint;
+
+_Static_assert(sizeof(tbWideContactConstraint) == 544, "tbWideContactConstraint is meant to be 544 bytes");
+
+/// Everything the pieces of one step share. Lives on the stack of tbSolveStage.
+typedef struct tbStepContext
+{
+	tbWorld* world;
+	float timeStep;		///< s
+	float h;			///< s, sub-step
+	float inv_h;		///< 1/s
+	int subStepCount;
+
+	tbSolverBody* bodies; ///< bodyCount + 1 (the last is the static stand-in)
+	tbSolverMotion* motions;
+	int bodyCount;
+
+	tbContactConstraint* constraints; ///< in the order of world->solverContacts
+	int constraintCount;
+	int restitutionCount; ///< constraints with restitution > 0 (tbApplyRestitution skips when 0)
+
+	// Wide solver (null when the scalar reference solver runs): constraints grouped by colour in
+	// blocks of four, and the constraints that found no colour, by index.
+	tbWideContactConstraint* wideConstraints;
+	int wideCount;
+	int* overflowConstraints;
+	int overflowCount;
+	int* wideLocation; ///< per constraint: block·TB_SIMD_WIDTH + lane, or −1 (overflow, or unpacked)
+	int colorCount;											///< colours in use this step
+	int colorBlockStart[TB_GRAPH_COLOR_COUNT + 1]; ///< blocks of colour k: [start[k], start[k + 1])
+	void* wideMemory; ///< step arena
+	int wideMemoryBytes;
+	void* ngsScratch; ///< solver_ngs.c's constraints, step arena (taken at the first sub-step)
+
+	tbSoftness contactSoftness; ///< dynamic vs dynamic
+	tbSoftness staticSoftness;	///< dynamic vs static or kinematic
+	float maxContactPushSpeed;	///< m/s
+	float maxLinearSpeed;		///< m/s
+	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step
+	bool enableWarmStarting;
+} tbStepContext;
+
