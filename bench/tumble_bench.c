@@ -156,7 +156,7 @@ static void Sim_Step(Sim* sim)
 	switch (sim->engine)
 	{
 		case engineTumble:
-			tbWorld_Step(sim->tumble.worldId, sim->scene->timeStep, sim->subSteps);
+			SceneWorld_Step(&sim->tumble, sim->scene, sim->subSteps);
 			break;
 		case engineBox2D:
 #ifdef TUMBLE_HAVE_BOX2D
