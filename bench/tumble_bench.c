@@ -1,8 +1,8 @@
 // tumble-bench: the scene benchmark. Runs catalogue scenes single-threaded, times only the
 // stepping loop (world construction excluded), repeats and reports the median and minimum
 // milliseconds per step with the body, contact and awake-body counts, and writes CSV. With
-// --peers the same Scene is built and timed in Box2D 2.4.1 and Chipmunk 7 right after Tumble, in
-// the same process, so the ratios come from one run on one (shared, noisy) machine.
+// --peers the same Scene is built and timed in Box2D 2.4.1, Box2D v3 and Chipmunk 7 right after
+// Tumble, in the same process, so the ratios come from one run on one (shared, noisy) machine.
 //
 // Subcommands produce the data behind the charts in docs/performance.md:
 //   solver-chart       time per step vs stack drift, largest penetration and bounce-energy error
@@ -63,6 +63,7 @@ typedef enum Engine
 {
 	engineTumble,
 	engineBox2D,
+	engineBox2D3,
 	engineChipmunk,
 	engineCount
 } Engine;
@@ -75,6 +76,8 @@ static const char* EngineName(Engine engine)
 			return "tumble";
 		case engineBox2D:
 			return "box2d-2.4.1";
+		case engineBox2D3:
+			return "box2d-3";
 		default:
 			return "chipmunk-7";
 	}
@@ -88,6 +91,12 @@ static bool EngineAvailable(Engine engine)
 			return true;
 		case engineBox2D:
 #ifdef TUMBLE_HAVE_BOX2D
+			return true;
+#else
+			return false;
+#endif
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
 			return true;
 #else
 			return false;
@@ -143,6 +152,11 @@ static bool Sim_Create(Sim* sim, const Scene* scene, Engine engine, const Tumble
 			sim->peer = PeerBox2D_Create(scene);
 #endif
 			return sim->peer != NULL;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			sim->peer = PeerBox2D3_Create(scene);
+#endif
+			return sim->peer != NULL;
 		default:
 #ifdef TUMBLE_HAVE_CHIPMUNK
 			sim->peer = PeerChipmunk_Create(scene, config->chipmunkTree);
@@ -161,6 +175,11 @@ static void Sim_Step(Sim* sim)
 		case engineBox2D:
 #ifdef TUMBLE_HAVE_BOX2D
 			PeerBox2D_Step(sim->peer);
+#endif
+			break;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			PeerBox2D3_Step(sim->peer);
 #endif
 			break;
 		default:
@@ -190,6 +209,11 @@ static PeerBody Sim_GetBody(const Sim* sim, int index)
 			body = PeerBox2D_GetBody(sim->peer, index);
 #endif
 			break;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			body = PeerBox2D3_GetBody(sim->peer, index);
+#endif
+			break;
 		default:
 #ifdef TUMBLE_HAVE_CHIPMUNK
 			body = PeerChipmunk_GetBody(sim->peer, index);
@@ -215,6 +239,11 @@ static PeerCounters Sim_GetCounters(const Sim* sim)
 			counters = PeerBox2D_GetCounters(sim->peer);
 #endif
 			break;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			counters = PeerBox2D3_GetCounters(sim->peer);
+#endif
+			break;
 		default:
 #ifdef TUMBLE_HAVE_CHIPMUNK
 			counters = PeerChipmunk_GetCounters(sim->peer);
@@ -234,6 +263,11 @@ static void Sim_Destroy(Sim* sim)
 		case engineBox2D:
 #ifdef TUMBLE_HAVE_BOX2D
 			PeerBox2D_Destroy(sim->peer);
+#endif
+			break;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			PeerBox2D3_Destroy(sim->peer);
 #endif
 			break;
 		default:
@@ -365,7 +399,8 @@ static void WriteCsvRow(FILE* file, const RunResult* r, const Options* options, 
 			tumble ? options->config.subSteps : 0, tumble ? options->config.overrides.velocityIterations : 0);
 }
 
-static const char* s_defaultScenes[] = {"large_pyramid", "many_pyramids", "tumbler", "smash", "spinner", "rain"};
+static const char* s_defaultScenes[] = {"large_pyramid", "many_pyramids", "tumbler", "smash",	  "spinner",
+										"rain",			 "washer",		  "junkyard", "compounds"};
 
 static int RunScenes(const Options* options)
 {
@@ -427,8 +462,9 @@ static int RunScenes(const Options* options)
 	if (options->peers)
 	{
 		printf("\nratios (median ms per step; > 1 means the peer is slower than Tumble)\n");
-		printf("| scene | Tumble ms | Box2D 2.4.1 ms | Chipmunk 7 ms | Box2D/Tumble | Chipmunk/Tumble |\n");
-		printf("|---|---|---|---|---|---|\n");
+		printf("| scene | Tumble ms | Box2D 2.4.1 ms | Box2D v3 ms | Chipmunk 7 ms | Box2D 2.4.1/Tumble | "
+			   "Box2D v3/Tumble | Chipmunk/Tumble |\n");
+		printf("|---|---|---|---|---|---|---|---|\n");
 		for (int s = 0; s < sceneCount && s < 64; ++s)
 		{
 			const RunResult* r = results[s];
@@ -622,7 +658,7 @@ static int SolverChart(FILE* out)
 		memset(&config, 0, sizeof(config));
 		SolverPoint* p = points + count++;
 		p->method = EngineName((Engine)e);
-		p->n = e == engineBox2D ? 8 : 10;
+		p->n = e == engineBox2D ? 8 : (e == engineBox2D3 ? 4 : 10); // velocity iterations, sub-steps, iterations
 		snprintf(p->label, sizeof(p->label), "%s", p->method);
 		MeasureSolver(p, (Engine)e, &config);
 	}
@@ -999,10 +1035,10 @@ static int TunnelChart(FILE* out)
 	fprintf(out, "method,shape,speed,fraction\n");
 	for (int kind = 0; kind < 2; ++kind)
 	{
-		for (int variant = 0; variant < 5; ++variant)
+		for (int variant = 0; variant < 3 + engineCount - engineBox2D; ++variant)
 		{
-			// variants 0–2: Tumble's methods; 3, 4: the peers
-			Engine engine = variant < 3 ? engineTumble : (variant == 3 ? engineBox2D : engineChipmunk);
+			// variants 0–2: Tumble's methods; then the peers in Engine order
+			Engine engine = variant < 3 ? engineTumble : (Engine)(engineBox2D + variant - 3);
 			if (!EngineAvailable(engine))
 			{
 				continue;
@@ -1141,8 +1177,9 @@ static void PrintUsage(void)
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
 		   "       tumble-bench --list\n"
-		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain, each at its\n"
-		   "catalogue step count, 60 Hz, 4 sub-steps for the soft solver (1 for baumgarte/ngs).\n");
+		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain washer junkyard\n"
+		   "compounds, each at its catalogue step count, 60 Hz, 4 sub-steps for the soft solver\n"
+		   "(1 for baumgarte/ngs). --peers adds Box2D 2.4.1, Box2D v3 and Chipmunk 7 where built.\n");
 }
 
 static bool ParseMethod(const char* option, const char* value, SceneMethods* methods)
