@@ -338,7 +338,8 @@ typedef struct Options
 	int steps; ///< > 0 replaces each scene's step count
 	int repeat;
 	const char* csvPath;
-	bool peers;
+	bool peers;					 ///< time peers too (--peers: all built ones; --peer NAME: those named)
+	bool peerNamed[engineCount]; ///< --peer NAME given for this engine
 	TumbleConfig config;
 } Options;
 
@@ -352,33 +353,57 @@ typedef struct RunResult
 	bool valid;
 } RunResult;
 
-static RunResult RunScene(const Scene* scene, const char* name, Engine engine, int steps, int repeat,
-						  const TumbleConfig* config)
+/// Time of one run: a fresh world, `steps` steps on the clock (construction excluded), ms per step.
+/// Counters are read after the run. Returns a negative time when the engine cannot build the scene.
+static double TimeOneRun(const Scene* scene, Engine engine, int steps, const TumbleConfig* config,
+						 PeerCounters* counters)
 {
-	RunResult result = {name, engine, steps, 0.0, 0.0, {0, 0, 0}, false};
-	double* times = malloc(sizeof(double) * (size_t)repeat);
+	Sim sim;
+	if (!Sim_Create(&sim, scene, engine, config))
+	{
+		return -1.0;
+	}
+	double start = NowMs();
+	for (int i = 0; i < steps; ++i)
+	{
+		Sim_Step(&sim);
+	}
+	double ms = (NowMs() - start) / (double)steps;
+	*counters = Sim_GetCounters(&sim);
+	Sim_Destroy(&sim);
+	return ms;
+}
+
+/// Every wanted engine on one scene, `repeat` rounds, the engines interleaved within each round
+/// (A B C A B C …), so a load change on the shared machine falls on all of them alike.
+static void RunSceneEngines(const Scene* scene, const char* name, int steps, int repeat, const TumbleConfig* config,
+							const bool* wanted, RunResult* results)
+{
+	double* times = malloc(sizeof(double) * (size_t)(engineCount * repeat));
+	for (int e = 0; e < engineCount; ++e)
+	{
+		results[e] = (RunResult){name, (Engine)e, steps, 0.0, 0.0, {0, 0, 0}, wanted[e]};
+	}
 	for (int r = 0; r < repeat; ++r)
 	{
-		Sim sim;
-		if (!Sim_Create(&sim, scene, engine, config))
+		for (int e = 0; e < engineCount; ++e)
 		{
-			free(times);
-			return result;
+			if (results[e].valid)
+			{
+				times[e * repeat + r] = TimeOneRun(scene, (Engine)e, steps, config, &results[e].counters);
+				results[e].valid = times[e * repeat + r] >= 0.0;
+			}
 		}
-		double start = NowMs();
-		for (int i = 0; i < steps; ++i)
-		{
-			Sim_Step(&sim);
-		}
-		times[r] = (NowMs() - start) / (double)steps;
-		result.counters = Sim_GetCounters(&sim);
-		Sim_Destroy(&sim);
 	}
-	result.msMedian = Median(times, repeat);
-	result.msMin = times[0]; // sorted by Median
-	result.valid = true;
+	for (int e = 0; e < engineCount; ++e)
+	{
+		if (results[e].valid)
+		{
+			results[e].msMedian = Median(times + e * repeat, repeat);
+			results[e].msMin = times[e * repeat]; // sorted by Median
+		}
+	}
 	free(times);
-	return result;
 }
 
 static const char* MethodOr(const char* name, const char* fallback)
@@ -435,17 +460,21 @@ static int RunScenes(const Options* options)
 			continue;
 		}
 		int steps = options->steps > 0 ? options->steps : scene->steps;
+		bool wanted[engineCount];
 		for (int e = 0; e < engineCount; ++e)
 		{
-			if ((e != engineTumble && !options->peers) || !EngineAvailable((Engine)e))
-			{
-				continue;
-			}
-			RunResult* r = &results[s][e];
-			*r = RunScene(scene, names[s], (Engine)e, steps, options->repeat, &options->config);
+			wanted[e] = EngineAvailable((Engine)e) && (e == engineTumble || options->peerNamed[e]);
+		}
+		RunSceneEngines(scene, names[s], steps, options->repeat, &options->config, wanted, results[s]);
+		for (int e = 0; e < engineCount; ++e)
+		{
+			const RunResult* r = &results[s][e];
 			if (!r->valid)
 			{
-				fprintf(stderr, "tumble-bench: %s could not build '%s'\n", EngineName((Engine)e), names[s]);
+				if (wanted[e])
+				{
+					fprintf(stderr, "tumble-bench: %s could not build '%s'\n", EngineName((Engine)e), names[s]);
+				}
 				continue;
 			}
 			printf("%-16s %-12s %6d %10.3f %10.3f %8d %9d %8d\n", names[s], EngineName((Engine)e), steps, r->msMedian,
@@ -1171,6 +1200,7 @@ static int SleepBenchmark(FILE* out, int steps, int repeat)
 static void PrintUsage(void)
 {
 	printf("usage: tumble-bench [SCENE...] [--steps N] [--repeat R] [--csv FILE] [--peers]\n"
+		   "                    [--peer box2d-2.4.1|box2d-3|chipmunk-7]...\n"
 		   "                    [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
 		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree]\n"
@@ -1179,7 +1209,8 @@ static void PrintUsage(void)
 		   "       tumble-bench --list\n"
 		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain washer junkyard\n"
 		   "compounds, each at its catalogue step count, 60 Hz, 4 sub-steps for the soft solver\n"
-		   "(1 for baumgarte/ngs). --peers adds Box2D 2.4.1, Box2D v3 and Chipmunk 7 where built.\n");
+		   "(1 for baumgarte/ngs). --peers adds Box2D 2.4.1, Box2D v3 and Chipmunk 7 where built,\n"
+		   "--peer NAME only the peers named; --repeat rounds interleave the engines.\n");
 }
 
 static bool ParseMethod(const char* option, const char* value, SceneMethods* methods)
@@ -1245,6 +1276,26 @@ int main(int argc, char** argv)
 		else if (strcmp(arg, "--peers") == 0)
 		{
 			options.peers = true;
+			for (int e = engineBox2D; e < engineCount; ++e)
+			{
+				options.peerNamed[e] = true;
+			}
+		}
+		else if (strcmp(arg, "--peer") == 0 && hasValue)
+		{
+			const char* name = argv[++i];
+			int found = -1;
+			for (int e = engineBox2D; e < engineCount; ++e)
+			{
+				found = strcmp(name, EngineName((Engine)e)) == 0 ? e : found;
+			}
+			if (found < 0)
+			{
+				fprintf(stderr, "tumble-bench: unknown peer '%s' (box2d-2.4.1, box2d-3, chipmunk-7)\n", name);
+				return 2;
+			}
+			options.peers = true;
+			options.peerNamed[found] = true;
 		}
 		else if (strcmp(arg, "--scalar-solver") == 0)
 		{
