@@ -12,6 +12,7 @@
 //   toi-chart          ns per time-of-impact query vs error against closed forms
 //   tunnel-chart       fraction of bodies that pass through a thin wall vs speed, per method
 //   sleep              10,000 sleeping bodies plus 10 awake ones vs the 10 awake ones alone
+//   poses              each engine's pose of a few bodies after N steps (do the adapters agree?)
 // clock_gettime(CLOCK_MONOTONIC) is POSIX, not C17
 #define _POSIX_C_SOURCE 200809L
 
@@ -340,6 +341,7 @@ typedef struct Options
 	const char* csvPath;
 	bool peers;					 ///< time peers too (--peers: all built ones; --peer NAME: those named)
 	bool peerNamed[engineCount]; ///< --peer NAME given for this engine
+	bool interleaveSteps;		 ///< --interleave: the engines' worlds side by side, stepped in turn
 	TumbleConfig config;
 } Options;
 
@@ -374,10 +376,45 @@ static double TimeOneRun(const Scene* scene, Engine engine, int steps, const Tum
 	return ms;
 }
 
-/// Every wanted engine on one scene, `repeat` rounds, the engines interleaved within each round
-/// (A B C A B C …), so a load change on the shared machine falls on all of them alike.
+/// One round with every valid engine's world built side by side and stepped in turn, one step
+/// each (A B C A B C …), each step timed on its own: a load change on the shared machine, even
+/// within a run, falls on all engines alike. Writes ms per step into times[e * repeat + round].
+static void TimeInterleavedRound(const Scene* scene, int steps, const TumbleConfig* config, RunResult* results,
+								 double* times, int repeat, int round)
+{
+	Sim sims[engineCount];
+	double elapsed[engineCount] = {0.0};
+	for (int e = 0; e < engineCount; ++e)
+	{
+		results[e].valid = results[e].valid && Sim_Create(sims + e, scene, (Engine)e, config);
+	}
+	for (int i = 0; i < steps; ++i)
+	{
+		for (int e = 0; e < engineCount; ++e)
+		{
+			if (results[e].valid)
+			{
+				double start = NowMs();
+				Sim_Step(sims + e);
+				elapsed[e] += NowMs() - start;
+			}
+		}
+	}
+	for (int e = 0; e < engineCount; ++e)
+	{
+		if (results[e].valid)
+		{
+			times[e * repeat + round] = elapsed[e] / (double)steps;
+			results[e].counters = Sim_GetCounters(sims + e);
+			Sim_Destroy(sims + e);
+		}
+	}
+}
+
+/// Every wanted engine on one scene, `repeat` rounds, the engines interleaved within each round:
+/// run after run (A B C A B C …), or step after step with interleaveSteps.
 static void RunSceneEngines(const Scene* scene, const char* name, int steps, int repeat, const TumbleConfig* config,
-							const bool* wanted, RunResult* results)
+							const bool* wanted, bool interleaveSteps, RunResult* results)
 {
 	double* times = malloc(sizeof(double) * (size_t)(engineCount * repeat));
 	for (int e = 0; e < engineCount; ++e)
@@ -386,6 +423,11 @@ static void RunSceneEngines(const Scene* scene, const char* name, int steps, int
 	}
 	for (int r = 0; r < repeat; ++r)
 	{
+		if (interleaveSteps)
+		{
+			TimeInterleavedRound(scene, steps, config, results, times, repeat, r);
+			continue;
+		}
 		for (int e = 0; e < engineCount; ++e)
 		{
 			if (results[e].valid)
@@ -465,7 +507,8 @@ static int RunScenes(const Options* options)
 		{
 			wanted[e] = EngineAvailable((Engine)e) && (e == engineTumble || options->peerNamed[e]);
 		}
-		RunSceneEngines(scene, names[s], steps, options->repeat, &options->config, wanted, results[s]);
+		RunSceneEngines(scene, names[s], steps, options->repeat, &options->config, wanted, options->interleaveSteps,
+						results[s]);
 		for (int e = 0; e < engineCount; ++e)
 		{
 			const RunResult* r = &results[s][e];
@@ -1195,22 +1238,80 @@ static int SleepBenchmark(FILE* out, int steps, int repeat)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Poses: do the engines agree? Each engine steps the scene, then prints the pose of its first
+// `POSE_BODIES` non-static bodies and of every driven one (a check of the adapters, not a timing).
+
+#define POSE_BODIES 4
+
+static void PrintPoses(FILE* out, const Sim* sim, const Scene* scene, const char* name)
+{
+	int listed = 0;
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		const SceneBody* body = scene->bodies + i;
+		bool driven = body->drive.enabled;
+		if (body->type == tb_staticBody || (listed >= POSE_BODIES && !driven))
+		{
+			continue;
+		}
+		listed += driven ? 0 : 1;
+		PeerBody pose = Sim_GetBody(sim, i);
+		fprintf(out, "%s,%s,%d,%.6f,%.6f,%.6f,%s\n", name, EngineName(sim->engine), i, (double)pose.position.x,
+				(double)pose.position.y, (double)atan2f(pose.rotation.s, pose.rotation.c), driven ? "driven" : "");
+	}
+}
+
+static int Poses(FILE* out, const Options* options)
+{
+	fprintf(out, "scene,engine,body,x,y,angle,note\n");
+	for (int s = 0; s < options->sceneCount; ++s)
+	{
+		Scene* scene = Catalogue_Build(options->scenes[s]);
+		if (scene == NULL)
+		{
+			fprintf(stderr, "tumble-bench: unknown scene '%s'\n", options->scenes[s]);
+			return 2;
+		}
+		int steps = options->steps > 0 ? options->steps : scene->steps;
+		for (int e = 0; e < engineCount; ++e)
+		{
+			Sim sim;
+			bool wanted = EngineAvailable((Engine)e) && (e == engineTumble || options->peerNamed[e]);
+			if (!wanted || !Sim_Create(&sim, scene, (Engine)e, &options->config))
+			{
+				continue;
+			}
+			for (int i = 0; i < steps; ++i)
+			{
+				Sim_Step(&sim);
+			}
+			PrintPoses(out, &sim, scene, options->scenes[s]);
+			Sim_Destroy(&sim);
+		}
+		Scene_Destroy(scene);
+	}
+	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Command line
 
 static void PrintUsage(void)
 {
 	printf("usage: tumble-bench [SCENE...] [--steps N] [--repeat R] [--csv FILE] [--peers]\n"
-		   "                    [--peer box2d-2.4.1|box2d-3|chipmunk-7]...\n"
+		   "                    [--peer box2d-2.4.1|box2d-3|chipmunk-7]... [--interleave]\n"
 		   "                    [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
 		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
+		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
 		   "       tumble-bench --list\n"
 		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain washer junkyard\n"
 		   "compounds, each at its catalogue step count, 60 Hz, 4 sub-steps for the soft solver\n"
 		   "(1 for baumgarte/ngs). --peers adds Box2D 2.4.1, Box2D v3 and Chipmunk 7 where built,\n"
-		   "--peer NAME only the peers named; --repeat rounds interleave the engines.\n");
+		   "--peer NAME only the peers named; --repeat rounds interleave the engines run by run,\n"
+		   "--interleave step by step (all worlds built side by side, each step timed alone).\n");
 }
 
 static bool ParseMethod(const char* option, const char* value, SceneMethods* methods)
@@ -1297,6 +1398,10 @@ int main(int argc, char** argv)
 			options.peers = true;
 			options.peerNamed[found] = true;
 		}
+		else if (strcmp(arg, "--interleave") == 0)
+		{
+			options.interleaveSteps = true;
+		}
 		else if (strcmp(arg, "--scalar-solver") == 0)
 		{
 			options.config.overrides.scalarSolver = true;
@@ -1341,7 +1446,8 @@ int main(int argc, char** argv)
 			fprintf(stderr, "tumble-bench: unknown option '%s' (try --help)\n", arg);
 			return 2;
 		}
-		else if (command == NULL && (strstr(arg, "-chart") != NULL || strcmp(arg, "sleep") == 0))
+		else if (command == NULL &&
+				 (strstr(arg, "-chart") != NULL || strcmp(arg, "sleep") == 0 || strcmp(arg, "poses") == 0))
 		{
 			command = arg;
 		}
@@ -1384,6 +1490,10 @@ int main(int argc, char** argv)
 	else if (strcmp(command, "sleep") == 0)
 	{
 		status = SleepBenchmark(out, options.steps > 0 ? options.steps : 300, options.repeat);
+	}
+	else if (strcmp(command, "poses") == 0)
+	{
+		status = Poses(out, &options);
 	}
 	else
 	{

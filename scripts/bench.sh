@@ -40,7 +40,7 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 	echo "date: $(date -u +%Y-%m-%dT%H:%MZ)  commit: $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo none)" >>"$RESULTS/machine.txt"
 
 	echo "== scenes (Tumble, Box2D 2.4.1, Box2D v3, Chipmunk 7 in one process)"
-	"$BENCH" --peers --repeat "$REPEAT" "${STEPS_ARGS[@]}" --csv "$RESULTS/scenes.csv" | grep -v '^Initializing cpSpace\|^Compile with' \
+	"$BENCH" --peers --interleave --repeat "$REPEAT" "${STEPS_ARGS[@]}" --csv "$RESULTS/scenes.csv" | grep -v '^Initializing cpSpace\|^Compile with' \
 		| tee "$RESULTS/scenes.txt"
 	echo "== sleeping bodies"
 	"$BENCH" sleep --repeat "$REPEAT" --csv "$RESULTS/sleep.csv"
