@@ -1,6 +1,6 @@
 # Scene chart: ms per step per scene for Tumble and its peers (same run).
 # Input: DATA (scenes_wide.csv: scene,tumble,box2d,box2d3,chipmunk, made by scripts/bench.sh); output: OUT.
-set terminal pngcairo size 1000,520 font ",10"
+set terminal pngcairo size 1250,520 font ",10"
 set output OUT
 set termoption noenhanced
 set datafile separator ","
