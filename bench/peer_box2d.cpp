@@ -10,6 +10,9 @@ struct PeerWorld
 {
 	b2World* world;
 	std::vector<b2Body*> bodies; // scene body index -> body
+	std::vector<int> driven;	 // scene indices of the bodies with a SceneDrive
+	const Scene* scene;
+	int stepIndex;
 	float timeStep;
 };
 
@@ -124,6 +127,8 @@ PeerWorld* PeerBox2D_Create(const Scene* scene)
 	peer->world = new b2World(ToB2(scene->gravity));
 	peer->world->SetAllowSleeping(scene->enableSleep);
 	peer->timeStep = scene->timeStep;
+	peer->scene = scene;
+	peer->stepIndex = 0;
 	peer->bodies.resize((size_t)scene->bodyCount);
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
@@ -150,12 +155,37 @@ PeerWorld* PeerBox2D_Create(const Scene* scene)
 			body->SetAwake(false);
 		}
 		peer->bodies[(size_t)i] = body;
+		if (sb.drive.enabled)
+		{
+			peer->driven.push_back(i);
+		}
 	}
 	return peer;
 }
 
+// Box2D 2.4 has no target-transform call: the velocity that reaches the target, from the body's pose.
+static void DriveBody(PeerWorld* peer, int index)
+{
+	tbTransform target;
+	Scene_DriveTarget(peer->scene, index, peer->stepIndex, &target);
+	b2Body* body = peer->bodies[(size_t)index];
+	const b2Transform& xf = body->GetTransform();
+	tbTransform current = {{xf.p.x, xf.p.y}, {xf.q.c, xf.q.s}};
+	tbVec2 localCenter = {body->GetLocalCenter().x, body->GetLocalCenter().y};
+	tbVec2 v;
+	float w;
+	Scene_TargetVelocity(current, localCenter, target, peer->timeStep, &v, &w);
+	body->SetLinearVelocity(ToB2(v));
+	body->SetAngularVelocity(w);
+}
+
 void PeerBox2D_Step(PeerWorld* peer)
 {
+	for (int index : peer->driven)
+	{
+		DriveBody(peer, index);
+	}
+	peer->stepIndex += 1;
 	peer->world->Step(peer->timeStep, 8, 3);
 }
 

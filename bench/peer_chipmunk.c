@@ -11,6 +11,10 @@ struct PeerWorld
 	cpSpace* space;
 	cpBody** bodies; // scene body index -> body
 	int bodyCount;
+	int* driven; // scene indices of the bodies with a SceneDrive
+	int drivenCount;
+	int stepIndex;
+	const Scene* scene;
 	float timeStep;
 };
 
@@ -137,9 +141,15 @@ PeerWorld* PeerChipmunk_Create(const Scene* scene, bool useTree)
 	}
 	peer->bodyCount = scene->bodyCount;
 	peer->bodies = calloc((size_t)(scene->bodyCount > 0 ? scene->bodyCount : 1), sizeof(cpBody*));
+	peer->driven = calloc((size_t)(scene->bodyCount > 0 ? scene->bodyCount : 1), sizeof(int));
+	peer->scene = scene;
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
 		peer->bodies[i] = MakeBody(peer->space, scene->bodies + i);
+		if (scene->bodies[i].drive.enabled)
+		{
+			peer->driven[peer->drivenCount++] = i;
+		}
 	}
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
@@ -151,8 +161,29 @@ PeerWorld* PeerChipmunk_Create(const Scene* scene, bool useTree)
 	return peer;
 }
 
+// Chipmunk has no target-transform call: the velocity that reaches the target, from the body's pose.
+static void DriveBody(PeerWorld* peer, int index)
+{
+	tbTransform target;
+	Scene_DriveTarget(peer->scene, index, peer->stepIndex, &target);
+	cpBody* body = peer->bodies[index];
+	cpVect p = cpBodyGetPosition(body), cog = cpBodyGetCenterOfGravity(body);
+	double angle = cpBodyGetAngle(body);
+	tbTransform current = {{(float)p.x, (float)p.y}, {(float)cos(angle), (float)sin(angle)}};
+	tbVec2 v, localCenter = {(float)cog.x, (float)cog.y};
+	float w;
+	Scene_TargetVelocity(current, localCenter, target, peer->timeStep, &v, &w);
+	cpBodySetVelocity(body, ToCp(v));
+	cpBodySetAngularVelocity(body, w);
+}
+
 void PeerChipmunk_Step(PeerWorld* peer)
 {
+	for (int i = 0; i < peer->drivenCount; ++i)
+	{
+		DriveBody(peer, peer->driven[i]);
+	}
+	peer->stepIndex += 1;
 	cpSpaceStep(peer->space, peer->timeStep);
 }
 
@@ -194,5 +225,6 @@ void PeerChipmunk_Destroy(PeerWorld* peer)
 	}
 	cpSpaceFree(peer->space);
 	free(peer->bodies);
+	free(peer->driven);
 	free(peer);
 }

@@ -1,8 +1,10 @@
 // Peer engines for tumble-bench: adapters that build the same catalogue Scene in another engine,
 // step it and read it back, so Tumble and its peers are timed one after another in one process.
 //
-// Each adapter is compiled only when its engine's development package is found (bench/peers.cmake
-// defines TUMBLE_HAVE_BOX2D / TUMBLE_HAVE_CHIPMUNK). Body indices are scene body indices.
+// Each adapter is compiled only when its engine is found (bench/peers.cmake defines
+// TUMBLE_HAVE_BOX2D / TUMBLE_HAVE_BOX2D3 / TUMBLE_HAVE_CHIPMUNK). Body indices are scene body
+// indices. Every adapter drives the scene's scripted bodies (SceneDrive) before each step with the
+// velocity that reaches the step's target, as SceneWorld_Step does for Tumble.
 #pragma once
 
 #include "scene.h"
@@ -38,6 +40,17 @@ void PeerBox2D_Step(PeerWorld* world);
 PeerBody PeerBox2D_GetBody(PeerWorld* world, int bodyIndex);
 PeerCounters PeerBox2D_GetCounters(PeerWorld* world);
 void PeerBox2D_Destroy(PeerWorld* world);
+
+/// Box2D v3 (3.2, C): the settings of v3's own benchmark program: one worker and no task system
+/// (single-threaded), the scene's sub-steps (4 in every catalogue scene, as v3's benchmark) at the
+/// scene's 60 Hz, continuous collision on, its defaults otherwise (soft contacts, 0.005 m linear slop,
+/// sleep after 0.5 s below 0.05 m/s). Shapes map one to one (v3 has capsules and rounded polygons;
+/// polygons are copied as they are). Driven bodies use b2Body_SetTargetTransform.
+PeerWorld* PeerBox2D3_Create(const Scene* scene);
+void PeerBox2D3_Step(PeerWorld* world);
+PeerBody PeerBox2D3_GetBody(PeerWorld* world, int bodyIndex);
+PeerCounters PeerBox2D3_GetCounters(PeerWorld* world);
+void PeerBox2D3_Destroy(PeerWorld* world);
 
 /// Chipmunk 7: 10 iterations, collision slop 0.01 m (its default 0.1 m is ten box skins),
 /// spatial hash by default (cell = median dynamic shape size) or the BBTree (useTree),

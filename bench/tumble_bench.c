@@ -1,8 +1,8 @@
 // tumble-bench: the scene benchmark. Runs catalogue scenes single-threaded, times only the
 // stepping loop (world construction excluded), repeats and reports the median and minimum
 // milliseconds per step with the body, contact and awake-body counts, and writes CSV. With
-// --peers the same Scene is built and timed in Box2D 2.4.1 and Chipmunk 7 right after Tumble, in
-// the same process, so the ratios come from one run on one (shared, noisy) machine.
+// --peers the same Scene is built and timed in Box2D 2.4.1, Box2D v3 and Chipmunk 7 right after
+// Tumble, in the same process, so the ratios come from one run on one (shared, noisy) machine.
 //
 // Subcommands produce the data behind the charts in docs/performance.md:
 //   solver-chart       time per step vs stack drift, largest penetration and bounce-energy error
@@ -12,6 +12,7 @@
 //   toi-chart          ns per time-of-impact query vs error against closed forms
 //   tunnel-chart       fraction of bodies that pass through a thin wall vs speed, per method
 //   sleep              10,000 sleeping bodies plus 10 awake ones vs the 10 awake ones alone
+//   poses              each engine's pose of a few bodies after N steps (do the adapters agree?)
 // clock_gettime(CLOCK_MONOTONIC) is POSIX, not C17
 #define _POSIX_C_SOURCE 200809L
 
@@ -63,6 +64,7 @@ typedef enum Engine
 {
 	engineTumble,
 	engineBox2D,
+	engineBox2D3,
 	engineChipmunk,
 	engineCount
 } Engine;
@@ -75,6 +77,8 @@ static const char* EngineName(Engine engine)
 			return "tumble";
 		case engineBox2D:
 			return "box2d-2.4.1";
+		case engineBox2D3:
+			return "box2d-3";
 		default:
 			return "chipmunk-7";
 	}
@@ -88,6 +92,12 @@ static bool EngineAvailable(Engine engine)
 			return true;
 		case engineBox2D:
 #ifdef TUMBLE_HAVE_BOX2D
+			return true;
+#else
+			return false;
+#endif
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
 			return true;
 #else
 			return false;
@@ -143,6 +153,11 @@ static bool Sim_Create(Sim* sim, const Scene* scene, Engine engine, const Tumble
 			sim->peer = PeerBox2D_Create(scene);
 #endif
 			return sim->peer != NULL;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			sim->peer = PeerBox2D3_Create(scene);
+#endif
+			return sim->peer != NULL;
 		default:
 #ifdef TUMBLE_HAVE_CHIPMUNK
 			sim->peer = PeerChipmunk_Create(scene, config->chipmunkTree);
@@ -156,11 +171,16 @@ static void Sim_Step(Sim* sim)
 	switch (sim->engine)
 	{
 		case engineTumble:
-			tbWorld_Step(sim->tumble.worldId, sim->scene->timeStep, sim->subSteps);
+			SceneWorld_Step(&sim->tumble, sim->scene, sim->subSteps);
 			break;
 		case engineBox2D:
 #ifdef TUMBLE_HAVE_BOX2D
 			PeerBox2D_Step(sim->peer);
+#endif
+			break;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			PeerBox2D3_Step(sim->peer);
 #endif
 			break;
 		default:
@@ -190,6 +210,11 @@ static PeerBody Sim_GetBody(const Sim* sim, int index)
 			body = PeerBox2D_GetBody(sim->peer, index);
 #endif
 			break;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			body = PeerBox2D3_GetBody(sim->peer, index);
+#endif
+			break;
 		default:
 #ifdef TUMBLE_HAVE_CHIPMUNK
 			body = PeerChipmunk_GetBody(sim->peer, index);
@@ -215,6 +240,11 @@ static PeerCounters Sim_GetCounters(const Sim* sim)
 			counters = PeerBox2D_GetCounters(sim->peer);
 #endif
 			break;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			counters = PeerBox2D3_GetCounters(sim->peer);
+#endif
+			break;
 		default:
 #ifdef TUMBLE_HAVE_CHIPMUNK
 			counters = PeerChipmunk_GetCounters(sim->peer);
@@ -234,6 +264,11 @@ static void Sim_Destroy(Sim* sim)
 		case engineBox2D:
 #ifdef TUMBLE_HAVE_BOX2D
 			PeerBox2D_Destroy(sim->peer);
+#endif
+			break;
+		case engineBox2D3:
+#ifdef TUMBLE_HAVE_BOX2D3
+			PeerBox2D3_Destroy(sim->peer);
 #endif
 			break;
 		default:
@@ -304,7 +339,9 @@ typedef struct Options
 	int steps; ///< > 0 replaces each scene's step count
 	int repeat;
 	const char* csvPath;
-	bool peers;
+	bool peers;					 ///< time peers too (--peers: all built ones; --peer NAME: those named)
+	bool peerNamed[engineCount]; ///< --peer NAME given for this engine
+	bool interleaveSteps;		 ///< --interleave: the engines' worlds side by side, stepped in turn
 	TumbleConfig config;
 } Options;
 
@@ -318,33 +355,97 @@ typedef struct RunResult
 	bool valid;
 } RunResult;
 
-static RunResult RunScene(const Scene* scene, const char* name, Engine engine, int steps, int repeat,
-						  const TumbleConfig* config)
+/// Time of one run: a fresh world, `steps` steps on the clock (construction excluded), ms per step.
+/// Counters are read after the run. Returns a negative time when the engine cannot build the scene.
+static double TimeOneRun(const Scene* scene, Engine engine, int steps, const TumbleConfig* config,
+						 PeerCounters* counters)
 {
-	RunResult result = {name, engine, steps, 0.0, 0.0, {0, 0, 0}, false};
-	double* times = malloc(sizeof(double) * (size_t)repeat);
+	Sim sim;
+	if (!Sim_Create(&sim, scene, engine, config))
+	{
+		return -1.0;
+	}
+	double start = NowMs();
+	for (int i = 0; i < steps; ++i)
+	{
+		Sim_Step(&sim);
+	}
+	double ms = (NowMs() - start) / (double)steps;
+	*counters = Sim_GetCounters(&sim);
+	Sim_Destroy(&sim);
+	return ms;
+}
+
+/// One round with every valid engine's world built side by side and stepped in turn, one step
+/// each (A B C A B C …), each step timed on its own: a load change on the shared machine, even
+/// within a run, falls on all engines alike. Writes ms per step into times[e * repeat + round].
+static void TimeInterleavedRound(const Scene* scene, int steps, const TumbleConfig* config, RunResult* results,
+								 double* times, int repeat, int round)
+{
+	Sim sims[engineCount];
+	double elapsed[engineCount] = {0.0};
+	for (int e = 0; e < engineCount; ++e)
+	{
+		results[e].valid = results[e].valid && Sim_Create(sims + e, scene, (Engine)e, config);
+	}
+	for (int i = 0; i < steps; ++i)
+	{
+		for (int e = 0; e < engineCount; ++e)
+		{
+			if (results[e].valid)
+			{
+				double start = NowMs();
+				Sim_Step(sims + e);
+				elapsed[e] += NowMs() - start;
+			}
+		}
+	}
+	for (int e = 0; e < engineCount; ++e)
+	{
+		if (results[e].valid)
+		{
+			times[e * repeat + round] = elapsed[e] / (double)steps;
+			results[e].counters = Sim_GetCounters(sims + e);
+			Sim_Destroy(sims + e);
+		}
+	}
+}
+
+/// Every wanted engine on one scene, `repeat` rounds, the engines interleaved within each round:
+/// run after run (A B C A B C …), or step after step with interleaveSteps.
+static void RunSceneEngines(const Scene* scene, const char* name, int steps, int repeat, const TumbleConfig* config,
+							const bool* wanted, bool interleaveSteps, RunResult* results)
+{
+	double* times = malloc(sizeof(double) * (size_t)(engineCount * repeat));
+	for (int e = 0; e < engineCount; ++e)
+	{
+		results[e] = (RunResult){name, (Engine)e, steps, 0.0, 0.0, {0, 0, 0}, wanted[e]};
+	}
 	for (int r = 0; r < repeat; ++r)
 	{
-		Sim sim;
-		if (!Sim_Create(&sim, scene, engine, config))
+		if (interleaveSteps)
 		{
-			free(times);
-			return result;
+			TimeInterleavedRound(scene, steps, config, results, times, repeat, r);
+			continue;
 		}
-		double start = NowMs();
-		for (int i = 0; i < steps; ++i)
+		for (int e = 0; e < engineCount; ++e)
 		{
-			Sim_Step(&sim);
+			if (results[e].valid)
+			{
+				times[e * repeat + r] = TimeOneRun(scene, (Engine)e, steps, config, &results[e].counters);
+				results[e].valid = times[e * repeat + r] >= 0.0;
+			}
 		}
-		times[r] = (NowMs() - start) / (double)steps;
-		result.counters = Sim_GetCounters(&sim);
-		Sim_Destroy(&sim);
 	}
-	result.msMedian = Median(times, repeat);
-	result.msMin = times[0]; // sorted by Median
-	result.valid = true;
+	for (int e = 0; e < engineCount; ++e)
+	{
+		if (results[e].valid)
+		{
+			results[e].msMedian = Median(times + e * repeat, repeat);
+			results[e].msMin = times[e * repeat]; // sorted by Median
+		}
+	}
 	free(times);
-	return result;
 }
 
 static const char* MethodOr(const char* name, const char* fallback)
@@ -365,7 +466,8 @@ static void WriteCsvRow(FILE* file, const RunResult* r, const Options* options, 
 			tumble ? options->config.subSteps : 0, tumble ? options->config.overrides.velocityIterations : 0);
 }
 
-static const char* s_defaultScenes[] = {"large_pyramid", "many_pyramids", "tumbler", "smash", "spinner", "rain"};
+static const char* s_defaultScenes[] = {"large_pyramid", "many_pyramids", "tumbler", "smash",	  "spinner",
+										"rain",			 "washer",		  "junkyard", "compounds"};
 
 static int RunScenes(const Options* options)
 {
@@ -400,17 +502,22 @@ static int RunScenes(const Options* options)
 			continue;
 		}
 		int steps = options->steps > 0 ? options->steps : scene->steps;
+		bool wanted[engineCount];
 		for (int e = 0; e < engineCount; ++e)
 		{
-			if ((e != engineTumble && !options->peers) || !EngineAvailable((Engine)e))
-			{
-				continue;
-			}
-			RunResult* r = &results[s][e];
-			*r = RunScene(scene, names[s], (Engine)e, steps, options->repeat, &options->config);
+			wanted[e] = EngineAvailable((Engine)e) && (e == engineTumble || options->peerNamed[e]);
+		}
+		RunSceneEngines(scene, names[s], steps, options->repeat, &options->config, wanted, options->interleaveSteps,
+						results[s]);
+		for (int e = 0; e < engineCount; ++e)
+		{
+			const RunResult* r = &results[s][e];
 			if (!r->valid)
 			{
-				fprintf(stderr, "tumble-bench: %s could not build '%s'\n", EngineName((Engine)e), names[s]);
+				if (wanted[e])
+				{
+					fprintf(stderr, "tumble-bench: %s could not build '%s'\n", EngineName((Engine)e), names[s]);
+				}
 				continue;
 			}
 			printf("%-16s %-12s %6d %10.3f %10.3f %8d %9d %8d\n", names[s], EngineName((Engine)e), steps, r->msMedian,
@@ -427,8 +534,9 @@ static int RunScenes(const Options* options)
 	if (options->peers)
 	{
 		printf("\nratios (median ms per step; > 1 means the peer is slower than Tumble)\n");
-		printf("| scene | Tumble ms | Box2D 2.4.1 ms | Chipmunk 7 ms | Box2D/Tumble | Chipmunk/Tumble |\n");
-		printf("|---|---|---|---|---|---|\n");
+		printf("| scene | Tumble ms | Box2D 2.4.1 ms | Box2D v3 ms | Chipmunk 7 ms | Box2D 2.4.1/Tumble | "
+			   "Box2D v3/Tumble | Chipmunk/Tumble |\n");
+		printf("|---|---|---|---|---|---|---|---|\n");
 		for (int s = 0; s < sceneCount && s < 64; ++s)
 		{
 			const RunResult* r = results[s];
@@ -622,7 +730,7 @@ static int SolverChart(FILE* out)
 		memset(&config, 0, sizeof(config));
 		SolverPoint* p = points + count++;
 		p->method = EngineName((Engine)e);
-		p->n = e == engineBox2D ? 8 : 10;
+		p->n = e == engineBox2D ? 8 : (e == engineBox2D3 ? 4 : 10); // velocity iterations, sub-steps, iterations
 		snprintf(p->label, sizeof(p->label), "%s", p->method);
 		MeasureSolver(p, (Engine)e, &config);
 	}
@@ -999,10 +1107,10 @@ static int TunnelChart(FILE* out)
 	fprintf(out, "method,shape,speed,fraction\n");
 	for (int kind = 0; kind < 2; ++kind)
 	{
-		for (int variant = 0; variant < 5; ++variant)
+		for (int variant = 0; variant < 3 + engineCount - engineBox2D; ++variant)
 		{
-			// variants 0–2: Tumble's methods; 3, 4: the peers
-			Engine engine = variant < 3 ? engineTumble : (variant == 3 ? engineBox2D : engineChipmunk);
+			// variants 0–2: Tumble's methods; then the peers in Engine order
+			Engine engine = variant < 3 ? engineTumble : (Engine)(engineBox2D + variant - 3);
 			if (!EngineAvailable(engine))
 			{
 				continue;
@@ -1130,19 +1238,80 @@ static int SleepBenchmark(FILE* out, int steps, int repeat)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Poses: do the engines agree? Each engine steps the scene, then prints the pose of its first
+// `POSE_BODIES` non-static bodies and of every driven one (a check of the adapters, not a timing).
+
+#define POSE_BODIES 4
+
+static void PrintPoses(FILE* out, const Sim* sim, const Scene* scene, const char* name)
+{
+	int listed = 0;
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		const SceneBody* body = scene->bodies + i;
+		bool driven = body->drive.enabled;
+		if (body->type == tb_staticBody || (listed >= POSE_BODIES && !driven))
+		{
+			continue;
+		}
+		listed += driven ? 0 : 1;
+		PeerBody pose = Sim_GetBody(sim, i);
+		fprintf(out, "%s,%s,%d,%.6f,%.6f,%.6f,%s\n", name, EngineName(sim->engine), i, (double)pose.position.x,
+				(double)pose.position.y, (double)atan2f(pose.rotation.s, pose.rotation.c), driven ? "driven" : "");
+	}
+}
+
+static int Poses(FILE* out, const Options* options)
+{
+	fprintf(out, "scene,engine,body,x,y,angle,note\n");
+	for (int s = 0; s < options->sceneCount; ++s)
+	{
+		Scene* scene = Catalogue_Build(options->scenes[s]);
+		if (scene == NULL)
+		{
+			fprintf(stderr, "tumble-bench: unknown scene '%s'\n", options->scenes[s]);
+			return 2;
+		}
+		int steps = options->steps > 0 ? options->steps : scene->steps;
+		for (int e = 0; e < engineCount; ++e)
+		{
+			Sim sim;
+			bool wanted = EngineAvailable((Engine)e) && (e == engineTumble || options->peerNamed[e]);
+			if (!wanted || !Sim_Create(&sim, scene, (Engine)e, &options->config))
+			{
+				continue;
+			}
+			for (int i = 0; i < steps; ++i)
+			{
+				Sim_Step(&sim);
+			}
+			PrintPoses(out, &sim, scene, options->scenes[s]);
+			Sim_Destroy(&sim);
+		}
+		Scene_Destroy(scene);
+	}
+	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Command line
 
 static void PrintUsage(void)
 {
 	printf("usage: tumble-bench [SCENE...] [--steps N] [--repeat R] [--csv FILE] [--peers]\n"
+		   "                    [--peer box2d-2.4.1|box2d-3|chipmunk-7]... [--interleave]\n"
 		   "                    [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
 		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
+		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
 		   "       tumble-bench --list\n"
-		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain, each at its\n"
-		   "catalogue step count, 60 Hz, 4 sub-steps for the soft solver (1 for baumgarte/ngs).\n");
+		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain washer junkyard\n"
+		   "compounds, each at its catalogue step count, 60 Hz, 4 sub-steps for the soft solver\n"
+		   "(1 for baumgarte/ngs). --peers adds Box2D 2.4.1, Box2D v3 and Chipmunk 7 where built,\n"
+		   "--peer NAME only the peers named; --repeat rounds interleave the engines run by run,\n"
+		   "--interleave step by step (all worlds built side by side, each step timed alone).\n");
 }
 
 static bool ParseMethod(const char* option, const char* value, SceneMethods* methods)
@@ -1208,6 +1377,30 @@ int main(int argc, char** argv)
 		else if (strcmp(arg, "--peers") == 0)
 		{
 			options.peers = true;
+			for (int e = engineBox2D; e < engineCount; ++e)
+			{
+				options.peerNamed[e] = true;
+			}
+		}
+		else if (strcmp(arg, "--peer") == 0 && hasValue)
+		{
+			const char* name = argv[++i];
+			int found = -1;
+			for (int e = engineBox2D; e < engineCount; ++e)
+			{
+				found = strcmp(name, EngineName((Engine)e)) == 0 ? e : found;
+			}
+			if (found < 0)
+			{
+				fprintf(stderr, "tumble-bench: unknown peer '%s' (box2d-2.4.1, box2d-3, chipmunk-7)\n", name);
+				return 2;
+			}
+			options.peers = true;
+			options.peerNamed[found] = true;
+		}
+		else if (strcmp(arg, "--interleave") == 0)
+		{
+			options.interleaveSteps = true;
 		}
 		else if (strcmp(arg, "--scalar-solver") == 0)
 		{
@@ -1253,7 +1446,8 @@ int main(int argc, char** argv)
 			fprintf(stderr, "tumble-bench: unknown option '%s' (try --help)\n", arg);
 			return 2;
 		}
-		else if (command == NULL && (strstr(arg, "-chart") != NULL || strcmp(arg, "sleep") == 0))
+		else if (command == NULL &&
+				 (strstr(arg, "-chart") != NULL || strcmp(arg, "sleep") == 0 || strcmp(arg, "poses") == 0))
 		{
 			command = arg;
 		}
@@ -1296,6 +1490,10 @@ int main(int argc, char** argv)
 	else if (strcmp(command, "sleep") == 0)
 	{
 		status = SleepBenchmark(out, options.steps > 0 ? options.steps : 300, options.repeat);
+	}
+	else if (strcmp(command, "poses") == 0)
+	{
+		status = Poses(out, &options);
 	}
 	else
 	{

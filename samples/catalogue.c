@@ -560,6 +560,140 @@ static Scene* BuildSpinner(void)
 	return scene;
 }
 
+// Box2D v3's washer: a kinematic drum about (0, 10) turning at 25°/s (and drifting at
+// (0.001, −0.002) m/s, as v3 sets it) built from 36 ring pieces between radii 16 and 18 (each
+// spans its 10° and 1° more on either side, so neighbours overlap) and 4 paddles from radius 14
+// to 16; inside, 90 × 90 squares of half size 0.1 on a 0.21 m grid with hit events on.
+static void AddWasherDrum(Scene* scene, int drum)
+{
+	const float r0 = 14.0f, r1 = 16.0f, r2 = 18.0f;
+	const float piece = TB_PI / 18.0f, overlap = 0.1f * piece;
+	for (int i = 0; i < 36; ++i)
+	{
+		float a1 = piece * (float)i, a2 = i == 35 ? 0.0f : piece * (float)(i + 1);
+		tbVec2 u1 = V(cosf(a1), sinf(a1)), u2 = V(cosf(a2), sinf(a2));
+		tbVec2 o1 = V(cosf(a1 - overlap), sinf(a1 - overlap)), o2 = V(cosf(a2 + overlap), sinf(a2 + overlap));
+		tbVec2 ring[4] = {tbMulSV(r1, o1), tbMulSV(r2, o1), tbMulSV(r1, o2), tbMulSV(r2, o2)};
+		tbGeometry ringPiece = Scene_MakePolygonGeometry(ring, 4, 0.0f);
+		Scene_AddGeometry(scene, drum, &ringPiece, 1.0f, 0.6f);
+		if (i % 9 == 0)
+		{
+			tbVec2 paddle[4] = {tbMulSV(r0, u1), tbMulSV(r1, u1), tbMulSV(r0, u2), tbMulSV(r1, u2)};
+			tbGeometry paddlePiece = Scene_MakePolygonGeometry(paddle, 4, 0.0f);
+			Scene_AddGeometry(scene, drum, &paddlePiece, 1.0f, 0.6f);
+		}
+	}
+}
+
+static Scene* BuildWasher(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 500;
+	int drum = Scene_AddBody(scene, tb_kinematicBody, V(0.0f, 10.0f), 0.0f);
+	scene->bodies[drum].angularVelocity = 25.0f * DEG_TO_RAD;
+	scene->bodies[drum].linearVelocity = V(0.001f, -0.002f);
+	AddWasherDrum(scene, drum);
+	const int gridCount = 90;
+	const float a = 0.1f;
+	for (int i = 0; i < gridCount; ++i)
+	{
+		for (int j = 0; j < gridCount; ++j)
+		{
+			tbVec2 p = V(-1.1f * a * (float)gridCount + 2.1f * a * (float)j,
+						 -1.1f * a * (float)gridCount + 10.0f + 2.1f * a * (float)i);
+			int body = AddBoxBody(scene, tb_dynamicBody, p, 0.0f, a, a, 1.0f, 0.6f);
+			scene->bodies[body].shapes[0].enableHitEvents = true;
+		}
+	}
+	return scene;
+}
+
+// The pit of v3's junkyard and compounds benchmarks on one static body: a floor of unit cells
+// (boxes of half size 0.55 × 0.5, so neighbours overlap) centred on y = 0 from x = −halfSpan to
+// +halfSpan, and a wall of `wallCount` cells (0.5 × 0.55) at each end from y = 1 up.
+static int AddPit(Scene* scene, int halfSpan, int wallCount)
+{
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	for (int i = -halfSpan; i <= halfSpan; ++i)
+	{
+		tbGeometry cell = Scene_MakeBoxGeometry(0.55f, 0.5f, V((float)i, 0.0f), 0.0f);
+		Scene_AddGeometry(scene, ground, &cell, 1.0f, 0.6f);
+	}
+	for (int side = -1; side <= 1; side += 2)
+	{
+		for (int i = 1; i <= wallCount; ++i)
+		{
+			tbGeometry cell = Scene_MakeBoxGeometry(0.5f, 0.55f, V((float)(side * halfSpan), (float)i), 0.0f);
+			Scene_AddGeometry(scene, ground, &cell, 1.0f, 0.6f);
+		}
+	}
+	return ground;
+}
+
+// Box2D v3's junkyard: 200 columns × 40 rows of pentagons (radius 0.25, vertices at angles
+// k·π(√5 − 1), k = 0..4) dropped into a 160 m pit from y = 15, alternately 0.1 m left and right
+// of their column; a kinematic box (4 × 8 m, bottom at its origin) driven along x = 60·sin(0.2·t).
+static Scene* BuildJunkyard(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 800;
+	AddPit(scene, 80, 50);
+	const int columnCount = 200, rowCount = 40;
+	const float radius = 0.25f, phi = TB_PI * (sqrtf(5.0f) - 1.0f);
+	tbVec2 points[5];
+	for (int k = 0; k < 5; ++k)
+	{
+		points[k] = V(radius * cosf(phi * (float)k), radius * sinf(phi * (float)k));
+	}
+	tbGeometry pentagon = Scene_MakePolygonGeometry(points, 5, 0.0f);
+	float side = -0.1f;
+	for (int i = 0; i < columnCount; ++i)
+	{
+		float x = 1.5f * (2.0f * (float)i - (float)columnCount) * radius;
+		for (int j = 0; j < rowCount; ++j)
+		{
+			int body = Scene_AddBody(scene, tb_dynamicBody, V(x + side, 4.0f * radius * (float)j + 15.0f), 0.0f);
+			Scene_AddGeometry(scene, body, &pentagon, 1.0f, 0.6f);
+			side = -side;
+		}
+	}
+	int pusher = Scene_AddBody(scene, tb_kinematicBody, tb_vec2_zero, 0.0f);
+	tbGeometry blade = Scene_MakeBoxGeometry(2.0f, 4.0f, V(0.0f, 4.0f), 0.0f);
+	Scene_AddGeometry(scene, pusher, &blade, 1.0f, 0.6f);
+	scene->bodies[pusher].drive = (SceneDrive){true, V(60.0f, 0.0f), 0.2f};
+	return scene;
+}
+
+// Box2D v3's compounds: 20 columns × 150 rows of bodies made of two triangles, (−1, 0), (0.5, 1),
+// (0, 2) and its mirror image (density 1, friction 0.5), 2 m apart in x (alternately ±0.25 m off)
+// and 2.25 m in y from y = 5.575, falling into an 80 m pit 100 cells deep; a segment at y = −80
+// catches what spills out.
+static Scene* BuildCompounds(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 500;
+	int ground = AddPit(scene, 40, 100);
+	tbGeometry catcher = Scene_MakeSegmentGeometry(V(-800.0f, -80.0f), V(800.0f, -80.0f));
+	Scene_AddGeometry(scene, ground, &catcher, 1.0f, 0.6f);
+	const tbVec2 left[3] = {V(-1.0f, 0.0f), V(0.5f, 1.0f), V(0.0f, 2.0f)};
+	const tbVec2 right[3] = {V(1.0f, 0.0f), V(-0.5f, 1.0f), V(0.0f, 2.0f)};
+	tbGeometry halves[2] = {Scene_MakePolygonGeometry(left, 3, 0.0f), Scene_MakePolygonGeometry(right, 3, 0.0f)};
+	const int columnCount = 20, rowCount = 150;
+	float side = 0.25f;
+	for (int i = 0; i < columnCount; ++i)
+	{
+		float x = 2.0f * (float)i - (float)columnCount + 1.0f;
+		for (int j = 0; j < rowCount; ++j)
+		{
+			int body = Scene_AddBody(scene, tb_dynamicBody, V(x + side, 2.25f * (float)j + 0.575f + 5.0f), 0.0f);
+			Scene_AddGeometry(scene, body, halves + 0, 1.0f, 0.5f);
+			Scene_AddGeometry(scene, body, halves + 1, 1.0f, 0.5f);
+			side = -side;
+		}
+	}
+	return scene;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Table
 
@@ -605,6 +739,13 @@ static const CatalogueEntry s_entries[] = {
 	{"spinner", "Box2D v3 benchmark variant: kinematic blade at 5 rad/s (no joint) stirring 6,076 shapes in a "
 				"360-segment ring",
 	 BuildSpinner},
+	{"washer", "Box2D v3 benchmark: kinematic drum (36 ring pieces, 4 paddles) turning at 25 deg/s with 8,100 "
+			   "small squares, hit events on",
+	 BuildWasher},
+	{"junkyard", "Box2D v3 benchmark: 8,000 pentagons in a 160 m pit, pushed by a kinematic box driven to "
+				 "x = 60 sin(0.2 t)",
+	 BuildJunkyard},
+	{"compounds", "Box2D v3 benchmark: 3,000 bodies of two triangles each falling into an 80 m pit", BuildCompounds},
 };
 
 #define ENTRY_COUNT ((int)(sizeof(s_entries) / sizeof(s_entries[0])))

@@ -401,7 +401,7 @@ static bool StepAll(Run* run)
 	for (int step = 1; step <= run->steps; ++step)
 	{
 		uint64_t ticks = tbGetTicks();
-		if (tbWorld_Step(run->world.worldId, run->scene->timeStep, run->subSteps) == false)
+		if (SceneWorld_Step(&run->world, run->scene, run->subSteps) == false)
 		{
 			Fail("step %d failed", step);
 			return false;

@@ -1,6 +1,7 @@
 // Scene model: construction, conversion to a world, and whole-world measures for summaries.
 #include "scene.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -167,6 +168,28 @@ int Scene_ShapeCount(const Scene* scene)
 	return count;
 }
 
+bool Scene_DriveTarget(const Scene* scene, int bodyIndex, int step, tbTransform* target)
+{
+	const SceneBody* body = scene->bodies + bodyIndex;
+	if (body->drive.enabled == false)
+	{
+		return false;
+	}
+	float phase = sinf(body->drive.angularFrequency * scene->timeStep * (float)step);
+	target->p = tbMulAdd(body->position, phase, body->drive.amplitude);
+	target->q = tbMakeRot(body->angle);
+	return true;
+}
+
+void Scene_TargetVelocity(tbTransform current, tbVec2 localCenter, tbTransform target, float timeStep,
+						  tbVec2* linearVelocity, float* angularVelocity)
+{
+	tbVec2 center = tbTransformPoint(current, localCenter);
+	tbVec2 targetCenter = tbTransformPoint(target, localCenter);
+	*linearVelocity = tbMulSV(1.0f / timeStep, tbSub(targetCenter, center));
+	*angularVelocity = tbRelativeAngle(current.q, target.q) / timeStep;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Building a world
 
@@ -240,6 +263,7 @@ static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const 
 		shapeDef.friction = shape->friction;
 		shapeDef.restitution = shape->restitution;
 		shapeDef.isSensor = shape->isSensor;
+		shapeDef.enableHitEvents = shape->enableHitEvents;
 		if (TB_IS_NULL(tbCreateShape(bodyId, &shapeDef, &shape->geometry)) && *refusedShape < 0)
 		{
 			*refusedShape = i;
@@ -287,7 +311,8 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 	int count = scene->bodyCount;
 	world.bodyIds = calloc((size_t)(count > 0 ? count : 1), sizeof(tbBodyId));
 	world.names = calloc((size_t)(count > 0 ? count : 1), sizeof(*world.names));
-	if (world.bodyIds == NULL || world.names == NULL)
+	world.drivenBodies = calloc((size_t)(count > 0 ? count : 1), sizeof(int));
+	if (world.bodyIds == NULL || world.names == NULL || world.drivenBodies == NULL)
 	{
 		SceneWorld_Destroy(&world);
 		return world;
@@ -299,6 +324,10 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 		world.names[i][SCENE_NAME_SIZE - 1] = '\0';
 		int refusedShape = -1; // scene files are checked when loaded (Scene_FindRefusedItem)
 		world.bodyIds[i] = CreateSceneBody(world.worldId, scene->bodies + i, world.names[i], &refusedShape);
+		if (scene->bodies[i].drive.enabled)
+		{
+			world.drivenBodies[world.drivenCount++] = i;
+		}
 	}
 	return world;
 }
@@ -309,6 +338,21 @@ SceneWorld Scene_BuildWorld(const Scene* scene, const SceneOverrides* overrides)
 	return Scene_BuildWorldWithDef(scene, &def);
 }
 
+bool SceneWorld_Step(SceneWorld* world, const Scene* scene, int subSteps)
+{
+	for (int i = 0; i < world->drivenCount; ++i)
+	{
+		int index = world->drivenBodies[i];
+		tbTransform target;
+		if (Scene_DriveTarget(scene, index, world->stepIndex, &target))
+		{
+			tbBody_SetTargetTransform(world->bodyIds[index], target, scene->timeStep);
+		}
+	}
+	world->stepIndex += 1;
+	return tbWorld_Step(world->worldId, scene->timeStep, subSteps);
+}
+
 void SceneWorld_Destroy(SceneWorld* world)
 {
 	if (TB_IS_NON_NULL(world->worldId))
@@ -317,6 +361,7 @@ void SceneWorld_Destroy(SceneWorld* world)
 	}
 	free(world->bodyIds);
 	free(world->names);
+	free(world->drivenBodies);
 	memset(world, 0, sizeof(*world));
 }
 

@@ -35,7 +35,19 @@ typedef struct SceneShape
 	float friction;	   ///< default 0.6
 	float restitution; ///< default 0
 	bool isSensor;
+	bool enableHitEvents; ///< default false (tbShapeDef::enableHitEvents)
 } SceneShape;
+
+/// A scripted path for a kinematic body (Box2D v3's junkyard pusher): before step k (k = 0, 1, …)
+/// the body's target pose is its initial position + amplitude·sin(angularFrequency·k·Δt) at its
+/// initial angle, and the engine sets the velocity that reaches the target by the end of that
+/// step (tbBody_SetTargetTransform). The body lags its path by one step, as in v3's benchmark.
+typedef struct SceneDrive
+{
+	bool enabled;			///< default false: the body moves only by its own velocity
+	tbVec2 amplitude;		///< m
+	float angularFrequency; ///< rad/s
+} SceneDrive;
 
 /// One body and its shapes (geometry in the body frame).
 typedef struct SceneBody
@@ -51,6 +63,7 @@ typedef struct SceneBody
 	float gravityScale; ///< default 1
 	bool bullet;
 	bool isAwake; ///< default true
+	SceneDrive drive;
 	SceneShape* shapes;
 	int shapeCount;
 	int shapeCapacity;
@@ -94,6 +107,16 @@ tbGeometry Scene_MakePolygonGeometry(const tbVec2* points, int count, float radi
 /// Total shape count over every body.
 int Scene_ShapeCount(const Scene* scene);
 
+/// Target pose of driven body bodyIndex before step `step` (see SceneDrive); false when the body
+/// is not driven.
+bool Scene_DriveTarget(const Scene* scene, int bodyIndex, int step, tbTransform* target);
+
+/// Velocities that carry a body from its current pose to `target` in one step of timeStep, for
+/// engines without a target-transform call: v = (c_t − c)/Δt for the centre of mass c (localCenter
+/// in the body frame), ω = shortest signed angle from q to q_t over Δt (tbBody_SetTargetTransform's rule).
+void Scene_TargetVelocity(tbTransform current, tbVec2 localCenter, tbTransform target, float timeStep,
+						  tbVec2* linearVelocity, float* angularVelocity);
+
 /// Overrides applied on top of the scene when a world is built. Zero-initialise, then set.
 typedef struct SceneOverrides
 {
@@ -113,6 +136,9 @@ typedef struct SceneWorld
 	tbBodyId* bodyIds; ///< bodyCount entries, index = scene body index
 	int bodyCount;
 	char (*names)[SCENE_NAME_SIZE]; ///< body names (the library does not copy them)
+	int* drivenBodies;				///< scene indices of the driven bodies (SceneDrive)
+	int drivenCount;
+	int stepIndex; ///< steps taken by SceneWorld_Step
 } SceneWorld;
 
 /// Build a world from the scene. overrides may be NULL. worldId is null on failure.
@@ -124,6 +150,10 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def);
 /// Build the scene into a scratch world; true when the library refuses a body or shape, with its
 /// path ("bodies[2].shapes[0]") in item. The library's error hook has then received the reason.
 bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize);
+
+/// One step of the scene: the driven bodies get their target for this step, then the world
+/// steps by the scene's time step with subSteps sub-steps. Returns tbWorld_Step's answer.
+bool SceneWorld_Step(SceneWorld* world, const Scene* scene, int subSteps);
 
 /// Destroy the world and free the mapping.
 void SceneWorld_Destroy(SceneWorld* world);

@@ -525,7 +525,8 @@ static bool ReadGeometry(Parser* parser, const cJSON* item, const char* path, tb
 static bool ReadShape(Parser* parser, const cJSON* item, const char* path, SceneShape* shape)
 {
 	static const char* const keys[] = {"box",	  "circle",	  "polygon",	 "capsule", "segment",
-									   "density", "friction", "restitution", "sensor",	NULL};
+									   "density", "friction", "restitution", "sensor",	"hit_events",
+									   NULL};
 	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
 	{
 		return false;
@@ -538,7 +539,8 @@ static bool ReadShape(Parser* parser, const cJSON* item, const char* path, Scene
 		   CheckNonNegative(parser, path, "friction", shape->friction) &&
 		   ReadFloat(parser, item, path, "restitution", &shape->restitution, false) &&
 		   CheckNonNegative(parser, path, "restitution", shape->restitution) &&
-		   ReadBool(parser, item, path, "sensor", &shape->isSensor);
+		   ReadBool(parser, item, path, "sensor", &shape->isSensor) &&
+		   ReadBool(parser, item, path, "hit_events", &shape->enableHitEvents);
 }
 
 static bool ReadShapes(Parser* parser, const cJSON* item, const char* path, Scene* scene, int bodyIndex)
@@ -606,6 +608,25 @@ static bool ReadName(Parser* parser, const cJSON* item, const char* path, char* 
 	return true;
 }
 
+// A body's scripted path: {"amplitude": [x, y], "angular_frequency": w}, both required.
+static bool ReadDrive(Parser* parser, const cJSON* item, const char* path, SceneDrive* drive)
+{
+	static const char* const keys[] = {"amplitude", "angular_frequency", NULL};
+	if (item == NULL)
+	{
+		return true;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, "drive");
+	if (RequireObject(parser, item, child) == false || CheckKeys(parser, item, child, keys) == false)
+	{
+		return false;
+	}
+	drive->enabled = true;
+	return ReadVec2(parser, item, child, "amplitude", &drive->amplitude, true) &&
+		   ReadFloat(parser, item, child, "angular_frequency", &drive->angularFrequency, true);
+}
+
 static bool ReadBodyFields(Parser* parser, const cJSON* item, const char* path, SceneBody* body)
 {
 	return ReadBodyType(parser, item, path, &body->type) && ReadName(parser, item, path, body->name) &&
@@ -619,15 +640,16 @@ static bool ReadBodyFields(Parser* parser, const cJSON* item, const char* path, 
 		   CheckNonNegative(parser, path, "angular_damping", body->angularDamping) &&
 		   ReadFloat(parser, item, path, "gravity_scale", &body->gravityScale, false) &&
 		   ReadBool(parser, item, path, "bullet", &body->bullet) &&
-		   ReadBool(parser, item, path, "awake", &body->isAwake);
+		   ReadBool(parser, item, path, "awake", &body->isAwake) &&
+		   ReadDrive(parser, Find(item, "drive"), path, &body->drive);
 }
 
 static bool ReadBody(Parser* parser, const cJSON* item, const char* path, Scene* scene)
 {
 	static const char* const keys[] = {"type",			 "name",		   "position",		"angle",
 									   "linear_velocity", "angular_velocity", "linear_damping", "angular_damping",
-									   "gravity_scale",	 "bullet",		   "awake",			"shapes",
-									   NULL};
+									   "gravity_scale",	 "bullet",		   "awake",			"drive",
+									   "shapes",		 NULL};
 	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
 	{
 		return false;
@@ -1006,6 +1028,10 @@ static void AppendShape(TextBuffer* buffer, const SceneShape* shape)
 	{
 		Append(buffer, ", \"sensor\": true");
 	}
+	if (shape->enableHitEvents)
+	{
+		Append(buffer, ", \"hit_events\": true");
+	}
 	Append(buffer, "}");
 }
 
@@ -1040,6 +1066,12 @@ static void AppendBodyExtras(TextBuffer* buffer, const SceneBody* body)
 	if (body->isAwake == false)
 	{
 		Append(buffer, ", \"awake\": false");
+	}
+	if (body->drive.enabled)
+	{
+		Append(buffer, ", \"drive\": {\"amplitude\": ");
+		AppendVec2(buffer, body->drive.amplitude);
+		Append(buffer, ", \"angular_frequency\": %.9g}", (double)body->drive.angularFrequency);
 	}
 }
 

@@ -7,7 +7,8 @@
 #   CHARTS_ONLY=1 scripts/bench.sh         redraw the charts from the committed CSVs
 #
 # Environment: BUILD_DIR (default /tmp/tumble-bench-build), MACHINE (default from lscpu),
-# BENCH_STEPS (default: each scene's own), BENCH_REPEAT (default 3).
+# BENCH_STEPS (default: each scene's own), BENCH_REPEAT (default 3), TUMBLE_BOX2D3_DIR (install
+# prefix of Box2D v3) or TUMBLE_BOX2D3_SOURCE_DIR (its source tree) for the Box2D v3 peer.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
@@ -23,19 +24,23 @@ CHARTS="$ROOT/bench/charts"
 STEPS_ARGS=()
 [[ -n "${BENCH_STEPS:-}" ]] && STEPS_ARGS=(--steps "$BENCH_STEPS")
 REPEAT="${BENCH_REPEAT:-3}"
+PEER_ARGS=()
+[[ -n "${TUMBLE_BOX2D3_DIR:-}" ]] && PEER_ARGS+=(-DTUMBLE_BOX2D3_DIR="$TUMBLE_BOX2D3_DIR")
+[[ -n "${TUMBLE_BOX2D3_SOURCE_DIR:-}" ]] && PEER_ARGS+=(-DTUMBLE_BOX2D3_SOURCE_DIR="$TUMBLE_BOX2D3_SOURCE_DIR")
 mkdir -p "$RESULTS" "$DOCS"
 
 if [[ -z "${CHARTS_ONLY:-}" ]]; then
 	cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DTUMBLE_SANITIZE=OFF \
-		-DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_TOOLS=OFF -DTUMBLE_BUILD_SAMPLES=OFF -DTUMBLE_BUILD_BENCH=ON >/dev/null
+		-DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_TOOLS=OFF -DTUMBLE_BUILD_SAMPLES=OFF -DTUMBLE_BUILD_BENCH=ON \
+		"${PEER_ARGS[@]}" >/dev/null
 	cmake --build "$BUILD_DIR" -j "$(nproc)" --target tumble-bench tumble-bench-broadphase >/dev/null
 	BENCH="$BUILD_DIR/bench/tumble-bench"
 
 	lscpu | grep -E '^(Model name|CPU\(s\)|Thread|Core|L2|L3)' >"$RESULTS/machine.txt"
 	echo "date: $(date -u +%Y-%m-%dT%H:%MZ)  commit: $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo none)" >>"$RESULTS/machine.txt"
 
-	echo "== scenes (Tumble, Box2D 2.4.1, Chipmunk 7 in one process)"
-	"$BENCH" --peers --repeat "$REPEAT" "${STEPS_ARGS[@]}" --csv "$RESULTS/scenes.csv" | grep -v '^Initializing cpSpace\|^Compile with' \
+	echo "== scenes (Tumble, Box2D 2.4.1, Box2D v3, Chipmunk 7 in one process)"
+	"$BENCH" --peers --interleave --repeat "$REPEAT" "${STEPS_ARGS[@]}" --csv "$RESULTS/scenes.csv" | grep -v '^Initializing cpSpace\|^Compile with' \
 		| tee "$RESULTS/scenes.txt"
 	echo "== sleeping bodies"
 	"$BENCH" sleep --repeat "$REPEAT" --csv "$RESULTS/sleep.csv"
@@ -50,12 +55,13 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 	"$BUILD_DIR/bench/tumble-bench-broadphase" | awk '/^method,bodies,sizes,ms_per_step/{on=1} on && NF' >"$RESULTS/broadphase.csv"
 fi
 
-# scenes.csv (long) -> scenes_wide.csv: scene,tumble,box2d,chipmunk (median ms per step)
-awk -F, 'NR > 1 { if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } ms[$1, $2] = $5 }
-	END { print "scene,tumble,box2d,chipmunk"
+# scenes.csv (long) -> scenes_wide.csv: scene,tumble,box2d,box2d3,chipmunk (median ms per step)
+awk -F, 'function or_nan(v) { return v == "" ? "NaN" : v }
+	NR > 1 { if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } ms[$1, $2] = $5 }
+	END { print "scene,tumble,box2d,box2d3,chipmunk"
 		for (i = 1; i <= n; ++i) { s = order[i]
-			printf "%s,%s,%s,%s\n", s, ms[s, "tumble"], (ms[s, "box2d-2.4.1"] == "" ? "NaN" : ms[s, "box2d-2.4.1"]),
-				(ms[s, "chipmunk-7"] == "" ? "NaN" : ms[s, "chipmunk-7"]) } }' \
+			printf "%s,%s,%s,%s,%s\n", s, ms[s, "tumble"], or_nan(ms[s, "box2d-2.4.1"]), or_nan(ms[s, "box2d-3"]),
+				or_nan(ms[s, "chipmunk-7"]) } }' \
 	"$RESULTS/scenes.csv" >"$RESULTS/scenes_wide.csv"
 
 plot() { # plot SCRIPT OUTPUT VAR=FILE...

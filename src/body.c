@@ -581,6 +581,62 @@ bool tbBody_SetAngularVelocity(tbBodyId bodyId, float w)
 	return true;
 }
 
+/// The velocity that carries a body to `target` in one step of `timeStep` (for a kinematic body
+/// driven along a path, as Box2D v3's b2Body_SetTargetTransform). Linear velocity is that of the
+/// centre of mass, so it aims the centre: v = (c_t − c)/Δt with c_t = p_t + R(q_t)·localCenter.
+/// Angular: ω = θ/Δt, θ = atan2(q × q_t, q · q_t) ∈ [−π, π], the shortest signed angle from q to q_t.
+/// The solver moves the centre by Σ h·v = Δt·v (exact up to rounding), but turns by normalised
+/// first-order steps (tbIntegrateRotation): n sub-steps turn by n·atan(θ/n), short of θ by at most
+/// |θ|³/(3n²) (2.6e-6 rad for 0.05 rad a step with n = 4). The step's clamps still apply
+/// (|ω|·Δt ≤ TB_MAX_ROTATION, |v| ≤ maximumLinearSpeed): a farther target is not reached in one step.
+static bool tbTargetVelocity(const tbBody* body, tbTransform target, float timeStep, tbVec2* v, float* w)
+{
+	tbVec2 targetCenter = tbTransformPoint(target, body->localCenter);
+	float invTimeStep = 1.0f / timeStep;
+	*v = tbMulSV(invTimeStep, tbSub(targetCenter, body->center));
+	*w = invTimeStep * tbRelativeAngle(body->transform.q, target.q);
+	return tbIsValidVec2(*v) && tbIsValidFloat(*w);
+}
+
+bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeStep)
+{
+	const char* f = "tbBody_SetTargetTransform";
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
+	if (body == NULL || tbCheckVec2(f, "target.p", target.p) == false || tbCheckPositive(f, "timeStep", timeStep) == false)
+	{
+		return false;
+	}
+	if (tbIsValidRot(target.q) == false)
+	{
+		tbReportError(f, "target.q is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", (double)target.q.c,
+					  (double)target.q.s);
+		return false;
+	}
+	if (body->type == tb_staticBody)
+	{
+		tbReportError(f, "the body is static and never moves; make it kinematic (tbBody_SetType) to drive it");
+		return false;
+	}
+	target.q = tbNormalizeRot(target.q);
+	tbVec2 v;
+	float w;
+	if (tbTargetVelocity(body, target, timeStep, &v, &w) == false)
+	{
+		tbReportError(f, "timeStep %g is too short for the distance to the target (the velocity overflows); pass the "
+						 "step's length", (double)timeStep);
+		return false;
+	}
+	w = body->fixedRotation ? 0.0f : w;
+	if (tbDot(v, v) > 0.0f || w != 0.0f)
+	{
+		tbWakeBody(world, body);
+	}
+	body->linearVelocity = v;
+	body->angularVelocity = w;
+	return true;
+}
+
 /// Common checks for force and impulse calls: a dynamic body, finite input, wake handling.
 static tbBody* tbGetDynamicForInput(tbBodyId bodyId, const char* f, bool wake, tbWorld** world)
 {

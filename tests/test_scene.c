@@ -63,6 +63,9 @@ static void ExpectSameBody(const SceneBody* a, const SceneBody* b, const char* w
 	cr_assert(Near(a->linearDamping, b->linearDamping) && Near(a->angularDamping, b->angularDamping), "%s", where);
 	cr_assert(Near(a->gravityScale, b->gravityScale), "%s: gravity scale", where);
 	cr_assert(a->bullet == b->bullet && a->isAwake == b->isAwake, "%s: flags", where);
+	cr_assert(a->drive.enabled == b->drive.enabled && NearVec(a->drive.amplitude, b->drive.amplitude) &&
+				  Near(a->drive.angularFrequency, b->drive.angularFrequency),
+			  "%s: drive", where);
 	cr_assert_eq(a->shapeCount, b->shapeCount, "%s: shape count", where);
 	for (int i = 0; i < a->shapeCount; ++i)
 	{
@@ -71,6 +74,7 @@ static void ExpectSameBody(const SceneBody* a, const SceneBody* b, const char* w
 		ExpectSameGeometry(&sa->geometry, &sb->geometry, where);
 		cr_assert(Near(sa->density, sb->density) && Near(sa->friction, sb->friction), "%s: material", where);
 		cr_assert(Near(sa->restitution, sb->restitution) && sa->isSensor == sb->isSensor, "%s: material", where);
+		cr_assert_eq(sa->enableHitEvents, sb->enableHitEvents, "%s: hit events", where);
 	}
 }
 
@@ -107,7 +111,8 @@ Test(scene, catalogue_has_the_required_scenes)
 	static const char* const required[] = {
 		"pyramid",		 "vertical_stack", "card_house",	"dominoes", "newtons_cradle", "ramp",
 		"mass_ratio",	 "bullets_wall",   "spinning_box",	"rain",		"confined",		  "large_pyramid",
-		"many_pyramids", "tumbler",		   "smash",			"spinner"};
+		"many_pyramids", "tumbler",		   "smash",			"spinner",	"washer",	"junkyard",
+		"compounds"};
 	for (size_t i = 0; i < sizeof(required) / sizeof(required[0]); ++i)
 	{
 		cr_assert_geq(Catalogue_Find(required[i]), 0, "missing %s", required[i]);
@@ -125,7 +130,8 @@ Test(scene, catalogue_counts_follow_the_set_ups)
 		int steps;
 	} expected[] = {{"pyramid", 210, 300},		 {"card_house", 40, 600}, {"large_pyramid", 5050, 500},
 					{"many_pyramids", 22000, 200}, {"tumbler", 2025, 750},	{"smash", 9601, 300},
-					{"confined", 625, 600},		   {"spinner", 6076, 1000}, {"newtons_cradle", 6, 180}};
+					{"confined", 625, 600},		   {"spinner", 6076, 1000}, {"newtons_cradle", 6, 180},
+					{"washer", 8100, 500},		   {"junkyard", 8000, 800}, {"compounds", 3000, 500}};
 	for (size_t i = 0; i < sizeof(expected) / sizeof(expected[0]); ++i)
 	{
 		Scene* scene = Catalogue_Build(expected[i].name);
@@ -191,7 +197,8 @@ static void ExpectSameWorld(const char* name)
 
 Test(scene, reloaded_scenes_build_the_same_world)
 {
-	const char* names[] = {"pyramid", "rain", "spinner", "newtons_cradle", "ramp", "confined", "bullets_wall", "dominoes"};
+	const char* names[] = {"pyramid", "rain",		  "spinner",  "newtons_cradle", "ramp",
+						   "confined", "bullets_wall", "dominoes", "junkyard",		 "compounds"};
 	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); ++i)
 	{
 		ExpectSameWorld(names[i]);
@@ -309,6 +316,11 @@ static const BadFile s_badFiles[] = {
 	{"{\"bodies\": [{\"shapes\": [{\"polygon\": {\"vertices\": [[0, 0], [2, 0], [2, 2], [0, 2], [1, 1]]}}]}]}",
 	 "bodies[0].shapes[0].polygon.vertices: not convex: the hull keeps 4 of 5 points"},
 	{"{\"bodies\": [{\"bullet\": 1}]}", "bodies[0].bullet: must be true or false"},
+	{"{\"bodies\": [{\"drive\": {\"amplitude\": [1, 0]}}]}", "bodies[0].drive.angular_frequency: missing (required)"},
+	{"{\"bodies\": [{\"drive\": {\"amplitude\": [1, 0], \"angular_frequency\": 1, \"phase\": 0}}]}",
+	 "bodies[0].drive.phase: unknown key"},
+	{"{\"bodies\": [{\"shapes\": [{\"circle\": {\"radius\": 1}, \"hit_events\": \"yes\"}]}]}",
+	 "bodies[0].shapes[0].hit_events: must be true or false"},
 	{"{\"gravity\": [0, -10], \"gravity\": [0, 0]}", "gravity: duplicate key"},
 	{"[1, 2]", "scene: must be a JSON object"},
 	{"{\"gravity\": [0, -10],\n \"bodies\": [}", "line 2, column 13: invalid JSON"},
@@ -389,6 +401,36 @@ Test(scene, measures_of_a_resting_stack)
 	}
 	float penetration = SceneWorld_LargestPenetration(&world);
 	cr_assert(penetration >= 0.0f && penetration < 0.02f, "penetration %g", (double)penetration);
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+}
+
+// A driven body (SceneDrive) read from a file: before step k its target is
+// position + amplitude·sin(ω·k·Δt), which tbBody_SetTargetTransform reaches by the end of step k,
+// so after k steps the body is at position + amplitude·sin(ω·(k − 1)·Δt). Tolerance: the target
+// velocity and four sub-step updates each round by FLT_EPSILON relative to the 3 m span of the path.
+Test(scene, driven_body_follows_its_path_one_step_behind)
+{
+	const char* text = "{\"gravity\": [0, 0], \"bodies\": [{\"type\": \"kinematic\", \"position\": [1, 2],"
+					   " \"drive\": {\"amplitude\": [2, 0.5], \"angular_frequency\": 3},"
+					   " \"shapes\": [{\"circle\": {\"radius\": 0.5}, \"hit_events\": true}]}]}";
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(scene, "%s", error);
+	cr_assert(scene->bodies[0].drive.enabled && scene->bodies[0].shapes[0].enableHitEvents);
+	SceneWorld world = Scene_BuildWorld(scene, NULL);
+	cr_assert_eq(world.drivenCount, 1);
+	for (int k = 1; k <= 90; ++k)
+	{
+		cr_assert(SceneWorld_Step(&world, scene, scene->subSteps));
+		float phase = sinf(3.0f * scene->timeStep * (float)(k - 1));
+		tbVec2 p = tbBody_GetPosition(world.bodyIds[0]);
+		float tol = 11.0f * FLT_EPSILON * 3.0f;
+		cr_assert_float_eq(p.x, 1.0f + 2.0f * phase, tol, "step %d: x %.9g", k, (double)p.x);
+		cr_assert_float_eq(p.y, 2.0f + 0.5f * phase, tol, "step %d: y %.9g", k, (double)p.y);
+	}
+	tbTransform target;
+	cr_assert(Scene_DriveTarget(scene, 0, 0, &target) && target.p.x == 1.0f && target.p.y == 2.0f);
 	SceneWorld_Destroy(&world);
 	Scene_Destroy(scene);
 }

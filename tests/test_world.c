@@ -483,6 +483,201 @@ Test(handles, worlds_side_by_side)
 	tbDestroyWorld(b);
 }
 
+// --- target transform ----------------------------------------------------------------------------
+
+#define TARGET_DT (1.0f / 60.0f)
+#define TARGET_SUB_STEPS 4
+
+/// A body of one 0.5 × 0.25 m box whose centre sits at `center` in the body frame, in a world
+/// without gravity (so only the target velocity moves it).
+static tbBodyId MakeDrivenBox(tbWorldId world, tbBodyType type, tbVec2 position, float angle, tbVec2 center)
+{
+	tbBodyDef def = tbDefaultBodyDef();
+	def.type = type;
+	def.position = position;
+	def.rotation = tbMakeRot(angle);
+	tbBodyId body = tbCreateBody(world, &def);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon box = tbMakeOffsetBox(0.5f, 0.25f, center, tb_rot_identity);
+	tbCreatePolygonShape(body, &shapeDef, &box);
+	return body;
+}
+
+static tbWorldId MakeWeightlessWorld(void)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, 0.0f);
+	return tbCreateWorld(&def);
+}
+
+/// Closed form of the rotation integrator: n sub-steps of ω·h each turn by atan(ω·h)
+/// (tbIntegrateRotation normalises q + ω·h·q⊥), so one step turns by n·atan(θ/n).
+static float IntegratedTurn(float turn)
+{
+	return (float)TARGET_SUB_STEPS * atanf(turn / (float)TARGET_SUB_STEPS);
+}
+
+/// Float tolerance for a reached position: the velocity (two roundings), n sub-step updates
+/// Δp += h·v (two each) and the final c0 + Δp (one) each round by at most FLT_EPSILON relative to
+/// the largest magnitude involved, |c| + |Δc|.
+static float PositionTolerance(tbVec2 from, tbVec2 to)
+{
+	float scale = tbLength(from) + tbLength(tbSub(to, from));
+	return (float)(3 + 2 * TARGET_SUB_STEPS) * FLT_EPSILON * scale;
+}
+
+/// Angle tolerance: each sub-step's normalisation and product of rotations rounds the cosine
+/// and sine by a few FLT_EPSILON; with the relative angle and atan2 at the ends, 4·(n + 2)·FLT_EPSILON.
+#define ANGLE_TOLERANCE (4.0f * (float)(TARGET_SUB_STEPS + 2) * FLT_EPSILON)
+
+static float AngleBetween(tbRot a, tbRot b)
+{
+	return tbRelativeAngle(a, b);
+}
+
+Test(target_transform, kinematic_body_reaches_target_in_one_step)
+{
+	tbWorldId world = MakeWeightlessWorld();
+	tbBodyId body = MakeDrivenBox(world, tb_kinematicBody, tbMakeVec2(1.0f, 2.0f), 0.3f, tb_vec2_zero);
+	tbTransform target = {tbMakeVec2(1.5f, 1.8f), tbMakeRot(0.35f)};
+	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT));
+	// v = Δp/Δt, ω = Δθ/Δt (the body's centre is its origin)
+	float turn = AngleBetween(tbMakeRot(0.3f), target.q);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(body).x, 0.5f / TARGET_DT, 1e-3f);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(body).y, -0.2f / TARGET_DT, 1e-3f);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), turn / TARGET_DT, 1e-4f);
+	cr_assert(tbWorld_Step(world, TARGET_DT, TARGET_SUB_STEPS));
+	tbVec2 p = tbBody_GetPosition(body);
+	float tol = PositionTolerance(tbMakeVec2(1.0f, 2.0f), target.p);
+	cr_assert_float_eq(p.x, target.p.x, tol, "x %.9g vs %.9g", (double)p.x, (double)target.p.x);
+	cr_assert_float_eq(p.y, target.p.y, tol, "y %.9g vs %.9g", (double)p.y, (double)target.p.y);
+	// the angle is the integrator's closed form, within |θ|³/(3n²) of the target
+	float reached = AngleBetween(tbMakeRot(0.3f), tbBody_GetRotation(body));
+	cr_assert_float_eq(reached, IntegratedTurn(turn), ANGLE_TOLERANCE, "turned %.9g, closed form %.9g", (double)reached,
+					   (double)IntegratedTurn(turn));
+	float gapBound = turn * turn * turn / (3.0f * TARGET_SUB_STEPS * TARGET_SUB_STEPS);
+	cr_assert_leq(fabsf(AngleBetween(tbBody_GetRotation(body), target.q)), gapBound + ANGLE_TOLERANCE);
+	tbDestroyWorld(world);
+}
+
+Test(target_transform, turns_the_short_way_across_pi)
+{
+	// From 3 rad to −3 rad: the short way is +(2π − 6) ≈ +0.283 rad, not −6 rad.
+	tbWorldId world = MakeWeightlessWorld();
+	tbBodyId body = MakeDrivenBox(world, tb_kinematicBody, tbMakeVec2(0.0f, 0.0f), 3.0f, tb_vec2_zero);
+	tbTransform target = {tbMakeVec2(0.0f, 0.0f), tbMakeRot(-3.0f)};
+	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT));
+	float turn = 2.0f * TB_PI - 6.0f;
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body) * TARGET_DT, turn, 1e-5f);
+	cr_assert(tbWorld_Step(world, TARGET_DT, TARGET_SUB_STEPS));
+	float reached = AngleBetween(tbMakeRot(3.0f), tbBody_GetRotation(body));
+	cr_assert_float_eq(reached, IntegratedTurn(turn), ANGLE_TOLERANCE + 1e-6f, "turned %.9g, closed form %.9g",
+					   (double)reached, (double)IntegratedTurn(turn));
+	tbVec2 p = tbBody_GetPosition(body);
+	cr_assert(p.x == 0.0f && p.y == 0.0f, "no translation asked, none made");
+	tbDestroyWorld(world);
+}
+
+Test(target_transform, offset_centre_of_mass_aims_the_centre)
+{
+	// A dynamic body whose centre of mass is 1 m from its origin: the centre reaches the target's
+	// centre p_t + R(q_t)·c_local; the origin follows from the turn actually made.
+	tbWorldId world = MakeWeightlessWorld();
+	tbVec2 local = tbMakeVec2(1.0f, 0.0f);
+	tbBodyId body = MakeDrivenBox(world, tb_dynamicBody, tbMakeVec2(-2.0f, 1.0f), 0.0f, local);
+	tbTransform target = {tbMakeVec2(-1.0f, 1.5f), tbMakeRot(0.04f)};
+	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT));
+	cr_assert(tbWorld_Step(world, TARGET_DT, TARGET_SUB_STEPS));
+	tbVec2 centre = tbBody_GetWorldCenterOfMass(body);
+	tbVec2 targetCentre = tbTransformPoint(target, local);
+	float tol = PositionTolerance(tbMakeVec2(-1.0f, 1.0f), targetCentre);
+	cr_assert_float_eq(centre.x, targetCentre.x, tol);
+	cr_assert_float_eq(centre.y, targetCentre.y, tol);
+	tbRot q = tbMakeRot(IntegratedTurn(0.04f));
+	tbVec2 origin = tbSub(targetCentre, tbRotateVector(q, local));
+	tbVec2 p = tbBody_GetPosition(body);
+	cr_assert_float_eq(p.x, origin.x, tol + ANGLE_TOLERANCE);
+	cr_assert_float_eq(p.y, origin.y, tol + ANGLE_TOLERANCE);
+	tbDestroyWorld(world);
+}
+
+Test(target_transform, follows_a_path_step_after_step)
+{
+	// The junkyard pusher's path x(t) = 4·sin(2t): set before every step, reached after it.
+	tbWorldId world = MakeWeightlessWorld();
+	tbBodyId body = MakeDrivenBox(world, tb_kinematicBody, tbMakeVec2(0.0f, 0.0f), 0.0f, tb_vec2_zero);
+	for (int k = 1; k <= 120; ++k)
+	{
+		tbTransform target = {tbMakeVec2(4.0f * sinf(2.0f * TARGET_DT * (float)k), 0.0f), tb_rot_identity};
+		tbVec2 before = tbBody_GetPosition(body);
+		cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT));
+		cr_assert(tbWorld_Step(world, TARGET_DT, TARGET_SUB_STEPS));
+		tbVec2 p = tbBody_GetPosition(body);
+		cr_assert_float_eq(p.x, target.p.x, PositionTolerance(before, target.p), "step %d: %.9g vs %.9g", k, (double)p.x,
+						   (double)target.p.x);
+		cr_assert(p.y == 0.0f && tbBody_GetRotation(body).s == 0.0f);
+	}
+	tbDestroyWorld(world);
+}
+
+Test(target_transform, wakes_a_sleeping_body_only_to_move_it)
+{
+	tbWorldId world = MakeWeightlessWorld();
+	tbBodyId body = MakeDrivenBox(world, tb_kinematicBody, tbMakeVec2(0.0f, 0.0f), 0.0f, tb_vec2_zero);
+	tbBody_SetAwake(body, false);
+	cr_assert_not(tbBody_IsAwake(body));
+	tbTransform here = {tbMakeVec2(0.0f, 0.0f), tb_rot_identity};
+	cr_assert(tbBody_SetTargetTransform(body, here, TARGET_DT));
+	cr_assert_not(tbBody_IsAwake(body), "the target is where the body is: nothing to move");
+	tbTransform there = {tbMakeVec2(0.1f, 0.0f), tb_rot_identity};
+	cr_assert(tbBody_SetTargetTransform(body, there, TARGET_DT));
+	cr_assert(tbBody_IsAwake(body));
+	tbDestroyWorld(world);
+}
+
+Test(bad_input, target_transform_rejected, .init = SetupErrors, .fini = TeardownErrors)
+{
+	Fixture f = MakeFixture();
+	int n = s_errors;
+	tbTransform good = {tbMakeVec2(1.0f, 2.0f), tb_rot_identity};
+	tbTransform nanPosition = {tbMakeVec2(NAN, 2.0f), tb_rot_identity};
+	tbTransform infPosition = {tbMakeVec2(1.0f, INFINITY), tb_rot_identity};
+	tbTransform longRotation = {tbMakeVec2(1.0f, 2.0f), {2.0f, 0.0f}};
+	tbTransform nanRotation = {tbMakeVec2(1.0f, 2.0f), {NAN, 0.0f}};
+	cr_assert_not(tbBody_SetTargetTransform(f.body, nanPosition, TARGET_DT));
+	ExpectError(n, "tbBody_SetTargetTransform", "target.p");
+	cr_assert_not(tbBody_SetTargetTransform(f.body, infPosition, TARGET_DT));
+	ExpectError(n + 1, "tbBody_SetTargetTransform", "target.p");
+	cr_assert_not(tbBody_SetTargetTransform(f.body, longRotation, TARGET_DT));
+	ExpectError(n + 2, "tbBody_SetTargetTransform", "target.q");
+	cr_assert_not(tbBody_SetTargetTransform(f.body, nanRotation, TARGET_DT));
+	ExpectError(n + 3, "tbBody_SetTargetTransform", "target.q");
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, 0.0f));
+	ExpectError(n + 4, "tbBody_SetTargetTransform", "timeStep");
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, -TARGET_DT));
+	ExpectError(n + 5, "tbBody_SetTargetTransform", "timeStep");
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, NAN));
+	ExpectError(n + 6, "tbBody_SetTargetTransform", "timeStep");
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, INFINITY));
+	ExpectError(n + 7, "tbBody_SetTargetTransform", "timeStep");
+	// a step so short that the velocity overflows: 2 m in 1e-39 s
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, 1e-39f));
+	ExpectError(n + 8, "tbBody_SetTargetTransform", "timeStep");
+	cr_assert_float_eq(tbBody_GetAngularVelocity(f.body), 0.0f, 0.0f);
+	ExpectUnchanged(f.before, TakeSnapshot(f.world, f.body));
+	// a static body cannot be driven
+	tbBodyDef def = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(f.world, &def);
+	cr_assert_not(tbBody_SetTargetTransform(ground, good, TARGET_DT));
+	ExpectError(n + 9, "tbBody_SetTargetTransform", "static");
+	// a destroyed body's id is refused
+	tbBodyId doomed = MakeBall(f.world, tbMakeVec2(5.0f, 0.0f), tb_vec2_zero);
+	tbDestroyBody(doomed);
+	cr_assert_not(tbBody_SetTargetTransform(doomed, good, TARGET_DT));
+	ExpectError(n + 10, "tbBody_SetTargetTransform", "destroyed");
+	tbDestroyWorld(f.world);
+}
+
 Test(memory, no_bytes_left_after_destroy)
 {
 	int start = tbGetByteCount();

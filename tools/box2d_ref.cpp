@@ -5,7 +5,8 @@
 // array (static bodies counted, not written), step 0 = initial state, then one row per non-static
 // body after each step; x, y = body origin, vx, vy = velocity of the centre of mass.
 // Box2D settings: the scene's gravity and time step, 8 velocity and 3 position iterations (the
-// scene format has no iteration counts), sleep as the scene says.
+// scene format has no iteration counts), sleep as the scene says. Driven bodies (a scene's
+// "drive") get, before each step, the velocity that reaches the step's target from their pose.
 //
 // Shapes Box2D 2.4 cannot represent exactly are refused with a message:
 // - capsules: a box plus two circles has the right outline but not the right mass (the circles
@@ -117,6 +118,28 @@ static void WriteRows(FILE* csv, const Scene* scene, const std::vector<b2Body*>&
 	}
 }
 
+// Box2D 2.4 has no target-transform call: the velocity that reaches the drive's target this step.
+static void DriveBodies(const Scene* scene, const std::vector<b2Body*>& bodies, int step)
+{
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		tbTransform target;
+		if (Scene_DriveTarget(scene, i, step, &target) == false)
+		{
+			continue;
+		}
+		b2Body* body = bodies[(size_t)i];
+		const b2Transform& xf = body->GetTransform();
+		tbTransform current = {{xf.p.x, xf.p.y}, {xf.q.c, xf.q.s}};
+		tbVec2 localCenter = {body->GetLocalCenter().x, body->GetLocalCenter().y};
+		tbVec2 v;
+		float w;
+		Scene_TargetVelocity(current, localCenter, target, scene->timeStep, &v, &w);
+		body->SetLinearVelocity(b2Vec2(v.x, v.y));
+		body->SetAngularVelocity(w);
+	}
+}
+
 int main(int argc, char** argv)
 {
 	const char* scenePath = nullptr;
@@ -211,6 +234,7 @@ int main(int argc, char** argv)
 	}
 	for (int step = 1; step <= steps; ++step)
 	{
+		DriveBodies(scene, bodies, step - 1);
 		world.Step(scene->timeStep, 8, 3);
 		if (csv != nullptr)
 		{

@@ -25,7 +25,7 @@ set logscale x
 set yrange [-0.05:1.05]
 set key top left font ",8"
 dash(s) = (s eq "boxes" ? 2 : 1)
-plot for [m in "off quadratic conservative box2d-2.4.1 chipmunk-7"] for [s in "circles boxes"] \
+plot for [m in "off quadratic conservative box2d-2.4.1 box2d-3 chipmunk-7"] for [s in "circles boxes"] \
 	TUNNEL every ::1 using ((strcol(1) eq m && strcol(2) eq s) ? $3 : 1/0):4 with linespoints dt dash(s) \
 	title sprintf("%s, %s", m, s)
 unset multiplot

@@ -19,6 +19,7 @@ do for [col in "5 6 7"] {
 	     DATA every ::1 using ($4):((strcol(2) eq "baumgarte") ? column(c) + 1e-6 : 1/0) with points pt 5 ps 1.2 title "baumgarte (1,2,4,8 it.)", \
 	     DATA every ::1 using ($4):((strcol(2) eq "ngs") ? column(c) + 1e-6 : 1/0) with points pt 9 ps 1.4 title "ngs (1,2,4,8 it.)", \
 	     DATA every ::1 using ($4):((strcol(2) eq "box2d-2.4.1") ? column(c) + 1e-6 : 1/0) with points pt 13 ps 2 lc rgb "black" title "Box2D 2.4.1 (8/3)", \
+	     DATA every ::1 using ($4):((strcol(2) eq "box2d-3") ? column(c) + 1e-6 : 1/0) with points pt 15 ps 2 lc rgb "#2ca02c" title "Box2D v3 (4 sub-steps)", \
 	     DATA every ::1 using ($4):((strcol(2) eq "chipmunk-7") ? column(c) + 1e-6 : 1/0) with points pt 11 ps 2 lc rgb "red" title "Chipmunk 7 (10 it.)", \
 	     DATA every ::1 using ($4):(column(f) == 1 ? column(c) + 1e-6 : 1/0) smooth unique with lines lc rgb "gray" dt 2 title "Pareto front", \
 	     DATA every ::1 using ($4):((strcol(1) eq "soft-4") ? column(c) + 1e-6 : 1/0) with points pt 6 ps 3.5 lw 2 lc rgb "#d62728" title "default (auto): soft, 4 sub-steps"

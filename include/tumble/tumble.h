@@ -119,6 +119,14 @@ TB_API tbVec2 tbBody_GetLinearVelocity(tbBodyId bodyId);
 TB_API float tbBody_GetAngularVelocity(tbBodyId bodyId);
 TB_API bool tbBody_SetLinearVelocity(tbBodyId bodyId, tbVec2 linearVelocity);
 TB_API bool tbBody_SetAngularVelocity(tbBodyId bodyId, float angularVelocity);
+/// Set the velocities that carry the body to `target` by the end of the next step of length
+/// timeStep (for kinematic bodies driven along a path; wakes the body when it must move). The
+/// angle takes the shortest way (|turn| ≤ π). The position is reached to rounding; the rotation
+/// integrator turns n sub-steps by n·atan(θ/n), short of the turn θ by at most |θ|³/(3n²). The
+/// step's clamps bound one step's travel (turn ≤ TB_MAX_ROTATION, speed ≤ maximumLinearSpeed).
+/// Refused (false, error hook, nothing changed): stale id, locked world, static body, non-finite
+/// or non-unit target, timeStep not finite and > 0.
+TB_API bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeStep);
 
 TB_API bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbVec2 point, bool wake);
 TB_API bool tbBody_ApplyForceToCenter(tbBodyId bodyId, tbVec2 force, bool wake);
