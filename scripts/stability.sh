@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Build Release (no sanitizers) into build/release-bench, run tumble-stability (the stress scenes
-# of STRESS.md under soft / Baumgarte / NGS at 1, 2, 4, 8 sub-steps or iterations) and write
+# of docs/stability.md under soft / Baumgarte / NGS at 1, 2, 4, 8 sub-steps or iterations) and write
 # docs/stability.md and bench/results/stability.csv. About half a minute on 2 cores.
 #
 # Environment: BUILD_DIR (default build/release-bench).

@@ -369,7 +369,7 @@ Test(constraint_graph, a_body_with_more_contacts_than_colours_rests)
 	// 30 boxes (0.5 m × 1 m) 1 m apart on one 40 m dynamic plank lying on the ground: the plank's 31
 	// contacts (30 boxes and the ground, which takes no colour) need more than the 24 colours, so 6
 	// run in the scalar overflow. After 3 s everything rests: speeds below 1 mm/s (the soft
-	// contacts settle within about a second, STRESS.md) and each box at its resting height within
+	// contacts settle within about a second: the settling time of the pyramid in test_solver.c) and each box at its resting height within
 	// 0.01 m (twice the linear slop, the depth soft contacts settle at under load).
 	tbWorldDef def = tbDefaultWorldDef();
 	def.enableSleep = false;

@@ -435,7 +435,7 @@ Test(scene, driven_body_follows_its_path_one_step_behind)
 	Scene_Destroy(scene);
 }
 
-// STRESS.md's cards are 2 mm thick (tbMakeBox(0.001, 0.2)): the world must accept them.
+// The card house's cards (docs/stability.md) are 2 mm thick (tbMakeBox(0.001, 0.2)): the world must accept them.
 Test(scene, card_house_cards_are_accepted)
 {
 	Scene* scene = Catalogue_Build("card_house");

@@ -8,7 +8,7 @@
 //   impacts are speculative contacts' job;
 // - with the fixed 0.02 m speculative distance, a body that starts its impact step a gap d above
 //   the ground with 0.02 ≤ d < v·dt has no manifold point in that step and ends it up to
-//   v·dt − 0.02 m deep (0.069 m at 5.5 m/s, shared/ANCHORS.md); the margin closes that gap;
+//   v·dt − 0.02 m deep (5.5/60 − 0.02 = 0.0717 m at most, 0.069 m measured at 5.5 m/s); the margin closes that gap;
 // - the soft step (default solver) lets a contact settle up to TB_LINEAR_SLOP = 0.005 m deep
 //   (its push-out only acts beyond the slop), and NGS's position pass likewise leaves the slop; an
 //   impact caught by a speculative point is stopped at the surface, so the largest penetration
