@@ -1,5 +1,6 @@
-// Scene catalogue. Sizes and counts follow the stress scenes of docs/stability.md and the set-ups of Box2D v3's
-// benchmark scenes (numbers only). Lengths in metres, densities in kg/m², 60 Hz unless said.
+// Scene catalogue. Sizes and counts follow the stress scenes of docs/stability.md and the set-ups
+// of Box2D v3's benchmark scenes (numbers only). Lengths in metres, densities in kg/m², 60 Hz
+// unless said.
 #include "catalogue.h"
 
 #include <math.h>
