@@ -290,6 +290,15 @@ static void tbKeepOriginVelocity(tbBody* body, tbVec2 oldCenter)
 	body->linearVelocity = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
 }
 
+// A rotational inertia below FLT_MIN counts as none (the body does not turn, as with fixed
+// rotation): 1/I would overflow to ∞ below 1/FLT_MAX ≈ 2.9e-39 kg m², or be a subnormal's rounding
+// noise, and ∞ · 0 in a contact with no lever arm gives NaN.
+static void tbSetBodyInertia(tbBody* body, float inertia)
+{
+	body->inertia = inertia >= FLT_MIN ? inertia : 0.0f;
+	body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
+}
+
 static float tbSaturateToFloat(double value)
 {
 	return value < (double)FLT_MAX ? (float)value : FLT_MAX;
@@ -320,8 +329,7 @@ static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbVec2 oldCenter)
 	body->localCenter = tbMakeVec2((float)cx, (float)cy);
 	if (body->fixedRotation == false)
 	{
-		body->inertia = tbSaturateToFloat(inertia - mass * (cx * cx + cy * cy));
-		body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
+		tbSetBodyInertia(body, tbSaturateToFloat(inertia - mass * (cx * cx + cy * cy)));
 	}
 	body->center = tbTransformPoint(body->transform, body->localCenter);
 	body->center0 = body->center;
@@ -365,22 +373,25 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 		tbSaturateBodyMass(world, body, oldCenter);
 		return;
 	}
-	if (body->mass > 0.0f)
+	if (body->mass >= FLT_MIN)
 	{
 		body->invMass = 1.0f / body->mass;
 		localCenter = tbMulSV(body->invMass, localCenter);
 	}
 	else
 	{
-		// A dynamic body without mass behaves as 1 kg so that it still falls.
+		// A dynamic body without mass behaves as 1 kg at its origin so that it still falls. A mass
+		// below FLT_MIN (a 1e-20 m circle: π·1e-40 kg) counts as none: 1/mass overflows to ∞ below
+		// 1/FLT_MAX and the centre ∞ · (mass · centre) became ∞ · 0 = NaN.
 		body->mass = 1.0f;
 		body->invMass = 1.0f;
+		localCenter = tb_vec2_zero;
+		rotationalInertia = 0.0f;
 	}
 	if (rotationalInertia > 0.0f && body->fixedRotation == false)
 	{
 		// Shift the inertia from the body origin to the centre of mass.
-		body->inertia = rotationalInertia - body->mass * tbDot(localCenter, localCenter);
-		body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
+		tbSetBodyInertia(body, rotationalInertia - body->mass * tbDot(localCenter, localCenter));
 	}
 	body->localCenter = localCenter;
 	body->center = tbTransformPoint(body->transform, localCenter);

@@ -451,3 +451,95 @@ Test(collision_input, distance_between_boxes_smaller_than_sqrt_flt_min_is_finite
 	cr_assert(isfinite(out.distance) && out.distance >= 0.0f);
 	cr_assert_eq(s_errors, 0);
 }
+
+// A dynamic body with one circle shape of the given radius and density, centred at `center` in the
+// body's frame, spinning at 1 rad/s with its origin at rest at the world origin. Returns the shape.
+static tbShapeId MakeSpinningCircleBody(tbWorldId world, tbVec2 center, float radius, float density)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.angularVelocity = 1.0f;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.density = density;
+	tbCircle circle = {center, radius};
+	tbShapeId shape = tbCreateCircleShape(body, &shapeDef, &circle);
+	cr_assert(TB_IS_NON_NULL(shape));
+	return shape;
+}
+
+Test(world_limits, body_mass_below_flt_min_counts_as_no_mass, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a circle of radius 1e-20 m at (1e-20, 1e-20) m, density 1, has a mass of
+	// π·1e-40 kg, a subnormal float. 1/mass overflowed to ∞, the centre of mass became
+	// ∞ · (mass · centre) = ∞ · 0 = NaN, and the body's velocity NaN through ω × (c_new − c_old),
+	// before any step. A mass below FLT_MIN counts as no mass: the body moves as 1 kg about its
+	// origin without rotational inertia, as a dynamic body without mass always did.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbShapeId shape = MakeSpinningCircleBody(world, tbMakeVec2(1e-20f, 1e-20f), 1e-20f, 1.0f);
+	tbBodyId body = tbShape_GetBody(shape);
+	cr_assert_eq(s_errors, 0);
+	// subnormal spacing is 1.4e-45: the tolerance is 7 of those steps
+	cr_assert_float_eq(tbShape_GetMassData(shape).mass, 3.14159e-40f, 1e-44f,
+					   "the shape alone keeps its true mass, π·1e-40 kg");
+	cr_assert_float_eq(tbBody_GetMass(body), 1.0f, 0.0f);
+	cr_assert_float_eq(tbBody_GetRotationalInertia(body), 0.0f, 0.0f);
+	tbVec2 center = tbBody_GetLocalCenterOfMass(body);
+	cr_assert(center.x == 0.0f && center.y == 0.0f, "centre (%g, %g)", (double)center.x, (double)center.y);
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert(v.x == 0.0f && v.y == 0.0f, "v = (%g, %g)", (double)v.x, (double)v.y);
+
+	// One step of 1/60 s in 4 sub-steps under gravity (0, -10): v = -10/60 m/s, to the rounding of
+	// four additions (4·FLT_EPSILON); the origin moved by at most |v|·Δt; the spin is untouched.
+	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	v = tbBody_GetLinearVelocity(body);
+	cr_assert_float_eq(v.x, 0.0f, 0.0f);
+	cr_assert_float_eq(v.y, -10.0f / 60.0f, 4.0f * FLT_EPSILON, "v.y = %g", (double)v.y);
+	tbVec2 p = tbBody_GetPosition(body);
+	cr_assert(isfinite(p.x) && isfinite(p.y) && fabsf(p.y) <= 10.0f / 3600.0f, "(%g, %g)", (double)p.x, (double)p.y);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 1.0f, 0.0f);
+
+	// tbShape_SetDensity reaches the same rule: density 0 (no mass) to 1 (a subnormal mass).
+	tbShapeId otherShape = MakeSpinningCircleBody(world, tbMakeVec2(1e-20f, 1e-20f), 1e-20f, 0.0f);
+	tbBodyId other = tbShape_GetBody(otherShape);
+	cr_assert(tbShape_SetDensity(otherShape, 1.0f, true));
+	center = tbBody_GetLocalCenterOfMass(other);
+	v = tbBody_GetLinearVelocity(other);
+	cr_assert(center.x == 0.0f && center.y == 0.0f && v.x == 0.0f && v.y == 0.0f);
+	cr_assert_float_eq(tbBody_GetMass(other), 1.0f, 0.0f);
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, rotational_inertia_below_flt_min_counts_as_none, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// A circle of radius 1e-14 m and density 1e16 kg/m² has a normal mass, π·1e-12 kg, but a
+	// rotational inertia m r²/2 = π/2·1e-40 kg m², subnormal: 1/I overflowed to ∞, and ∞ · 0 in the
+	// contact's effective mass (the lever arm r × n is 0) gave a NaN position on landing. An inertia
+	// below FLT_MIN counts as none: the body does not turn (as with fixed rotation) and lands.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon floor = tbMakeOffsetBox(1.0f, 0.5f, tbMakeVec2(0.0f, -0.51f), tb_rot_identity); // top at y = -1 cm
+	cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(ground, &shapeDef, &floor)));
+	tbBodyId body = tbShape_GetBody(MakeSpinningCircleBody(world, tb_vec2_zero, 1e-14f, 1e16f));
+	cr_assert_eq(s_errors, 0);
+	cr_assert_float_eq(tbBody_GetMass(body), 3.14159e-12f, 1e-17f, "m = π·1e-12 kg (to 3e-6 relative)");
+	cr_assert_float_eq(tbBody_GetRotationalInertia(body), 0.0f, 0.0f);
+	for (int i = 0; i < 60; ++i)
+	{
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	}
+	tbVec2 p = tbBody_GetPosition(body);
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y), "p (%g, %g) v (%g, %g)", (double)p.x,
+			  (double)p.y, (double)v.x, (double)v.y);
+	// it fell 1 cm onto the floor: after 1 s it rests on it within the linear slop
+	cr_assert_float_eq(p.y, -0.01f, TB_LINEAR_SLOP, "y = %g", (double)p.y);
+	cr_assert(isfinite(tbBody_GetAngularVelocity(body)));
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
