@@ -4,6 +4,8 @@
 
 #include "array.h"
 
+#include <float.h>
+#include <math.h>
 #include <string.h>
 
 #define TB_BODY_DEF_MAGIC 0x7B3A1C02
@@ -284,10 +286,21 @@ static void tbComputeExtents(tbWorld* world, tbBody* body)
 }
 
 /// Keep the velocity of the body origin when the centre of mass moves from oldCenter to
-/// body->center: v_center = v_old + ω × (c_new − c_old).
+/// body->center: v_center = v_old + ω × (c_new − c_old). When that overflows float (3e38 rad/s
+/// times a shift of 1e6 m), it is redone in double and scaled down to a largest component of
+/// FLT_MAX, keeping the direction that the step's speed clamp then keeps too.
 static void tbKeepOriginVelocity(tbBody* body, tbVec2 oldCenter)
 {
-	body->linearVelocity = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
+	tbVec2 v = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
+	if (tbIsValidVec2(v) == false)
+	{
+		double w = body->angularVelocity;
+		double vx = body->linearVelocity.x - w * ((double)body->center.y - oldCenter.y);
+		double vy = body->linearVelocity.y + w * ((double)body->center.x - oldCenter.x);
+		double scale = FLT_MAX / fmax(fabs(vx), fabs(vy));
+		v = tbMakeVec2((float)(scale * vx), (float)(scale * vy));
+	}
+	body->linearVelocity = v;
 }
 
 // A rotational inertia below FLT_MIN counts as none (the body does not turn, as with fixed
@@ -656,6 +669,48 @@ bool tbBody_ApplyTorque(tbBodyId bodyId, float torque, bool wake)
 	return body != NULL;
 }
 
+// The impulse calls: v += P/m and ω += L/I, with the angular impulse L = r × P for a linear impulse
+// P at lever arm r from the centre of mass, the given L for an angular impulse and none for a
+// linear impulse at the centre. A body that cannot turn (1/I = 0) ignores L, whose r × P may
+// overflow (0 · ∞ = NaN). An impulse that
+// would leave a velocity that is not a finite float is refused before the body is woken: the step
+// clamps any finite speed, but no direction survives ∞ − ∞.
+static bool tbApplyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, const tbVec2* point, float angularImpulse,
+						   bool wake)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
+	if (body == NULL || body->type != tb_dynamicBody)
+	{
+		return false;
+	}
+	tbVec2 v = tbMulAdd(body->linearVelocity, body->invMass, impulse);
+	float w = body->angularVelocity;
+	float angular = point != NULL ? tbCross(tbSub(*point, body->center), impulse) : angularImpulse;
+	if (body->invInertia > 0.0f && angular != 0.0f)
+	{
+		w += body->invInertia * angular;
+	}
+	if (tbIsValidVec2(v) == false || tbIsValidFloat(w) == false)
+	{
+		tbReportError(f, "impulse would give the body a velocity of (%g, %g) m/s and %g rad/s, not finite floats; "
+						 "apply a smaller impulse, or nearer the centre of mass",
+					  (double)v.x, (double)v.y, (double)w);
+		return false;
+	}
+	if (wake)
+	{
+		tbWakeBody(world, body);
+	}
+	if (body->awakeIndex == TB_NULL_INDEX)
+	{
+		return false;
+	}
+	body->linearVelocity = v;
+	body->angularVelocity = w;
+	return true;
+}
+
 bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbVec2 point, bool wake)
 {
 	const char* f = "tbBody_ApplyLinearImpulse";
@@ -663,14 +718,7 @@ bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbVec2 point, bo
 	{
 		return false;
 	}
-	tbWorld* world;
-	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
-	if (body != NULL)
-	{
-		body->linearVelocity = tbMulAdd(body->linearVelocity, body->invMass, impulse);
-		body->angularVelocity += body->invInertia * tbCross(tbSub(point, body->center), impulse);
-	}
-	return body != NULL;
+	return tbApplyImpulse(bodyId, f, impulse, &point, 0.0f, wake);
 }
 
 bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wake)
@@ -680,13 +728,7 @@ bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wak
 	{
 		return false;
 	}
-	tbWorld* world;
-	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
-	if (body != NULL)
-	{
-		body->linearVelocity = tbMulAdd(body->linearVelocity, body->invMass, impulse);
-	}
-	return body != NULL;
+	return tbApplyImpulse(bodyId, f, impulse, NULL, 0.0f, wake);
 }
 
 bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
@@ -696,13 +738,7 @@ bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
 	{
 		return false;
 	}
-	tbWorld* world;
-	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
-	if (body != NULL)
-	{
-		body->angularVelocity += body->invInertia * impulse;
-	}
-	return body != NULL;
+	return tbApplyImpulse(bodyId, f, tb_vec2_zero, NULL, impulse, wake);
 }
 
 float tbBody_GetMass(tbBodyId bodyId)

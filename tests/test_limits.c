@@ -543,3 +543,113 @@ Test(world_limits, rotational_inertia_below_flt_min_counts_as_none, .init = Setu
 	cr_assert_eq(s_errors, 0);
 	tbDestroyWorld(world);
 }
+
+Test(world_limits, impulse_on_body_that_cannot_turn_ignores_an_overflowing_lever_arm, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// Found by fuzz_world: an impulse (0.005, -2.09e21) N s at (-2.09e21, -2.09e21) m on a body
+	// without shapes (1 kg, 1/I = 0). r × P = 4.4e42 overflows float, and 1/I · (r × P) = 0 · ∞
+	// stored a NaN angular velocity; a shape added next moved the centre of mass and
+	// v + ω × Δc made the linear velocity NaN too. A body that cannot turn ignores the lever arm.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	cr_assert(tbBody_ApplyLinearImpulse(body, tbMakeVec2(0.005f, -2.09e21f), tbMakeVec2(-2.09e21f, -2.09e21f), true));
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 0.0f, 0.0f, "w = %g", (double)tbBody_GetAngularVelocity(body));
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert(v.x == 0.005f && v.y == -2.09e21f, "v = P / 1 kg exactly, got (%g, %g)", (double)v.x, (double)v.y);
+
+	// the rest of the finding: a new velocity and a circle off the origin keep v exactly (ω = 0)
+	cr_assert(tbBody_SetLinearVelocity(body, tbMakeVec2(1.6f, 1.6f)));
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{1.6f, 1.6f}, 1.6f};
+	cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(body, &shapeDef, &circle)));
+	v = tbBody_GetLinearVelocity(body);
+	cr_assert(v.x == 1.6f && v.y == 1.6f, "v = (%g, %g)", (double)v.x, (double)v.y);
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, impulse_giving_a_non_finite_velocity_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// A 1 kg box (I = 1/6 kg m²): the first impulse of 3e38 N s is accepted (v = 3e38 m/s, which
+	// the step clamps), a second one would make v infinite and is refused, as are an angular
+	// impulse taking ω past FLT_MAX and an impulse whose r × P overflows. Each refusal names the
+	// function and leaves the velocity and the sleep state as they were.
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tb_vec2_zero;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId body = MakeBox(world, tb_vec2_zero, tb_vec2_zero);
+	int n = s_errors;
+	cr_assert(tbBody_ApplyLinearImpulseToCenter(body, tbMakeVec2(3e38f, 0.0f), true));
+	cr_assert_not(tbBody_ApplyLinearImpulseToCenter(body, tbMakeVec2(3e38f, 0.0f), true));
+	ExpectError(n, "tbBody_ApplyLinearImpulseToCenter", "impulse");
+	cr_assert_float_eq(tbBody_GetLinearVelocity(body).x, 3e38f, 0.0f);
+
+	// ω = 6 · 3e37 = 1.8e38 rad/s (1/I = 6 to float rounding, 1e-6 relative), then past FLT_MAX
+	cr_assert(tbBody_ApplyAngularImpulse(body, 3e37f, true));
+	cr_assert_not(tbBody_ApplyAngularImpulse(body, 3e37f, true));
+	ExpectError(n + 1, "tbBody_ApplyAngularImpulse", "impulse");
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 1.8e38f, 1.8e32f);
+
+	// r × P = 1e10 m · 1e30 N s = 1e40: not a float
+	cr_assert_not(tbBody_ApplyLinearImpulse(body, tbMakeVec2(0.0f, 1e30f), tbMakeVec2(1e10f, 0.0f), true));
+	ExpectError(n + 2, "tbBody_ApplyLinearImpulse", "impulse");
+	cr_assert_float_eq(tbBody_GetLinearVelocity(body).y, 0.0f, 0.0f);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 1.8e38f, 1.8e32f);
+
+	// a sleeping 1 g box: 3e38 N s would give 3e41 m/s; refused, and the box stays asleep
+	tbBodyDef sleeperDef = tbDefaultBodyDef();
+	sleeperDef.type = tb_dynamicBody;
+	sleeperDef.isAwake = false;
+	sleeperDef.position = tbMakeVec2(10.0f, 0.0f);
+	tbBodyId sleeper = tbCreateBody(world, &sleeperDef);
+	tbShapeDef lightDef = tbDefaultShapeDef();
+	lightDef.density = 1e-3f;
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(sleeper, &lightDef, &box)));
+	cr_assert_not(tbBody_IsAwake(sleeper));
+	cr_assert_not(tbBody_ApplyLinearImpulseToCenter(sleeper, tbMakeVec2(0.0f, 3e38f), true));
+	ExpectError(n + 3, "tbBody_ApplyLinearImpulseToCenter", "impulse");
+	cr_assert_not(tbBody_IsAwake(sleeper));
+
+	// the accepted 3e38 m/s is clamped by the step to maximumLinearSpeed, along +x
+	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert_float_eq(v.x, def.maximumLinearSpeed, 4.0f * FLT_EPSILON * def.maximumLinearSpeed);
+	cr_assert_float_eq(v.y, 0.0f, 0.0f);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, centre_of_mass_shift_on_fast_spinning_body_scales_velocity_to_float_max, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// A body without shapes spinning at 3e38 rad/s gets a circle at (1e6, 5e5) m: its centre of
+	// mass moves by Δc = (1e6, 5e5) and the origin keeps its velocity, v = ω × Δc =
+	// (-1.5e44, 3e44) m/s. That overflowed float to (-∞, ∞) (a NaN after any ∞ − ∞). The velocity
+	// is scaled down to FLT_MAX keeping its direction, (-FLT_MAX/2, FLT_MAX) to float rounding,
+	// and the step clamps it to maximumLinearSpeed along (-1, 2)/√5.
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tb_vec2_zero;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.angularVelocity = 3e38f;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{1e6f, 5e5f}, 1.0f};
+	cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(body, &shapeDef, &circle)));
+	cr_assert_eq(s_errors, 0);
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert_float_eq(v.y, FLT_MAX, 0.0f, "v = (%g, %g)", (double)v.x, (double)v.y);
+	cr_assert_float_eq(v.x, -0.5f * FLT_MAX, 1e-6f * FLT_MAX, "v = (%g, %g)", (double)v.x, (double)v.y);
+
+	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	v = tbBody_GetLinearVelocity(body);
+	float tolerance = 4.0f * FLT_EPSILON * def.maximumLinearSpeed;
+	cr_assert_float_eq(v.x, -def.maximumLinearSpeed / sqrtf(5.0f), tolerance, "v = (%g, %g)", (double)v.x, (double)v.y);
+	cr_assert_float_eq(v.y, 2.0f * def.maximumLinearSpeed / sqrtf(5.0f), tolerance);
+	tbDestroyWorld(world);
+}
