@@ -653,3 +653,117 @@ Test(world_limits, centre_of_mass_shift_on_fast_spinning_body_scales_velocity_to
 	cr_assert_float_eq(v.y, 2.0f * def.maximumLinearSpeed / sqrtf(5.0f), tolerance);
 	tbDestroyWorld(world);
 }
+
+Test(collision_input, ray_longer_than_sqrt_flt_max_hits_what_it_passes, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: a translation of 1e20 m squared to ∞ in float (|d|² > FLT_MAX above ~1.8e19 m), and
+	// rays through circles, capsules and segments reported no hit. The ray from (-10, 0.1) along
+	// +x enters the unit circle at x = -√(1 - 0.01), the capsule (core (0, ±1), radius 0.5) at
+	// x = -0.5, the segment (0, -1)-(0.5, 1) at x = 0.275 and the unit box at x = -1; the fraction
+	// is the distance over 1e20 m (float rounding: 1e-6 relative).
+	tbCircle circle = {{0.0f, 0.0f}, 1.0f};
+	tbCapsule capsule = {{0.0f, -1.0f}, {0.0f, 1.0f}, 0.5f};
+	tbSegment segment = {{0.0f, -1.0f}, {0.5f, 1.0f}};
+	tbPolygon box = tbMakeBox(1.0f, 1.0f);
+	float length[2] = {1e20f, 3e38f};
+	for (int i = 0; i < 2; ++i)
+	{
+		tbRayCastInput ray = {{-10.0f, 0.1f}, {length[i], 0.0f}, 1.0f};
+		tbCastOutput hits[4] = {tbRayCastCircle(&ray, &circle), tbRayCastCapsule(&ray, &capsule),
+								tbRayCastSegment(&ray, &segment, false), tbRayCastPolygon(&ray, &box)};
+		float entry[4] = {-sqrtf(0.99f), -0.5f, 0.275f, -1.0f};
+		for (int k = 0; k < 4; ++k)
+		{
+			cr_assert(hits[k].hit, "shape %d missed by a ray of %g m", k, (double)length[i]);
+			cr_assert_float_eq(hits[k].point.x, entry[k], 1e-6f, "shape %d: x = %g", k, (double)hits[k].point.x);
+			cr_assert_float_eq(hits[k].point.y, 0.1f, 1e-6f);
+			float fraction = (entry[k] + 10.0f) / length[i];
+			cr_assert_float_eq(hits[k].fraction, fraction, 1e-6f * fraction, "shape %d: %g", k,
+							   (double)hits[k].fraction);
+		}
+	}
+	cr_assert_eq(s_errors, 0);
+}
+
+Test(collision_input, ray_cast_that_overflows_reports_no_hit_not_nan, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a ray from (3e38, 9.6) m with translation (-3e38, -1.78e38) m past the
+	// segment (-8.4, -8.4)-(8, 9.6). The cross products of the ray and the segment overflowed,
+	// ∞ − ∞ = NaN passed every range test (comparisons with NaN are false), and the cast reported a
+	// hit at a NaN point and fraction. The ray passes ~1.8e38 m below the segment: no hit. A hit
+	// whose numbers overflow (a ray from (3e38, 3e38), beyond TB_MAX_COORDINATE) is no hit either.
+	tbSegment segment = {{-8.4f, -8.4f}, {8.0f, 9.6f}};
+	tbRayCastInput ray = {{3e38f, 9.6f}, {-3e38f, -1.78e38f}, 1.0f};
+	tbCastOutput out = tbRayCastSegment(&ray, &segment, false);
+	cr_assert_not(out.hit, "hit at (%g, %g), fraction %g", (double)out.point.x, (double)out.point.y,
+				  (double)out.fraction);
+	tbRayCastInput diagonal = {{3e38f, 3e38f}, {-3e38f, -3e38f}, 1.0f};
+	out = tbRayCastSegment(&diagonal, &segment, false);
+	cr_assert_not(out.hit, "hit at (%g, %g), fraction %g", (double)out.point.x, (double)out.point.y,
+				  (double)out.fraction);
+	cr_assert_eq(s_errors, 0);
+}
+
+static float CountCastHit(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+{
+	(void)shapeId;
+	(void)point;
+	(void)normal;
+	*(int*)context += 1;
+	return fraction;
+}
+
+static bool CountOverlap(tbShapeId shapeId, void* context)
+{
+	(void)shapeId;
+	*(int*)context += 1;
+	return true;
+}
+
+Test(world_limits, query_placements_beyond_max_coordinate_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// The collision layer's answers are defined for placements within TB_MAX_COORDINATE: a world
+	// ray cast from beyond it (the fuzz_world finding started at (3e38, 9.6) m) is refused, as are
+	// a cast or overlap shape placed beyond it. A translation of any finite length is accepted: a
+	// ray of 3e38 m from inside the bound hits the segment.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_kinematicBody;
+	bodyDef.position = tbMakeVec2(100.0f, 0.0f);
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbSegment segment = {{-8.4f, -8.4f}, {8.0f, 9.6f}};
+	tbShapeId shape = tbCreateSegmentShape(body, &shapeDef, &segment);
+	cr_assert(TB_IS_NON_NULL(shape));
+	tbQueryFilter filter = tbDefaultQueryFilter();
+	int hits = 0, n = s_errors;
+	tbVec2 far = tbMakeVec2(3e38f, 9.6f);
+	cr_assert_not(tbWorld_CastRay(world, far, tbMakeVec2(-3e38f, -1.78e38f), filter, CountCastHit, &hits));
+	ExpectError(n, "tbWorld_CastRay", "origin");
+	tbRayCastInput input = {far, {-3e38f, -1.78e38f}, 1.0f};
+	cr_assert_not(tbShape_RayCast(shape, &input).hit);
+	ExpectError(n + 1, "tbShape_RayCast", "input->origin");
+	tbGeometry circle = {.type = tb_circleShape, .circle = {{0.0f, 0.0f}, 0.5f}};
+	tbTransform beyond = {{2.0f * TB_MAX_COORDINATE, 0.0f}, tb_rot_identity};
+	cr_assert_not(tbWorld_CastShape(world, &circle, beyond, tbMakeVec2(-1.0f, 0.0f), filter, CountCastHit, &hits));
+	ExpectError(n + 2, "tbWorld_CastShape", "transform.p");
+	cr_assert_not(tbWorld_OverlapShape(world, &circle, beyond, filter, CountOverlap, &hits));
+	ExpectError(n + 3, "tbWorld_OverlapShape", "transform.p");
+	cr_assert_eq(hits, 0);
+
+	// From (90, 0.1) along +x: the segment, (91.6, -8.4)-(108, 9.6) in the world, reaches y = 0.1
+	// at s = 8.5/18 of its length, x = 91.6 + 16.4 · 8.5/18 = 99.3444 m (float rounding of
+	// coordinates near 100 m: 1e-4 m), at the fraction 9.3444 m / 3e38 m (1e-5 relative).
+	cr_assert(tbWorld_CastRay(world, tbMakeVec2(90.0f, 0.1f), tbMakeVec2(3e38f, 0.0f), filter, CountCastHit, &hits));
+	cr_assert_eq(hits, 1);
+	tbRayResult closest = tbWorld_CastRayClosest(world, tbMakeVec2(90.0f, 0.1f), tbMakeVec2(3e38f, 0.0f), filter);
+	cr_assert(closest.hit);
+	float x = 91.6f + 16.4f * 8.5f / 18.0f;
+	cr_assert_float_eq(closest.point.x, x, 1e-4f, "x = %g", (double)closest.point.x);
+	cr_assert_float_eq(closest.point.y, 0.1f, 1e-6f);
+	float fraction = (x - 90.0f) / 3e38f;
+	cr_assert_float_eq(closest.fraction, fraction, 1e-5f * fraction, "%g", (double)closest.fraction);
+	cr_assert_eq(s_errors, n + 4);
+	tbDestroyWorld(world);
+}
