@@ -14,6 +14,8 @@
 //
 // Speed clamps: |v| ≤ maximumLinearSpeed, and |ω|·Δt ≤ TB_MAX_ROTATION (per step, not per
 // sub-step) so that the rotation bound that continuous collision relies on holds for the step.
+// They apply to the velocities the step starts from (the approach speeds that contacts and
+// restitution see) and after each velocity integration.
 #include "solver.h"
 
 #include "tumble/constants.h"
@@ -34,6 +36,8 @@ static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraint
 	context->constraintCount = constraintCount;
 }
 
+static void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb);
+
 static void tbGatherBodies(tbStepContext* context)
 {
 	tbWorld* world = context->world;
@@ -49,6 +53,7 @@ static void tbGatherBodies(tbStepContext* context)
 		tbSolverBody* sb = context->bodies + i;
 		sb->linearVelocity = body->linearVelocity;
 		sb->angularVelocity = body->fixedRotation ? 0.0f : body->angularVelocity;
+		tbClampSpeeds(context, sb); // a body set to 3e38 m/s approaches its contacts at the clamped speed
 		sb->padding = 0.0f;
 		sb->deltaPosition = tb_vec2_zero;
 		sb->deltaRotation = tb_rot_identity;
@@ -104,31 +109,36 @@ static tbVec2 tbClampHugeSpeed(tbVec2 v, float maxSpeed)
 	return tbMulSV(speed / length, scaled);
 }
 
-void tbIntegrateVelocities(tbStepContext* context)
+// The speed clamps of the top of the file, on a solver body's velocity.
+static void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
 {
 	float maxLinearSpeed = context->maxLinearSpeed;
 	float maxAngularSpeed = context->maxAngularSpeed;
-	float maxLinearSpeedSquared = maxLinearSpeed * maxLinearSpeed;
+	tbVec2 v = sb->linearVelocity;
+	float w = sb->angularVelocity;
+	float speedSquared = tbDot(v, v);
+	if (tbIsValidFloat(speedSquared) == false)
+	{
+		v = tbClampHugeSpeed(v, maxLinearSpeed);
+	}
+	else if (speedSquared > maxLinearSpeed * maxLinearSpeed)
+	{
+		v = tbMulSV(maxLinearSpeed / sqrtf(speedSquared), v);
+	}
+	w = w == w ? tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed) : 0.0f; // NaN (0 · ∞ torque): no direction
+	sb->linearVelocity = v;
+	sb->angularVelocity = w;
+}
+
+void tbIntegrateVelocities(tbStepContext* context)
+{
 	for (int i = 0; i < context->bodyCount; ++i)
 	{
 		tbSolverBody* sb = context->bodies + i;
 		const tbSolverMotion* m = context->motions + i;
-		tbVec2 v = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
-		float w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
-
-		float speedSquared = tbDot(v, v);
-		if (tbIsValidFloat(speedSquared) == false)
-		{
-			v = tbClampHugeSpeed(v, maxLinearSpeed);
-		}
-		else if (speedSquared > maxLinearSpeedSquared)
-		{
-			v = tbMulSV(maxLinearSpeed / sqrtf(speedSquared), v);
-		}
-		w = w == w ? tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed) : 0.0f; // NaN (0 · ∞ torque): no direction
-
-		sb->linearVelocity = v;
-		sb->angularVelocity = w;
+		sb->linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
+		sb->angularVelocity = m->angularDamping * (sb->angularVelocity + m->angularDelta);
+		tbClampSpeeds(context, sb);
 	}
 }
 

@@ -767,3 +767,52 @@ Test(world_limits, query_placements_beyond_max_coordinate_refused, .init = Setup
 	cr_assert_eq(s_errors, n + 4);
 	tbDestroyWorld(world);
 }
+
+Test(world_limits, restitution_rebounds_from_the_clamped_approach_speed_at_most_twice_maximum_speed,
+	 .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a body set to 3.4e38 m/s with restitution 9.6 on a contact. The approach
+	// speed that restitution reverses was measured before the speed clamp, e·Ċ0 overflowed and the
+	// step left v = (-∞, ∞), ω = NaN (NaN positions with NGS). With e = 0.5 it left 1.7e38 m/s, and
+	// warm starting re-applied that impulse after the clamp: the body flew 1e31 m in 5 steps.
+	// The step now starts from clamped velocities (Ċ0 = -maximumLinearSpeed = -4000 m/s), and the
+	// rebound speed -e·Ċ0 is at most max(|Ċ0|, 2·maximumLinearSpeed). A unit ball on the ground
+	// (one contact point through its centre: the rebound sets its velocity exactly):
+	//   from -3.4e38 m/s, e = 0.5: 0.5 · 4000 = 2000 m/s;  e = 9.6: bound 8000 m/s;
+	//   from -10 m/s, e = 3e38: bound 8000 m/s;  e = 0.5: 5 m/s, as before.
+	// Every solver method gives these, to 4 ulps.
+	float speeds[4] = {-FLT_MAX, -FLT_MAX, -10.0f, -10.0f};
+	float restitutions[4] = {0.5f, 9.6f, 3e38f, 0.5f};
+	float rebounds[4] = {2000.0f, 8000.0f, 8000.0f, 5.0f};
+	for (int method = 0; method < tb_solverMethodCount; ++method)
+	{
+		for (int k = 0; k < 4; ++k)
+		{
+			tbWorldDef def = tbDefaultWorldDef();
+			def.solver = (tbSolverMethod)method;
+			tbWorldId world = tbCreateWorld(&def);
+			tbBodyDef groundDef = tbDefaultBodyDef();
+			tbBodyId ground = tbCreateBody(world, &groundDef);
+			tbShapeDef shapeDef = tbDefaultShapeDef();
+			tbPolygon floor = tbMakeOffsetBox(10.0f, 0.5f, tbMakeVec2(0.0f, -0.5f), tb_rot_identity);
+			cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(ground, &shapeDef, &floor)));
+			tbBodyDef ballDef = tbDefaultBodyDef();
+			ballDef.type = tb_dynamicBody;
+			ballDef.position = tbMakeVec2(0.0f, 0.5f);
+			ballDef.linearVelocity = tbMakeVec2(0.0f, speeds[k]);
+			tbBodyId ball = tbCreateBody(world, &ballDef);
+			shapeDef.restitution = restitutions[k];
+			tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+			cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(ball, &shapeDef, &circle)));
+			cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+			tbVec2 v = tbBody_GetLinearVelocity(ball);
+			tbVec2 p = tbBody_GetPosition(ball);
+			cr_assert_float_eq(v.y, rebounds[k], 4.0f * FLT_EPSILON * rebounds[k], "method %d case %d: v = (%g, %g)",
+							   method, k, (double)v.x, (double)v.y);
+			cr_assert_float_eq(v.x, 0.0f, 0.0f);
+			cr_assert(isfinite(p.y) && fabsf(p.y - 0.5f) <= 0.5f, "method %d case %d: y = %g", method, k, (double)p.y);
+			tbDestroyWorld(world);
+		}
+	}
+	cr_assert_eq(s_errors, 0);
+}
