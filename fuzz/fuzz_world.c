@@ -207,10 +207,10 @@ static bool CountOverlap(tbShapeId shapeId, void* context)
 
 static float ClipCast(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
 {
-	(void)shapeId;
-	(void)normal;
 	(void)context;
-	FUZZ_CHECK(FuzzIsFinite2(point.x, point.y) && isfinite(fraction), "cast result");
+	FUZZ_CHECK(FuzzIsFinite2(point.x, point.y) && FuzzIsFinite2(normal.x, normal.y) && isfinite(fraction),
+			   "cast result: shape %d point (%g, %g) normal (%g, %g) fraction %g", shapeId.index1, (double)point.x,
+			   (double)point.y, (double)normal.x, (double)normal.y, (double)fraction);
 	return fraction;
 }
 

@@ -692,6 +692,13 @@ static bool ReadBodies(Parser* parser, const cJSON* item, Scene* scene)
 	return true;
 }
 
+static bool CheckAtLeast(Parser* parser, const char* path, const char* key, float value, float minimum)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return value >= minimum ? true : Fail(parser, child, "must be at least %g", (double)minimum);
+}
+
 static bool CheckAtMost(Parser* parser, const char* path, const char* key, float value, float maximum)
 {
 	char child[PATH_SIZE];
@@ -724,7 +731,7 @@ static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
 	const cJSON* methods = Find(root, "methods");
 	return CheckKeys(parser, root, "", keys) && ReadVec2(parser, root, "", "gravity", &scene->gravity, false) &&
 		   ReadFloat(parser, root, "", "time_step", &scene->timeStep, false) &&
-		   CheckPositive(parser, "", "time_step", scene->timeStep) &&
+		   CheckAtLeast(parser, "", "time_step", scene->timeStep, TB_MIN_TIME_STEP) &&
 		   CheckAtMost(parser, "", "time_step", scene->timeStep, TB_MAX_TIME_STEP) &&
 		   ReadInt(parser, root, "", "sub_steps", 1, TB_MAX_SUB_STEPS, &scene->subSteps) &&
 		   ReadInt(parser, root, "", "steps", 0, SCENE_MAX_STEPS, &scene->steps) &&

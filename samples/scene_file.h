@@ -18,7 +18,8 @@ Scene* SceneFile_Load(const char* path, char* error, int errorSize);
 
 /// Bounds on what a scene file may ask for, so that an untrusted file cannot exhaust memory or
 /// run for days: bodies and shapes in a scene, and the default number of steps of a run.
-/// (sub_steps and time_step are bounded by the library's TB_MAX_SUB_STEPS and TB_MAX_TIME_STEP.)
+/// (sub_steps and time_step are bounded by the library's TB_MAX_SUB_STEPS, TB_MIN_TIME_STEP and
+/// TB_MAX_TIME_STEP.)
 #define SCENE_MAX_BODIES 100000
 #define SCENE_MAX_SHAPES 100000
 #define SCENE_MAX_STEPS 1000000

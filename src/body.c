@@ -4,6 +4,8 @@
 
 #include "array.h"
 
+#include <float.h>
+#include <math.h>
 #include <string.h>
 
 #define TB_BODY_DEF_MAGIC 0x7B3A1C02
@@ -284,10 +286,30 @@ static void tbComputeExtents(tbWorld* world, tbBody* body)
 }
 
 /// Keep the velocity of the body origin when the centre of mass moves from oldCenter to
-/// body->center: v_center = v_old + ω × (c_new − c_old).
+/// body->center: v_center = v_old + ω × (c_new − c_old). When that overflows float (3e38 rad/s
+/// times a shift of 1e6 m), it is redone in double and scaled down to a largest component of
+/// FLT_MAX, keeping the direction that the step's speed clamp then keeps too.
 static void tbKeepOriginVelocity(tbBody* body, tbVec2 oldCenter)
 {
-	body->linearVelocity = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
+	tbVec2 v = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
+	if (tbIsValidVec2(v) == false)
+	{
+		double w = body->angularVelocity;
+		double vx = body->linearVelocity.x - w * ((double)body->center.y - oldCenter.y);
+		double vy = body->linearVelocity.y + w * ((double)body->center.x - oldCenter.x);
+		double scale = FLT_MAX / fmax(fabs(vx), fabs(vy));
+		v = tbMakeVec2((float)(scale * vx), (float)(scale * vy));
+	}
+	body->linearVelocity = v;
+}
+
+// A rotational inertia below FLT_MIN counts as none (the body does not turn, as with fixed
+// rotation): 1/I would overflow to ∞ below 1/FLT_MAX ≈ 2.9e-39 kg m², or be a subnormal's rounding
+// noise, and ∞ · 0 in a contact with no lever arm gives NaN.
+static void tbSetBodyInertia(tbBody* body, float inertia)
+{
+	body->inertia = inertia >= FLT_MIN ? inertia : 0.0f;
+	body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
 }
 
 static float tbSaturateToFloat(double value)
@@ -320,8 +342,7 @@ static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbVec2 oldCenter)
 	body->localCenter = tbMakeVec2((float)cx, (float)cy);
 	if (body->fixedRotation == false)
 	{
-		body->inertia = tbSaturateToFloat(inertia - mass * (cx * cx + cy * cy));
-		body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
+		tbSetBodyInertia(body, tbSaturateToFloat(inertia - mass * (cx * cx + cy * cy)));
 	}
 	body->center = tbTransformPoint(body->transform, body->localCenter);
 	body->center0 = body->center;
@@ -365,22 +386,25 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 		tbSaturateBodyMass(world, body, oldCenter);
 		return;
 	}
-	if (body->mass > 0.0f)
+	if (body->mass >= FLT_MIN)
 	{
 		body->invMass = 1.0f / body->mass;
 		localCenter = tbMulSV(body->invMass, localCenter);
 	}
 	else
 	{
-		// A dynamic body without mass behaves as 1 kg so that it still falls.
+		// A dynamic body without mass behaves as 1 kg at its origin so that it still falls. A mass
+		// below FLT_MIN (a 1e-20 m circle: π·1e-40 kg) counts as none: 1/mass overflows to ∞ below
+		// 1/FLT_MAX and the centre ∞ · (mass · centre) became ∞ · 0 = NaN.
 		body->mass = 1.0f;
 		body->invMass = 1.0f;
+		localCenter = tb_vec2_zero;
+		rotationalInertia = 0.0f;
 	}
 	if (rotationalInertia > 0.0f && body->fixedRotation == false)
 	{
 		// Shift the inertia from the body origin to the centre of mass.
-		body->inertia = rotationalInertia - body->mass * tbDot(localCenter, localCenter);
-		body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
+		tbSetBodyInertia(body, rotationalInertia - body->mass * tbDot(localCenter, localCenter));
 	}
 	body->localCenter = localCenter;
 	body->center = tbTransformPoint(body->transform, localCenter);
@@ -701,6 +725,48 @@ bool tbBody_ApplyTorque(tbBodyId bodyId, float torque, bool wake)
 	return body != NULL;
 }
 
+// The impulse calls: v += P/m and ω += L/I, with the angular impulse L = r × P for a linear impulse
+// P at lever arm r from the centre of mass, the given L for an angular impulse and none for a
+// linear impulse at the centre. A body that cannot turn (1/I = 0) ignores L, whose r × P may
+// overflow (0 · ∞ = NaN). An impulse that
+// would leave a velocity that is not a finite float is refused before the body is woken: the step
+// clamps any finite speed, but no direction survives ∞ − ∞.
+static bool tbApplyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, const tbVec2* point, float angularImpulse,
+						   bool wake)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
+	if (body == NULL || body->type != tb_dynamicBody)
+	{
+		return false;
+	}
+	tbVec2 v = tbMulAdd(body->linearVelocity, body->invMass, impulse);
+	float w = body->angularVelocity;
+	float angular = point != NULL ? tbCross(tbSub(*point, body->center), impulse) : angularImpulse;
+	if (body->invInertia > 0.0f && angular != 0.0f)
+	{
+		w += body->invInertia * angular;
+	}
+	if (tbIsValidVec2(v) == false || tbIsValidFloat(w) == false)
+	{
+		tbReportError(f, "impulse would give the body a velocity of (%g, %g) m/s and %g rad/s, not finite floats; "
+						 "apply a smaller impulse, or nearer the centre of mass",
+					  (double)v.x, (double)v.y, (double)w);
+		return false;
+	}
+	if (wake)
+	{
+		tbWakeBody(world, body);
+	}
+	if (body->awakeIndex == TB_NULL_INDEX)
+	{
+		return false;
+	}
+	body->linearVelocity = v;
+	body->angularVelocity = w;
+	return true;
+}
+
 bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbVec2 point, bool wake)
 {
 	const char* f = "tbBody_ApplyLinearImpulse";
@@ -708,14 +774,7 @@ bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbVec2 point, bo
 	{
 		return false;
 	}
-	tbWorld* world;
-	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
-	if (body != NULL)
-	{
-		body->linearVelocity = tbMulAdd(body->linearVelocity, body->invMass, impulse);
-		body->angularVelocity += body->invInertia * tbCross(tbSub(point, body->center), impulse);
-	}
-	return body != NULL;
+	return tbApplyImpulse(bodyId, f, impulse, &point, 0.0f, wake);
 }
 
 bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wake)
@@ -725,13 +784,7 @@ bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wak
 	{
 		return false;
 	}
-	tbWorld* world;
-	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
-	if (body != NULL)
-	{
-		body->linearVelocity = tbMulAdd(body->linearVelocity, body->invMass, impulse);
-	}
-	return body != NULL;
+	return tbApplyImpulse(bodyId, f, impulse, NULL, 0.0f, wake);
 }
 
 bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
@@ -741,13 +794,7 @@ bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
 	{
 		return false;
 	}
-	tbWorld* world;
-	tbBody* body = tbGetDynamicForInput(bodyId, f, wake, &world);
-	if (body != NULL)
-	{
-		body->angularVelocity += body->invInertia * impulse;
-	}
-	return body != NULL;
+	return tbApplyImpulse(bodyId, f, tb_vec2_zero, NULL, impulse, wake);
 }
 
 float tbBody_GetMass(tbBodyId bodyId)

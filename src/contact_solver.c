@@ -465,14 +465,14 @@ void tbApplyRestitution(tbStepContext* context)
 		{
 			tbContactConstraintPoint* cp = c->points + j;
 			// Only real impacts: fast enough and the point actually pushed during the step.
-			if (cp->relativeVelocity > -threshold || cp->maxNormalImpulse == 0.0f)
+			if (!(cp->relativeVelocity <= -threshold) || cp->maxNormalImpulse == 0.0f) // NaN: no impact
 			{
 				continue;
 			}
 			tbVec2 rA = cp->anchorA;
 			tbVec2 rB = cp->anchorB;
 			float vn = tbDot(tbRelativeVelocity(sA, sB, rA, rB), normal);
-			float impulse = -cp->normalMass * (vn + e * cp->relativeVelocity);
+			float impulse = -cp->normalMass * (vn - tbReboundSpeed(e, cp->relativeVelocity, context->maxLinearSpeed));
 			float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
 			impulse = newImpulse - cp->normalImpulse;
 			cp->normalImpulse = newImpulse;

@@ -4,6 +4,15 @@
 
 #include "solver_types.h"
 
+/// Restitution's rebound speed −e·Ċ0 for an approach at Ċ0 < 0, at most the approach speed or
+/// twice maximumLinearSpeed, whichever is larger: e > 1 (a bumper) still rebounds faster than it
+/// came, but a huge e (3e38) cannot overflow the impulse or store one that warm starting would
+/// re-apply after the speed clamp. For e ≤ 1 the bound never acts.
+static inline float tbReboundSpeed(float restitution, float approach, float maxLinearSpeed)
+{
+	return tbMinFloat(-restitution * approach, tbMaxFloat(-approach, 2.0f * maxLinearSpeed));
+}
+
 // contact_solver.c
 tbSoftness tbMakeSoftness(float hertz, float dampingRatio, float h);
 void tbPrepareContacts(tbStepContext* context);

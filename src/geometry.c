@@ -546,9 +546,15 @@ static tbCastOutput tbNoHit(void)
 	return output;
 }
 
+// A hit whose numbers are not finite floats is no hit: the products of a ray cast overflow for a
+// ray or a shape far beyond TB_MAX_COORDINATE, and ∞ − ∞ = NaN passes every range test.
 static tbCastOutput tbMakeHit(tbVec2 point, tbVec2 normal, float fraction)
 {
 	tbCastOutput output = {0};
+	if (tbIsValidVec2(point) == false || tbIsValidVec2(normal) == false || tbIsValidFloat(fraction) == false)
+	{
+		return output;
+	}
 	output.point = point;
 	output.normal = normal;
 	output.fraction = fraction;
@@ -562,6 +568,31 @@ static bool tbCheckRay(const char* function, const tbRayCastInput* input)
 	return tbCheckVec2(function, "input->origin", input->origin) &&
 		   tbCheckVec2(function, "input->translation", input->translation) &&
 		   tbCheckNonNegative(function, "input->maxFraction", input->maxFraction);
+}
+
+// A translation whose squared length overflows float (|d| above ~1.8e19 m) made the lengths and
+// cross products of the casts below infinite, and circles, capsules and segments were missed.
+// Such a ray is cast as the same ray with d·2⁻⁶⁶ and maxFraction·2⁶⁶ (power-of-two scalings are
+// exact; the components of d·2⁻⁶⁶ are below 4.7e18, so |d·2⁻⁶⁶|² < FLT_MAX) and the fraction of
+// its hit is scaled back.
+#define TB_HUGE_RAY_SCALE 0x1p-66f
+
+static bool tbScaleHugeRay(const tbRayCastInput* input, tbRayCastInput* scaled)
+{
+	if (tbIsValidFloat(tbLengthSquared(input->translation)))
+	{
+		return false;
+	}
+	*scaled = *input;
+	scaled->translation = tbMulSV(TB_HUGE_RAY_SCALE, input->translation);
+	scaled->maxFraction = input->maxFraction / TB_HUGE_RAY_SCALE; // ∞ when beyond float: no clip
+	return true;
+}
+
+static tbCastOutput tbUnscaleHit(tbCastOutput output)
+{
+	output.fraction *= TB_HUGE_RAY_SCALE;
+	return output;
 }
 
 // Circle cast for a ray known to be valid (Ericson §5.3.2). With u the unit direction and
@@ -597,6 +628,11 @@ tbCastOutput tbRayCastCircle(const tbRayCastInput* input, const tbCircle* shape)
 	if (tbCheckRay("tbRayCastCircle", input) == false)
 	{
 		return tbNoHit();
+	}
+	tbRayCastInput scaled;
+	if (tbScaleHugeRay(input, &scaled))
+	{
+		return tbUnscaleHit(tbRayCastCircle(&scaled, shape));
 	}
 	return tbRayCastCircleUnchecked(input, shape->center, shape->radius);
 }
@@ -637,6 +673,11 @@ tbCastOutput tbRayCastSegment(const tbRayCastInput* input, const tbSegment* shap
 	{
 		return tbNoHit();
 	}
+	tbRayCastInput scaled;
+	if (tbScaleHugeRay(input, &scaled))
+	{
+		return tbUnscaleHit(tbRayCastSegment(&scaled, shape, oneSided));
+	}
 	if (oneSided)
 	{
 		tbVec2 e = tbSub(shape->point2, shape->point1);
@@ -670,6 +711,11 @@ tbCastOutput tbRayCastCapsule(const tbRayCastInput* input, const tbCapsule* shap
 	if (tbCheckRay("tbRayCastCapsule", input) == false || tbPointInCapsule(input->origin, shape))
 	{
 		return tbNoHit();
+	}
+	tbRayCastInput scaled;
+	if (tbScaleHugeRay(input, &scaled))
+	{
+		return tbUnscaleHit(tbRayCastCapsule(&scaled, shape));
 	}
 	// Boundary: the two end circles and the two sides of the core segment offset by ±r.
 	tbVec2 c1 = shape->center1, c2 = shape->center2;
@@ -730,6 +776,11 @@ tbCastOutput tbRayCastPolygon(const tbRayCastInput* input, const tbPolygon* shap
 	if (tbCheckRay("tbRayCastPolygon", input) == false || shape->count < 3)
 	{
 		return tbNoHit();
+	}
+	tbRayCastInput scaled;
+	if (tbScaleHugeRay(input, &scaled))
+	{
+		return tbUnscaleHit(tbRayCastPolygon(&scaled, shape));
 	}
 	if (shape->radius == 0.0f)
 	{

@@ -37,31 +37,35 @@ static tbVec2 tbClampHugeSpeed(tbVec2 v, float maxSpeed)
 	return tbMulSV(speed / length, scaled);
 }
 
-void tbIntegrateVelocities(tbStepContext* context)
+void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
 {
 	float maxLinearSpeed = context->maxLinearSpeed;
 	float maxAngularSpeed = context->maxAngularSpeed;
-	float maxLinearSpeedSquared = maxLinearSpeed * maxLinearSpeed;
+	tbVec2 v = sb->linearVelocity;
+	float w = sb->angularVelocity;
+	float speedSquared = tbDot(v, v);
+	if (tbIsValidFloat(speedSquared) == false)
+	{
+		v = tbClampHugeSpeed(v, maxLinearSpeed);
+	}
+	else if (speedSquared > maxLinearSpeed * maxLinearSpeed)
+	{
+		v = tbMulSV(maxLinearSpeed / sqrtf(speedSquared), v);
+	}
+	w = w == w ? tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed) : 0.0f; // NaN (0 · ∞ torque): no direction
+	sb->linearVelocity = v;
+	sb->angularVelocity = w;
+}
+
+void tbIntegrateVelocities(tbStepContext* context)
+{
 	for (int i = 0; i < context->bodyCount; ++i)
 	{
 		tbSolverBody* sb = context->bodies + i;
 		const tbSolverMotion* m = context->motions + i;
-		tbVec2 v = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
-		float w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
-
-		float speedSquared = tbDot(v, v);
-		if (tbIsValidFloat(speedSquared) == false)
-		{
-			v = tbClampHugeSpeed(v, maxLinearSpeed);
-		}
-		else if (speedSquared > maxLinearSpeedSquared)
-		{
-			v = tbMulSV(maxLinearSpeed / sqrtf(speedSquared), v);
-		}
-		w = w == w ? tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed) : 0.0f; // NaN (0 · ∞ torque): no direction
-
-		sb->linearVelocity = v;
-		sb->angularVelocity = w;
+		sb->linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
+		sb->angularVelocity = m->angularDamping * (sb->angularVelocity + m->angularDelta);
+		tbClampSpeeds(context, sb);
 	}
 }
 

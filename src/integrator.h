@@ -3,6 +3,10 @@
 
 #include "solver_types.h"
 
+/// |v| ≤ maximumLinearSpeed (without overflow for any finite or infinite v) and |ω| ≤ the
+/// per-step rotation bound; applied to the velocities a step starts from and after each update.
+void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb);
+
 /// Semi-implicit Euler velocity update of one sub-step, then the speed clamps.
 void tbIntegrateVelocities(tbStepContext* context);
 

@@ -59,6 +59,18 @@ static bool tbCheckQueryWorld(tbWorld* world, const char* f, bool hasFcn)
 	return world != NULL && hasFcn;
 }
 
+// A query shape's placement: finite, a normalised rotation, a position within TB_MAX_COORDINATE
+// (the collision layer's answers are defined there).
+static bool tbCheckQueryTransform(const char* f, tbTransform transform)
+{
+	if (tbIsValidTransform(transform) == false)
+	{
+		tbReportError(f, "transform is not finite or its rotation is not normalised; build it with tbMakeRot");
+		return false;
+	}
+	return tbCheckCoordinate(f, "transform.p", transform.p);
+}
+
 static tbQueryContext tbMakeQueryContext(tbWorld* world, tbQueryFilter filter, void* userContext)
 {
 	tbQueryContext q;
@@ -159,9 +171,8 @@ bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransfor
 	{
 		return false;
 	}
-	if (tbIsValidTransform(transform) == false)
+	if (tbCheckQueryTransform(f, transform) == false)
 	{
-		tbReportError(f, "transform is not finite or its rotation is not normalised; build it with tbMakeRot");
 		return false;
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
@@ -201,9 +212,11 @@ static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int sh
 	return result < 0.0f ? input->maxFraction : result;
 }
 
+// The collision layer answers for shapes and placements within TB_MAX_COORDINATE: a ray origin
+// beyond it is refused. A translation may have any finite length.
 static bool tbCheckRay(const char* f, tbVec2 origin, tbVec2 translation)
 {
-	return tbCheckVec2(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
+	return tbCheckCoordinate(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
 }
 
 bool tbWorld_CastRay(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
@@ -289,9 +302,8 @@ bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform t
 	{
 		return false;
 	}
-	if (tbIsValidTransform(transform) == false)
+	if (tbCheckQueryTransform(f, transform) == false)
 	{
-		tbReportError(f, "transform is not finite or its rotation is not normalised; build it with tbMakeRot");
 		return false;
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);

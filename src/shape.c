@@ -619,7 +619,7 @@ tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input)
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_RayCast", &world, false);
 	if (shape == NULL || tbCheckPointer("tbShape_RayCast", "input", input) == false ||
-		tbCheckVec2("tbShape_RayCast", "input->origin", input->origin) == false ||
+		tbCheckCoordinate("tbShape_RayCast", "input->origin", input->origin) == false ||
 		tbCheckVec2("tbShape_RayCast", "input->translation", input->translation) == false ||
 		tbCheckNonNegative("tbShape_RayCast", "input->maxFraction", input->maxFraction) == false)
 	{

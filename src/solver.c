@@ -14,6 +14,8 @@
 //
 // Speed clamps: |v| ≤ maximumLinearSpeed, and |ω|·Δt ≤ TB_MAX_ROTATION (per step, not per
 // sub-step) so that the rotation bound that continuous collision relies on holds for the step.
+// They apply to the velocities the step starts from (the approach speeds that contacts and
+// restitution see) and after each velocity integration.
 #include "solver.h"
 
 #include "tumble/constants.h"
@@ -34,6 +36,7 @@ static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraint
 	context->constraintCount = constraintCount;
 }
 
+
 static void tbGatherBodies(tbStepContext* context)
 {
 	tbWorld* world = context->world;
@@ -49,6 +52,7 @@ static void tbGatherBodies(tbStepContext* context)
 		tbSolverBody* sb = context->bodies + i;
 		sb->linearVelocity = body->linearVelocity;
 		sb->angularVelocity = body->fixedRotation ? 0.0f : body->angularVelocity;
+		tbClampSpeeds(context, sb); // a body set to 3e38 m/s approaches its contacts at the clamped speed
 		sb->padding = 0.0f;
 		sb->deltaPosition = tb_vec2_zero;
 		sb->deltaRotation = tb_rot_identity;

@@ -154,7 +154,7 @@ static void tbBuildNGSConstraints(tbStepContext* context, tbNGSConstraint* infos
 			info->bias[j] = 0.0f;
 			if (emulate && active && c->points[j].relativeVelocity < -threshold)
 			{
-				info->bias[j] = -c->restitution * c->points[j].relativeVelocity;
+				info->bias[j] = tbReboundSpeed(c->restitution, c->points[j].relativeVelocity, context->maxLinearSpeed);
 			}
 		}
 		tbSetupBlock(info, c, context);

@@ -356,11 +356,11 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	{
 		return false;
 	}
-	if (tbIsValidFloat(timeStep) == false || timeStep <= 0.0f || timeStep > TB_MAX_TIME_STEP)
+	if (tbIsValidFloat(timeStep) == false || timeStep < TB_MIN_TIME_STEP || timeStep > TB_MAX_TIME_STEP)
 	{
-		tbReportError(f, "timeStep is %g (must be > 0 and at most TB_MAX_TIME_STEP = %g s); pass the frame time in "
-						 "seconds, e.g. 1/60, and step a longer span in several calls", (double)timeStep,
-					  (double)TB_MAX_TIME_STEP);
+		tbReportError(f, "timeStep is %g (must be TB_MIN_TIME_STEP = %g s to TB_MAX_TIME_STEP = %g s); pass the "
+						 "frame time in seconds, e.g. 1/60, and step a longer span in several calls", (double)timeStep,
+					  (double)TB_MIN_TIME_STEP, (double)TB_MAX_TIME_STEP);
 		return false;
 	}
 	if (subStepCount < 1 || subStepCount > TB_MAX_SUB_STEPS)

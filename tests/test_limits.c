@@ -451,3 +451,416 @@ Test(collision_input, distance_between_boxes_smaller_than_sqrt_flt_min_is_finite
 	cr_assert(isfinite(out.distance) && out.distance >= 0.0f);
 	cr_assert_eq(s_errors, 0);
 }
+
+// A dynamic body with one circle shape of the given radius and density, centred at `center` in the
+// body's frame, spinning at 1 rad/s with its origin at rest at the world origin. Returns the shape.
+static tbShapeId MakeSpinningCircleBody(tbWorldId world, tbVec2 center, float radius, float density)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.angularVelocity = 1.0f;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.density = density;
+	tbCircle circle = {center, radius};
+	tbShapeId shape = tbCreateCircleShape(body, &shapeDef, &circle);
+	cr_assert(TB_IS_NON_NULL(shape));
+	return shape;
+}
+
+Test(world_limits, body_mass_below_flt_min_counts_as_no_mass, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a circle of radius 1e-20 m at (1e-20, 1e-20) m, density 1, has a mass of
+	// π·1e-40 kg, a subnormal float. 1/mass overflowed to ∞, the centre of mass became
+	// ∞ · (mass · centre) = ∞ · 0 = NaN, and the body's velocity NaN through ω × (c_new − c_old),
+	// before any step. A mass below FLT_MIN counts as no mass: the body moves as 1 kg about its
+	// origin without rotational inertia, as a dynamic body without mass always did.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbShapeId shape = MakeSpinningCircleBody(world, tbMakeVec2(1e-20f, 1e-20f), 1e-20f, 1.0f);
+	tbBodyId body = tbShape_GetBody(shape);
+	cr_assert_eq(s_errors, 0);
+	// subnormal spacing is 1.4e-45: the tolerance is 7 of those steps
+	cr_assert_float_eq(tbShape_GetMassData(shape).mass, 3.14159e-40f, 1e-44f,
+					   "the shape alone keeps its true mass, π·1e-40 kg");
+	cr_assert_float_eq(tbBody_GetMass(body), 1.0f, 0.0f);
+	cr_assert_float_eq(tbBody_GetRotationalInertia(body), 0.0f, 0.0f);
+	tbVec2 center = tbBody_GetLocalCenterOfMass(body);
+	cr_assert(center.x == 0.0f && center.y == 0.0f, "centre (%g, %g)", (double)center.x, (double)center.y);
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert(v.x == 0.0f && v.y == 0.0f, "v = (%g, %g)", (double)v.x, (double)v.y);
+
+	// One step of 1/60 s in 4 sub-steps under gravity (0, -10): v = -10/60 m/s, to the rounding of
+	// four additions (4·FLT_EPSILON); the origin moved by at most |v|·Δt; the spin is untouched.
+	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	v = tbBody_GetLinearVelocity(body);
+	cr_assert_float_eq(v.x, 0.0f, 0.0f);
+	cr_assert_float_eq(v.y, -10.0f / 60.0f, 4.0f * FLT_EPSILON, "v.y = %g", (double)v.y);
+	tbVec2 p = tbBody_GetPosition(body);
+	cr_assert(isfinite(p.x) && isfinite(p.y) && fabsf(p.y) <= 10.0f / 3600.0f, "(%g, %g)", (double)p.x, (double)p.y);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 1.0f, 0.0f);
+
+	// tbShape_SetDensity reaches the same rule: density 0 (no mass) to 1 (a subnormal mass).
+	tbShapeId otherShape = MakeSpinningCircleBody(world, tbMakeVec2(1e-20f, 1e-20f), 1e-20f, 0.0f);
+	tbBodyId other = tbShape_GetBody(otherShape);
+	cr_assert(tbShape_SetDensity(otherShape, 1.0f, true));
+	center = tbBody_GetLocalCenterOfMass(other);
+	v = tbBody_GetLinearVelocity(other);
+	cr_assert(center.x == 0.0f && center.y == 0.0f && v.x == 0.0f && v.y == 0.0f);
+	cr_assert_float_eq(tbBody_GetMass(other), 1.0f, 0.0f);
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, rotational_inertia_below_flt_min_counts_as_none, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// A circle of radius 1e-14 m and density 1e16 kg/m² has a normal mass, π·1e-12 kg, but a
+	// rotational inertia m r²/2 = π/2·1e-40 kg m², subnormal: 1/I overflowed to ∞, and ∞ · 0 in the
+	// contact's effective mass (the lever arm r × n is 0) gave a NaN position on landing. An inertia
+	// below FLT_MIN counts as none: the body does not turn (as with fixed rotation) and lands.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon floor = tbMakeOffsetBox(1.0f, 0.5f, tbMakeVec2(0.0f, -0.51f), tb_rot_identity); // top at y = -1 cm
+	cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(ground, &shapeDef, &floor)));
+	tbBodyId body = tbShape_GetBody(MakeSpinningCircleBody(world, tb_vec2_zero, 1e-14f, 1e16f));
+	cr_assert_eq(s_errors, 0);
+	cr_assert_float_eq(tbBody_GetMass(body), 3.14159e-12f, 1e-17f, "m = π·1e-12 kg (to 3e-6 relative)");
+	cr_assert_float_eq(tbBody_GetRotationalInertia(body), 0.0f, 0.0f);
+	for (int i = 0; i < 60; ++i)
+	{
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	}
+	tbVec2 p = tbBody_GetPosition(body);
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y), "p (%g, %g) v (%g, %g)", (double)p.x,
+			  (double)p.y, (double)v.x, (double)v.y);
+	// it fell 1 cm onto the floor: after 1 s it rests on it within the linear slop
+	cr_assert_float_eq(p.y, -0.01f, TB_LINEAR_SLOP, "y = %g", (double)p.y);
+	cr_assert(isfinite(tbBody_GetAngularVelocity(body)));
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, impulse_on_body_that_cannot_turn_ignores_an_overflowing_lever_arm, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// Found by fuzz_world: an impulse (0.005, -2.09e21) N s at (-2.09e21, -2.09e21) m on a body
+	// without shapes (1 kg, 1/I = 0). r × P = 4.4e42 overflows float, and 1/I · (r × P) = 0 · ∞
+	// stored a NaN angular velocity; a shape added next moved the centre of mass and
+	// v + ω × Δc made the linear velocity NaN too. A body that cannot turn ignores the lever arm.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	cr_assert(tbBody_ApplyLinearImpulse(body, tbMakeVec2(0.005f, -2.09e21f), tbMakeVec2(-2.09e21f, -2.09e21f), true));
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 0.0f, 0.0f, "w = %g", (double)tbBody_GetAngularVelocity(body));
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert(v.x == 0.005f && v.y == -2.09e21f, "v = P / 1 kg exactly, got (%g, %g)", (double)v.x, (double)v.y);
+
+	// the rest of the finding: a new velocity and a circle off the origin keep v exactly (ω = 0)
+	cr_assert(tbBody_SetLinearVelocity(body, tbMakeVec2(1.6f, 1.6f)));
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{1.6f, 1.6f}, 1.6f};
+	cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(body, &shapeDef, &circle)));
+	v = tbBody_GetLinearVelocity(body);
+	cr_assert(v.x == 1.6f && v.y == 1.6f, "v = (%g, %g)", (double)v.x, (double)v.y);
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, impulse_giving_a_non_finite_velocity_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// A 1 kg box (I = 1/6 kg m²): the first impulse of 3e38 N s is accepted (v = 3e38 m/s, which
+	// the step clamps), a second one would make v infinite and is refused, as are an angular
+	// impulse taking ω past FLT_MAX and an impulse whose r × P overflows. Each refusal names the
+	// function and leaves the velocity and the sleep state as they were.
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tb_vec2_zero;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId body = MakeBox(world, tb_vec2_zero, tb_vec2_zero);
+	int n = s_errors;
+	cr_assert(tbBody_ApplyLinearImpulseToCenter(body, tbMakeVec2(3e38f, 0.0f), true));
+	cr_assert_not(tbBody_ApplyLinearImpulseToCenter(body, tbMakeVec2(3e38f, 0.0f), true));
+	ExpectError(n, "tbBody_ApplyLinearImpulseToCenter", "impulse");
+	cr_assert_float_eq(tbBody_GetLinearVelocity(body).x, 3e38f, 0.0f);
+
+	// ω = 6 · 3e37 = 1.8e38 rad/s (1/I = 6 to float rounding, 1e-6 relative), then past FLT_MAX
+	cr_assert(tbBody_ApplyAngularImpulse(body, 3e37f, true));
+	cr_assert_not(tbBody_ApplyAngularImpulse(body, 3e37f, true));
+	ExpectError(n + 1, "tbBody_ApplyAngularImpulse", "impulse");
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 1.8e38f, 1.8e32f);
+
+	// r × P = 1e10 m · 1e30 N s = 1e40: not a float
+	cr_assert_not(tbBody_ApplyLinearImpulse(body, tbMakeVec2(0.0f, 1e30f), tbMakeVec2(1e10f, 0.0f), true));
+	ExpectError(n + 2, "tbBody_ApplyLinearImpulse", "impulse");
+	cr_assert_float_eq(tbBody_GetLinearVelocity(body).y, 0.0f, 0.0f);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 1.8e38f, 1.8e32f);
+
+	// a sleeping 1 g box: 3e38 N s would give 3e41 m/s; refused, and the box stays asleep
+	tbBodyDef sleeperDef = tbDefaultBodyDef();
+	sleeperDef.type = tb_dynamicBody;
+	sleeperDef.isAwake = false;
+	sleeperDef.position = tbMakeVec2(10.0f, 0.0f);
+	tbBodyId sleeper = tbCreateBody(world, &sleeperDef);
+	tbShapeDef lightDef = tbDefaultShapeDef();
+	lightDef.density = 1e-3f;
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(sleeper, &lightDef, &box)));
+	cr_assert_not(tbBody_IsAwake(sleeper));
+	cr_assert_not(tbBody_ApplyLinearImpulseToCenter(sleeper, tbMakeVec2(0.0f, 3e38f), true));
+	ExpectError(n + 3, "tbBody_ApplyLinearImpulseToCenter", "impulse");
+	cr_assert_not(tbBody_IsAwake(sleeper));
+
+	// the accepted 3e38 m/s is clamped by the step to maximumLinearSpeed, along +x
+	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert_float_eq(v.x, def.maximumLinearSpeed, 4.0f * FLT_EPSILON * def.maximumLinearSpeed);
+	cr_assert_float_eq(v.y, 0.0f, 0.0f);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, centre_of_mass_shift_on_fast_spinning_body_scales_velocity_to_float_max, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// A body without shapes spinning at 3e38 rad/s gets a circle at (1e6, 5e5) m: its centre of
+	// mass moves by Δc = (1e6, 5e5) and the origin keeps its velocity, v = ω × Δc =
+	// (-1.5e44, 3e44) m/s. That overflowed float to (-∞, ∞) (a NaN after any ∞ − ∞). The velocity
+	// is scaled down to FLT_MAX keeping its direction, (-FLT_MAX/2, FLT_MAX) to float rounding,
+	// and the step clamps it to maximumLinearSpeed along (-1, 2)/√5.
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tb_vec2_zero;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.angularVelocity = 3e38f;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{1e6f, 5e5f}, 1.0f};
+	cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(body, &shapeDef, &circle)));
+	cr_assert_eq(s_errors, 0);
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert_float_eq(v.y, FLT_MAX, 0.0f, "v = (%g, %g)", (double)v.x, (double)v.y);
+	cr_assert_float_eq(v.x, -0.5f * FLT_MAX, 1e-6f * FLT_MAX, "v = (%g, %g)", (double)v.x, (double)v.y);
+
+	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	v = tbBody_GetLinearVelocity(body);
+	float tolerance = 4.0f * FLT_EPSILON * def.maximumLinearSpeed;
+	cr_assert_float_eq(v.x, -def.maximumLinearSpeed / sqrtf(5.0f), tolerance, "v = (%g, %g)", (double)v.x, (double)v.y);
+	cr_assert_float_eq(v.y, 2.0f * def.maximumLinearSpeed / sqrtf(5.0f), tolerance);
+	tbDestroyWorld(world);
+}
+
+Test(collision_input, ray_longer_than_sqrt_flt_max_hits_what_it_passes, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: a translation of 1e20 m squared to ∞ in float (|d|² > FLT_MAX above ~1.8e19 m), and
+	// rays through circles, capsules and segments reported no hit. The ray from (-10, 0.1) along
+	// +x enters the unit circle at x = -√(1 - 0.01), the capsule (core (0, ±1), radius 0.5) at
+	// x = -0.5, the segment (0, -1)-(0.5, 1) at x = 0.275 and the unit box at x = -1; the fraction
+	// is the distance over 1e20 m (float rounding: 1e-6 relative).
+	tbCircle circle = {{0.0f, 0.0f}, 1.0f};
+	tbCapsule capsule = {{0.0f, -1.0f}, {0.0f, 1.0f}, 0.5f};
+	tbSegment segment = {{0.0f, -1.0f}, {0.5f, 1.0f}};
+	tbPolygon box = tbMakeBox(1.0f, 1.0f);
+	float length[2] = {1e20f, 3e38f};
+	for (int i = 0; i < 2; ++i)
+	{
+		tbRayCastInput ray = {{-10.0f, 0.1f}, {length[i], 0.0f}, 1.0f};
+		tbCastOutput hits[4] = {tbRayCastCircle(&ray, &circle), tbRayCastCapsule(&ray, &capsule),
+								tbRayCastSegment(&ray, &segment, false), tbRayCastPolygon(&ray, &box)};
+		float entry[4] = {-sqrtf(0.99f), -0.5f, 0.275f, -1.0f};
+		for (int k = 0; k < 4; ++k)
+		{
+			cr_assert(hits[k].hit, "shape %d missed by a ray of %g m", k, (double)length[i]);
+			cr_assert_float_eq(hits[k].point.x, entry[k], 1e-6f, "shape %d: x = %g", k, (double)hits[k].point.x);
+			cr_assert_float_eq(hits[k].point.y, 0.1f, 1e-6f);
+			float fraction = (entry[k] + 10.0f) / length[i];
+			cr_assert_float_eq(hits[k].fraction, fraction, 1e-6f * fraction, "shape %d: %g", k,
+							   (double)hits[k].fraction);
+		}
+	}
+	cr_assert_eq(s_errors, 0);
+}
+
+Test(collision_input, ray_cast_that_overflows_reports_no_hit_not_nan, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a ray from (3e38, 9.6) m with translation (-3e38, -1.78e38) m past the
+	// segment (-8.4, -8.4)-(8, 9.6). The cross products of the ray and the segment overflowed,
+	// ∞ − ∞ = NaN passed every range test (comparisons with NaN are false), and the cast reported a
+	// hit at a NaN point and fraction. The ray passes ~1.8e38 m below the segment: no hit. A hit
+	// whose numbers overflow (a ray from (3e38, 3e38), beyond TB_MAX_COORDINATE) is no hit either.
+	tbSegment segment = {{-8.4f, -8.4f}, {8.0f, 9.6f}};
+	tbRayCastInput ray = {{3e38f, 9.6f}, {-3e38f, -1.78e38f}, 1.0f};
+	tbCastOutput out = tbRayCastSegment(&ray, &segment, false);
+	cr_assert_not(out.hit, "hit at (%g, %g), fraction %g", (double)out.point.x, (double)out.point.y,
+				  (double)out.fraction);
+	tbRayCastInput diagonal = {{3e38f, 3e38f}, {-3e38f, -3e38f}, 1.0f};
+	out = tbRayCastSegment(&diagonal, &segment, false);
+	cr_assert_not(out.hit, "hit at (%g, %g), fraction %g", (double)out.point.x, (double)out.point.y,
+				  (double)out.fraction);
+	cr_assert_eq(s_errors, 0);
+}
+
+static float CountCastHit(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+{
+	(void)shapeId;
+	(void)point;
+	(void)normal;
+	*(int*)context += 1;
+	return fraction;
+}
+
+static bool CountOverlap(tbShapeId shapeId, void* context)
+{
+	(void)shapeId;
+	*(int*)context += 1;
+	return true;
+}
+
+Test(world_limits, query_placements_beyond_max_coordinate_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// The collision layer's answers are defined for placements within TB_MAX_COORDINATE: a world
+	// ray cast from beyond it (the fuzz_world finding started at (3e38, 9.6) m) is refused, as are
+	// a cast or overlap shape placed beyond it. A translation of any finite length is accepted: a
+	// ray of 3e38 m from inside the bound hits the segment.
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_kinematicBody;
+	bodyDef.position = tbMakeVec2(100.0f, 0.0f);
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbSegment segment = {{-8.4f, -8.4f}, {8.0f, 9.6f}};
+	tbShapeId shape = tbCreateSegmentShape(body, &shapeDef, &segment);
+	cr_assert(TB_IS_NON_NULL(shape));
+	tbQueryFilter filter = tbDefaultQueryFilter();
+	int hits = 0, n = s_errors;
+	tbVec2 far = tbMakeVec2(3e38f, 9.6f);
+	cr_assert_not(tbWorld_CastRay(world, far, tbMakeVec2(-3e38f, -1.78e38f), filter, CountCastHit, &hits));
+	ExpectError(n, "tbWorld_CastRay", "origin");
+	tbRayCastInput input = {far, {-3e38f, -1.78e38f}, 1.0f};
+	cr_assert_not(tbShape_RayCast(shape, &input).hit);
+	ExpectError(n + 1, "tbShape_RayCast", "input->origin");
+	tbGeometry circle = {.type = tb_circleShape, .circle = {{0.0f, 0.0f}, 0.5f}};
+	tbTransform beyond = {{2.0f * TB_MAX_COORDINATE, 0.0f}, tb_rot_identity};
+	cr_assert_not(tbWorld_CastShape(world, &circle, beyond, tbMakeVec2(-1.0f, 0.0f), filter, CountCastHit, &hits));
+	ExpectError(n + 2, "tbWorld_CastShape", "transform.p");
+	cr_assert_not(tbWorld_OverlapShape(world, &circle, beyond, filter, CountOverlap, &hits));
+	ExpectError(n + 3, "tbWorld_OverlapShape", "transform.p");
+	cr_assert_eq(hits, 0);
+
+	// From (90, 0.1) along +x: the segment, (91.6, -8.4)-(108, 9.6) in the world, reaches y = 0.1
+	// at s = 8.5/18 of its length, x = 91.6 + 16.4 · 8.5/18 = 99.3444 m (float rounding of
+	// coordinates near 100 m: 1e-4 m), at the fraction 9.3444 m / 3e38 m (1e-5 relative).
+	cr_assert(tbWorld_CastRay(world, tbMakeVec2(90.0f, 0.1f), tbMakeVec2(3e38f, 0.0f), filter, CountCastHit, &hits));
+	cr_assert_eq(hits, 1);
+	tbRayResult closest = tbWorld_CastRayClosest(world, tbMakeVec2(90.0f, 0.1f), tbMakeVec2(3e38f, 0.0f), filter);
+	cr_assert(closest.hit);
+	float x = 91.6f + 16.4f * 8.5f / 18.0f;
+	cr_assert_float_eq(closest.point.x, x, 1e-4f, "x = %g", (double)closest.point.x);
+	cr_assert_float_eq(closest.point.y, 0.1f, 1e-6f);
+	float fraction = (x - 90.0f) / 3e38f;
+	cr_assert_float_eq(closest.fraction, fraction, 1e-5f * fraction, "%g", (double)closest.fraction);
+	cr_assert_eq(s_errors, n + 4);
+	tbDestroyWorld(world);
+}
+
+Test(world_limits, restitution_rebounds_from_the_clamped_approach_speed_at_most_twice_maximum_speed,
+	 .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a body set to 3.4e38 m/s with restitution 9.6 on a contact. The approach
+	// speed that restitution reverses was measured before the speed clamp, e·Ċ0 overflowed and the
+	// step left v = (-∞, ∞), ω = NaN (NaN positions with NGS). With e = 0.5 it left 1.7e38 m/s, and
+	// warm starting re-applied that impulse after the clamp: the body flew 1e31 m in 5 steps.
+	// The step now starts from clamped velocities (Ċ0 = -maximumLinearSpeed = -4000 m/s), and the
+	// rebound speed -e·Ċ0 is at most max(|Ċ0|, 2·maximumLinearSpeed). A unit ball on the ground
+	// (one contact point through its centre: the rebound sets its velocity exactly):
+	//   from -3.4e38 m/s, e = 0.5: 0.5 · 4000 = 2000 m/s;  e = 9.6: bound 8000 m/s;
+	//   from -10 m/s, e = 3e38: bound 8000 m/s;  e = 0.5: 5 m/s, as before.
+	// Every solver method gives these, to 4 ulps.
+	float speeds[4] = {-FLT_MAX, -FLT_MAX, -10.0f, -10.0f};
+	float restitutions[4] = {0.5f, 9.6f, 3e38f, 0.5f};
+	float rebounds[4] = {2000.0f, 8000.0f, 8000.0f, 5.0f};
+	for (int method = 0; method < tb_solverMethodCount; ++method)
+	{
+		for (int k = 0; k < 4; ++k)
+		{
+			tbWorldDef def = tbDefaultWorldDef();
+			def.solver = (tbSolverMethod)method;
+			tbWorldId world = tbCreateWorld(&def);
+			tbBodyDef groundDef = tbDefaultBodyDef();
+			tbBodyId ground = tbCreateBody(world, &groundDef);
+			tbShapeDef shapeDef = tbDefaultShapeDef();
+			tbPolygon floor = tbMakeOffsetBox(10.0f, 0.5f, tbMakeVec2(0.0f, -0.5f), tb_rot_identity);
+			cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(ground, &shapeDef, &floor)));
+			tbBodyDef ballDef = tbDefaultBodyDef();
+			ballDef.type = tb_dynamicBody;
+			ballDef.position = tbMakeVec2(0.0f, 0.5f);
+			ballDef.linearVelocity = tbMakeVec2(0.0f, speeds[k]);
+			tbBodyId ball = tbCreateBody(world, &ballDef);
+			shapeDef.restitution = restitutions[k];
+			tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+			cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(ball, &shapeDef, &circle)));
+			cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+			tbVec2 v = tbBody_GetLinearVelocity(ball);
+			tbVec2 p = tbBody_GetPosition(ball);
+			cr_assert_float_eq(v.y, rebounds[k], 4.0f * FLT_EPSILON * rebounds[k], "method %d case %d: v = (%g, %g)",
+							   method, k, (double)v.x, (double)v.y);
+			cr_assert_float_eq(v.x, 0.0f, 0.0f);
+			cr_assert(isfinite(p.y) && fabsf(p.y - 0.5f) <= 0.5f, "method %d case %d: y = %g", method, k, (double)p.y);
+			tbDestroyWorld(world);
+		}
+	}
+	cr_assert_eq(s_errors, 0);
+}
+
+Test(world_limits, time_step_below_minimum_refused, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Before: any positive time step was accepted. Below ~1e-38 s the sub-step's 1/h and the
+	// angular clamp TB_MAX_ROTATION/Δt overflow float: a box resting in the ground got NaN
+	// positions from one step of 1e-40 s with the Baumgarte solver (its bias C/h), and a box
+	// spinning at 3e38 rad/s NaN velocities from a step of FLT_MIN with the soft step.
+	// TB_MIN_TIME_STEP (1e-9 s) is refused below and works at the bound for the same boxes.
+	float refused[2] = {1e-40f, FLT_MIN};
+	for (int method = 0; method < tb_solverMethodCount; ++method)
+	{
+		tbWorldDef def = tbDefaultWorldDef();
+		def.solver = (tbSolverMethod)method;
+		tbWorldId world = tbCreateWorld(&def);
+		tbBodyDef groundDef = tbDefaultBodyDef();
+		tbBodyId ground = tbCreateBody(world, &groundDef);
+		tbShapeDef shapeDef = tbDefaultShapeDef();
+		tbPolygon floor = tbMakeOffsetBox(10.0f, 0.5f, tbMakeVec2(0.0f, -0.5f), tb_rot_identity);
+		cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(ground, &shapeDef, &floor)));
+		tbBodyId resting = MakeBox(world, tbMakeVec2(-3.0f, 0.45f), tb_vec2_zero);
+		tbBodyId spinning = MakeBox(world, tbMakeVec2(3.0f, 0.45f), tbMakeVec2(1.0f, -1.0f));
+		cr_assert(tbBody_SetAngularVelocity(spinning, 3e38f));
+		for (int k = 0; k < 2; ++k)
+		{
+			int n = s_errors;
+			cr_assert_not(tbWorld_Step(world, refused[k], 4));
+			ExpectError(n, "tbWorld_Step", "TB_MIN_TIME_STEP");
+		}
+		tbBodyId bodies[2] = {resting, spinning};
+		for (int step = 0; step < 3; ++step)
+		{
+			cr_assert(tbWorld_Step(world, TB_MIN_TIME_STEP, TB_MAX_SUB_STEPS));
+			for (int i = 0; i < 2; ++i)
+			{
+				tbVec2 p = tbBody_GetPosition(bodies[i]);
+				tbVec2 v = tbBody_GetLinearVelocity(bodies[i]);
+				float w = tbBody_GetAngularVelocity(bodies[i]);
+				cr_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y) && isfinite(w),
+						  "method %d body %d: p (%g, %g) v (%g, %g) w %g", method, i, (double)p.x, (double)p.y,
+						  (double)v.x, (double)v.y, (double)w);
+				// in 3 ns a box moves by at most its push out of the 5 cm overlap (Baumgarte removes a
+				// fixed share of it per sub-step whatever h is): 0.45 m ≤ y ≤ 0.5 m, to 1 mm
+				cr_assert(p.y >= 0.449f && p.y <= 0.501f, "method %d body %d: y = %g", method, i, (double)p.y);
+			}
+		}
+		tbDestroyWorld(world);
+	}
+}

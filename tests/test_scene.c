@@ -298,6 +298,8 @@ static const BadFile s_badFiles[] = {
 	// an untrusted file must not hang the program (2^31 − 1 sub-steps ran for minutes a step)
 	{"{\"sub_steps\": 2147483647}", "sub_steps: must be 1..64"},
 	{"{\"time_step\": 1e30}", "time_step: must be at most 1"},
+	// below TB_MIN_TIME_STEP every step would be refused (1/h overflowed float: NaN positions)
+	{"{\"time_step\": 1e-40}", "time_step: must be at least 1e-09"},
 	{"{\"steps\": 2000000000}", "steps: must be 0..1000000"},
 	// the library refuses these shapes: the file is refused and the item named (before: a box too
 	// thin to be a polygon in float loaded as a shapeless body, and the run exited 0)

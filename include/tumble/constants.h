@@ -72,6 +72,11 @@
 /// stepped as many calls; a single step of it would move bodies by maximumLinearSpeed × Δt.
 #define TB_MAX_TIME_STEP 1.0f
 
+/// Smallest time step tbWorld_Step accepts, 1e-9 s. Below ~1e-38 s the sub-step's 1/h and the
+/// angular speed bound TB_MAX_ROTATION/Δt overflow float (NaN positions); the bound keeps a wide
+/// margin and is far below any useful step: in 1 ns a body at 1000 m/s moves 1 µm.
+#define TB_MIN_TIME_STEP 1.0e-9f
+
 /// Largest sub-step count tbWorld_Step accepts, 64 (4 is typical, 16 the most any benchmark
 /// uses): the cost of a step is linear in it, and an untrusted scene must not hang a program.
 #define TB_MAX_SUB_STEPS 64
