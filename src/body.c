@@ -131,6 +131,7 @@ void tbWakeBody(tbWorld* world, tbBody* body)
 	}
 	body->sleepTime = 0.0f;
 	tbAddToAwakeSet(world, body, (int)(body - world->bodies));
+	tbWakeJointedBodies(world, body); // joined bodies wake together (joint.c)
 }
 
 void tbSleepBody(tbWorld* world, tbBody* body)
@@ -196,6 +197,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->isBullet = def->isBullet;
 	body->headShapeId = TB_NULL_INDEX;
 	body->headContactKey = TB_NULL_INDEX;
+	body->headJointKey = TB_NULL_INDEX;
 	body->awakeIndex = TB_NULL_INDEX;
 	body->solverIndex = TB_NULL_INDEX;
 	body->mass = 0.0f;
@@ -228,6 +230,7 @@ void tbDestroyBody(tbBodyId bodyId)
 	{
 		return;
 	}
+	tbDestroyBodyJoints(world, body);
 	tbDestroyBodyContacts(world, body, true);
 	int shapeId = body->headShapeId;
 	while (shapeId != TB_NULL_INDEX)

@@ -12,6 +12,7 @@
 // Kept as the textbook reference and for measurement: the bias adds energy (stacks jitter,
 // pyramids never rest, deep overlap is resolved explosively), which is what the soft step and
 // NGS methods fix in two different ways.
+#include "joint.h"
 #include "solver.h"
 
 void tbBaumgartePrepare(tbStepContext* context)
@@ -26,6 +27,7 @@ void tbBaumgarteSubStep(tbStepContext* context)
 	int velocityIterations = tbMaxInt(context->world->def.velocityIterations, 1);
 	for (int i = 0; i < velocityIterations; ++i)
 	{
+		tbSolveJoints(context, true); // joint.c: the same Baumgarte bias
 		tbSolveContacts(context, tb_biasBaumgarte);
 	}
 	tbIntegratePositions(context);

@@ -41,6 +41,7 @@
 // normal held fixed (2.4 rotates the reference face normal with its body and re-derives the
 // point from local coordinates; the two agree to second order in the step's rotation), and the
 // contact order is Tumble's (island.c), not 2.4's island traversal.
+#include "joint.h"
 #include "solver.h"
 
 #include "tumble/constants.h"
@@ -582,6 +583,7 @@ void tbNGSSubStep(tbStepContext* context)
 	int velocityIterations = tbMaxInt(def->velocityIterations, 1);
 	for (int i = 0; i < velocityIterations; ++i)
 	{
+		tbSolveJoints(context, true); // joint.c: velocity rows with a Baumgarte bias, no position pass
 		tbSolveVelocityConstraints(context, infos, false);
 	}
 	tbIntegratePositions(context);

@@ -26,6 +26,7 @@
 //
 // Rejected: rigid contacts with position projection after each sub-step (fast, but it flings
 // deeply overlapping bodies apart: see the overlap recovery scene in STRESS.md).
+#include "joint.h"
 #include "solver.h"
 
 #include "tumble/constants.h"
@@ -114,11 +115,13 @@ void tbSoftPrepare(tbStepContext* context)
 
 void tbSoftSubStep(tbStepContext* context)
 {
+	tbSolveJoints(context, true); // joint.c: soft positional correction
 	tbSolveContacts(context, tb_biasSoft);
 	tbIntegratePositions(context);
 	int relaxIterations = context->world->def.relaxIterations;
 	for (int i = 0; i < relaxIterations; ++i)
 	{
+		tbSolveJoints(context, false); // rigid, no correction
 		tbSolveContacts(context, tb_biasRelax);
 	}
 }

@@ -46,6 +46,7 @@ tbDebugDraw tbDefaultDebugDraw(void)
 	tbDebugDraw draw;
 	memset(&draw, 0, sizeof(draw));
 	draw.drawShapes = true;
+	draw.drawJoints = true;
 	return draw;
 }
 
@@ -231,6 +232,7 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->moveEvents, w->moveCapacity);
 	TB_ARRAY_FREE(w->pendingEndEvents, w->pendingEndCapacity);
 	TB_ARRAY_FREE(w->pendingSensorEndEvents, w->pendingSensorEndCapacity);
+	tbFreeJoints(w);
 }
 
 void tbDestroyWorld(tbWorldId worldId)
