@@ -165,6 +165,13 @@ static void tbSolveDistanceSpring(tbJoint* joint, tbJointBodies* b, tbVec2 rA, t
 	}
 }
 
+// Soft when the spring is on, unless the limits pin the length anyway.
+bool tbDistanceJointIsRigid(const tbJoint* joint)
+{
+	const tbDistanceJoint* d = &joint->distance;
+	return !(d->enableSpring && (d->minLength < d->maxLength || d->enableLimit == false));
+}
+
 void tbSolveDistanceJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 {
 	tbDistanceJoint* d = &joint->distance;
@@ -174,8 +181,7 @@ void tbSolveDistanceJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	float length;
 	tbVec2 axis = tbGetLengthAndNormalize(&length, separation);
 
-	// Soft when the spring is on, unless the limits pin the length anyway.
-	if (d->enableSpring && (d->minLength < d->maxLength || d->enableLimit == false))
+	if (tbDistanceJointIsRigid(joint) == false)
 	{
 		tbSolveDistanceSpring(joint, &b, rA, rB, axis, length, context);
 		if (d->enableLimit)
@@ -185,7 +191,7 @@ void tbSolveDistanceJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 							   useBias);
 		}
 	}
-	else
+	else if (joint->solvedInTree == false) // a rigid row in a tree is solved there (joint_tree.c)
 	{
 		tbSoftness soft = {0.0f, 1.0f, 0.0f};
 		if (useBias)
@@ -199,6 +205,18 @@ void tbSolveDistanceJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 		tbApplyJointImpulse(joint, &b, rA, rB, tbMulSV(impulse, axis), 0.0f);
 	}
 	tbStoreJointBodies(&b);
+}
+
+// The rigid row along the line: Ċ = u·(vB + ωB × rB − vA − ωA × rA).
+int tbDistanceJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows)
+{
+	tbVec2 rA, rB, separation;
+	tbJointAnchors(joint, b, &rA, &rB, &separation);
+	float length;
+	tbVec2 u = tbGetLengthAndNormalize(&length, separation);
+	tbSetJointRow(rows, 0, (tbVec3Row){-u.x, -u.y, -tbCross(rA, u)}, (tbVec3Row){u.x, u.y, tbCross(rB, u)},
+				  length - joint->distance.length, &joint->distance.impulse);
+	return 1;
 }
 
 static tbVec2 tbDistanceAxis(const tbWorld* world, const tbJoint* joint, float* length)

@@ -476,6 +476,7 @@ void tbFreeJoints(tbWorld* world)
 	TB_ARRAY_FREE(world->solverJoints, world->solverJointCapacity);
 	TB_ARRAY_FREE(world->jointEvents, world->jointEventCapacity);
 	TB_ARRAY_FREE(world->jointWakeStack, world->jointWakeCapacity);
+	tbFreeJointTrees(world);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -911,6 +912,8 @@ void tbPrepareJoints(tbStepContext* context)
 			continue;
 		}
 		tbPrepareJointBase(joint, context);
+		joint->treeNode = TB_NULL_INDEX;
+		joint->solvedInTree = false;
 		switch (joint->type)
 		{
 			case tb_distanceJoint:
@@ -936,6 +939,7 @@ void tbPrepareJoints(tbStepContext* context)
 		}
 		world->solverJoints[world->solverJointCount++] = id;
 	}
+	tbBuildJointTrees(context);
 }
 
 void tbWarmStartJoints(tbStepContext* context)
@@ -970,9 +974,12 @@ void tbWarmStartJoints(tbStepContext* context)
 	}
 }
 
+// The joints' springs, motors and limits row by row (and the equality rows of joints outside the
+// trees), then the trees' equality rows exactly (joint_tree.c).
 void tbSolveJoints(tbStepContext* context, bool useBias)
 {
 	tbWorld* world = context->world;
+	tbFactorJointTrees(context, useBias);
 	for (int i = 0; i < world->solverJointCount; ++i)
 	{
 		tbJoint* joint = world->joints + world->solverJoints[i];
@@ -999,6 +1006,70 @@ void tbSolveJoints(tbStepContext* context, bool useBias)
 			default:
 				break;
 		}
+	}
+	tbSolveJointTrees(context);
+}
+
+void tbSetJointRow(tbJointRows* rows, int row, tbVec3Row a, tbVec3Row b, float C, float* impulse)
+{
+	float* ja = rows->JA + 3 * row;
+	float* jb = rows->JB + 3 * row;
+	ja[0] = a.x;
+	ja[1] = a.y;
+	ja[2] = a.w;
+	jb[0] = b.x;
+	jb[1] = b.y;
+	jb[2] = b.w;
+	rows->bias[row] = C;
+	rows->impulse[row] = impulse;
+}
+
+int tbJointEqualityRowCount(const tbJoint* joint)
+{
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			return tbDistanceJointIsRigid(joint) ? 1 : 0;
+		case tb_prismaticJoint:
+		case tb_revoluteJoint:
+			return 2;
+		case tb_weldJoint:
+			return (joint->weld.linearHertz == 0.0f ? 2 : 0) + (joint->weld.angularHertz == 0.0f ? 1 : 0);
+		case tb_wheelJoint:
+			return 1;
+		default:
+			return 0;
+	}
+}
+
+void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows, bool useBias)
+{
+	int count = 0;
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			count = tbDistanceJointEqualityRows(joint, b, rows);
+			break;
+		case tb_prismaticJoint:
+			count = tbPrismaticJointEqualityRows(joint, b, rows);
+			break;
+		case tb_revoluteJoint:
+			count = tbRevoluteJointEqualityRows(joint, b, rows);
+			break;
+		case tb_weldJoint:
+			count = tbWeldJointEqualityRows(joint, b, rows);
+			break;
+		case tb_wheelJoint:
+			count = tbWheelJointEqualityRows(joint, b, rows);
+			break;
+		default:
+			break;
+	}
+	// The rows hold their position error C; the biased pass corrects β·C, the relaxing pass nothing.
+	float beta = useBias ? joint->constraintSoftness.biasRate : 0.0f;
+	for (int r = 0; r < count; ++r)
+	{
+		rows->bias[r] *= beta;
 	}
 }
 

@@ -116,6 +116,8 @@ typedef struct tbJoint
 	tbTransform frameB;
 	tbVec2 deltaCenter;	   ///< m, centre of mass of B minus that of A at the start of the step
 	tbSoftness constraintSoftness; ///< positional correction of the biased pass (method dependent)
+	int treeNode;		   ///< node of its joint tree this step (joint_tree.c), or TB_NULL_INDEX
+	bool solvedInTree;	   ///< this pass: its equality rows are solved by its tree, not row by row
 
 	union
 	{
@@ -127,6 +129,22 @@ typedef struct tbJoint
 		tbWheelJoint wheel;
 	};
 } tbJoint;
+
+/// A joint's equality rows for one pass (joint_tree.c): Ċ = JA·(vA, ωA) + JB·(vB, ωB) per row,
+/// the bias of the pass and where each row's accumulated impulse lives.
+typedef struct tbJointRows
+{
+	float JA[9]; ///< rows × 3, row-major
+	float JB[9];
+	float bias[3]; ///< m/s or rad/s: β·C in the biased pass, 0 in the relaxing pass
+	float* impulse[3];
+} tbJointRows;
+
+/// One Jacobian row against one body: (x, y) linear, w angular.
+typedef struct tbVec3Row
+{
+	float x, y, w;
+} tbVec3Row;
 
 /// The velocities and position deltas of a joint's two bodies for one solve, loaded once and
 /// stored once (the stand-in has zero inverse mass, so storing it back changes nothing).
@@ -141,12 +159,30 @@ typedef struct tbJointBodies
 tbJointBodies tbLoadJointBodies(const tbStepContext* context, const tbJoint* joint);
 void tbStoreJointBodies(tbJointBodies* bodies);
 
+/// Set row `row` of a rows block: JA = (ax, ay, aw), JB = (bx, by, bw), position error C (the
+/// pass's bias is applied later), accumulated impulse at `impulse`.
+void tbSetJointRow(tbJointRows* rows, int row, tbVec3Row a, tbVec3Row b, float C, float* impulse);
+
 /// Current anchors (relative to the centres of mass, rotated with the bodies since the start of
 /// the step) and the vector from anchor A to anchor B.
 void tbJointAnchors(const tbJoint* joint, const tbJointBodies* b, tbVec2* rA, tbVec2* rB, tbVec2* d);
 
 /// Apply impulse P at the anchors (B receives +P, A −P) plus an angular impulse L (B +L, A −L).
 void tbApplyJointImpulse(const tbJoint* joint, tbJointBodies* b, tbVec2 rA, tbVec2 rB, tbVec2 P, float L);
+
+/// Number of equality rows (0–3): the rows a joint tree solves exactly.
+int tbJointEqualityRowCount(const tbJoint* joint);
+void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows, bool useBias);
+
+// joint_tree.c: the equality rows of each tree of joined bodies solved exactly.
+/// Once per step, after the joints are prepared: the trees (spanning trees of the joint graph of
+/// awake dynamic bodies).
+void tbBuildJointTrees(tbStepContext* context);
+/// Each pass, before the joints' other rows: rows and factorisation with the current anchors.
+void tbFactorJointTrees(tbStepContext* context, bool useBias);
+/// Each pass, after the joints' other rows: the exact impulses of the tree rows.
+void tbSolveJointTrees(tbStepContext* context);
+void tbFreeJointTrees(tbWorld* world);
 
 // joint.c: the step's pieces (solver.c, solver_soft.c, solver_baumgarte.c, solver_ngs.c call them).
 void tbPrepareJoints(tbStepContext* context);
@@ -219,6 +255,9 @@ void tbWarmStartDistanceJoint(tbJoint* joint, tbStepContext* context);
 void tbSolveDistanceJoint(tbJoint* joint, tbStepContext* context, bool useBias);
 void tbGetDistanceJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque);
 void tbDrawDistanceJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint);
+int tbDistanceJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows);
+/// Rigid: no spring, or the limits pin the length.
+bool tbDistanceJointIsRigid(const tbJoint* joint);
 
 void tbPrepareMotorJoint(tbJoint* joint, const tbStepContext* context);
 void tbWarmStartMotorJoint(tbJoint* joint, tbStepContext* context);
@@ -231,21 +270,25 @@ void tbWarmStartPrismaticJoint(tbJoint* joint, tbStepContext* context);
 void tbSolvePrismaticJoint(tbJoint* joint, tbStepContext* context, bool useBias);
 void tbGetPrismaticJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque);
 void tbDrawPrismaticJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint);
+int tbPrismaticJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows);
 
 void tbPrepareRevoluteJoint(tbJoint* joint, const tbStepContext* context);
 void tbWarmStartRevoluteJoint(tbJoint* joint, tbStepContext* context);
 void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias);
 void tbGetRevoluteJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque);
 void tbDrawRevoluteJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint);
+int tbRevoluteJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows);
 
 void tbPrepareWeldJoint(tbJoint* joint, const tbStepContext* context);
 void tbWarmStartWeldJoint(tbJoint* joint, tbStepContext* context);
 void tbSolveWeldJoint(tbJoint* joint, tbStepContext* context, bool useBias);
 void tbGetWeldJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque);
 void tbDrawWeldJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint);
+int tbWeldJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows);
 
 void tbPrepareWheelJoint(tbJoint* joint, const tbStepContext* context);
 void tbWarmStartWheelJoint(tbJoint* joint, tbStepContext* context);
 void tbSolveWheelJoint(tbJoint* joint, tbStepContext* context, bool useBias);
 void tbGetWheelJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque);
 void tbDrawWheelJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint);
+int tbWheelJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows);

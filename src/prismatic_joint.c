@@ -187,6 +187,11 @@ void tbSolvePrismaticJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	tbJointBodies b = tbLoadJointBodies(context, joint);
 	tbAxisFrame g = tbMakeAxisFrame(joint, &b);
 	tbSolvePrismaticAxis(joint, &b, &g, context, useBias);
+	if (joint->solvedInTree)
+	{
+		tbStoreJointBodies(&b); // the line and the angle are solved with its tree (joint_tree.c)
+		return;
+	}
 
 	// The block across the axis and in angle.
 	float mA = joint->invMassA, mB = joint->invMassB, iA = joint->invIA, iB = joint->invIB;
@@ -215,6 +220,19 @@ void tbSolvePrismaticJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	p->impulse = tbAdd(p->impulse, impulse);
 	tbApplyAxisImpulse(joint, &b, &g, 0.0f, impulse.x, impulse.y);
 	tbStoreJointBodies(&b);
+}
+
+// The rows across the axis and in angle (see the header comment).
+int tbPrismaticJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows)
+{
+	tbAxisFrame g = tbMakeAxisFrame(joint, b);
+	tbRot qA = tbMulRot(b->sA->deltaRotation, joint->frameA.q);
+	tbRot qB = tbMulRot(b->sB->deltaRotation, joint->frameB.q);
+	tbSetJointRow(rows, 0, (tbVec3Row){-g.perp.x, -g.perp.y, -g.s1}, (tbVec3Row){g.perp.x, g.perp.y, g.s2},
+				  tbDot(g.perp, g.d), &joint->prismatic.impulse.x);
+	tbSetJointRow(rows, 1, (tbVec3Row){0.0f, 0.0f, -1.0f}, (tbVec3Row){0.0f, 0.0f, 1.0f}, tbRelativeAngle(qA, qB),
+				  &joint->prismatic.impulse.y);
+	return 2;
 }
 
 void tbGetPrismaticJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque)

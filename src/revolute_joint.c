@@ -187,6 +187,11 @@ void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	tbRevoluteJoint* r = &joint->revolute;
 	tbJointBodies b = tbLoadJointBodies(context, joint);
 	tbSolveRevoluteAngular(joint, &b, context, useBias);
+	if (joint->solvedInTree)
+	{
+		tbStoreJointBodies(&b); // the pin is solved with its tree (joint_tree.c)
+		return;
+	}
 
 	tbVec2 rA, rB, separation;
 	tbJointAnchors(joint, &b, &rA, &rB, &separation);
@@ -210,6 +215,18 @@ void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	r->linearImpulse = tbAdd(r->linearImpulse, impulse);
 	tbApplyJointImpulse(joint, &b, rA, rB, impulse, 0.0f);
 	tbStoreJointBodies(&b);
+}
+
+// The pin's two rows: Ċ = vB + ωB × rB − vA − ωA × rA, with ω × r = ω·(−r.y, r.x).
+int tbRevoluteJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows)
+{
+	tbVec2 rA, rB, separation;
+	tbJointAnchors(joint, b, &rA, &rB, &separation);
+	tbSetJointRow(rows, 0, (tbVec3Row){-1.0f, 0.0f, rA.y}, (tbVec3Row){1.0f, 0.0f, -rB.y}, separation.x,
+				  &joint->revolute.linearImpulse.x);
+	tbSetJointRow(rows, 1, (tbVec3Row){0.0f, -1.0f, -rA.x}, (tbVec3Row){0.0f, 1.0f, rB.x}, separation.y,
+				  &joint->revolute.linearImpulse.y);
+	return 2;
 }
 
 void tbGetRevoluteJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque)

@@ -81,7 +81,8 @@ void tbSolveWeldJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	tbJointBodies b = tbLoadJointBodies(context, joint);
 	float mA = joint->invMassA, mB = joint->invMassB, iA = joint->invIA, iB = joint->invIB;
 
-	// Angular row.
+	// Angular row (a rigid one is solved with its tree when the joint is in one, joint_tree.c).
+	if (joint->solvedInTree == false || w->angularHertz > 0.0f)
 	{
 		tbSoftness soft = {0.0f, 1.0f, 0.0f};
 		if (useBias || w->angularHertz > 0.0f)
@@ -99,6 +100,7 @@ void tbSolveWeldJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	}
 
 	// Linear rows.
+	if (joint->solvedInTree == false || w->linearHertz > 0.0f)
 	{
 		tbSoftness soft = {0.0f, 1.0f, 0.0f};
 		if (useBias || w->linearHertz > 0.0f)
@@ -120,6 +122,30 @@ void tbSolveWeldJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 		tbApplyJointImpulse(joint, &b, rA, rB, impulse, 0.0f);
 	}
 	tbStoreJointBodies(&b);
+}
+
+// The rigid rows: the angle, Ċ = ωB − ωA, and the pin, as the revolute joint's.
+int tbWeldJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows)
+{
+	tbWeldJoint* w = &joint->weld;
+	int count = 0;
+	if (w->angularHertz == 0.0f)
+	{
+		tbRot qA = tbMulRot(b->sA->deltaRotation, joint->frameA.q);
+		tbRot qB = tbMulRot(b->sB->deltaRotation, joint->frameB.q);
+		tbSetJointRow(rows, count++, (tbVec3Row){0.0f, 0.0f, -1.0f}, (tbVec3Row){0.0f, 0.0f, 1.0f},
+					  tbRelativeAngle(qA, qB), &w->angularImpulse);
+	}
+	if (w->linearHertz == 0.0f)
+	{
+		tbVec2 rA, rB, C;
+		tbJointAnchors(joint, b, &rA, &rB, &C);
+		tbSetJointRow(rows, count++, (tbVec3Row){-1.0f, 0.0f, rA.y}, (tbVec3Row){1.0f, 0.0f, -rB.y}, C.x,
+					  &w->linearImpulse.x);
+		tbSetJointRow(rows, count++, (tbVec3Row){0.0f, -1.0f, -rA.x}, (tbVec3Row){0.0f, 1.0f, rB.x}, C.y,
+					  &w->linearImpulse.y);
+	}
+	return count;
 }
 
 void tbGetWeldJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque)

@@ -121,6 +121,11 @@ void tbSolveWheelJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	tbJointBodies b = tbLoadJointBodies(context, joint);
 	tbAxisFrame g = tbMakeAxisFrame(joint, &b);
 	tbSolveWheelAxis(joint, &b, &g, context, useBias);
+	if (joint->solvedInTree)
+	{
+		tbStoreJointBodies(&b); // the line is solved with its tree (joint_tree.c)
+		return;
+	}
 
 	// Point on line.
 	tbSoftness soft = {0.0f, 1.0f, 0.0f};
@@ -136,6 +141,15 @@ void tbSolveWheelJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	w->perpImpulse += impulse;
 	tbApplyAxisImpulse(joint, &b, &g, 0.0f, impulse, 0.0f);
 	tbStoreJointBodies(&b);
+}
+
+// The point-on-line row (see the header comment).
+int tbWheelJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows)
+{
+	tbAxisFrame g = tbMakeAxisFrame(joint, b);
+	tbSetJointRow(rows, 0, (tbVec3Row){-g.perp.x, -g.perp.y, -g.s1}, (tbVec3Row){g.perp.x, g.perp.y, g.s2},
+				  tbDot(g.perp, g.d), &joint->wheel.perpImpulse);
+	return 1;
 }
 
 void tbGetWheelJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque)

@@ -36,6 +36,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.positionIterations = 3;
 	def.relaxIterations = 1;
 	def.enableWideSolver = true;
+	def.enableJointTrees = true;
 	def.enableWarmStarting = true;
 	def.internalValue = TB_WORLD_DEF_MAGIC;
 	return def;

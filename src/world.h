@@ -185,6 +185,10 @@ typedef struct tbWorld
 	int jointWakeCount, jointWakeCapacity;
 	bool jointWakeActive;
 	float jointInvH; ///< 1/s, inverse sub-step of the last step: joint force = impulse·jointInvH
+	struct tbTreeNode* jointTreeNodes; ///< joint_tree.c: this step's trees, node by node
+	int jointTreeNodeCount, jointTreeNodeCapacity;
+	struct tbTree* jointTrees;
+	int jointTreeCount, jointTreeCapacity;
 
 	tbHashSet pairSet; ///< shape pairs that have a contact
 	tbBroadPhase broadPhase;

@@ -319,35 +319,48 @@ Test(joint, wheel_suspension_frequency)
 	tbDestroyWorld(world);
 }
 
-// A beam of length L and mass m welded at its left end to a static wall. Each soft row settles
-// where its impulse stops changing: C = −λ/(m_eff·h·ω²), i.e. a spring of stiffness m_eff·ω² per
-// row (ω = 2π·60 Hz, the default joint hertz, under the ¼-sub-step-rate cap). The linear row at
-// the anchor carries m·g with m_eff = 1/K_yy = m/4 (K_yy = 1/m + (L/2)²/I_cm, I_cm = m·L²/12): the
-// anchor drops 4·g/ω². The angular row carries m·g·L/2 with m_eff = I_cm: the beam turns by
-// 6·g/(L·ω²). Tip sag = 4·g/ω² + L·6·g/(L·ω²) = 10·g/ω² = 0.70 mm. The measured sag must stay
-// below that bound plus 10 % (float rounding and the settling left after 3 s), and above 90 % of it
-// (so the derivation is what explains it).
+// A beam of length L and mass m welded at its left end to a static wall.
+// Row by row (enableJointTrees = false), each soft row settles where its impulse stops changing:
+// C = −λ/(m_eff·h·ω²), a spring of stiffness m_eff·ω² per row (ω = 2π·60 Hz, the default joint
+// hertz, under the ¼-sub-step-rate cap). The linear row at the anchor carries m·g with
+// m_eff = 1/K_yy = m/4 (K_yy = 1/m + (L/2)²/I_cm, I_cm = m·L²/12): the anchor drops 4·g/ω². The
+// angular row carries m·g·L/2 with m_eff = I_cm: the beam turns by 6·g/(L·ω²). Tip sag =
+// 4·g/ω² + L·6·g/(L·ω²) = 10·g/ω² = 0.70 mm; measured within 10 % (rounding, settling after 3 s).
+// In a joint tree (the default) the rows are rigid with a bias β·C and no compliance: they settle
+// at C = 0, so the sag is float rounding at the 2 m scale: below 10 µm.
 Test(joint, weld_cantilever_sag)
 {
 	const float L = 2.0f, g = 10.0f;
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -g));
-	tbBodyId wall = MakeStatic(world, tb_vec2_zero);
-	tbBodyId beam = MakeBox(world, tbMakeVec2(0.5f * L, 0.0f), 0.5f * L, 0.1f, 5.0f);
-	tbWeldJointDef def = tbDefaultWeldJointDef();
-	def.base.bodyIdA = wall;
-	def.base.bodyIdB = beam;
-	def.base.localFrameB.p = tbMakeVec2(-0.5f * L, 0.0f);
-	tbCreateWeldJoint(world, &def);
-	for (int i = 0; i < 180; ++i)
+	for (int trees = 0; trees < 2; ++trees)
 	{
-		tbWorld_Step(world, DT, SUB_STEPS);
+		tbWorldDef worldDef = tbDefaultWorldDef();
+		worldDef.enableJointTrees = trees != 0;
+		tbWorldId world = tbCreateWorld(&worldDef);
+		tbBodyId wall = MakeStatic(world, tb_vec2_zero);
+		tbBodyId beam = MakeBox(world, tbMakeVec2(0.5f * L, 0.0f), 0.5f * L, 0.1f, 5.0f);
+		tbWeldJointDef def = tbDefaultWeldJointDef();
+		def.base.bodyIdA = wall;
+		def.base.bodyIdB = beam;
+		def.base.localFrameB.p = tbMakeVec2(-0.5f * L, 0.0f);
+		tbCreateWeldJoint(world, &def);
+		for (int i = 0; i < 180; ++i)
+		{
+			tbWorld_Step(world, DT, SUB_STEPS);
+		}
+		float sag = -tbBody_GetWorldPoint(beam, tbMakeVec2(0.5f * L, 0.0f)).y;
+		if (trees)
+		{
+			cr_expect(fabsf(sag) < 1e-5f, "tree: tip sag %.4f mm", (double)(1000.0f * sag));
+		}
+		else
+		{
+			float omega = 2.0f * TB_PI * 60.0f;
+			float derived = 10.0f * g / (omega * omega);
+			cr_expect(sag < 1.1f * derived && sag > 0.9f * derived, "row by row: tip sag %.3f mm, derived %.3f mm",
+					  (double)(1000.0f * sag), (double)(1000.0f * derived));
+		}
+		tbDestroyWorld(world);
 	}
-	float omega = 2.0f * TB_PI * 60.0f;
-	float bound = 10.0f * g / (omega * omega);
-	float sag = -tbBody_GetWorldPoint(beam, tbMakeVec2(0.5f * L, 0.0f)).y;
-	cr_expect(sag < 1.1f * bound, "tip sag %.3f mm, bound %.3f mm", (double)(1000.0f * sag), (double)(1000.0f * bound));
-	cr_expect(sag > 0.9f * bound, "tip sag %.3f mm, derived %.3f mm", (double)(1000.0f * sag), (double)(1000.0f * bound));
-	tbDestroyWorld(world);
 }
 
 // A motor joint from a static body pulls a box onto a target frame with critically damped linear
@@ -821,4 +834,90 @@ Test(joint, determinism_with_joints)
 				 (unsigned long long)second);
 	cr_expect_eq(RunJointedScene(tb_broadPhaseSortAndSweep, 240), first);
 	cr_expect_eq(RunJointedScene(tb_broadPhaseBruteForce, 240), first);
+}
+
+/// Relative stretch of a chain: the sum of its joints' anchor gaps over the rest length.
+static float ChainStretch(const tbJointId* joints, int count, float restLength)
+{
+	float gaps = 0.0f;
+	for (int i = 0; i < count; ++i)
+	{
+		tbVec2 a = tbBody_GetWorldPoint(tbJoint_GetBodyA(joints[i]), tbJoint_GetLocalFrameA(joints[i]).p);
+		tbVec2 b = tbBody_GetWorldPoint(tbJoint_GetBodyB(joints[i]), tbJoint_GetLocalFrameB(joints[i]).p);
+		gaps += tbDistance(a, b);
+	}
+	return gaps / restLength;
+}
+
+/// Box2D v3's "Ball & Chain" with the issue's numbers: 30 capsule links 0.5 m long (pivot to
+/// pivot), joined by revolute joints, from a static pivot, holding a ball 100 times heavier than a
+/// link, released horizontally. Returns the largest stretch over `steps` steps.
+static float SwingBallAndChain(int subSteps, bool trees, int steps)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	worldDef.enableJointTrees = trees;
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	const int count = 30;
+	const float hx = 0.25f, top = 20.0f;
+	tbCapsule capsule = {{-hx, 0.0f}, {hx, 0.0f}, 0.05f};
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.density = 20.0f;
+	shapeDef.filter.categoryBits = 1; // links do not collide with each other, only with the ball
+	shapeDef.filter.maskBits = 2;
+	tbJointId joints[31];
+	tbBodyId previous = ground;
+	float linkMass = 0.0f;
+	tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
+	for (int i = 0; i <= count; ++i)
+	{
+		tbVec2 pivot = {2.0f * hx * (float)i, top};
+		tbBodyDef bodyDef = tbDefaultBodyDef();
+		bodyDef.type = tb_dynamicBody;
+		tbBodyId body;
+		if (i < count)
+		{
+			bodyDef.position = tbMakeVec2(pivot.x + hx, top);
+			body = tbCreateBody(world, &bodyDef);
+			tbCreateCapsuleShape(body, &shapeDef, &capsule);
+			linkMass = tbBody_GetMass(body);
+		}
+		else
+		{
+			const float radius = 0.5f;
+			bodyDef.position = tbMakeVec2(pivot.x + radius, top);
+			body = tbCreateBody(world, &bodyDef);
+			tbShapeDef ballDef = shapeDef;
+			ballDef.density = 100.0f * linkMass / (TB_PI * radius * radius);
+			ballDef.filter.categoryBits = 2;
+			ballDef.filter.maskBits = 1;
+			tbCircle circle = {{0.0f, 0.0f}, radius};
+			tbCreateCircleShape(body, &ballDef, &circle);
+			cr_assert_float_eq(tbBody_GetMass(body), 100.0f * linkMass, 1e-3f * linkMass);
+		}
+		def.base.bodyIdA = previous;
+		def.base.bodyIdB = body;
+		def.base.localFrameA.p = tbBody_GetLocalPoint(previous, pivot);
+		def.base.localFrameB.p = tbBody_GetLocalPoint(body, pivot);
+		joints[i] = tbCreateRevoluteJoint(world, &def);
+		previous = body;
+	}
+	float worst = 0.0f;
+	for (int i = 0; i < steps; ++i)
+	{
+		tbWorld_Step(world, DT, subSteps);
+		worst = fmaxf(worst, ChainStretch(joints, count + 1, 2.0f * hx * (float)count));
+	}
+	tbDestroyWorld(world);
+	return worst;
+}
+
+// The issue asks for less than 2 % stretch at 4 sub-steps, where Box2D v3.2 stretches 9.6 %.
+// Row by row this set-up peaks at 14 % here too (each light link's soft pin settles at the load
+// over its own small effective mass); solved exactly over the chain (joint trees, the default)
+// the pins are rigid and the peak stretch over 5 s of swinging is a few hundredths of a percent.
+Test(joint, chain_holds_a_ball_100_times_heavier)
+{
+	float stretch = SwingBallAndChain(4, true, 300);
+	cr_expect(stretch < 0.02f, "peak stretch %.3f %%", (double)(100.0f * stretch));
 }

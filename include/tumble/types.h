@@ -68,6 +68,8 @@ typedef struct tbWorldDef
 	bool enableWarmStarting;		///< default true
 	bool enableWideSolver;			///< soft and Baumgarte: contacts graph-coloured and solved four at a
 									///< time (SIMD); false: the scalar reference in hashed order. Default true
+	bool enableJointTrees;			///< the equality rows of joints solved exactly over each tree of joined
+									///< bodies (joint_tree.c); false: row by row (Gauss–Seidel). Default true
 	tbFrictionCallback* frictionCallback;
 	tbRestitutionCallback* restitutionCallback;
 	void* userData;
