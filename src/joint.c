@@ -476,7 +476,6 @@ void tbFreeJoints(tbWorld* world)
 	TB_ARRAY_FREE(world->solverJoints, world->solverJointCapacity);
 	TB_ARRAY_FREE(world->jointEvents, world->jointEventCapacity);
 	TB_ARRAY_FREE(world->jointWakeStack, world->jointWakeCapacity);
-	tbFreeJointTrees(world);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -945,6 +944,8 @@ void tbPrepareJoints(tbStepContext* context)
 void tbWarmStartJoints(tbStepContext* context)
 {
 	tbWorld* world = context->world;
+	world->jointTreesStale = true; // a new sub-step: the bodies moved
+
 	for (int i = 0; i < world->solverJointCount; ++i)
 	{
 		tbJoint* joint = world->joints + world->solverJoints[i];
@@ -975,11 +976,21 @@ void tbWarmStartJoints(tbStepContext* context)
 }
 
 // The joints' springs, motors and limits row by row (and the equality rows of joints outside the
-// trees), then the trees' equality rows exactly (joint_tree.c).
+// trees), then, in a biased pass, the trees' equality rows exactly (joint_tree.c). The relaxing
+// pass solves every row one at a time: measured on the 30-link chain with a 100x ball, exact
+// solves in both passes cost twice as much for the same peak stretch (0.023 % at 4 sub-steps; at
+// 2 sub-steps 20 % against 15 %), and exact solves in the relaxing pass only stretch it 26 %.
+// Positions change only between sub-steps, so the trees are factored once per sub-step (the
+// first biased pass: Baumgarte and NGS run several).
 void tbSolveJoints(tbStepContext* context, bool useBias)
 {
 	tbWorld* world = context->world;
-	tbFactorJointTrees(context, useBias);
+	if (useBias && world->jointTreesStale)
+	{
+		tbFactorJointTrees(context);
+		world->jointTreesStale = false;
+	}
+	tbMarkTreeRows(context, useBias);
 	for (int i = 0; i < world->solverJointCount; ++i)
 	{
 		tbJoint* joint = world->joints + world->solverJoints[i];
@@ -1007,7 +1018,10 @@ void tbSolveJoints(tbStepContext* context, bool useBias)
 				break;
 		}
 	}
-	tbSolveJointTrees(context);
+	if (useBias)
+	{
+		tbSolveJointTrees(context);
+	}
 }
 
 void tbSetJointRow(tbJointRows* rows, int row, tbVec3Row a, tbVec3Row b, float C, float* impulse)
@@ -1042,7 +1056,7 @@ int tbJointEqualityRowCount(const tbJoint* joint)
 	}
 }
 
-void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows, bool useBias)
+void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows)
 {
 	int count = 0;
 	switch (joint->type)
@@ -1065,8 +1079,8 @@ void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows*
 		default:
 			break;
 	}
-	// The rows hold their position error C; the biased pass corrects β·C, the relaxing pass nothing.
-	float beta = useBias ? joint->constraintSoftness.biasRate : 0.0f;
+	// The rows hold their position error C; the bias of the biased pass is β·C.
+	float beta = joint->constraintSoftness.biasRate;
 	for (int r = 0; r < count; ++r)
 	{
 		rows->bias[r] *= beta;

@@ -136,7 +136,7 @@ typedef struct tbJointRows
 {
 	float JA[9]; ///< rows × 3, row-major
 	float JB[9];
-	float bias[3]; ///< m/s or rad/s: β·C in the biased pass, 0 in the relaxing pass
+	float bias[3]; ///< m/s or rad/s: β·C, the target of the biased pass (the relaxing pass has none)
 	float* impulse[3];
 } tbJointRows;
 
@@ -172,17 +172,18 @@ void tbApplyJointImpulse(const tbJoint* joint, tbJointBodies* b, tbVec2 rA, tbVe
 
 /// Number of equality rows (0–3): the rows a joint tree solves exactly.
 int tbJointEqualityRowCount(const tbJoint* joint);
-void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows, bool useBias);
+void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows);
 
 // joint_tree.c: the equality rows of each tree of joined bodies solved exactly.
 /// Once per step, after the joints are prepared: the trees (spanning trees of the joint graph of
 /// awake dynamic bodies).
 void tbBuildJointTrees(tbStepContext* context);
-/// Each pass, before the joints' other rows: rows and factorisation with the current anchors.
-void tbFactorJointTrees(tbStepContext* context, bool useBias);
-/// Each pass, after the joints' other rows: the exact impulses of the tree rows.
+/// Once per sub-step, before the first biased pass: rows and factorisation with the current anchors.
+void tbFactorJointTrees(tbStepContext* context);
+/// Each pass: which joints leave their equality rows to their tree (biased passes, factored trees).
+void tbMarkTreeRows(tbStepContext* context, bool useBias);
+/// Each biased pass, after the joints' other rows: the exact impulses of the tree rows.
 void tbSolveJointTrees(tbStepContext* context);
-void tbFreeJointTrees(tbWorld* world);
 
 // joint.c: the step's pieces (solver.c, solver_soft.c, solver_baumgarte.c, solver_ngs.c call them).
 void tbPrepareJoints(tbStepContext* context);

@@ -185,10 +185,14 @@ typedef struct tbWorld
 	int jointWakeCount, jointWakeCapacity;
 	bool jointWakeActive;
 	float jointInvH; ///< 1/s, inverse sub-step of the last step: joint force = impulse·jointInvH
-	struct tbTreeNode* jointTreeNodes; ///< joint_tree.c: this step's trees, node by node
-	int jointTreeNodeCount, jointTreeNodeCapacity;
+	// joint_tree.c: this step's joint trees, from the step arena (valid during the step).
+	struct tbTreeNode* jointTreeNodes;
+	int jointTreeNodeCount;
 	struct tbTree* jointTrees;
-	int jointTreeCount, jointTreeCapacity;
+	int jointTreeCount;
+	float* jointTreeValues;
+	struct tbJointRows* jointTreeRows;
+	bool jointTreesStale; ///< the bodies moved since the trees were last factored
 
 	tbHashSet pairSet; ///< shape pairs that have a contact
 	tbBroadPhase broadPhase;
