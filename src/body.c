@@ -888,10 +888,12 @@ static void tbUpdateSleepTime(const tbWorld* world, tbBody* body, float timeStep
 		body->sleepTime = 0.0f;
 		return;
 	}
-	// A body rests when its fastest point moves slower than the threshold: |v| + |ω|·maxExtent.
+	// A body rests when its fastest point moves slower than the threshold: |v| + |ω|·maxExtent. A
+	// body without shapes (maxExtent 0) must also spin slowly; its linear speed counts as any body's
+	// (a shape-less kinematic carrier moving at 1 m/s used to count as resting and fall asleep).
 	float speed = tbLength(body->linearVelocity) + tbAbsFloat(body->angularVelocity) * body->maxExtent;
 	bool slowSpin = tbAbsFloat(body->angularVelocity) < TB_ANGULAR_SLEEP_TOLERANCE;
-	if (speed > body->sleepThreshold && !(body->maxExtent == 0.0f && slowSpin))
+	if (speed > body->sleepThreshold || (body->maxExtent == 0.0f && slowSpin == false))
 	{
 		body->sleepTime = 0.0f;
 	}

@@ -894,6 +894,8 @@ void tbPrepareJoints(tbStepContext* context)
 	tbWorld* world = context->world;
 	world->solverJointCount = 0;
 	world->jointEventCount = 0;
+	world->jointTreeCount = 0; // the trees live in the step arena: none survive a step
+	world->jointTreeNodeCount = 0;
 	if (world->jointCount == 0)
 	{
 		return;

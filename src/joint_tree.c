@@ -20,15 +20,14 @@
 // per node and one block per tree edge, so factoring and solving are linear in the bodies:
 //     factor (children first):  D(c) ← D(c)⁻¹,  L(c) = D(c)⁻¹·H(c, p),  D(p) −= H(c, p)ᵀ·L(c);
 //     solve:  x(p) −= L(c)ᵀ·x(c) children first, then x(c) = D(c)⁻¹·x(c) − L(c)·x(p) from the root.
-// Only awake dynamic bodies are nodes; static, kinematic and sleeping bodies are ground, so a rope
-// bridge pinned at both ends is one tree. A joint to ground has only one neighbour: as the root
-// its body is its child, eliminated before it; but as a leaf its pivot would be the zero block. So
-// a tree hangs from one joint to ground when it has one, and the rows of any other joint to
-// ground join its body's node, whose pivot becomes [M, −J_gᵀ; −J_g, 0] (invertible while those
-// rows are independent; up to three such joints, at most 9 × 9, by Gauss–Jordan with pivoting). Every other joint node then has a body child
-// eliminated before it, and its pivot −J·D⁻¹·Jᵀ is definite (closed-form inverse, as the bodies').
-// A joint that would close a loop stays with Gauss–Seidel (a spanning tree is solved exactly, the
-// loop closed iteratively), as do the fourth and later joints from one body to ground.
+// Only awake dynamic bodies are nodes; static, kinematic and sleeping bodies are ground. A tree
+// touches ground through one joint at most, its root: then every joint's pivot −J·K⁻¹·Jᵀ sees a
+// free subtree below it and is definite, as is every body's (M plus definite terms), and the
+// blocks are inverted in closed form (at most 3 × 3). A second joint to ground closes a loop
+// through the ground (a rope bridge pinned at both ends): eliminated children first, the
+// subtree pinned at its far end can only turn about that pin and a pivot becomes singular. Such
+// joints, and joints that close a loop between bodies, stay with Gauss–Seidel: the spanning tree is
+// solved exactly, the loop closed iteratively.
 //
 // Per sub-step each tree is factored once with the current anchors (positions change only between
 // sub-steps). In each biased pass (tbSolveJoints) the joints' other rows (springs, motors, limits)
@@ -41,32 +40,24 @@
 // Bodies that cannot turn (fixedRotation) keep a unit angular mass and no angular coupling in the
 // tree, so their rotation never changes. A pivot that cannot be inverted (rows made redundant, as
 // a prismatic joint between two bodies that cannot turn) leaves that tree to Gauss–Seidel for the
-// pass.
+// sub-step.
 #include "joint.h"
 
 #include <string.h>
 
-#define TB_TREE_MAX_GROUND 3 ///< joints to ground merged into one body node (more stay Gauss–Seidel)
-#define TB_TREE_MAX_DIM (3 + 3 * TB_TREE_MAX_GROUND)
+#define TB_TREE_MAX_DIM 3 ///< a body's three velocity unknowns, or a joint's rows (at most 3)
 
-/// One node of a tree: a body (unknowns Δv, Δω, then the Δλ of its joints to ground) or a joint
-/// between two tree bodies (the Δλ of its rows). Built once per step; the numbers live in the
-/// step's float pool at `values` (tbNodeValues). H(node, parent) couples a joint's rows only with
-/// its body's three velocity unknowns, so it is stored compactly: r × 3 for a joint node, 3 × r
-/// for a body node (r the parent joint's rows).
+/// One node of a tree: a body (unknowns Δv, Δω) or a joint (the Δλ of its rows). Built once per
+/// step; the numbers live in the step's float pool at `values` (tbNodeValues).
 typedef struct tbTreeNode
 {
 	int parent; ///< node index of the parent, −1 for the root
-	int dim;	///< body: 3 + rows of its ground joints; joint: 1–3
+	int dim;	///< body: 3; joint: its rows, 1–3
 	int body;	///< solver body index (body node), −1 for a joint node
 	int joint;	///< joint id (joint node), −1 for a body node
 	int side;	///< joint node: side (0 = A, 1 = B) of its parent body; body node: its side in its parent joint
-				///< (a tree hanging from a joint to ground has that joint as its root)
-	int groundCount;
-	int groundJoints[TB_TREE_MAX_GROUND]; ///< body node: its joints to ground
-	int groundSides[TB_TREE_MAX_GROUND];  ///< this body's side in each
-	int values;							  ///< offset in the float pool
-	int rows;							  ///< first of its tbJointRows (joint: 1, body: groundCount)
+	int values; ///< offset in the float pool
+	int rows;	///< joint node: its tbJointRows in the step's array; −1 for a body node
 } tbTreeNode;
 
 typedef struct tbTree
@@ -75,7 +66,7 @@ typedef struct tbTree
 	bool factored;	  ///< this pass: every pivot block inverted
 } tbTree;
 
-// --- small dense blocks (row-major, at most 9 × 9) ----------------------------------------------
+// --- small dense blocks (row-major, at most 3 × 3) ----------------------------------------------
 
 /// C (n × m) = Aᵀ·B with A k × n, B k × m.
 static void tbMulTN(const float* A, const float* B, float* C, int k, int n, int m)
@@ -161,70 +152,6 @@ static bool tbInvertSmall(float* A, int n)
 	return true;
 }
 
-/// Invert a saddle-point block (a body with joints to ground, n ≤ 9) by Gauss–Jordan elimination
-/// with partial pivoting: its pivots are of both signs. False when a pivot vanishes against its
-/// column (redundant rows).
-static bool tbInvertSaddle(float* A, int n)
-{
-	float inverse[TB_TREE_MAX_DIM * TB_TREE_MAX_DIM];
-	memset(inverse, 0, sizeof(float) * (size_t)(n * n));
-	for (int i = 0; i < n; ++i)
-	{
-		inverse[i * n + i] = 1.0f;
-	}
-	for (int col = 0; col < n; ++col)
-	{
-		int pivot = col;
-		float columnScale = 0.0f;
-		for (int row = 0; row < n; ++row)
-		{
-			float value = tbAbsFloat(A[row * n + col]);
-			columnScale = tbMaxFloat(columnScale, value);
-			if (row >= col && value > tbAbsFloat(A[pivot * n + col]))
-			{
-				pivot = row;
-			}
-		}
-		if (!(tbAbsFloat(A[pivot * n + col]) > 1e-7f * columnScale))
-		{
-			return false;
-		}
-		if (pivot != col)
-		{
-			for (int k = 0; k < n; ++k)
-			{
-				float t = A[col * n + k];
-				A[col * n + k] = A[pivot * n + k];
-				A[pivot * n + k] = t;
-				t = inverse[col * n + k];
-				inverse[col * n + k] = inverse[pivot * n + k];
-				inverse[pivot * n + k] = t;
-			}
-		}
-		float inv = 1.0f / A[col * n + col];
-		for (int k = 0; k < n; ++k)
-		{
-			A[col * n + k] *= inv;
-			inverse[col * n + k] *= inv;
-		}
-		for (int row = 0; row < n; ++row)
-		{
-			float factor = A[row * n + col];
-			if (row == col || factor == 0.0f)
-			{
-				continue;
-			}
-			for (int k = 0; k < n; ++k)
-			{
-				A[row * n + k] -= factor * A[col * n + k];
-				inverse[row * n + k] -= factor * inverse[col * n + k];
-			}
-		}
-	}
-	memcpy(A, inverse, sizeof(float) * (size_t)(n * n));
-	return true;
-}
-
 // --- building the trees (once per step) ---------------------------------------------------------
 
 static bool tbIsTreeBody(const tbStepContext* context, const tbBody* body)
@@ -241,12 +168,14 @@ static tbTreeNode tbMakeNode(int parent, int dim, int body, int joint, int side)
 	node.body = body;
 	node.joint = joint;
 	node.side = side;
+	node.rows = -1;
 	return node;
 }
 
-/// Grow one tree from a root body by depth-first search, appending nodes in preorder (parents
-/// before children) from `count` on; returns the new count. bodyNode[solver index] marks the
-/// bodies taken and joint->treeNode the joints, by preorder position.
+/// Grow one tree by depth-first search from its root (a joint to ground, when it has one, then its
+/// body; or a body), appending nodes in preorder (parents before children) from `count` on;
+/// returns the new count. bodyNode[solver index] marks the bodies taken and joint->treeNode the
+/// joints, by preorder position.
 static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId, tbTreeNode* order, int count,
 					  int* bodyNode, int* stack)
 {
@@ -256,7 +185,6 @@ static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId
 	int parent = -1, side = 0;
 	if (rootJoint != NULL)
 	{
-		// A joint to ground as the root: its body is its child, so its pivot is definite.
 		side = rootJoint->edges[0].bodyId == rootBodyId ? 0 : 1;
 		rootJoint->treeNode = count;
 		order[count] = tbMakeNode(-1, tbJointEqualityRowCount(rootJoint), -1, (int)(rootJoint - world->joints), 0);
@@ -272,55 +200,31 @@ static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId
 		for (int key = body->headJointKey; key != TB_NULL_INDEX;)
 		{
 			tbJoint* joint = world->joints + (key >> 1);
-			int side = key & 1;
-			key = joint->edges[side].nextKey;
-			int rows = tbJointEqualityRowCount(joint);
-			if (joint->treeNode != TB_NULL_INDEX || rows == 0)
+			int edge = key & 1;
+			key = joint->edges[edge].nextKey;
+			const tbBody* other = world->bodies + joint->edges[edge ^ 1].bodyId;
+			if (joint->treeNode != TB_NULL_INDEX || tbJointEqualityRowCount(joint) == 0 ||
+				tbIsTreeBody(context, other) == false || bodyNode[other->awakeIndex] != TB_NULL_INDEX)
 			{
-				continue;
-			}
-			const tbBody* other = world->bodies + joint->edges[side ^ 1].bodyId;
-			tbTreeNode* node = order + bodyNodeIndex;
-			if (tbIsTreeBody(context, other) == false)
-			{
-				if (node->groundCount < TB_TREE_MAX_GROUND)
-				{
-					joint->treeNode = bodyNodeIndex; // a joint to ground: its rows join this body's node
-					node->groundJoints[node->groundCount] = (int)(joint - world->joints);
-					node->groundSides[node->groundCount++] = side;
-					node->dim += rows;
-				}
-				continue;
-			}
-			if (bodyNode[other->awakeIndex] != TB_NULL_INDEX)
-			{
-				continue; // it closes a loop: Gauss–Seidel
+				continue; // taken, no equality rows, or it closes a loop (through ground or not)
 			}
 			joint->treeNode = count;
-			order[count++] = tbMakeNode(bodyNodeIndex, rows, -1, (int)(joint - world->joints), side);
+			order[count++] = tbMakeNode(bodyNodeIndex, tbJointEqualityRowCount(joint), -1,
+										(int)(joint - world->joints), edge);
 			bodyNode[other->awakeIndex] = count;
-			order[count] = tbMakeNode(count - 1, 3, other->awakeIndex, -1, side ^ 1);
+			order[count] = tbMakeNode(count - 1, 3, other->awakeIndex, -1, edge ^ 1);
 			stack[top++] = count++;
 		}
 	}
 	return count;
 }
 
-/// Floats of a node in the pool: D (n²), H, L and x (tbNodeValues).
+/// Floats of a node in the pool: D (n²), H (3 × n or n × 3), L (the same), x (n).
 static int tbNodeFloatCount(const tbTreeNode* node, int parentDim)
 {
 	int n = node->dim;
-	if (node->body < 0)
-	{
-		return n * n + 3 * n + 3 * n + n; // H, L: r × 3
-	}
-	return n * n + 3 * parentDim + n * parentDim + n; // H: 3 × r, L: n × r
-}
-
-/// Number of tbJointRows a node needs.
-static int tbNodeRowCount(const tbTreeNode* node)
-{
-	return node->joint >= 0 ? 1 : node->groundCount;
+	int r = node->body < 0 ? n : parentDim;
+	return n * n + 3 * r + 3 * r + n;
 }
 
 void tbBuildJointTrees(tbStepContext* context)
@@ -366,7 +270,7 @@ void tbBuildJointTrees(tbStepContext* context)
 		int root = treeA ? joint->edges[0].bodyId : joint->edges[1].bodyId;
 		if (bodyNode[world->bodies[root].awakeIndex] != TB_NULL_INDEX)
 		{
-			continue; // its body is in a tree already (a joint it could not take: loop or fourth to ground)
+			continue; // its body is in a tree already: the joint closes a loop
 		}
 		int start = count;
 		count = tbGrowTree(context, toGround ? joint : NULL, root, preorder, count, bodyNode, stack);
@@ -380,22 +284,17 @@ void tbBuildJointTrees(tbStepContext* context)
 		trees[treeCount++] = (tbTree){start, n, false};
 	}
 
-	// The float pool and the rows, sized node by node.
+	// The float pool and the rows (one per joint node), sized node by node.
 	int floats = 0, rows = 0;
 	for (int i = 0; i < count; ++i)
 	{
 		tbTreeNode* node = nodes + i;
 		node->values = floats;
 		floats += tbNodeFloatCount(node, node->parent >= 0 ? nodes[node->parent].dim : 0);
-		node->rows = rows;
-		rows += tbNodeRowCount(node);
 		if (node->joint >= 0)
 		{
+			node->rows = rows++;
 			world->joints[node->joint].treeNode = i;
-		}
-		for (int g = 0; g < node->groundCount; ++g)
-		{
-			world->joints[node->groundJoints[g]].treeNode = i;
 		}
 	}
 	world->jointTreeNodes = nodes;
@@ -408,8 +307,10 @@ void tbBuildJointTrees(tbStepContext* context)
 
 // --- each pass ----------------------------------------------------------------------------------
 
-/// The numbers of a node: D (n × n, replaced by its inverse), H (compact, see tbTreeNode),
-/// L = D⁻¹·H (joint node: r × 3; body node: n × r), x (n: right-hand side, then solution).
+/// The numbers of a node: D (n × n, replaced by its inverse), H = H(node, parent) stored compactly
+/// (a joint's rows couple only with a body's three velocity unknowns: r × 3 for a joint node,
+/// 3 × r for a body node under a joint of r rows), L = D⁻¹·H (same shape), x (n: right-hand side,
+/// then solution).
 typedef struct tbNodeValues
 {
 	float* D;
@@ -423,8 +324,7 @@ static tbNodeValues tbGetValues(const tbWorld* world, const tbTreeNode* node)
 	int n = node->dim;
 	int r = node->body < 0 ? n : (node->parent >= 0 ? world->jointTreeNodes[node->parent].dim : 0);
 	float* base = world->jointTreeValues + node->values;
-	int lSize = node->body < 0 ? 3 * n : n * r;
-	tbNodeValues v = {base, base + n * n, base + n * n + 3 * r, base + n * n + 3 * r + lSize};
+	tbNodeValues v = {base, base + n * n, base + n * n + 3 * r, base + n * n + 6 * r};
 	return v;
 }
 
@@ -443,17 +343,19 @@ static void tbRowAgainst(const tbJointRows* rows, int r, int side, bool turns, f
 	out[2] = turns ? J[2] : 0.0f;
 }
 
-// A joint node: pivot −Γ = 0 (rigid rows); H = −J(joint, parent body), r × 3.
-static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNodeValues v, const tbJointRows* rows)
+// A joint node: pivot −Γ = 0 (rigid rows); H = −J(joint, parent body), r × 3 (a root joint to
+// ground has no parent block).
+static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNodeValues v)
 {
 	int n = node->dim;
 	memset(v.D, 0, sizeof(float) * (size_t)(n * n));
 	if (node->parent < 0)
 	{
-		return; // a root joint to ground: no parent block
+		return;
 	}
 	const tbTreeNode* parent = world->jointTreeNodes + node->parent;
 	bool turns = tbTurns(world->bodies + world->awakeBodies[parent->body]);
+	const tbJointRows* rows = world->jointTreeRows + node->rows;
 	for (int r = 0; r < n; ++r)
 	{
 		float J[3];
@@ -464,81 +366,44 @@ static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNode
 	}
 }
 
-// A body node: [M, −J_gᵀ; −J_g, 0] with its ground joints' rows; H = −J(parent joint, body)ᵀ, 3 × r
-// (the rows of H for the ground rows are zero and not stored).
-static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeValues v, const tbJointRows* rows)
+// A body node: pivot M = diag(m, m, I); H = −J(parent joint, body)ᵀ, 3 × r.
+static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeValues v)
 {
 	const tbBody* body = world->bodies + world->awakeBodies[node->body];
 	bool turns = tbTurns(body);
-	int n = node->dim;
-	memset(v.D, 0, sizeof(float) * (size_t)(n * n));
+	memset(v.D, 0, sizeof(float) * 9);
 	v.D[0] = 1.0f / body->invMass;
-	v.D[n + 1] = v.D[0];
-	v.D[2 * n + 2] = turns ? 1.0f / body->invInertia : 1.0f;
-	int offset = 3;
-	for (int g = 0; g < node->groundCount; ++g)
+	v.D[4] = v.D[0];
+	v.D[8] = turns ? 1.0f / body->invInertia : 1.0f;
+	if (node->parent < 0)
 	{
-		int r = tbJointEqualityRowCount(world->joints + node->groundJoints[g]);
-		for (int row = 0; row < r; ++row)
-		{
-			float J[3];
-			tbRowAgainst(rows + g, row, node->groundSides[g], turns, J);
-			for (int k = 0; k < 3; ++k)
-			{
-				v.D[(offset + row) * n + k] = -J[k];
-				v.D[k * n + offset + row] = -J[k];
-			}
-		}
-		offset += r;
+		return;
 	}
-	if (node->parent >= 0)
+	const tbTreeNode* parent = world->jointTreeNodes + node->parent;
+	const tbJointRows* rows = world->jointTreeRows + parent->rows;
+	int r = parent->dim;
+	for (int row = 0; row < r; ++row)
 	{
-		const tbTreeNode* parent = world->jointTreeNodes + node->parent;
-		const tbJointRows* parentRows = world->jointTreeRows + parent->rows;
-		int r = parent->dim;
-		for (int row = 0; row < r; ++row)
-		{
-			float J[3];
-			tbRowAgainst(parentRows, row, node->side, turns, J);
-			v.H[0 * r + row] = -J[0];
-			v.H[1 * r + row] = -J[1];
-			v.H[2 * r + row] = -J[2];
-		}
+		float J[3];
+		tbRowAgainst(rows, row, node->side, turns, J);
+		v.H[0 * r + row] = -J[0];
+		v.H[1 * r + row] = -J[1];
+		v.H[2 * r + row] = -J[2];
 	}
 }
 
-// L = D⁻¹·H and the parent's pivot update D(p) −= Hᵀ·L, on the compact blocks: a joint child
-// touches only its body's 3 × 3 velocity block; a body child's H has only its velocity rows.
+// L = D⁻¹·H and the parent's pivot update D(p) −= Hᵀ·L. A joint child touches only the 3 × 3
+// velocity block of its body, which is all a body has.
 static void tbEliminate(const tbTreeNode* node, tbNodeValues v, float* parentD, int m)
 {
 	int n = node->dim;
-	if (node->body < 0)
-	{
-		tbMulNN(v.D, v.H, v.L, n, n, 3); // r × 3
-		float update[9];
-		tbMulTN(v.H, v.L, update, n, 3, 3);
-		for (int i = 0; i < 3; ++i)
-		{
-			for (int j = 0; j < 3; ++j)
-			{
-				parentD[i * m + j] -= update[i * 3 + j];
-			}
-		}
-		return;
-	}
-	// L (n × m) = D⁻¹(:, 0:3)·H (3 × m); update (m × m) = Hᵀ·L(0:3, :).
-	for (int i = 0; i < n; ++i)
-	{
-		for (int j = 0; j < m; ++j)
-		{
-			v.L[i * m + j] = v.D[i * n + 0] * v.H[0 * m + j] + v.D[i * n + 1] * v.H[1 * m + j] + v.D[i * n + 2] * v.H[2 * m + j];
-		}
-	}
+	int k = node->body < 0 ? 3 : m; // columns of H and L
+	tbMulNN(v.D, v.H, v.L, n, n, k);
 	float update[9];
-	tbMulTN(v.H, v.L, update, 3, m, m);
-	for (int k = 0; k < m * m; ++k)
+	tbMulTN(v.H, v.L, update, n, k, k);
+	for (int i = 0; i < k * k; ++i)
 	{
-		parentD[k] -= update[k];
+		parentD[i] -= update[i];
 	}
 }
 
@@ -547,36 +412,35 @@ static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 {
 	tbWorld* world = context->world;
 	tbTreeNode* nodes = world->jointTreeNodes;
-	for (int i = tree->start; i < tree->start + tree->count; ++i)
+	int end = tree->start + tree->count;
+	for (int i = tree->start; i < end; ++i)
 	{
 		const tbTreeNode* node = nodes + i;
-		tbJointRows* rows = world->jointTreeRows + node->rows;
-		for (int j = 0; j < tbNodeRowCount(node); ++j)
+		if (node->joint >= 0)
 		{
-			tbJoint* joint = world->joints + (node->joint >= 0 ? node->joint : node->groundJoints[j]);
+			tbJoint* joint = world->joints + node->joint;
 			tbJointBodies b = tbLoadJointBodies(context, joint);
-			tbGetJointEqualityRows(joint, &b, rows + j);
+			tbGetJointEqualityRows(joint, &b, world->jointTreeRows + node->rows);
 		}
 	}
 	// Fill every node before eliminating any: a child's update lands on its parent's pivot.
-	for (int i = tree->start; i < tree->start + tree->count; ++i)
+	for (int i = tree->start; i < end; ++i)
 	{
 		const tbTreeNode* node = nodes + i;
 		if (node->body >= 0)
 		{
-			tbFillBodyNode(world, node, tbGetValues(world, node), world->jointTreeRows + node->rows);
+			tbFillBodyNode(world, node, tbGetValues(world, node));
 		}
 		else
 		{
-			tbFillJointNode(world, node, tbGetValues(world, node), world->jointTreeRows + node->rows);
+			tbFillJointNode(world, node, tbGetValues(world, node));
 		}
 	}
-	for (int i = tree->start; i < tree->start + tree->count; ++i)
+	for (int i = tree->start; i < end; ++i)
 	{
 		const tbTreeNode* node = nodes + i;
 		tbNodeValues v = tbGetValues(world, node);
-		bool inverted = node->dim <= 3 ? tbInvertSmall(v.D, node->dim) : tbInvertSaddle(v.D, node->dim);
-		if (inverted == false)
+		if (tbInvertSmall(v.D, node->dim) == false)
 		{
 			return false;
 		}
@@ -586,18 +450,6 @@ static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 		}
 	}
 	return true;
-}
-
-static void tbSetSolvedInTree(tbWorld* world, const tbTreeNode* node, bool solved)
-{
-	if (node->joint >= 0)
-	{
-		world->joints[node->joint].solvedInTree = solved;
-	}
-	for (int g = 0; g < node->groundCount; ++g)
-	{
-		world->joints[node->groundJoints[g]].solvedInTree = solved;
-	}
 }
 
 void tbFactorJointTrees(tbStepContext* context)
@@ -617,55 +469,45 @@ void tbMarkTreeRows(tbStepContext* context, bool useBias)
 		const tbTree* tree = world->jointTrees + t;
 		for (int i = tree->start; i < tree->start + tree->count; ++i)
 		{
-			tbSetSolvedInTree(world, world->jointTreeNodes + i, useBias && tree->factored);
+			const tbTreeNode* node = world->jointTreeNodes + i;
+			if (node->joint >= 0)
+			{
+				world->joints[node->joint].solvedInTree = useBias && tree->factored;
+			}
 		}
 	}
 }
 
-/// J·v + bias for each row of a joint (both sides' velocities, ground included).
-static void tbRowResiduals(const tbStepContext* context, const tbJoint* joint, const tbJointRows* rows, int count,
-						   float* out)
-{
-	const tbSolverBody* sA = context->bodies + joint->indexA;
-	const tbSolverBody* sB = context->bodies + joint->indexB;
-	for (int r = 0; r < count; ++r)
-	{
-		const float* ja = rows->JA + 3 * r;
-		const float* jb = rows->JB + 3 * r;
-		out[r] = ja[0] * sA->linearVelocity.x + ja[1] * sA->linearVelocity.y + ja[2] * sA->angularVelocity +
-				 jb[0] * sB->linearVelocity.x + jb[1] * sB->linearVelocity.y + jb[2] * sB->angularVelocity +
-				 rows->bias[r];
-	}
-}
-
-/// Right-hand side of a node: 0 for a body's velocity rows, J·v + bias for joint rows.
+/// Right-hand side of a node: 0 for a body, J·v + bias for a joint's rows (the velocities of both
+/// its bodies, ground included).
 static void tbLoadResiduals(const tbStepContext* context, const tbTreeNode* node, float* x)
 {
 	const tbWorld* world = context->world;
-	const tbJointRows* rows = world->jointTreeRows + node->rows;
-	if (node->joint >= 0)
+	if (node->joint < 0)
 	{
-		tbRowResiduals(context, world->joints + node->joint, rows, node->dim, x);
+		x[0] = x[1] = x[2] = 0.0f;
 		return;
 	}
-	x[0] = x[1] = x[2] = 0.0f;
-	int offset = 3;
-	for (int g = 0; g < node->groundCount; ++g)
+	const tbJoint* joint = world->joints + node->joint;
+	const tbJointRows* rows = world->jointTreeRows + node->rows;
+	const tbSolverBody* sA = context->bodies + joint->indexA;
+	const tbSolverBody* sB = context->bodies + joint->indexB;
+	for (int r = 0; r < node->dim; ++r)
 	{
-		const tbJoint* joint = world->joints + node->groundJoints[g];
-		int r = tbJointEqualityRowCount(joint);
-		tbRowResiduals(context, joint, rows + g, r, x + offset);
-		offset += r;
+		const float* ja = rows->JA + 3 * r;
+		const float* jb = rows->JB + 3 * r;
+		x[r] = ja[0] * sA->linearVelocity.x + ja[1] * sA->linearVelocity.y + ja[2] * sA->angularVelocity +
+			   jb[0] * sB->linearVelocity.x + jb[1] * sB->linearVelocity.y + jb[2] * sB->angularVelocity + rows->bias[r];
 	}
 }
 
-/// Apply a node's solution: a body's velocity change and the impulses of its rows.
+/// Apply a node's solution: a body's velocity change, or a joint's impulses.
 static void tbApplySolution(tbStepContext* context, const tbTreeNode* node, const float* x)
 {
 	tbWorld* world = context->world;
-	const tbJointRows* rows = world->jointTreeRows + node->rows;
 	if (node->joint >= 0)
 	{
+		const tbJointRows* rows = world->jointTreeRows + node->rows;
 		for (int r = 0; r < node->dim; ++r)
 		{
 			*rows->impulse[r] += x[r];
@@ -679,16 +521,6 @@ static void tbApplySolution(tbStepContext* context, const tbTreeNode* node, cons
 	{
 		sb->angularVelocity += x[2];
 	}
-	int offset = 3;
-	for (int g = 0; g < node->groundCount; ++g)
-	{
-		int r = tbJointEqualityRowCount(world->joints + node->groundJoints[g]);
-		for (int row = 0; row < r; ++row)
-		{
-			*rows[g].impulse[row] += x[offset + row];
-		}
-		offset += r;
-	}
 }
 
 static void tbSolveTree(tbStepContext* context, const tbTree* tree)
@@ -700,7 +532,7 @@ static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 	{
 		tbLoadResiduals(context, nodes + i, tbGetValues(world, nodes + i).x);
 	}
-	// Forward: x(p) −= L(c)ᵀ·x(c). A joint child's L is r × 3 (the parent's velocity rows only).
+	// Forward: x(p) −= L(c)ᵀ·x(c), children first.
 	for (int i = tree->start; i < end; ++i)
 	{
 		const tbTreeNode* node = nodes + i;
@@ -710,8 +542,8 @@ static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 		}
 		tbNodeValues v = tbGetValues(world, node);
 		float* parentX = tbGetValues(world, nodes + node->parent).x;
-		int m = node->body < 0 ? 3 : nodes[node->parent].dim;
-		float update[TB_TREE_MAX_DIM];
+		int m = nodes[node->parent].dim;
+		float update[3];
 		tbMulTN(v.L, v.x, update, node->dim, m, 1);
 		for (int k = 0; k < m; ++k)
 		{
@@ -723,13 +555,12 @@ static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 	{
 		const tbTreeNode* node = nodes + i;
 		tbNodeValues v = tbGetValues(world, node);
-		float y[TB_TREE_MAX_DIM];
+		float y[3];
 		tbMulNN(v.D, v.x, y, node->dim, node->dim, 1);
 		if (node->parent >= 0)
 		{
-			int m = node->body < 0 ? 3 : nodes[node->parent].dim;
-			float correction[TB_TREE_MAX_DIM];
-			tbMulNN(v.L, tbGetValues(world, nodes + node->parent).x, correction, node->dim, m, 1);
+			float correction[3];
+			tbMulNN(v.L, tbGetValues(world, nodes + node->parent).x, correction, node->dim, nodes[node->parent].dim, 1);
 			for (int k = 0; k < node->dim; ++k)
 			{
 				y[k] -= correction[k];
