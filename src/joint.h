@@ -192,6 +192,8 @@ void tbWarmStartJoints(tbStepContext* context);
 /// soft spring, or the Baumgarte bias); false: the relaxing pass (rigid, no correction). User
 /// springs, motors and the speculative side of limits act in both.
 void tbSolveJoints(tbStepContext* context, bool useBias);
+/// Extra relaxing iterations the soft step needs this step: 1 with joint trees (joint.c says why).
+int tbJointTreeRelaxIterations(const tbStepContext* context);
 /// After the sub-steps: joint events and the sub-step length that converts impulses to forces.
 void tbFinishJoints(tbStepContext* context);
 

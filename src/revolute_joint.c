@@ -237,19 +237,16 @@ void tbGetRevoluteJointReaction(const tbWorld* world, const tbJoint* joint, floa
 	*torque = inv_h * (r->springImpulse + r->motorImpulse + r->lowerImpulse - r->upperImpulse);
 }
 
+// A small circle at the pin and frame B's x-axis through it (shows the joint angle).
 void tbDrawRevoluteJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint)
 {
-	tbTransform fA = tbJointWorldFrameA(world, joint);
 	tbTransform fB = tbJointWorldFrameB(world, joint);
-	float radius = 0.25f * joint->drawScale;
+	float radius = 0.1f * joint->drawScale;
 	if (draw->DrawCircle != NULL)
 	{
 		draw->DrawCircle(fB.p, radius, tb_colorJoint, draw->context);
 	}
-	draw->DrawSegment(fA.p, tbMulAdd(fA.p, radius, tbRot_GetXAxis(fA.q)), tb_colorJoint, draw->context);
-	draw->DrawSegment(fB.p, tbMulAdd(fB.p, radius, tbRot_GetXAxis(fB.q)), tb_colorNormal, draw->context);
-	draw->DrawSegment(world->bodies[joint->edges[0].bodyId].transform.p, fA.p, tb_colorTree, draw->context);
-	draw->DrawSegment(world->bodies[joint->edges[1].bodyId].transform.p, fB.p, tb_colorTree, draw->context);
+	draw->DrawSegment(fB.p, tbMulAdd(fB.p, radius, tbRot_GetXAxis(fB.q)), tb_colorJoint, draw->context);
 }
 
 // --- getters and setters -----------------------------------------------------------------------

@@ -118,7 +118,7 @@ void tbSoftSubStep(tbStepContext* context)
 	tbSolveJoints(context, true); // joint.c: soft positional correction
 	tbSolveContacts(context, tb_biasSoft);
 	tbIntegratePositions(context);
-	int relaxIterations = context->world->def.relaxIterations;
+	int relaxIterations = context->world->def.relaxIterations + tbJointTreeRelaxIterations(context); // joint.c
 	for (int i = 0; i < relaxIterations; ++i)
 	{
 		tbSolveJoints(context, false); // rigid, no correction
