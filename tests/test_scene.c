@@ -76,10 +76,15 @@ static void ExpectSameBody(const SceneBody* a, const SceneBody* b, const char* w
 }
 
 // Joints: kind, bodies and frames, and every other field through the exported text (the writer
-// leaves out only fields equal to the kind's default, so a field the reader dropped shows there).
+// leaves out only fields equal to the kind's default, so a field the reader dropped shows there;
+// only for scenes with joints: exporting the large scenes twice more costs minutes under ASan).
 static void ExpectSameJoints(const Scene* a, const Scene* b, const char* name)
 {
 	cr_assert_eq(a->jointCount, b->jointCount, "%s: joint count", name);
+	if (a->jointCount == 0)
+	{
+		return;
+	}
 	for (int i = 0; i < a->jointCount; ++i)
 	{
 		const SceneJoint* ja = a->joints + i;
