@@ -15,18 +15,20 @@
 // Where joints sit in the step (solver.c and the method files): prepared once per step after the
 // contacts (anchors in world axes, masses, softness); warm started before the contacts in every
 // sub-step; solved before the contacts in each velocity pass. Joints go first so that the
-// contacts, solved last, have the final word on non-penetration. The joints are solved one at a
-// time in joint-id order (scalar): they are few compared with contacts. Colouring them into the
-// constraint graph with the contacts (constraint_graph.c) so that the wide solver can take them
-// four at a time is a later step.
+// contacts, solved last, have the final word on non-penetration. Row by row, the joints are
+// solved one at a time in joint-id order (scalar): they are few compared with contacts. Colouring
+// them into the constraint graph with the contacts (constraint_graph.c) so that the wide solver
+// can take them four at a time is a later step. In the biased passes the equality rows of each
+// tree of joined bodies are solved exactly instead (joint_tree.c, tbSolveJoints below).
 //
 // Position error by method (the `useBias` pass):
-// - soft step: the positional rows are soft constraints (Catto, "Soft Constraints", GDC 2011;
-//   Solver2D 2024), λ = −m_eff·massScale·(Ċ + biasRate·C) − impulseScale·λ_acc, with the
+// - soft step: rows solved one at a time are soft constraints (Catto, "Soft Constraints", GDC
+//   2011; Solver2D 2024), λ = −m_eff·massScale·(Ċ + biasRate·C) − impulseScale·λ_acc, with the
 //   joint's constraintHertz (default 60 Hz) and constraintDampingRatio (default 2, Box2D v3's
 //   values) and the hertz capped at a quarter of the sub-step rate, the cap contacts use (a
-//   faster spring is not resolved by the sub-step and only adds jitter). The relaxing pass solves
-//   the same rows rigidly with no bias, removing the correction velocity.
+//   faster spring is not resolved by the sub-step and only adds jitter). The equality rows of a
+//   joint tree are rigid, corrected by the same bias rate β = ω/(2ζ + hω) and no compliance. The
+//   relaxing pass solves every row rigidly with no bias, removing the correction velocity.
 // - Baumgarte and NGS: the same velocity code with a Baumgarte bias, biasRate = TB_BAUMGARTE/h,
 //   massScale 1, impulseScale 0 (a fifth of the error per sub-step, as contacts under
 //   Baumgarte). NGS corrects contact overlap on positions (solver_ngs.c); joints have no
