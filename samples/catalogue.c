@@ -696,6 +696,180 @@ static Scene* BuildCompounds(void)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Joints
+
+/// Box2D v3's ball and chain with the numbers of Tumble's joint issue: 30 capsule links 0.5 m from
+/// pivot to pivot (radius 0.05, density 20) on revolute joints from a static pivot at y = 20,
+/// holding a ball of 100 times a link's mass, released horizontally. The joint-tree test measures
+/// its stretch (tests/test_joint.c).
+static Scene* BuildPendulumChain(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	int ground = AddGround(scene, 40.0f, 0.6f);
+	const int count = 30;
+	const float hx = 0.25f, top = 20.0f;
+	int previous = ground;
+	float linkMass = 0.0f;
+	for (int i = 0; i < count; ++i)
+	{
+		int link = Scene_AddBody(scene, tb_dynamicBody, V(2.0f * hx * (float)i + hx, top), 0.0f);
+		tbGeometry capsule = Scene_MakeCapsuleGeometry(V(-hx, 0.0f), V(hx, 0.0f), 0.05f);
+		Scene_AddGeometry(scene, link, &capsule, 20.0f, 0.6f);
+		linkMass = tbComputeShapeMass(&capsule, 20.0f).mass;
+		SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, previous, link);
+		Scene_SetJointAnchor(scene, joint, V(2.0f * hx * (float)i, top));
+		previous = link;
+	}
+	const float radius = 0.5f;
+	int ball = Scene_AddBody(scene, tb_dynamicBody, V(2.0f * hx * (float)count + radius, top), 0.0f);
+	tbGeometry circle = Scene_MakeCircleGeometry(tb_vec2_zero, radius);
+	Scene_AddGeometry(scene, ball, &circle, 100.0f * linkMass / (TB_PI * radius * radius), 0.6f);
+	SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, previous, ball);
+	Scene_SetJointAnchor(scene, joint, V(2.0f * hx * (float)count, top));
+	return scene;
+}
+
+/// A rope bridge: 20 planks (1 x 0.1 m, density 2) on revolute joints between two posts 18 m
+/// apart, hung in a shallow V (a taut bridge could not sag without stretching), with 12 boxes
+/// (0.5 m, density 2) dropped on it.
+static Scene* BuildRopeBridge(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	int ground = AddGround(scene, 40.0f, 0.6f);
+	const int count = 20;
+	const float span = 18.0f, y = 8.0f;
+	float half = 0.5f * (float)count;
+	float slope = acosf(0.5f * span / half); // each half of the V is `half` planks of 1 m
+	tbVec2 pivot = V(-0.5f * span, y);
+	int previous = ground;
+	for (int i = 0; i < count; ++i)
+	{
+		float angle = i < count / 2 ? -slope : slope;
+		tbVec2 along = V(cosf(angle), sinf(angle));
+		int plank = Scene_AddBody(scene, tb_dynamicBody, tbMulAdd(pivot, 0.5f, along), angle);
+		tbGeometry box = Scene_MakeBoxGeometry(0.5f, 0.05f, tb_vec2_zero, 0.0f);
+		Scene_AddGeometry(scene, plank, &box, 2.0f, 0.6f);
+		SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, previous, plank);
+		Scene_SetJointAnchor(scene, joint, pivot);
+		pivot = tbAdd(pivot, along);
+		previous = plank;
+	}
+	SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, previous, ground);
+	Scene_SetJointAnchor(scene, joint, pivot);
+	for (int i = 0; i < 12; ++i)
+	{
+		AddBoxBody(scene, tb_dynamicBody, V(-6.0f + (float)i, y + 2.0f + 0.6f * (float)(i % 3)), 0.0f, 0.25f, 0.25f, 2.0f,
+				   0.6f);
+	}
+	return scene;
+}
+
+/// A car on hills: a 4 x 0.6 m chassis (density 1) on two wheels (radius 0.4, density 1, friction
+/// 1.2) with wheel joints: vertical suspension 5 Hz, damping ratio 0.7, travel ±0.25 m, rear motor
+/// at −12 rad/s up to 100 N·m. The ground is 200 segments of a sum of two sines (amplitude 1 m).
+static Scene* BuildCar(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 900;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	memcpy(scene->bodies[ground].name, "ground", 7);
+	for (int i = 0; i < 200; ++i)
+	{
+		float x1 = -20.0f + (float)i, x2 = x1 + 1.0f;
+		float y1 = x1 < 0.0f ? 0.0f : 0.6f * sinf(0.35f * x1) + 0.4f * sinf(0.9f * x1);
+		float y2 = x2 < 0.0f ? 0.0f : 0.6f * sinf(0.35f * x2) + 0.4f * sinf(0.9f * x2);
+		tbGeometry segment = Scene_MakeSegmentGeometry(V(x1, y1), V(x2, y2));
+		Scene_AddGeometry(scene, ground, &segment, 1.0f, 0.9f);
+	}
+	int chassis = AddBoxBody(scene, tb_dynamicBody, V(-10.0f, 1.5f), 0.0f, 2.0f, 0.3f, 1.0f, 0.6f);
+	memcpy(scene->bodies[chassis].name, "chassis", 8);
+	for (int side = 0; side < 2; ++side)
+	{
+		float x = side == 0 ? -11.4f : -8.6f;
+		int wheel = AddCircleBody(scene, tb_dynamicBody, V(x, 0.6f), 0.4f, 1.0f, 1.2f);
+		SceneJoint* joint = Scene_AddJoint(scene, tb_wheelJoint, chassis, wheel);
+		Scene_SetJointAnchor(scene, joint, V(x, 0.6f));
+		joint->def.base.localFrameA.q = tbMakeRot(0.5f * TB_PI); // the suspension axis is vertical
+		tbWheelJointDef* def = &joint->def.wheel;
+		def->hertz = 5.0f;
+		def->dampingRatio = 0.7f;
+		def->enableLimit = true;
+		def->lowerTranslation = -0.25f;
+		def->upperTranslation = 0.25f;
+		def->enableMotor = side == 0;
+		def->motorSpeed = -12.0f;
+		def->maxMotorTorque = side == 0 ? 100.0f : 0.0f;
+	}
+	return scene;
+}
+
+/// One ragdoll of 10 bodies at (x, y): head (circle 0.15), torso (capsule), upper and lower arms,
+/// thighs and shins (capsules), density 1, on revolute joints with limits and a little friction (a
+/// motor at speed 0 with 0.5 N·m). Its bones overlap one another and share the negative collision
+/// group `group`, so they never collide with each other (as Box2D's ragdolls), only with the rest.
+static void AddRagdoll(Scene* scene, float x, float y, int group)
+{
+	typedef struct Bone
+	{
+		int parent; ///< index in this ragdoll, −1 for the torso
+		tbVec2 from, to;
+		float radius, lower, upper;
+	} Bone;
+	static const Bone bones[10] = {
+		{-1, {0.0f, 0.35f}, {0.0f, -0.25f}, 0.14f, 0.0f, 0.0f},	 // torso
+		{0, {0.0f, 0.55f}, {0.0f, 0.55f}, 0.15f, -0.5f, 0.5f},	 // head
+		{0, {-0.05f, 0.3f}, {-0.05f, -0.05f}, 0.06f, -2.5f, 1.5f}, // upper arms
+		{0, {0.05f, 0.3f}, {0.05f, -0.05f}, 0.06f, -2.5f, 1.5f},
+		{2, {-0.05f, -0.05f}, {-0.05f, -0.35f}, 0.05f, 0.0f, 2.5f}, // lower arms
+		{3, {0.05f, -0.05f}, {0.05f, -0.35f}, 0.05f, 0.0f, 2.5f},
+		{0, {-0.07f, -0.3f}, {-0.07f, -0.75f}, 0.08f, -1.5f, 0.5f}, // thighs
+		{0, {0.07f, -0.3f}, {0.07f, -0.75f}, 0.08f, -1.5f, 0.5f},
+		{6, {-0.07f, -0.75f}, {-0.07f, -1.2f}, 0.07f, 0.0f, 2.0f}, // shins
+		{7, {0.07f, -0.75f}, {0.07f, -1.2f}, 0.07f, 0.0f, 2.0f},
+	};
+	int ids[10];
+	for (int i = 0; i < 10; ++i)
+	{
+		const Bone* bone = bones + i;
+		tbVec2 center = V(x + 0.5f * (bone->from.x + bone->to.x), y + 0.5f * (bone->from.y + bone->to.y));
+		ids[i] = Scene_AddBody(scene, tb_dynamicBody, center, 0.0f);
+		tbVec2 half = V(0.5f * (bone->to.x - bone->from.x), 0.5f * (bone->to.y - bone->from.y));
+		tbGeometry shape = i == 1 ? Scene_MakeCircleGeometry(tb_vec2_zero, bone->radius)
+								  : Scene_MakeCapsuleGeometry(tbNeg(half), half, bone->radius);
+		int shapeIndex = Scene_AddGeometry(scene, ids[i], &shape, 1.0f, 0.6f);
+		scene->bodies[ids[i]].shapes[shapeIndex].groupIndex = group;
+		if (bone->parent < 0)
+		{
+			continue;
+		}
+		SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, ids[bone->parent], ids[i]);
+		tbVec2 pivot = i == 1 ? V(x, y + 0.45f) : V(x + bone->from.x, y + bone->from.y);
+		Scene_SetJointAnchor(scene, joint, pivot);
+		tbRevoluteJointDef* def = &joint->def.revolute;
+		def->enableLimit = true;
+		def->lowerAngle = bone->lower;
+		def->upperAngle = bone->upper;
+		def->enableMotor = true;
+		def->maxMotorTorque = 0.5f;
+	}
+}
+
+/// 24 ragdolls dropped in a pile (rows of 6, 1.5 m apart, 3 m between rows).
+static Scene* BuildRagdolls(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	AddGround(scene, 40.0f, 0.6f);
+	for (int i = 0; i < 24; ++i)
+	{
+		AddRagdoll(scene, -3.75f + 1.5f * (float)(i % 6) + 0.2f * (float)(i / 6), 2.0f + 3.0f * (float)(i / 6), -1 - i);
+	}
+	return scene;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Table
 
 typedef Scene* SceneBuilder(void);
@@ -747,6 +921,13 @@ static const CatalogueEntry s_entries[] = {
 				 "x = 60 sin(0.2 t)",
 	 BuildJunkyard},
 	{"compounds", "Box2D v3 benchmark: 3,000 bodies of two triangles each falling into an 80 m pit", BuildCompounds},
+	{"pendulum_chain", "30 capsule links (0.5 m) on revolute joints holding a ball 100x a link, released "
+					   "horizontally",
+	 BuildPendulumChain},
+	{"rope_bridge", "20 planks on revolute joints between two posts, 12 boxes dropped on it", BuildRopeBridge},
+	{"car", "a chassis on two wheel joints (5 Hz suspension, rear motor) driving over sine hills", BuildCar},
+	{"ragdolls", "24 ragdolls of 10 bodies (revolute joints with limits and friction) dropped in a pile",
+	 BuildRagdolls},
 };
 
 #define ENTRY_COUNT ((int)(sizeof(s_entries) / sizeof(s_entries[0])))

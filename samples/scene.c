@@ -55,6 +55,7 @@ void Scene_Destroy(Scene* scene)
 		free(scene->bodies[i].shapes);
 	}
 	free(scene->bodies);
+	free(scene->joints);
 	free(scene);
 }
 
@@ -156,6 +157,60 @@ tbGeometry Scene_MakePolygonGeometry(const tbVec2* points, int count, float radi
 		geometry.polygon = tbMakePolygon(&hull, radius);
 	}
 	return geometry;
+}
+
+void Scene_DefaultJointDef(tbJointType type, SceneJoint* joint)
+{
+	memset(&joint->def, 0, sizeof(joint->def));
+	switch (type)
+	{
+		case tb_distanceJoint:
+			joint->def.distance = tbDefaultDistanceJointDef();
+			break;
+		case tb_filterJoint:
+			joint->def.filter = tbDefaultFilterJointDef();
+			break;
+		case tb_motorJoint:
+			joint->def.motor = tbDefaultMotorJointDef();
+			break;
+		case tb_prismaticJoint:
+			joint->def.prismatic = tbDefaultPrismaticJointDef();
+			break;
+		case tb_weldJoint:
+			joint->def.weld = tbDefaultWeldJointDef();
+			break;
+		case tb_wheelJoint:
+			joint->def.wheel = tbDefaultWheelJointDef();
+			break;
+		case tb_revoluteJoint:
+		default:
+			joint->def.revolute = tbDefaultRevoluteJointDef();
+			break;
+	}
+}
+
+SceneJoint* Scene_AddJoint(Scene* scene, tbJointType type, int bodyA, int bodyB)
+{
+	scene->joints = GrowArray(scene->joints, &scene->jointCapacity, scene->jointCount + 1, sizeof(SceneJoint));
+	SceneJoint* joint = scene->joints + scene->jointCount++;
+	memset(joint, 0, sizeof(*joint));
+	joint->type = type;
+	joint->bodyA = bodyA;
+	joint->bodyB = bodyB;
+	Scene_DefaultJointDef(type, joint);
+	return joint;
+}
+
+static tbVec2 LocalPoint(const SceneBody* body, tbVec2 worldPoint)
+{
+	tbTransform xf = {body->position, tbMakeRot(body->angle)};
+	return tbInvTransformPoint(xf, worldPoint);
+}
+
+void Scene_SetJointAnchor(const Scene* scene, SceneJoint* joint, tbVec2 worldPoint)
+{
+	joint->def.base.localFrameA.p = LocalPoint(scene->bodies + joint->bodyA, worldPoint);
+	joint->def.base.localFrameB.p = LocalPoint(scene->bodies + joint->bodyB, worldPoint);
 }
 
 int Scene_ShapeCount(const Scene* scene)
@@ -264,6 +319,7 @@ static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const 
 		shapeDef.restitution = shape->restitution;
 		shapeDef.isSensor = shape->isSensor;
 		shapeDef.enableHitEvents = shape->enableHitEvents;
+		shapeDef.filter.groupIndex = shape->groupIndex;
 		if (TB_IS_NULL(tbCreateShape(bodyId, &shapeDef, &shape->geometry)) && *refusedShape < 0)
 		{
 			*refusedShape = i;
@@ -299,6 +355,36 @@ bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize)
 	return refused;
 }
 
+static tbJointId CreateSceneJoint(tbWorldId worldId, const SceneWorld* world, const SceneJoint* joint)
+{
+	if (joint->bodyA < 0 || joint->bodyA >= world->bodyCount || joint->bodyB < 0 || joint->bodyB >= world->bodyCount)
+	{
+		return TB_NULL_JOINT_ID;
+	}
+	SceneJoint copy = *joint;
+	copy.def.base.bodyIdA = world->bodyIds[joint->bodyA];
+	copy.def.base.bodyIdB = world->bodyIds[joint->bodyB];
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			return tbCreateDistanceJoint(worldId, &copy.def.distance);
+		case tb_filterJoint:
+			return tbCreateFilterJoint(worldId, &copy.def.filter);
+		case tb_motorJoint:
+			return tbCreateMotorJoint(worldId, &copy.def.motor);
+		case tb_prismaticJoint:
+			return tbCreatePrismaticJoint(worldId, &copy.def.prismatic);
+		case tb_revoluteJoint:
+			return tbCreateRevoluteJoint(worldId, &copy.def.revolute);
+		case tb_weldJoint:
+			return tbCreateWeldJoint(worldId, &copy.def.weld);
+		case tb_wheelJoint:
+			return tbCreateWheelJoint(worldId, &copy.def.wheel);
+		default:
+			return TB_NULL_JOINT_ID;
+	}
+}
+
 SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 {
 	SceneWorld world;
@@ -328,6 +414,17 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 		{
 			world.drivenBodies[world.drivenCount++] = i;
 		}
+	}
+	world.jointIds = calloc((size_t)(scene->jointCount > 0 ? scene->jointCount : 1), sizeof(tbJointId));
+	if (world.jointIds == NULL)
+	{
+		SceneWorld_Destroy(&world);
+		return world;
+	}
+	world.jointCount = scene->jointCount;
+	for (int i = 0; i < scene->jointCount; ++i)
+	{
+		world.jointIds[i] = CreateSceneJoint(world.worldId, &world, scene->joints + i);
 	}
 	return world;
 }
@@ -360,6 +457,7 @@ void SceneWorld_Destroy(SceneWorld* world)
 		tbDestroyWorld(world->worldId);
 	}
 	free(world->bodyIds);
+	free(world->jointIds);
 	free(world->names);
 	free(world->drivenBodies);
 	memset(world, 0, sizeof(*world));
@@ -409,13 +507,33 @@ typedef struct PenetrationQuery
 	float deepest; ///< most negative separation seen (m)
 } PenetrationQuery;
 
+// Bodies joined by a joint that forbids their collision overlap on purpose (a ragdoll's limbs).
+static bool JoinedWithoutCollision(tbBodyId a, tbBodyId b)
+{
+	tbJointId joints[32];
+	int count = tbBody_GetJoints(a, joints, 32);
+	for (int i = 0; i < count; ++i)
+	{
+		tbBodyId other = tbJoint_GetBodyA(joints[i]);
+		if (other.index1 == a.index1)
+		{
+			other = tbJoint_GetBodyB(joints[i]);
+		}
+		if (other.index1 == b.index1 && tbJoint_GetCollideConnected(joints[i]) == false)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
 // Collide the query shape with one found shape. Each pair is visited from its lower shape id
 // when both are non-static, so no pair is measured twice.
 static bool PenetrationCallback(tbShapeId shapeId, void* context)
 {
 	PenetrationQuery* query = context;
 	tbBodyId bodyId = tbShape_GetBody(shapeId);
-	if (bodyId.index1 == query->bodyId.index1 || tbShape_IsSensor(shapeId))
+	if (bodyId.index1 == query->bodyId.index1 || tbShape_IsSensor(shapeId) || JoinedWithoutCollision(query->bodyId, bodyId))
 	{
 		return true;
 	}
@@ -495,6 +613,10 @@ static const NamedValue s_solverNames[] = {
 	{"baumgarte", tb_solverBaumgarte}, {"ngs", tb_solverNGS}, {"soft", tb_solverSoft}, {NULL, 0}};
 static const NamedValue s_bodyTypeNames[] = {
 	{"static", tb_staticBody}, {"kinematic", tb_kinematicBody}, {"dynamic", tb_dynamicBody}, {NULL, 0}};
+static const NamedValue s_jointTypeNames[] = {
+	{"distance", tb_distanceJoint}, {"filter", tb_filterJoint}, {"motor", tb_motorJoint},
+	{"prismatic", tb_prismaticJoint}, {"revolute", tb_revoluteJoint}, {"weld", tb_weldJoint},
+	{"wheel", tb_wheelJoint}, {NULL, 0}};
 
 static const char* NameOf(const NamedValue* table, int value)
 {
@@ -584,4 +706,20 @@ bool Scene_ParseBodyType(const char* text, tbBodyType* type)
 	bool found = ValueOf(s_bodyTypeNames, text, &value);
 	*type = found ? (tbBodyType)value : *type;
 	return found;
+}
+
+const char* Scene_JointTypeName(tbJointType type)
+{
+	return NameOf(s_jointTypeNames, (int)type);
+}
+
+bool Scene_ParseJointType(const char* text, tbJointType* type)
+{
+	int value;
+	if (ValueOf(s_jointTypeNames, text, &value) == false)
+	{
+		return false;
+	}
+	*type = (tbJointType)value;
+	return true;
 }

@@ -36,6 +36,7 @@ typedef struct SceneShape
 	float restitution; ///< default 0
 	bool isSensor;
 	bool enableHitEvents; ///< default false (tbShapeDef::enableHitEvents)
+	int groupIndex; ///< collision group (tbFilter): shapes sharing a negative group never collide, default 0
 } SceneShape;
 
 /// A scripted path for a kinematic body (Box2D v3's junkyard pusher): before step k (k = 0, 1, …)
@@ -69,6 +70,27 @@ typedef struct SceneBody
 	int shapeCapacity;
 } SceneBody;
 
+/// One joint between two scene bodies: the library's definition of its kind, used as is when the
+/// world is built (its body ids are filled in then). Start from Scene_AddJoint, which sets the
+/// kind's defaults.
+typedef struct SceneJoint
+{
+	tbJointType type;
+	int bodyA; ///< scene body indices
+	int bodyB;
+	union
+	{
+		tbJointDef base; ///< the common part: every kind's definition starts with it
+		tbDistanceJointDef distance;
+		tbFilterJointDef filter;
+		tbMotorJointDef motor;
+		tbPrismaticJointDef prismatic;
+		tbRevoluteJointDef revolute;
+		tbWeldJointDef weld;
+		tbWheelJointDef wheel;
+	} def;
+} SceneJoint;
+
 typedef struct Scene
 {
 	tbVec2 gravity;	  ///< default (0, −10)
@@ -80,6 +102,9 @@ typedef struct Scene
 	SceneBody* bodies;
 	int bodyCount;
 	int bodyCapacity;
+	SceneJoint* joints;
+	int jointCount;
+	int jointCapacity;
 } Scene;
 
 /// Empty scene with the defaults above.
@@ -103,6 +128,16 @@ tbGeometry Scene_MakeCircleGeometry(tbVec2 center, float radius);
 tbGeometry Scene_MakeCapsuleGeometry(tbVec2 center1, tbVec2 center2, float radius);
 tbGeometry Scene_MakeSegmentGeometry(tbVec2 point1, tbVec2 point2);
 tbGeometry Scene_MakePolygonGeometry(const tbVec2* points, int count, float radius);
+
+/// A joint of the given kind between bodies bodyA and bodyB with the kind's defaults; returns it
+/// (valid until the next joint is added).
+SceneJoint* Scene_AddJoint(Scene* scene, tbJointType type, int bodyA, int bodyB);
+
+/// Put both joint frames' origins at a world point (from the bodies' placement in the scene).
+void Scene_SetJointAnchor(const Scene* scene, SceneJoint* joint, tbVec2 worldPoint);
+
+/// The default definition of a joint kind, as tbDefault*JointDef gives it (in SceneJoint's union).
+void Scene_DefaultJointDef(tbJointType type, SceneJoint* joint);
 
 /// Total shape count over every body.
 int Scene_ShapeCount(const Scene* scene);
@@ -135,6 +170,8 @@ typedef struct SceneWorld
 	tbWorldId worldId;
 	tbBodyId* bodyIds; ///< bodyCount entries, index = scene body index
 	int bodyCount;
+	tbJointId* jointIds; ///< jointCount entries, index = scene joint index
+	int jointCount;
 	char (*names)[SCENE_NAME_SIZE]; ///< body names (the library does not copy them)
 	int* drivenBodies;				///< scene indices of the driven bodies (SceneDrive)
 	int drivenCount;
@@ -174,6 +211,7 @@ const char* Scene_NarrowPhaseName(tbNarrowPhaseMethod method);
 const char* Scene_ContinuousName(tbContinuousMethod method);
 const char* Scene_SolverName(tbSolverMethod method);
 const char* Scene_BodyTypeName(tbBodyType type);
+const char* Scene_JointTypeName(tbJointType type);
 
 /// Parse a method name; false when unknown.
 bool Scene_ParseBroadPhase(const char* text, tbBroadPhaseMethod* method);
@@ -181,6 +219,7 @@ bool Scene_ParseNarrowPhase(const char* text, tbNarrowPhaseMethod* method);
 bool Scene_ParseContinuous(const char* text, tbContinuousMethod* method);
 bool Scene_ParseSolver(const char* text, tbSolverMethod* method);
 bool Scene_ParseBodyType(const char* text, tbBodyType* type);
+bool Scene_ParseJointType(const char* text, tbJointType* type);
 
 #ifdef __cplusplus
 }

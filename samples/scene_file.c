@@ -10,6 +10,7 @@
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -525,7 +526,7 @@ static bool ReadGeometry(Parser* parser, const cJSON* item, const char* path, tb
 static bool ReadShape(Parser* parser, const cJSON* item, const char* path, SceneShape* shape)
 {
 	static const char* const keys[] = {"box",	  "circle",	  "polygon",	 "capsule", "segment",
-									   "density", "friction", "restitution", "sensor",	"hit_events",
+									   "density", "friction", "restitution", "sensor",	"hit_events", "group",
 									   NULL};
 	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
 	{
@@ -540,7 +541,8 @@ static bool ReadShape(Parser* parser, const cJSON* item, const char* path, Scene
 		   ReadFloat(parser, item, path, "restitution", &shape->restitution, false) &&
 		   CheckNonNegative(parser, path, "restitution", shape->restitution) &&
 		   ReadBool(parser, item, path, "sensor", &shape->isSensor) &&
-		   ReadBool(parser, item, path, "hit_events", &shape->enableHitEvents);
+		   ReadBool(parser, item, path, "hit_events", &shape->enableHitEvents) &&
+		   ReadInt(parser, item, path, "group", INT_MIN, INT_MAX, &shape->groupIndex);
 }
 
 static bool ReadShapes(Parser* parser, const cJSON* item, const char* path, Scene* scene, int bodyIndex)
@@ -720,10 +722,301 @@ static bool CheckBuilds(Parser* parser, const Scene* scene)
 	return Fail(parser, item, "refused by the library (see its message above: size, thinness, density or position)");
 }
 
+// ---------------------------------------------------------------------------------------------
+// Joints. The keys of each kind are its definition's fields in snake case, read and written from
+// one table per kind (offsets into the definition, which every kind starts with its `base`).
+
+typedef enum FieldKind
+{
+	FIELD_FLOAT,
+	FIELD_NON_NEGATIVE,
+	FIELD_BOOL,
+	FIELD_VEC2,
+} FieldKind;
+
+typedef struct JointField
+{
+	const char* key;
+	size_t offset;
+	FieldKind kind;
+} JointField;
+
+#define FIELD(Def, member, key, kind) {key, offsetof(Def, member), kind}
+
+static const JointField s_distanceFields[] = {
+	FIELD(tbDistanceJointDef, length, "length", FIELD_NON_NEGATIVE),
+	FIELD(tbDistanceJointDef, enableSpring, "enable_spring", FIELD_BOOL),
+	FIELD(tbDistanceJointDef, lowerSpringForce, "lower_spring_force", FIELD_FLOAT),
+	FIELD(tbDistanceJointDef, upperSpringForce, "upper_spring_force", FIELD_FLOAT),
+	FIELD(tbDistanceJointDef, hertz, "hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbDistanceJointDef, dampingRatio, "damping_ratio", FIELD_NON_NEGATIVE),
+	FIELD(tbDistanceJointDef, enableLimit, "enable_limit", FIELD_BOOL),
+	FIELD(tbDistanceJointDef, minLength, "min_length", FIELD_NON_NEGATIVE),
+	FIELD(tbDistanceJointDef, maxLength, "max_length", FIELD_NON_NEGATIVE),
+	FIELD(tbDistanceJointDef, enableMotor, "enable_motor", FIELD_BOOL),
+	FIELD(tbDistanceJointDef, maxMotorForce, "max_motor_force", FIELD_NON_NEGATIVE),
+	FIELD(tbDistanceJointDef, motorSpeed, "motor_speed", FIELD_FLOAT),
+	{NULL, 0, FIELD_FLOAT}};
+
+static const JointField s_filterFields[] = {{NULL, 0, FIELD_FLOAT}};
+
+static const JointField s_motorFields[] = {
+	FIELD(tbMotorJointDef, linearVelocity, "linear_velocity", FIELD_VEC2),
+	FIELD(tbMotorJointDef, maxVelocityForce, "max_velocity_force", FIELD_NON_NEGATIVE),
+	FIELD(tbMotorJointDef, angularVelocity, "angular_velocity", FIELD_FLOAT),
+	FIELD(tbMotorJointDef, maxVelocityTorque, "max_velocity_torque", FIELD_NON_NEGATIVE),
+	FIELD(tbMotorJointDef, linearHertz, "linear_hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbMotorJointDef, linearDampingRatio, "linear_damping_ratio", FIELD_NON_NEGATIVE),
+	FIELD(tbMotorJointDef, maxSpringForce, "max_spring_force", FIELD_NON_NEGATIVE),
+	FIELD(tbMotorJointDef, angularHertz, "angular_hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbMotorJointDef, angularDampingRatio, "angular_damping_ratio", FIELD_NON_NEGATIVE),
+	FIELD(tbMotorJointDef, maxSpringTorque, "max_spring_torque", FIELD_NON_NEGATIVE),
+	{NULL, 0, FIELD_FLOAT}};
+
+static const JointField s_prismaticFields[] = {
+	FIELD(tbPrismaticJointDef, enableSpring, "enable_spring", FIELD_BOOL),
+	FIELD(tbPrismaticJointDef, hertz, "hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbPrismaticJointDef, dampingRatio, "damping_ratio", FIELD_NON_NEGATIVE),
+	FIELD(tbPrismaticJointDef, targetTranslation, "target_translation", FIELD_FLOAT),
+	FIELD(tbPrismaticJointDef, enableLimit, "enable_limit", FIELD_BOOL),
+	FIELD(tbPrismaticJointDef, lowerTranslation, "lower_translation", FIELD_FLOAT),
+	FIELD(tbPrismaticJointDef, upperTranslation, "upper_translation", FIELD_FLOAT),
+	FIELD(tbPrismaticJointDef, enableMotor, "enable_motor", FIELD_BOOL),
+	FIELD(tbPrismaticJointDef, maxMotorForce, "max_motor_force", FIELD_NON_NEGATIVE),
+	FIELD(tbPrismaticJointDef, motorSpeed, "motor_speed", FIELD_FLOAT),
+	{NULL, 0, FIELD_FLOAT}};
+
+static const JointField s_revoluteFields[] = {
+	FIELD(tbRevoluteJointDef, targetAngle, "target_angle", FIELD_FLOAT),
+	FIELD(tbRevoluteJointDef, enableSpring, "enable_spring", FIELD_BOOL),
+	FIELD(tbRevoluteJointDef, hertz, "hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbRevoluteJointDef, dampingRatio, "damping_ratio", FIELD_NON_NEGATIVE),
+	FIELD(tbRevoluteJointDef, enableLimit, "enable_limit", FIELD_BOOL),
+	FIELD(tbRevoluteJointDef, lowerAngle, "lower_angle", FIELD_FLOAT),
+	FIELD(tbRevoluteJointDef, upperAngle, "upper_angle", FIELD_FLOAT),
+	FIELD(tbRevoluteJointDef, enableMotor, "enable_motor", FIELD_BOOL),
+	FIELD(tbRevoluteJointDef, maxMotorTorque, "max_motor_torque", FIELD_NON_NEGATIVE),
+	FIELD(tbRevoluteJointDef, motorSpeed, "motor_speed", FIELD_FLOAT),
+	{NULL, 0, FIELD_FLOAT}};
+
+static const JointField s_weldFields[] = {
+	FIELD(tbWeldJointDef, linearHertz, "linear_hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbWeldJointDef, angularHertz, "angular_hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbWeldJointDef, linearDampingRatio, "linear_damping_ratio", FIELD_NON_NEGATIVE),
+	FIELD(tbWeldJointDef, angularDampingRatio, "angular_damping_ratio", FIELD_NON_NEGATIVE),
+	{NULL, 0, FIELD_FLOAT}};
+
+static const JointField s_wheelFields[] = {
+	FIELD(tbWheelJointDef, enableSpring, "enable_spring", FIELD_BOOL),
+	FIELD(tbWheelJointDef, hertz, "hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbWheelJointDef, dampingRatio, "damping_ratio", FIELD_NON_NEGATIVE),
+	FIELD(tbWheelJointDef, enableLimit, "enable_limit", FIELD_BOOL),
+	FIELD(tbWheelJointDef, lowerTranslation, "lower_translation", FIELD_FLOAT),
+	FIELD(tbWheelJointDef, upperTranslation, "upper_translation", FIELD_FLOAT),
+	FIELD(tbWheelJointDef, enableMotor, "enable_motor", FIELD_BOOL),
+	FIELD(tbWheelJointDef, maxMotorTorque, "max_motor_torque", FIELD_NON_NEGATIVE),
+	FIELD(tbWheelJointDef, motorSpeed, "motor_speed", FIELD_FLOAT),
+	{NULL, 0, FIELD_FLOAT}};
+
+#undef FIELD
+
+/// The fields of a kind, indexed by tbJointType.
+static const JointField* const s_jointFields[tb_jointTypeCount] = {
+	s_distanceFields, s_filterFields, s_motorFields, s_prismaticFields, s_revoluteFields, s_weldFields, s_wheelFields};
+
+/// Keys every joint has.
+static const char* const s_jointBaseKeys[] = {"type",	"body_a",	"body_b",			 "anchor_a",
+											  "angle_a", "anchor_b", "angle_b",			 "collide_connected",
+											  "constraint_hertz", "constraint_damping_ratio", NULL};
+
+static bool ReadJointField(Parser* parser, const cJSON* item, const char* path, const JointField* field, void* def)
+{
+	char* target = (char*)def + field->offset;
+	switch (field->kind)
+	{
+		case FIELD_BOOL:
+			return ReadBool(parser, item, path, field->key, (bool*)target);
+		case FIELD_VEC2:
+			return ReadVec2(parser, item, path, field->key, (tbVec2*)target, false);
+		case FIELD_NON_NEGATIVE:
+			return ReadFloat(parser, item, path, field->key, (float*)target, false) &&
+				   CheckNonNegative(parser, path, field->key, *(float*)target);
+		case FIELD_FLOAT:
+		default:
+			return ReadFloat(parser, item, path, field->key, (float*)target, false);
+	}
+}
+
+/// lower <= upper for a kind's ranges (the library refuses the joint otherwise).
+static bool CheckOrder(Parser* parser, const char* path, const char* lowerKey, float lower, const char* upperKey,
+					   float upper)
+{
+	if (lower <= upper)
+	{
+		return true;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, lowerKey);
+	return Fail(parser, child, "must be <= %s", upperKey);
+}
+
+static bool CheckJointRanges(Parser* parser, const char* path, const SceneJoint* joint)
+{
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			return CheckOrder(parser, path, "min_length", joint->def.distance.minLength, "max_length",
+							  joint->def.distance.maxLength) &&
+				   CheckOrder(parser, path, "lower_spring_force", joint->def.distance.lowerSpringForce,
+							  "upper_spring_force", joint->def.distance.upperSpringForce);
+		case tb_prismaticJoint:
+			return CheckOrder(parser, path, "lower_translation", joint->def.prismatic.lowerTranslation,
+							  "upper_translation", joint->def.prismatic.upperTranslation);
+		case tb_revoluteJoint:
+		{
+			const tbRevoluteJointDef* r = &joint->def.revolute;
+			char child[PATH_SIZE];
+			KeyPath(child, path, r->lowerAngle < -TB_PI ? "lower_angle" : "upper_angle");
+			if (r->lowerAngle < -TB_PI || r->upperAngle > TB_PI)
+			{
+				return Fail(parser, child, "must lie in [-pi, pi]");
+			}
+			return CheckOrder(parser, path, "lower_angle", r->lowerAngle, "upper_angle", r->upperAngle);
+		}
+		case tb_wheelJoint:
+			return CheckOrder(parser, path, "lower_translation", joint->def.wheel.lowerTranslation,
+							  "upper_translation", joint->def.wheel.upperTranslation);
+		default:
+			return true;
+	}
+}
+
+static bool ReadJointBody(Parser* parser, const cJSON* item, const char* path, const char* key, int bodyCount, int* out)
+{
+	*out = -1;
+	if (Find(item, key) == NULL)
+	{
+		return Missing(parser, path, key);
+	}
+	if (ReadInt(parser, item, path, key, 0, INT_MAX, out) == false)
+	{
+		return false;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	return *out < bodyCount ? true : Fail(parser, child, "must be the index of a body (there are %d)", bodyCount);
+}
+
+static bool ReadJointType(Parser* parser, const cJSON* item, const char* path, tbJointType* type)
+{
+	const char* name = NULL;
+	if (ReadString(parser, item, path, "type", &name) == false)
+	{
+		return false;
+	}
+	if (name == NULL)
+	{
+		return Missing(parser, path, "type");
+	}
+	return Scene_ParseJointType(name, type) ? true
+											: BadOption(parser, path, "type",
+														"distance, filter, motor, prismatic, revolute, weld, wheel");
+}
+
+// The frames: an anchor (the frame's origin) and an angle per body, in the body's frame.
+static bool ReadJointBase(Parser* parser, const cJSON* item, const char* path, SceneJoint* joint)
+{
+	tbJointDef* base = &joint->def.base;
+	float angleA = tbRot_GetAngle(base->localFrameA.q);
+	float angleB = tbRot_GetAngle(base->localFrameB.q);
+	bool ok = ReadVec2(parser, item, path, "anchor_a", &base->localFrameA.p, false) &&
+			  ReadFloat(parser, item, path, "angle_a", &angleA, false) &&
+			  ReadVec2(parser, item, path, "anchor_b", &base->localFrameB.p, false) &&
+			  ReadFloat(parser, item, path, "angle_b", &angleB, false) &&
+			  ReadBool(parser, item, path, "collide_connected", &base->collideConnected) &&
+			  ReadFloat(parser, item, path, "constraint_hertz", &base->constraintHertz, false) &&
+			  CheckNonNegative(parser, path, "constraint_hertz", base->constraintHertz) &&
+			  ReadFloat(parser, item, path, "constraint_damping_ratio", &base->constraintDampingRatio, false) &&
+			  CheckNonNegative(parser, path, "constraint_damping_ratio", base->constraintDampingRatio);
+	base->localFrameA.q = tbMakeRot(angleA);
+	base->localFrameB.q = tbMakeRot(angleB);
+	return ok;
+}
+
+static bool ReadJoint(Parser* parser, const cJSON* item, const char* path, Scene* scene)
+{
+	tbJointType type = tb_revoluteJoint;
+	if (RequireObject(parser, item, path) == false || ReadJointType(parser, item, path, &type) == false)
+	{
+		return false;
+	}
+	const char* keys[32];
+	int keyCount = 0;
+	for (int i = 0; s_jointBaseKeys[i] != NULL; ++i)
+	{
+		keys[keyCount++] = s_jointBaseKeys[i];
+	}
+	const JointField* fields = s_jointFields[type];
+	for (int i = 0; fields[i].key != NULL; ++i)
+	{
+		keys[keyCount++] = fields[i].key;
+	}
+	keys[keyCount] = NULL;
+	int bodyA, bodyB;
+	if (CheckKeys(parser, item, path, keys) == false ||
+		ReadJointBody(parser, item, path, "body_a", scene->bodyCount, &bodyA) == false ||
+		ReadJointBody(parser, item, path, "body_b", scene->bodyCount, &bodyB) == false)
+	{
+		return false;
+	}
+	if (bodyA == bodyB)
+	{
+		char child[PATH_SIZE];
+		KeyPath(child, path, "body_b");
+		return Fail(parser, child, "must differ from body_a (a joint joins two bodies)");
+	}
+	SceneJoint* joint = Scene_AddJoint(scene, type, bodyA, bodyB);
+	if (ReadJointBase(parser, item, path, joint) == false)
+	{
+		return false;
+	}
+	for (int i = 0; fields[i].key != NULL; ++i)
+	{
+		if (ReadJointField(parser, item, path, fields + i, &joint->def) == false)
+		{
+			return false;
+		}
+	}
+	return CheckJointRanges(parser, path, joint);
+}
+
+static bool ReadJoints(Parser* parser, const cJSON* item, Scene* scene)
+{
+	if (item == NULL)
+	{
+		return true;
+	}
+	if (cJSON_IsArray(item) == false)
+	{
+		return Fail(parser, "joints", "must be an array of joints");
+	}
+	int i = 0;
+	for (const cJSON* joint = item->child; joint != NULL; joint = joint->next, ++i)
+	{
+		char child[PATH_SIZE];
+		IndexPath(child, "joints", i);
+		if (ReadJoint(parser, joint, child, scene) == false)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
 static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
 {
 	static const char* const keys[] = {"gravity", "time_step", "sub_steps", "steps",
-									   "enable_sleep", "methods", "bodies", NULL};
+									   "enable_sleep", "methods", "bodies", "joints", NULL};
 	if (cJSON_IsObject(root) == false)
 	{
 		return Fail(parser, "", "scene: must be a JSON object");
@@ -737,7 +1030,8 @@ static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
 		   ReadInt(parser, root, "", "steps", 0, SCENE_MAX_STEPS, &scene->steps) &&
 		   ReadBool(parser, root, "", "enable_sleep", &scene->enableSleep) &&
 		   (methods == NULL || ReadMethods(parser, methods, &scene->methods)) &&
-		   ReadBodies(parser, Find(root, "bodies"), scene) && CheckBuilds(parser, scene);
+		   ReadBodies(parser, Find(root, "bodies"), scene) && ReadJoints(parser, Find(root, "joints"), scene) &&
+		   CheckBuilds(parser, scene);
 }
 
 // Line and column (from 1) of a position in text, for syntax errors.
@@ -1039,6 +1333,10 @@ static void AppendShape(TextBuffer* buffer, const SceneShape* shape)
 	{
 		Append(buffer, ", \"hit_events\": true");
 	}
+	if (shape->groupIndex != 0)
+	{
+		Append(buffer, ", \"group\": %d", shape->groupIndex);
+	}
 	Append(buffer, "}");
 }
 
@@ -1131,6 +1429,67 @@ static void AppendMethods(TextBuffer* buffer, const SceneMethods* methods)
 	Append(buffer, "},\n");
 }
 
+// A joint: its kind, bodies and frames, then every field that differs from the kind's default.
+static void AppendJoint(TextBuffer* buffer, const SceneJoint* joint)
+{
+	SceneJoint defaults;
+	Scene_DefaultJointDef(joint->type, &defaults);
+	const tbJointDef* base = &joint->def.base;
+	Append(buffer, "    {\"type\": \"%s\", \"body_a\": %d, \"body_b\": %d", Scene_JointTypeName(joint->type),
+		   joint->bodyA, joint->bodyB);
+	Append(buffer, ", \"anchor_a\": ");
+	AppendVec2(buffer, base->localFrameA.p);
+	Append(buffer, ", \"anchor_b\": ");
+	AppendVec2(buffer, base->localFrameB.p);
+	float angleA = tbRot_GetAngle(base->localFrameA.q);
+	float angleB = tbRot_GetAngle(base->localFrameB.q);
+	if (angleA != 0.0f)
+	{
+		Append(buffer, ", \"angle_a\": %.9g", (double)angleA);
+	}
+	if (angleB != 0.0f)
+	{
+		Append(buffer, ", \"angle_b\": %.9g", (double)angleB);
+	}
+	if (base->collideConnected)
+	{
+		Append(buffer, ", \"collide_connected\": true");
+	}
+	if (base->constraintHertz != defaults.def.base.constraintHertz)
+	{
+		Append(buffer, ", \"constraint_hertz\": %.9g", (double)base->constraintHertz);
+	}
+	if (base->constraintDampingRatio != defaults.def.base.constraintDampingRatio)
+	{
+		Append(buffer, ", \"constraint_damping_ratio\": %.9g", (double)base->constraintDampingRatio);
+	}
+	const JointField* fields = s_jointFields[joint->type];
+	for (int i = 0; fields[i].key != NULL; ++i)
+	{
+		const char* value = (const char*)&joint->def + fields[i].offset;
+		const char* standard = (const char*)&defaults.def + fields[i].offset;
+		size_t size = fields[i].kind == FIELD_BOOL ? sizeof(bool) : (fields[i].kind == FIELD_VEC2 ? sizeof(tbVec2) : sizeof(float));
+		if (memcmp(value, standard, size) == 0)
+		{
+			continue;
+		}
+		Append(buffer, ", \"%s\": ", fields[i].key);
+		if (fields[i].kind == FIELD_BOOL)
+		{
+			Append(buffer, *(const bool*)value ? "true" : "false");
+		}
+		else if (fields[i].kind == FIELD_VEC2)
+		{
+			AppendVec2(buffer, *(const tbVec2*)value);
+		}
+		else
+		{
+			AppendFloat(buffer, *(const float*)value);
+		}
+	}
+	Append(buffer, "}");
+}
+
 char* SceneFile_Export(const Scene* scene, char* error, int errorSize)
 {
 	TextBuffer buffer;
@@ -1147,7 +1506,18 @@ char* SceneFile_Export(const Scene* scene, char* error, int errorSize)
 		Append(&buffer, i > 0 ? ",\n" : "\n");
 		AppendBody(&buffer, scene->bodies + i, i);
 	}
-	Append(&buffer, scene->bodyCount > 0 ? "\n  ]\n}\n" : "]\n}\n");
+	Append(&buffer, scene->bodyCount > 0 ? "\n  ]" : "]");
+	if (scene->jointCount > 0)
+	{
+		Append(&buffer, ",\n  \"joints\": [");
+		for (int i = 0; i < scene->jointCount; ++i)
+		{
+			Append(&buffer, i > 0 ? ",\n" : "\n");
+			AppendJoint(&buffer, scene->joints + i);
+		}
+		Append(&buffer, "\n  ]");
+	}
+	Append(&buffer, "\n}\n");
 	if (buffer.failed)
 	{
 		snprintf(error, (size_t)errorSize, "%s", buffer.error);

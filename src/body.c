@@ -134,6 +134,7 @@ void tbWakeBody(tbWorld* world, tbBody* body)
 	}
 	body->sleepTime = 0.0f;
 	tbAddToAwakeSet(world, body, (int)(body - world->bodies));
+	tbWakeJointedBodies(world, body); // joined bodies wake together (joint.c)
 }
 
 void tbSleepBody(tbWorld* world, tbBody* body)
@@ -200,6 +201,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->isBullet = def->isBullet;
 	body->headShapeId = TB_NULL_INDEX;
 	body->headContactKey = TB_NULL_INDEX;
+	body->headJointKey = TB_NULL_INDEX;
 	body->awakeIndex = TB_NULL_INDEX;
 	body->solverIndex = TB_NULL_INDEX;
 	body->mass = 0.0f;
@@ -232,6 +234,7 @@ void tbDestroyBody(tbBodyId bodyId)
 	{
 		return;
 	}
+	tbDestroyBodyJoints(world, body);
 	tbDestroyBodyContacts(world, body, true);
 	int shapeId = body->headShapeId;
 	while (shapeId != TB_NULL_INDEX)

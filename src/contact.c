@@ -206,6 +206,10 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	{
 		return false;
 	}
+	if ((bodyA->jointCount | bodyB->jointCount) != 0 && tbJointBlocksCollision(world, a->bodyId, b->bodyId))
+	{
+		return false; // a joint between them forbids it (collideConnected false)
+	}
 	if (a->isSensor && b->isSensor)
 	{
 		return false;

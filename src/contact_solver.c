@@ -50,21 +50,6 @@ static int tbGetSolverIndex(const tbWorld* world, int bodyId, int staticIndex)
 	return staticIndex;
 }
 
-tbSoftness tbMakeSoftness(float hertz, float dampingRatio, float h)
-{
-	if (hertz <= 0.0f)
-	{
-		tbSoftness rigid = {0.0f, 1.0f, 0.0f};
-		return rigid;
-	}
-	float omega = 2.0f * TB_PI * hertz;
-	float a1 = 2.0f * dampingRatio + h * omega;
-	float a2 = h * omega * a1;
-	float a3 = 1.0f / (1.0f + a2);
-	tbSoftness soft = {omega / a1, a2 * a3, a3};
-	return soft;
-}
-
 // Inverse effective mass along direction u for anchors rA, rB.
 static float tbInverseEffectiveMass(const tbContactConstraint* c, tbVec2 rA, tbVec2 rB, tbVec2 u)
 {

@@ -14,7 +14,6 @@ static inline float tbReboundSpeed(float restitution, float approach, float maxL
 }
 
 // contact_solver.c
-tbSoftness tbMakeSoftness(float hertz, float dampingRatio, float h);
 void tbPrepareContacts(tbStepContext* context);
 void tbWarmStartContacts(tbStepContext* context);
 void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy);

@@ -139,4 +139,5 @@ void tbWorld_Draw(tbWorldId worldId, const tbDebugDraw* draw)
 	{
 		tbDrawContacts(world, draw);
 	}
+	tbDrawJoints(world, draw); // joint.c (when drawJoints)
 }

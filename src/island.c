@@ -136,6 +136,7 @@ static bool tbGatherRecordedContacts(tbWorld* world)
 
 void tbIslandStage(tbWorld* world)
 {
+	tbWakeJointPartners(world); // joint.c: before anything is gathered
 	if (tbGatherRecordedContacts(world))
 	{
 		tbOrderSolverContacts(world);
@@ -222,6 +223,7 @@ static int tbCollectIsland(tbWorld* world, int seed, uint32_t stamp, float* minS
 			}
 			key = contact->edges[key & 1].nextKey;
 		}
+		top = tbPushJointedBodies(world, body, stamp, top); // joint.c: joints link islands too
 	}
 	return count;
 }

@@ -4,10 +4,11 @@
 // One step of length Δt is cut into n sub-steps of h = Δt/n. Each sub-step:
 //   1. integrate velocities (semi-implicit Euler): v ← (v + h·(gravityScale·g + F/m))/(1 + h·c_lin),
 //      ω ← (ω + h·τ/I)/(1 + h·c_ang); kinematic bodies keep their velocity;
-//   2. warm start: re-apply the accumulated contact impulses;
+//   2. warm start: re-apply the accumulated joint and contact impulses;
 //   3. the method's sub-step (solver_soft.c, solver_baumgarte.c, solver_ngs.c): velocity
 //      iterations, position integration (Δp += h·v, Δq ← integrate(Δq, h·ω)), and its own
-//      relaxing or position-correction passes.
+//      relaxing or position-correction passes; each velocity pass solves the joints (joint.c)
+//      before the contacts.
 // After the loop: restitution, store impulses for the next step's warm start, scatter.
 // Sub-stepping with one solve per sub-step beats more iterations per step (Catto, Solver2D 2024):
 // each sub-step sees the position error that the previous one left.
@@ -16,6 +17,7 @@
 // sub-step) so that the rotation bound that continuous collision relies on holds for the step.
 // They apply to the velocities the step starts from (the approach speeds that contacts and
 // restitution see) and after each velocity integration.
+#include "joint.h"
 #include "solver.h"
 
 #include "tumble/constants.h"
@@ -163,6 +165,7 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	{
 		tbSoftPrepareContacts(&context);
 	}
+	tbPrepareJoints(&context); // joint.c: joints are few, solved one at a time (scalar)
 	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)
 	{
 		tbColorConstraints(&context); // NGS has its own solver loops (solver_ngs.c): scalar only
@@ -171,12 +174,14 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	for (int i = 0; i < subStepCount; ++i)
 	{
 		tbIntegrateVelocities(&context);
+		tbWarmStartJoints(&context);
 		tbWarmStartContacts(&context);
 		tbMethodSubStep(&context);
 	}
 
 	tbApplyRestitution(&context);
 	tbStoreImpulses(&context);
+	tbFinishJoints(&context); // joint events; joints keep their own impulses
 	if (context.wideConstraints != NULL)
 	{
 		tbReleaseColors(&context);

@@ -16,6 +16,7 @@
 
 #include "contact_solver.h"
 #include "integrator.h"
+#include "joint.h"
 
 void tbBaumgartePrepare(tbStepContext* context)
 {
@@ -29,6 +30,7 @@ void tbBaumgarteSubStep(tbStepContext* context)
 	int velocityIterations = tbMaxInt(context->world->def.velocityIterations, 1);
 	for (int i = 0; i < velocityIterations; ++i)
 	{
+		tbSolveJoints(context, true); // joint.c: the same Baumgarte bias
 		tbSolveContacts(context, tb_biasBaumgarte);
 	}
 	tbIntegratePositions(context);

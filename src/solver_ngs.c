@@ -45,6 +45,7 @@
 
 #include "contact_solver.h"
 #include "integrator.h"
+#include "joint.h"
 
 #include "tumble/constants.h"
 
@@ -585,6 +586,7 @@ void tbNGSSubStep(tbStepContext* context)
 	int velocityIterations = tbMaxInt(def->velocityIterations, 1);
 	for (int i = 0; i < velocityIterations; ++i)
 	{
+		tbSolveJoints(context, true); // joint.c: velocity rows with a Baumgarte bias, no position pass
 		tbSolveVelocityConstraints(context, infos, false);
 	}
 	tbIntegratePositions(context);

@@ -30,6 +30,7 @@
 
 #include "contact_solver.h"
 #include "integrator.h"
+#include "joint.h"
 
 #include "tumble/constants.h"
 
@@ -117,11 +118,13 @@ void tbSoftPrepare(tbStepContext* context)
 
 void tbSoftSubStep(tbStepContext* context)
 {
+	tbSolveJoints(context, true); // joint.c: soft positional correction
 	tbSolveContacts(context, tb_biasSoft);
 	tbIntegratePositions(context);
-	int relaxIterations = context->world->def.relaxIterations;
+	int relaxIterations = context->world->def.relaxIterations + tbJointTreeRelaxIterations(context); // joint.c
 	for (int i = 0; i < relaxIterations; ++i)
 	{
+		tbSolveJoints(context, false); // rigid, no correction
 		tbSolveContacts(context, tb_biasRelax);
 	}
 }

@@ -51,6 +51,22 @@ typedef struct tbSoftness
 	float impulseScale;
 } tbSoftness;
 
+/// The coefficients for a stiffness in hertz (rigid when hertz ≤ 0), contacts and joints alike.
+static inline tbSoftness tbMakeSoftness(float hertz, float dampingRatio, float h)
+{
+	if (hertz <= 0.0f)
+	{
+		tbSoftness rigid = {0.0f, 1.0f, 0.0f};
+		return rigid;
+	}
+	float omega = 2.0f * TB_PI * hertz;
+	float a1 = 2.0f * dampingRatio + h * omega;
+	float a2 = h * omega * a1;
+	float a3 = 1.0f / (1.0f + a2);
+	tbSoftness soft = {omega / a1, a2 * a3, a3};
+	return soft;
+}
+
 /// One manifold point as the solver sees it: 44 bytes.
 typedef struct tbContactConstraintPoint
 {

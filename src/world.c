@@ -41,6 +41,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.positionIterations = 3;
 	def.relaxIterations = 1;
 	def.enableWideSolver = true;
+	def.enableJointTrees = true;
 	def.enableWarmStarting = true;
 	def.internalValue = TB_WORLD_DEF_MAGIC;
 	return def;
@@ -51,6 +52,7 @@ tbDebugDraw tbDefaultDebugDraw(void)
 	tbDebugDraw draw;
 	memset(&draw, 0, sizeof(draw));
 	draw.drawShapes = true;
+	draw.drawJoints = true;
 	return draw;
 }
 
@@ -271,6 +273,7 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->moveEvents, w->moveCapacity);
 	TB_ARRAY_FREE(w->pendingEndEvents, w->pendingEndCapacity);
 	TB_ARRAY_FREE(w->pendingSensorEndEvents, w->pendingSensorEndCapacity);
+	tbFreeJoints(w);
 }
 
 void tbDestroyWorld(tbWorldId worldId)

@@ -49,6 +49,8 @@ typedef struct tbBody
 	int headShapeId; ///< singly linked through tbShape::nextShapeId
 	int shapeCount;
 	int contactCount;
+	int headJointKey; ///< doubly linked joint edges (joint.h); key = (jointId << 1) | edge
+	int jointCount;
 
 	int solverIndex;	  ///< index in the solver's body arrays this step, or TB_NULL_INDEX
 	uint32_t islandStamp; ///< step stamp used by the island search (unsigned: wraps without overflow)
@@ -172,6 +174,31 @@ typedef struct tbWorld
 	int* contactFree;
 	int contactFreeCount, contactFreeCapacity;
 
+	// Joints (joint.c): a pool like the contacts; the joints the solver sees this step (joint-id
+	// order); joint events of the last step; a stack for waking joined bodies.
+	struct tbJoint* joints;
+	int jointCapacity;
+	int jointCount;
+	int jointHighWater;
+	int* jointFree;
+	int jointFreeCount, jointFreeCapacity;
+	int* solverJoints;
+	int solverJointCount, solverJointCapacity;
+	tbJointEvent* jointEvents;
+	int jointEventCount, jointEventCapacity;
+	int* jointWakeStack;
+	int jointWakeCount, jointWakeCapacity;
+	bool jointWakeActive;
+	float jointInvH; ///< 1/s, inverse sub-step of the last step: joint force = impulse·jointInvH
+	// joint_tree.c: this step's joint trees, from the step arena (valid during the step).
+	struct tbTreeNode* jointTreeNodes;
+	int jointTreeNodeCount;
+	struct tbTree* jointTrees;
+	int jointTreeCount;
+	float* jointTreeValues;
+	struct tbJointRows* jointTreeRows;
+	bool jointTreesStale; ///< the bodies moved since the trees were last factored
+
 	tbHashSet pairSet; ///< shape pairs that have a contact
 	tbBroadPhase broadPhase;
 
@@ -271,6 +298,22 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies);
 /// Returns the reported flag change (begin/end events): +1 began, −1 stopped, 0 no change; sets
 /// *beganTouching when the manifold gained points (the bodies must be woken).
 int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching);
+
+// joint.c: what bodies, contacts, islands and the world need of joints.
+/// Wake the sleeping bodies joined to this (just woken) body, transitively through dynamic bodies.
+void tbWakeJointedBodies(tbWorld* world, tbBody* body);
+/// Island stage, first thing: a joint with one side awake wakes the other (the rule contacts use).
+void tbWakeJointPartners(tbWorld* world);
+/// Sleep stage: push the awake, unstamped bodies joined to this one onto world->islandStack.
+int tbPushJointedBodies(tbWorld* world, const tbBody* body, uint32_t stamp, int top);
+/// Pair filter: true when a joint between the two bodies forbids their collision.
+bool tbJointBlocksCollision(const tbWorld* world, int bodyIdA, int bodyIdB);
+/// Destroy every joint of a body (tbDestroyBody); the other bodies are woken.
+void tbDestroyBodyJoints(tbWorld* world, tbBody* body);
+/// Free the joint pool and arrays (world destruction).
+void tbFreeJoints(tbWorld* world);
+/// Draw every joint (draw.c).
+void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw);
 
 // Stages of the step, in order (world.c drives them; each lives in the file of its concept).
 bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* world); // contact.c: broad-phase pair filter

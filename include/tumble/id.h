@@ -27,14 +27,24 @@ typedef struct tbShapeId
 	uint16_t generation;
 } tbShapeId;
 
+/// Joint handle.
+typedef struct tbJointId
+{
+	int32_t index1;
+	uint16_t world0;
+	uint16_t generation;
+} tbJointId;
+
 #ifdef __cplusplus
 #define TB_NULL_WORLD_ID (tbWorldId{})
 #define TB_NULL_BODY_ID (tbBodyId{})
 #define TB_NULL_SHAPE_ID (tbShapeId{})
+#define TB_NULL_JOINT_ID (tbJointId{})
 #else
 #define TB_NULL_WORLD_ID ((tbWorldId){0})
 #define TB_NULL_BODY_ID ((tbBodyId){0})
 #define TB_NULL_SHAPE_ID ((tbShapeId){0})
+#define TB_NULL_JOINT_ID ((tbJointId){0})
 #endif
 
 /// True if the id is null (all zero). A non-null id may still be stale: use tbBody_IsValid etc.
@@ -44,5 +54,5 @@ typedef struct tbShapeId
 /// Compare two ids of the same kind.
 #define TB_ID_EQUALS(id1, id2) ((id1).index1 == (id2).index1 && (id1).generation == (id2).generation)
 
-/// Pack a body or shape id into 64 bits (for user data, hash keys, files).
+/// Pack a body, shape or joint id into 64 bits (for user data, hash keys, files).
 #define TB_STORE_ID(id) (((uint64_t)(uint32_t)(id).index1 << 32) | ((uint64_t)(id).world0 << 16) | (uint64_t)(id).generation)

@@ -20,7 +20,7 @@ extern "C" {
 /// TB_MAX_WORLDS exist.
 TB_API tbWorldId tbCreateWorld(const tbWorldDef* def);
 
-/// Destroy a world and everything in it. Its body and shape ids become stale.
+/// Destroy a world and everything in it. Its body, shape and joint ids become stale.
 TB_API void tbDestroyWorld(tbWorldId worldId);
 
 TB_API bool tbWorld_IsValid(tbWorldId worldId);
@@ -98,7 +98,7 @@ TB_API bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTran
 // Bodies
 
 TB_API tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def);
-/// Destroys the body, its shapes and its contacts.
+/// Destroys the body, its shapes, its contacts and its joints (their ids become stale).
 TB_API void tbDestroyBody(tbBodyId bodyId);
 TB_API bool tbBody_IsValid(tbBodyId bodyId);
 
@@ -194,6 +194,194 @@ TB_API tbAABB tbShape_GetAABB(tbShapeId shapeId);
 TB_API bool tbShape_TestPoint(tbShapeId shapeId, tbVec2 point);
 TB_API tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input);
 TB_API tbMassData tbShape_GetMassData(tbShapeId shapeId);
+
+// ---------------------------------------------------------------------------------------------
+// Joints. Every kind shares the tbJoint_* functions; tbRevoluteJoint_* and the like refuse a
+// joint of another kind. Setters check their input, wake both bodies and return false (changing
+// nothing) on bad input. Forces and torques are in N and N·m, averaged over the last step.
+
+/// Destroys the joint; its id becomes stale. Wakes both bodies.
+TB_API void tbDestroyJoint(tbJointId jointId);
+TB_API bool tbJoint_IsValid(tbJointId jointId);
+TB_API tbJointType tbJoint_GetType(tbJointId jointId);
+TB_API tbBodyId tbJoint_GetBodyA(tbJointId jointId);
+TB_API tbBodyId tbJoint_GetBodyB(tbJointId jointId);
+TB_API tbWorldId tbJoint_GetWorld(tbJointId jointId);
+TB_API bool tbJoint_SetLocalFrameA(tbJointId jointId, tbTransform localFrame);
+TB_API tbTransform tbJoint_GetLocalFrameA(tbJointId jointId);
+TB_API bool tbJoint_SetLocalFrameB(tbJointId jointId, tbTransform localFrame);
+TB_API tbTransform tbJoint_GetLocalFrameB(tbJointId jointId);
+/// Allowing collision lets the broad phase find the pair again; forbidding it destroys the
+/// contacts between the two bodies.
+TB_API void tbJoint_SetCollideConnected(tbJointId jointId, bool shouldCollide);
+TB_API bool tbJoint_GetCollideConnected(tbJointId jointId);
+TB_API void tbJoint_SetUserData(tbJointId jointId, void* userData);
+TB_API void* tbJoint_GetUserData(tbJointId jointId);
+TB_API void tbJoint_WakeBodies(tbJointId jointId);
+/// Force the joint applies to body B (N, world axes); body A receives the opposite.
+TB_API tbVec2 tbJoint_GetConstraintForce(tbJointId jointId);
+/// Torque the joint applies to body B (N·m) besides the moment of its force.
+TB_API float tbJoint_GetConstraintTorque(tbJointId jointId);
+TB_API bool tbJoint_SetConstraintTuning(tbJointId jointId, float hertz, float dampingRatio);
+TB_API void tbJoint_GetConstraintTuning(tbJointId jointId, float* hertz, float* dampingRatio);
+TB_API bool tbJoint_SetForceThreshold(tbJointId jointId, float threshold);
+TB_API float tbJoint_GetForceThreshold(tbJointId jointId);
+TB_API bool tbJoint_SetTorqueThreshold(tbJointId jointId, float threshold);
+TB_API float tbJoint_GetTorqueThreshold(tbJointId jointId);
+TB_API bool tbJoint_SetDrawScale(tbJointId jointId, float drawScale);
+TB_API float tbJoint_GetDrawScale(tbJointId jointId);
+
+/// Number of joints attached to the body.
+TB_API int tbBody_GetJointCount(tbBodyId bodyId);
+/// Fill jointArray with up to capacity joint ids; returns the number written.
+TB_API int tbBody_GetJoints(tbBodyId bodyId, tbJointId* jointArray, int capacity);
+
+/// Joints whose force or torque reached its threshold in the last step.
+TB_API tbJointEvents tbWorld_GetJointEvents(tbWorldId worldId);
+
+// Distance joint -------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreateDistanceJoint(tbWorldId worldId, const tbDistanceJointDef* def);
+TB_API bool tbDistanceJoint_SetLength(tbJointId jointId, float length);
+TB_API float tbDistanceJoint_GetLength(tbJointId jointId);
+TB_API void tbDistanceJoint_EnableSpring(tbJointId jointId, bool enableSpring);
+TB_API bool tbDistanceJoint_IsSpringEnabled(tbJointId jointId);
+TB_API bool tbDistanceJoint_SetSpringForceRange(tbJointId jointId, float lowerForce, float upperForce);
+TB_API void tbDistanceJoint_GetSpringForceRange(tbJointId jointId, float* lowerForce, float* upperForce);
+TB_API bool tbDistanceJoint_SetSpringHertz(tbJointId jointId, float hertz);
+TB_API float tbDistanceJoint_GetSpringHertz(tbJointId jointId);
+TB_API bool tbDistanceJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio);
+TB_API float tbDistanceJoint_GetSpringDampingRatio(tbJointId jointId);
+TB_API void tbDistanceJoint_EnableLimit(tbJointId jointId, bool enableLimit);
+TB_API bool tbDistanceJoint_IsLimitEnabled(tbJointId jointId);
+TB_API bool tbDistanceJoint_SetLengthRange(tbJointId jointId, float minLength, float maxLength);
+TB_API float tbDistanceJoint_GetMinLength(tbJointId jointId);
+TB_API float tbDistanceJoint_GetMaxLength(tbJointId jointId);
+/// Distance between the two anchors now (m).
+TB_API float tbDistanceJoint_GetCurrentLength(tbJointId jointId);
+TB_API void tbDistanceJoint_EnableMotor(tbJointId jointId, bool enableMotor);
+TB_API bool tbDistanceJoint_IsMotorEnabled(tbJointId jointId);
+TB_API bool tbDistanceJoint_SetMotorSpeed(tbJointId jointId, float motorSpeed);
+TB_API float tbDistanceJoint_GetMotorSpeed(tbJointId jointId);
+TB_API bool tbDistanceJoint_SetMaxMotorForce(tbJointId jointId, float force);
+TB_API float tbDistanceJoint_GetMaxMotorForce(tbJointId jointId);
+TB_API float tbDistanceJoint_GetMotorForce(tbJointId jointId);
+
+// Filter joint ---------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreateFilterJoint(tbWorldId worldId, const tbFilterJointDef* def);
+
+// Motor joint ----------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreateMotorJoint(tbWorldId worldId, const tbMotorJointDef* def);
+TB_API bool tbMotorJoint_SetLinearVelocity(tbJointId jointId, tbVec2 velocity);
+TB_API tbVec2 tbMotorJoint_GetLinearVelocity(tbJointId jointId);
+TB_API bool tbMotorJoint_SetAngularVelocity(tbJointId jointId, float velocity);
+TB_API float tbMotorJoint_GetAngularVelocity(tbJointId jointId);
+TB_API bool tbMotorJoint_SetMaxVelocityForce(tbJointId jointId, float maxForce);
+TB_API float tbMotorJoint_GetMaxVelocityForce(tbJointId jointId);
+TB_API bool tbMotorJoint_SetMaxVelocityTorque(tbJointId jointId, float maxTorque);
+TB_API float tbMotorJoint_GetMaxVelocityTorque(tbJointId jointId);
+TB_API bool tbMotorJoint_SetLinearHertz(tbJointId jointId, float hertz);
+TB_API float tbMotorJoint_GetLinearHertz(tbJointId jointId);
+TB_API bool tbMotorJoint_SetLinearDampingRatio(tbJointId jointId, float damping);
+TB_API float tbMotorJoint_GetLinearDampingRatio(tbJointId jointId);
+TB_API bool tbMotorJoint_SetAngularHertz(tbJointId jointId, float hertz);
+TB_API float tbMotorJoint_GetAngularHertz(tbJointId jointId);
+TB_API bool tbMotorJoint_SetAngularDampingRatio(tbJointId jointId, float damping);
+TB_API float tbMotorJoint_GetAngularDampingRatio(tbJointId jointId);
+TB_API bool tbMotorJoint_SetMaxSpringForce(tbJointId jointId, float maxForce);
+TB_API float tbMotorJoint_GetMaxSpringForce(tbJointId jointId);
+TB_API bool tbMotorJoint_SetMaxSpringTorque(tbJointId jointId, float maxTorque);
+TB_API float tbMotorJoint_GetMaxSpringTorque(tbJointId jointId);
+
+// Prismatic joint ------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreatePrismaticJoint(tbWorldId worldId, const tbPrismaticJointDef* def);
+TB_API void tbPrismaticJoint_EnableSpring(tbJointId jointId, bool enableSpring);
+TB_API bool tbPrismaticJoint_IsSpringEnabled(tbJointId jointId);
+TB_API bool tbPrismaticJoint_SetSpringHertz(tbJointId jointId, float hertz);
+TB_API float tbPrismaticJoint_GetSpringHertz(tbJointId jointId);
+TB_API bool tbPrismaticJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio);
+TB_API float tbPrismaticJoint_GetSpringDampingRatio(tbJointId jointId);
+TB_API bool tbPrismaticJoint_SetTargetTranslation(tbJointId jointId, float translation);
+TB_API float tbPrismaticJoint_GetTargetTranslation(tbJointId jointId);
+TB_API void tbPrismaticJoint_EnableLimit(tbJointId jointId, bool enableLimit);
+TB_API bool tbPrismaticJoint_IsLimitEnabled(tbJointId jointId);
+TB_API float tbPrismaticJoint_GetLowerLimit(tbJointId jointId);
+TB_API float tbPrismaticJoint_GetUpperLimit(tbJointId jointId);
+TB_API bool tbPrismaticJoint_SetLimits(tbJointId jointId, float lower, float upper);
+TB_API void tbPrismaticJoint_EnableMotor(tbJointId jointId, bool enableMotor);
+TB_API bool tbPrismaticJoint_IsMotorEnabled(tbJointId jointId);
+TB_API bool tbPrismaticJoint_SetMotorSpeed(tbJointId jointId, float motorSpeed);
+TB_API float tbPrismaticJoint_GetMotorSpeed(tbJointId jointId);
+TB_API bool tbPrismaticJoint_SetMaxMotorForce(tbJointId jointId, float force);
+TB_API float tbPrismaticJoint_GetMaxMotorForce(tbJointId jointId);
+TB_API float tbPrismaticJoint_GetMotorForce(tbJointId jointId);
+/// Position of frame B's origin along the axis, relative to frame A's origin (m).
+TB_API float tbPrismaticJoint_GetTranslation(tbJointId jointId);
+/// Rate of change of the translation (m/s).
+TB_API float tbPrismaticJoint_GetSpeed(tbJointId jointId);
+
+// Revolute joint -------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreateRevoluteJoint(tbWorldId worldId, const tbRevoluteJointDef* def);
+TB_API void tbRevoluteJoint_EnableSpring(tbJointId jointId, bool enableSpring);
+TB_API bool tbRevoluteJoint_IsSpringEnabled(tbJointId jointId);
+TB_API bool tbRevoluteJoint_SetSpringHertz(tbJointId jointId, float hertz);
+TB_API float tbRevoluteJoint_GetSpringHertz(tbJointId jointId);
+TB_API bool tbRevoluteJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio);
+TB_API float tbRevoluteJoint_GetSpringDampingRatio(tbJointId jointId);
+TB_API bool tbRevoluteJoint_SetTargetAngle(tbJointId jointId, float angle);
+TB_API float tbRevoluteJoint_GetTargetAngle(tbJointId jointId);
+/// Rotation of frame B relative to frame A (rad, in [−π, π]).
+TB_API float tbRevoluteJoint_GetAngle(tbJointId jointId);
+TB_API void tbRevoluteJoint_EnableLimit(tbJointId jointId, bool enableLimit);
+TB_API bool tbRevoluteJoint_IsLimitEnabled(tbJointId jointId);
+TB_API float tbRevoluteJoint_GetLowerLimit(tbJointId jointId);
+TB_API float tbRevoluteJoint_GetUpperLimit(tbJointId jointId);
+TB_API bool tbRevoluteJoint_SetLimits(tbJointId jointId, float lower, float upper);
+TB_API void tbRevoluteJoint_EnableMotor(tbJointId jointId, bool enableMotor);
+TB_API bool tbRevoluteJoint_IsMotorEnabled(tbJointId jointId);
+TB_API bool tbRevoluteJoint_SetMotorSpeed(tbJointId jointId, float motorSpeed);
+TB_API float tbRevoluteJoint_GetMotorSpeed(tbJointId jointId);
+TB_API float tbRevoluteJoint_GetMotorTorque(tbJointId jointId);
+TB_API bool tbRevoluteJoint_SetMaxMotorTorque(tbJointId jointId, float torque);
+TB_API float tbRevoluteJoint_GetMaxMotorTorque(tbJointId jointId);
+
+// Weld joint -----------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreateWeldJoint(tbWorldId worldId, const tbWeldJointDef* def);
+TB_API bool tbWeldJoint_SetLinearHertz(tbJointId jointId, float hertz);
+TB_API float tbWeldJoint_GetLinearHertz(tbJointId jointId);
+TB_API bool tbWeldJoint_SetLinearDampingRatio(tbJointId jointId, float dampingRatio);
+TB_API float tbWeldJoint_GetLinearDampingRatio(tbJointId jointId);
+TB_API bool tbWeldJoint_SetAngularHertz(tbJointId jointId, float hertz);
+TB_API float tbWeldJoint_GetAngularHertz(tbJointId jointId);
+TB_API bool tbWeldJoint_SetAngularDampingRatio(tbJointId jointId, float dampingRatio);
+TB_API float tbWeldJoint_GetAngularDampingRatio(tbJointId jointId);
+
+// Wheel joint ----------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreateWheelJoint(tbWorldId worldId, const tbWheelJointDef* def);
+TB_API void tbWheelJoint_EnableSpring(tbJointId jointId, bool enableSpring);
+TB_API bool tbWheelJoint_IsSpringEnabled(tbJointId jointId);
+TB_API bool tbWheelJoint_SetSpringHertz(tbJointId jointId, float hertz);
+TB_API float tbWheelJoint_GetSpringHertz(tbJointId jointId);
+TB_API bool tbWheelJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio);
+TB_API float tbWheelJoint_GetSpringDampingRatio(tbJointId jointId);
+TB_API void tbWheelJoint_EnableLimit(tbJointId jointId, bool enableLimit);
+TB_API bool tbWheelJoint_IsLimitEnabled(tbJointId jointId);
+TB_API float tbWheelJoint_GetLowerLimit(tbJointId jointId);
+TB_API float tbWheelJoint_GetUpperLimit(tbJointId jointId);
+TB_API bool tbWheelJoint_SetLimits(tbJointId jointId, float lower, float upper);
+TB_API void tbWheelJoint_EnableMotor(tbJointId jointId, bool enableMotor);
+TB_API bool tbWheelJoint_IsMotorEnabled(tbJointId jointId);
+TB_API bool tbWheelJoint_SetMotorSpeed(tbJointId jointId, float motorSpeed);
+TB_API float tbWheelJoint_GetMotorSpeed(tbJointId jointId);
+TB_API bool tbWheelJoint_SetMaxMotorTorque(tbJointId jointId, float torque);
+TB_API float tbWheelJoint_GetMaxMotorTorque(tbJointId jointId);
+TB_API float tbWheelJoint_GetMotorTorque(tbJointId jointId);
 
 #ifdef __cplusplus
 }

@@ -68,6 +68,8 @@ typedef struct tbWorldDef
 	bool enableWarmStarting;		///< default true
 	bool enableWideSolver;			///< soft and Baumgarte: contacts graph-coloured and solved four at a
 									///< time (SIMD); false: the scalar reference in hashed order. Default true
+	bool enableJointTrees;			///< the equality rows of joints solved exactly over each tree of joined
+									///< bodies (joint_tree.c); false: row by row (Gauss–Seidel). Default true
 	tbFrictionCallback* frictionCallback;
 	tbRestitutionCallback* restitutionCallback;
 	void* userData;
@@ -147,6 +149,167 @@ typedef struct tbShapeDef
 TB_API tbShapeDef tbDefaultShapeDef(void);
 
 // ---------------------------------------------------------------------------------------------
+// Joints (Box2D v3.2's grammar: b2RevoluteJointDef → tbRevoluteJointDef, and so on). Each kind's
+// definition embeds the common part as `.base`. Start every definition from its
+// tbDefault*JointDef(); the local frames are given relative to each body's origin (not its centre
+// of mass), so adding shapes later does not move the joint.
+
+typedef enum tbJointType
+{
+	tb_distanceJoint,
+	tb_filterJoint,
+	tb_motorJoint,
+	tb_prismaticJoint,
+	tb_revoluteJoint,
+	tb_weldJoint,
+	tb_wheelJoint,
+	tb_jointTypeCount
+} tbJointType;
+
+/// The part every joint definition shares.
+typedef struct tbJointDef
+{
+	void* userData;
+	tbBodyId bodyIdA;
+	tbBodyId bodyIdB;
+	tbTransform localFrameA;	  ///< joint frame in body A's frame (origin: the anchor; rotation normalised)
+	tbTransform localFrameB;	  ///< joint frame in body B's frame
+	float forceThreshold;		  ///< N, ≥ 0: a joint event when the constraint force reaches it; default FLT_MAX (never)
+	float torqueThreshold;		  ///< N·m, ≥ 0: the same for the constraint torque; default FLT_MAX
+	float constraintHertz;		  ///< Hz, ≥ 0: stiffness of the positional correction (soft step), default 60,
+								  ///< capped at a quarter of the sub-step rate like contacts
+	float constraintDampingRatio; ///< ≥ 0, default 2 (Box2D v3's values)
+	float drawScale;			  ///< m, > 0: size of the joint's debug drawing, default 1
+	bool collideConnected;		  ///< may the two bodies collide? Default false
+} tbJointDef;
+
+/// Distance joint: keeps a point of each body at a fixed distance (rigid), or joins them by a
+/// spring, optionally within [minLength, maxLength] (a rope when only maxLength matters), with an
+/// optional motor along the line.
+typedef struct tbDistanceJointDef
+{
+	tbJointDef base;
+	float length;		   ///< m, > 0, rest length (clamped below to TB_LINEAR_SLOP), default 1
+	bool enableSpring;	   ///< false: rigid (limit and motor are then ignored)
+	float lowerSpringForce; ///< N, the largest pulling force (negative), default −FLT_MAX
+	float upperSpringForce; ///< N, the largest pushing force, default FLT_MAX; lower ≤ upper
+	float hertz;		   ///< Hz, ≥ 0, spring stiffness (0: no spring force)
+	float dampingRatio;	   ///< ≥ 0
+	bool enableLimit;
+	float minLength;	   ///< m, ≥ 0 (clamped below to TB_LINEAR_SLOP), default 0
+	float maxLength;	   ///< m, ≥ minLength, default TB_HUGE
+	bool enableMotor;
+	float maxMotorForce;   ///< N, ≥ 0
+	float motorSpeed;	   ///< m/s, rate of change of the length
+	int internalValue;
+} tbDistanceJointDef;
+
+TB_API tbDistanceJointDef tbDefaultDistanceJointDef(void);
+
+/// Filter joint: no constraint; only stops the two bodies colliding.
+typedef struct tbFilterJointDef
+{
+	tbJointDef base;
+	int internalValue;
+} tbFilterJointDef;
+
+TB_API tbFilterJointDef tbDefaultFilterJointDef(void);
+
+/// Motor joint: drives the relative velocity of body B's frame with respect to body A's frame
+/// (force and torque capped), and pulls frame B towards frame A with linear and angular springs
+/// (also capped). With body A static and frame A moved each step, it drags body B around (how
+/// Box2D v3.2 replaces 3.1's mouse joint).
+typedef struct tbMotorJointDef
+{
+	tbJointDef base;
+	tbVec2 linearVelocity;	   ///< m/s, target velocity of frame B relative to frame A (world axes)
+	float maxVelocityForce;	   ///< N, ≥ 0 (0: no velocity control)
+	float angularVelocity;	   ///< rad/s
+	float maxVelocityTorque;   ///< N·m, ≥ 0
+	float linearHertz;		   ///< Hz, ≥ 0, spring pulling frame B's origin onto frame A's (0: none)
+	float linearDampingRatio;  ///< ≥ 0
+	float maxSpringForce;	   ///< N, ≥ 0
+	float angularHertz;		   ///< Hz, ≥ 0, spring turning frame B onto frame A (0: none)
+	float angularDampingRatio; ///< ≥ 0
+	float maxSpringTorque;	   ///< N·m, ≥ 0
+	int internalValue;
+} tbMotorJointDef;
+
+TB_API tbMotorJointDef tbDefaultMotorJointDef(void);
+
+/// Prismatic joint: body B slides along the x-axis of frame A and cannot turn relative to A. The
+/// translation is 0 when the frame origins coincide.
+typedef struct tbPrismaticJointDef
+{
+	tbJointDef base;
+	bool enableSpring;
+	float hertz;			 ///< Hz, ≥ 0
+	float dampingRatio;		 ///< ≥ 0
+	float targetTranslation; ///< m, where the spring pulls to
+	bool enableLimit;
+	float lowerTranslation;	 ///< m, ≤ upperTranslation
+	float upperTranslation;	 ///< m
+	bool enableMotor;
+	float maxMotorForce;	 ///< N, ≥ 0
+	float motorSpeed;		 ///< m/s
+	int internalValue;
+} tbPrismaticJointDef;
+
+TB_API tbPrismaticJointDef tbDefaultPrismaticJointDef(void);
+
+/// Revolute joint: the frame origins are pinned together; the bodies turn about that point. The
+/// angle is the rotation of frame B relative to frame A.
+typedef struct tbRevoluteJointDef
+{
+	tbJointDef base;
+	float targetAngle;	  ///< rad, where the spring pulls to
+	bool enableSpring;
+	float hertz;		  ///< Hz, ≥ 0
+	float dampingRatio;	  ///< ≥ 0
+	bool enableLimit;
+	float lowerAngle;	  ///< rad, in [−π, π], ≤ upperAngle (clamped to ±0.99π as Box2D v3)
+	float upperAngle;	  ///< rad, in [−π, π]
+	bool enableMotor;
+	float maxMotorTorque; ///< N·m, ≥ 0
+	float motorSpeed;	  ///< rad/s
+	int internalValue;
+} tbRevoluteJointDef;
+
+TB_API tbRevoluteJointDef tbDefaultRevoluteJointDef(void);
+
+/// Weld joint: holds frame B on frame A, rigidly (hertz 0) or through linear and angular springs.
+typedef struct tbWeldJointDef
+{
+	tbJointDef base;
+	float linearHertz;		   ///< Hz, ≥ 0; 0: as stiff as the constraint softness allows
+	float angularHertz;		   ///< Hz, ≥ 0; 0: as stiff as the constraint softness allows
+	float linearDampingRatio;  ///< ≥ 0
+	float angularDampingRatio; ///< ≥ 0
+	int internalValue;
+} tbWeldJointDef;
+
+TB_API tbWeldJointDef tbDefaultWeldJointDef(void);
+
+/// Wheel joint: body B (the wheel) slides along the x-axis of frame A on a suspension spring and
+/// turns freely, optionally driven by a motor.
+typedef struct tbWheelJointDef
+{
+	tbJointDef base;
+	bool enableSpring;	  ///< default true
+	float hertz;		  ///< Hz, ≥ 0, default 1
+	float dampingRatio;	  ///< ≥ 0, default 0.7
+	bool enableLimit;
+	float lowerTranslation; ///< m, ≤ upperTranslation
+	float upperTranslation; ///< m
+	bool enableMotor;
+	float maxMotorTorque; ///< N·m, ≥ 0
+	float motorSpeed;	  ///< rad/s
+	int internalValue;
+} tbWheelJointDef;
+
+TB_API tbWheelJointDef tbDefaultWheelJointDef(void);
+
+// ---------------------------------------------------------------------------------------------
 // Events, read after the step. Arrays stay valid until the next step or world destruction.
 
 typedef struct tbContactBeginTouchEvent
@@ -215,6 +378,20 @@ typedef struct tbBodyEvents
 	int moveCount;
 } tbBodyEvents;
 
+/// A joint whose constraint force or torque reached its threshold in the step (joints of awake
+/// bodies only).
+typedef struct tbJointEvent
+{
+	tbJointId jointId;
+	void* userData;
+} tbJointEvent;
+
+typedef struct tbJointEvents
+{
+	const tbJointEvent* jointEvents;
+	int count;
+} tbJointEvents;
+
 // ---------------------------------------------------------------------------------------------
 // Profile and counters
 
@@ -265,6 +442,7 @@ typedef enum tbHexColor
 	tb_colorNormal = 0xF28E2B,
 	tb_colorAABB = 0xB07AA1,
 	tb_colorTree = 0xBAB0AC,
+	tb_colorJoint = 0x8FBC8F,
 } tbHexColor;
 
 typedef struct tbDebugDraw
@@ -293,6 +471,7 @@ typedef struct tbDebugDraw
 	bool drawTree;
 	bool drawContacts;
 	bool drawContactNormals;
+	bool drawJoints; ///< anchors and links of joints, default true
 	void* context;
 } tbDebugDraw;
 
