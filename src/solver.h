@@ -156,8 +156,10 @@ typedef struct tbStepContext
 	void* wideMemory;
 	int wideMemoryBytes;
 
-	tbSoftness contactSoftness; ///< dynamic vs dynamic
-	tbSoftness staticSoftness;	///< dynamic vs static or kinematic
+	tbSoftness contactSoftness; ///< dynamic vs dynamic, new or deep (soft step: contactHertz)
+	tbSoftness staticSoftness;	///< dynamic vs static or kinematic, and settled dynamic (soft step: restHertz)
+	float contactHertz;			///< soft step: Hz, stiffness of new and deep dynamic contacts
+	float restHertz;			///< soft step: Hz, stiffness of static and settled contacts
 	float maxContactPushSpeed;	///< m/s
 	float maxLinearSpeed;		///< m/s
 	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step
@@ -190,6 +192,7 @@ void tbUnpackWideImpulses(tbStepContext* context);
 // One file per position-error method, the same two functions in the same order.
 // Prepare: set the softness the constraints will copy (before tbPrepareContacts).
 // SubStep: after velocity integration and warm starting, solve, integrate positions and correct.
+// tbSoftPrepareContacts (after tbPrepareContacts): the soft step's stiffness of each dynamic contact.
 void tbSoftPrepare(tbStepContext* context);
 void tbSoftSubStep(tbStepContext* context);
 void tbSoftPrepareContacts(tbStepContext* context);

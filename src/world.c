@@ -34,7 +34,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.solver = tb_solverSoft;
 	def.velocityIterations = 8;
 	def.positionIterations = 3;
-	def.relaxIterations = 1;
+	def.relaxIterations = 3;
 	def.enableWideSolver = true;
 	def.enableWarmStarting = true;
 	def.internalValue = TB_WORLD_DEF_MAGIC;
