@@ -382,6 +382,7 @@ int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 	contact->flags &= ~(uint32_t)(tb_contactTouching | tb_contactReported);
 	contact->flags |= (touching ? (uint32_t)tb_contactTouching : 0u) | (reported ? (uint32_t)tb_contactReported : 0u);
 	*beganTouching = touching && wasTouching == false;
+	contact->touchingSteps = touching ? (uint16_t)(contact->touchingSteps + (contact->touchingSteps < UINT16_MAX)) : 0u;
 	return reported == wasReported ? 0 : (reported ? 1 : -1);
 }
 

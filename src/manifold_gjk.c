@@ -25,9 +25,10 @@
 //    for tbCollidePolygonsGJK, the caller's margin for tbCollidePolygonsGJKWithMargin.
 // Feature ids: the point at the reference face's first end is (first vertex of the face, the
 // incident vertex on that side) and likewise at the second end, whether or not it was clipped:
-// the same corners and edges touching keep the same ids. Bytes are (feature on A, feature on B);
-// the reference byte carries TB_GJK_FEATURE_REFERENCE and corner–corner points carry
-// TB_GJK_FEATURE_CORNER on both bytes, so the three kinds of contact never share an id.
+// the same corners and edges touching keep the same ids. Bytes are (vertex of A, vertex of B),
+// the same pair whichever face is the reference, so a point keeps its id (and its warm start)
+// when two near-parallel faces swap roles; corner–corner points carry TB_GJK_FEATURE_CORNER on
+// both bytes, so they never share an id with a clipped point.
 // Everything is computed in A's frame and moved to world at the end (precision far from the
 // origin). anchorA and anchorB are left zero for the world to fill.
 
@@ -51,8 +52,7 @@
 // paths give the same points and can be compared and swapped point for point.
 #define TB_GJK_CLIP_SLACK (0.1f * TB_LINEAR_SLOP)
 
-// Feature flags (polygon indices are below 8, so bits 5 to 7 are free).
-#define TB_GJK_FEATURE_REFERENCE 0x40
+// Feature flag of corner–corner points (polygon indices are below 8, so bits 5 to 7 are free).
 #define TB_GJK_FEATURE_CORNER 0x80
 
 // Face of polygon whose normal is most aligned with direction.
@@ -97,11 +97,10 @@ static tbManifoldPoint tbMakeClipPoint(tbVec2 p, tbVec2 v1, tbVec2 nR, float rad
 	return mp;
 }
 
+// (vertex of A, vertex of B) from (reference vertex, incident vertex); flip: B is the reference.
 static uint16_t tbClipFeatureId(int refVertex, int incVertex, bool flip)
 {
-	uint8_t ref = (uint8_t)(refVertex | TB_GJK_FEATURE_REFERENCE);
-	uint8_t inc = (uint8_t)incVertex;
-	return flip ? TB_MAKE_FEATURE_ID(inc, ref) : TB_MAKE_FEATURE_ID(ref, inc);
+	return flip ? TB_MAKE_FEATURE_ID(incVertex, refVertex) : TB_MAKE_FEATURE_ID(refVertex, incVertex);
 }
 
 // Clip the incident edge of `inc` against reference face `refEdge` of `ref` (both in A's

@@ -176,8 +176,10 @@ typedef struct tbStepContext
 	int wideMemoryBytes;
 	void* ngsScratch; ///< solver_ngs.c's constraints, step arena (taken at the first sub-step)
 
-	tbSoftness contactSoftness; ///< dynamic vs dynamic
-	tbSoftness staticSoftness;	///< dynamic vs static or kinematic
+	tbSoftness contactSoftness; ///< dynamic vs dynamic, new or deep (soft step: contactHertz)
+	tbSoftness staticSoftness;	///< dynamic vs static or kinematic, and settled dynamic (soft step: restHertz)
+	float contactHertz;			///< soft step: Hz, stiffness of new and deep dynamic contacts
+	float restHertz;			///< soft step: Hz, stiffness of static and settled contacts
 	float maxContactPushSpeed;	///< m/s
 	float maxLinearSpeed;		///< m/s
 	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step

@@ -135,6 +135,7 @@ typedef struct tbContact
 	bool inUse;
 	tbSimplexCache cache; ///< GJK warm start for the GJK/EPA narrow phase
 	tbManifold manifold;
+	uint16_t touchingSteps; ///< steps in a row with manifold points (saturates): the soft step's settle clock
 } tbContact;
 
 // ---------------------------------------------------------------------------------------------

@@ -579,7 +579,7 @@ Test(manifold, clip_merges_coincident_points)
 {
 	// A's vertex 0 lies exactly (in A's frame, float) on the side plane through B's vertex 0 of
 	// B's reference face 3, and A's incident edge runs outward: the clip kept the vertex and also
-	// added the crossing at the same spot (ids 0x0083 and 0x43c0). One point remains, the vertex:
+	// added the crossing at the same spot (ids 0x0083 and 0x8300). One point remains, the vertex:
 	// its id, (A's vertex 0, B's reference face 3) = 0x0083, does not depend on the side plane.
 	const float boxA[5] = {0.236609891f, 0.798745811f, 1.37965298f, -0.343814373f, -2.97580791f};
 	const float boxB[5] = {0.0525781885f, 0.795801938f, 0.982432842f, 1.10550523f, 0.743678808f};
@@ -840,6 +840,49 @@ Test(manifold, near_parallel_reference_face_is_stable)
 		cr_expect_eq(m.points[0].id, shifted.points[0].id);
 		cr_expect_eq(m.points[1].id, shifted.points[1].id);
 	}
+}
+
+// The points of two consecutive manifolds of a turning pair, matched by position (within
+// 2 mm: a turn of 5e-4 rad moves a point 0.5 m from the centre by 0.25 mm), must have the same
+// feature ids. Returns the number of reference-face swaps seen (normal direction jumps).
+static int tbCountSwapsKeepingIds(tbManifold (*collide)(const tbPolygon*, tbTransform, const tbPolygon*, tbTransform))
+{
+	tbPolygon a = tbMakeBox(0.5f, 0.5f);
+	tbPolygon b = tbMakeBox(0.5f, 0.5f);
+	int swaps = 0;
+	tbManifold previous = {0};
+	for (int k = 0; k <= 40; ++k)
+	{
+		float angle = -0.01f + 0.0005f * (float)k;
+		tbManifold m = collide(&a, tbMakeTransform(0, 0, 0), &b, tbMakeTransform(0.5f, 0.99f, angle));
+		cr_assert_eq(m.pointCount, 2, "angle %g", (double)angle);
+		if (k > 0 && fabsf(m.normal.x - previous.normal.x) > 1e-4f)
+		{
+			swaps += 1;
+			for (int i = 0; i < 2; ++i)
+			{
+				int j = tbDistance(m.points[i].point, previous.points[0].point) < 2e-3f ? 0 : 1;
+				cr_assert(tbDistance(m.points[i].point, previous.points[j].point) < 2e-3f, "angle %g point %d moved",
+						  (double)angle, i);
+				cr_expect_eq(m.points[i].id, previous.points[j].id, "angle %g: id 0x%04x was 0x%04x", (double)angle,
+							 m.points[i].id, previous.points[j].id);
+			}
+		}
+		previous = m;
+	}
+	return swaps;
+}
+
+Test(manifold, reference_face_swap_keeps_ids)
+{
+	// A box on two boxes (a pyramid) sags by 1 cm and turns by a few milliradians, which moves the
+	// two faces' separations apart by more than the reference hysteresis: the reference face
+	// swaps between A's top and B's bottom. The points are the same corners on the same edges, so
+	// their ids, hence their warm starts, must not change. Both polygon paths (SAT, GJK/EPA).
+	int satSwaps = tbCountSwapsKeepingIds(tbCollidePolygons);
+	int gjkSwaps = tbCountSwapsKeepingIds(tbCollidePolygonsGJK);
+	cr_expect_gt(satSwaps, 0, "the sweep must swap the reference face (SAT)");
+	cr_expect_gt(gjkSwaps, 0, "the sweep must swap the reference face (GJK)");
 }
 
 Test(manifold, speculative_margin)
