@@ -211,7 +211,16 @@ static void tbSolveFastBody(tbWorld* world, int bodyId)
 		c.fastShape = shape;
 		c.fastProxy = tbMakeShapeProxy(&shape->geometry);
 		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, &c.sweep), pad + TB_LINEAR_SLOP);
-		tbBroadPhase_Query(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
+		if (body->isBullet)
+		{
+			tbBroadPhase_Query(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
+		}
+		else
+		{
+			// A non-bullet stops only at static shapes: the movable proxies (the whole moving
+			// pile, in a scene like the spinner) need not be visited at all.
+			tbBroadPhase_QueryStatic(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
+		}
 	}
 	if (c.fraction < 1.0f)
 	{
