@@ -457,6 +457,37 @@ void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, 
 	}
 }
 
+/// Table scans (sort-and-sweep, brute force) see every proxy: pass on the static ones only.
+typedef struct tbStaticQueryContext
+{
+	const tbBroadPhase* bp;
+	tbTreeQueryCallbackFcn* callback;
+	void* userContext;
+} tbStaticQueryContext;
+
+static bool tbStaticQueryCallback(int key, int shapeIndex, void* context)
+{
+	tbStaticQueryContext* c = context;
+	if (c->bp->table.proxies[key].type != tb_proxyStatic)
+	{
+		return true;
+	}
+	return c->callback(key, shapeIndex, c->userContext);
+}
+
+void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+							  void* context)
+{
+	if (bp->method == tb_broadPhaseTree)
+	{
+		tbUserQueryContext c = {bp, maskBits, callback, NULL, context, 0.0f, false};
+		tbDynamicTree_Query(&bp->staticTree, aabb, maskBits, tbUserQueryCallback, &c);
+		return;
+	}
+	tbStaticQueryContext c = {bp, callback, context};
+	tbBroadPhase_Query(bp, aabb, maskBits, tbStaticQueryCallback, &c);
+}
+
 static float tbUserRayCastCallback(const tbRayCastInput* input, int treeProxyId, int key, void* context)
 {
 	(void)treeProxyId;

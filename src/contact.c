@@ -317,12 +317,13 @@ static float tbEffectiveGravityScale(const tbBody* body)
 ///   |g|·|sA − sB|·dt²;
 /// - damping only slows bodies; forces applied by the user are not included (small, and a
 ///   body pushed hard enough is caught by the fixed TB_SPECULATIVE_DISTANCE or pushed out).
-/// Margin = TB_SPECULATIVE_DISTANCE + min(TB_AABB_MARGIN, dt·(relative point speed + dt·|g|·|sA − sB|)).
-/// The cap: a contact exists only while the broad-phase boxes overlap, and a moving body's box is
-/// its tight box enlarged by TB_AABB_MARGIN (static boxes are not enlarged), so a pair further
-/// apart than that may have no contact to keep points in; the cap also bounds the extra points
-/// a fast scene pays for. Resting bodies get TB_SPECULATIVE_DISTANCE + g·dt² (0.0228 m at 60 Hz)
-/// against the ground and exactly TB_SPECULATIVE_DISTANCE against each other.
+/// Margin = TB_SPECULATIVE_DISTANCE + min(cap, dt·(relative point speed + dt·|g|·|sA − sB|)), with
+/// cap the larger of the two bodies' reaches (tbSpeculativeReach: a body moving farther per step is
+/// swept by continuous collision instead). The cap also bounds the extra points a fast scene pays
+/// for. Points need no contact beyond this: broad-phase boxes contain each body's predicted sweep
+/// (shape.c), so a pair that can touch during the step has its contact. Resting bodies get
+/// TB_SPECULATIVE_DISTANCE + g·dt² (0.0228 m at 60 Hz) against the ground and exactly
+/// TB_SPECULATIVE_DISTANCE against each other.
 static float tbSpeculativeMargin(const tbWorld* world, const tbBody* bodyA, const tbBody* bodyB)
 {
 	float dt = world->stepTime;
@@ -333,7 +334,7 @@ static float tbSpeculativeMargin(const tbWorld* world, const tbBody* bodyA, cons
 					tbAbsFloat(tbEffectiveGravityScale(bodyA) - tbEffectiveGravityScale(bodyB));
 	float closing = dt * (speed + dt * gravity);
 	// NaN-safe: a non-finite velocity gets the cap rather than poisoning the comparison.
-	float cap = tbMaxFloat(TB_AABB_MARGIN, TB_CONTINUOUS_FRACTION * tbMaxFloat(bodyA->minExtent, bodyB->minExtent));
+	float cap = tbMaxFloat(tbSpeculativeReach(bodyA), tbSpeculativeReach(bodyB));
 	float extra = closing < cap ? closing : cap;
 	return TB_SPECULATIVE_DISTANCE + tbMaxFloat(extra, 0.0f);
 }

@@ -1,7 +1,7 @@
 // The continuous stage: time of impact for bodies fast enough to tunnel.
 //
 // After the solve, a dynamic body whose motion in the step exceeds what speculative contacts cover,
-// max(TB_AABB_MARGIN, TB_CONTINUOUS_FRACTION × its thickness) (minExtent: the smallest distance
+// max(TB_SPECULATIVE_REACH, TB_CONTINUOUS_FRACTION × its thickness) (minExtent: the smallest distance
 // from its centre of mass to its surface), or any bullet, is swept from its start transform (center0, rotation0) to its end transform against
 // static shapes (bullets also against non-bullet dynamic bodies, which are swept along their own
 // motion). The body is moved back to the earliest time of impact; its velocity is kept, and the
@@ -46,10 +46,9 @@ static bool tbIsFast(const tbWorld* world, const tbBody* body, float* motion)
 	float rotation = tbAbsFloat(tbRelativeAngle(body->rotation0, body->transform.q));
 	*motion = translation + rotation * body->maxExtent;
 	(void)world;
-	// Speculative contacts cover a closing distance of up to max(TB_AABB_MARGIN, ½·thickness) per
-	// step (contact.c, shape.c); only motion beyond that can tunnel.
-	float covered = tbMaxFloat(TB_AABB_MARGIN, TB_CONTINUOUS_FRACTION * body->minExtent);
-	return body->isBullet || *motion > covered;
+	// Speculative contacts cover a closing distance of up to the body's reach per step (contact.c,
+	// shape.c); only motion beyond that can tunnel.
+	return body->isBullet || *motion > tbSpeculativeReach(body);
 }
 
 /// A circle whose motion over the sweep is linear: centred on the centre of mass, or no rotation.
@@ -211,7 +210,16 @@ static void tbSolveFastBody(tbWorld* world, int bodyId)
 		c.fastShape = shape;
 		c.fastProxy = tbMakeShapeProxy(&shape->geometry);
 		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, &c.sweep), pad + TB_LINEAR_SLOP);
-		tbBroadPhase_Query(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
+		if (body->isBullet)
+		{
+			tbBroadPhase_Query(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
+		}
+		else
+		{
+			// A non-bullet stops only at static shapes: the movable proxies (the whole moving
+			// pile, in a scene like the spinner) need not be visited at all.
+			tbBroadPhase_QueryStatic(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
+		}
 	}
 	if (c.fraction < 1.0f)
 	{

@@ -289,6 +289,9 @@ void tbDestroyShapeProxy(tbWorld* world, tbShape* shape);
 bool tbShouldShapesCollide(tbFilter a, tbFilter b);
 /// Check user geometry (finite, positive radii, valid polygon); reports an error naming `f`.
 bool tbCheckGeometry(const char* f, const tbGeometry* geometry);
+/// Displacement per step that a body's speculative contacts cover (m): max(TB_SPECULATIVE_REACH,
+/// TB_CONTINUOUS_FRACTION × minExtent). Beyond it the body is swept by continuous collision.
+float tbSpeculativeReach(const tbBody* body);
 /// Refresh the shape boxes of a body and move broad-phase proxies that left their fat boxes.
 void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);
 

@@ -17,9 +17,24 @@
 /// up to this far apart, so the solver can stop an approach before it becomes a penetration.
 #define TB_SPECULATIVE_DISTANCE (4.0f * TB_LINEAR_SLOP)
 
-/// Fat AABB margin, 0.1 m: each broad-phase box is enlarged by this much so that most steps
-/// move no proxy. Larger means fewer tree updates but more candidate pairs.
-#define TB_AABB_MARGIN 0.1f
+/// Speculative reach, 0.1 m: the least displacement per step that speculative contacts cover for
+/// any body, however thin. A body's reach is max(TB_SPECULATIVE_REACH, TB_CONTINUOUS_FRACTION × its
+/// thickness): its broad-phase box is swept by its predicted displacement up to its reach, the
+/// narrow phase keeps points up to that much farther apart than TB_SPECULATIVE_DISTANCE, and only
+/// motion beyond it is left to continuous collision.
+#define TB_SPECULATIVE_REACH 0.1f
+
+/// Fat AABB margin, at most 0.05 m: a movable body's broad-phase box is its swept box enlarged by
+/// min(TB_AABB_MARGIN, TB_AABB_MARGIN_FRACTION × its largest extent), so a body that rests or
+/// jiggles moves no proxy. Larger means fewer proxy moves but more contacts (pairs whose boxes
+/// overlap). Static boxes are not enlarged.
+#define TB_AABB_MARGIN 0.05f
+
+/// Fat AABB margin relative to the body, 1/16 of its largest extent (0.011 m for a 0.25 m box,
+/// 0.044 m for a unit box): a fixed margin around small bodies makes far more contacts than touch.
+/// 1/16 measured against 1/8 and 1/4 on the tumbler, smash and spinner scenes: fewest contacts
+/// (within 10 % of Box2D v3's counts) at no more time (docs/methods.md, "Broad-phase boxes").
+#define TB_AABB_MARGIN_FRACTION 0.0625f
 
 /// Maximum position correction per step of the non-linear Gauss–Seidel pass, 0.2 m: limits
 /// the push-out speed of deep overlaps (prevents popping).
@@ -43,8 +58,8 @@
 #define TB_MAX_ROTATION (0.25f * 3.14159265359f)
 
 /// A body is "fast" and gets swept for continuous collision when its motion in one step exceeds
-/// what speculative contacts cover: max(TB_AABB_MARGIN, this fraction × its extent, the smallest
-/// distance from its centre of mass to its surface). 0.5: the speculative margin and the
+/// what speculative contacts cover: max(TB_SPECULATIVE_REACH, this fraction × its extent, the
+/// smallest distance from its centre of mass to its surface). 0.5: the speculative margin and the
 /// broad-phase reach grow with speed up to that distance, so slower bodies are stopped by
 /// speculative contacts and never tunnel.
 #define TB_CONTINUOUS_FRACTION 0.5f
