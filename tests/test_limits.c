@@ -864,3 +864,47 @@ Test(world_limits, time_step_below_minimum_refused, .init = SetupHooks, .fini = 
 		tbDestroyWorld(world);
 	}
 }
+
+Test(world_limits, contacts_restart_without_warm_starting_when_a_body_mass_changes, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a body's density set from 1 to 9.2e-41 kg/m² while it touched another
+	// body. Its contacts kept the impulses of the heavy body for warm starting, and the next step
+	// re-applied them with the new 1/m: 1e13 m/s and a jump of 6e12 m at density 1e-20, NaN at
+	// 1e-37. A change of mass data now restarts the body's contacts from zero impulse. A 1 kg box
+	// resting on the ground made 1e-20 kg stays resting: it moves less than the linear slop, and
+	// its speed stays below what gravity gives in one step (10 m/s² · 1/60 s).
+	float densities[3] = {1e-20f, 1e-37f, 1e6f};
+	for (int k = 0; k < 3; ++k)
+	{
+		tbWorldDef def = tbDefaultWorldDef();
+		tbWorldId world = tbCreateWorld(&def);
+		tbBodyDef groundDef = tbDefaultBodyDef();
+		tbBodyId ground = tbCreateBody(world, &groundDef);
+		tbShapeDef shapeDef = tbDefaultShapeDef();
+		tbPolygon floor = tbMakeOffsetBox(10.0f, 0.5f, tbMakeVec2(0.0f, -0.5f), tb_rot_identity);
+		cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(ground, &shapeDef, &floor)));
+		tbBodyDef boxDef = tbDefaultBodyDef();
+		boxDef.type = tb_dynamicBody;
+		boxDef.position = tbMakeVec2(0.0f, 0.5f);
+		tbBodyId box = tbCreateBody(world, &boxDef);
+		tbPolygon square = tbMakeBox(0.5f, 0.5f);
+		tbShapeId shape = tbCreatePolygonShape(box, &shapeDef, &square);
+		for (int i = 0; i < 20; ++i) // settled, not yet asleep (TB_TIME_TO_SLEEP is 0.5 s)
+		{
+			cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+		}
+		cr_assert(tbBody_IsAwake(box));
+		tbVec2 before = tbBody_GetPosition(box);
+		cr_assert(tbShape_SetDensity(shape, densities[k], true));
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+		tbVec2 p = tbBody_GetPosition(box);
+		tbVec2 v = tbBody_GetLinearVelocity(box);
+		cr_assert(tbDistance(p, before) < TB_LINEAR_SLOP, "density %g: moved from (%g, %g) to (%g, %g)",
+				  (double)densities[k], (double)before.x, (double)before.y, (double)p.x, (double)p.y);
+		cr_assert(tbLength(v) < 10.0f / 60.0f, "density %g: v = (%g, %g)", (double)densities[k], (double)v.x,
+				  (double)v.y);
+		tbDestroyWorld(world);
+	}
+	cr_assert_eq(s_errors, 0);
+}
