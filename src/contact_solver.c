@@ -82,10 +82,13 @@ static void tbIntegratedVelocity(const tbStepContext* context, int index, tbVec2
 		*w = 0.0f;
 		return;
 	}
-	const tbSolverBody* sb = context->bodies + index;
+	tbSolverBody sb = context->bodies[index];
 	const tbSolverMotion* m = context->motions + index;
-	*v = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
-	*w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
+	sb.linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb.linearVelocity, m->linearDelta));
+	sb.angularVelocity = m->angularDamping * (sb.angularVelocity + m->angularDelta);
+	tbClampSpeeds(context, &sb); // as the integration does (gravity 3e38 m/s²: 5e36 m/s after one step)
+	*v = sb.linearVelocity;
+	*w = sb.angularVelocity;
 }
 
 // NGS at one sub-step is the Box2D 2.4 emulation (solver_ngs.c): 2.4 has no speculative contacts, so a point that is apart at

@@ -36,8 +36,6 @@ static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraint
 	context->constraintCount = constraintCount;
 }
 
-static void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb);
-
 static void tbGatherBodies(tbStepContext* context)
 {
 	tbWorld* world = context->world;
@@ -110,7 +108,7 @@ static tbVec2 tbClampHugeSpeed(tbVec2 v, float maxSpeed)
 }
 
 // The speed clamps of the top of the file, on a solver body's velocity.
-static void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
+void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
 {
 	float maxLinearSpeed = context->maxLinearSpeed;
 	float maxAngularSpeed = context->maxAngularSpeed;

@@ -167,7 +167,9 @@ typedef struct tbStepContext
 	bool enableWarmStarting;
 } tbStepContext;
 
-// solver.c: body integration shared by the methods.
+// solver.c: body integration shared by the methods, and its speed clamps (also applied to the
+// velocities a step starts from).
+void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb);
 void tbIntegrateVelocities(tbStepContext* context);
 void tbIntegratePositions(tbStepContext* context);
 
