@@ -134,7 +134,10 @@ static void tbEstimateImpactVelocity(const tbWorld* world, const tbBody* bodyA, 
 		tbContactConstraintPoint* cp = c->points + j;
 		if (sep > 0.0f && cp->relativeVelocity < 0.0f && an < 0.0f)
 		{
-			cp->relativeVelocity = -sqrtf(cp->relativeVelocity * cp->relativeVelocity - 2.0f * an * sep);
+			// no faster than two bodies at the speed clamp (gravity of 3e38 m/s² made this -∞)
+			float fastest = tbMinFloat(cp->relativeVelocity, -2.0f * world->def.maximumLinearSpeed);
+			float impact = -sqrtf(cp->relativeVelocity * cp->relativeVelocity - 2.0f * an * sep);
+			cp->relativeVelocity = tbMaxFloat(impact, fastest);
 		}
 	}
 }
