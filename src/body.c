@@ -353,8 +353,26 @@ static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbVec2 oldCenter)
 	tbComputeExtents(world, body);
 }
 
+// The accumulated impulses of a body's contacts were found for its old mass: warm starting would
+// re-apply them with the new 1/m (a body made 1e20 times lighter while touching another left at
+// 1e13 m/s). Its contacts restart from zero impulse; the solver finds the new ones.
+static void tbRestartBodyContacts(tbWorld* world, const tbBody* body)
+{
+	for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+	{
+		tbContact* contact = world->contacts + (key >> 1);
+		for (int i = 0; i < contact->manifold.pointCount; ++i)
+		{
+			contact->manifold.points[i].normalImpulse = 0.0f;
+			contact->manifold.points[i].tangentImpulse = 0.0f;
+		}
+		key = contact->edges[key & 1].nextKey;
+	}
+}
+
 void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 {
+	tbRestartBodyContacts(world, body);
 	tbVec2 oldCenter = body->center;
 	body->mass = 0.0f;
 	body->invMass = 0.0f;

@@ -34,6 +34,8 @@
 // "Understanding Constraints", GDC 2014; "Solver2D" blog post, 2024.
 #include "contact_solver.h"
 
+#include "integrator.h"
+
 #include "tumble/constants.h"
 
 // The solver index of a body, or `staticIndex` for bodies that are not in the awake set (static,
@@ -67,10 +69,13 @@ static void tbIntegratedVelocity(const tbStepContext* context, int index, tbVec2
 		*w = 0.0f;
 		return;
 	}
-	const tbSolverBody* sb = context->bodies + index;
+	tbSolverBody sb = context->bodies[index];
 	const tbSolverMotion* m = context->motions + index;
-	*v = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
-	*w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
+	sb.linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb.linearVelocity, m->linearDelta));
+	sb.angularVelocity = m->angularDamping * (sb.angularVelocity + m->angularDelta);
+	tbClampSpeeds(context, &sb); // as the integration does (gravity 3e38 m/s²: 5e36 m/s after one step)
+	*v = sb.linearVelocity;
+	*w = sb.angularVelocity;
 }
 
 // NGS at one sub-step is the Box2D 2.4 emulation (solver_ngs.c): 2.4 has no speculative contacts, so a point that is apart at
@@ -116,7 +121,10 @@ static void tbEstimateImpactVelocity(const tbWorld* world, const tbBody* bodyA, 
 		tbContactConstraintPoint* cp = c->points + j;
 		if (sep > 0.0f && cp->relativeVelocity < 0.0f && an < 0.0f)
 		{
-			cp->relativeVelocity = -sqrtf(cp->relativeVelocity * cp->relativeVelocity - 2.0f * an * sep);
+			// no faster than two bodies at the speed clamp (gravity of 3e38 m/s² made this -∞)
+			float fastest = tbMinFloat(cp->relativeVelocity, -2.0f * world->def.maximumLinearSpeed);
+			float impact = -sqrtf(cp->relativeVelocity * cp->relativeVelocity - 2.0f * an * sep);
+			cp->relativeVelocity = tbMaxFloat(impact, fastest);
 		}
 	}
 }
