@@ -35,6 +35,15 @@ static double NowMs(void)
 	return 1e3 * (double)t.tv_sec + 1e-6 * (double)t.tv_nsec;
 }
 
+/// CPU time of this process: on a shared machine it leaves out the time other programs held the
+/// cores (cache contention still counts), so ratios between runs are steadier than by the wall clock.
+static double CpuMs(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+	return 1e3 * (double)t.tv_sec + 1e-6 * (double)t.tv_nsec;
+}
+
 static int CompareDoubles(const void* a, const void* b)
 {
 	double x = *(const double*)a, y = *(const double*)b;
@@ -108,6 +117,8 @@ typedef struct TumbleConfig
 	int positionIterations;	  ///< > 0 replaces the NGS default
 	int subSteps;			  ///< > 0 replaces the scene's (soft) or 1 (Baumgarte, NGS)
 	bool chipmunkTree;		  ///< Chipmunk peer: BBTree instead of the spatial hash
+	bool profile;			  ///< Tumble: also report the mean stage times and counters (--profile)
+	bool cpuTime;			  ///< time by the process's CPU clock, not the wall clock (--cpu-time)
 } TumbleConfig;
 
 typedef struct Sim
@@ -308,6 +319,14 @@ typedef struct Options
 	TumbleConfig config;
 } Options;
 
+/// Means over the steps of the last repeat (--profile): stage times from tbWorld_GetProfile
+/// (wall clock, ms) and per-step counters.
+typedef struct StageMeans
+{
+	double pairs, collide, islands, solve, continuous, finalize;
+	double touching, recycled, proxyMoves, contacts;
+} StageMeans;
+
 typedef struct RunResult
 {
 	const char* scene;
@@ -315,13 +334,45 @@ typedef struct RunResult
 	int steps;
 	double msMedian, msMin;
 	PeerCounters counters;
+	StageMeans stages;
 	bool valid;
 } RunResult;
+
+static void AddStages(StageMeans* sums, tbWorldId worldId)
+{
+	tbProfile p = tbWorld_GetProfile(worldId);
+	tbCounters c = tbWorld_GetCounters(worldId);
+	sums->pairs += p.pairs;
+	sums->collide += p.collide;
+	sums->islands += p.islands;
+	sums->solve += p.solve;
+	sums->continuous += p.continuous;
+	sums->finalize += p.sleep;
+	sums->touching += c.touchingCount;
+	sums->recycled += c.recycledManifolds;
+	sums->proxyMoves += c.proxyMoves;
+	sums->contacts += c.contactCount;
+}
+
+static void DivideStages(StageMeans* sums, int steps)
+{
+	double* values = &sums->pairs;
+	for (int i = 0; i < (int)(sizeof(StageMeans) / sizeof(double)); ++i)
+	{
+		values[i] /= (double)(steps > 0 ? steps : 1);
+	}
+}
 
 static RunResult RunScene(const Scene* scene, const char* name, Engine engine, int steps, int repeat,
 						  const TumbleConfig* config)
 {
-	RunResult result = {name, engine, steps, 0.0, 0.0, {0, 0, 0}, false};
+	RunResult result;
+	memset(&result, 0, sizeof(result));
+	result.scene = name;
+	result.engine = engine;
+	result.steps = steps;
+	double (*clock)(void) = config->cpuTime ? CpuMs : NowMs;
+	bool profile = config->profile && engine == engineTumble;
 	double* times = malloc(sizeof(double) * (size_t)repeat);
 	for (int r = 0; r < repeat; ++r)
 	{
@@ -331,12 +382,18 @@ static RunResult RunScene(const Scene* scene, const char* name, Engine engine, i
 			free(times);
 			return result;
 		}
-		double start = NowMs();
+		memset(&result.stages, 0, sizeof(result.stages));
+		double start = clock();
 		for (int i = 0; i < steps; ++i)
 		{
 			Sim_Step(&sim);
+			if (profile)
+			{
+				AddStages(&result.stages, sim.tumble.worldId);
+			}
 		}
-		times[r] = (NowMs() - start) / (double)steps;
+		times[r] = (clock() - start) / (double)steps;
+		DivideStages(&result.stages, steps);
 		result.counters = Sim_GetCounters(&sim);
 		Sim_Destroy(&sim);
 	}
@@ -415,6 +472,14 @@ static int RunScenes(const Options* options)
 			}
 			printf("%-16s %-12s %6d %10.3f %10.3f %8d %9d %8d\n", names[s], EngineName((Engine)e), steps, r->msMedian,
 				   r->msMin, r->counters.bodyCount, r->counters.contactCount, r->counters.awakeBodyCount);
+			if (options->config.profile && e == engineTumble)
+			{
+				const StageMeans* m = &r->stages;
+				printf("  mean per step: pairs %.3f collide %.3f islands %.3f solve %.3f continuous %.3f "
+					   "finalize+sleep %.3f ms | contacts %.0f touching %.0f recycled %.0f proxy moves %.0f\n",
+					   m->pairs, m->collide, m->islands, m->solve, m->continuous, m->finalize, m->contacts,
+					   m->touching, m->recycled, m->proxyMoves);
+			}
 			fflush(stdout);
 			if (csv != NULL)
 			{
@@ -1137,12 +1202,16 @@ static void PrintUsage(void)
 	printf("usage: tumble-bench [SCENE...] [--steps N] [--repeat R] [--csv FILE] [--peers]\n"
 		   "                    [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
-		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree]\n"
+		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--no-recycle]\n"
+		   "                    [--chipmunk-tree] [--profile] [--cpu-time]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
 		   "       tumble-bench --list\n"
 		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain, each at its\n"
-		   "catalogue step count, 60 Hz, 4 sub-steps for the soft solver (1 for baumgarte/ngs).\n");
+		   "catalogue step count, 60 Hz, 4 sub-steps for the soft solver (1 for baumgarte/ngs).\n"
+		   "--profile adds each stage's mean time and the mean contact, touching, recycled-manifold and\n"
+		   "proxy-move counts per step; --cpu-time times by the process's CPU clock (shared machines);\n"
+		   "--no-recycle recomputes every manifold (tbWorldDef::enableManifoldRecycling off).\n");
 }
 
 static bool ParseMethod(const char* option, const char* value, SceneMethods* methods)
@@ -1212,6 +1281,18 @@ int main(int argc, char** argv)
 		else if (strcmp(arg, "--scalar-solver") == 0)
 		{
 			options.config.overrides.scalarSolver = true;
+		}
+		else if (strcmp(arg, "--profile") == 0)
+		{
+			options.config.profile = true;
+		}
+		else if (strcmp(arg, "--cpu-time") == 0)
+		{
+			options.config.cpuTime = true;
+		}
+		else if (strcmp(arg, "--no-recycle") == 0)
+		{
+			options.config.overrides.noRecycle = true;
 		}
 		else if (strcmp(arg, "--chipmunk-tree") == 0)
 		{

@@ -68,6 +68,8 @@ typedef struct tbWorldDef
 	bool enableWarmStarting;		///< default true
 	bool enableWideSolver;			///< soft and Baumgarte: contacts graph-coloured and solved four at a
 									///< time (SIMD); false: the scalar reference in hashed order. Default true
+	bool enableManifoldRecycling;	///< touching pairs that barely moved since their manifold was computed keep
+									///< its points and only update separations (contact.c). Default true
 	tbFrictionCallback* frictionCallback;
 	tbRestitutionCallback* restitutionCallback;
 	void* userData;
@@ -249,6 +251,7 @@ typedef struct tbCounters
 	int toiFailures;		 ///< time-of-impact queries that hit the iteration cap
 	int gjkManifolds;		 ///< manifolds computed by the GJK/EPA path
 	int satManifolds;		 ///< manifolds computed by SAT
+	int recycledManifolds;	 ///< touching manifolds recycled (points moved with the bodies, not recomputed)
 	int byteCount;			 ///< bytes allocated by this world
 } tbCounters;
 
