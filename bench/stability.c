@@ -2,7 +2,10 @@
 // (soft step, Baumgarte, NGS) at 1, 2, 4 and 8 sub-steps or iterations, judged by each scene's
 // pass criterion. Writes a CSV of the measurements and the markdown page docs/stability.md.
 //
-//   tumble-stability [--csv FILE] [--markdown FILE]
+//   tumble-stability [--csv FILE] [--markdown FILE] [--no-recycle]
+//
+// --no-recycle recomputes every manifold (tbWorldDef::enableManifoldRecycling off), for measuring
+// what recycling costs in accuracy.
 //
 // Rows: soft × n sub-steps; Baumgarte and NGS × n velocity iterations per step with one
 // sub-step (Box2D 2.4's style), NGS with 3 position iterations. Sleep is off in every scene so
@@ -72,10 +75,14 @@ static Config MakeConfig(tbSolverMethod solver, int count)
 	return c;
 }
 
+/// --no-recycle: every manifold recomputed.
+static bool s_noRecycle = false;
+
 /// Build the scene's world with sleep off and the configuration's solver.
 static SceneWorld BuildWorld(const Scene* scene, const Config* config)
 {
 	tbWorldDef def = Scene_MakeWorldDef(scene, NULL);
+	def.enableManifoldRecycling = def.enableManifoldRecycling && s_noRecycle == false;
 	def.enableSleep = false;
 	def.solver = config->solver;
 	def.velocityIterations = config->velocityIterations;
@@ -595,6 +602,10 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 			   "velocity iterations, as Box2D 2.4 does; ngs adds 3 position iterations. The default method is\n"
 			   "soft with 4 sub-steps. Sleep is off in every scene, so a drifting pile cannot hide by falling\n"
 			   "asleep. 60 Hz, g = 10 m/s² except where a scene has no gravity.\n\n");
+	if (s_noRecycle)
+	{
+		fprintf(f, "Manifold recycling is off in this table (`--no-recycle`): every manifold is recomputed.\n\n");
+	}
 
 	fprintf(f, "| method |");
 	for (int s = 0; s < SCENE_COUNT; ++s)
@@ -728,9 +739,13 @@ int main(int argc, char** argv)
 		{
 			markdownPath = argv[++i];
 		}
+		else if (strcmp(argv[i], "--no-recycle") == 0)
+		{
+			s_noRecycle = true;
+		}
 		else
 		{
-			fprintf(stderr, "usage: tumble-stability [--csv FILE] [--markdown FILE]\n");
+			fprintf(stderr, "usage: tumble-stability [--csv FILE] [--markdown FILE] [--no-recycle]\n");
 			return 2;
 		}
 	}

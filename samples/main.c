@@ -55,7 +55,7 @@ static void PrintUsage(void)
 		   "  tumble run SCENE [--steps N] [--png DIR] [--every K] [--size WxH] [--csv FILE]\n"
 		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                   [--toi off|quadratic|ca] [--solver baumgarte|ngs|soft] [--substeps N]\n"
-		   "                   [--iterations N] [--scalar-solver] [--sheet FILE.png] [--frames N] [--contacts]\n"
+		   "                   [--iterations N] [--scalar-solver] [--no-recycle] [--sheet FILE.png] [--frames N] [--contacts]\n"
 		   "                   [--aabbs] [--tree]\n"
 		   "  tumble export SCENE\n"
 		   "  tumble sheet SCENE --out FILE.png [--frames N] [run options]\n"
@@ -220,6 +220,10 @@ static bool ParseFlagOption(Options* options, const char* flag)
 	if (strcmp(flag, "--scalar-solver") == 0)
 	{
 		return (options->overrides.scalarSolver = true);
+	}
+	if (strcmp(flag, "--no-recycle") == 0)
+	{
+		return (options->overrides.noRecycle = true);
 	}
 	return false;
 }

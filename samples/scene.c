@@ -285,6 +285,10 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 		{
 			def.enableWideSolver = false;
 		}
+		if (overrides->noRecycle)
+		{
+			def.enableManifoldRecycling = false;
+		}
 	}
 	return def;
 }

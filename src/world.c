@@ -43,6 +43,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.enableWideSolver = true;
 	def.enableJointTrees = true;
 	def.enableWarmStarting = true;
+	def.enableManifoldRecycling = true;
 	def.internalValue = TB_WORLD_DEF_MAGIC;
 	return def;
 }
@@ -517,6 +518,15 @@ bool tbWorld_IsSleepingEnabled(tbWorldId worldId)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_IsSleepingEnabled");
 	return world != NULL && world->def.enableSleep;
+}
+
+void tbWorld_EnableManifoldRecycling(tbWorldId worldId, bool flag)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableManifoldRecycling");
+	if (world != NULL)
+	{
+		world->def.enableManifoldRecycling = flag;
+	}
 }
 
 bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio, float pushSpeed)

@@ -117,7 +117,25 @@ enum tbContactFlags
 	/// further apart (the velocity-dependent margin of tbUpdateContact), which would otherwise make
 	/// event timing depend on speed.
 	tb_contactReported = 0x10,
+	/// contact->base holds the pose and points of the last computed manifold (a touching, non-sensor
+	/// contact): manifold recycling may move those points instead of recomputing (contact.c).
+	tb_contactRecyclable = 0x20,
 };
+
+/// Where a contact's manifold was last computed by the narrow phase (manifold recycling,
+/// contact.c): the relative pose and the points fixed in each body, so that a later step can move
+/// the points with the bodies. 76 bytes.
+typedef struct tbManifoldBase
+{
+	tbTransform relative; ///< pose of B's origin frame in A's, inv(xfA)·xfB
+	tbVec2 normalA;		  ///< the normal in A's frame
+	tbVec2 normalB;		  ///< the normal in B's frame
+	tbVec2 pointA[2];	  ///< each point (midway between the surfaces) in A's origin frame
+	tbVec2 pointB[2];	  ///< the same points in B's origin frame
+	float separation[2];  ///< their separations (m)
+	float margin;		  ///< the speculative margin the manifold was computed with (m)
+} tbManifoldBase;
+_Static_assert(sizeof(tbManifoldBase) == 76, "tbManifoldBase is 76 bytes");
 
 /// A pair of shapes whose fat boxes overlap. Exists from the step the boxes start to overlap
 /// until the step they stop.
@@ -136,6 +154,7 @@ typedef struct tbContact
 	tbSimplexCache cache; ///< GJK warm start for the GJK/EPA narrow phase
 	tbManifold manifold;
 	uint16_t touchingSteps; ///< steps in a row with manifold points (saturates): the soft step's settle clock
+	tbManifoldBase base; ///< valid when flags has tb_contactRecyclable
 } tbContact;
 
 // ---------------------------------------------------------------------------------------------

@@ -36,6 +36,18 @@
 /// (within 10 % of Box2D v3's counts) at no more time (docs/methods.md, "Broad-phase boxes").
 #define TB_AABB_MARGIN_FRACTION 0.0625f
 
+/// Manifold recycling distance, at most TB_SPECULATIVE_DISTANCE = 0.02 m: a touching contact keeps
+/// its manifold points (moved with the bodies, separations updated) while no point of one body can
+/// have moved farther than this relative to the other since the narrow phase computed them. A
+/// feature that was not in the manifold was then at least the speculative margin apart, so it
+/// cannot reach contact unseen (contact.c, tbRecycleManifold).
+#define TB_RECYCLE_DISTANCE TB_SPECULATIVE_DISTANCE
+
+/// Manifold recycling angle, 2 degrees in radians (the angular slop): largest relative rotation of
+/// the two bodies for which the normal may be carried along. The recycled normal bisects the two
+/// bodies' rotations, so its direction is off by at most half this (1 degree).
+#define TB_RECYCLE_ANGLE TB_ANGULAR_SLOP
+
 /// Maximum position correction per step of the non-linear Gauss–Seidel pass, 0.2 m: limits
 /// the push-out speed of deep overlaps (prevents popping).
 #define TB_MAX_LINEAR_CORRECTION 0.2f

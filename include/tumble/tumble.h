@@ -52,6 +52,8 @@ TB_API bool tbWorld_SetNarrowPhaseMethod(tbWorldId worldId, tbNarrowPhaseMethod 
 TB_API bool tbWorld_SetContinuousMethod(tbWorldId worldId, tbContinuousMethod method);
 TB_API bool tbWorld_SetSolverMethod(tbWorldId worldId, tbSolverMethod method, int velocityIterations,
 									int positionIterations);
+/// Manifold recycling on or off (tbWorldDef::enableManifoldRecycling).
+TB_API void tbWorld_EnableManifoldRecycling(tbWorldId worldId, bool flag);
 /// The methods in force (after `auto` resolution).
 TB_API tbWorldDef tbWorld_GetDef(tbWorldId worldId);
 

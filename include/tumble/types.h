@@ -71,6 +71,8 @@ typedef struct tbWorldDef
 									///< time (SIMD); false: the scalar reference in hashed order. Default true
 	bool enableJointTrees;			///< the equality rows of joints solved exactly over each tree of joined
 									///< bodies (joint_tree.c); false: row by row (Gauss–Seidel). Default true
+	bool enableManifoldRecycling;	///< touching pairs that barely moved since their manifold was computed keep
+									///< its points and only update separations (contact.c). Default true
 	tbFrictionCallback* frictionCallback;
 	tbRestitutionCallback* restitutionCallback;
 	void* userData;
@@ -427,6 +429,7 @@ typedef struct tbCounters
 	int toiFailures;		 ///< time-of-impact queries that hit the iteration cap
 	int gjkManifolds;		 ///< manifolds computed by the GJK/EPA path
 	int satManifolds;		 ///< manifolds computed by SAT
+	int recycledManifolds;	 ///< touching manifolds recycled (points moved with the bodies, not recomputed)
 	int byteCount;			 ///< bytes allocated by this world
 } tbCounters;
 

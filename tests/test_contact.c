@@ -1,0 +1,188 @@
+// Manifold recycling (contact.c, tbRecycleManifold): a touching pair that barely moved since its
+// manifold was computed keeps its points and only updates their separations.
+//
+// Set-up: no gravity, a static ground box whose top face is y = 0 and a dynamic box hovering a gap
+// g = 0.01 m above it, square to it. The narrow phase gives two speculative points (g is inside
+// the 0.02 m speculative distance) and, the bodies being at rest and apart, the solver applies no
+// impulse, so the step leaves them where they were. The box is then moved by hand and the contact
+// updated directly (tbUpdateContact, as the collide stage does), so the comparison with a fresh
+// manifold sees exactly the transforms the update saw.
+//
+// Where the tolerance comes from (contact.c): a recycled separation is s0 + (xB − xA)·n with xA,
+// xB the two bodies' material points that coincided when the manifold was computed and n the kept
+// normal, turned by half the box's rotation θ (the bisector of the ground's and the box's turns).
+// The ground's face is the reference, so the true normal did not turn: the error is
+// |xB − xA|·sin(θ/2) (the kept normal is off by θ/2) plus s0·(1 − cos(θ/2)) ≤ s0·θ²/8, and
+// |xB − xA| ≤ |Δp| + θ·maxExtent (translation of the box's centre plus the arc of its farthest
+// point). Float rounding of the transforms adds a few 1e-7 m; 1e-6 m covers it.
+#include "world.h"
+
+#include <criterion/criterion.h>
+
+#include <math.h>
+
+#define GAP 0.01f
+
+typedef struct Pair
+{
+	tbWorldId worldId;
+	tbBodyId box;
+	tbWorld* world;
+	tbContact* contact;
+	float halfSize;
+} Pair;
+
+static tbContact* OnlyContact(tbWorld* world)
+{
+	for (int id = 0; id < world->contactHighWater; ++id)
+	{
+		if (world->contacts[id].inUse)
+		{
+			return world->contacts + id;
+		}
+	}
+	return NULL;
+}
+
+/// Ground box (top face y = 0) and a dynamic box of half size h hovering GAP above it (or a circle
+/// of radius h when `circle`); one step computes the first manifold.
+static Pair MakePair(float h, bool circle, bool recycling)
+{
+	Pair p;
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, 0.0f);
+	def.enableManifoldRecycling = recycling;
+	p.worldId = tbCreateWorld(&def);
+	tbBodyDef bd = tbDefaultBodyDef();
+	bd.position = tbMakeVec2(0.0f, -0.5f);
+	tbBodyId ground = tbCreateBody(p.worldId, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbPolygon groundBox = tbMakeBox(5.0f, 0.5f);
+	tbCreatePolygonShape(ground, &sd, &groundBox);
+	bd.type = tb_dynamicBody;
+	bd.position = tbMakeVec2(0.0f, h + GAP);
+	p.box = tbCreateBody(p.worldId, &bd);
+	if (circle)
+	{
+		tbCircle c = {{0.0f, 0.0f}, h};
+		tbCreateCircleShape(p.box, &sd, &c);
+	}
+	else
+	{
+		tbPolygon box = tbMakeBox(h, h);
+		tbCreatePolygonShape(p.box, &sd, &box);
+	}
+	tbWorld_Step(p.worldId, 1.0f / 60.0f, 4);
+	p.world = tbGetWorldChecked(p.worldId, "test");
+	p.contact = OnlyContact(p.world);
+	p.halfSize = h;
+	cr_assert_not_null(p.contact);
+	cr_assert_eq(p.contact->manifold.pointCount, circle ? 1 : 2);
+	tbVec2 position = tbBody_GetPosition(p.box);
+	cr_assert_float_eq(position.y, h + GAP, 1e-7f, "the speculative points must not move the box");
+	return p;
+}
+
+/// Move the box by (dx, dy) and turn it by angle, then update the contact as the collide stage
+/// does. Returns true when the manifold was recycled.
+static bool MoveAndUpdate(Pair* p, float dx, float dy, float angle)
+{
+	tbBody_SetTransform(p->box, tbMakeVec2(dx, p->halfSize + GAP + dy), tbMakeRot(angle));
+	int before = p->world->counters.recycledManifolds;
+	bool began = false;
+	tbUpdateContact(p->world, p->contact, &began);
+	return p->world->counters.recycledManifolds == before + 1;
+}
+
+/// The manifold the narrow phase computes now, with the margin the update used (at rest: the
+/// speculative distance).
+static tbManifold FreshManifold(const Pair* p)
+{
+	const tbShape* a = p->world->shapes + p->contact->shapeIdA;
+	const tbShape* b = p->world->shapes + p->contact->shapeIdB;
+	return tbCollideShapesWithMargin(&a->geometry, p->world->bodies[a->bodyId].transform, &b->geometry,
+									 p->world->bodies[b->bodyId].transform, p->world->def.narrowPhase,
+									 TB_SPECULATIVE_DISTANCE);
+}
+
+Test(contact, recycled_separation_matches_recomputed_for_small_motion)
+{
+	Pair p = MakePair(0.5f, false, true);
+	float dx = 0.004f, dy = -0.003f, theta = 0.5f * TB_PI / 180.0f;
+	cr_assert(MoveAndUpdate(&p, dx, dy, theta), "a 5 mm move and 0.5 degree turn must be recycled");
+	tbManifold fresh = FreshManifold(&p);
+	const tbManifold* kept = &p.contact->manifold;
+	cr_assert_eq(fresh.pointCount, 2);
+	float maxExtent = sqrtf(2.0f) * p.halfSize;
+	float motion = sqrtf(dx * dx + dy * dy) + theta * maxExtent;
+	float tolerance = motion * sinf(0.5f * theta) + GAP * theta * theta / 8.0f + 1e-6f;
+	int matched = 0;
+	for (int i = 0; i < kept->pointCount; ++i)
+	{
+		for (int j = 0; j < fresh.pointCount; ++j)
+		{
+			if (fresh.points[j].id == kept->points[i].id)
+			{
+				cr_expect_float_eq(kept->points[i].separation, fresh.points[j].separation, tolerance,
+								   "point %d: recycled %.7f, recomputed %.7f, tolerance %.2e", i,
+								   (double)kept->points[i].separation, (double)fresh.points[j].separation,
+								   (double)tolerance);
+				matched += 1;
+			}
+		}
+	}
+	cr_assert_eq(matched, 2, "the recycled points keep the feature ids the narrow phase gives");
+	// The turned normal: half the box's turn away from the ground's (0, 1).
+	cr_expect_float_eq(kept->normal.x, -sinf(0.5f * theta), 1e-6f);
+	// The separations moved: the turn lowered one corner and raised the other.
+	cr_expect(fabsf(kept->points[0].separation - kept->points[1].separation) > 0.008f);
+	tbDestroyWorld(p.worldId);
+}
+
+Test(contact, recomputed_past_the_distance_threshold)
+{
+	// 0.025 m sideways: every point of the box moved farther than TB_RECYCLE_DISTANCE (0.02 m).
+	Pair p = MakePair(0.5f, false, true);
+	cr_assert_not(MoveAndUpdate(&p, 0.025f, 0.0f, 0.0f));
+	tbManifold fresh = FreshManifold(&p);
+	const tbManifold* m = &p.contact->manifold;
+	cr_assert_eq(m->pointCount, fresh.pointCount);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		cr_expect_eq(m->points[i].id, fresh.points[i].id);
+		cr_expect_eq(m->points[i].separation, fresh.points[i].separation, "recomputed: the same numbers");
+	}
+	// Below the threshold the same move is recycled: 0.015 m < 0.02 m.
+	Pair q = MakePair(0.5f, false, true);
+	cr_expect(MoveAndUpdate(&q, 0.015f, 0.0f, 0.0f));
+	tbDestroyWorld(p.worldId);
+	tbDestroyWorld(q.worldId);
+}
+
+Test(contact, recomputed_past_the_angle_threshold)
+{
+	// A 0.1 m box turning 3 degrees: its corners move 0.0707 × 0.052 = 0.0037 m, well inside the
+	// distance threshold, but the turn exceeds TB_RECYCLE_ANGLE (2 degrees).
+	Pair p = MakePair(0.05f, false, true);
+	cr_assert_not(MoveAndUpdate(&p, 0.0f, 0.0f, 3.0f * TB_PI / 180.0f));
+	Pair q = MakePair(0.05f, false, true);
+	cr_expect(MoveAndUpdate(&q, 0.0f, 0.0f, 1.5f * TB_PI / 180.0f));
+	tbDestroyWorld(p.worldId);
+	tbDestroyWorld(q.worldId);
+}
+
+Test(contact, circles_and_disabled_recycling_always_recompute)
+{
+	// A circle's contact point slides over its surface as it turns: never recycled.
+	Pair circle = MakePair(0.5f, true, true);
+	cr_expect_not(MoveAndUpdate(&circle, 0.001f, 0.0f, 0.0f));
+	// Recycling off in the definition, then on again through the setter.
+	Pair off = MakePair(0.5f, false, false);
+	cr_expect_not(MoveAndUpdate(&off, 0.001f, 0.0f, 0.0f));
+	tbWorld_EnableManifoldRecycling(off.worldId, true);
+	cr_expect(tbWorld_GetDef(off.worldId).enableManifoldRecycling);
+	// The base was stored by the last (recomputing) update, 1 mm away.
+	cr_expect(MoveAndUpdate(&off, 0.002f, 0.0f, 0.0f));
+	tbDestroyWorld(circle.worldId);
+	tbDestroyWorld(off.worldId);
+}
