@@ -411,6 +411,9 @@ static float tbRelativeMotion(tbTransform relative0, tbTransform relative, const
 /// point for a feature coming within the margin (caught later, before it touches), and the
 /// clipping against face ends (a point stays while a box slides less than δ past an edge). Bodies
 /// that were swept by continuous collision last step always get a new manifold.
+// cos(TB_RECYCLE_ANGLE) = cos(2°), rounded to float.
+#define TB_RECYCLE_COS_ANGLE 0.99939083f
+
 static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin)
 {
 	const tbManifoldBase* base = &contact->base;
@@ -422,9 +425,11 @@ static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbB
 	tbTransform xfB = bodyB->transform;
 	tbTransform relative = tbInvMulTransforms(xfA, xfB);
 	float tolerance = tbMinFloat(TB_RECYCLE_DISTANCE, base->margin - margin + TB_SPECULATIVE_DISTANCE);
-	float turn = tbAbsFloat(tbRelativeAngle(base->relative.q, relative.q));
+	// |turn| < TB_RECYCLE_ANGLE ⟺ cos(turn) > cos(TB_RECYCLE_ANGLE): the cosine is the dot product of
+	// the two unit rotations, with no atan2 (which cost 4 % of a pyramid step here).
+	float cosTurn = base->relative.q.c * relative.q.c + base->relative.q.s * relative.q.s;
 	// Written so that NaN fails: a non-finite pose always gets a new manifold.
-	if (!(tbRelativeMotion(base->relative, relative, bodyA, bodyB) < tolerance && turn < TB_RECYCLE_ANGLE))
+	if (!(tbRelativeMotion(base->relative, relative, bodyA, bodyB) < tolerance && cosTurn > TB_RECYCLE_COS_ANGLE))
 	{
 		return false;
 	}

@@ -402,6 +402,7 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 			TB_SOLVE_LOOP(tb_biasSoft, COUNT, INDEX)                                                                   \
 			break;                                                                                                     \
 		case tb_biasRelax:                                                                                             \
+		case tb_biasRelaxRepeat:                                                                                       \
 			TB_SOLVE_LOOP(tb_biasRelax, COUNT, INDEX)                                                                  \
 			break;                                                                                                     \
 		case tb_biasBaumgarte:                                                                                         \

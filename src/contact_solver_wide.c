@@ -67,6 +67,7 @@ void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactCon
 		tbSetLaneW(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
 		tbSetLaneW(&wp->normalMass, lane, cp->normalMass);
 		tbSetLaneW(&wp->tangentMass, lane, cp->tangentMass);
+		tbSetLaneW(&wp->relaxBias, lane, 0.0f);
 	}
 }
 
@@ -238,25 +239,41 @@ static inline void tbSolveNormalW(tbWideContactPoint* cp, const tbWideContactCon
 								  tbWideBody* b, const tbWidePass* pass, tbBiasPolicy policy)
 {
 	tbFloatW zero = tbZeroW();
-	tbFloatW s = tbSeparationW(cp, c, a, b);
+	tbFloatW bias, massScale, impulseScale;
+	if (policy == tb_biasRelaxRepeat)
+	{
+		// The positions have not moved since the sub-step's first relaxing pass: same bias, and
+		// the same arithmetic as below with massScale 1 and impulseScale 0, so the same impulses.
+		bias = cp->relaxBias;
+		massScale = tbSplatW(1.0f);
+		impulseScale = zero;
+	}
+	else
+	{
+		tbFloatW s = tbSeparationW(cp, c, a, b);
 
-	// Speculative (s > 0): bias s/h, rigid. Overlap: the policy's push-out (contact_solver.c).
-	tbFloatW overlapBias = zero;
-	tbFloatW overlapMassScale = tbSplatW(1.0f);
-	tbFloatW overlapImpulseScale = zero;
-	if (policy == tb_biasSoft)
-	{
-		overlapBias = tbMaxW(tbMulW(c->biasRate, s), pass->minPushBias);
-		overlapMassScale = c->massScale;
-		overlapImpulseScale = c->impulseScale;
+		// Speculative (s > 0): bias s/h, rigid. Overlap: the policy's push-out (contact_solver.c).
+		tbFloatW overlapBias = zero;
+		tbFloatW overlapMassScale = tbSplatW(1.0f);
+		tbFloatW overlapImpulseScale = zero;
+		if (policy == tb_biasSoft)
+		{
+			overlapBias = tbMaxW(tbMulW(c->biasRate, s), pass->minPushBias);
+			overlapMassScale = c->massScale;
+			overlapImpulseScale = c->impulseScale;
+		}
+		else if (policy == tb_biasBaumgarte)
+		{
+			overlapBias = tbMulW(pass->baumgarteRate, tbMinW(zero, tbAddW(s, pass->slop)));
+		}
+		bias = tbSelectGreaterW(s, zero, tbMulW(s, pass->inv_h), overlapBias);
+		massScale = tbSelectGreaterW(s, zero, tbSplatW(1.0f), overlapMassScale);
+		impulseScale = tbSelectGreaterW(s, zero, zero, overlapImpulseScale);
+		if (policy == tb_biasRelax)
+		{
+			cp->relaxBias = bias;
+		}
 	}
-	else if (policy == tb_biasBaumgarte)
-	{
-		overlapBias = tbMulW(pass->baumgarteRate, tbMinW(zero, tbAddW(s, pass->slop)));
-	}
-	tbFloatW bias = tbSelectGreaterW(s, zero, tbMulW(s, pass->inv_h), overlapBias);
-	tbFloatW massScale = tbSelectGreaterW(s, zero, tbSplatW(1.0f), overlapMassScale);
-	tbFloatW impulseScale = tbSelectGreaterW(s, zero, zero, overlapImpulseScale);
 
 	tbFloatW vn = tbRelativeVelocityW(cp, a, b, c->normalX, c->normalY);
 	tbFloatW impulse = tbSubW(tbSubW(zero, tbMulW(tbMulW(cp->normalMass, massScale), tbAddW(vn, bias))),
@@ -289,11 +306,14 @@ static inline void tbSolveFrictionW(tbWideContactPoint* cp, const tbWideContactC
 static inline void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bodies, const tbWidePass* pass,
 									tbBiasPolicy policy)
 {
-	tbWideBody a, b;
+	tbWideBody a = {0}, b = {0};
 	tbGatherVelocities(bodies, c->indexA, &a);
 	tbGatherVelocities(bodies, c->indexB, &b);
-	tbGatherDeltas(bodies, c->indexA, &a);
-	tbGatherDeltas(bodies, c->indexB, &b);
+	if (policy != tb_biasRelaxRepeat)
+	{
+		tbGatherDeltas(bodies, c->indexA, &a); // only the separation reads the deltas
+		tbGatherDeltas(bodies, c->indexB, &b);
+	}
 
 	tbSolveNormalW(c->points + 0, c, &a, &b, pass, policy);
 	tbSolveNormalW(c->points + 1, c, &a, &b, pass, policy);
@@ -326,6 +346,9 @@ void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy)
 			break;
 		case tb_biasRelax:
 			TB_SOLVE_WIDE_LOOP(tb_biasRelax)
+			break;
+		case tb_biasRelaxRepeat:
+			TB_SOLVE_WIDE_LOOP(tb_biasRelaxRepeat)
 			break;
 		case tb_biasBaumgarte:
 			TB_SOLVE_WIDE_LOOP(tb_biasBaumgarte)

@@ -43,12 +43,22 @@ static bool tbIsFast(const tbWorld* world, const tbBody* body, float* motion)
 	// Largest displacement of any point of the body: translation of the centre plus the arc of
 	// the farthest point.
 	float translation = tbDistance(body->center, body->center0);
+	float reach = tbSpeculativeReach(body);
+	(void)world;
+	// Most bodies turn little: for a turn θ with cos θ ≥ 0, |θ| = asin|sin θ| ≤ (π/2)·|sin θ| < 1.6·|sin θ|,
+	// so a body whose bound stays within its reach is not fast, without the atan2 (5 % of a
+	// pyramid step when every awake body paid for it).
+	tbRot turn = tbInvMulRot(body->rotation0, body->transform.q);
+	if (body->isBullet == false && turn.c >= 0.0f && translation + 1.6f * tbAbsFloat(turn.s) * body->maxExtent <= reach)
+	{
+		*motion = translation;
+		return false;
+	}
 	float rotation = tbAbsFloat(tbRelativeAngle(body->rotation0, body->transform.q));
 	*motion = translation + rotation * body->maxExtent;
-	(void)world;
 	// Speculative contacts cover a closing distance of up to the body's reach per step (contact.c,
 	// shape.c); only motion beyond that can tunnel.
-	return body->isBullet || *motion > tbSpeculativeReach(body);
+	return body->isBullet || *motion > reach;
 }
 
 /// A circle whose motion over the sweep is linear: centred on the centre of mass, or no rotation.

@@ -107,6 +107,8 @@ typedef enum tbBiasPolicy
 {
 	tb_biasSoft,		///< soft step, biased pass: soft spring-damper push-out of overlap
 	tb_biasRelax,		///< soft step, relaxing pass: rigid, no push-out (removes the bias velocity)
+	tb_biasRelaxRepeat, ///< a further relaxing pass of the same sub-step: the positions have not
+						///< moved since the first, so the wide solver reuses its speculative bias
 	tb_biasBaumgarte,	///< rigid with a Baumgarte velocity bias beyond the linear slop
 	tb_biasSpeculative, ///< rigid, speculative gaps only (NGS corrects overlap on positions)
 } tbBiasPolicy;
@@ -116,7 +118,7 @@ typedef enum tbBiasPolicy
 /// room for crowded bodies.
 #define TB_GRAPH_COLOR_COUNT 24
 
-/// One manifold point of four contacts, lane by lane (structure of arrays): 160 bytes.
+/// One manifold point of four contacts, lane by lane (structure of arrays): 176 bytes.
 typedef struct tbWideContactPoint
 {
 	tbFloatW anchorAX, anchorAY; ///< m, as tbContactConstraintPoint
@@ -127,9 +129,10 @@ typedef struct tbWideContactPoint
 	tbFloatW maxNormalImpulse;
 	tbFloatW normalMass; ///< 0 in a lane whose contact has fewer points: its impulses stay 0
 	tbFloatW tangentMass;
+	tbFloatW relaxBias; ///< m/s, max(s, 0)/h from the sub-step's first relaxing pass (s fixed until the next)
 } tbWideContactPoint;
 
-/// Four contacts of one graph colour, solved together (contact_solver_wide.c): 544 bytes.
+/// Four contacts of one graph colour, solved together (contact_solver_wide.c): 576 bytes.
 /// Padding lanes have both bodies at the static stand-in and every number 0.
 typedef struct tbWideContactConstraint
 {
@@ -144,7 +147,7 @@ typedef struct tbWideContactConstraint
 	tbWideContactPoint points[2];
 } tbWideContactConstraint;
 
-_Static_assert(sizeof(tbWideContactConstraint) == 544, "tbWideContactConstraint is meant to be 544 bytes");
+_Static_assert(sizeof(tbWideContactConstraint) == 576, "tbWideContactConstraint is meant to be 576 bytes");
 
 /// Everything the pieces of one step share. Lives on the stack of tbSolveStage.
 typedef struct tbStepContext

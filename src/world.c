@@ -39,7 +39,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.solver = tb_solverSoft;
 	def.velocityIterations = 8;
 	def.positionIterations = 3;
-	def.relaxIterations = 3;
+	def.relaxIterations = 2;
 	def.enableWideSolver = true;
 	def.enableJointTrees = true;
 	def.enableWarmStarting = true;

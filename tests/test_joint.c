@@ -1076,7 +1076,7 @@ Test(joint, trees_handle_bridges_loops_ragdolls_and_degenerate_blocks)
 	float bridgeGap = LargestGap(joints, bridgeJoints);
 	float gap = LargestGap(joints + bridgeJoints, n - bridgeJoints);
 	// Bound: measured 0.016 m with one relaxing iteration per sub-step and 0.0305 m with the
-	// default three (the contacts' relax passes re-open the pins of the light planks under the
+	// default four of a step with joint trees (the contacts' relax passes re-open the pins of the light planks under the
 	// 250x heavier box; an open interaction between the soft step's default and joint trees).
 	// 0.035 m keeps the measured value with a margin of float and order effects.
 	cr_expect(bridgeGap < 0.035f, "largest bridge gap %.4f m", (double)bridgeGap);

@@ -1,4 +1,4 @@
-// Stability under load at the default settings (soft step, 60 Hz, 4 sub-steps, 3 relax passes):
+// Stability under load at the default settings (soft step, 60 Hz, 4 sub-steps, 2 relax passes):
 // heavy loads come to rest, a large pyramid neither drifts nor keeps moving, a card house stands,
 // a touching stack and a pyramid sag little. The scenes are the shared catalogue's, so what is
 // tested here is what tumble-stability tables and the sample draws.

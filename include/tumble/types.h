@@ -65,7 +65,7 @@ typedef struct tbWorldDef
 	tbSolverMethod solver;			///< default soft
 	int velocityIterations;			///< Baumgarte/NGS iterations per sub-step, default 8
 	int positionIterations;			///< NGS position iterations per sub-step, default 3
-	int relaxIterations;			///< soft: relaxing iterations per sub-step, default 3
+	int relaxIterations;			///< soft: relaxing iterations per sub-step, default 2
 	bool enableWarmStarting;		///< default true
 	bool enableWideSolver;			///< soft and Baumgarte: contacts graph-coloured and solved four at a
 									///< time (SIMD); false: the scalar reference in hashed order. Default true
