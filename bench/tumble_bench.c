@@ -11,7 +11,8 @@
 //                      double-precision separating-axis reference
 //   toi-chart          ns per time-of-impact query vs error against closed forms
 //   tunnel-chart       fraction of bodies that pass through a thin wall vs speed, per method
-//   sleep              10,000 sleeping bodies plus 10 awake ones vs the 10 awake ones alone
+//   sleep              10,000 sleeping bodies plus 10 awake ones vs the 10 awake ones alone, and
+//                      large_pyramid with every body asleep vs awake
 //   poses              each engine's pose of a few bodies after N steps (do the adapters agree?)
 // clock_gettime(CLOCK_MONOTONIC) is POSIX, not C17
 #define _POSIX_C_SOURCE 200809L
@@ -1223,8 +1224,44 @@ static double TimeSleepScene(bool sleepers, int steps, int repeat, PeerCounters*
 	return Median(times, repeat);
 }
 
+// The same catalogue scene stepped with every dynamic body awake, then with every one asleep from
+// the start (its contacts exist after the first step; its islands sleep): a sleeping scene should
+// cost a small fraction of the awake one (target < 2 %).
+static double TimeCatalogueScene(const char* name, bool asleep, int steps, int repeat)
+{
+	Scene* scene = Catalogue_Build(name);
+	for (int i = 0; asleep && i < scene->bodyCount; ++i)
+	{
+		scene->bodies[i].isAwake = false;
+	}
+	TumbleConfig config;
+	memset(&config, 0, sizeof(config));
+	double times[32];
+	repeat = repeat > 32 ? 32 : repeat;
+	for (int r = 0; r < repeat; ++r)
+	{
+		Sim sim;
+		Sim_Create(&sim, scene, engineTumble, &config);
+		Sim_Step(&sim); // the first step finds every pair: a construction cost, not timed
+		double start = NowMs();
+		for (int i = 0; i < steps; ++i)
+		{
+			Sim_Step(&sim);
+		}
+		times[r] = (NowMs() - start) / steps;
+		Sim_Destroy(&sim);
+	}
+	Scene_Destroy(scene);
+	return Median(times, repeat);
+}
+
 static int SleepBenchmark(FILE* out, int steps, int repeat)
 {
+	double msPyramidAwake = TimeCatalogueScene("large_pyramid", false, steps, repeat);
+	double msPyramidAsleep = TimeCatalogueScene("large_pyramid", true, steps, repeat);
+	fprintf(stderr, "large_pyramid all asleep: %.4f ms vs %.4f ms awake: %.3f %% (target < 2 %%)\n", msPyramidAsleep,
+			msPyramidAwake, 100.0 * msPyramidAsleep / msPyramidAwake);
+
 	PeerCounters alone, crowd;
 	double msAlone = TimeSleepScene(false, steps, repeat, &alone);
 	double msCrowd = TimeSleepScene(true, steps, repeat, &crowd);
@@ -1232,6 +1269,8 @@ static int SleepBenchmark(FILE* out, int steps, int repeat)
 	fprintf(out, "awake_only,%d,%d,%d,%.5f\n", alone.bodyCount, alone.awakeBodyCount, alone.contactCount, msAlone);
 	fprintf(out, "with_10000_sleeping,%d,%d,%d,%.5f\n", crowd.bodyCount, crowd.awakeBodyCount, crowd.contactCount, msCrowd);
 	fprintf(out, "ratio,,,,%.3f\n", msCrowd / msAlone);
+	fprintf(out, "large_pyramid_awake,5051,5050,,%.5f\n", msPyramidAwake);
+	fprintf(out, "large_pyramid_asleep,5051,0,,%.5f\n", msPyramidAsleep);
 	fprintf(stderr, "sleeping: %.4f ms vs %.4f ms awake alone: ratio %.2f (target <= 3)\n", msCrowd, msAlone,
 			msCrowd / msAlone);
 	return 0;
