@@ -276,6 +276,7 @@ typedef struct tbWorld
 	int autoVotes; ///< consecutive windows that voted for a change
 
 	uint32_t stepIndex; ///< steps taken (unsigned: wraps after 2^32 steps without overflow)
+	uint32_t islandSearchStamp; ///< last stamp given to an island search (island.c; unsigned: wraps)
 	float stepTime;		///< time step of the current (or last) tbWorld_Step (s); 0 before the first
 	tbProfile profile;
 	tbCounters counters;

@@ -387,6 +387,38 @@ Test(events, fell_asleep_event_after_time_to_sleep)
 	tbDestroyWorld(world);
 }
 
+// A row of six unit boxes touching side by side on the ground is one island; one of them may not
+// sleep (tbBody_EnableSleep false), so none of the six may, while a lone box beside the row falls
+// asleep as usual. The sleep search starts only from rested bodies and gives up at the first body
+// that has not rested; with the non-sleeper first in the row, the second search of the step must
+// also give up when it reaches the bodies the first search left (or it would put the rest of the
+// row to sleep). Checked for the non-sleeper at each place in the row, for 2 s (4 × the sleep time).
+Test(events, one_body_that_may_not_sleep_keeps_its_island_awake)
+{
+	for (int keeper = 0; keeper < 6; ++keeper)
+	{
+		tbWorldId world = CreateWorld();
+		CreateGround(world, NULL);
+		tbBodyId row[6];
+		for (int i = 0; i < 6; ++i)
+		{
+			row[i] = CreateBox(world, (tbVec2){-5.0f + 1.0f * (float)i, 0.5f}, 0.5f);
+		}
+		tbBody_EnableSleep(row[keeper], false);
+		tbBodyId lone = CreateBox(world, (tbVec2){8.0f, 0.5f}, 0.5f);
+		for (int step = 0; step < 120; ++step)
+		{
+			tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		}
+		cr_expect_not(tbBody_IsAwake(lone), "keeper %d: the lone box did not fall asleep", keeper);
+		for (int i = 0; i < 6; ++i)
+		{
+			cr_expect(tbBody_IsAwake(row[i]), "keeper %d: box %d of the row fell asleep", keeper, i);
+		}
+		tbDestroyWorld(world);
+	}
+}
+
 // --- waking -----------------------------------------------------------------------------------
 
 // A sleeping box is woken by a ball landing on it: awake no later than the step after the ball's

@@ -419,7 +419,7 @@ typedef struct tbCounters
 	int contactCount;		 ///< contacts whose fat boxes overlap
 	int touchingCount;		 ///< contacts with manifold points among awake bodies (sleeping islands are not visited)
 	int awakeBodyCount;
-	int islandCount;		 ///< awake islands (searched only when some body has rested TB_TIME_TO_SLEEP; else 0)
+	int islandCount;		 ///< island searches of the sleep stage (one per island holding a rested body)
 	int treeHeight;			 ///< dynamic-tree height (0 when another broad phase runs)
 	int pairCandidates;		 ///< new pairs found by the broad phase this step
 	int proxyMoves;			 ///< proxies whose fat box was updated this step
