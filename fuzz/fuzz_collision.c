@@ -272,7 +272,7 @@ static void TreeEverything(FuzzInput* in)
 		}
 		else if (op == 4)
 		{
-			tbDynamicTree_Rebuild(&tree);
+			tbDynamicTree_Rebuild(&tree, true);
 		}
 		else if (valid)
 		{

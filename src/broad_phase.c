@@ -83,6 +83,7 @@ static void tbCreateMethodState(tbBroadPhase* bp)
 {
 	bp->staticTree = tbDynamicTree_Create();
 	bp->movableTree = tbDynamicTree_Create();
+	bp->movableTree.rebuildSplit = tb_splitMidpoint;
 	bp->sweep = bp->method == tb_broadPhaseSortAndSweep ? tbSortAndSweep_Create() : NULL;
 	bp->brute = bp->method == tb_broadPhaseBruteForce ? tbBruteForce_Create() : NULL;
 	bp->staticInsertCount = 0;
@@ -329,11 +330,13 @@ static bool tbPairQueryCallback(int treeProxyId, int otherKey, void* context)
 	return true;
 }
 
-/// Moved movable proxies were enlarged in place (their ancestors only grew). When many moved, one
-/// top-down binned-SAH rebuild of the movable tree (O(n log n)) is cheaper than re-inserting each
-/// (a branch-and-bound sibling search and rotations per proxy) and gives a better tree; when few
-/// moved, re-insert those. Threshold: 1/16 of the movable proxies, measured on the tumbler
-/// (2,025 boxes, ~900 moves per step: re-insertion was 36% of the step).
+/// Moved movable proxies were enlarged in place (their ancestors only grew). When many moved, a
+/// partial rebuild of the movable tree above the subtrees that hold none of them is cheaper than
+/// re-inserting each (a branch-and-bound sibling search and rotations per proxy); when few moved,
+/// re-insert those. Threshold: 1/16 of the movable proxies, measured on the tumbler (2,025 boxes,
+/// ~900 moves per step: re-insertion was 36% of the step). The movable tree is split at the
+/// spatial median: against the binned SAH, junkyard 12 %, tumbler 7 %, spinner 5 %, washer 4 %
+/// faster per step (8,000 bodies, 6,700 proxies moved per step on junkyard).
 static void tbRefreshMovableTree(tbBroadPhase* bp)
 {
 	int movable = bp->movableTree.proxyCount;
@@ -343,7 +346,7 @@ static void tbRefreshMovableTree(tbBroadPhase* bp)
 	}
 	if (16 * bp->enlargedCount > movable)
 	{
-		tbDynamicTree_Rebuild(&bp->movableTree);
+		tbDynamicTree_Rebuild(&bp->movableTree, false);
 	}
 	else
 	{
@@ -365,7 +368,7 @@ static void tbTreeFindPairs(tbBroadPhase* bp)
 	int staticCount = bp->staticTree.proxyCount;
 	if (bp->staticInsertCount >= TB_STATIC_REBUILD_MIN && 2 * bp->staticInsertCount >= staticCount)
 	{
-		tbDynamicTree_Rebuild(&bp->staticTree);
+		tbDynamicTree_Rebuild(&bp->staticTree, true);
 		bp->staticInsertCount = 0;
 	}
 	for (int i = 0; i < bp->moveCount; ++i)

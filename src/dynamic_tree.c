@@ -23,10 +23,16 @@
 // and both rebuilt nodes stay balanced. This keeps the height O(log n) even for a row of boxes
 // inserted in order, the worst case for pure SAH insertion.
 //
-// Rebuild: full top-down construction by the binned SAH (Wald 2007, "On fast construction of
-// SAH-based bounding volume hierarchies"): centroids are binned into 16 bins along the axis of
+// Rebuild: top-down construction. By default by the binned SAH (Wald 2007, "On fast construction
+// of SAH-based bounding volume hierarchies"): centroids are binned into 16 bins along the axis of
 // largest centroid extent, and the split plane between bins minimising
-// N_left·P(left) + N_right·P(right) is taken.
+// N_left·P(left) + N_right·P(right) is taken. Or by the spatial median, the middle of the centroid
+// extent on its longer axis (Kay & Kajiya 1986 build their hierarchies so): one partition pass per
+// level that also hands each side its centroid bounds, against the SAH's three passes with box
+// unions, for a tree rebuilt every step; its trees cost a few percent more per query. A partial rebuild keeps every subtree that holds no
+// leaf grown in place (tbDynamicTree_EnlargeProxy) and rebuilds only above them: its items are
+// those whole subtrees and the grown leaves, about k·log n items for k grown leaves in n instead
+// of n, and the kept subtrees are as good as before (their boxes did not change).
 //
 // Category bits: leaves store their shape's bits, internal nodes the OR of their children's, so a
 // query with a mask skips a subtree that holds no matching category.
@@ -50,7 +56,7 @@ typedef struct tbTreeNode
 	int child2;
 	int userData; ///< leaf payload returned to queries
 	int height;	  ///< 0 for a leaf, 1 + max(children) for an internal node, −1 when free
-	int padding;
+	int enlarged; ///< a leaf grown in place since the last rebuild, or an ancestor of one
 } tbTreeNode;
 
 _Static_assert(sizeof(tbTreeNode) == 48, "tree node is 48 bytes");
@@ -435,6 +441,20 @@ static void tbRemoveLeaf(tbDynamicTree* tree, int leaf)
 // --------------------------------------------------------------------------------------------
 // Proxies
 
+/// Clear the enlarged marks from a leaf up to the first unmarked node. When every grown leaf is
+/// cleared (the broad phase re-inserts all of them), no mark is left; a mark left above a
+/// cleared node only makes the next partial rebuild descend further, never wrong.
+static void tbClearEnlargedPath(tbDynamicTree* tree, int index)
+{
+	tree->nodes[index].enlarged = 0;
+	index = tree->nodes[index].parent;
+	while (index != TB_NULL_NODE && tree->nodes[index].enlarged != 0)
+	{
+		tree->nodes[index].enlarged = 0;
+		index = tree->nodes[index].parent;
+	}
+}
+
 int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, int userData)
 {
 	int leaf = tbAllocateNode(tree);
@@ -459,6 +479,7 @@ void tbDynamicTree_DestroyProxy(tbDynamicTree* tree, int proxyId)
 void tbDynamicTree_MoveProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb)
 {
 	TB_ASSERT(0 <= proxyId && proxyId < tree->nodeCapacity && tbIsLeaf(tree->nodes + proxyId));
+	tbClearEnlargedPath(tree, proxyId);
 	tbRemoveLeaf(tree, proxyId);
 	tree->nodes[proxyId].aabb = aabb;
 	tbInsertLeaf(tree, proxyId);
@@ -467,13 +488,22 @@ void tbDynamicTree_MoveProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb)
 void tbDynamicTree_EnlargeProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb)
 {
 	TB_ASSERT(0 <= proxyId && proxyId < tree->nodeCapacity && tbIsLeaf(tree->nodes + proxyId));
-	tree->nodes[proxyId].aabb = aabb;
-	int index = tree->nodes[proxyId].parent;
-	// Ancestors only ever grow; stop at the first one that already contains the new box.
-	while (index != TB_NULL_NODE && tbAABB_Contains(tree->nodes[index].aabb, aabb) == false)
+	tbTreeNode* nodes = tree->nodes;
+	nodes[proxyId].aabb = aabb;
+	nodes[proxyId].enlarged = 1;
+	int index = nodes[proxyId].parent;
+	// Ancestors only ever grow; stop growing at the first one that already contains the new box.
+	while (index != TB_NULL_NODE && tbAABB_Contains(nodes[index].aabb, aabb) == false)
 	{
-		tree->nodes[index].aabb = tbAABB_Union(tree->nodes[index].aabb, aabb);
-		index = tree->nodes[index].parent;
+		nodes[index].aabb = tbAABB_Union(nodes[index].aabb, aabb);
+		nodes[index].enlarged = 1;
+		index = nodes[index].parent;
+	}
+	// Mark the rest of the path to the root for the partial rebuild (a tree height, ~20 nodes).
+	while (index != TB_NULL_NODE)
+	{
+		nodes[index].enlarged = 1;
+		index = nodes[index].parent;
 	}
 }
 
@@ -766,21 +796,88 @@ static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 	return left;
 }
 
+/// Split [start, start + count) at the middle of its centroid bounds (lower, upper) on their
+/// longer axis, in place, in one pass that also gathers each side's centroid bounds for the next
+/// level. Returns the count on the left, 0 when every centroid falls on one side.
+static int tbPartitionMid(tbDynamicTree* tree, int start, int count, tbVec2 lower, tbVec2 upper, tbVec2* leftLower,
+						  tbVec2* leftUpper, tbVec2* rightLower, tbVec2* rightUpper)
+{
+	tbRebuildLeaf* leaves = tree->rebuildLeaves + start;
+	tbVec2 extent = tbSub(upper, lower);
+	int axis = extent.x >= extent.y ? 0 : 1;
+	float split = 0.5f * (axis == 0 ? lower.x + upper.x : lower.y + upper.y);
+	tbVec2 lLo = {FLT_MAX, FLT_MAX}, lHi = {-FLT_MAX, -FLT_MAX};
+	tbVec2 rLo = lLo, rHi = lHi;
+	int left = 0, right = count - 1;
+	while (left <= right)
+	{
+		tbVec2 c = leaves[left].center;
+		if ((axis == 0 ? c.x : c.y) < split)
+		{
+			lLo = tbMin(lLo, c);
+			lHi = tbMax(lHi, c);
+			left += 1;
+		}
+		else
+		{
+			rLo = tbMin(rLo, c);
+			rHi = tbMax(rHi, c);
+			tbRebuildLeaf swap = leaves[left];
+			leaves[left] = leaves[right];
+			leaves[right] = swap;
+			right -= 1;
+		}
+	}
+	*leftLower = lLo;
+	*leftUpper = lHi;
+	*rightLower = rLo;
+	*rightUpper = rHi;
+	return left;
+}
+
+/// Centroid bounds of [start, start + count).
+static void tbCentroidBounds(const tbDynamicTree* tree, int start, int count, tbVec2* lower, tbVec2* upper)
+{
+	const tbRebuildLeaf* leaves = tree->rebuildLeaves + start;
+	tbVec2 lo = leaves[0].center, hi = lo;
+	for (int i = 1; i < count; ++i)
+	{
+		lo = tbMin(lo, leaves[i].center);
+		hi = tbMax(hi, leaves[i].center);
+	}
+	*lower = lo;
+	*upper = hi;
+}
+
 /// Build the subtree over leaves [start, start + count) and return its root.
-static int tbBuildSubtree(tbDynamicTree* tree, int start, int count)
+static int tbBuildSubtree(tbDynamicTree* tree, int start, int count, tbVec2 lower, tbVec2 upper)
 {
 	if (count == 1)
 	{
 		return tree->rebuildLeaves[start].node;
 	}
-	int leftCount = tbPartitionBinned(tree, start, count);
+	tbVec2 lLo, lHi, rLo, rHi;
+	int leftCount;
+	if (tree->rebuildSplit == tb_splitMidpoint)
+	{
+		leftCount = tbPartitionMid(tree, start, count, lower, upper, &lLo, &lHi, &rLo, &rHi);
+	}
+	else
+	{
+		leftCount = tbPartitionBinned(tree, start, count);
+	}
 	if (leftCount == 0 || leftCount == count)
 	{
 		leftCount = count / 2; // coincident centroids: any balanced split is as good
+		if (tree->rebuildSplit == tb_splitMidpoint)
+		{
+			tbCentroidBounds(tree, start, leftCount, &lLo, &lHi);
+			tbCentroidBounds(tree, start + leftCount, count - leftCount, &rLo, &rHi);
+		}
 	}
 	int index = tbAllocateNode(tree);
-	int child1 = tbBuildSubtree(tree, start, leftCount);
-	int child2 = tbBuildSubtree(tree, start + leftCount, count - leftCount);
+	int child1 = tbBuildSubtree(tree, start, leftCount, lLo, lHi);
+	int child2 = tbBuildSubtree(tree, start + leftCount, count - leftCount, rLo, rHi);
 	tbTreeNode* node = tree->nodes + index;
 	node->child1 = child1;
 	node->child2 = child2;
@@ -791,35 +888,76 @@ static int tbBuildSubtree(tbDynamicTree* tree, int start, int count)
 	return index;
 }
 
-int tbDynamicTree_Rebuild(tbDynamicTree* tree)
+/// Add one rebuild item: a leaf or a whole subtree kept as it is.
+static void tbAddRebuildItem(tbDynamicTree* tree, int index, int itemCount)
 {
-	tbReserveRebuild(tree, tree->proxyCount);
-	int leafCount = 0;
+	tbRebuildLeaf* item = tree->rebuildLeaves + itemCount;
+	item->box = tree->nodes[index].aabb;
+	item->center = tbAABB_Center(item->box);
+	item->node = index;
+	item->bin = 0;
+	tree->nodes[index].enlarged = 0;
+}
+
+/// Every leaf is an item and every internal node is freed.
+static int tbCollectAllLeaves(tbDynamicTree* tree)
+{
+	int itemCount = 0;
 	for (int i = 0; i < tree->nodeCapacity; ++i)
 	{
-		tbTreeNode* node = tree->nodes + i;
-		if (node->height == 0)
+		int height = tree->nodes[i].height;
+		if (height == 0)
 		{
-			tbRebuildLeaf* leaf = tree->rebuildLeaves + leafCount;
-			leaf->box = node->aabb;
-			leaf->center = tbAABB_Center(node->aabb);
-			leaf->node = i;
-			leaf->bin = 0;
-			leafCount += 1;
+			tbAddRebuildItem(tree, i, itemCount++);
 		}
-		else if (node->height > 0)
+		else if (height > 0)
 		{
 			tbFreeNode(tree, i);
 		}
 	}
-	TB_ASSERT(leafCount == tree->proxyCount);
-	tree->root = TB_NULL_NODE;
-	if (leafCount > 0)
+	return itemCount;
+}
+
+/// Depth first from the root: an unmarked node (its subtree holds no grown leaf) or a leaf is an
+/// item; a marked internal node is freed and its children visited. The order is the tree's own,
+/// so the rebuild is deterministic.
+static int tbCollectEnlargedItems(tbDynamicTree* tree)
+{
+	int itemCount = 0;
+	tbTreeStack stack;
+	tbTreeStackInit(&stack);
+	tbTreeStackPush(&stack, tree->root);
+	while (stack.count > 0)
 	{
-		tree->root = tbBuildSubtree(tree, 0, leafCount);
-		tree->nodes[tree->root].parent = TB_NULL_NODE;
+		int index = stack.items[--stack.count];
+		tbTreeNode* node = tree->nodes + index;
+		if (node->height == 0 || node->enlarged == 0)
+		{
+			tbAddRebuildItem(tree, index, itemCount++);
+			continue;
+		}
+		tbTreeStackPush(&stack, node->child2);
+		tbTreeStackPush(&stack, node->child1);
+		tbFreeNode(tree, index);
 	}
-	return leafCount;
+	tbTreeStackFree(&stack);
+	return itemCount;
+}
+
+int tbDynamicTree_Rebuild(tbDynamicTree* tree, bool fullBuild)
+{
+	if (tree->root == TB_NULL_NODE || (fullBuild == false && tree->nodes[tree->root].enlarged == 0))
+	{
+		return 0;
+	}
+	tbReserveRebuild(tree, tree->proxyCount);
+	int itemCount = fullBuild ? tbCollectAllLeaves(tree) : tbCollectEnlargedItems(tree);
+	TB_ASSERT(itemCount <= tree->proxyCount);
+	tbVec2 lower, upper;
+	tbCentroidBounds(tree, 0, itemCount, &lower, &upper);
+	tree->root = tbBuildSubtree(tree, 0, itemCount, lower, upper);
+	tree->nodes[tree->root].parent = TB_NULL_NODE;
+	return itemCount;
 }
 
 // --------------------------------------------------------------------------------------------

@@ -424,7 +424,7 @@ Test(world_limits, tree_rebuild_with_leaves_spanning_more_than_float_max)
 	tbDynamicTree_CreateProxy(&tree, left, 1, 0);
 	tbDynamicTree_CreateProxy(&tree, right, 1, 1);
 	tbDynamicTree_CreateProxy(&tree, middle, 1, 2);
-	tbDynamicTree_Rebuild(&tree);
+	tbDynamicTree_Rebuild(&tree, true);
 	cr_assert(tbDynamicTree_Validate(&tree));
 	cr_assert_eq(tbDynamicTree_GetHeight(&tree), 2);
 	tbDynamicTree_Destroy(&tree);

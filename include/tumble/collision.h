@@ -418,6 +418,18 @@ TB_API tbTOIOutput tbTimeOfImpactCircles(const tbCircle* circleA, const tbSweep*
 struct tbTreeNode;
 struct tbRebuildLeaf;
 
+/// How tbDynamicTree_Rebuild splits a set of leaves in two, on the longer axis of their centres.
+typedef enum tbTreeSplit
+{
+	/// At the plane between 16 centroid bins that minimises N·perimeter summed over both sides
+	/// (binned surface-area heuristic): the better tree for queries. The default.
+	tb_splitBinnedSah,
+	/// At the middle of the centres' extent: one pass per level, about half the build time (8,000
+	/// random boxes: 0.72 against 1.38 ms) for 3 % more node perimeter and ~5 % more query time;
+	/// for a tree rebuilt every step (the broad phase's tree of moving proxies).
+	tb_splitMidpoint,
+} tbTreeSplit;
+
 /// Bounding-volume hierarchy of fat AABBs, balanced by rotations; insertion by the surface-area
 /// heuristic (branch and bound over the sibling candidates). Usable on its own.
 typedef struct tbDynamicTree
@@ -428,9 +440,10 @@ typedef struct tbDynamicTree
 	int nodeCapacity;
 	int freeList;
 	int proxyCount;
-	// scratch space for the binned SAH rebuild
+	// scratch space for the rebuild
 	struct tbRebuildLeaf* rebuildLeaves;
 	int rebuildCapacity;
+	tbTreeSplit rebuildSplit; ///< how tbDynamicTree_Rebuild splits; tb_splitBinnedSah from Create
 } tbDynamicTree;
 
 TB_API tbDynamicTree tbDynamicTree_Create(void);
@@ -443,7 +456,8 @@ TB_API void tbDynamicTree_DestroyProxy(tbDynamicTree* tree, int proxyId);
 /// Re-insert a proxy with a new box.
 TB_API void tbDynamicTree_MoveProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb);
 
-/// Grow a proxy's box in place (refitting ancestors), without re-inserting.
+/// Grow a proxy's box in place (refitting ancestors), without re-inserting; the proxy is placed
+/// anew by the next tbDynamicTree_Rebuild, partial or full, or by tbDynamicTree_MoveProxy.
 TB_API void tbDynamicTree_EnlargeProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb);
 
 /// Query callback: return false to stop.
@@ -469,8 +483,10 @@ TB_API float tbDynamicTree_GetAreaRatio(const tbDynamicTree* tree);
 /// Check parent links, child boxes inside parents, stored heights and counts. True when valid.
 TB_API bool tbDynamicTree_Validate(const tbDynamicTree* tree);
 
-/// Rebuild the whole tree top-down by the binned surface-area heuristic. Returns the leaf count.
-TB_API int tbDynamicTree_Rebuild(tbDynamicTree* tree);
+/// Rebuild the tree top-down, splitting by tree->rebuildSplit: all of it when fullBuild, else
+/// only above the subtrees that hold no proxy grown by tbDynamicTree_EnlargeProxy since the last
+/// rebuild (those are kept whole). Returns the number of leaves and kept subtrees it placed.
+TB_API int tbDynamicTree_Rebuild(tbDynamicTree* tree, bool fullBuild);
 
 TB_API int tbDynamicTree_GetUserData(const tbDynamicTree* tree, int proxyId);
 TB_API tbAABB tbDynamicTree_GetAABB(const tbDynamicTree* tree, int proxyId);
