@@ -129,6 +129,44 @@ static void tbEstimateImpactVelocity(const tbWorld* world, const tbBody* bodyA, 
 	}
 }
 
+// True when some point of c overlaps by more than deepOverlap at the start of the step.
+static bool tbIsDeepOverlap(const tbContactConstraint* c, float deepOverlap)
+{
+	for (int j = 0; j < c->pointCount; ++j)
+	{
+		const tbContactConstraintPoint* cp = c->points + j;
+		float s0 = cp->baseSeparation + tbDot(tbSub(cp->anchorB, cp->anchorA), c->normal);
+		if (s0 < -deepOverlap)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+// Soft step's settling (solver_soft.c): a dynamic pair touching for `age` steps that does not
+// overlap deeply stiffens from contactHertz to restHertz over the second settleSteps of touching.
+// Static pairs start at the resting stiffness, deep ones stay at contactHertz.
+static void tbSettleSoftness(const tbStepContext* context, tbContactConstraint* c, int age)
+{
+	bool dynamicPair = (c->invMassA > 0.0f || c->invIA > 0.0f) && (c->invMassB > 0.0f || c->invIB > 0.0f);
+	if (dynamicPair == false || tbIsDeepOverlap(c, context->deepOverlap))
+	{
+		return;
+	}
+	float settleSteps = context->settleSteps;
+	float ramp = tbClampFloat(((float)age - settleSteps) / settleSteps, 0.0f, 1.0f);
+	if (ramp >= 1.0f)
+	{
+		c->softness = context->staticSoftness;
+	}
+	else if (ramp > 0.0f)
+	{
+		float hertz = context->contactHertz + (context->restHertz - context->contactHertz) * ramp;
+		c->softness = tbMakeSoftness(hertz, context->dampingRatio, context->h);
+	}
+}
+
 static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbContactConstraint* c)
 {
 	tbWorld* world = context->world;
@@ -185,6 +223,10 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 		cp->relativeVelocity = tbDot(tbSub(vB, vA), normal);
 	}
 
+	if (context->settleSteps > 0.0f)
+	{
+		tbSettleSoftness(context, c, contact->touchingSteps);
+	}
 	if (world->def.solver == tb_solverNGS && context->subStepCount == 1)
 	{
 		tbPrepareConstraintNGS(context, manifold, c);

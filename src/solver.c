@@ -161,10 +161,6 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbGatherBodies(&context);
 	tbPrepareMethod(&context);
 	tbPrepareContacts(&context);
-	if (world->def.solver == tb_solverSoft)
-	{
-		tbSoftPrepareContacts(&context);
-	}
 	tbPrepareJoints(&context); // joint.c: joints are few, solved one at a time (scalar)
 	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)
 	{

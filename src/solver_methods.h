@@ -9,7 +9,6 @@
 void tbSoftPrepare(tbStepContext* context);
 void tbSoftSubStep(tbStepContext* context);
 /// After tbPrepareContacts: the soft step's stiffness of each dynamic contact.
-void tbSoftPrepareContacts(tbStepContext* context);
 
 void tbBaumgartePrepare(tbStepContext* context);
 void tbBaumgarteSubStep(tbStepContext* context);

@@ -92,48 +92,11 @@ void tbSoftPrepare(tbStepContext* context)
 	context->restHertz = restHertz;
 	context->contactSoftness = tbMakeSoftness(hertz, def->contactDampingRatio, context->h);
 	context->staticSoftness = tbMakeSoftness(restHertz, def->contactDampingRatio, context->h);
-}
-
-// True when some point of c overlaps by more than TB_SOFT_DEEP_OVERLAP at the start of the step.
-static bool tbIsDeepOverlap(const tbContactConstraint* c)
-{
-	for (int j = 0; j < c->pointCount; ++j)
-	{
-		const tbContactConstraintPoint* cp = c->points + j;
-		float s0 = cp->baseSeparation + tbDot(tbSub(cp->anchorB, cp->anchorA), c->normal);
-		if (s0 < -TB_SOFT_DEEP_OVERLAP)
-		{
-			return true;
-		}
-	}
-	return false;
-}
-
-void tbSoftPrepareContacts(tbStepContext* context)
-{
-	const tbWorld* world = context->world;
-	float dampingRatio = world->def.contactDampingRatio;
-	float settleSteps = TB_SOFT_SETTLE_TIME / context->timeStep;
-	for (int i = 0; i < context->constraintCount; ++i)
-	{
-		tbContactConstraint* c = context->constraints + i;
-		bool dynamicPair = (c->invMassA > 0.0f || c->invIA > 0.0f) && (c->invMassB > 0.0f || c->invIB > 0.0f);
-		if (dynamicPair == false || tbIsDeepOverlap(c))
-		{
-			continue; // static: resting stiffness already; deep: contactHertz already
-		}
-		float age = (float)world->contacts[world->solverContacts[i]].touchingSteps;
-		float ramp = tbClampFloat((age - settleSteps) / settleSteps, 0.0f, 1.0f);
-		if (ramp >= 1.0f)
-		{
-			c->softness = context->staticSoftness;
-		}
-		else if (ramp > 0.0f)
-		{
-			float hertz = context->contactHertz + (context->restHertz - context->contactHertz) * ramp;
-			c->softness = tbMakeSoftness(hertz, dampingRatio, context->h);
-		}
-	}
+	// The settling ramp below is applied by the contact preparation (tbSettleSoftness, contact_solver.c)
+	// while each contact is in cache; a pass of its own here waited on a load per contact.
+	context->settleSteps = TB_SOFT_SETTLE_TIME / context->timeStep;
+	context->deepOverlap = TB_SOFT_DEEP_OVERLAP;
+	context->dampingRatio = def->contactDampingRatio;
 }
 
 void tbSoftSubStep(tbStepContext* context)

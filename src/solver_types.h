@@ -183,6 +183,9 @@ typedef struct tbStepContext
 	tbSoftness staticSoftness;	///< dynamic vs static or kinematic, and settled dynamic (soft step: restHertz)
 	float contactHertz;			///< soft step: Hz, stiffness of new and deep dynamic contacts
 	float restHertz;			///< soft step: Hz, stiffness of static and settled contacts
+	float settleSteps;			///< soft step: steps a new dynamic contact stays at contactHertz (0: no ramp)
+	float deepOverlap;			///< soft step: m, start-of-step overlap beyond which it stays at contactHertz
+	float dampingRatio;			///< soft step: of the ramped stiffness
 	float maxContactPushSpeed;	///< m/s
 	float maxLinearSpeed;		///< m/s
 	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step
