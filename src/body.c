@@ -123,6 +123,7 @@ static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
 	world->awakeBodyCount -= 1;
 	body->awakeIndex = TB_NULL_INDEX;
 	world->awakeSetVersion += 1;
+	world->awakeRemovals += 1;
 }
 
 void tbWakeBody(tbWorld* world, tbBody* body)

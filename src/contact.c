@@ -561,6 +561,8 @@ static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 static void tbGatherAwakeContacts(tbWorld* world)
 {
 	world->gatheredVersion = world->awakeSetVersion;
+	world->gatheredRemovals = world->awakeRemovals;
+	world->gatheredAwakeCount = world->awakeBodyCount;
 	world->stepContactCount = 0;
 	if (2 * world->awakeBodyCount >= world->bodyCount)
 	{

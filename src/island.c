@@ -100,24 +100,59 @@ static bool tbIsSolverContact(const tbWorld* world, const tbContact* contact)
 	return a->type == tb_dynamicBody || b->type == tb_dynamicBody;
 }
 
-/// Fast path: when no body joined or left the awake set since the collide stage gathered its
-/// contacts, the solver contacts are the touching contacts the collide stage recorded (in
-/// contact-id order) less those with a sleeping side: the same set as the walk below gathers.
-/// Returns false (nothing gathered) when some sleeping body must be woken: the walk does it.
-static bool tbGatherRecordedContacts(tbWorld* world)
+/// Gather the solver contacts of body (awake) not gathered yet this step (stamp), waking the
+/// sleeping bodies it touches through them when it wakes what it touches (they are appended to
+/// the awake list and walked in turn by the caller).
+static void tbWalkBodyContacts(tbWorld* world, const tbBody* body, uint32_t stamp)
 {
-	if (world->gatheredVersion != world->awakeSetVersion)
+	bool wakes = tbWakesTouchingBodies(body);
+	for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+	{
+		tbContact* contact = world->contacts + (key >> 1);
+		int next = contact->edges[key & 1].nextKey;
+		if (contact->stamp == stamp || tbIsSolverContact(world, contact) == false)
+		{
+			key = next;
+			continue;
+		}
+		tbBody* other = world->bodies + contact->edges[(key & 1) ^ 1].bodyId;
+		bool otherAsleep = other->type != tb_staticBody && other->awakeIndex == TB_NULL_INDEX;
+		if (otherAsleep && wakes)
+		{
+			tbWakeBody(world, other);
+			otherAsleep = false;
+		}
+		if (otherAsleep == false)
+		{
+			contact->stamp = stamp;
+			TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, key >> 1);
+		}
+		key = next;
+	}
+}
+
+/// The solver contacts from the touching contacts the collide stage recorded, when bodies have only
+/// joined the awake set since (the collide stage wakes both bodies of a contact that begins to
+/// touch). A recorded contact with a sleeping side is kept, and the sleeper woken, when its awake
+/// side wakes what it touches, as the walk in tbIslandStage decides; then only the bodies woken
+/// since the collide stage have their contact lists walked. The same set as walking every awake
+/// body's list, at the cost of the woken part only (smash: a wave of waking boxes every step).
+/// Returns false (nothing gathered) when a body left the awake set since.
+static bool tbGatherRecordedContacts(tbWorld* world, uint32_t stamp)
+{
+	if (world->gatheredRemovals != world->awakeRemovals)
 	{
 		return false;
 	}
+	bool unchanged = world->gatheredVersion == world->awakeSetVersion;
 	world->solverContactCount = 0;
 	TB_ARRAY_RESERVE(world->solverContacts, world->solverContactCapacity, world->touchingContactCount);
 	for (int i = 0; i < world->touchingContactCount; ++i)
 	{
 		int contactId = world->touchingContacts[i];
-		const tbContact* contact = world->contacts + contactId;
+		tbContact* contact = world->contacts + contactId;
 		const tbBody* a = world->bodies + contact->edges[0].bodyId;
-		const tbBody* b = world->bodies + contact->edges[1].bodyId;
+		tbBody* b = world->bodies + contact->edges[1].bodyId;
 		if (a->type != tb_dynamicBody && b->type != tb_dynamicBody)
 		{
 			continue;
@@ -126,21 +161,33 @@ static bool tbGatherRecordedContacts(tbWorld* world)
 		bool asleepB = b->type != tb_staticBody && b->awakeIndex == TB_NULL_INDEX;
 		if (asleepA || asleepB)
 		{
-			if (tbWakesTouchingBodies(asleepA ? b : a))
+			if (tbWakesTouchingBodies(asleepA ? b : a) == false)
 			{
-				return false; // a wake is due: let the walk do it
+				continue; // a resting kinematic body on a sleeping one: nothing to solve
 			}
-			continue; // a resting kinematic body on a sleeping one: nothing to solve
+			tbWakeBody(world, asleepA ? world->bodies + contact->edges[0].bodyId : b);
 		}
-		world->solverContacts[world->solverContactCount++] = contactId;
+		contact->stamp = stamp;
+		TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, contactId);
 	}
+	if (unchanged && world->gatheredVersion == world->awakeSetVersion)
+	{
+		return true; // nobody woke: the recorded contacts, already in contact-id order
+	}
+	for (int i = world->gatheredAwakeCount; i < world->awakeBodyCount; ++i)
+	{
+		tbWalkBodyContacts(world, world->bodies + world->awakeBodies[i], stamp);
+	}
+	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, world->solverContactCount);
+	tbSortIndices(world->solverContacts, world->solverContactCount, world->islandStack);
 	return true;
 }
 
 void tbIslandStage(tbWorld* world)
 {
 	tbWakeJointPartners(world); // joint.c: before anything is gathered
-	if (tbGatherRecordedContacts(world))
+	uint32_t stamp = 2u * world->stepIndex + 1u;
+	if (tbGatherRecordedContacts(world, stamp))
 	{
 		tbOrderSolverContacts(world);
 		return;
@@ -155,35 +202,10 @@ void tbIslandStage(tbWorld* world)
 	// bodies or a resting kinematic one) has nothing to solve (both sides would be treated as
 	// immovable) and is left out, so the solver never sees a sleeping non-static body. One walk
 	// does both (the walk is bound by cache misses on the contact lists).
-	uint32_t stamp = 2u * world->stepIndex + 1u;
 	world->solverContactCount = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
-		const tbBody* body = world->bodies + world->awakeBodies[i];
-		bool wakes = tbWakesTouchingBodies(body);
-		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
-		{
-			tbContact* contact = world->contacts + (key >> 1);
-			int next = contact->edges[key & 1].nextKey;
-			if (contact->stamp == stamp || tbIsSolverContact(world, contact) == false)
-			{
-				key = next;
-				continue;
-			}
-			tbBody* other = world->bodies + contact->edges[(key & 1) ^ 1].bodyId;
-			bool otherAsleep = other->type != tb_staticBody && other->awakeIndex == TB_NULL_INDEX;
-			if (otherAsleep && wakes)
-			{
-				tbWakeBody(world, other);
-				otherAsleep = false;
-			}
-			if (otherAsleep == false)
-			{
-				contact->stamp = stamp;
-				TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, key >> 1);
-			}
-			key = next;
-		}
+		tbWalkBodyContacts(world, world->bodies + world->awakeBodies[i], stamp);
 	}
 	// Contact-id order, as the fast path (and the collide stage) gives: the solver order must not
 	// depend on whether a body was woken this step.
@@ -266,6 +288,7 @@ static void tbCompactAwakeSet(tbWorld* world)
 	}
 	world->awakeBodyCount = kept;
 	world->awakeSetVersion += 1;
+	world->awakeRemovals += 1;
 }
 
 static void tbPutIslandToSleep(tbWorld* world, int count)

@@ -243,6 +243,9 @@ typedef struct tbWorld
 	int touchingContactCount, touchingContactCapacity;
 	uint32_t awakeSetVersion;  ///< bumped whenever a body joins or leaves the awake set
 	uint32_t gatheredVersion; ///< awakeSetVersion when the collide stage gathered its contacts
+	uint32_t awakeRemovals;	  ///< bumped whenever bodies leave the awake set
+	uint32_t gatheredRemovals; ///< awakeRemovals when the collide stage gathered its contacts
+	int gatheredAwakeCount;	  ///< awakeBodyCount then: bodies woken since are appended after it
 	int* islandStack;
 	int islandStackCapacity;
 	tbArena stepArena; ///< temporaries of the step (solver arrays, colours), reset when it ends
