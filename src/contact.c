@@ -131,6 +131,13 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	world->contactCount += 1;
 }
 
+/// A sensor reports a visitor when both shapes enable sensor events: the sensor's flag says it
+/// reports at all, the visitor's that it wants to be seen (a bullet a trigger should ignore).
+static bool tbSensorEventsEnabled(const tbWorld* world, int sensor, int visitor)
+{
+	return world->shapes[sensor].enableSensorEvents && world->shapes[visitor].enableSensorEvents;
+}
+
 /// End events of the step go to the event arrays; those of a change between steps (the world is
 /// unlocked) wait in the pending arrays for the next step, so they are neither cleared unseen at its
 /// start nor pushed into an array the user may be reading.
@@ -142,7 +149,7 @@ static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 		bool aIsSensor = a->isSensor;
 		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
 		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
-		if (world->shapes[sensor].enableSensorEvents)
+		if (tbSensorEventsEnabled(world, sensor, visitor))
 		{
 			tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
 			if (world->locked)
@@ -191,8 +198,9 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 	world->contactCount -= 1;
 }
 
-/// Should a broad-phase pair become a contact? Same body, no dynamic body, filtered out, or an
-/// existing contact: no.
+/// Should a broad-phase pair become a contact? Same body, no dynamic body (unless one shape is a
+/// sensor: a kinematic door or lift passing a static or kinematic sensor is reported), filtered
+/// out, or an existing contact: no. Static proxies never pair with each other.
 static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeIdB)
 {
 	const tbShape* a = world->shapes + shapeIdA;
@@ -203,7 +211,7 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	}
 	const tbBody* bodyA = world->bodies + a->bodyId;
 	const tbBody* bodyB = world->bodies + b->bodyId;
-	if (bodyA->type != tb_dynamicBody && bodyB->type != tb_dynamicBody)
+	if (bodyA->type != tb_dynamicBody && bodyB->type != tb_dynamicBody && a->isSensor == b->isSensor)
 	{
 		return false;
 	}
@@ -534,6 +542,7 @@ int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 	contact->flags |= (touching ? (uint32_t)tb_contactTouching : 0u) | (reported ? (uint32_t)tb_contactReported : 0u);
 	*beganTouching = touching && wasTouching == false;
 	contact->touchingSteps = touching ? (uint16_t)(contact->touchingSteps + (contact->touchingSteps < UINT16_MAX)) : 0u;
+	contact->hitSpeed = touching ? contact->hitSpeed : 0.0f; // an impact that never touched is dropped
 	return reported == wasReported ? 0 : (reported ? 1 : -1);
 }
 
@@ -544,7 +553,7 @@ static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 		bool aIsSensor = world->shapes[contact->shapeIdA].isSensor;
 		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
 		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
-		if (world->shapes[sensor].enableSensorEvents)
+		if (tbSensorEventsEnabled(world, sensor, visitor))
 		{
 			tbSensorBeginTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
 			TB_ARRAY_PUSH(world->sensorBeginEvents, world->sensorBeginCount, world->sensorBeginCapacity, e);
@@ -646,38 +655,42 @@ void tbCollideStage(tbWorld* world)
 	world->stepContactCount = kept;
 }
 
-/// Hit events: the fastest approaching point of each touching contact that wants them, when the
-/// approach speed exceeds the world's threshold.
+/// Hit events: one per impact, in the step its contact begins to touch or later. A solved contact
+/// whose point approached faster than the world's threshold and took a normal impulse holds that
+/// impact (the fastest seen, kept in contact->hitSpeed); it is reported once the contact is within
+/// the fixed distance that makes begin events (tb_contactReported), so a landing met by a
+/// speculative point a step early is reported with its begin event, not before it and not twice.
+/// An impact on a contact that separates before touching is dropped (tbUpdateContact).
 void tbReportHitEvents(tbWorld* world)
 {
 	float threshold = world->def.hitEventThreshold;
 	// Contact-id order: the walk streams through contact memory (the solve order would not).
 	for (int i = 0; i < world->solverContactCount; ++i)
 	{
-		const tbContact* contact = world->contacts + world->solverContactsById[i];
+		tbContact* contact = world->contacts + world->solverContactsById[i];
 		if ((contact->flags & tb_contactEnableHits) == 0)
 		{
 			continue;
 		}
-		tbContactHitEvent event;
-		event.approachSpeed = threshold;
-		bool hit = false;
 		for (int j = 0; j < contact->manifold.pointCount; ++j)
 		{
 			const tbManifoldPoint* mp = contact->manifold.points + j;
 			float approach = -mp->normalVelocity;
-			if (approach > event.approachSpeed && mp->maxNormalImpulse > 0.0f)
+			if (approach > threshold && approach > contact->hitSpeed && mp->maxNormalImpulse > 0.0f)
 			{
-				event.approachSpeed = approach;
-				event.point = mp->point;
-				hit = true;
+				contact->hitSpeed = approach;
+				contact->hitPoint = mp->point;
 			}
 		}
-		if (hit)
+		if (contact->hitSpeed > 0.0f && (contact->flags & tb_contactReported) != 0)
 		{
-			event.normal = contact->manifold.normal;
+			tbContactHitEvent event;
 			event.shapeIdA = tbMakeShapeId(world, contact->shapeIdA);
 			event.shapeIdB = tbMakeShapeId(world, contact->shapeIdB);
+			event.point = contact->hitPoint;
+			event.normal = contact->manifold.normal;
+			event.approachSpeed = contact->hitSpeed;
+			contact->hitSpeed = 0.0f;
 			TB_ARRAY_PUSH(world->hitEvents, world->hitCount, world->hitCapacity, event);
 		}
 	}

@@ -155,6 +155,10 @@ typedef struct tbContact
 	tbManifold manifold;
 	uint16_t touchingSteps; ///< steps in a row with manifold points (saturates): the soft step's settle clock
 	tbManifoldBase base; ///< valid when flags has tb_contactRecyclable
+	// The impact not yet reported as a hit event (tbReportHitEvents): its approach speed (0: none)
+	// and where it happened.
+	float hitSpeed;
+	tbVec2 hitPoint;
 } tbContact;
 
 // ---------------------------------------------------------------------------------------------

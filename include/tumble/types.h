@@ -142,9 +142,9 @@ typedef struct tbShapeDef
 	int userMaterialId;	 ///< passed to the mixing callbacks
 	tbFilter filter;
 	bool isSensor;			   ///< reports overlaps, no response
-	bool enableSensorEvents;   ///< default true
+	bool enableSensorEvents;   ///< default true; a sensor reports a visitor only when both shapes enable it
 	bool enableContactEvents;  ///< default true
-	bool enableHitEvents;	   ///< default false
+	bool enableHitEvents;	   ///< default false; one event per impact, with its begin-touch event or after it
 	bool updateBodyMass;	   ///< recompute the body's mass, default true
 	int internalValue;
 } tbShapeDef;
