@@ -48,8 +48,7 @@ tbBody* tbGetBodyChecked(tbBodyId id, const char* function, tbWorld** worldOut, 
 	}
 	if (mutating && world->locked)
 	{
-		tbReportError(function, "the world is locked (stepping, or inside a query callback); change bodies "
-								"between steps and outside callbacks");
+		tbReportError(function, "the world is locked (stepping); change bodies between steps");
 		return NULL;
 	}
 	if (worldOut != NULL)
@@ -171,10 +170,8 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	{
 		return TB_NULL_BODY_ID;
 	}
-	if (world->locked)
+	if (tbStructureLocked(world, "tbCreateBody", "create bodies"))
 	{
-		tbReportError("tbCreateBody", "the world is locked (stepping, or inside a query callback); create bodies "
-									   "between steps and outside callbacks");
 		return TB_NULL_BODY_ID;
 	}
 	int id = tbAllocBodySlot(world);
@@ -232,6 +229,10 @@ void tbDestroyBody(tbBodyId bodyId)
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbDestroyBody", &world, true);
 	if (body == NULL)
+	{
+		return;
+	}
+	if (tbStructureLocked(world, "tbDestroyBody", "destroy bodies"))
 	{
 		return;
 	}
@@ -451,6 +452,10 @@ bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
 	{
 		return false;
 	}
+	if (tbStructureLocked(world, "tbBody_SetType", "change body types"))
+	{
+		return false;
+	}
 	if ((unsigned)type >= tb_bodyTypeCount)
 	{
 		tbReportError("tbBody_SetType", "type is %d; use tb_staticBody, tb_kinematicBody or tb_dynamicBody", (int)type);
@@ -531,6 +536,10 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation)
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
 	if (body == NULL || tbCheckCoordinate(f, "position", position) == false)
+	{
+		return false;
+	}
+	if (tbStructureLocked(world, f, "move bodies with SetTransform"))
 	{
 		return false;
 	}

@@ -188,8 +188,7 @@ tbJoint* tbGetJointChecked(tbJointId id, const char* function, tbWorld** worldOu
 	}
 	if (mutating && world->locked)
 	{
-		tbReportError(function, "the world is locked (stepping, or inside a query callback); change joints between "
-								"steps and outside callbacks");
+		tbReportError(function, "the world is locked (stepping); change joints between steps");
 		return NULL;
 	}
 	if (worldOut != NULL)
@@ -380,10 +379,8 @@ tbJoint* tbCreateJointInternal(tbWorldId worldId, const tbJointDef* def, tbJoint
 	{
 		return NULL;
 	}
-	if (world->locked)
+	if (tbStructureLocked(world, f, "create joints"))
 	{
-		tbReportError(f, "the world is locked (stepping, or inside a query callback); create joints between steps "
-						 "and outside callbacks");
 		return NULL;
 	}
 	int bodyIdA = def->bodyIdA.index1 - 1;
@@ -454,7 +451,7 @@ void tbDestroyJoint(tbJointId jointId)
 {
 	tbWorld* world;
 	tbJoint* joint = tbGetJointChecked(jointId, "tbDestroyJoint", &world, -1, true);
-	if (joint != NULL)
+	if (joint != NULL && tbStructureLocked(world, "tbDestroyJoint", "destroy joints") == false)
 	{
 		tbDestroyJointInternal(world, jointId.index1 - 1, true);
 	}
@@ -577,7 +574,8 @@ void tbJoint_SetCollideConnected(tbJointId jointId, bool shouldCollide)
 {
 	tbWorld* world;
 	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_SetCollideConnected", &world, -1, true);
-	if (joint == NULL || joint->collideConnected == shouldCollide)
+	if (joint == NULL || joint->collideConnected == shouldCollide ||
+		tbStructureLocked(world, "tbJoint_SetCollideConnected", "change collideConnected"))
 	{
 		return;
 	}

@@ -39,15 +39,19 @@ static bool tbAABBQueryCallback(int proxyKey, int shapeIndex, void* context)
 	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
 }
 
-/// Queries hold the world locked while they call back: a callback that created or destroyed a body
-/// or shape would free or move the broad-phase nodes the query is walking. Such calls are refused
-/// with an error; collect ids in the callback and change the world after the query. Nested queries
-/// keep the lock of the outer one.
-static bool tbLockForQuery(tbWorld* world)
+/// While a query calls back, a callback that created or destroyed a body or shape, moved one
+/// (SetTransform, SetType) or changed a filter would free or move the broad-phase nodes the query
+/// is walking: such calls are refused with an error (tbStructureLocked); collect ids in the callback
+/// and make those changes after the query. Velocities, impulses, materials and awake state may be
+/// changed inside (an explosion applies its impulses from the callback). Queries nest.
+static void tbEnterQuery(tbWorld* world)
 {
-	bool wasLocked = world->locked;
-	world->locked = true;
-	return wasLocked;
+	world->queryDepth += 1;
+}
+
+static void tbLeaveQuery(tbWorld* world)
+{
+	world->queryDepth -= 1;
 }
 
 static bool tbCheckQueryWorld(tbWorld* world, const char* f, bool hasFcn)
@@ -97,9 +101,9 @@ bool tbWorld_OverlapAABB(tbWorldId worldId, tbAABB aabb, tbQueryFilter filter, t
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
-	bool wasLocked = tbLockForQuery(world);
+	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, aabb, filter.maskBits, tbAABBQueryCallback, &q);
-	world->locked = wasLocked;
+	tbLeaveQuery(world);
 	return true;
 }
 
@@ -132,9 +136,9 @@ bool tbWorld_OverlapPoint(tbWorldId worldId, tbVec2 point, tbQueryFilter filter,
 	q.fcn = fcn;
 	q.point = point;
 	tbAABB box = {point, point};
-	bool wasLocked = tbLockForQuery(world);
+	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbPointQueryCallback, &q);
-	world->locked = wasLocked;
+	tbLeaveQuery(world);
 	return true;
 }
 
@@ -180,10 +184,10 @@ bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransfor
 	q.shape = shape;
 	q.proxy = tbMakeShapeProxy(shape);
 	q.transform = transform;
-	bool wasLocked = tbLockForQuery(world);
+	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, tbComputeShapeAABB(shape, transform), filter.maskBits, tbShapeQueryCallback,
 					   &q);
-	world->locked = wasLocked;
+	tbLeaveQuery(world);
 	return true;
 }
 
@@ -231,9 +235,9 @@ bool tbWorld_CastRay(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQue
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.castFcn = fcn;
 	tbRayCastInput input = {origin, translation, 1.0f};
-	bool wasLocked = tbLockForQuery(world);
+	tbEnterQuery(world);
 	tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
-	world->locked = wasLocked;
+	tbLeaveQuery(world);
 	return true;
 }
 
@@ -315,8 +319,8 @@ bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform t
 	// Candidates: shapes whose boxes overlap the shape's box swept over the translation.
 	tbAABB box = tbComputeShapeAABB(shape, transform);
 	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
-	bool wasLocked = tbLockForQuery(world);
+	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);
-	world->locked = wasLocked;
+	tbLeaveQuery(world);
 	return true;
 }

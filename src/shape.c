@@ -58,8 +58,7 @@ tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** worldOu
 	}
 	if (mutating && world->locked)
 	{
-		tbReportError(function, "the world is locked (stepping, or inside a query callback); change shapes "
-								"between steps and outside callbacks");
+		tbReportError(function, "the world is locked (stepping); change shapes between steps");
 		return NULL;
 	}
 	if (worldOut != NULL)
@@ -332,7 +331,7 @@ static tbShapeId tbCreateShapeInternal(tbBodyId bodyId, const tbShapeDef* def, c
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
 	if (body == NULL || tbCheckShapeDef(def, f) == false || tbCheckGeometry(f, geometry) == false ||
-		tbCheckShapeMass(f, geometry, def->density) == false)
+		tbCheckShapeMass(f, geometry, def->density) == false || tbStructureLocked(world, f, "create shapes"))
 	{
 		return TB_NULL_SHAPE_ID;
 	}
@@ -464,7 +463,7 @@ void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
 {
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbDestroyShape", &world, true);
-	if (shape == NULL)
+	if (shape == NULL || tbStructureLocked(world, "tbDestroyShape", "destroy shapes"))
 	{
 		return;
 	}
@@ -577,7 +576,7 @@ bool tbShape_SetFilter(tbShapeId shapeId, tbFilter filter)
 {
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetFilter", &world, true);
-	if (shape == NULL)
+	if (shape == NULL || tbStructureLocked(world, "tbShape_SetFilter", "change filters"))
 	{
 		return false;
 	}

@@ -284,10 +284,8 @@ void tbDestroyWorld(tbWorldId worldId)
 	{
 		return;
 	}
-	if (world->locked)
+	if (tbStructureLocked(world, "tbDestroyWorld", "destroy it"))
 	{
-		tbReportError("tbDestroyWorld", "the world is locked (stepping, or inside a query callback); destroy it "
-									   "between steps and outside callbacks");
 		return;
 	}
 	int slot = world->worldId;
@@ -373,10 +371,8 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 					  TB_MAX_SUB_STEPS);
 		return false;
 	}
-	if (world->locked)
+	if (tbStructureLocked(world, f, "step it"))
 	{
-		tbReportError(f, "the world is locked (stepping, or inside a query callback); do not step "
-							 "from a callback");
 		return false;
 	}
 	world->locked = true;
@@ -464,13 +460,27 @@ tbContactEvents tbWorld_GetContactEvents(tbWorldId worldId)
 	return events;
 }
 
+bool tbStructureLocked(tbWorld* world, const char* function, const char* action)
+{
+	if (world->locked)
+	{
+		tbReportError(function, "the world is locked (stepping); %s between steps", action);
+		return true;
+	}
+	if (world->queryDepth > 0)
+	{
+		tbReportError(function, "inside a query callback; %s after the query returns (velocities, impulses, "
+								"materials and awake state may change inside it)", action);
+		return true;
+	}
+	return false;
+}
+
 static tbWorld* tbGetUnlockedWorld(tbWorldId worldId, const char* function)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, function);
-	if (world != NULL && world->locked)
+	if (world != NULL && tbStructureLocked(world, function, "change the world's settings"))
 	{
-		tbReportError(function, "the world is locked (stepping, or inside a query callback); change it "
-									 "between steps and outside callbacks");
 		return NULL;
 	}
 	return world;

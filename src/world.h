@@ -175,7 +175,11 @@ typedef struct tbWorld
 	uint16_t bodyGenerationBase;
 	uint16_t shapeGenerationBase;
 	bool inUse;
-	bool locked; ///< true during the step and query callbacks: the API refuses changes
+	bool locked; ///< true during the step: the API refuses every change
+	/// Query callbacks running (nested queries count): the API refuses what would change the
+	/// broad phase being walked (create, destroy, SetTransform, SetType, filters, collideConnected)
+	/// and allows the rest (velocities, impulses, materials, awake state), as Box2D v3 does.
+	int queryDepth;
 
 	tbBody* bodies;
 	int bodyCapacity;
@@ -356,3 +360,8 @@ void tbFinalizeStage(tbWorld* world, float timeStep);	// body.c: boxes, proxies,
 void tbContinuousStage(tbWorld* world);					// continuous.c: time of impact for fast bodies
 void tbSleepStage(tbWorld* world, float timeStep);		// island.c: islands that stayed slow fall asleep
 void tbReportHitEvents(tbWorld* world); // contact.c: after the solve
+
+/// The world cannot change structure now (stepping, or inside a query callback). Reports why to
+/// `function` (what it is about to do: `action`) and returns true when so.
+bool tbStructureLocked(tbWorld* world, const char* function, const char* action);
+

@@ -4,6 +4,9 @@
 
 #include "tumble/tumble.h"
 
+#include "error_recorder.h"
+
+#include <math.h>
 #include <string.h>
 
 /// Ground box top at y = 0 from x = −10 to 10; a unit box centred at (3, 0.5) resting on it (category 2);
@@ -201,5 +204,67 @@ Test(query, bad_query_input_rejected)
 	cr_assert_not(tbWorld_OverlapPoint(s.world, tbMakeVec2(0.0f, 0.0f), tbDefaultQueryFilter(), NULL, NULL));
 	cr_assert_eq(tbGetErrorCount(), before + 3);
 	cr_assert_eq(count, 0);
+	tbDestroyWorld(s.world);
+}
+
+// --- what a query callback may change ------------------------------------------------------------
+
+typedef struct BlastContext
+{
+	tbVec2 centre;
+	float impulse; ///< N·s given to each dynamic body, away from the centre
+	int pushed;
+	int refusedMoves;
+} BlastContext;
+
+static bool BlastCallback(tbShapeId shapeId, void* context)
+{
+	BlastContext* c = context;
+	tbBodyId body = tbShape_GetBody(shapeId);
+	if (tbBody_GetType(body) != tb_dynamicBody)
+	{
+		return true;
+	}
+	tbVec2 away = tbNormalize(tbSub(tbBody_GetWorldCenterOfMass(body), c->centre));
+	tbBody_ApplyLinearImpulseToCenter(body, tbMulSV(c->impulse, away), true);
+	tbBody_SetAngularVelocity(body, 1.0f);
+	c->pushed += 1;
+	// Moving it would move the broad-phase node the query is walking: refused, nothing changed.
+	tbVec2 before = tbBody_GetPosition(body);
+	if (tbBody_SetTransform(body, tbMakeVec2(50.0f, 50.0f), tb_rot_identity) == false)
+	{
+		c->refusedMoves += 1;
+	}
+	cr_assert(tbBody_GetPosition(body).x == before.x && tbBody_GetPosition(body).y == before.y);
+	return true;
+}
+
+// An explosion written in a query callback, as a game does it: each dynamic body in the blast box
+// receives an impulse P away from the centre inside the callback, so its speed is exactly P/m
+// (box: 1 kg, 1 m²; ball: π·0.25 kg) and its angular velocity the 1 rad/s set there; the
+// SetTransform tried in the same callback is refused with a message that says why, and the body
+// stays where it was. (Box2D v3 allows the same: changes that do not touch the broad phase.)
+Test(query, callback_may_apply_impulses_but_not_move_bodies, .init = SetupErrors, .fini = TeardownErrors)
+{
+	Scene s = MakeScene();
+	BlastContext c = {tbMakeVec2(0.0f, 0.0f), 2.0f, 0, 0};
+	tbAABB blast = {{-5.0f, -0.5f}, {5.0f, 5.0f}};
+	int before = s_errors;
+	cr_assert(tbWorld_OverlapAABB(s.world, blast, tbDefaultQueryFilter(), BlastCallback, &c));
+	cr_assert_eq(c.pushed, 2, "the box and the ball are in the blast");
+	cr_assert_eq(c.refusedMoves, 2);
+	cr_assert_eq(s_errors, before + 2);
+	cr_assert(strstr(s_lastError, "tbBody_SetTransform") != NULL && strstr(s_lastError, "query callback") != NULL,
+			  "message '%s'", s_lastError);
+	tbBodyId box = tbShape_GetBody(s.box), ball = tbShape_GetBody(s.ball);
+	float boxSpeed = tbLength(tbBody_GetLinearVelocity(box));
+	float ballSpeed = tbLength(tbBody_GetLinearVelocity(ball));
+	cr_assert_float_eq(boxSpeed, 2.0f / tbBody_GetMass(box), 1e-5f);
+	cr_assert_float_eq(ballSpeed, 2.0f / tbBody_GetMass(ball), 1e-5f);
+	cr_assert_float_eq(tbBody_GetMass(ball), 3.14159265f * 0.25f, 1e-5f);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(box), 1.0f, 1e-6f);
+	cr_assert(tbBody_GetLinearVelocity(box).x > 0.0f && tbBody_GetLinearVelocity(ball).x < 0.0f, "pushed apart");
+	// After the query the world takes structural changes again.
+	cr_assert(tbBody_SetTransform(box, tbMakeVec2(3.0f, 3.0f), tb_rot_identity));
 	tbDestroyWorld(s.world);
 }

@@ -62,7 +62,11 @@ TB_API tbCounters tbWorld_GetCounters(tbWorldId worldId);
 
 // Queries -------------------------------------------------------------------------------------
 
-/// Overlap callback: return false to stop the query.
+/// Overlap callback: return false to stop the query. Inside any query callback the world may be
+/// changed as Box2D v3 allows (velocities, forces and impulses, materials, damping, awake state),
+/// but not in ways that touch the broad phase being walked: creating or destroying bodies, shapes
+/// or joints, tbBody_SetTransform, tbBody_SetType, tbShape_SetFilter, collideConnected and world
+/// settings are refused with an error. Collect ids and make those changes after the query.
 typedef bool tbOverlapResultFcn(tbShapeId shapeId, void* context);
 
 /// Ray callback: return −1 to ignore this shape, 0 to stop, `fraction` to clip to this hit,
