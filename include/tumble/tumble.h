@@ -85,6 +85,10 @@ typedef struct tbRayResult
 /// Shapes whose fat boxes overlap aabb.
 TB_API bool tbWorld_OverlapAABB(tbWorldId worldId, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn,
 								void* context);
+/// Apply an explosion's impulses (tbExplosionDef) to the dynamic bodies it reaches, waking them.
+/// Refused (error hook, nothing changed) during the step and for a NULL def, a non-finite or
+/// out-of-world position, a negative or non-finite radius or falloff, a non-finite impulse.
+TB_API void tbWorld_Explode(tbWorldId worldId, const tbExplosionDef* def);
 /// Shapes containing the point.
 TB_API bool tbWorld_OverlapPoint(tbWorldId worldId, tbVec2 point, tbQueryFilter filter, tbOverlapResultFcn* fcn,
 								 void* context);

@@ -132,6 +132,23 @@ typedef struct tbQueryFilter
 
 TB_API tbQueryFilter tbDefaultQueryFilter(void);
 
+/// An explosion (tbWorld_Explode): every dynamic shape whose category bits share a bit with
+/// maskBits and whose surface is within radius + falloff of position receives, at its point
+/// closest to position and directed away from it, the impulse impulsePerLength × the width the
+/// shape shows the blast (its extent across the blast direction), scaled by 1 within radius and
+/// falling linearly to 0 across falloff.
+typedef struct tbExplosionDef
+{
+	uint64_t maskBits;		///< which shapes the blast reaches (default: all)
+	tbVec2 position;		///< centre (m)
+	float radius;			///< m, ≥ 0: full strength within this distance of the surface
+	float falloff;			///< m, ≥ 0: beyond radius the strength falls to zero over this distance
+	float impulsePerLength; ///< N·s per metre of exposed width; negative pulls towards the centre
+} tbExplosionDef;
+
+/// maskBits all set, everything else zero.
+TB_API tbExplosionDef tbDefaultExplosionDef(void);
+
 /// Shape definition: start from tbDefaultShapeDef().
 typedef struct tbShapeDef
 {
