@@ -125,6 +125,10 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	{
 		contact->flags |= tb_contactEnableHits;
 	}
+	if (a->enablePreSolveEvents || b->enablePreSolveEvents)
+	{
+		contact->flags |= tb_contactEnablePreSolve;
+	}
 	tbLinkEdge(world, id, 0);
 	tbLinkEdge(world, id, 1);
 	tbHashSet_Add(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB));
@@ -227,7 +231,16 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	{
 		return false;
 	}
-	return tbHashSet_Contains(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB)) == false;
+	if (tbHashSet_Contains(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB)))
+	{
+		return false;
+	}
+	if ((a->enableCustomFiltering || b->enableCustomFiltering) && world->customFilterFcn != NULL)
+	{
+		return world->customFilterFcn(tbMakeShapeId(world, shapeIdA), tbMakeShapeId(world, shapeIdB),
+									  world->customFilterContext);
+	}
+	return true;
 }
 
 bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* context)
@@ -516,6 +529,36 @@ static void tbComputeManifold(tbWorld* world, tbContact* contact, const tbShape*
 	}
 }
 
+/// The user's pre-solve callback on a touching contact (tbPreSolveFcn). What it may do is bounded:
+/// no more points than it was given, a finite unit normal and finite separations; anything else
+/// is reported and the manifold restored. A manifold it changed is not recycled next step (the
+/// recycled one would carry its change along instead of asking again).
+static void tbCallPreSolve(tbWorld* world, tbContact* contact)
+{
+	tbManifold before = contact->manifold;
+	tbManifold* m = &contact->manifold;
+	world->preSolveFcn(tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB), m,
+					   world->preSolveContext);
+	bool valid = tbIsValidVec2(m->normal) && tbAbsFloat(tbLength(m->normal) - 1.0f) < 1e-3f;
+	m->pointCount = tbMinInt(tbMaxInt(m->pointCount, 0), before.pointCount);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		valid = valid && tbIsValidFloat(m->points[i].separation) && tbIsValidVec2(m->points[i].anchorA) &&
+				tbIsValidVec2(m->points[i].anchorB);
+	}
+	if (valid == false)
+	{
+		tbReportError("tbPreSolveFcn", "the callback left a non-finite or non-unit normal, separation or anchor; "
+									   "the manifold is restored (set pointCount to 0 to disable the contact)");
+		*m = before;
+		return;
+	}
+	if (memcmp(m, &before, sizeof(before)) != 0)
+	{
+		contact->flags &= ~(uint32_t)tb_contactRecyclable;
+	}
+}
+
 int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 {
 	const tbShape* a = world->shapes + contact->shapeIdA;
@@ -532,6 +575,11 @@ int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 	else
 	{
 		tbComputeManifold(world, contact, a, b, bodyA, bodyB, margin);
+	}
+	if ((contact->flags & tb_contactEnablePreSolve) != 0 && isSensor == false && world->preSolveFcn != NULL &&
+		contact->manifold.pointCount > 0 && (bodyA->type == tb_dynamicBody || bodyB->type == tb_dynamicBody))
+	{
+		tbCallPreSolve(world, contact);
 	}
 	const tbManifold* m = &contact->manifold;
 	bool touching = isSensor ? tbIsSensorOverlap(m) : m->pointCount > 0;

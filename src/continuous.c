@@ -133,6 +133,19 @@ static tbTOIOutput tbComputeCoreTOI(tbContinuousContext* c, const tbShape* other
 	return output;
 }
 
+/// The user's pre-continuous callback, asked when either shape enables pre-solve events.
+static bool tbAllowedByPreContinuous(tbWorld* world, const tbShape* other, const tbShape* fastShape,
+									 const tbTOIOutput* output)
+{
+	if (world->preContinuousFcn == NULL || (other->enablePreSolveEvents == false && fastShape->enablePreSolveEvents == false))
+	{
+		return true;
+	}
+	return world->preContinuousFcn(tbMakeShapeId(world, (int)(other - world->shapes)),
+								   tbMakeShapeId(world, (int)(fastShape - world->shapes)), output->point, output->normal,
+								   world->preSolveContext);
+}
+
 /// Broad-phase callback: time of impact of the fast shape against one candidate shape.
 static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* context)
 {
@@ -151,6 +164,12 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	{
 		return true;
 	}
+	if ((other->enableCustomFiltering || c->fastShape->enableCustomFiltering) && world->customFilterFcn != NULL &&
+		world->customFilterFcn(tbMakeShapeId(world, shapeIndex), tbMakeShapeId(world, (int)(c->fastShape - world->shapes)),
+							   world->customFilterContext) == false)
+	{
+		return true; // the custom filter keeps them apart: no contact, no sweep either
+	}
 	tbSweep otherSweep = tbMakeBodySweep(otherBody);
 	if (otherBody->awakeIndex == TB_NULL_INDEX)
 	{
@@ -164,8 +183,10 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 		output = tbComputeCoreTOI(c, other, &otherSweep);
 		core = true;
 	}
-	// A hit strictly inside the sweep moves the body back.
-	if (output.state == tb_toiStateHit && output.fraction > 0.0f && output.fraction < c->fraction)
+	// A hit strictly inside the sweep moves the body back, unless the pre-continuous callback
+	// lets the body pass (a one-way platform).
+	if (output.state == tb_toiStateHit && output.fraction > 0.0f && output.fraction < c->fraction &&
+		tbAllowedByPreContinuous(world, other, c->fastShape, &output))
 	{
 		c->fraction = output.fraction;
 		c->coreHit = core;

@@ -353,6 +353,8 @@ static tbShapeId tbCreateShapeInternal(tbBodyId bodyId, const tbShapeDef* def, c
 	shape->enableSensorEvents = def->enableSensorEvents;
 	shape->enableContactEvents = def->enableContactEvents;
 	shape->enableHitEvents = def->enableHitEvents;
+	shape->enableCustomFiltering = def->enableCustomFiltering;
+	shape->enablePreSolveEvents = def->enablePreSolveEvents;
 	shape->bodyId = bodyId.index1 - 1;
 	shape->nextShapeId = body->headShapeId;
 	shape->proxyKey = TB_NULL_INDEX;

@@ -576,6 +576,28 @@ bool tbWorld_SetHitEventThreshold(tbWorldId worldId, float value)
 	return true;
 }
 
+void tbWorld_SetCustomFilterCallback(tbWorldId worldId, tbCustomFilterFcn* fcn, void* context)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetCustomFilterCallback");
+	if (world != NULL)
+	{
+		world->customFilterFcn = fcn;
+		world->customFilterContext = context;
+	}
+}
+
+void tbWorld_SetPreSolveCallback(tbWorldId worldId, tbPreSolveFcn* preSolveFcn, tbPreContinuousFcn* preContinuousFcn,
+								 void* context)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetPreSolveCallback");
+	if (world != NULL)
+	{
+		world->preSolveFcn = preSolveFcn;
+		world->preContinuousFcn = preContinuousFcn;
+		world->preSolveContext = context;
+	}
+}
+
 void tbWorld_SetFrictionCallback(tbWorldId worldId, tbFrictionCallback* callback)
 {
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetFrictionCallback");

@@ -93,6 +93,8 @@ typedef struct tbShape
 	bool enableSensorEvents;
 	bool enableContactEvents;
 	bool enableHitEvents;
+	bool enableCustomFiltering;
+	bool enablePreSolveEvents;
 } tbShape;
 
 // ---------------------------------------------------------------------------------------------
@@ -120,6 +122,7 @@ enum tbContactFlags
 	/// contact->base holds the pose and points of the last computed manifold (a touching, non-sensor
 	/// contact): manifold recycling may move those points instead of recomputing (contact.c).
 	tb_contactRecyclable = 0x20,
+	tb_contactEnablePreSolve = 0x40, ///< either shape enables pre-solve events
 };
 
 /// Where a contact's manifold was last computed by the narrow phase (manifold recycling,
@@ -180,6 +183,11 @@ typedef struct tbWorld
 	/// broad phase being walked (create, destroy, SetTransform, SetType, filters, collideConnected)
 	/// and allows the rest (velocities, impulses, materials, awake state), as Box2D v3 does.
 	int queryDepth;
+	tbCustomFilterFcn* customFilterFcn;
+	void* customFilterContext;
+	tbPreSolveFcn* preSolveFcn;
+	tbPreContinuousFcn* preContinuousFcn;
+	void* preSolveContext;
 
 	tbBody* bodies;
 	int bodyCapacity;

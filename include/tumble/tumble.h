@@ -44,6 +44,11 @@ TB_API bool tbWorld_SetRestitutionThreshold(tbWorldId worldId, float value);
 TB_API bool tbWorld_SetHitEventThreshold(tbWorldId worldId, float value);
 TB_API void tbWorld_SetFrictionCallback(tbWorldId worldId, tbFrictionCallback* callback);
 TB_API void tbWorld_SetRestitutionCallback(tbWorldId worldId, tbRestitutionCallback* callback);
+/// Register the custom filter (NULL removes it); see tbCustomFilterFcn.
+TB_API void tbWorld_SetCustomFilterCallback(tbWorldId worldId, tbCustomFilterFcn* fcn, void* context);
+/// Register the pre-solve and pre-continuous callbacks (either may be NULL); see tbPreSolveFcn.
+TB_API void tbWorld_SetPreSolveCallback(tbWorldId worldId, tbPreSolveFcn* preSolveFcn,
+										tbPreContinuousFcn* preContinuousFcn, void* context);
 TB_API void* tbWorld_GetUserData(tbWorldId worldId);
 
 /// Change methods between steps (the benchmark and verification tools use these).

@@ -46,6 +46,26 @@ typedef float tbFrictionCallback(float frictionA, int userMaterialIdA, float fri
 /// answer is reported and the default used.
 typedef float tbRestitutionCallback(float restitutionA, int userMaterialIdA, float restitutionB, int userMaterialIdB);
 
+/// Custom filter (tbWorld_SetCustomFilterCallback): asked whether two shapes that pass their
+/// filters may collide, when either shape enables custom filtering; false keeps them apart. Called
+/// from the step's pair stage, in a fixed order, on the stepping thread; the world is locked (do
+/// not change it).
+typedef bool tbCustomFilterFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, void* context);
+
+/// Pre-solve (tbWorld_SetPreSolveCallback): called in the collide stage, in contact-id order, for
+/// each touching non-sensor contact with a dynamic body when either shape enables pre-solve
+/// events, after its manifold is updated and before it is solved. It may change the manifold:
+/// set pointCount to 0 to disable the contact for this step (a one-way platform), or remove a
+/// point; it may not add points (pointCount is clamped to what it was) and a non-finite normal
+/// or separation is refused (error hook, manifold restored). The world is locked; impulses in the
+/// manifold are not final.
+typedef void tbPreSolveFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* manifold, void* context);
+
+/// Pre-continuous: called when continuous collision would stop a fast body at a shape (A, the
+/// other shape; B, the fast body's) whose pair enables pre-solve events, with the point and normal
+/// (from A to B) at the time of impact; return false to let the body pass.
+typedef bool tbPreContinuousFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbVec2 point, tbVec2 normal, void* context);
+
 /// World definition: start from tbDefaultWorldDef().
 typedef struct tbWorldDef
 {
@@ -163,6 +183,8 @@ typedef struct tbShapeDef
 	bool enableContactEvents;  ///< default true
 	bool enableHitEvents;	   ///< default false; one event per impact, with its begin-touch event or after it
 	bool updateBodyMass;	   ///< recompute the body's mass, default true
+	bool enableCustomFiltering; ///< ask the world's custom filter about this shape's pairs, default false
+	bool enablePreSolveEvents;	///< call the world's pre-solve callback for this shape's contacts, default false
 	int internalValue;
 } tbShapeDef;
 

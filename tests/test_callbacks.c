@@ -1,0 +1,197 @@
+// World callbacks called from the step: the custom filter and the pre-solve / pre-continuous
+// callbacks (one-way platforms). Expected positions come from free fall in closed form
+// (y = y0 + v0·t − ½·g·t²) and from resting contact: a body at rest on a surface sits on it within
+// the soft contact's sag (a 0.25 m ball of 0.2 kg: well under 1 cm; 0.01 m is the bound used).
+#include <criterion/criterion.h>
+
+#include "tumble/tumble.h"
+
+#include "error_recorder.h"
+
+#include <math.h>
+#include <string.h>
+
+#define TIME_STEP (1.0f / 60.0f)
+#define SUB_STEPS 4
+
+static tbWorldId CreateWorld(void)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, -10.0f);
+	return tbCreateWorld(&def);
+}
+
+static tbShapeId CreateStaticBox(tbWorldId world, tbVec2 position, float halfWidth, float halfHeight, tbShapeDef* def)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.position = position;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbPolygon box = tbMakeBox(halfWidth, halfHeight);
+	return tbCreatePolygonShape(body, def, &box);
+}
+
+static tbShapeId CreateBall(tbWorldId world, tbVec2 position, tbVec2 velocity, tbShapeDef* def, tbBodyId* bodyOut)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = position;
+	bodyDef.linearVelocity = velocity;
+	*bodyOut = tbCreateBody(world, &bodyDef);
+	tbCircle circle = {{0.0f, 0.0f}, 0.25f};
+	return tbCreateCircleShape(*bodyOut, def, &circle);
+}
+
+// --- custom filter -------------------------------------------------------------------------------
+
+typedef struct FilterContext
+{
+	tbShapeId ghost;
+	int calls;
+} FilterContext;
+
+static bool KeepGhostOut(tbShapeId shapeIdA, tbShapeId shapeIdB, void* context)
+{
+	FilterContext* c = context;
+	c->calls += 1;
+	return TB_ID_EQUALS(shapeIdA, c->ghost) == false && TB_ID_EQUALS(shapeIdB, c->ghost) == false;
+}
+
+// Two balls dropped from y = 3 onto the ground (top at y = 0); the custom filter refuses every pair
+// of the second ("ghost") ball, which enables custom filtering. The first rests on the ground at
+// y = 0.25 ± 0.01; the ghost falls freely through it: y = 3 − ½·10·2² = −17 m after 2 s, within the
+// symplectic Euler error of 120 steps (½·g·t·dt/4 = 0.04 m).
+Test(callbacks, custom_filter_keeps_shapes_apart)
+{
+	tbWorldId world = CreateWorld();
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	CreateStaticBox(world, tbMakeVec2(0.0f, -1.0f), 20.0f, 1.0f, &groundDef);
+	tbShapeDef plain = tbDefaultShapeDef();
+	tbShapeDef custom = tbDefaultShapeDef();
+	custom.enableCustomFiltering = true;
+	tbBodyId solid, ghost;
+	CreateBall(world, tbMakeVec2(-2.0f, 3.0f), tbMakeVec2(0.0f, 0.0f), &plain, &solid);
+	FilterContext context = {CreateBall(world, tbMakeVec2(2.0f, 3.0f), tbMakeVec2(0.0f, 0.0f), &custom, &ghost), 0};
+	tbWorld_SetCustomFilterCallback(world, KeepGhostOut, &context);
+	for (int step = 0; step < 120; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+	}
+	cr_assert(context.calls >= 1, "the filter was never asked");
+	cr_assert(fabsf(tbBody_GetPosition(solid).y - 0.25f) < 0.01f, "solid ball at y %g", (double)tbBody_GetPosition(solid).y);
+	cr_assert(fabsf(tbBody_GetPosition(ghost).y + 17.0f) < 0.05f, "ghost ball at y %g, expected −17",
+			  (double)tbBody_GetPosition(ghost).y);
+	tbDestroyWorld(world);
+}
+
+// --- one-way platform ------------------------------------------------------------------------------
+
+typedef struct PlatformContext
+{
+	tbShapeId platform;
+	int disabled;
+	int passedContinuous;
+} PlatformContext;
+
+// Normal from the platform to the other shape: the callback's normal points from A to B.
+static tbVec2 NormalFromPlatform(const PlatformContext* c, tbShapeId shapeIdA, tbVec2 normal)
+{
+	return TB_ID_EQUALS(shapeIdA, c->platform) ? normal : tbNeg(normal);
+}
+
+static void OneWayPreSolve(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* manifold, void* context)
+{
+	(void)shapeIdB;
+	PlatformContext* c = context;
+	// Only a body above the platform (normal pointing up from it) is held.
+	if (NormalFromPlatform(c, shapeIdA, manifold->normal).y < 0.5f)
+	{
+		manifold->pointCount = 0;
+		c->disabled += 1;
+	}
+}
+
+static bool OneWayPreContinuous(tbShapeId shapeIdA, tbShapeId shapeIdB, tbVec2 point, tbVec2 normal, void* context)
+{
+	(void)shapeIdB;
+	(void)point;
+	PlatformContext* c = context;
+	bool hold = NormalFromPlatform(c, shapeIdA, normal).y >= 0.5f;
+	c->passedContinuous += hold ? 0 : 1;
+	return hold;
+}
+
+// A ball thrown up at 12 m/s from y = 2 under a thin static platform (top at y = 5.1) passes up
+// through it (the pre-solve callback disables the contact while the ball is below), rises to
+// 2 + 12²/20 = 9.2 m, falls back and lands on top: at rest at 5.1 + 0.25 = 5.35 ± 0.01 m after 4 s.
+// Without the callbacks it bounces off the underside and never rises above y = 4.65.
+Test(callbacks, pre_solve_makes_a_one_way_platform)
+{
+	for (int variant = 0; variant < 2; ++variant)
+	{
+		tbWorldId world = CreateWorld();
+		tbShapeDef platformDef = tbDefaultShapeDef();
+		platformDef.enablePreSolveEvents = true;
+		PlatformContext context;
+		memset(&context, 0, sizeof(context));
+		context.platform = CreateStaticBox(world, tbMakeVec2(0.0f, 5.0f), 2.0f, 0.1f, &platformDef);
+		if (variant == 0)
+		{
+			tbWorld_SetPreSolveCallback(world, OneWayPreSolve, OneWayPreContinuous, &context);
+		}
+		tbShapeDef ballDef = tbDefaultShapeDef();
+		tbBodyId ball;
+		CreateBall(world, tbMakeVec2(0.0f, 2.0f), tbMakeVec2(0.0f, 12.0f), &ballDef, &ball);
+		float highest = 0.0f;
+		for (int step = 0; step < 240; ++step)
+		{
+			tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+			highest = fmaxf(highest, tbBody_GetPosition(ball).y);
+		}
+		float y = tbBody_GetPosition(ball).y;
+		if (variant == 0)
+		{
+			cr_assert(context.disabled > 0, "the callback never disabled the contact");
+			cr_assert(fabsf(highest - 9.2f) < 0.1f, "apex %g, expected 9.2", (double)highest);
+			cr_assert(fabsf(y - 5.35f) < 0.01f, "ball at y %g, expected 5.35 on the platform", (double)y);
+			cr_assert(fabsf(tbBody_GetLinearVelocity(ball).y) < 0.01f);
+		}
+		else
+		{
+			cr_assert(highest < 4.66f, "without the callback the ball rose to %g", (double)highest);
+		}
+		tbDestroyWorld(world);
+	}
+}
+
+static void BreakTheNormal(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* manifold, void* context)
+{
+	(void)shapeIdA;
+	(void)shapeIdB;
+	(void)context;
+	manifold->normal = tbMakeVec2(NAN, 0.0f);
+	manifold->pointCount = 5;
+}
+
+// A callback that leaves a NaN normal (and claims 5 points) is reported and its change undone: the
+// ball still lands and rests on the ground at y = 0.25 ± 0.01.
+Test(callbacks, a_broken_manifold_from_pre_solve_is_refused, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldId world = CreateWorld();
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enablePreSolveEvents = true;
+	CreateStaticBox(world, tbMakeVec2(0.0f, -1.0f), 20.0f, 1.0f, &groundDef);
+	tbWorld_SetPreSolveCallback(world, BreakTheNormal, NULL, NULL);
+	tbShapeDef ballDef = tbDefaultShapeDef();
+	tbBodyId ball;
+	CreateBall(world, tbMakeVec2(0.0f, 1.0f), tbMakeVec2(0.0f, 0.0f), &ballDef, &ball);
+	int before = s_errors;
+	for (int step = 0; step < 90; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+	}
+	cr_assert(s_errors > before);
+	cr_assert(strstr(s_lastError, "tbPreSolveFcn") != NULL && strstr(s_lastError, "normal") != NULL, "'%s'",
+			  s_lastError);
+	cr_assert(fabsf(tbBody_GetPosition(ball).y - 0.25f) < 0.01f, "ball at y %g", (double)tbBody_GetPosition(ball).y);
+	tbDestroyWorld(world);
+}
