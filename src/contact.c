@@ -100,9 +100,14 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	{
 		TB_ARRAY_RESERVE(world->contacts, world->contactCapacity, world->contactHighWater + 1);
 		id = world->contactHighWater++;
+		// A fresh slot's generations start from the world's generation, so an id kept from an
+		// earlier world in the same world slot does not match (64k reuses of one slot per world).
+		world->contacts[id].generation = (uint32_t)world->generation << 16;
 	}
 	tbContact* contact = world->contacts + id;
+	uint32_t generation = contact->generation;
 	memset(contact, 0, sizeof(tbContact));
+	contact->generation = generation;
 	const tbShape* a = world->shapes + shapeIdA;
 	const tbShape* b = world->shapes + shapeIdB;
 	contact->inUse = true;
@@ -198,6 +203,7 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 	}
 	contact->inUse = false;
 	contact->flags = 0;
+	contact->generation += 1;
 	TB_ARRAY_PUSH(world->contactFree, world->contactFreeCount, world->contactFreeCapacity, contactId);
 	world->contactCount -= 1;
 }
@@ -609,7 +615,8 @@ static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 	}
 	else if (contact->flags & tb_contactEnableEvents)
 	{
-		tbContactBeginTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB)};
+		tbContactBeginTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB),
+									  tbMakeContactId(world, (int)(contact - world->contacts))};
 		TB_ARRAY_PUSH(world->beginEvents, world->beginCount, world->beginCapacity, e);
 	}
 }
@@ -742,4 +749,184 @@ void tbReportHitEvents(tbWorld* world)
 			TB_ARRAY_PUSH(world->hitEvents, world->hitCount, world->hitCapacity, event);
 		}
 	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// Contact data (the public queries of what touches what)
+
+tbContactId tbMakeContactId(const tbWorld* world, int contactId)
+{
+	tbContactId id = {contactId + 1, (uint16_t)(world->worldId), 0, world->contacts[contactId].generation};
+	return id;
+}
+
+/// Touching, not a sensor overlap: what GetContactData reports (the touchingCount's contacts).
+static bool tbIsReportedContact(const tbContact* contact)
+{
+	return (contact->flags & (tb_contactReported | tb_contactSensor)) == tb_contactReported;
+}
+
+static tbContactData tbMakeContactData(const tbWorld* world, int contactId)
+{
+	const tbContact* contact = world->contacts + contactId;
+	tbContactData data;
+	data.contactId = tbMakeContactId(world, contactId);
+	data.shapeIdA = tbMakeShapeId(world, contact->shapeIdA);
+	data.shapeIdB = tbMakeShapeId(world, contact->shapeIdB);
+	data.manifold = contact->manifold;
+	return data;
+}
+
+/// The reported contacts of a body, or of one of its shapes (shapeId ≥ 0), or a sensor shape's
+/// visitors (sensors), from the body's contact list, written in contact-id order (the list's own
+/// order depends on history): the ids are gathered, insertion-sorted (a body touches few), then
+/// written up to capacity.
+static int tbCollectContacts(const tbWorld* world, const tbBody* body, int shapeId, bool sensors,
+							 tbContactData* data, tbShapeId* visitors, int capacity)
+{
+	int count = 0;
+	for (int key = body->headContactKey; key != TB_NULL_INDEX && count < capacity;)
+	{
+		int id = key >> 1;
+		const tbContact* contact = world->contacts + id;
+		key = contact->edges[key & 1].nextKey;
+		if (shapeId >= 0 && contact->shapeIdA != shapeId && contact->shapeIdB != shapeId)
+		{
+			continue;
+		}
+		bool wanted = sensors ? (contact->flags & (tb_contactSensor | tb_contactReported)) ==
+									(tb_contactSensor | tb_contactReported)
+							  : tbIsReportedContact(contact);
+		if (wanted == false)
+		{
+			continue;
+		}
+		int i = count++;
+		if (sensors)
+		{
+			tbShapeId visitor = tbMakeShapeId(world, contact->shapeIdA == shapeId ? contact->shapeIdB : contact->shapeIdA);
+			for (; i > 0 && visitors[i - 1].index1 > visitor.index1; --i)
+			{
+				visitors[i] = visitors[i - 1];
+			}
+			visitors[i] = visitor;
+		}
+		else
+		{
+			tbContactData entry = tbMakeContactData(world, id);
+			for (; i > 0 && data[i - 1].contactId.index1 > entry.contactId.index1; --i)
+			{
+				data[i] = data[i - 1];
+			}
+			data[i] = entry;
+		}
+	}
+	return count;
+}
+
+static bool tbCheckCapacity(const char* f, const void* array, int capacity)
+{
+	if (capacity < 0 || (capacity > 0 && array == NULL))
+	{
+		tbReportError(f, "capacity is %d with %s array; pass an array of at least capacity entries", capacity,
+					  array == NULL ? "a NULL" : "an");
+		return false;
+	}
+	return true;
+}
+
+int tbBody_GetContactCapacity(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetContactCapacity", NULL, false);
+	return body != NULL ? body->contactCount : 0;
+}
+
+int tbBody_GetContactData(tbBodyId bodyId, tbContactData* contactData, int capacity)
+{
+	const char* f = "tbBody_GetContactData";
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, false);
+	if (body == NULL || tbCheckCapacity(f, contactData, capacity) == false)
+	{
+		return 0;
+	}
+	return tbCollectContacts(world, body, -1, false, contactData, NULL, capacity);
+}
+
+int tbShape_GetContactCapacity(tbShapeId shapeId)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetContactCapacity", &world, false);
+	return shape != NULL && shape->isSensor == false ? world->bodies[shape->bodyId].contactCount : 0;
+}
+
+int tbShape_GetContactData(tbShapeId shapeId, tbContactData* contactData, int capacity)
+{
+	const char* f = "tbShape_GetContactData";
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
+	if (shape == NULL || tbCheckCapacity(f, contactData, capacity) == false || shape->isSensor)
+	{
+		return 0;
+	}
+	return tbCollectContacts(world, world->bodies + shape->bodyId, shapeId.index1 - 1, false, contactData, NULL,
+							 capacity);
+}
+
+int tbShape_GetSensorCapacity(tbShapeId shapeId)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetSensorCapacity", &world, false);
+	return shape != NULL && shape->isSensor ? world->bodies[shape->bodyId].contactCount : 0;
+}
+
+int tbShape_GetSensorData(tbShapeId shapeId, tbShapeId* visitorIds, int capacity)
+{
+	const char* f = "tbShape_GetSensorData";
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
+	if (shape == NULL || tbCheckCapacity(f, visitorIds, capacity) == false || shape->isSensor == false)
+	{
+		return 0;
+	}
+	return tbCollectContacts(world, world->bodies + shape->bodyId, shapeId.index1 - 1, true, NULL, visitorIds,
+							 capacity);
+}
+
+static tbWorld* tbGetContactWorld(tbContactId id, int* contactOut)
+{
+	if (id.index1 <= 0 || id.world0 >= TB_MAX_WORLDS)
+	{
+		return NULL;
+	}
+	tbWorld* world = tbGetWorldFromIndex(id.world0);
+	int index = id.index1 - 1;
+	if (world == NULL || index >= world->contactHighWater || world->contacts[index].inUse == false ||
+		world->contacts[index].generation != id.generation)
+	{
+		return NULL;
+	}
+	*contactOut = index;
+	return world;
+}
+
+bool tbContact_IsValid(tbContactId contactId)
+{
+	int index;
+	return tbGetContactWorld(contactId, &index) != NULL;
+}
+
+tbContactData tbContact_GetData(tbContactId contactId)
+{
+	int index;
+	tbWorld* world = tbGetContactWorld(contactId, &index);
+	if (world == NULL)
+	{
+		tbReportError("tbContact_GetData", "contactId refers to a destroyed contact or world; contacts end when "
+										   "their shapes' boxes part (check with tbContact_IsValid)");
+		tbContactData none;
+		memset(&none, 0, sizeof(none));
+		return none;
+	}
+	return tbMakeContactData(world, index);
 }

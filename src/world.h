@@ -162,6 +162,7 @@ typedef struct tbContact
 	// and where it happened.
 	float hitSpeed;
 	tbVec2 hitPoint;
+	uint32_t generation; ///< bumped when the slot is freed: stale tbContactIds are refused
 } tbContact;
 
 // ---------------------------------------------------------------------------------------------
@@ -314,6 +315,7 @@ tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** world, 
 
 tbBodyId tbMakeBodyId(const tbWorld* world, int bodyId);
 tbShapeId tbMakeShapeId(const tbWorld* world, int shapeId);
+tbContactId tbMakeContactId(const tbWorld* world, int contactId);
 
 // body.c
 void tbUpdateBodyMass(tbWorld* world, tbBody* body);

@@ -693,3 +693,86 @@ Test(events, kinematic_body_passing_a_static_sensor_is_reported)
 	cr_assert(abs(endStep - 84) <= 1, "end at step %d, expected 84 ± 1", endStep);
 	tbDestroyWorld(world);
 }
+
+// Contact data: a unit box resting on the ground reports one touching contact, from the body, from
+// its shape and through the begin event's contact id, with a unit normal along y and two points
+// on the ground's top face (y = 0 within the soft contact's sag, 0.01 m) at the box's corners
+// x = ±0.5; its normal impulses (accumulated over one sub-step, as the solver keeps them) carry the
+// box's weight over a sub-step, m·g·dt/4 = 1 × 10 / 240 N·s, within 5 % (a resting solve
+// converges to it). Lifting the box away ends the contact: the
+// kept id goes stale.
+Test(events, contact_data_of_a_resting_box)
+{
+	tbWorldId world = CreateWorld();
+	tbShapeId ground = CreateGround(world, NULL);
+	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbShapeId boxShape;
+	cr_assert_eq(tbBody_GetShapes(box, &boxShape, 1), 1);
+	tbContactId fromEvent = TB_NULL_CONTACT_ID;
+	for (int step = 0; step < 60; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		tbContactEvents events = tbWorld_GetContactEvents(world);
+		if (events.beginCount > 0)
+		{
+			fromEvent = events.beginEvents[0].contactId;
+		}
+	}
+	cr_assert(tbContact_IsValid(fromEvent), "the begin event's contact id is valid while the box rests");
+	tbContactData data[4];
+	cr_assert_geq(tbBody_GetContactCapacity(box), 1);
+	cr_assert_eq(tbBody_GetContactData(box, data, 4), 1);
+	cr_assert(TB_ID_EQUALS(data[0].contactId, fromEvent) && data[0].contactId.generation == fromEvent.generation);
+	cr_assert(SamePair(data[0].shapeIdA, data[0].shapeIdB, ground, boxShape));
+	const tbManifold* m = &data[0].manifold;
+	cr_assert_eq(m->pointCount, 2);
+	cr_assert(fabsf(fabsf(m->normal.y) - 1.0f) < 1e-4f);
+	float impulse = 0.0f;
+	for (int i = 0; i < 2; ++i)
+	{
+		cr_assert(fabsf(m->points[i].point.y) < 0.01f, "point y %g", (double)m->points[i].point.y);
+		cr_assert(fabsf(fabsf(m->points[i].point.x) - 0.5f) < 0.01f, "point x %g", (double)m->points[i].point.x);
+		impulse += m->points[i].normalImpulse;
+	}
+	float weight = 1.0f * GRAVITY * TIME_STEP / SUB_STEPS;
+	cr_assert(fabsf(impulse - weight) < 0.05f * weight, "normal impulse %g N·s, weight over a sub-step %g", (double)impulse,
+			  (double)weight);
+	tbContactData viaShape[4];
+	cr_assert_eq(tbShape_GetContactData(boxShape, viaShape, 4), 1);
+	cr_assert_eq(tbShape_GetContactData(ground, viaShape, 4), 1, "the ground's shape sees the same contact");
+	tbContactData viaId = tbContact_GetData(fromEvent);
+	cr_assert_eq(viaId.manifold.pointCount, 2);
+	cr_assert_eq(tbBody_GetContactData(box, data, 0), 0, "capacity 0 writes nothing");
+
+	cr_assert(tbBody_SetTransform(box, (tbVec2){0.0f, 10.0f}, tb_rot_identity));
+	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+	cr_assert(tbContact_IsValid(fromEvent) == false, "the contact ended: its id is stale");
+	cr_assert_eq(tbBody_GetContactData(box, data, 4), 0);
+	tbDestroyWorld(world);
+}
+
+// Sensor data: a static sensor reports the ball inside it, and nothing once it has fallen out.
+Test(events, sensor_data_lists_visitors)
+{
+	tbWorldId world = CreateWorld();
+	tbShapeId sensor = CreateStaticSensor(world);
+	tbBodyId ball;
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 6.0f}, 0.25f, NULL, &ball);
+	tbShapeId visitors[4];
+	int inside = 0;
+	for (int step = 0; step < 90; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		int n = tbShape_GetSensorData(sensor, visitors, 4);
+		cr_assert(n <= tbShape_GetSensorCapacity(sensor));
+		if (n == 1)
+		{
+			cr_assert(TB_ID_EQUALS(visitors[0], ballShape));
+			inside += 1;
+		}
+	}
+	cr_assert_gt(inside, 0, "the ball was never reported inside");
+	cr_assert_eq(tbShape_GetSensorData(sensor, visitors, 4), 0, "the ball has left");
+	cr_assert_eq(tbShape_GetSensorData(ballShape, visitors, 4), 0, "a non-sensor has no visitors");
+	tbDestroyWorld(world);
+}

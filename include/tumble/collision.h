@@ -294,7 +294,7 @@ typedef struct tbManifoldPoint
 	tbVec2 anchorA;			///< point relative to body A's centre of mass (filled by the world)
 	tbVec2 anchorB;			///< point relative to body B's centre of mass (filled by the world)
 	float separation;		///< > 0 speculative gap, < 0 penetration (m)
-	float normalImpulse;	///< accumulated normal impulse (N·s), carried across steps
+	float normalImpulse;	///< normal impulse (N·s) accumulated over the last sub-step, carried across steps
 	float tangentImpulse;	///< accumulated friction impulse (N·s)
 	float maxNormalImpulse; ///< largest normal impulse of the last step (for hit events)
 	float normalVelocity;	///< relative normal velocity before the solve (m/s, < 0 approaching)

@@ -35,16 +35,28 @@ typedef struct tbJointId
 	uint16_t generation;
 } tbJointId;
 
+/// Contact handle: a contact lives while two shapes' fat boxes overlap, so it may be destroyed by
+/// any step; check it with tbContact_IsValid. The generation counts every reuse of the slot.
+typedef struct tbContactId
+{
+	int32_t index1;
+	uint16_t world0;
+	int16_t padding;
+	uint32_t generation;
+} tbContactId;
+
 #ifdef __cplusplus
 #define TB_NULL_WORLD_ID (tbWorldId{})
 #define TB_NULL_BODY_ID (tbBodyId{})
 #define TB_NULL_SHAPE_ID (tbShapeId{})
 #define TB_NULL_JOINT_ID (tbJointId{})
+#define TB_NULL_CONTACT_ID (tbContactId{})
 #else
 #define TB_NULL_WORLD_ID ((tbWorldId){0})
 #define TB_NULL_BODY_ID ((tbBodyId){0})
 #define TB_NULL_SHAPE_ID ((tbShapeId){0})
 #define TB_NULL_JOINT_ID ((tbJointId){0})
+#define TB_NULL_CONTACT_ID ((tbContactId){0})
 #endif
 
 /// True if the id is null (all zero). A non-null id may still be stale: use tbBody_IsValid etc.

@@ -94,6 +94,21 @@ TB_API bool tbWorld_OverlapAABB(tbWorldId worldId, tbAABB aabb, tbQueryFilter fi
 /// Refused (error hook, nothing changed) during the step and for a NULL def, a non-finite or
 /// out-of-world position, a negative or non-finite radius or falloff, a non-finite impulse.
 TB_API void tbWorld_Explode(tbWorldId worldId, const tbExplosionDef* def);
+
+/// Contacts: what a body or shape touches now (manifold points within the speculative distance of
+/// the last step, sensors excluded). Capacity: an upper bound on what the matching GetContactData
+/// writes; GetContactData writes at most `capacity` entries, in contact-id order, and returns how
+/// many. A contact id from them or from a begin event is valid until the contact is destroyed.
+TB_API int tbBody_GetContactCapacity(tbBodyId bodyId);
+TB_API int tbBody_GetContactData(tbBodyId bodyId, tbContactData* contactData, int capacity);
+TB_API int tbShape_GetContactCapacity(tbShapeId shapeId);
+TB_API int tbShape_GetContactData(tbShapeId shapeId, tbContactData* contactData, int capacity);
+/// A sensor shape's visitors (shapes overlapping it at the last step), as ids.
+TB_API int tbShape_GetSensorCapacity(tbShapeId shapeId);
+TB_API int tbShape_GetSensorData(tbShapeId shapeId, tbShapeId* visitorIds, int capacity);
+TB_API bool tbContact_IsValid(tbContactId contactId);
+/// The contact's data; all zero (and an error) for a stale id.
+TB_API tbContactData tbContact_GetData(tbContactId contactId);
 /// Shapes containing the point.
 TB_API bool tbWorld_OverlapPoint(tbWorldId worldId, tbVec2 point, tbQueryFilter filter, tbOverlapResultFcn* fcn,
 								 void* context);

@@ -358,7 +358,18 @@ typedef struct tbContactBeginTouchEvent
 {
 	tbShapeId shapeIdA;
 	tbShapeId shapeIdB;
+	tbContactId contactId; ///< the contact, for tbContact_GetData (its manifold) while it lives
 } tbContactBeginTouchEvent;
+
+/// A touching contact as tbBody_GetContactData, tbShape_GetContactData and tbContact_GetData
+/// report it: the shapes (normal from A to B) and the manifold of the last step.
+typedef struct tbContactData
+{
+	tbContactId contactId;
+	tbShapeId shapeIdA;
+	tbShapeId shapeIdB;
+	tbManifold manifold;
+} tbContactData;
 
 typedef struct tbContactEndTouchEvent
 {
