@@ -852,6 +852,75 @@ tbVec2 tbBody_GetWorldCenterOfMass(tbBodyId bodyId)
 	return body != NULL ? body->center : tb_vec2_zero;
 }
 
+bool tbBody_SetMassData(tbBodyId bodyId, tbMassData massData)
+{
+	const char* f = "tbBody_SetMassData";
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
+	if (body == NULL || tbCheckNonNegative(f, "massData.mass", massData.mass) == false ||
+		tbCheckNonNegative(f, "massData.rotationalInertia", massData.rotationalInertia) == false ||
+		tbCheckCoordinate(f, "massData.center", massData.center) == false)
+	{
+		return false;
+	}
+	if (body->type != tb_dynamicBody)
+	{
+		return true; // static and kinematic bodies have no mass (as tbUpdateBodyMass)
+	}
+	// Mass below FLT_MIN counts as none, as for shapes: the body then acts as 1 kg at its origin.
+	tbRestartBodyContacts(world, body);
+	tbVec2 oldCenter = body->center;
+	body->mass = massData.mass >= FLT_MIN ? massData.mass : 1.0f;
+	body->invMass = 1.0f / body->mass;
+	tbSetBodyInertia(body, body->fixedRotation ? 0.0f : massData.rotationalInertia);
+	body->localCenter = massData.mass >= FLT_MIN ? massData.center : tb_vec2_zero;
+	body->center = tbTransformPoint(body->transform, body->localCenter);
+	body->center0 = body->center;
+	tbKeepOriginVelocity(body, oldCenter);
+	tbComputeExtents(world, body);
+	return true;
+}
+
+void tbBody_ApplyMassFromShapes(tbBodyId bodyId)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_ApplyMassFromShapes", &world, true);
+	if (body != NULL)
+	{
+		tbUpdateBodyMass(world, body);
+	}
+}
+
+void tbBody_SetName(tbBodyId bodyId, const char* name)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetName", NULL, false);
+	if (body != NULL)
+	{
+		body->name = name;
+	}
+}
+
+/// Contact or hit events on or off for every shape of the body (tbShape_Enable*Events).
+static void tbEnableBodyShapeEvents(tbBodyId bodyId, const char* f, bool hits, bool flag)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
+	for (int id = body != NULL ? body->headShapeId : TB_NULL_INDEX; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		tbSetShapeEventFlag(world, world->shapes + id, hits ? tb_shapeEventHits : tb_shapeEventContacts, flag);
+	}
+}
+
+void tbBody_EnableContactEvents(tbBodyId bodyId, bool flag)
+{
+	tbEnableBodyShapeEvents(bodyId, "tbBody_EnableContactEvents", false, flag);
+}
+
+void tbBody_EnableHitEvents(tbBodyId bodyId, bool flag)
+{
+	tbEnableBodyShapeEvents(bodyId, "tbBody_EnableHitEvents", true, flag);
+}
+
 tbMassData tbBody_GetMassData(tbBodyId bodyId)
 {
 	tbMassData md = {0};

@@ -930,3 +930,43 @@ tbContactData tbContact_GetData(tbContactId contactId)
 	}
 	return tbMakeContactData(world, index);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Event flags changed at run time
+
+/// The event flags a contact takes from its shapes (as at creation, tbCreateContact).
+static void tbRefreshContactEventFlags(const tbWorld* world, tbContact* contact)
+{
+	const tbShape* a = world->shapes + contact->shapeIdA;
+	const tbShape* b = world->shapes + contact->shapeIdB;
+	contact->flags &= ~(uint32_t)(tb_contactEnableEvents | tb_contactEnableHits);
+	contact->flags |= a->enableContactEvents && b->enableContactEvents ? (uint32_t)tb_contactEnableEvents : 0u;
+	contact->flags |= a->enableHitEvents || b->enableHitEvents ? (uint32_t)tb_contactEnableHits : 0u;
+}
+
+void tbSetShapeEventFlag(tbWorld* world, tbShape* shape, tbShapeEventKind kind, bool flag)
+{
+	switch (kind)
+	{
+		case tb_shapeEventContacts:
+			shape->enableContactEvents = flag;
+			break;
+		case tb_shapeEventHits:
+			shape->enableHitEvents = flag;
+			break;
+		default:
+			shape->enableSensorEvents = flag; // read when events are made: no contact holds it
+			return;
+	}
+	int shapeId = (int)(shape - world->shapes);
+	const tbBody* body = world->bodies + shape->bodyId;
+	for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+	{
+		tbContact* contact = world->contacts + (key >> 1);
+		key = contact->edges[key & 1].nextKey;
+		if (contact->shapeIdA == shapeId || contact->shapeIdB == shapeId)
+		{
+			tbRefreshContactEventFlags(world, contact);
+		}
+	}
+}

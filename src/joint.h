@@ -210,20 +210,6 @@ bool tbCheckJointDefPointer(const char* f, const void* def, int internalValue, c
 void tbWakeJoint(tbWorld* world, const tbJoint* joint);
 /// Checks for defs: a float that must be finite and ≥ 0, a pair lower ≤ upper.
 bool tbCheckRange(const char* function, const char* lowerName, float lower, const char* upperName, float upper);
-/// An angle brought into [−π, π] (one turn at most: the difference of two angles in [−π, π]).
-static inline float tbUnwindAngle(float angle)
-{
-	if (angle < -TB_PI)
-	{
-		return angle + 2.0f * TB_PI;
-	}
-	if (angle > TB_PI)
-	{
-		return angle - 2.0f * TB_PI;
-	}
-	return angle;
-}
-
 /// Frames of the joint in world space now (frame origins and rotations).
 tbTransform tbJointWorldFrameA(const tbWorld* world, const tbJoint* joint);
 tbTransform tbJointWorldFrameB(const tbWorld* world, const tbJoint* joint);

@@ -505,6 +505,173 @@ tbGeometry tbShape_GetGeometry(tbShapeId shapeId)
 	return shape != NULL ? shape->geometry : g;
 }
 
+// --- geometry by kind (Box2D v3's grammar) ---------------------------------------------------
+
+/// The shape's geometry of the given kind; an error and zeros when the shape is of another kind.
+static const tbGeometry* tbGetGeometryOfType(tbShapeId shapeId, tbShapeType type, const char* f)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, f, NULL, false);
+	if (shape == NULL)
+	{
+		return NULL;
+	}
+	if (shape->geometry.type != type)
+	{
+		tbReportError(f, "the shape is of type %d, not %d (tbShape_GetType says which)", (int)shape->geometry.type,
+					  (int)type);
+		return NULL;
+	}
+	return &shape->geometry;
+}
+
+tbCircle tbShape_GetCircle(tbShapeId shapeId)
+{
+	const tbGeometry* g = tbGetGeometryOfType(shapeId, tb_circleShape, "tbShape_GetCircle");
+	tbCircle none = {{0.0f, 0.0f}, 0.0f};
+	return g != NULL ? g->circle : none;
+}
+
+tbCapsule tbShape_GetCapsule(tbShapeId shapeId)
+{
+	const tbGeometry* g = tbGetGeometryOfType(shapeId, tb_capsuleShape, "tbShape_GetCapsule");
+	tbCapsule none = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f};
+	return g != NULL ? g->capsule : none;
+}
+
+tbSegment tbShape_GetSegment(tbShapeId shapeId)
+{
+	const tbGeometry* g = tbGetGeometryOfType(shapeId, tb_segmentShape, "tbShape_GetSegment");
+	tbSegment none = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+	return g != NULL ? g->segment : none;
+}
+
+tbPolygon tbShape_GetPolygon(tbShapeId shapeId)
+{
+	const tbGeometry* g = tbGetGeometryOfType(shapeId, tb_polygonShape, "tbShape_GetPolygon");
+	tbPolygon none;
+	memset(&none, 0, sizeof(none));
+	return g != NULL ? g->polygon : none;
+}
+
+/// Replace a shape's geometry (any kind may become any other): checked as at creation, then its
+/// contacts are destroyed (woken bodies find the new ones next step), its proxy re-made and its
+/// body's mass recomputed.
+static bool tbSetGeometry(tbShapeId shapeId, const tbGeometry* geometry, const char* f)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, true);
+	if (shape == NULL || tbCheckGeometry(f, geometry) == false ||
+		tbCheckShapeMass(f, geometry, shape->density) == false || tbStructureLocked(world, f, "change shapes"))
+	{
+		return false;
+	}
+	tbBody* body = world->bodies + shape->bodyId;
+	tbDestroyShapeContacts(world, body, shapeId.index1 - 1);
+	shape->geometry = *geometry;
+	tbDestroyShapeProxy(world, shape);
+	tbCreateShapeProxy(world, shape, body);
+	tbUpdateBodyMass(world, body);
+	tbWakeBody(world, body);
+	return true;
+}
+
+bool tbShape_SetCircle(tbShapeId shapeId, const tbCircle* circle)
+{
+	if (tbCheckPointer("tbShape_SetCircle", "circle", circle) == false)
+	{
+		return false;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_circleShape;
+	g.circle = *circle;
+	return tbSetGeometry(shapeId, &g, "tbShape_SetCircle");
+}
+
+bool tbShape_SetCapsule(tbShapeId shapeId, const tbCapsule* capsule)
+{
+	if (tbCheckPointer("tbShape_SetCapsule", "capsule", capsule) == false)
+	{
+		return false;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_capsuleShape;
+	g.capsule = *capsule;
+	return tbSetGeometry(shapeId, &g, "tbShape_SetCapsule");
+}
+
+bool tbShape_SetSegment(tbShapeId shapeId, const tbSegment* segment)
+{
+	if (tbCheckPointer("tbShape_SetSegment", "segment", segment) == false)
+	{
+		return false;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_segmentShape;
+	g.segment = *segment;
+	return tbSetGeometry(shapeId, &g, "tbShape_SetSegment");
+}
+
+bool tbShape_SetPolygon(tbShapeId shapeId, const tbPolygon* polygon)
+{
+	if (tbCheckPointer("tbShape_SetPolygon", "polygon", polygon) == false)
+	{
+		return false;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_polygonShape;
+	g.polygon = *polygon;
+	return tbSetGeometry(shapeId, &g, "tbShape_SetPolygon");
+}
+
+// --- events at run time ----------------------------------------------------------------------
+
+static void tbEnableShapeEvents(tbShapeId shapeId, const char* f, tbShapeEventKind kind, bool flag)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, true);
+	if (shape != NULL)
+	{
+		tbSetShapeEventFlag(world, shape, kind, flag);
+	}
+}
+
+void tbShape_EnableContactEvents(tbShapeId shapeId, bool flag)
+{
+	tbEnableShapeEvents(shapeId, "tbShape_EnableContactEvents", tb_shapeEventContacts, flag);
+}
+
+void tbShape_EnableHitEvents(tbShapeId shapeId, bool flag)
+{
+	tbEnableShapeEvents(shapeId, "tbShape_EnableHitEvents", tb_shapeEventHits, flag);
+}
+
+void tbShape_EnableSensorEvents(tbShapeId shapeId, bool flag)
+{
+	tbEnableShapeEvents(shapeId, "tbShape_EnableSensorEvents", tb_shapeEventSensors, flag);
+}
+
+bool tbShape_AreContactEventsEnabled(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_AreContactEventsEnabled", NULL, false);
+	return shape != NULL && shape->enableContactEvents;
+}
+
+bool tbShape_AreHitEventsEnabled(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_AreHitEventsEnabled", NULL, false);
+	return shape != NULL && shape->enableHitEvents;
+}
+
+bool tbShape_AreSensorEventsEnabled(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_AreSensorEventsEnabled", NULL, false);
+	return shape != NULL && shape->enableSensorEvents;
+}
+
 bool tbShape_IsSensor(tbShapeId shapeId)
 {
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_IsSensor", NULL, false);

@@ -616,6 +616,77 @@ void tbWorld_SetRestitutionCallback(tbWorldId worldId, tbRestitutionCallback* ca
 	}
 }
 
+void tbWorld_SetUserData(tbWorldId worldId, void* userData)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_SetUserData");
+	if (world != NULL)
+	{
+		world->userData = userData;
+	}
+}
+
+int tbWorld_GetAwakeBodyCount(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetAwakeBodyCount");
+	return world != NULL ? world->awakeBodyCount : 0;
+}
+
+void tbWorld_EnableWarmStarting(tbWorldId worldId, bool flag)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableWarmStarting");
+	if (world != NULL)
+	{
+		world->def.enableWarmStarting = flag;
+	}
+}
+
+bool tbWorld_IsWarmStartingEnabled(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_IsWarmStartingEnabled");
+	return world != NULL && world->def.enableWarmStarting;
+}
+
+void tbWorld_EnableContinuous(tbWorldId worldId, bool flag)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableContinuous");
+	if (world == NULL)
+	{
+		return;
+	}
+	// Off keeps the method in force, so that on restores it (conservative advancement stays so).
+	if (flag == false && world->def.continuous != tb_continuousOff)
+	{
+		world->continuousWhenEnabled = world->def.continuous;
+		world->def.continuous = tb_continuousOff;
+	}
+	else if (flag && world->def.continuous == tb_continuousOff)
+	{
+		world->def.continuous = world->continuousWhenEnabled;
+	}
+}
+
+bool tbWorld_IsContinuousEnabled(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_IsContinuousEnabled");
+	return world != NULL && world->def.continuous != tb_continuousOff;
+}
+
+void tbWorld_SetMaximumLinearSpeed(tbWorldId worldId, float maximumLinearSpeed)
+{
+	const char* f = "tbWorld_SetMaximumLinearSpeed";
+	tbWorld* world = tbGetUnlockedWorld(worldId, f);
+	if (world != NULL && tbCheckMaximumSpeed(f, maximumLinearSpeed))
+	{
+		world->def.maximumLinearSpeed = maximumLinearSpeed;
+	}
+}
+
+float tbWorld_GetMaximumLinearSpeed(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetMaximumLinearSpeed");
+	return world != NULL ? world->def.maximumLinearSpeed : 0.0f;
+}
+
 void* tbWorld_GetUserData(tbWorldId worldId)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetUserData");

@@ -184,6 +184,7 @@ typedef struct tbWorld
 	/// broad phase being walked (create, destroy, SetTransform, SetType, filters, collideConnected)
 	/// and allows the rest (velocities, impulses, materials, awake state), as Box2D v3 does.
 	int queryDepth;
+	tbContinuousMethod continuousWhenEnabled; ///< the method tbWorld_EnableContinuous(true) restores
 	tbCustomFilterFcn* customFilterFcn;
 	void* customFilterContext;
 	tbPreSolveFcn* preSolveFcn;
@@ -316,6 +317,17 @@ tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** world, 
 tbBodyId tbMakeBodyId(const tbWorld* world, int bodyId);
 tbShapeId tbMakeShapeId(const tbWorld* world, int shapeId);
 tbContactId tbMakeContactId(const tbWorld* world, int contactId);
+
+/// Which event flag of a shape tbSetShapeEventFlag changes.
+typedef enum tbShapeEventKind
+{
+	tb_shapeEventContacts,
+	tb_shapeEventHits,
+	tb_shapeEventSensors,
+} tbShapeEventKind;
+
+/// Turn one of a shape's event flags on or off and refresh the flags its contacts hold (contact.c).
+void tbSetShapeEventFlag(tbWorld* world, tbShape* shape, tbShapeEventKind kind, bool flag);
 
 // body.c
 void tbUpdateBodyMass(tbWorld* world, tbBody* body);

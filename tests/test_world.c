@@ -797,3 +797,50 @@ Test(world, friction_mixing_default_and_callback)
 	cr_assert_float_eq(mixed, 3.125f, 0.03f * 3.125f, "default mix slid %.4f m", (double)mixed);
 	cr_assert_float_eq(minimum, 6.25f, 0.03f * 6.25f, "min callback slid %.4f m", (double)minimum);
 }
+
+// World settings in Box2D v3's grammar: user data, awake count, warm starting, continuous on/off
+// (restoring the method in force), the speed clamp (refused beyond TB_MAX_LINEAR_SPEED), and ids
+// stored as integers and loaded back.
+Test(world, settings_and_stored_ids)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.continuous = tb_continuousConservative;
+	tbWorldId world = tbCreateWorld(&def);
+	int marker = 7;
+	tbWorld_SetUserData(world, &marker);
+	cr_assert_eq(tbWorld_GetUserData(world), &marker);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	cr_assert_eq(tbWorld_GetAwakeBodyCount(world), 1);
+	tbBody_SetAwake(body, false);
+	cr_assert_eq(tbWorld_GetAwakeBodyCount(world), 0);
+
+	tbWorld_EnableWarmStarting(world, false);
+	cr_assert(tbWorld_IsWarmStartingEnabled(world) == false);
+	tbWorld_EnableWarmStarting(world, true);
+	cr_assert(tbWorld_IsWarmStartingEnabled(world));
+	tbWorld_EnableContinuous(world, false);
+	cr_assert(tbWorld_IsContinuousEnabled(world) == false);
+	tbWorld_EnableContinuous(world, true);
+	cr_assert(tbWorld_IsContinuousEnabled(world));
+
+	tbWorld_SetMaximumLinearSpeed(world, 100.0f);
+	cr_assert_float_eq(tbWorld_GetMaximumLinearSpeed(world), 100.0f, 0.0f);
+	tbWorld_SetMaximumLinearSpeed(world, -5.0f);
+	cr_assert_float_eq(tbWorld_GetMaximumLinearSpeed(world), 100.0f, 0.0f);
+
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	tbShapeId shape = tbCreateCircleShape(body, &shapeDef, &circle);
+	tbBodyId loadedBody = tbLoadBodyId(tbStoreBodyId(body));
+	tbShapeId loadedShape = tbLoadShapeId(tbStoreShapeId(shape));
+	cr_assert(TB_ID_EQUALS(loadedBody, body) && loadedBody.world0 == body.world0);
+	cr_assert(TB_ID_EQUALS(loadedShape, shape) && tbShape_IsValid(loadedShape));
+	tbContactId contact = {12, 3, 0, 77u};
+	uint32_t values[3];
+	tbStoreContactId(contact, values);
+	tbContactId back = tbLoadContactId(values);
+	cr_assert(back.index1 == 12 && back.world0 == 3 && back.generation == 77u);
+	tbDestroyWorld(world);
+}

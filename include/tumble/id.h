@@ -63,6 +63,54 @@ typedef struct tbContactId
 #define TB_IS_NULL(id) ((id).index1 == 0)
 #define TB_IS_NON_NULL(id) ((id).index1 != 0)
 
+/// Ids as integers, for saving (Box2D v3's store/load functions; TB_STORE_ID is the same packing).
+TB_INLINE uint64_t tbStoreBodyId(tbBodyId id)
+{
+	return ((uint64_t)(uint32_t)id.index1 << 32) | ((uint64_t)id.world0 << 16) | (uint64_t)id.generation;
+}
+
+TB_INLINE tbBodyId tbLoadBodyId(uint64_t x)
+{
+	tbBodyId id = {(int32_t)(x >> 32), (uint16_t)(x >> 16), (uint16_t)x};
+	return id;
+}
+
+TB_INLINE uint64_t tbStoreShapeId(tbShapeId id)
+{
+	return ((uint64_t)(uint32_t)id.index1 << 32) | ((uint64_t)id.world0 << 16) | (uint64_t)id.generation;
+}
+
+TB_INLINE tbShapeId tbLoadShapeId(uint64_t x)
+{
+	tbShapeId id = {(int32_t)(x >> 32), (uint16_t)(x >> 16), (uint16_t)x};
+	return id;
+}
+
+TB_INLINE uint64_t tbStoreJointId(tbJointId id)
+{
+	return ((uint64_t)(uint32_t)id.index1 << 32) | ((uint64_t)id.world0 << 16) | (uint64_t)id.generation;
+}
+
+TB_INLINE tbJointId tbLoadJointId(uint64_t x)
+{
+	tbJointId id = {(int32_t)(x >> 32), (uint16_t)(x >> 16), (uint16_t)x};
+	return id;
+}
+
+/// A contact id in three 32-bit values.
+TB_INLINE void tbStoreContactId(tbContactId id, uint32_t values[3])
+{
+	values[0] = (uint32_t)id.index1;
+	values[1] = (uint32_t)id.world0;
+	values[2] = id.generation;
+}
+
+TB_INLINE tbContactId tbLoadContactId(const uint32_t values[3])
+{
+	tbContactId id = {(int32_t)values[0], (uint16_t)values[1], 0, values[2]};
+	return id;
+}
+
 /// Compare two ids of the same kind.
 #define TB_ID_EQUALS(id1, id2) ((id1).index1 == (id2).index1 && (id1).generation == (id2).generation)
 

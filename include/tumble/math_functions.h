@@ -285,6 +285,33 @@ TB_INLINE bool tbVec2Equals(tbVec2 a, tbVec2 b)
 }
 
 /// Rotation from an angle in radians.
+/// Cosine and sine of an angle, normalised so that c² + s² = 1 to float precision.
+typedef struct tbCosSin
+{
+	float cosine;
+	float sine;
+} tbCosSin;
+
+TB_API tbCosSin tbComputeCosSin(float radians);
+
+/// Arctangent of y/x in [−π, π] by a polynomial (error below 3e-6 rad), the same on every
+/// platform; tbRot_GetAngle and tbRelativeAngle use the C library's atan2f instead.
+TB_API float tbAtan2(float y, float x);
+
+/// The angle brought into [−π, π] by whole turns.
+TB_INLINE float tbUnwindAngle(float radians)
+{
+	if (radians < -TB_PI)
+	{
+		return radians + 2.0f * TB_PI * ceilf((-TB_PI - radians) / (2.0f * TB_PI));
+	}
+	if (radians > TB_PI)
+	{
+		return radians - 2.0f * TB_PI * ceilf((radians - TB_PI) / (2.0f * TB_PI));
+	}
+	return radians;
+}
+
 TB_INLINE tbRot tbMakeRot(float radians)
 {
 	tbRot q = {cosf(radians), sinf(radians)};
@@ -302,6 +329,15 @@ TB_INLINE tbRot tbNormalizeRot(tbRot q)
 
 /// Integrate a rotation by an angle increment without trigonometry:
 /// q2 = normalize(q1 + Δθ·perp(q1)), exact to O(Δθ³) in angle.
+/// Normalised linear interpolation of two rotations (t in [0, 1]): the shorter way when they are
+/// less than half a turn apart.
+TB_INLINE tbRot tbNLerp(tbRot q1, tbRot q2, float t)
+{
+	float u = 1.0f - t;
+	tbRot q = {u * q1.c + t * q2.c, u * q1.s + t * q2.s};
+	return tbNormalizeRot(q);
+}
+
 TB_INLINE tbRot tbIntegrateRotation(tbRot q1, float deltaAngle)
 {
 	tbRot q2 = {q1.c - deltaAngle * q1.s, q1.s + deltaAngle * q1.c};

@@ -50,6 +50,16 @@ TB_API void tbWorld_SetCustomFilterCallback(tbWorldId worldId, tbCustomFilterFcn
 TB_API void tbWorld_SetPreSolveCallback(tbWorldId worldId, tbPreSolveFcn* preSolveFcn,
 										tbPreContinuousFcn* preContinuousFcn, void* context);
 TB_API void* tbWorld_GetUserData(tbWorldId worldId);
+TB_API void tbWorld_SetUserData(tbWorldId worldId, void* userData);
+TB_API int tbWorld_GetAwakeBodyCount(tbWorldId worldId);
+TB_API void tbWorld_EnableWarmStarting(tbWorldId worldId, bool flag);
+TB_API bool tbWorld_IsWarmStartingEnabled(tbWorldId worldId);
+/// Off: no time of impact (fast bodies may tunnel); on again restores the method that was in force.
+TB_API void tbWorld_EnableContinuous(tbWorldId worldId, bool flag);
+TB_API bool tbWorld_IsContinuousEnabled(tbWorldId worldId);
+/// The speed clamp on every body (m/s, > 0 and ≤ TB_MAX_LINEAR_SPEED; refused otherwise).
+TB_API void tbWorld_SetMaximumLinearSpeed(tbWorldId worldId, float maximumLinearSpeed);
+TB_API float tbWorld_GetMaximumLinearSpeed(tbWorldId worldId);
 
 /// Change methods between steps (the benchmark and verification tools use these).
 TB_API bool tbWorld_SetBroadPhaseMethod(tbWorldId worldId, tbBroadPhaseMethod method);
@@ -171,6 +181,15 @@ TB_API float tbBody_GetRotationalInertia(tbBodyId bodyId);
 TB_API tbVec2 tbBody_GetLocalCenterOfMass(tbBodyId bodyId);
 TB_API tbVec2 tbBody_GetWorldCenterOfMass(tbBodyId bodyId);
 TB_API tbMassData tbBody_GetMassData(tbBodyId bodyId);
+/// Override the mass from the shapes (mass and inertia ≥ 0, centre local); a later shape change,
+/// tbBody_ApplyMassFromShapes or tbShape_SetDensity with updateBodyMass puts the shapes' back.
+/// A mass below FLT_MIN counts as none (the body acts as 1 kg at its origin). Ignored for static
+/// and kinematic bodies.
+TB_API bool tbBody_SetMassData(tbBodyId bodyId, tbMassData massData);
+TB_API void tbBody_ApplyMassFromShapes(tbBodyId bodyId);
+/// Contact or hit events for every shape of the body (tbShape_EnableContactEvents, ...).
+TB_API void tbBody_EnableContactEvents(tbBodyId bodyId, bool flag);
+TB_API void tbBody_EnableHitEvents(tbBodyId bodyId, bool flag);
 
 TB_API bool tbBody_SetLinearDamping(tbBodyId bodyId, float linearDamping);
 TB_API float tbBody_GetLinearDamping(tbBodyId bodyId);
@@ -187,6 +206,8 @@ TB_API void tbBody_SetFixedRotation(tbBodyId bodyId, bool flag);
 TB_API void tbBody_SetUserData(tbBodyId bodyId, void* userData);
 TB_API void* tbBody_GetUserData(tbBodyId bodyId);
 TB_API const char* tbBody_GetName(tbBodyId bodyId);
+/// The name is not copied: it must outlive the body (as tbBodyDef.name).
+TB_API void tbBody_SetName(tbBodyId bodyId, const char* name);
 TB_API tbWorldId tbBody_GetWorld(tbBodyId bodyId);
 TB_API int tbBody_GetShapeCount(tbBodyId bodyId);
 /// Fill shapeArray with up to capacity shape ids; returns the number written.
@@ -209,6 +230,25 @@ TB_API bool tbShape_IsValid(tbShapeId shapeId);
 TB_API tbShapeType tbShape_GetType(tbShapeId shapeId);
 TB_API tbBodyId tbShape_GetBody(tbShapeId shapeId);
 TB_API tbGeometry tbShape_GetGeometry(tbShapeId shapeId);
+/// The geometry of one kind (an error and zeros for a shape of another kind).
+TB_API tbCircle tbShape_GetCircle(tbShapeId shapeId);
+TB_API tbCapsule tbShape_GetCapsule(tbShapeId shapeId);
+TB_API tbSegment tbShape_GetSegment(tbShapeId shapeId);
+TB_API tbPolygon tbShape_GetPolygon(tbShapeId shapeId);
+/// Replace the geometry (the kind may change): checked as at creation; the shape's contacts are
+/// destroyed and found again next step, its body's mass recomputed and the body woken. Refused
+/// during the step and in query callbacks.
+TB_API bool tbShape_SetCircle(tbShapeId shapeId, const tbCircle* circle);
+TB_API bool tbShape_SetCapsule(tbShapeId shapeId, const tbCapsule* capsule);
+TB_API bool tbShape_SetSegment(tbShapeId shapeId, const tbSegment* segment);
+TB_API bool tbShape_SetPolygon(tbShapeId shapeId, const tbPolygon* polygon);
+/// Events at run time (the shape def's enable*Events): existing contacts follow at once.
+TB_API void tbShape_EnableContactEvents(tbShapeId shapeId, bool flag);
+TB_API bool tbShape_AreContactEventsEnabled(tbShapeId shapeId);
+TB_API void tbShape_EnableHitEvents(tbShapeId shapeId, bool flag);
+TB_API bool tbShape_AreHitEventsEnabled(tbShapeId shapeId);
+TB_API void tbShape_EnableSensorEvents(tbShapeId shapeId, bool flag);
+TB_API bool tbShape_AreSensorEventsEnabled(tbShapeId shapeId);
 TB_API bool tbShape_IsSensor(tbShapeId shapeId);
 TB_API bool tbShape_SetDensity(tbShapeId shapeId, float density, bool updateBodyMass);
 TB_API float tbShape_GetDensity(tbShapeId shapeId);
