@@ -127,7 +127,7 @@ static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
 
 void tbWakeBody(tbWorld* world, tbBody* body)
 {
-	if (body->type == tb_staticBody || body->awakeIndex != TB_NULL_INDEX)
+	if (body->type == tb_staticBody || body->awakeIndex != TB_NULL_INDEX || body->isDisabled)
 	{
 		body->sleepTime = 0.0f;
 		return;
@@ -488,6 +488,48 @@ bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
 	}
 	tbUpdateBodyMass(world, body);
 	return true;
+}
+
+void tbBody_Disable(tbBodyId bodyId)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_Disable", &world, true);
+	if (body == NULL || body->isDisabled || tbStructureLocked(world, "tbBody_Disable", "disable bodies"))
+	{
+		return;
+	}
+	tbDestroyBodyContacts(world, body, true);
+	if (body->awakeIndex != TB_NULL_INDEX)
+	{
+		tbRemoveFromAwakeSet(world, body);
+	}
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		tbDestroyShapeProxy(world, world->shapes + id);
+	}
+	body->isDisabled = true;
+}
+
+void tbBody_Enable(tbBodyId bodyId)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_Enable", &world, true);
+	if (body == NULL || body->isDisabled == false || tbStructureLocked(world, "tbBody_Enable", "enable bodies"))
+	{
+		return;
+	}
+	body->isDisabled = false;
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		tbCreateShapeProxy(world, world->shapes + id, body);
+	}
+	tbWakeBody(world, body);
+}
+
+bool tbBody_IsEnabled(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_IsEnabled", NULL, false);
+	return body != NULL && body->isDisabled == false;
 }
 
 tbVec2 tbBody_GetPosition(tbBodyId bodyId)

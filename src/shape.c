@@ -97,6 +97,12 @@ bool tbShouldShapesCollide(tbFilter a, tbFilter b)
 void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body)
 {
 	shape->aabb = tbComputeShapeAABBInternal(shape, body->transform);
+	if (body->isDisabled)
+	{
+		shape->fatAABB = shape->aabb;
+		shape->proxyKey = TB_NULL_INDEX; // a disabled body's shapes are not in the broad phase
+		return;
+	}
 	// Static shapes never move: no margin, so static boxes stay tight. A new movable shape gets the
 	// largest margin (its body's extent may not include it yet); the first finalize that finds the
 	// box too small re-makes it from the body's motion.
@@ -165,7 +171,7 @@ void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
 		tbShape* shape = world->shapes + id;
 		shape->aabb = tbComputeShapeAABBInternal(shape, body->transform);
 		tbAABB sweep = tbSweepBox(shape->aabb, d, pad);
-		if (forceMove || tbAABB_Contains(shape->fatAABB, sweep) == false)
+		if (shape->proxyKey != TB_NULL_INDEX && (forceMove || tbAABB_Contains(shape->fatAABB, sweep) == false))
 		{
 			shape->fatAABB = tbAABB_Fatten(sweep, margin);
 			tbBroadPhase_MoveProxy(&world->broadPhase, shape->proxyKey, shape->fatAABB);

@@ -65,6 +65,7 @@ typedef struct tbBody
 	bool isBullet;
 	bool isFast; ///< moved far this step: swept by continuous collision
 	bool isMarked;
+	bool isDisabled; ///< out of the simulation (tbBody_Disable): no proxies, no contacts, never awake
 } tbBody;
 
 // ---------------------------------------------------------------------------------------------

@@ -49,3 +49,57 @@ Test(body, mass_data_by_hand_and_from_shapes, .init = SetupErrors, .fini = Teard
 	cr_assert_str_eq(tbBody_GetName(body), "crate");
 	tbDestroyWorld(world);
 }
+
+static bool CountShapes(tbShapeId shapeId, void* context)
+{
+	(void)shapeId;
+	*(int*)context += 1;
+	return true;
+}
+
+// A disabled body leaves the simulation: frozen where it was (a box held 2 m above the ground does
+// not fall), invisible to ray casts and overlap queries, woken by nothing; enabled again it falls
+// and comes to rest on the ground at its half height, 0.5 m (within the soft contact's 0.01 m).
+Test(body, disabled_body_is_out_of_the_simulation)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	groundDef.position = tbMakeVec2(0.0f, -1.0f);
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon groundBox = tbMakeBox(20.0f, 1.0f);
+	tbCreatePolygonShape(ground, &shapeDef, &groundBox);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = tbMakeVec2(0.0f, 2.5f);
+	tbBodyId box = tbCreateBody(world, &bodyDef);
+	tbPolygon square = tbMakeSquare(0.5f);
+	tbCreatePolygonShape(box, &shapeDef, &square);
+
+	tbBody_Disable(box);
+	cr_assert(tbBody_IsEnabled(box) == false);
+	for (int step = 0; step < 60; ++step)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_assert_eq(tbBody_GetPosition(box).y, 2.5f, "a disabled body does not move");
+	tbRayResult ray = tbWorld_CastRayClosest(world, tbMakeVec2(0.0f, 5.0f), tbMakeVec2(0.0f, -10.0f), tbDefaultQueryFilter());
+	cr_assert(ray.hit && fabsf(ray.point.y) < 1e-5f, "the ray passes the disabled box and hits the ground at y %g",
+			  (double)ray.point.y);
+	int found = 0;
+	tbAABB around = {{-1.0f, 1.5f}, {1.0f, 3.5f}};
+	cr_assert(tbWorld_OverlapAABB(world, around, tbDefaultQueryFilter(), CountShapes, &found));
+	cr_assert_eq(found, 0);
+	tbBody_SetAwake(box, true);
+	cr_assert(tbBody_IsAwake(box) == false, "nothing wakes a disabled body");
+
+	tbBody_Enable(box);
+	cr_assert(tbBody_IsEnabled(box) && tbBody_IsAwake(box));
+	for (int step = 0; step < 120; ++step)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_assert(fabsf(tbBody_GetPosition(box).y - 0.5f) < 0.01f, "rests at y %g", (double)tbBody_GetPosition(box).y);
+	tbDestroyWorld(world);
+}

@@ -208,6 +208,11 @@ TB_API void* tbBody_GetUserData(tbBodyId bodyId);
 TB_API const char* tbBody_GetName(tbBodyId bodyId);
 /// The name is not copied: it must outlive the body (as tbBodyDef.name).
 TB_API void tbBody_SetName(tbBodyId bodyId, const char* name);
+/// Take the body out of the simulation (no contacts, not in queries, never awake; its joints hold
+/// it as if it were static) and put it back; refused during the step and in query callbacks.
+TB_API void tbBody_Disable(tbBodyId bodyId);
+TB_API void tbBody_Enable(tbBodyId bodyId);
+TB_API bool tbBody_IsEnabled(tbBodyId bodyId);
 TB_API tbWorldId tbBody_GetWorld(tbBodyId bodyId);
 TB_API int tbBody_GetShapeCount(tbBodyId bodyId);
 /// Fill shapeArray with up to capacity shape ids; returns the number written.
