@@ -100,6 +100,14 @@ TB_API bool tbValidateHull(const tbHull* hull);
 /// Polygon from a valid hull with a rounding radius ≥ 0.
 TB_API tbPolygon tbMakePolygon(const tbHull* hull, float radius);
 
+/// Cut a simple polygon (3 to TB_MAX_DECOMPOSE_POINTS points, either winding, no edge crossing
+/// another, no duplicate points, non-zero area) into convex pieces of at most
+/// TB_MAX_POLYGON_VERTICES vertices that cover it exactly: ear clipping, then Hertel–Mehlhorn
+/// merging (at most 4× the fewest pieces possible). Writes at most `capacity` pieces (count − 2
+/// always suffices) and returns how many; 0 and an error naming the problem for bad input, or when
+/// capacity is too small. Make them shapes of one body to get a concave body.
+TB_API int tbDecomposePolygon(const tbVec2* points, int count, tbPolygon* pieces, int capacity);
+
 /// Polygon from a hull, offset by a local transform.
 TB_API tbPolygon tbMakeOffsetPolygon(const tbHull* hull, tbVec2 position, tbRot rotation);
 

@@ -85,6 +85,10 @@
 /// Largest number of worlds that may exist at once.
 #define TB_MAX_WORLDS 128
 
+/// Most points tbDecomposePolygon takes: 1,024 (its checks and ear clipping cost O(n²); a longer
+/// outline is terrain, for which segments or chains suit better).
+#define TB_MAX_DECOMPOSE_POINTS 1024
+
 /// A large length, 100 km: used as "infinity" for AABBs and ray lengths.
 #define TB_HUGE 100000.0f
 
