@@ -237,6 +237,7 @@ void tbDestroyBody(tbBodyId bodyId)
 		return;
 	}
 	tbDestroyBodyJoints(world, body);
+	tbDestroyBodyChains(world, bodyId.index1 - 1);
 	tbDestroyBodyContacts(world, body, true);
 	int shapeId = body->headShapeId;
 	while (shapeId != TB_NULL_INDEX)

@@ -211,6 +211,11 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 /// Should a broad-phase pair become a contact? Same body, no dynamic body (unless one shape is a
 /// sensor: a kinematic door or lift passing a static or kinematic sensor is reported), filtered
 /// out, or an existing contact: no. Static proxies never pair with each other.
+static bool tbIsSegmentKind(tbShapeType type)
+{
+	return type == tb_segmentShape || type == tb_chainSegmentShape;
+}
+
 static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeIdB)
 {
 	const tbShape* a = world->shapes + shapeIdA;
@@ -218,6 +223,10 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	if (a->bodyId == b->bodyId)
 	{
 		return false;
+	}
+	if (tbIsSegmentKind(a->geometry.type) && tbIsSegmentKind(b->geometry.type))
+	{
+		return false; // no area on either side: never a contact
 	}
 	const tbBody* bodyA = world->bodies + a->bodyId;
 	const tbBody* bodyB = world->bodies + b->bodyId;

@@ -146,6 +146,37 @@ static bool tbAllowedByPreContinuous(tbWorld* world, const tbShape* other, const
 								   world->preSolveContext);
 }
 
+/// A point inside a shape (its centroid), in its body's frame.
+static tbVec2 tbShapeCentroid(const tbGeometry* g)
+{
+	switch (g->type)
+	{
+		case tb_circleShape:
+			return g->circle.center;
+		case tb_capsuleShape:
+			return tbLerp(g->capsule.center1, g->capsule.center2, 0.5f);
+		case tb_polygonShape:
+			return g->polygon.centroid;
+		default:
+			return tbLerp(g->segment.point1, g->segment.point2, 0.5f);
+	}
+}
+
+/// A chain segment is one-sided: a fast shape whose centroid starts behind it (on its solid side)
+/// passes through, as the narrow phase lets it.
+static bool tbStartsBehindChain(const tbContinuousContext* c, const tbShape* other, const tbBody* otherBody)
+{
+	if (other->geometry.type != tb_chainSegmentShape)
+	{
+		return false;
+	}
+	tbTransform start = tbGetSweepTransform(&c->sweep, 0.0f);
+	tbVec2 centroid = tbTransformPoint(start, tbShapeCentroid(&c->fastShape->geometry));
+	tbVec2 local = tbInvTransformPoint(otherBody->transform, centroid);
+	const tbSegment* segment = &other->geometry.chainSegment.segment;
+	return tbCross(tbSub(segment->point2, segment->point1), tbSub(local, segment->point1)) > 0.0f;
+}
+
 /// Broad-phase callback: time of impact of the fast shape against one candidate shape.
 static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* context)
 {
@@ -169,6 +200,10 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 							   world->customFilterContext) == false)
 	{
 		return true; // the custom filter keeps them apart: no contact, no sweep either
+	}
+	if (tbStartsBehindChain(c, other, otherBody))
+	{
+		return true;
 	}
 	tbSweep otherSweep = tbMakeBodySweep(otherBody);
 	if (otherBody->awakeIndex == TB_NULL_INDEX)

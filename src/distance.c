@@ -172,6 +172,11 @@ tbShapeProxy tbMakeShapeProxy(const tbGeometry* shape)
 			tbVec2 points[2] = {shape->segment.point1, shape->segment.point2};
 			return tbMakeProxy(points, 2, 0.0f);
 		}
+		case tb_chainSegmentShape:
+		{
+			tbVec2 points[2] = {shape->chainSegment.segment.point1, shape->chainSegment.segment.point2};
+			return tbMakeProxy(points, 2, 0.0f);
+		}
 		case tb_polygonShape:
 			return tbMakeProxy(shape->polygon.vertices, shape->polygon.count, shape->polygon.radius);
 		default:

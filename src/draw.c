@@ -48,6 +48,13 @@ static void tbDrawShape(const tbDebugDraw* draw, const tbShape* shape, tbTransfo
 								  draw->context);
 			}
 			break;
+		case tb_chainSegmentShape:
+			if (draw->DrawSegment != NULL)
+			{
+				draw->DrawSegment(tbTransformPoint(xf, g->chainSegment.segment.point1),
+								  tbTransformPoint(xf, g->chainSegment.segment.point2), color, draw->context);
+			}
+			break;
 		case tb_polygonShape:
 			if (draw->DrawSolidPolygon != NULL)
 			{

@@ -38,6 +38,8 @@ static float tbProjectedWidth(const tbGeometry* g, tbVec2 line)
 			return tbAbsFloat(tbDot(tbSub(g->capsule.center2, g->capsule.center1), line)) + 2.0f * g->capsule.radius;
 		case tb_segmentShape:
 			return tbAbsFloat(tbDot(tbSub(g->segment.point2, g->segment.point1), line));
+		case tb_chainSegmentShape:
+			return tbAbsFloat(tbDot(tbSub(g->chainSegment.segment.point2, g->chainSegment.segment.point1), line));
 		case tb_polygonShape:
 		default:
 		{
@@ -64,6 +66,8 @@ static tbVec2 tbShapeInnerPoint(const tbGeometry* g)
 			return tbLerp(g->capsule.center1, g->capsule.center2, 0.5f);
 		case tb_segmentShape:
 			return tbLerp(g->segment.point1, g->segment.point2, 0.5f);
+		case tb_chainSegmentShape:
+			return tbLerp(g->chainSegment.segment.point1, g->chainSegment.segment.point2, 0.5f);
 		case tb_polygonShape:
 		default:
 			return g->polygon.centroid;

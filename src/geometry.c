@@ -380,6 +380,7 @@ tbMassData tbComputeShapeMass(const tbGeometry* shape, float density)
 		case tb_polygonShape:
 			return tbComputePolygonMass(&shape->polygon, density);
 		case tb_segmentShape:
+		case tb_chainSegmentShape:
 		default:
 		{
 			// A segment has no area, so no mass; its centre is its midpoint.
@@ -387,6 +388,10 @@ tbMassData tbComputeShapeMass(const tbGeometry* shape, float density)
 			if (shape->type == tb_segmentShape)
 			{
 				data.center = tbLerp(shape->segment.point1, shape->segment.point2, 0.5f);
+			}
+			else if (shape->type == tb_chainSegmentShape)
+			{
+				data.center = tbLerp(shape->chainSegment.segment.point1, shape->chainSegment.segment.point2, 0.5f);
 			}
 			return data;
 		}
@@ -449,6 +454,8 @@ tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbTransform transform)
 			return tbComputeCapsuleAABB(&shape->capsule, transform);
 		case tb_segmentShape:
 			return tbComputeSegmentAABB(&shape->segment, transform);
+		case tb_chainSegmentShape:
+			return tbComputeSegmentAABB(&shape->chainSegment.segment, transform);
 		case tb_polygonShape:
 			return tbComputePolygonAABB(&shape->polygon, transform);
 		default:
@@ -532,6 +539,7 @@ bool tbPointInShape(tbVec2 point, const tbGeometry* shape)
 		case tb_polygonShape:
 			return tbPointInPolygon(point, &shape->polygon);
 		case tb_segmentShape:
+		case tb_chainSegmentShape:
 		default:
 			return false;
 	}
@@ -813,6 +821,8 @@ tbCastOutput tbRayCastShape(const tbRayCastInput* input, const tbGeometry* shape
 			return tbRayCastCapsule(input, &shape->capsule);
 		case tb_segmentShape:
 			return tbRayCastSegment(input, &shape->segment, false);
+		case tb_chainSegmentShape:
+			return tbRayCastSegment(input, &shape->chainSegment.segment, true); // one-sided, as it collides
 		case tb_polygonShape:
 			return tbRayCastPolygon(input, &shape->polygon);
 		default:

@@ -757,6 +757,169 @@ static tbManifold tbCollideSegmentAndPolygonMargin(const tbSegment* segmentA, tb
 }
 
 // ---------------------------------------------------------------------------------------------
+// Chain segments: one-sided, smooth across joints
+//
+// A shape sliding along a chain must not feel the joints. Collided alone, the segment ahead
+// offers its end point as a corner, and a box whose bottom sags by the contact slop meets that
+// corner with a normal tilted back against its motion: a bump. The ghost vertices (the chain's
+// neighbouring points) say what each joint is. At a straight or concave joint no normal other
+// than the face's belongs to the segment: the neighbour's face covers the rest, so a tilted
+// normal is replaced by the face normal and the points are clipped to the segment's span. At a
+// convex joint (the surface turns away from the solid side, a hill top) the corner is real and
+// its normals are shared out: this segment takes those up to the bisector of its normal and the
+// neighbour's, the neighbour the rest, so the corner is reported once. The segment is one-sided:
+// a shape whose centre is behind it (on the solid side) gets nothing, so a shape can pass up
+// through a floor. Same idea as Box2D's ghost vertices (Catto, "Ghost vertices", 2010 blog note).
+
+/// A chain segment's frame in A's frame: unit direction e, normal n = rightPerp(e), and for each
+/// end whether the joint is convex and the bisector normal there.
+typedef struct tbChainFrame
+{
+	tbVec2 v1, v2, e, n;
+	bool convex1, convex2;
+	float split1, split2; ///< e·(bisector) at each end: the last normal this segment owns
+} tbChainFrame;
+
+/// Turn (sine of the angle) above which a joint counts as convex: about 0.6°.
+#define TB_CHAIN_CONVEX_SINE 0.01f
+
+static tbChainFrame tbMakeChainFrame(const tbChainSegment* chain)
+{
+	tbChainFrame f;
+	f.v1 = chain->segment.point1;
+	f.v2 = chain->segment.point2;
+	f.e = tbNormalize(tbSub(f.v2, f.v1));
+	f.n = tbRightPerp(f.e);
+	tbVec2 e0 = tbNormalize(tbSub(f.v1, chain->ghost1));
+	tbVec2 e2 = tbNormalize(tbSub(chain->ghost2, f.v2));
+	// Convex where the path turns left, towards the solid side: cross(e_before, e_after) > 0.
+	f.convex1 = tbCross(e0, f.e) > TB_CHAIN_CONVEX_SINE;
+	f.convex2 = tbCross(f.e, e2) > TB_CHAIN_CONVEX_SINE;
+	f.split1 = tbDot(tbNormalize(tbAdd(tbRightPerp(e0), f.n)), f.e);
+	f.split2 = tbDot(tbNormalize(tbAdd(f.n, tbRightPerp(e2))), f.e);
+	return f;
+}
+
+typedef enum tbChainRegion
+{
+	tb_chainFace,	  ///< the normal belongs to this segment as it is
+	tb_chainFlatten,  ///< a tilted normal at a straight or concave joint: use the face normal
+	tb_chainNeighbour ///< past the bisector of a convex joint: the neighbour reports it
+} tbChainRegion;
+
+static tbChainRegion tbClassifyChainNormal(const tbChainFrame* f, tbVec2 normal)
+{
+	float along = tbDot(normal, f->e);
+	if (tbDot(normal, f->n) <= 0.0f)
+	{
+		return tb_chainFlatten; // deep: the two-sided test chose the back face
+	}
+	if (tbAbsFloat(along) <= 1e-4f)
+	{
+		return tb_chainFace;
+	}
+	bool atEnd = along > 0.0f;
+	if ((atEnd ? f->convex2 : f->convex1) == false)
+	{
+		return tb_chainFlatten;
+	}
+	bool beyond = atEnd ? along > f->split2 : along < f->split1;
+	return beyond ? tb_chainNeighbour : tb_chainFace;
+}
+
+/// Face contact of the segment (reference) with polygon B (incident), points clipped to the span.
+static tbManifold tbChainFaceManifold(const tbPolygon* segment, const tbPolygon* localB, float keep)
+{
+	tbManifold m = tb_emptyManifold;
+	int incEdge = tbFindIncidentEdge(localB, segment->normals[0]);
+	if (tbClipIncidentEdge(&m, segment, localB, 0, incEdge, keep) == false)
+	{
+		return tb_emptyManifold;
+	}
+	return m;
+}
+
+static tbManifold tbChainAndPolygonLocal(const tbChainSegment* chain, const tbPolygon* localB, float keep)
+{
+	tbChainFrame f = tbMakeChainFrame(chain);
+	if (tbDot(tbSub(localB->centroid, f.v1), f.n) < 0.0f)
+	{
+		return tb_emptyManifold;
+	}
+	tbPolygon segment = tbMakeSegmentPolygon(f.v1, f.v2, 0.0f);
+	tbManifold m = tbCollidePolygonsLocal(&segment, localB, keep);
+	if (m.pointCount == 0)
+	{
+		return m;
+	}
+	switch (tbClassifyChainNormal(&f, m.normal))
+	{
+		case tb_chainFace:
+			return m;
+		case tb_chainFlatten:
+			return tbChainFaceManifold(&segment, localB, keep);
+		default:
+			return tb_emptyManifold;
+	}
+}
+
+static tbManifold tbChainAndPointLocal(const tbChainSegment* chain, tbVec2 c, float radius, float keep)
+{
+	tbChainFrame f = tbMakeChainFrame(chain);
+	if (tbDot(tbSub(c, f.v1), f.n) < 0.0f)
+	{
+		return tb_emptyManifold;
+	}
+	float t = tbDot(tbSub(c, f.v1), f.e);
+	float length = tbDot(tbSub(f.v2, f.v1), f.e);
+	if (0.0f <= t && t <= length)
+	{
+		return tbFacePointManifold(tbMulAdd(f.v1, t, f.e), 0.0f, c, radius, f.n, TB_MAKE_FEATURE_ID(0, 0), keep);
+	}
+	tbVec2 corner = t < 0.0f ? f.v1 : f.v2;
+	tbVec2 normal = tbNormalize(tbSub(c, corner));
+	if (tbClassifyChainNormal(&f, normal) != tb_chainFace)
+	{
+		return tb_emptyManifold; // past a straight or concave joint, or a convex one's bisector
+	}
+	uint16_t id = TB_MAKE_FEATURE_ID(TB_FEATURE_VERTEX | (t < 0.0f ? 0 : 1), 0);
+	return tbPointManifold(corner, 0.0f, c, radius, f.n, id, keep);
+}
+
+static tbManifold tbCollideChainSegmentAndCircleMargin(const tbChainSegment* segmentA, tbTransform xfA,
+													   const tbCircle* circleB, tbTransform xfB, float keep)
+{
+	tbVec2 c = tbTransformPoint(tbInvMulTransforms(xfA, xfB), circleB->center);
+	return tbManifoldToWorld(tbChainAndPointLocal(segmentA, c, circleB->radius, keep), xfA);
+}
+
+static tbManifold tbCollideChainSegmentAndCapsuleMargin(const tbChainSegment* segmentA, tbTransform xfA,
+														const tbCapsule* capsuleB, tbTransform xfB, float keep)
+{
+	tbTransform xf = tbInvMulTransforms(xfA, xfB);
+	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
+	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
+	tbManifold m;
+	if (tbIsDegenerateSegment(b1, b2))
+	{
+		m = tbChainAndPointLocal(segmentA, tbLerp(b1, b2, 0.5f), capsuleB->radius, keep);
+	}
+	else
+	{
+		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
+		m = tbChainAndPolygonLocal(segmentA, &polygonB, keep);
+	}
+	return tbManifoldToWorld(m, xfA);
+}
+
+static tbManifold tbCollideChainSegmentAndPolygonMargin(const tbChainSegment* segmentA, tbTransform xfA,
+														const tbPolygon* polygonB, tbTransform xfB, float keep)
+{
+	tbPolygon localB = tbPolygonInFrame(polygonB, tbInvMulTransforms(xfA, xfB));
+	return tbManifoldToWorld(tbChainAndPolygonLocal(segmentA, &localB, keep), xfA);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Dispatch
 
 // Role of a shape kind as the first argument of a pair routine: the routines take A as the
@@ -773,6 +936,8 @@ static int tbDispatchRank(tbShapeType type)
 			return 2;
 		case tb_segmentShape:
 			return 3;
+		case tb_chainSegmentShape:
+			return 4;
 		default:
 			return -1;
 	}
@@ -826,6 +991,20 @@ static tbManifold tbCollideOrdered(const tbGeometry* a, tbTransform xfA, const t
 				return tbCollideSegmentAndPolygonMargin(&a->segment, xfA, &b->polygon, xfB, keep);
 			}
 			return tb_emptyManifold; // two segments have no area: no contact
+		case tb_chainSegmentShape:
+			if (b->type == tb_circleShape)
+			{
+				return tbCollideChainSegmentAndCircleMargin(&a->chainSegment, xfA, &b->circle, xfB, keep);
+			}
+			if (b->type == tb_capsuleShape)
+			{
+				return tbCollideChainSegmentAndCapsuleMargin(&a->chainSegment, xfA, &b->capsule, xfB, keep);
+			}
+			if (b->type == tb_polygonShape)
+			{
+				return tbCollideChainSegmentAndPolygonMargin(&a->chainSegment, xfA, &b->polygon, xfB, keep);
+			}
+			return tb_emptyManifold; // segments against segments: no area, no contact
 		default:
 			return tb_emptyManifold;
 	}
@@ -933,4 +1112,22 @@ tbManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, tbTransform xfA
 									  tbTransform xfB)
 {
 	return tbCollideSegmentAndPolygonMargin(segmentA, xfA, polygonB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollideChainSegmentAndCircle(const tbChainSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
+										  tbTransform xfB)
+{
+	return tbCollideChainSegmentAndCircleMargin(segmentA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollideChainSegmentAndCapsule(const tbChainSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
+										   tbTransform xfB)
+{
+	return tbCollideChainSegmentAndCapsuleMargin(segmentA, xfA, capsuleB, xfB, TB_KEEP_DISTANCE);
+}
+
+tbManifold tbCollideChainSegmentAndPolygon(const tbChainSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
+										   tbTransform xfB)
+{
+	return tbCollideChainSegmentAndPolygonMargin(segmentA, xfA, polygonB, xfB, TB_KEEP_DISTANCE);
 }

@@ -299,6 +299,9 @@ bool tbCheckGeometry(const char* f, const tbGeometry* g)
 			return true;
 		case tb_polygonShape:
 			return tbCheckPolygon(f, &g->polygon);
+		case tb_chainSegmentShape:
+			tbReportError(f, "geometry->type is a chain segment; chain segments are made by tbCreateChain");
+			return false;
 		default:
 			tbReportError(f, "geometry->type is %d; use a tbShapeType value", (int)g->type);
 			return false;
@@ -341,8 +344,14 @@ static tbShapeId tbCreateShapeInternal(tbBodyId bodyId, const tbShapeDef* def, c
 	{
 		return TB_NULL_SHAPE_ID;
 	}
+	int id = tbAddShape(world, bodyId.index1 - 1, def, geometry);
+	return tbMakeShapeId(world, id);
+}
+
+int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeometry* geometry)
+{
 	int id = tbAllocShapeSlot(world);
-	body = world->bodies + (bodyId.index1 - 1); // the body array did not move, but be explicit
+	tbBody* body = world->bodies + bodyIndex;
 	tbShape* shape = world->shapes + id;
 	uint16_t generation = (uint16_t)(shape->generation + 1);
 	memset(shape, 0, sizeof(tbShape));
@@ -361,7 +370,7 @@ static tbShapeId tbCreateShapeInternal(tbBodyId bodyId, const tbShapeDef* def, c
 	shape->enableHitEvents = def->enableHitEvents;
 	shape->enableCustomFiltering = def->enableCustomFiltering;
 	shape->enablePreSolveEvents = def->enablePreSolveEvents;
-	shape->bodyId = bodyId.index1 - 1;
+	shape->bodyId = bodyIndex;
 	shape->nextShapeId = body->headShapeId;
 	shape->proxyKey = TB_NULL_INDEX;
 	body->headShapeId = id;
@@ -372,7 +381,7 @@ static tbShapeId tbCreateShapeInternal(tbBodyId bodyId, const tbShapeDef* def, c
 	{
 		tbUpdateBodyMass(world, body);
 	}
-	return tbMakeShapeId(world, id);
+	return id;
 }
 
 tbShapeId tbCreateShape(tbBodyId bodyId, const tbShapeDef* def, const tbGeometry* geometry)
@@ -467,15 +476,20 @@ static void tbDestroyShapeContacts(tbWorld* world, const tbBody* body, int id)
 	}
 }
 
-void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
+/// Is this shape a segment of a chain (destroyed and changed only with its chain)?
+static bool tbIsChainOwned(const tbShape* shape, const char* f)
 {
-	tbWorld* world;
-	tbShape* shape = tbGetShapeChecked(shapeId, "tbDestroyShape", &world, true);
-	if (shape == NULL || tbStructureLocked(world, "tbDestroyShape", "destroy shapes"))
+	if (shape->geometry.type == tb_chainSegmentShape && shape->geometry.chainSegment.chainId >= 0)
 	{
-		return;
+		tbReportError(f, "the shape is a segment of a chain; destroy or change the chain instead (tbDestroyChain)");
+		return true;
 	}
-	int id = shapeId.index1 - 1;
+	return false;
+}
+
+void tbRemoveShape(tbWorld* world, int id, bool updateBodyMass)
+{
+	tbShape* shape = world->shapes + id;
 	tbBody* body = world->bodies + shape->bodyId;
 	tbDestroyShapeContacts(world, body, id);
 	tbDestroyShapeProxy(world, shape);
@@ -488,6 +502,18 @@ void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
 	{
 		tbUpdateBodyMass(world, body);
 	}
+}
+
+void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbDestroyShape", &world, true);
+	if (shape == NULL || tbIsChainOwned(shape, "tbDestroyShape") ||
+		tbStructureLocked(world, "tbDestroyShape", "destroy shapes"))
+	{
+		return;
+	}
+	tbRemoveShape(world, shapeId.index1 - 1, updateBodyMass);
 }
 
 tbShapeType tbShape_GetType(tbShapeId shapeId)
@@ -551,6 +577,13 @@ tbSegment tbShape_GetSegment(tbShapeId shapeId)
 	return g != NULL ? g->segment : none;
 }
 
+tbChainSegment tbShape_GetChainSegment(tbShapeId shapeId)
+{
+	const tbGeometry* g = tbGetGeometryOfType(shapeId, tb_chainSegmentShape, "tbShape_GetChainSegment");
+	tbChainSegment none = {{0.0f, 0.0f}, {{0.0f, 0.0f}, {0.0f, 0.0f}}, {0.0f, 0.0f}, -1};
+	return g != NULL ? g->chainSegment : none;
+}
+
 tbPolygon tbShape_GetPolygon(tbShapeId shapeId)
 {
 	const tbGeometry* g = tbGetGeometryOfType(shapeId, tb_polygonShape, "tbShape_GetPolygon");
@@ -566,7 +599,7 @@ static bool tbSetGeometry(tbShapeId shapeId, const tbGeometry* geometry, const c
 {
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, true);
-	if (shape == NULL || tbCheckGeometry(f, geometry) == false ||
+	if (shape == NULL || tbIsChainOwned(shape, f) || tbCheckGeometry(f, geometry) == false ||
 		tbCheckShapeMass(f, geometry, shape->density) == false || tbStructureLocked(world, f, "change shapes"))
 	{
 		return false;

@@ -275,6 +275,7 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->pendingEndEvents, w->pendingEndCapacity);
 	TB_ARRAY_FREE(w->pendingSensorEndEvents, w->pendingSensorEndCapacity);
 	tbFreeJoints(w);
+	tbFreeChains(w);
 }
 
 void tbDestroyWorld(tbWorldId worldId)

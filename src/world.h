@@ -213,6 +213,14 @@ typedef struct tbWorld
 	int* contactFree;
 	int contactFreeCount, contactFreeCapacity;
 
+	// Chains (chain.c): a pool; each chain owns its segment shapes' ids and its materials.
+	struct tbChain* chains;
+	int chainCapacity;
+	int chainCount;
+	int chainHighWater;
+	int* chainFree;
+	int chainFreeCount, chainFreeCapacity;
+
 	// Joints (joint.c): a pool like the contacts; the joints the solver sees this step (joint-id
 	// order); joint events of the last step; a stack for waking joined bodies.
 	struct tbJoint* joints;
@@ -372,6 +380,18 @@ void tbDestroyBodyJoints(tbWorld* world, tbBody* body);
 void tbFreeJoints(tbWorld* world);
 /// Draw every joint (draw.c).
 void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw);
+
+// shape.c: shapes added and removed without the public checks (chains check their own input).
+/// Add a shape to a body (geometry and def already checked); returns its index.
+int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeometry* geometry);
+/// Remove a shape: its contacts, proxy and slot.
+void tbRemoveShape(tbWorld* world, int shapeIndex, bool updateBodyMass);
+
+// chain.c: what bodies and the world need of chains.
+/// Destroy every chain of a body (tbDestroyBody frees the segment shapes with the body's shapes).
+void tbDestroyBodyChains(tbWorld* world, int bodyIndex);
+/// Free the chain pool (world destruction).
+void tbFreeChains(tbWorld* world);
 
 // Stages of the step, in order (world.c drives them; each lives in the file of its concept).
 bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* world); // contact.c: broad-phase pair filter

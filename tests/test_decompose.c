@@ -166,7 +166,10 @@ static int DecomposeAndCheck(const tbVec2* outline, int n)
 		for (int j = i + 1; j < count; ++j)
 		{
 			double overlap = OverlapArea(s_pieces + i, s_pieces + j);
-			cr_assert(overlap <= 1e-6 * area, "pieces %d and %d overlap by %.3g", i, j, overlap);
+			if (overlap > 1e-6 * area) // (asserting only on failure keeps 10⁵ pairs fast)
+			{
+				cr_assert_fail("pieces %d and %d overlap by %.3g", i, j, overlap);
+			}
 		}
 	}
 	int reflex = ReflexCount(outline, n);
@@ -395,8 +398,10 @@ Test(decompose, random_radial_outlines)
 		{
 			for (int j = i + 1; j < count; ++j)
 			{
-				cr_assert(OverlapArea(s_pieces + i, s_pieces + j) <= 1e-6 * area, "%d points: pieces %d, %d overlap", n,
-						  i, j);
+				if (OverlapArea(s_pieces + i, s_pieces + j) > 1e-6 * area)
+				{
+					cr_assert_fail("%d points: pieces %d, %d overlap", n, i, j);
+				}
 			}
 		}
 	}

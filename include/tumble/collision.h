@@ -47,6 +47,18 @@ typedef struct tbSegment
 	tbVec2 point1, point2;
 } tbSegment;
 
+/// One segment of a chain (tbCreateChain): one-sided, solid on the left of point1 → point2 (the
+/// normal is the right perpendicular), with the neighbouring chain points as ghost vertices so
+/// that a shape sliding across the joint between two segments meets no corner.
+/// ghost1 → segment.point1 → segment.point2 → ghost2.
+typedef struct tbChainSegment
+{
+	tbVec2 ghost1;
+	tbSegment segment;
+	tbVec2 ghost2;
+	int chainId; ///< the owning chain's index (internal), or −1
+} tbChainSegment;
+
 /// Convex hull of a point cloud, counter-clockwise, from tbComputeHull.
 typedef struct tbHull
 {
@@ -69,6 +81,7 @@ typedef enum tbShapeType
 	tb_capsuleShape,
 	tb_segmentShape,
 	tb_polygonShape,
+	tb_chainSegmentShape, ///< made by tbCreateChain
 	tb_shapeTypeCount
 } tbShapeType;
 
@@ -83,6 +96,7 @@ typedef struct tbGeometry
 		tbCapsule capsule;
 		tbSegment segment;
 		tbPolygon polygon;
+		tbChainSegment chainSegment;
 	};
 } tbGeometry;
 
@@ -337,6 +351,16 @@ TB_API tbManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, tbTransf
 											 tbTransform xfB);
 TB_API tbManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
 											 tbTransform xfB);
+
+/// Chain segment against a shape: one-sided (nothing when B's centre is behind the segment) and
+/// smooth (normals at a joint to a straight or concave neighbour are the face normal; at a convex
+/// joint, each segment takes the normals up to the bisector of its and its neighbour's normals).
+TB_API tbManifold tbCollideChainSegmentAndCircle(const tbChainSegment* segmentA, tbTransform xfA,
+												 const tbCircle* circleB, tbTransform xfB);
+TB_API tbManifold tbCollideChainSegmentAndCapsule(const tbChainSegment* segmentA, tbTransform xfA,
+												  const tbCapsule* capsuleB, tbTransform xfB);
+TB_API tbManifold tbCollideChainSegmentAndPolygon(const tbChainSegment* segmentA, tbTransform xfA,
+												  const tbPolygon* polygonB, tbTransform xfB);
 
 /// Polygon pair by GJK/EPA: normal and depth from tbShapeSeparation, points by clipping the
 /// incident edge against the reference face chosen along that normal.

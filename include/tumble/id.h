@@ -35,6 +35,14 @@ typedef struct tbJointId
 	uint16_t generation;
 } tbJointId;
 
+/// Chain handle (tbCreateChain).
+typedef struct tbChainId
+{
+	int32_t index1;
+	uint16_t world0;
+	uint16_t generation;
+} tbChainId;
+
 /// Contact handle: a contact lives while two shapes' fat boxes overlap, so it may be destroyed by
 /// any step; check it with tbContact_IsValid. The generation counts every reuse of the slot.
 typedef struct tbContactId
@@ -50,12 +58,14 @@ typedef struct tbContactId
 #define TB_NULL_BODY_ID (tbBodyId{})
 #define TB_NULL_SHAPE_ID (tbShapeId{})
 #define TB_NULL_JOINT_ID (tbJointId{})
+#define TB_NULL_CHAIN_ID (tbChainId{})
 #define TB_NULL_CONTACT_ID (tbContactId{})
 #else
 #define TB_NULL_WORLD_ID ((tbWorldId){0})
 #define TB_NULL_BODY_ID ((tbBodyId){0})
 #define TB_NULL_SHAPE_ID ((tbShapeId){0})
 #define TB_NULL_JOINT_ID ((tbJointId){0})
+#define TB_NULL_CHAIN_ID ((tbChainId){0})
 #define TB_NULL_CONTACT_ID ((tbContactId){0})
 #endif
 
@@ -94,6 +104,17 @@ TB_INLINE uint64_t tbStoreJointId(tbJointId id)
 TB_INLINE tbJointId tbLoadJointId(uint64_t x)
 {
 	tbJointId id = {(int32_t)(x >> 32), (uint16_t)(x >> 16), (uint16_t)x};
+	return id;
+}
+
+TB_INLINE uint64_t tbStoreChainId(tbChainId id)
+{
+	return ((uint64_t)(uint32_t)id.index1 << 32) | ((uint64_t)id.world0 << 16) | (uint64_t)id.generation;
+}
+
+TB_INLINE tbChainId tbLoadChainId(uint64_t x)
+{
+	tbChainId id = {(int32_t)(x >> 32), (uint16_t)(x >> 16), (uint16_t)x};
 	return id;
 }
 

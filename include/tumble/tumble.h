@@ -269,6 +269,30 @@ TB_API tbAABB tbShape_GetAABB(tbShapeId shapeId);
 TB_API bool tbShape_TestPoint(tbShapeId shapeId, tbVec2 point);
 TB_API tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input);
 TB_API tbMassData tbShape_GetMassData(tbShapeId shapeId);
+/// A chain segment's geometry with its ghost points (an error and zeros for another kind).
+TB_API tbChainSegment tbShape_GetChainSegment(tbShapeId shapeId);
+/// The chain a segment belongs to (null for any other shape).
+TB_API tbChainId tbShape_GetParentChain(tbShapeId shapeId);
+
+// ---------------------------------------------------------------------------------------------
+// Chains (Box2D v3.2's grammar): one-sided segments on one body, smooth across their joints.
+// Creating checks every point (finite, within TB_MAX_COORDINATE, consecutive points at least
+// TB_LINEAR_SLOP apart, count ≥ 4) and the materials, and creates nothing on bad input. The
+// segments are shapes (tbChain_GetSegments) that may not be destroyed or reshaped one by one.
+
+TB_API tbChainId tbCreateChain(tbBodyId bodyId, const tbChainDef* def);
+/// Destroys the chain and its segments (destroying its body does too).
+TB_API void tbDestroyChain(tbChainId chainId);
+TB_API bool tbChain_IsValid(tbChainId chainId);
+TB_API tbWorldId tbChain_GetWorld(tbChainId chainId);
+TB_API tbBodyId tbChain_GetBody(tbChainId chainId);
+TB_API int tbChain_GetSegmentCount(tbChainId chainId);
+/// Writes up to capacity segment shape ids; returns how many were written.
+TB_API int tbChain_GetSegments(tbChainId chainId, tbShapeId* segmentArray, int capacity);
+TB_API int tbChain_GetSurfaceMaterialCount(tbChainId chainId);
+/// Sets material `materialIndex` (of tbChain_GetSurfaceMaterialCount) and the segments using it.
+TB_API bool tbChain_SetSurfaceMaterial(tbChainId chainId, const tbSurfaceMaterial* material, int materialIndex);
+TB_API tbSurfaceMaterial tbChain_GetSurfaceMaterial(tbChainId chainId, int materialIndex);
 
 // ---------------------------------------------------------------------------------------------
 // Joints. Every kind shares the tbJoint_* functions; tbRevoluteJoint_* and the like refuse a

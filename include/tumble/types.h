@@ -190,6 +190,36 @@ typedef struct tbShapeDef
 
 TB_API tbShapeDef tbDefaultShapeDef(void);
 
+/// Surface of a chain segment (Box2D v3.2's b2SurfaceMaterial, the fields Tumble implements).
+typedef struct tbSurfaceMaterial
+{
+	float friction;		///< ≥ 0, default 0.6
+	float restitution;	///< ≥ 0, default 0
+	int userMaterialId; ///< passed to the mixing callbacks
+} tbSurfaceMaterial;
+
+TB_API tbSurfaceMaterial tbDefaultSurfaceMaterial(void);
+
+/// Chain definition: start from tbDefaultChainDef(). A chain is a run of one-sided segments, solid
+/// on the left of each segment's direction (so an outline given counter-clockwise with isLoop is
+/// solid inside; ground given right to left is solid below), that shapes slide across without
+/// catching on the joints. An open chain of n points has n − 3 segments: the first and last points
+/// only say which way the ground continues (ghost points). A loop of n points has n segments.
+typedef struct tbChainDef
+{
+	void* userData;
+	const tbVec2* points; ///< at least 4, copied; consecutive points at least TB_LINEAR_SLOP apart
+	int count;
+	const tbSurfaceMaterial* materials; ///< 1 (for every segment) or one per segment; copied
+	int materialCount;
+	tbFilter filter;
+	bool isLoop;
+	bool enableSensorEvents; ///< sensors see the chain; default false
+	int internalValue;
+} tbChainDef;
+
+TB_API tbChainDef tbDefaultChainDef(void);
+
 // ---------------------------------------------------------------------------------------------
 // Joints (Box2D v3.2's grammar: b2RevoluteJointDef → tbRevoluteJointDef, and so on). Each kind's
 // definition embeds the common part as `.base`. Start every definition from its

@@ -1,0 +1,367 @@
+// Chains: one-sided segments that shapes slide across without catching on the joints.
+// The seam criterion is the one a platformer needs: a box or a capsule driven along flat ground
+// made of 100 one-metre segments keeps |vertical velocity| ≤ 0.01 m/s at every step, at 1, 10 and
+// 30 m/s (on flat ground the exact answer is 0; 0.01 m/s is a hundredth of the slowest drive and
+// about what the soft contact's rest sag of a few millimetres can produce while settling).
+#include <criterion/criterion.h>
+
+#include "tumble/tumble.h"
+
+#include "error_recorder.h"
+
+#include <math.h>
+
+#define TIME_STEP (1.0f / 60.0f)
+#define SEGMENTS 100
+
+static tbWorldId CreateWorld(void)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, -10.0f);
+	return tbCreateWorld(&def);
+}
+
+/// Flat ground from x = 0 to x = SEGMENTS at y = 0, solid below: points run right to left, with a
+/// ghost point beyond each end.
+static tbChainId CreateFlatChain(tbWorldId world)
+{
+	static tbVec2 points[SEGMENTS + 3];
+	for (int i = 0; i < SEGMENTS + 3; ++i)
+	{
+		points[i] = tbMakeVec2((float)(SEGMENTS + 1 - i), 0.0f);
+	}
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &bodyDef);
+	tbChainDef def = tbDefaultChainDef();
+	def.points = points;
+	def.count = SEGMENTS + 3;
+	return tbCreateChain(ground, &def);
+}
+
+typedef enum Mover
+{
+	MoverBox,
+	MoverCapsule
+} Mover;
+
+static tbBodyId CreateMover(tbWorldId world, Mover kind)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.fixedRotation = true; // a character's body: the test is about normals, not tipping
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.friction = 0.0f;
+	tbBodyId body;
+	if (kind == MoverBox)
+	{
+		bodyDef.position = tbMakeVec2(1.0f, 0.25f);
+		body = tbCreateBody(world, &bodyDef);
+		tbPolygon box = tbMakeBox(0.25f, 0.25f);
+		tbCreatePolygonShape(body, &shapeDef, &box);
+	}
+	else
+	{
+		bodyDef.position = tbMakeVec2(1.0f, 0.25f);
+		body = tbCreateBody(world, &bodyDef);
+		tbCapsule capsule = {{-0.25f, 0.0f}, {0.25f, 0.0f}, 0.25f};
+		tbCreateCapsuleShape(body, &shapeDef, &capsule);
+	}
+	return body;
+}
+
+/// Drive the mover at `speed` across the ground and return the largest |vertical velocity| seen
+/// while it is over the interior seams (x in 2..SEGMENTS − 2).
+static float MaxVerticalSpeed(tbWorldId world, tbBodyId body, float speed)
+{
+	for (int step = 0; step < 30; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, 4); // settle at rest first
+	}
+	float worst = 0.0f;
+	for (int step = 0; step < 100000; ++step)
+	{
+		tbVec2 v = tbBody_GetLinearVelocity(body);
+		tbBody_SetLinearVelocity(body, tbMakeVec2(speed, v.y));
+		tbWorld_Step(world, TIME_STEP, 4);
+		float x = tbBody_GetPosition(body).x;
+		if (x > (float)SEGMENTS - 2.0f)
+		{
+			break;
+		}
+		if (x > 2.0f)
+		{
+			worst = fmaxf(worst, fabsf(tbBody_GetLinearVelocity(body).y));
+		}
+	}
+	return worst;
+}
+
+Test(chain, box_and_capsule_cross_seams_without_bumps)
+{
+	const float speeds[3] = {1.0f, 10.0f, 30.0f};
+	for (int kind = MoverBox; kind <= MoverCapsule; ++kind)
+	{
+		for (int s = 0; s < 3; ++s)
+		{
+			tbWorldId world = CreateWorld();
+			CreateFlatChain(world);
+			tbBodyId body = CreateMover(world, (Mover)kind);
+			float worst = MaxVerticalSpeed(world, body, speeds[s]);
+			cr_assert(worst <= 0.01f, "%s at %g m/s: vertical speed %g m/s at a seam", kind == MoverBox ? "box" : "capsule",
+					  (double)speeds[s], (double)worst);
+			float y = tbBody_GetPosition(body).y;
+			cr_assert(fabsf(y - 0.25f) < 0.01f, "rides at %g, expected 0.25 (half height)", (double)y);
+			tbDestroyWorld(world);
+		}
+	}
+}
+
+// One-sided: a ball thrown up from below passes through the ground and lands on top of it; a ray
+// from above hits the ground at y = 0, a ray from below does not.
+Test(chain, is_one_sided)
+{
+	tbWorldId world = CreateWorld();
+	CreateFlatChain(world);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = tbMakeVec2(50.3f, -1.0f);
+	bodyDef.linearVelocity = tbMakeVec2(0.0f, 8.0f); // rises to −1 + 8²/20 = 2.2 m
+	tbBodyId ball = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.2f};
+	tbCreateCircleShape(ball, &shapeDef, &circle);
+	for (int step = 0; step < 180; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, 4);
+	}
+	float y = tbBody_GetPosition(ball).y;
+	cr_assert(fabsf(y - 0.2f) < 0.01f, "the ball rests at %g, expected on top at its radius 0.2", (double)y);
+
+	tbRayResult down = tbWorld_CastRayClosest(world, tbMakeVec2(10.5f, 5.0f), tbMakeVec2(0.0f, -10.0f),
+											   tbDefaultQueryFilter());
+	cr_assert(down.hit);
+	cr_assert_float_eq(down.point.y, 0.0f, 1e-5f);
+	cr_assert_float_eq(down.normal.y, 1.0f, 1e-5f);
+	tbRayResult up = tbWorld_CastRayClosest(world, tbMakeVec2(10.5f, -5.0f), tbMakeVec2(0.0f, 10.0f),
+											 tbDefaultQueryFilter());
+	cr_assert(up.hit == false, "a ray from below should pass through the one-sided ground");
+	tbDestroyWorld(world);
+}
+
+// A loop given clockwise is solid outside: a container. A ball bouncing inside a 16-sided loop of
+// radius 5 m (restitution 0.8) for 10 s stays inside it; a box dropped on a counter-clockwise
+// square loop (solid inside) rests on its top face at the box's half height above it.
+Test(chain, loops_hold_inside_or_outside)
+{
+	tbWorldId world = CreateWorld();
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbVec2 ring[16];
+	for (int i = 0; i < 16; ++i)
+	{
+		float angle = -2.0f * 3.14159265f * (float)i / 16.0f; // clockwise
+		ring[i] = tbMakeVec2(5.0f * cosf(angle), 5.0f * sinf(angle));
+	}
+	tbChainDef def = tbDefaultChainDef();
+	def.points = ring;
+	def.count = 16;
+	def.isLoop = true;
+	tbSurfaceMaterial bouncy = tbDefaultSurfaceMaterial();
+	bouncy.restitution = 0.8f;
+	def.materials = &bouncy;
+	tbChainId container = tbCreateChain(ground, &def);
+	cr_assert_eq(tbChain_GetSegmentCount(container), 16);
+
+	tbVec2 square[4] = {{20.0f, 0.0f}, {22.0f, 0.0f}, {22.0f, 2.0f}, {20.0f, 2.0f}}; // counter-clockwise
+	def = tbDefaultChainDef();
+	def.points = square;
+	def.count = 4;
+	def.isLoop = true;
+	tbCreateChain(ground, &def);
+
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.linearVelocity = tbMakeVec2(17.0f, 9.0f);
+	tbBodyId ball = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.restitution = 0.8f;
+	tbCircle circle = {{0.0f, 0.0f}, 0.3f};
+	tbCreateCircleShape(ball, &shapeDef, &circle);
+	bodyDef.linearVelocity = tb_vec2_zero;
+	bodyDef.position = tbMakeVec2(21.0f, 3.0f);
+	tbBodyId box = tbCreateBody(world, &bodyDef);
+	tbPolygon boxShape = tbMakeBox(0.5f, 0.5f);
+	tbShapeDef boxDef = tbDefaultShapeDef();
+	tbCreatePolygonShape(box, &boxDef, &boxShape);
+	// The ball's centre gets farthest from the middle in a corner, touching both chords: on the
+	// corner's bisector, 0.3 / sin(78.75°) from the corner (the 16-gon's inner angle is 157.5°).
+	float inner = 5.0f - 0.3f / sinf(78.75f * 3.14159265f / 180.0f);
+	for (int step = 0; step < 600; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, 4);
+		float r = tbLength(tbBody_GetPosition(ball));
+		cr_assert(r < inner + 0.02f, "step %d: the ball is %g m from the centre, outside the container", step,
+				  (double)r);
+	}
+	cr_assert(fabsf(tbBody_GetPosition(box).y - 2.5f) < 0.01f, "the box rests at %g, expected 2.5",
+			  (double)tbBody_GetPosition(box).y);
+	tbDestroyWorld(world);
+}
+
+// Materials per segment: a box sliding at 3 m/s over a frictionless half of the ground keeps its
+// speed and stops on the half with friction 1 within v²/(2μg) = 9/20 = 0.45 m of reaching it.
+Test(chain, materials_per_segment)
+{
+	tbWorldId world = CreateWorld();
+	tbVec2 points[13];
+	for (int i = 0; i < 13; ++i)
+	{
+		points[i] = tbMakeVec2((float)(11 - i), 0.0f); // segments from x = 10 down to x = 0
+	}
+	tbSurfaceMaterial materials[10];
+	for (int i = 0; i < 10; ++i)
+	{
+		materials[i] = tbDefaultSurfaceMaterial();
+		materials[i].friction = i < 5 ? 1.0f : 0.0f; // segment i runs from x = 10 − i to 9 − i
+	}
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbChainDef def = tbDefaultChainDef();
+	def.points = points;
+	def.count = 13;
+	def.materials = materials;
+	def.materialCount = 10;
+	tbChainId chain = tbCreateChain(ground, &def);
+	cr_assert_eq(tbChain_GetSurfaceMaterialCount(chain), 10);
+	cr_assert_float_eq(tbChain_GetSurfaceMaterial(chain, 2).friction, 1.0f, 0.0f);
+	tbShapeId segments[10];
+	cr_assert_eq(tbChain_GetSegments(chain, segments, 10), 10);
+	cr_assert_float_eq(tbShape_GetFriction(segments[7]), 0.0f, 0.0f);
+	cr_assert(tbShape_GetParentChain(segments[7]).index1 == chain.index1);
+	tbChainSegment seg = tbShape_GetChainSegment(segments[0]);
+	cr_assert_float_eq(seg.segment.point1.x, 10.0f, 0.0f);
+	cr_assert_float_eq(seg.ghost1.x, 11.0f, 0.0f);
+	cr_assert_float_eq(seg.ghost2.x, 8.0f, 0.0f);
+
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.fixedRotation = true;
+	bodyDef.position = tbMakeVec2(1.0f, 0.25f);
+	bodyDef.linearVelocity = tbMakeVec2(3.0f, 0.0f);
+	tbBodyId box = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.friction = 1.0f; // friction mixes as sqrt(1 · μ_ground): 0 on the smooth half, 1 on the rough
+	tbPolygon boxShape = tbMakeBox(0.25f, 0.25f);
+	tbCreatePolygonShape(box, &shapeDef, &boxShape);
+	for (int step = 0; step < 180; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, 4);
+	}
+	// The box's front reaches the rough half (x = 5) with its centre at 4.75 and it is wholly on
+	// it from 5.25. With full friction from the first touch it would stop at 4.75 + 0.45 = 5.2;
+	// with none until wholly on the rough half, at 5.25 + 0.45 = 5.7. (If the load moved over
+	// linearly, friction would do 2.5 J/kg while it straddles and it would stop at 5.45.)
+	float x = tbBody_GetPosition(box).x;
+	cr_assert(x > 5.2f && x < 5.7f, "stopped at %g, expected 5.2 to 5.7", (double)x);
+	cr_assert(fabsf(tbBody_GetLinearVelocity(box).x) < 0.01f);
+	tbDestroyWorld(world);
+}
+
+// Bad chains are refused with one error naming the problem, and nothing is created.
+Test(chain, bad_input_is_refused, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldId world = CreateWorld();
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &bodyDef);
+	tbVec2 good[5] = {{4, 0}, {3, 0}, {2, 0}, {1, 0}, {0, 0}};
+	tbVec2 nan[5] = {{4, 0}, {3, 0}, {NAN, 0}, {1, 0}, {0, 0}};
+	tbVec2 duplicate[5] = {{4, 0}, {3, 0}, {3, 0.001f}, {1, 0}, {0, 0}};
+	tbSurfaceMaterial negative = {-1.0f, 0.0f, 0};
+	tbSurfaceMaterial two[2] = {{0.5f, 0.0f, 0}, {0.5f, 0.0f, 0}};
+	int shapesBefore = tbWorld_GetCounters(world).shapeCount;
+
+	tbChainDef def = tbDefaultChainDef();
+	def.points = good;
+	def.count = 3;
+	int before = s_errors;
+	cr_assert(TB_IS_NULL(tbCreateChain(ground, &def)));
+	ExpectError(before, "tbCreateChain", "at least 4");
+
+	def.count = 5;
+	def.points = nan;
+	before = s_errors;
+	cr_assert(TB_IS_NULL(tbCreateChain(ground, &def)));
+	ExpectError(before, "tbCreateChain", "points[2]");
+
+	def.points = duplicate;
+	before = s_errors;
+	cr_assert(TB_IS_NULL(tbCreateChain(ground, &def)));
+	ExpectError(before, "tbCreateChain", "duplicate");
+
+	def.points = good;
+	def.materials = &negative;
+	before = s_errors;
+	cr_assert(TB_IS_NULL(tbCreateChain(ground, &def)));
+	ExpectError(before, "tbCreateChain", "materials[0]");
+
+	def.materials = two; // an open chain of 5 points has 2 segments: 2 materials are fine
+	def.materialCount = 2;
+	tbChainId chain = tbCreateChain(ground, &def);
+	cr_assert(tbChain_IsValid(chain));
+	def.materialCount = 3;
+	before = s_errors;
+	cr_assert(TB_IS_NULL(tbCreateChain(ground, &def)));
+	ExpectError(before, "tbCreateChain", "materialCount");
+
+	tbChainDef uninitialised = {0};
+	before = s_errors;
+	cr_assert(TB_IS_NULL(tbCreateChain(ground, &uninitialised)));
+	ExpectError(before, "tbCreateChain", "tbDefaultChainDef");
+	cr_assert_eq(tbWorld_GetCounters(world).shapeCount, shapesBefore + 2, "only the good chain's 2 segments");
+
+	// Its segments are changed only through the chain.
+	tbShapeId segments[2];
+	cr_assert_eq(tbChain_GetSegments(chain, segments, 2), 2);
+	before = s_errors;
+	tbDestroyShape(segments[0], false);
+	ExpectError(before, "tbDestroyShape", "chain");
+	tbCircle circle = {{0.0f, 0.0f}, 1.0f};
+	before = s_errors;
+	cr_assert(tbShape_SetCircle(segments[0], &circle) == false);
+	ExpectError(before, "tbShape_SetCircle", "chain");
+	cr_assert(tbShape_IsValid(segments[0]));
+
+	// Destroying the chain destroys its segments; its id and theirs go stale.
+	tbDestroyChain(chain);
+	cr_assert(tbChain_IsValid(chain) == false);
+	cr_assert(tbShape_IsValid(segments[1]) == false);
+	before = s_errors;
+	cr_assert_eq(tbChain_GetSegmentCount(chain), 0);
+	ExpectError(before, "tbChain_GetSegmentCount", "chainId");
+	cr_assert_eq(tbWorld_GetCounters(world).shapeCount, shapesBefore);
+
+	// Destroying the body destroys its chains.
+	def.materials = two;
+	def.materialCount = 1;
+	chain = tbCreateChain(ground, &def);
+	cr_assert(tbChain_IsValid(chain));
+	tbDestroyBody(ground);
+	cr_assert(tbChain_IsValid(chain) == false);
+	tbDestroyWorld(world);
+}
+
+// A world with chains gives back every byte it took.
+Test(chain, memory_is_returned)
+{
+	int before = tbGetByteCount();
+	tbWorldId world = CreateWorld();
+	CreateFlatChain(world);
+	tbBodyId body = CreateMover(world, MoverBox);
+	(void)body;
+	for (int step = 0; step < 10; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, 4);
+	}
+	tbDestroyWorld(world);
+	cr_assert_eq(tbGetByteCount(), before);
+}
