@@ -872,6 +872,89 @@ static Scene* BuildRagdolls(void)
 // ---------------------------------------------------------------------------------------------
 // Table
 
+/// Static concave outline on body `body`, cut into convex pieces by tbDecomposePolygon.
+static void AddConcaveShape(Scene* scene, int body, const tbVec2* outline, int count, float friction)
+{
+	tbPolygon pieces[16];
+	int pieceCount = tbDecomposePolygon(outline, count, pieces, 16);
+	for (int i = 0; i < pieceCount; ++i)
+	{
+		tbGeometry geometry;
+		memset(&geometry, 0, sizeof(geometry));
+		geometry.type = tb_polygonShape;
+		geometry.polygon = pieces[i];
+		Scene_AddGeometry(scene, body, &geometry, 1.0f, friction);
+	}
+}
+
+/// Height of the platformer's ground at x: a flat run of 1 m segments (−30..0), a 15° slope up
+/// (0..10), a plateau (10..20), a cosine valley 1 m below the start (20..40) and a flat run (40..60).
+static float PlatformerGround(float x)
+{
+	float plateau = 10.0f * tanf(15.0f * TB_PI / 180.0f);
+	if (x <= 0.0f || x >= 40.0f)
+	{
+		return 0.0f;
+	}
+	if (x <= 10.0f)
+	{
+		return x * plateau / 10.0f;
+	}
+	if (x <= 20.0f)
+	{
+		return plateau;
+	}
+	if (x <= 30.0f)
+	{
+		return plateau - (plateau + 1.0f) * 0.5f * (1.0f - cosf(TB_PI * (x - 20.0f) / 10.0f));
+	}
+	return -1.0f + 0.5f * (1.0f - cosf(TB_PI * (x - 30.0f) / 10.0f));
+}
+
+/// A platformer level: ground as one chain (points every metre on the flats and curves, every 2 m
+/// on the slope; solid below), an L-shaped ledge and a U-shaped cup made concave by
+/// tbDecomposePolygon, boxes behind the start and on the ledge, balls in the cup, and an upright capsule character
+/// (fixed rotation, no friction) sent across at 8 m/s; a wall at the far end.
+static Scene* BuildPlatformer(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 900;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	memcpy(scene->bodies[ground].name, "ground", 7);
+	tbVec2 points[128];
+	int count = 0;
+	for (float x = 61.0f; x >= -31.0f; x -= (x > 0.0f && x <= 10.0f) ? 2.0f : 1.0f)
+	{
+		points[count++] = V(x, PlatformerGround(x));
+	}
+	Scene_AddChain(scene, ground, points, count, false);
+	tbVec2 ledge[6] = {V(-22.0f, 3.0f), V(-16.0f, 3.0f), V(-16.0f, 3.4f), V(-21.4f, 3.4f), V(-21.4f, 5.0f), V(-22.0f, 5.0f)};
+	AddConcaveShape(scene, ground, ledge, 6, 0.6f);
+	tbVec2 cup[8] = {V(46.0f, 0.0f), V(52.0f, 0.0f), V(52.0f, 2.0f), V(51.6f, 2.0f),
+					 V(51.6f, 0.4f), V(46.4f, 0.4f), V(46.4f, 2.0f), V(46.0f, 2.0f)};
+	AddConcaveShape(scene, ground, cup, 8, 0.6f);
+	tbGeometry wall = Scene_MakeBoxGeometry(0.5f, 3.0f, V(60.5f, 3.0f), 0.0f);
+	Scene_AddGeometry(scene, ground, &wall, 1.0f, 0.6f);
+	for (int i = 0; i < 6; ++i)
+	{
+		AddBoxBody(scene, tb_dynamicBody, V(-26.0f - 0.9f * (float)(i % 3), 0.4f + 0.8f * (float)(i / 3)), 0.0f, 0.4f,
+				   0.4f, 1.0f, 0.6f);
+	}
+	for (int i = 0; i < 8; ++i)
+	{
+		AddCircleBody(scene, tb_dynamicBody, V(47.0f + 0.6f * (float)(i % 4), 1.0f + 0.6f * (float)(i / 4)), 0.25f, 1.0f,
+					  0.4f);
+	}
+	AddBoxBody(scene, tb_dynamicBody, V(-19.0f, 3.9f), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
+	int hero = Scene_AddBody(scene, tb_dynamicBody, V(-23.0f, 0.7f), 0.0f);
+	memcpy(scene->bodies[hero].name, "hero", 5);
+	scene->bodies[hero].fixedRotation = true;
+	scene->bodies[hero].linearVelocity = V(8.0f, 0.0f);
+	tbGeometry capsule = Scene_MakeCapsuleGeometry(V(0.0f, -0.4f), V(0.0f, 0.4f), 0.3f);
+	Scene_AddGeometry(scene, hero, &capsule, 1.0f, 0.0f);
+	return scene;
+}
+
 typedef Scene* SceneBuilder(void);
 
 typedef struct CatalogueEntry
@@ -928,6 +1011,9 @@ static const CatalogueEntry s_entries[] = {
 	{"car", "a chassis on two wheel joints (5 Hz suspension, rear motor) driving over sine hills", BuildCar},
 	{"ragdolls", "24 ragdolls of 10 bodies (revolute joints with limits and friction) dropped in a pile",
 	 BuildRagdolls},
+	{"platformer", "a level: chain ground with slopes and a valley, concave ledge and cup, boxes and balls, an "
+				   "upright capsule character sent across at 8 m/s",
+	 BuildPlatformer},
 };
 
 #define ENTRY_COUNT ((int)(sizeof(s_entries) / sizeof(s_entries[0])))

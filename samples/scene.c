@@ -56,6 +56,11 @@ void Scene_Destroy(Scene* scene)
 	}
 	free(scene->bodies);
 	free(scene->joints);
+	for (int i = 0; i < scene->chainCount; ++i)
+	{
+		free(scene->chains[i].points);
+	}
+	free(scene->chains);
 	free(scene);
 }
 
@@ -189,6 +194,42 @@ void Scene_DefaultJointDef(tbJointType type, SceneJoint* joint)
 	}
 }
 
+SceneChain* Scene_AddChain(Scene* scene, int bodyIndex, const tbVec2* points, int count, bool isLoop)
+{
+	scene->chains = GrowArray(scene->chains, &scene->chainCapacity, scene->chainCount + 1, sizeof(SceneChain));
+	SceneChain* chain = scene->chains + scene->chainCount++;
+	memset(chain, 0, sizeof(*chain));
+	chain->body = bodyIndex;
+	chain->points = malloc(sizeof(tbVec2) * (size_t)(count > 0 ? count : 1));
+	if (chain->points != NULL && count > 0)
+	{
+		memcpy(chain->points, points, sizeof(tbVec2) * (size_t)count);
+	}
+	chain->count = chain->points != NULL ? count : 0;
+	chain->isLoop = isLoop;
+	chain->friction = 0.6f;
+	return chain;
+}
+
+static tbChainId CreateSceneChain(tbWorldId worldId, const tbBodyId* bodyIds, int bodyCount, const SceneChain* chain)
+{
+	(void)worldId;
+	if (chain->body < 0 || chain->body >= bodyCount || TB_IS_NULL(bodyIds[chain->body]))
+	{
+		return TB_NULL_CHAIN_ID;
+	}
+	tbSurfaceMaterial material = tbDefaultSurfaceMaterial();
+	material.friction = chain->friction;
+	material.restitution = chain->restitution;
+	tbChainDef def = tbDefaultChainDef();
+	def.points = chain->points;
+	def.count = chain->count;
+	def.isLoop = chain->isLoop;
+	def.materials = &material;
+	def.materialCount = 1;
+	return tbCreateChain(bodyIds[chain->body], &def);
+}
+
 SceneJoint* Scene_AddJoint(Scene* scene, tbJointType type, int bodyA, int bodyB)
 {
 	scene->joints = GrowArray(scene->joints, &scene->jointCapacity, scene->jointCount + 1, sizeof(SceneJoint));
@@ -307,6 +348,7 @@ static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const 
 	def.angularDamping = body->angularDamping;
 	def.gravityScale = body->gravityScale;
 	def.isBullet = body->bullet;
+	def.fixedRotation = body->fixedRotation;
 	def.isAwake = body->isAwake;
 	def.name = name[0] != '\0' ? name : NULL;
 	tbBodyId bodyId = tbCreateBody(worldId, &def);
@@ -338,10 +380,13 @@ bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize)
 	tbWorldId worldId = tbCreateWorld(&def);
 	bool refused = TB_IS_NULL(worldId);
 	snprintf(item, (size_t)itemSize, "scene");
+	tbBodyId* bodyIds = calloc((size_t)(scene->bodyCount > 0 ? scene->bodyCount : 1), sizeof(tbBodyId));
+	refused = refused || bodyIds == NULL;
 	for (int i = 0; i < scene->bodyCount && refused == false; ++i)
 	{
 		int shapeIndex = -1;
 		tbBodyId bodyId = CreateSceneBody(worldId, scene->bodies + i, "", &shapeIndex);
+		bodyIds[i] = bodyId;
 		refused = TB_IS_NULL(bodyId) || shapeIndex >= 0;
 		if (TB_IS_NULL(bodyId))
 		{
@@ -352,6 +397,15 @@ bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize)
 			snprintf(item, (size_t)itemSize, "bodies[%d].shapes[%d]", i, shapeIndex);
 		}
 	}
+	for (int i = 0; i < scene->chainCount && refused == false; ++i)
+	{
+		refused = TB_IS_NULL(CreateSceneChain(worldId, bodyIds, scene->bodyCount, scene->chains + i));
+		if (refused)
+		{
+			snprintf(item, (size_t)itemSize, "chains[%d]", i);
+		}
+	}
+	free(bodyIds);
 	if (TB_IS_NON_NULL(worldId))
 	{
 		tbDestroyWorld(worldId);
@@ -429,6 +483,10 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 	for (int i = 0; i < scene->jointCount; ++i)
 	{
 		world.jointIds[i] = CreateSceneJoint(world.worldId, &world, scene->joints + i);
+	}
+	for (int i = 0; i < scene->chainCount; ++i)
+	{
+		CreateSceneChain(world.worldId, world.bodyIds, world.bodyCount, scene->chains + i);
 	}
 	return world;
 }

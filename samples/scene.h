@@ -63,6 +63,7 @@ typedef struct SceneBody
 	float angularDamping;
 	float gravityScale; ///< default 1
 	bool bullet;
+	bool fixedRotation; ///< default false (tbBodyDef::fixedRotation): a character that stays upright
 	bool isAwake; ///< default true
 	SceneDrive drive;
 	SceneShape* shapes;
@@ -91,6 +92,18 @@ typedef struct SceneJoint
 	} def;
 } SceneJoint;
 
+/// A chain (tbCreateChain) on a scene body: points in the body frame, one material for every
+/// segment. An open chain's first and last points are ghosts (see tbChainDef).
+typedef struct SceneChain
+{
+	int body; ///< scene body index
+	tbVec2* points;
+	int count;
+	bool isLoop;
+	float friction;	   ///< default 0.6
+	float restitution; ///< default 0
+} SceneChain;
+
 typedef struct Scene
 {
 	tbVec2 gravity;	  ///< default (0, −10)
@@ -105,6 +118,9 @@ typedef struct Scene
 	SceneJoint* joints;
 	int jointCount;
 	int jointCapacity;
+	SceneChain* chains;
+	int chainCount;
+	int chainCapacity;
 } Scene;
 
 /// Empty scene with the defaults above.
@@ -138,6 +154,10 @@ void Scene_SetJointAnchor(const Scene* scene, SceneJoint* joint, tbVec2 worldPoi
 
 /// The default definition of a joint kind, as tbDefault*JointDef gives it (in SceneJoint's union).
 void Scene_DefaultJointDef(tbJointType type, SceneJoint* joint);
+
+/// Append a chain (points copied) on body bodyIndex with friction 0.6; returns it (valid until
+/// the next chain is added).
+SceneChain* Scene_AddChain(Scene* scene, int bodyIndex, const tbVec2* points, int count, bool isLoop);
 
 /// Total shape count over every body.
 int Scene_ShapeCount(const Scene* scene);

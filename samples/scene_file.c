@@ -642,6 +642,7 @@ static bool ReadBodyFields(Parser* parser, const cJSON* item, const char* path, 
 		   CheckNonNegative(parser, path, "angular_damping", body->angularDamping) &&
 		   ReadFloat(parser, item, path, "gravity_scale", &body->gravityScale, false) &&
 		   ReadBool(parser, item, path, "bullet", &body->bullet) &&
+		   ReadBool(parser, item, path, "fixed_rotation", &body->fixedRotation) &&
 		   ReadBool(parser, item, path, "awake", &body->isAwake) &&
 		   ReadDrive(parser, Find(item, "drive"), path, &body->drive);
 }
@@ -650,7 +651,7 @@ static bool ReadBody(Parser* parser, const cJSON* item, const char* path, Scene*
 {
 	static const char* const keys[] = {"type",			 "name",		   "position",		"angle",
 									   "linear_velocity", "angular_velocity", "linear_damping", "angular_damping",
-									   "gravity_scale",	 "bullet",		   "awake",			"drive",
+									   "gravity_scale",	 "bullet",		   "awake",			"drive", "fixed_rotation",
 									   "shapes",		 NULL};
 	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
 	{
@@ -1013,10 +1014,92 @@ static bool ReadJoints(Parser* parser, const cJSON* item, Scene* scene)
 	return true;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Chains: {"body": index, "points": [[x, y], …], "loop": bool, "friction": f, "restitution": e}
+
+static bool ReadChainPoints(Parser* parser, const cJSON* item, const char* path, SceneChain* chain)
+{
+	char child[PATH_SIZE];
+	KeyPath(child, path, "points");
+	if (item == NULL)
+	{
+		return Fail(parser, child, "missing (required)");
+	}
+	int n = cJSON_IsArray(item) ? cJSON_GetArraySize(item) : 0;
+	if (n < 4 || n > SCENE_MAX_CHAIN_POINTS)
+	{
+		return Fail(parser, child, "must be an array of 4 to %d [x, y] points", SCENE_MAX_CHAIN_POINTS);
+	}
+	tbVec2* points = malloc(sizeof(tbVec2) * (size_t)n);
+	if (points == NULL)
+	{
+		return Fail(parser, child, "out of memory");
+	}
+	int i = 0;
+	for (const cJSON* point = item->child; point != NULL; point = point->next, ++i)
+	{
+		char pointPath[PATH_SIZE];
+		IndexPath(pointPath, child, i);
+		if (ToVec2(parser, point, pointPath, points + i) == false)
+		{
+			free(points);
+			return false;
+		}
+	}
+	free(chain->points);
+	chain->points = points;
+	chain->count = n;
+	return true;
+}
+
+static bool ReadChain(Parser* parser, const cJSON* item, const char* path, Scene* scene)
+{
+	static const char* const keys[] = {"body", "points", "loop", "friction", "restitution", NULL};
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
+	{
+		return false;
+	}
+	int body;
+	if (ReadJointBody(parser, item, path, "body", scene->bodyCount, &body) == false)
+	{
+		return false;
+	}
+	SceneChain* chain = Scene_AddChain(scene, body, NULL, 0, false);
+	return ReadChainPoints(parser, Find(item, "points"), path, chain) &&
+		   ReadBool(parser, item, path, "loop", &chain->isLoop) &&
+		   ReadFloat(parser, item, path, "friction", &chain->friction, false) &&
+		   CheckNonNegative(parser, path, "friction", chain->friction) &&
+		   ReadFloat(parser, item, path, "restitution", &chain->restitution, false) &&
+		   CheckNonNegative(parser, path, "restitution", chain->restitution);
+}
+
+static bool ReadChains(Parser* parser, const cJSON* item, Scene* scene)
+{
+	if (item == NULL)
+	{
+		return true;
+	}
+	if (cJSON_IsArray(item) == false)
+	{
+		return Fail(parser, "chains", "must be an array of chains");
+	}
+	int i = 0;
+	for (const cJSON* chain = item->child; chain != NULL; chain = chain->next, ++i)
+	{
+		char child[PATH_SIZE];
+		IndexPath(child, "chains", i);
+		if (ReadChain(parser, chain, child, scene) == false)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
 static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
 {
-	static const char* const keys[] = {"gravity", "time_step", "sub_steps", "steps",
-									   "enable_sleep", "methods", "bodies", "joints", NULL};
+	static const char* const keys[] = {"gravity", "time_step", "sub_steps", "steps", "enable_sleep",
+									   "methods", "bodies",	   "joints",	"chains", NULL};
 	if (cJSON_IsObject(root) == false)
 	{
 		return Fail(parser, "", "scene: must be a JSON object");
@@ -1031,7 +1114,7 @@ static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
 		   ReadBool(parser, root, "", "enable_sleep", &scene->enableSleep) &&
 		   (methods == NULL || ReadMethods(parser, methods, &scene->methods)) &&
 		   ReadBodies(parser, Find(root, "bodies"), scene) && ReadJoints(parser, Find(root, "joints"), scene) &&
-		   CheckBuilds(parser, scene);
+		   ReadChains(parser, Find(root, "chains"), scene) && CheckBuilds(parser, scene);
 }
 
 // Line and column (from 1) of a position in text, for syntax errors.
@@ -1368,6 +1451,10 @@ static void AppendBodyExtras(TextBuffer* buffer, const SceneBody* body)
 	{
 		Append(buffer, ", \"bullet\": true");
 	}
+	if (body->fixedRotation)
+	{
+		Append(buffer, ", \"fixed_rotation\": true");
+	}
 	if (body->isAwake == false)
 	{
 		Append(buffer, ", \"awake\": false");
@@ -1430,6 +1517,18 @@ static void AppendMethods(TextBuffer* buffer, const SceneMethods* methods)
 }
 
 // A joint: its kind, bodies and frames, then every field that differs from the kind's default.
+static void AppendChain(TextBuffer* buffer, const SceneChain* chain)
+{
+	Append(buffer, "    {\"body\": %d, \"loop\": %s, \"friction\": %.9g, \"restitution\": %.9g, \"points\": [", chain->body,
+		   chain->isLoop ? "true" : "false", (double)chain->friction, (double)chain->restitution);
+	for (int i = 0; i < chain->count; ++i)
+	{
+		Append(buffer, i > 0 ? ", " : "");
+		AppendVec2(buffer, chain->points[i]);
+	}
+	Append(buffer, "]}");
+}
+
 static void AppendJoint(TextBuffer* buffer, const SceneJoint* joint)
 {
 	SceneJoint defaults;
@@ -1514,6 +1613,16 @@ char* SceneFile_Export(const Scene* scene, char* error, int errorSize)
 		{
 			Append(&buffer, i > 0 ? ",\n" : "\n");
 			AppendJoint(&buffer, scene->joints + i);
+		}
+		Append(&buffer, "\n  ]");
+	}
+	if (scene->chainCount > 0)
+	{
+		Append(&buffer, ",\n  \"chains\": [");
+		for (int i = 0; i < scene->chainCount; ++i)
+		{
+			Append(&buffer, i > 0 ? ",\n" : "\n");
+			AppendChain(&buffer, scene->chains + i);
 		}
 		Append(&buffer, "\n  ]");
 	}

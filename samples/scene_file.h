@@ -21,6 +21,7 @@ Scene* SceneFile_Load(const char* path, char* error, int errorSize);
 /// (sub_steps and time_step are bounded by the library's TB_MAX_SUB_STEPS, TB_MIN_TIME_STEP and
 /// TB_MAX_TIME_STEP.)
 #define SCENE_MAX_BODIES 100000
+#define SCENE_MAX_CHAIN_POINTS 100000 ///< points in one chain of a scene file
 #define SCENE_MAX_SHAPES 100000
 #define SCENE_MAX_STEPS 1000000
 
