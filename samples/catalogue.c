@@ -955,6 +955,35 @@ static Scene* BuildPlatformer(void)
 	return scene;
 }
 
+/// Loop-the-loop: two vertical loops of radius 5 m (clockwise chains of 256 segments, solid
+/// outside, no friction) each with a frictionless ball (radius 0.25) at the bottom. The left ball
+/// starts at 1.1 √(5 g (R − r)) = 16.9 m/s and runs round the top; the right one at 0.9 × that
+/// speed leaves the track before the top and falls back inside.
+static Scene* BuildLoopTheLoop(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 300;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	memcpy(scene->bodies[ground].name, "ground", 7);
+	const float R = 5.0f, r = 0.25f;
+	float critical = sqrtf(5.0f * 10.0f * (R - r));
+	for (int side = 0; side < 2; ++side)
+	{
+		float cx = side == 0 ? -6.0f : 6.0f;
+		tbVec2 points[256];
+		for (int i = 0; i < 256; ++i)
+		{
+			float angle = -2.0f * TB_PI * (float)i / 256.0f;
+			points[i] = V(cx + R * cosf(angle), R + R * sinf(angle));
+		}
+		SceneChain* chain = Scene_AddChain(scene, ground, points, 256, true);
+		chain->friction = 0.0f;
+		int ball = AddCircleBody(scene, tb_dynamicBody, V(cx, r), r, 1.0f, 0.0f);
+		scene->bodies[ball].linearVelocity = V((side == 0 ? 1.1f : 0.9f) * critical, 0.0f);
+	}
+	return scene;
+}
+
 typedef Scene* SceneBuilder(void);
 
 typedef struct CatalogueEntry
@@ -1014,6 +1043,9 @@ static const CatalogueEntry s_entries[] = {
 	{"platformer", "a level: chain ground with slopes and a valley, concave ledge and cup, boxes and balls, an "
 				   "upright capsule character sent across at 8 m/s",
 	 BuildPlatformer},
+	{"loop_the_loop", "two frictionless balls in vertical 5 m loops at 1.1 and 0.9 times the closed-form speed "
+					  "sqrt(5 g (R - r)) that just reaches the top",
+	 BuildLoopTheLoop},
 };
 
 #define ENTRY_COUNT ((int)(sizeof(s_entries) / sizeof(s_entries[0])))

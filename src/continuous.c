@@ -162,19 +162,28 @@ static tbVec2 tbShapeCentroid(const tbGeometry* g)
 	}
 }
 
-/// A chain segment is one-sided: a fast shape whose centroid starts behind it (on its solid side)
-/// passes through, as the narrow phase lets it.
-static bool tbStartsBehindChain(const tbContinuousContext* c, const tbShape* other, const tbBody* otherBody)
+/// Chain segments need no sweep in two cases. They are one-sided: a fast shape whose centroid
+/// starts behind one (on its solid side) passes through, as the narrow phase lets it. And a shape
+/// sliding fast along a chain (a ball round a loop, a character down a slope) approaches the
+/// segments ahead by less than its core while staying clear of them: the speculative contacts
+/// hold it, and a sweep would stop it at each segment it comes within TB_TOI_TARGET_SEPARATION of.
+/// So the sweep runs only when the centroid closes on the segment's line by at least the core
+/// radius (half the body's thickness, tbComputeCoreTOI's) or ends within it.
+static bool tbSkipChainSweep(const tbContinuousContext* c, const tbShape* other, const tbBody* otherBody)
 {
 	if (other->geometry.type != tb_chainSegmentShape)
 	{
 		return false;
 	}
-	tbTransform start = tbGetSweepTransform(&c->sweep, 0.0f);
-	tbVec2 centroid = tbTransformPoint(start, tbShapeCentroid(&c->fastShape->geometry));
-	tbVec2 local = tbInvTransformPoint(otherBody->transform, centroid);
 	const tbSegment* segment = &other->geometry.chainSegment.segment;
-	return tbCross(tbSub(segment->point2, segment->point1), tbSub(local, segment->point1)) > 0.0f;
+	tbVec2 e = tbNormalize(tbSub(segment->point2, segment->point1));
+	tbVec2 centroid = tbShapeCentroid(&c->fastShape->geometry);
+	tbVec2 c1 = tbInvTransformPoint(otherBody->transform, tbTransformPoint(tbGetSweepTransform(&c->sweep, 0.0f), centroid));
+	tbVec2 c2 = tbInvTransformPoint(otherBody->transform, tbTransformPoint(tbGetSweepTransform(&c->sweep, 1.0f), centroid));
+	float separation1 = tbCross(tbSub(c1, segment->point1), e); // > 0 in front (right of the direction)
+	float separation2 = tbCross(tbSub(c2, segment->point1), e);
+	float core = 0.5f * c->fastBody->minExtent;
+	return separation1 < 0.0f || (separation1 - separation2 < core && separation2 > core);
 }
 
 /// Broad-phase callback: time of impact of the fast shape against one candidate shape.
@@ -201,7 +210,7 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	{
 		return true; // the custom filter keeps them apart: no contact, no sweep either
 	}
-	if (tbStartsBehindChain(c, other, otherBody))
+	if (tbSkipChainSweep(c, other, otherBody))
 	{
 		return true;
 	}

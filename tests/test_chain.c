@@ -429,3 +429,60 @@ Test(chain, convex_joint_is_reported_once)
 		cr_assert_eq(a.pointCount > 0, degrees < 22, "%d°: the flat segment owns normals up to 22.5°", degrees);
 	}
 }
+
+// Loop-the-loop: a frictionless ball (radius r = 0.25) sliding inside a vertical loop of radius
+// R = 5 (a clockwise loop chain, solid outside, 1,024 segments) stays on the track over the top
+// only if its speed at the bottom is at least v = √(5 g (R − r)) = 15.41 m/s (at the top the track
+// must still push: v_top² ≥ g (R − r), with v_top² = v² − 4 g (R − r)). Each joint of the polygonal
+// track turns the velocity by 2π/1024 inelastically, keeping cos² of it as kinetic energy:
+// exp(−2π²/1024) ≈ 98 % over the half loop, so 5 % above v it completes the loop (centre reaches the
+// top, R − r above the middle) and 5 % below it leaves the track before the top and falls inside.
+static float HighestPoint(float speedFraction)
+{
+	const float R = 5.0f, r = 0.25f, g = 10.0f;
+	tbWorldId world = CreateWorld();
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	static tbVec2 loop[1024];
+	for (int i = 0; i < 1024; ++i)
+	{
+		float angle = -2.0f * 3.14159265f * (float)i / 1024.0f; // clockwise: solid outside
+		loop[i] = tbMakeVec2(R * cosf(angle), R + R * sinf(angle));
+	}
+	tbChainDef def = tbDefaultChainDef();
+	def.points = loop;
+	def.count = 1024;
+	def.isLoop = true;
+	tbSurfaceMaterial smooth = tbDefaultSurfaceMaterial();
+	smooth.friction = 0.0f;
+	def.materials = &smooth;
+	tbCreateChain(ground, &def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = tbMakeVec2(0.0f, r);
+	bodyDef.linearVelocity = tbMakeVec2(speedFraction * sqrtf(5.0f * g * (R - r)), 0.0f);
+	tbBodyId ball = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.friction = 0.0f;
+	tbCircle circle = {{0.0f, 0.0f}, r};
+	tbCreateCircleShape(ball, &shapeDef, &circle);
+	float highest = 0.0f;
+	for (int step = 0; step < 90; ++step) // 1.5 s: the loop takes about 1.2 s
+	{
+		tbWorld_Step(world, TIME_STEP, 4);
+		highest = fmaxf(highest, tbBody_GetPosition(ball).y);
+	}
+	tbDestroyWorld(world);
+	return highest;
+}
+
+Test(chain, loop_the_loop_needs_the_closed_form_speed)
+{
+	float top = 2.0f * 5.0f - 0.25f; // the centre's height at the top of the track
+	float above = HighestPoint(1.05f);
+	cr_assert(above > top - 0.01f, "at 1.05 v the ball should go over the top (reached %g of %g)", (double)above,
+			  (double)top);
+	float below = HighestPoint(0.95f);
+	cr_assert(below < top - 0.2f, "at 0.95 v the ball should leave the track before the top (reached %g)",
+			  (double)below);
+}

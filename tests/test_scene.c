@@ -265,7 +265,7 @@ Test(scene, reloaded_scenes_build_the_same_world)
 {
 	const char* names[] = {"pyramid", "rain",		  "spinner",  "newtons_cradle", "ramp",
 						   "confined", "bullets_wall", "dominoes", "junkyard",		 "compounds",
-						   "pendulum_chain", "rope_bridge", "car", "ragdolls", "platformer"};
+						   "pendulum_chain", "rope_bridge", "car", "ragdolls", "platformer", "loop_the_loop"};
 	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); ++i)
 	{
 		ExpectSameWorld(names[i]);
