@@ -123,10 +123,18 @@ static b2BodyId MakeBody(b2WorldId world, const SceneBody* sb)
 	return body;
 }
 
+static int s_workerCount = 1;
+
+void PeerBox2D3_SetWorkerCount(int workerCount)
+{
+	s_workerCount = workerCount;
+}
+
 PeerWorld* PeerBox2D3_Create(const Scene* scene)
 {
 	PeerWorld* peer = calloc(1, sizeof(PeerWorld));
 	b2WorldDef def = b2DefaultWorldDef(); // one worker, no task system: single-threaded
+	def.workerCount = s_workerCount;	  // unless --workers: then v3's own scheduler
 	def.gravity = ToB2(scene->gravity);
 	def.enableSleep = scene->enableSleep;
 	peer->world = b2CreateWorld(&def);

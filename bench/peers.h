@@ -47,6 +47,8 @@ void PeerBox2D_Destroy(PeerWorld* world);
 /// sleep after 0.5 s below 0.05 m/s). Shapes map one to one (v3 has capsules and rounded polygons;
 /// polygons are copied as they are). Driven bodies use b2Body_SetTargetTransform.
 PeerWorld* PeerBox2D3_Create(const Scene* scene);
+/// Workers of the worlds created from now on (default 1; more use v3's own scheduler).
+void PeerBox2D3_SetWorkerCount(int workerCount);
 void PeerBox2D3_Step(PeerWorld* world);
 PeerBody PeerBox2D3_GetBody(PeerWorld* world, int bodyIndex);
 PeerCounters PeerBox2D3_GetCounters(PeerWorld* world);

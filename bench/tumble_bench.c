@@ -20,6 +20,7 @@
 #include "catalogue.h"
 #include "peers.h"
 #include "scene.h"
+#include "task_system.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -341,6 +342,7 @@ typedef struct Options
 	int repeat;
 	const char* csvPath;
 	bool peers;					 ///< time peers too (--peers: all built ones; --peer NAME: those named)
+	int workers;				 ///< --workers N: Tumble on a task system of N workers, Box2D v3 with N workers
 	bool peerNamed[engineCount]; ///< --peer NAME given for this engine
 	bool interleaveSteps;		 ///< --interleave: the engines' worlds side by side, stepped in turn
 	TumbleConfig config;
@@ -1341,7 +1343,7 @@ static void PrintUsage(void)
 		   "                    [--peer box2d-2.4.1|box2d-3|chipmunk-7]... [--interleave]\n"
 		   "                    [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
-		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree]\n"
+		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree] [--workers N]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
 		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
@@ -1350,7 +1352,9 @@ static void PrintUsage(void)
 		   "compounds, each at its catalogue step count, 60 Hz, 4 sub-steps for the soft solver\n"
 		   "(1 for baumgarte/ngs). --peers adds Box2D 2.4.1, Box2D v3 and Chipmunk 7 where built,\n"
 		   "--peer NAME only the peers named; --repeat rounds interleave the engines run by run,\n"
-		   "--interleave step by step (all worlds built side by side, each step timed alone).\n");
+		   "--interleave step by step (all worlds built side by side, each step timed alone).\n"
+		   "--workers N runs Tumble on the reference task system (samples/task_system.c) and Box2D v3\n"
+		   "with N workers (its own scheduler); the other peers stay single-threaded.\n");
 }
 
 static bool ParseMethod(const char* option, const char* value, SceneMethods* methods)
@@ -1445,6 +1449,15 @@ int main(int argc, char** argv)
 		{
 			options.config.overrides.scalarSolver = true;
 		}
+		else if (strcmp(arg, "--workers") == 0 && hasValue)
+		{
+			options.workers = atoi(argv[++i]);
+			if (options.workers < 1 || options.workers > TB_MAX_WORKERS)
+			{
+				fprintf(stderr, "tumble-bench: --workers takes 1 to %d\n", TB_MAX_WORKERS);
+				return 1;
+			}
+		}
 		else if (strcmp(arg, "--chipmunk-tree") == 0)
 		{
 			options.config.chipmunkTree = true;
@@ -1502,7 +1515,16 @@ int main(int argc, char** argv)
 	}
 	if (command == NULL)
 	{
-		return RunScenes(&options);
+		if (options.workers > 1)
+		{
+			options.config.overrides.tasks = TaskSystem_Create(options.workers);
+#ifdef TUMBLE_HAVE_BOX2D3
+			PeerBox2D3_SetWorkerCount(options.workers);
+#endif
+		}
+		int status = RunScenes(&options);
+		TaskSystem_Destroy(options.config.overrides.tasks);
+		return status;
 	}
 	FILE* out = OpenOutput(options.csvPath);
 	if (out == NULL)

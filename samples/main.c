@@ -11,6 +11,7 @@
 #include "catalogue.h"
 #include "render.h"
 #include "scene_file.h"
+#include "task_system.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -31,6 +32,7 @@ typedef struct Options
 	const char* csvPath;
 	const char* sheetPath;
 	int frames;
+	int workers; ///< --workers N: a task system of N workers
 	bool viewGiven;
 	tbAABB view;
 	SceneOverrides overrides;
@@ -55,7 +57,7 @@ static void PrintUsage(void)
 		   "  tumble run SCENE [--steps N] [--png DIR] [--every K] [--size WxH] [--csv FILE]\n"
 		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                   [--toi off|quadratic|ca] [--solver baumgarte|ngs|soft] [--substeps N]\n"
-		   "                   [--iterations N] [--scalar-solver] [--no-recycle] [--sheet FILE.png] [--frames N] [--contacts]\n"
+		   "                   [--iterations N] [--scalar-solver] [--no-recycle] [--workers N] [--sheet FILE.png] [--frames N] [--contacts]\n"
 		   "                   [--aabbs] [--tree]\n"
 		   "  tumble export SCENE\n"
 		   "  tumble sheet SCENE --out FILE.png [--frames N] [run options]\n"
@@ -193,6 +195,10 @@ static int ParseValueOption(Options* options, const char* flag, const char* valu
 	else if (strcmp(flag, "--frames") == 0)
 	{
 		ok = ParsePositiveInt(value, &options->frames);
+	}
+	else if (strcmp(flag, "--workers") == 0)
+	{
+		ok = ParsePositiveInt(value, &options->workers) && options->workers <= TB_MAX_WORKERS;
 	}
 	else
 	{
@@ -514,7 +520,14 @@ static int RunScene(const char* name, const Options* options, bool summary)
 	run.interactive = isatty(fileno(stderr)) != 0;
 	run.steps = options->steps >= 0 ? options->steps : scene->steps;
 	run.subSteps = options->overrides.subSteps > 0 ? options->overrides.subSteps : scene->subSteps;
-	run.world = Scene_BuildWorld(scene, &options->overrides);
+	SceneOverrides overrides = options->overrides;
+	overrides.tasks = options->workers > 1 ? TaskSystem_Create(options->workers) : NULL;
+	if (options->workers > 1 && overrides.tasks == NULL)
+	{
+		Scene_Destroy(scene);
+		return Fail("--workers %d: could not start the threads", options->workers);
+	}
+	run.world = Scene_BuildWorld(scene, &overrides);
 	bool ok = TB_IS_NON_NULL(run.world.worldId);
 	if (ok == false)
 	{
@@ -529,6 +542,7 @@ static int RunScene(const char* name, const Options* options, bool summary)
 		PrintSummary(&run, name);
 	}
 	SceneWorld_Destroy(&run.world);
+	TaskSystem_Destroy(overrides.tasks);
 	Scene_Destroy(scene);
 	return ok ? 0 : 1;
 }

@@ -1,5 +1,6 @@
 // Scene model: construction, conversion to a world, and whole-world measures for summaries.
 #include "scene.h"
+#include "task_system.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -329,6 +330,13 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 		if (overrides->noRecycle)
 		{
 			def.enableManifoldRecycling = false;
+		}
+		if (overrides->tasks != NULL)
+		{
+			def.workerCount = TaskSystem_WorkerCount(overrides->tasks);
+			def.enqueueTask = TaskSystem_Enqueue;
+			def.finishTask = TaskSystem_Finish;
+			def.userTaskContext = overrides->tasks;
 		}
 	}
 	return def;

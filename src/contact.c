@@ -5,6 +5,7 @@
 // tbSpeculativeMargin), or, for a touching pair that barely moved since, carries the last one
 // along (tbRecycleManifold), carries impulses over by feature id for warm starting, and reports
 // begin/end events when a point comes within the fixed TB_SPECULATIVE_DISTANCE.
+#include "task.h"
 #include "world.h"
 
 #include "sort.h"
@@ -211,6 +212,18 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 /// Should a broad-phase pair become a contact? Same body, no dynamic body (unless one shape is a
 /// sensor: a kinematic door or lift passing a static or kinematic sensor is reported), filtered
 /// out, or an existing contact: no. Static proxies never pair with each other.
+/// What the narrow phase of one contact found (tbCollideContact), acted on in contact order.
+enum tbCollideResult
+{
+	tb_collideDestroy = 0x01,	 ///< the fat boxes no longer overlap
+	tb_collideBegan = 0x02,		 ///< manifold points appeared: wake both bodies
+	tb_collideBeginEvent = 0x04, ///< within the begin-touch distance now
+	tb_collideEndEvent = 0x08,	 ///< no longer
+	tb_collideRecycled = 0x10,
+	tb_collideGJK = 0x20,
+	tb_collideSAT = 0x40,
+};
+
 static bool tbIsSegmentKind(tbShapeType type)
 {
 	return type == tb_segmentShape || type == tb_chainSegmentShape;
@@ -507,8 +520,8 @@ static bool tbHasMaterialFeatures(const tbShape* shape)
 
 /// The narrow phase proper: a new manifold from the shapes, anchors, impulses carried over by
 /// feature id, and (for touching non-sensor contacts) the base for later recycling.
-static void tbComputeManifold(tbWorld* world, tbContact* contact, const tbShape* a, const tbShape* b,
-							  const tbBody* bodyA, const tbBody* bodyB, float margin)
+static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, const tbShape* a, const tbShape* b,
+								  const tbBody* bodyA, const tbBody* bodyB, float margin)
 {
 	tbManifold old = contact->manifold;
 	tbNarrowPhaseMethod method = world->def.narrowPhase;
@@ -518,14 +531,14 @@ static void tbComputeManifold(tbWorld* world, tbContact* contact, const tbShape*
 	if (tbAABB_Overlaps(tbAABB_Fatten(a->aabb, margin), b->aabb) == false)
 	{
 		contact->manifold.pointCount = 0;
-		return;
+		return 0;
 	}
 	contact->manifold =
 		tbCollideShapesWithMargin(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin);
+	uint32_t result = 0;
 	if (a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape)
 	{
-		world->counters.gjkManifolds += method == tb_narrowPhaseGJK ? 1 : 0;
-		world->counters.satManifolds += method == tb_narrowPhaseGJK ? 0 : 1;
+		result = method == tb_narrowPhaseGJK ? tb_collideGJK : tb_collideSAT;
 	}
 	tbManifold* m = &contact->manifold;
 	for (int i = 0; i < m->pointCount; ++i)
@@ -542,6 +555,7 @@ static void tbComputeManifold(tbWorld* world, tbContact* contact, const tbShape*
 	{
 		tbStoreManifoldBase(contact, bodyA->transform, bodyB->transform, margin);
 	}
+	return result;
 }
 
 /// The user's pre-solve callback on a touching contact (tbPreSolveFcn). What it may do is bounded:
@@ -574,7 +588,9 @@ static void tbCallPreSolve(tbWorld* world, tbContact* contact)
 	}
 }
 
-int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
+/// The narrow phase of one contact, writing only the contact (safe on any worker): returns
+/// tbCollideResult flags for the caller to act on in contact order.
+static uint32_t tbCollideContact(tbWorld* world, tbContact* contact)
 {
 	const tbShape* a = world->shapes + contact->shapeIdA;
 	const tbShape* b = world->shapes + contact->shapeIdB;
@@ -583,13 +599,14 @@ int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 	bool isSensor = (contact->flags & tb_contactSensor) != 0;
 	// Sensors only ask whether the shapes overlap: the fixed distance is plenty.
 	float margin = isSensor ? TB_SPECULATIVE_DISTANCE : tbSpeculativeMargin(world, bodyA, bodyB);
+	uint32_t result = 0;
 	if (world->def.enableManifoldRecycling && tbRecycleManifold(contact, bodyA, bodyB, margin))
 	{
-		world->counters.recycledManifolds += 1;
+		result |= tb_collideRecycled;
 	}
 	else
 	{
-		tbComputeManifold(world, contact, a, b, bodyA, bodyB, margin);
+		result |= tbComputeManifold(world, contact, a, b, bodyA, bodyB, margin);
 	}
 	if ((contact->flags & tb_contactEnablePreSolve) != 0 && isSensor == false && world->preSolveFcn != NULL &&
 		contact->manifold.pointCount > 0 && (bodyA->type == tb_dynamicBody || bodyB->type == tb_dynamicBody))
@@ -603,10 +620,27 @@ int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 	bool wasReported = (contact->flags & tb_contactReported) != 0;
 	contact->flags &= ~(uint32_t)(tb_contactTouching | tb_contactReported);
 	contact->flags |= (touching ? (uint32_t)tb_contactTouching : 0u) | (reported ? (uint32_t)tb_contactReported : 0u);
-	*beganTouching = touching && wasTouching == false;
 	contact->touchingSteps = touching ? (uint16_t)(contact->touchingSteps + (contact->touchingSteps < UINT16_MAX)) : 0u;
 	contact->hitSpeed = touching ? contact->hitSpeed : 0.0f; // an impact that never touched is dropped
-	return reported == wasReported ? 0 : (reported ? 1 : -1);
+	result |= touching && wasTouching == false ? tb_collideBegan : 0u;
+	result |= reported != wasReported ? (reported ? tb_collideBeginEvent : tb_collideEndEvent) : 0u;
+	return result;
+}
+
+/// Counters of one contact's narrow phase (on the caller, after the workers).
+static void tbCountCollideResult(tbWorld* world, uint32_t result)
+{
+	world->counters.recycledManifolds += (result & tb_collideRecycled) != 0 ? 1 : 0;
+	world->counters.gjkManifolds += (result & tb_collideGJK) != 0 ? 1 : 0;
+	world->counters.satManifolds += (result & tb_collideSAT) != 0 ? 1 : 0;
+}
+
+int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
+{
+	uint32_t result = tbCollideContact(world, contact);
+	tbCountCollideResult(world, result);
+	*beganTouching = (result & tb_collideBegan) != 0;
+	return (result & tb_collideBeginEvent) != 0 ? 1 : ((result & tb_collideEndEvent) != 0 ? -1 : 0);
 }
 
 static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
@@ -675,43 +709,61 @@ static void tbGatherAwakeContacts(tbWorld* world)
 	tbSortIndices(world->stepContacts, world->stepContactCount, world->islandStack);
 }
 
+/// Collide task: the narrow phase of stepContacts[start..end), results into world->collideResults.
+static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
+{
+	(void)workerIndex;
+	tbWorld* world = context;
+	const tbBroadPhase* bp = &world->broadPhase;
+	for (int i = startIndex; i < endIndex; ++i)
+	{
+		tbContact* contact = world->contacts + world->stepContacts[i];
+		const tbShape* a = world->shapes + contact->shapeIdA;
+		const tbShape* b = world->shapes + contact->shapeIdB;
+		bool overlap = tbBroadPhase_TestOverlap(bp, a->proxyKey, b->proxyKey);
+		world->collideResults[i] = (uint8_t)(overlap ? tbCollideContact(world, contact) : tb_collideDestroy);
+	}
+}
+
+/// The narrow phase over every awake contact, on the workers; then, on the caller and in contact
+/// order, what changes the world: contacts whose fat boxes parted are destroyed, touching ones
+/// listed, bodies woken, events appended. The result is the same for any number of workers.
 void tbCollideStage(tbWorld* world)
 {
 	tbGatherAwakeContacts(world);
-	const tbBroadPhase* bp = &world->broadPhase;
+	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
+	tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
 	int kept = 0;
 	world->touchingContactCount = 0;
 	for (int i = 0; i < world->stepContactCount; ++i)
 	{
 		int contactId = world->stepContacts[i];
 		tbContact* contact = world->contacts + contactId;
-		const tbShape* a = world->shapes + contact->shapeIdA;
-		const tbShape* b = world->shapes + contact->shapeIdB;
-		if (tbBroadPhase_TestOverlap(bp, a->proxyKey, b->proxyKey) == false)
+		uint32_t result = world->collideResults[i];
+		if (result & tb_collideDestroy)
 		{
 			tbDestroyContact(world, contactId, false);
 			continue;
 		}
 		world->stepContacts[kept++] = contactId;
-		bool beganTouching = false;
-		int change = tbUpdateContact(world, contact, &beganTouching);
+		tbCountCollideResult(world, result);
 		if ((contact->flags & (tb_contactTouching | tb_contactSensor)) == tb_contactTouching)
 		{
 			TB_ARRAY_PUSH(world->touchingContacts, world->touchingContactCount, world->touchingContactCapacity,
 						  contactId);
 		}
-		if (beganTouching)
+		if (result & tb_collideBegan)
 		{
 			// New manifold points (speculative ones too) wake both bodies: the sleeping one joins
 			// the awake island, so the solver never sees a contact with a sleeping body.
-			tbWakeBody(world, world->bodies + a->bodyId);
-			tbWakeBody(world, world->bodies + b->bodyId);
+			tbWakeBody(world, world->bodies + world->shapes[contact->shapeIdA].bodyId);
+			tbWakeBody(world, world->bodies + world->shapes[contact->shapeIdB].bodyId);
 		}
-		if (change > 0)
+		if (result & tb_collideBeginEvent)
 		{
 			tbPushBeginEvent(world, contact);
 		}
-		else if (change < 0)
+		else if (result & tb_collideEndEvent)
 		{
 			tbPushEndEvent(world, contact);
 		}

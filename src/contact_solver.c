@@ -33,10 +33,16 @@
 // "Modeling and Solving Constraints", GDC 2009; "Soft Constraints", GDC 2011;
 // "Understanding Constraints", GDC 2014; "Solver2D" blog post, 2024.
 #include "contact_solver.h"
+#include "task.h"
 
 #include "integrator.h"
 
 #include "tumble/constants.h"
+
+#include <stdatomic.h>
+
+/// Contacts per task range when the step runs on workers.
+#define TB_CONTACTS_PER_TASK 256
 
 // The solver index of a body, or `staticIndex` for bodies that are not in the awake set (static,
 // asleep, or a stale index). The check against awakeBodies makes a stale solverIndex harmless.
@@ -194,7 +200,6 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 	c->friction = contact->friction;
 	c->restitution = contact->restitution;
 	c->pointCount = manifold->pointCount;
-	context->restitutionCount += c->restitution != 0.0f ? 1 : 0;
 
 	const tbSolverBody* sA = context->bodies + c->indexA;
 	const tbSolverBody* sB = context->bodies + c->indexB;
@@ -244,15 +249,39 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 // Contacts are read in contact-id order (memory order) and each constraint is written to its
 // place in the solve order: the loads stream and only the stores scatter (island.c keeps both
 // orders). Walking the solve order instead waited on a cache miss per contact.
-void tbPrepareContacts(tbStepContext* context)
+typedef struct tbPrepareTaskContext
 {
+	tbStepContext* context;
+	atomic_int restitutionCount;
+} tbPrepareTaskContext;
+
+static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	tbPrepareTaskContext* task = taskContext;
+	tbStepContext* context = task->context;
 	tbWorld* world = context->world;
 	const int* contactIds = world->solverContactsById;
 	const int* slots = world->solverSlots;
-	for (int i = 0; i < context->constraintCount; ++i)
+	int restitutionCount = 0;
+	for (int i = start; i < end; ++i)
 	{
-		tbPrepareConstraint(context, world->contacts + contactIds[i], context->constraints + slots[i]);
+		tbContactConstraint* c = context->constraints + slots[i];
+		tbPrepareConstraint(context, world->contacts + contactIds[i], c);
+		restitutionCount += c->restitution != 0.0f ? 1 : 0;
 	}
+	atomic_fetch_add_explicit(&task->restitutionCount, restitutionCount, memory_order_relaxed);
+}
+
+// Each contact writes its own constraint (and its manifold's approach speeds): ranges of contacts
+// may go to workers; only the count of bouncing ones is shared (an integer sum, in any order).
+void tbPrepareContacts(tbStepContext* context)
+{
+	tbPrepareTaskContext task;
+	task.context = context;
+	atomic_init(&task.restitutionCount, 0);
+	tbParallelFor(context->world, tbPrepareContactsTask, context->constraintCount, TB_CONTACTS_PER_TASK, &task);
+	context->restitutionCount = atomic_load_explicit(&task.restitutionCount, memory_order_relaxed);
 }
 
 // Apply impulse P at anchors rA, rB: A receives −P, B receives +P.
@@ -290,23 +319,28 @@ static void tbZeroImpulses(tbContactConstraint* c)
 
 // Without warm starting each sub-step starts from zero accumulated impulse instead. With the wide
 // solver, the coloured constraints first, then the overflow (the solve order, constraint_graph.c).
+void tbWarmStartOverflow(tbStepContext* context)
+{
+	for (int i = 0; i < context->overflowCount; ++i)
+	{
+		tbContactConstraint* c = context->constraints + context->overflowConstraints[i];
+		if (context->enableWarmStarting)
+		{
+			tbWarmStartConstraint(context->bodies, c);
+		}
+		else
+		{
+			tbZeroImpulses(c);
+		}
+	}
+}
+
 void tbWarmStartContacts(tbStepContext* context)
 {
 	if (context->wideConstraints != NULL)
 	{
 		tbWarmStartContactsWide(context);
-		for (int i = 0; i < context->overflowCount; ++i)
-		{
-			tbContactConstraint* c = context->constraints + context->overflowConstraints[i];
-			if (context->enableWarmStarting)
-			{
-				tbWarmStartConstraint(context->bodies, c);
-			}
-			else
-			{
-				tbZeroImpulses(c);
-			}
-		}
+		tbWarmStartOverflow(context);
 		return;
 	}
 	for (int i = 0; i < context->constraintCount; ++i)
@@ -455,6 +489,12 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 			break;                                                                                                     \
 	}
 
+void tbSolveOverflow(tbStepContext* context, tbBiasPolicy policy)
+{
+	tbSolverBody* bodies = context->bodies;
+	TB_SOLVE_LOOPS(context->overflowCount, context->overflowConstraints[i])
+}
+
 void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy)
 {
 	tbSolverBody* bodies = context->bodies;
@@ -521,13 +561,15 @@ void tbApplyRestitution(tbStepContext* context)
 // Impulses go back to the manifolds for the next step's warm start, walking the contacts in
 // contact-id order. A constraint solved in a wide lane is read from its lane (its scalar copy
 // holds the impulses of before the solve); the others from the scalar constraint.
-void tbStoreImpulses(tbStepContext* context)
+static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* taskContext)
 {
+	(void)workerIndex;
+	tbStepContext* context = taskContext;
 	tbWorld* world = context->world;
 	const int* contactIds = world->solverContactsById;
 	const int* slots = world->solverSlots;
 	const int* wideLocation = context->wideLocation;
-	for (int i = 0; i < context->constraintCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		int index = slots[i];
 		tbManifold* manifold = &world->contacts[contactIds[i]].manifold;
@@ -547,4 +589,10 @@ void tbStoreImpulses(tbStepContext* context)
 			mp->maxNormalImpulse = cp->maxNormalImpulse;
 		}
 	}
+}
+
+// Each contact's impulses back into its manifold (ranges of contacts on workers).
+void tbStoreImpulses(tbStepContext* context)
+{
+	tbParallelFor(context->world, tbStoreImpulsesTask, context->constraintCount, TB_CONTACTS_PER_TASK, context);
 }

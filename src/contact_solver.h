@@ -25,6 +25,14 @@ void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex);
 void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactConstraint* c, int constraintIndex);
 void tbWarmStartContactsWide(tbStepContext* context);
 void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy);
+/// Blocks [start, end) of the wide constraints (one colour's, for a worker). `shared`: other
+/// workers solve other blocks of the colour at the same time, so bodies that do not move are not
+/// written (the same result, without two threads storing to one body).
+void tbWarmStartWideRange(tbStepContext* context, int start, int end, bool shared);
+void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, int end, bool shared);
+/// The wide solver's overflow (constraints that found no colour), one at a time after the colours.
+void tbWarmStartOverflow(tbStepContext* context);
+void tbSolveOverflow(tbStepContext* context, tbBiasPolicy policy);
 /// Copy the impulses of the lane at `location` into manifold points.
 void tbLoadWideImpulses(const tbStepContext* context, int location, int pointCount, tbManifoldPoint* points);
 /// Copy a constraint's impulses from its lane to the scalar constraint, which holds them from then on.

@@ -149,6 +149,33 @@ static inline void tbScatterVelocities(tbSolverBody* bodies, const int index[4],
 					  tbVelocityRow(bodies, index[2]), tbVelocityRow(bodies, index[3]), rows);
 }
 
+// The same, for a solve spread over workers: lanes of bodies that do not move (inverse mass and
+// inertia zero: the static stand-in, kinematic bodies) are not written, since several blocks of one
+// colour may hold them. The values skipped are the ones read, so the result is the same.
+static inline void tbScatterMovingVelocities(tbSolverBody* bodies, const int index[4], const tbWideBody* in,
+											 tbFloatW invMass, tbFloatW invI)
+{
+	int mask = tbNonZeroMaskW(invMass, invI);
+	tbFloatW rows[4] = {in->vx, in->vy, in->w, in->padding};
+	tbTransposeStoreMaskedW(tbVelocityRow(bodies, index[0]), tbVelocityRow(bodies, index[1]),
+							tbVelocityRow(bodies, index[2]), tbVelocityRow(bodies, index[3]), rows, mask);
+}
+
+static inline void tbScatterPair(tbSolverBody* bodies, const tbWideContactConstraint* c, const tbWideBody* a,
+								 const tbWideBody* b, bool shared)
+{
+	if (shared)
+	{
+		tbScatterMovingVelocities(bodies, c->indexA, a, c->invMassA, c->invIA);
+		tbScatterMovingVelocities(bodies, c->indexB, b, c->invMassB, c->invIB);
+	}
+	else
+	{
+		tbScatterVelocities(bodies, c->indexA, a);
+		tbScatterVelocities(bodies, c->indexB, b);
+	}
+}
+
 // Apply the impulse (px, py) at anchors rA, rB: A receives −P, B receives +P.
 static inline void tbApplyImpulseW(tbWideBody* a, tbWideBody* b, const tbWideContactConstraint* c, tbFloatW rAx,
 								   tbFloatW rAy, tbFloatW rBx, tbFloatW rBy, tbFloatW px, tbFloatW py)
@@ -174,15 +201,10 @@ static void tbZeroWideImpulses(tbStepContext* context)
 	}
 }
 
-void tbWarmStartContactsWide(tbStepContext* context)
+void tbWarmStartWideRange(tbStepContext* context, int start, int end, bool shared)
 {
-	if (context->enableWarmStarting == false)
-	{
-		tbZeroWideImpulses(context);
-		return;
-	}
 	tbSolverBody* bodies = context->bodies;
-	for (int i = 0; i < context->wideCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		const tbWideContactConstraint* c = context->wideConstraints + i;
 		tbWideBody a, b;
@@ -198,9 +220,18 @@ void tbWarmStartContactsWide(tbStepContext* context)
 			tbFloatW py = tbMulAddPairW(cp->normalImpulse, c->normalY, cp->tangentImpulse, ty);
 			tbApplyImpulseW(&a, &b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, px, py);
 		}
-		tbScatterVelocities(bodies, c->indexA, &a);
-		tbScatterVelocities(bodies, c->indexB, &b);
+		tbScatterPair(bodies, c, &a, &b, shared);
 	}
+}
+
+void tbWarmStartContactsWide(tbStepContext* context)
+{
+	if (context->enableWarmStarting == false)
+	{
+		tbZeroWideImpulses(context);
+		return;
+	}
+	tbWarmStartWideRange(context, 0, context->wideCount, false);
 }
 
 // Constants of one solve pass, splatted once.
@@ -304,7 +335,7 @@ static inline void tbSolveFrictionW(tbWideContactPoint* cp, const tbWideContactC
 
 // Normal impulses first, then friction against the fresh normal impulses (as the scalar solver).
 static inline void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bodies, const tbWidePass* pass,
-									tbBiasPolicy policy)
+									tbBiasPolicy policy, bool shared)
 {
 	tbWideBody a = {0}, b = {0};
 	tbGatherVelocities(bodies, c->indexA, &a);
@@ -322,17 +353,16 @@ static inline void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bo
 	tbSolveFrictionW(c->points + 0, c, &a, &b, tx, ty);
 	tbSolveFrictionW(c->points + 1, c, &a, &b, tx, ty);
 
-	tbScatterVelocities(bodies, c->indexA, &a);
-	tbScatterVelocities(bodies, c->indexB, &b);
+	tbScatterPair(bodies, c, &a, &b, shared);
 }
 
 #define TB_SOLVE_WIDE_LOOP(POLICY)                                                                                     \
-	for (int i = 0; i < context->wideCount; ++i)                                                                       \
+	for (int i = start; i < end; ++i)                                                                                  \
 	{                                                                                                                  \
-		tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY);                               \
+		tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY, shared);                         \
 	}
 
-void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy)
+void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, int end, bool shared)
 {
 	tbWidePass pass;
 	pass.inv_h = tbSplatW(context->inv_h);
@@ -357,6 +387,11 @@ void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy)
 			TB_SOLVE_WIDE_LOOP(tb_biasSpeculative)
 			break;
 	}
+}
+
+void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy)
+{
+	tbSolveWideRange(context, policy, 0, context->wideCount, false);
 }
 
 #undef TB_SOLVE_WIDE_LOOP

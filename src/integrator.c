@@ -59,7 +59,12 @@ void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
 
 void tbIntegrateVelocities(tbStepContext* context)
 {
-	for (int i = 0; i < context->bodyCount; ++i)
+	tbIntegrateVelocitiesRange(context, 0, context->bodyCount);
+}
+
+void tbIntegrateVelocitiesRange(tbStepContext* context, int start, int end)
+{
+	for (int i = start; i < end; ++i)
 	{
 		tbSolverBody* sb = context->bodies + i;
 		const tbSolverMotion* m = context->motions + i;
@@ -71,8 +76,13 @@ void tbIntegrateVelocities(tbStepContext* context)
 
 void tbIntegratePositions(tbStepContext* context)
 {
+	tbIntegratePositionsRange(context, 0, context->bodyCount);
+}
+
+void tbIntegratePositionsRange(tbStepContext* context, int start, int end)
+{
 	float h = context->h;
-	for (int i = 0; i < context->bodyCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		tbSolverBody* sb = context->bodies + i;
 		sb->deltaPosition = tbMulAdd(sb->deltaPosition, h, sb->linearVelocity);

@@ -12,3 +12,6 @@ void tbIntegrateVelocities(tbStepContext* context);
 
 /// Position update of one sub-step: Δp += h·v, Δq ← integrate(Δq, h·ω).
 void tbIntegratePositions(tbStepContext* context);
+/// Bodies [start, end) only (a worker's share).
+void tbIntegrateVelocitiesRange(tbStepContext* context, int start, int end);
+void tbIntegratePositionsRange(tbStepContext* context, int start, int end);

@@ -88,6 +88,38 @@ static inline void tbTransposeStoreW(void* row0, void* row1, void* row2, void* r
 	_mm_storeu_ps((float*)row3, r3);
 }
 
+/// As tbTransposeStoreW, storing row k only where bit k of `mask` is set (the others are bodies
+/// that do not move: several workers may hold them, so nobody writes them).
+static inline void tbTransposeStoreMaskedW(void* row0, void* row1, void* row2, void* row3, const tbFloatW in[4],
+										   int mask)
+{
+	__m128 r0 = in[0], r1 = in[1], r2 = in[2], r3 = in[3];
+	_MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+	if (mask & 1)
+	{
+		_mm_storeu_ps((float*)row0, r0);
+	}
+	if (mask & 2)
+	{
+		_mm_storeu_ps((float*)row1, r1);
+	}
+	if (mask & 4)
+	{
+		_mm_storeu_ps((float*)row2, r2);
+	}
+	if (mask & 8)
+	{
+		_mm_storeu_ps((float*)row3, r3);
+	}
+}
+
+/// Bit k set where lane k of a or of b is not zero.
+static inline int tbNonZeroMaskW(tbFloatW a, tbFloatW b)
+{
+	__m128 zero = _mm_setzero_ps();
+	return _mm_movemask_ps(_mm_or_ps(_mm_cmpneq_ps(a, zero), _mm_cmpneq_ps(b, zero)));
+}
+
 #else // four plain floats: the portable reference, same results lane by lane
 
 typedef struct tbFloatW
@@ -170,6 +202,30 @@ static inline void tbTransposeStoreW(void* row0, void* row1, void* row2, void* r
 		float row[4] = {in[0].v[i], in[1].v[i], in[2].v[i], in[3].v[i]};
 		memcpy(rows[i], row, sizeof(row));
 	}
+}
+
+static inline void tbTransposeStoreMaskedW(void* row0, void* row1, void* row2, void* row3, const tbFloatW in[4],
+										   int mask)
+{
+	void* rows[4] = {row0, row1, row2, row3};
+	for (int i = 0; i < 4; ++i)
+	{
+		if (mask & (1 << i))
+		{
+			float row[4] = {in[0].v[i], in[1].v[i], in[2].v[i], in[3].v[i]};
+			memcpy(rows[i], row, sizeof(row));
+		}
+	}
+}
+
+static inline int tbNonZeroMaskW(tbFloatW a, tbFloatW b)
+{
+	int mask = 0;
+	for (int i = 0; i < 4; ++i)
+	{
+		mask |= (a.v[i] != 0.0f || b.v[i] != 0.0f) ? 1 << i : 0;
+	}
+	return mask;
 }
 
 #endif

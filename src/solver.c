@@ -19,10 +19,15 @@
 // restitution see) and after each velocity integration.
 #include "joint.h"
 #include "solver.h"
+#include "solver_workers.h"
+#include "task.h"
 
 #include "tumble/constants.h"
 
 #include <string.h>
+
+/// Bodies per task range when the step runs on workers (a range must pay for its hand-over).
+#define TB_BODIES_PER_TASK 256
 
 // The per-step arrays, from the step arena (arena.h), carved in 32-byte aligned pieces.
 static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraintCount)
@@ -39,12 +44,15 @@ static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraint
 }
 
 
-static void tbGatherBodies(tbStepContext* context)
+/// Solver bodies [start, end) from the awake bodies (a task: each body writes its own).
+static void tbGatherBodiesTask(int start, int end, uint32_t workerIndex, void* taskContext)
 {
+	(void)workerIndex;
+	tbStepContext* context = taskContext;
 	tbWorld* world = context->world;
 	tbVec2 gravity = world->def.gravity;
 	float h = context->h;
-	for (int i = 0; i < context->bodyCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		tbBody* body = world->bodies + world->awakeBodies[i];
 		body->solverIndex = i;
@@ -77,7 +85,11 @@ static void tbGatherBodies(tbStepContext* context)
 			m->angularDamping = 1.0f;
 		}
 	}
+}
 
+static void tbGatherBodies(tbStepContext* context)
+{
+	tbParallelFor(context->world, tbGatherBodiesTask, context->bodyCount, TB_BODIES_PER_TASK, context);
 	// The stand-in for static and non-awake bodies: at rest, never moves.
 	tbSolverBody* fixed = context->bodies + context->bodyCount;
 	memset(fixed, 0, sizeof(*fixed));
@@ -85,10 +97,13 @@ static void tbGatherBodies(tbStepContext* context)
 }
 
 
-static void tbScatterBodies(tbStepContext* context)
+/// The solved state back into bodies [start, end) (a task).
+static void tbScatterBodiesTask(int start, int end, uint32_t workerIndex, void* taskContext)
 {
+	(void)workerIndex;
+	tbStepContext* context = taskContext;
 	tbWorld* world = context->world;
-	for (int i = 0; i < context->bodyCount; ++i)
+	for (int i = start; i < end; ++i)
 	{
 		tbBody* body = world->bodies + world->awakeBodies[i];
 		const tbSolverBody* sb = context->bodies + i;
@@ -101,6 +116,11 @@ static void tbScatterBodies(tbStepContext* context)
 		body->force = tb_vec2_zero;
 		body->torque = 0.0f;
 	}
+}
+
+static void tbScatterBodies(tbStepContext* context)
+{
+	tbParallelFor(context->world, tbScatterBodiesTask, context->bodyCount, TB_BODIES_PER_TASK, context);
 }
 
 static void tbPrepareMethod(tbStepContext* context)
@@ -167,12 +187,15 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 		tbColorConstraints(&context); // NGS has its own solver loops (solver_ngs.c): scalar only
 	}
 
-	for (int i = 0; i < subStepCount; ++i)
+	if (tbSolveSubStepsOnWorkers(&context) == false)
 	{
-		tbIntegrateVelocities(&context);
-		tbWarmStartJoints(&context);
-		tbWarmStartContacts(&context);
-		tbMethodSubStep(&context);
+		for (int i = 0; i < subStepCount; ++i)
+		{
+			tbIntegrateVelocities(&context);
+			tbWarmStartJoints(&context);
+			tbWarmStartContacts(&context);
+			tbMethodSubStep(&context);
+		}
 	}
 
 	tbApplyRestitution(&context);

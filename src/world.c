@@ -44,6 +44,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.enableJointTrees = true;
 	def.enableWarmStarting = true;
 	def.enableManifoldRecycling = true;
+	def.workerCount = 1;
 	def.internalValue = TB_WORLD_DEF_MAGIC;
 	return def;
 }
@@ -114,6 +115,27 @@ static bool tbCheckMaximumSpeed(const char* f, float speed)
 	return true;
 }
 
+static bool tbCheckWorkers(const tbWorldDef* def, const char* f)
+{
+	if (def->workerCount < 1 || def->workerCount > TB_MAX_WORKERS)
+	{
+		tbReportError(f, "def->workerCount is %d; pass 1 to %d", def->workerCount, TB_MAX_WORKERS);
+		return false;
+	}
+	if ((def->enqueueTask == NULL) != (def->finishTask == NULL))
+	{
+		tbReportError(f, "def->enqueueTask and def->finishTask must be given together (or neither)");
+		return false;
+	}
+	if (def->workerCount > 1 && def->enqueueTask == NULL)
+	{
+		tbReportError(f, "def->workerCount is %d without task callbacks; set enqueueTask and finishTask or use 1",
+					  def->workerCount);
+		return false;
+	}
+	return true;
+}
+
 static bool tbCheckWorldDef(const tbWorldDef* def)
 {
 	const char* f = "tbCreateWorld";
@@ -133,7 +155,7 @@ static bool tbCheckWorldDef(const tbWorldDef* def)
 		   tbCheckPositive(f, "def->contactHertz", def->contactHertz) &&
 		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
 		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
-		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f);
+		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f) && tbCheckWorkers(def, f);
 }
 
 /// Auto starts with the dynamic tree: it costs nothing for sleeping and static bodies, handles any
@@ -260,6 +282,7 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->contactFree, w->contactFreeCapacity);
 	TB_ARRAY_FREE(w->awakeBodies, w->awakeBodyCapacity);
 	TB_ARRAY_FREE(w->stepContacts, w->stepContactCapacity);
+	TB_ARRAY_FREE(w->collideResults, w->collideResultCapacity);
 	TB_ARRAY_FREE(w->solverContacts, w->solverContactCapacity);
 	TB_ARRAY_FREE(w->solverContactsById, w->solverContactsByIdCapacity);
 	TB_ARRAY_FREE(w->solverSlots, w->solverSlotCapacity);

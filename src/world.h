@@ -213,6 +213,10 @@ typedef struct tbWorld
 	int* contactFree;
 	int contactFreeCount, contactFreeCapacity;
 
+	// Narrow-phase results of the contacts in stepContacts (contact.c, tbCollideStage).
+	uint8_t* collideResults;
+	int collideResultCapacity;
+
 	// Chains (chain.c): a pool; each chain owns its segment shapes' ids and its materials.
 	struct tbChain* chains;
 	int chainCapacity;

@@ -85,6 +85,9 @@
 /// Largest number of worlds that may exist at once.
 #define TB_MAX_WORLDS 128
 
+/// Most workers a world uses (tbWorldDef::workerCount): per-worker counters and buffers are sized by it.
+#define TB_MAX_WORKERS 64
+
 /// Most points tbDecomposePolygon takes: 1,024 (its checks and ear clipping cost O(n²); a longer
 /// outline is terrain, for which segments or chains suit better).
 #define TB_MAX_DECOMPOSE_POINTS 1024

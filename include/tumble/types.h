@@ -66,6 +66,22 @@ typedef void tbPreSolveFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* m
 /// (from A to B) at the time of impact; return false to let the body pass.
 typedef bool tbPreContinuousFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbVec2 point, tbVec2 normal, void* context);
 
+/// Tasks (Box2D v3.2's grammar): the game's task system runs parts of the step on its worker
+/// threads. A task covers items [startIndex, endIndex); workerIndex is in [0, workerCount) and no
+/// two items running at the same time share one.
+typedef void tbTaskCallback(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext);
+
+/// Run `task` over items [0, itemCount) split into ranges of at least minRange items, on up to
+/// workerCount workers (the calling thread may be one of them), and return a handle for
+/// finishTask; or run it all before returning and return NULL. The world's solver enqueues
+/// workerCount − 1 items that must run at the same time as the caller (they wait on each other):
+/// a system that has at least workerCount − 1 threads besides the caller does that.
+typedef void* tbEnqueueTaskCallback(tbTaskCallback* task, int itemCount, int minRange, void* taskContext,
+									void* userContext);
+
+/// Wait until a task from enqueueTask has run every item.
+typedef void tbFinishTaskCallback(void* userTask, void* userContext);
+
 /// World definition: start from tbDefaultWorldDef().
 typedef struct tbWorldDef
 {
@@ -95,6 +111,10 @@ typedef struct tbWorldDef
 									///< its points and only update separations (contact.c). Default true
 	tbFrictionCallback* frictionCallback;
 	tbRestitutionCallback* restitutionCallback;
+	int workerCount;					///< 1 to TB_MAX_WORKERS, default 1; more needs both task callbacks
+	tbEnqueueTaskCallback* enqueueTask; ///< the game's task system, or NULL: the step runs on the caller
+	tbFinishTaskCallback* finishTask;
+	void* userTaskContext;
 	void* userData;
 	int internalValue; ///< set by tbDefaultWorldDef; checked to catch defs not made by it
 } tbWorldDef;

@@ -1,0 +1,203 @@
+// Reference task system (see task_system.h). Threads wait for a task by spinning briefly on its
+// generation counter (a step issues its tasks microseconds apart), then sleep on a condition
+// variable. Ranges are claimed with an atomic counter, so a range is run exactly once, by
+// whichever thread gets to it first; completions are counted to know when the task is done.
+#include "task_system.h"
+
+#include <pthread.h>
+#include <sched.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+
+#define TASK_SPIN_ROUNDS 4000
+
+typedef struct Task
+{
+	tbTaskCallback* callback;
+	void* context;
+	int itemCount;
+	int rangeSize;
+	int rangeCount;
+	atomic_int nextRange;
+	atomic_int doneRanges;
+} Task;
+
+typedef struct Thread
+{
+	TaskSystem* system;
+	pthread_t handle;
+	uint32_t workerIndex;
+} Thread;
+
+struct TaskSystem
+{
+	int workerCount;
+	Thread threads[TB_MAX_WORKERS];
+	int threadCount;
+	Task task;
+	atomic_uint generation; ///< incremented when a task is posted
+	atomic_bool quit;
+	pthread_mutex_t lock;
+	pthread_cond_t wake;
+};
+
+/// A hint to the processor that this is a spin-wait (frees the core's resources for the others).
+static inline void Pause(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+	__builtin_ia32_pause();
+#endif
+}
+
+/// Claim and run ranges of the current task until none is left.
+static void RunRanges(Task* task, uint32_t workerIndex)
+{
+	for (;;)
+	{
+		int range = atomic_fetch_add_explicit(&task->nextRange, 1, memory_order_acq_rel);
+		if (range >= task->rangeCount)
+		{
+			return;
+		}
+		int start = range * task->rangeSize;
+		int end = start + task->rangeSize < task->itemCount ? start + task->rangeSize : task->itemCount;
+		task->callback(start, end, workerIndex, task->context);
+		atomic_fetch_add_explicit(&task->doneRanges, 1, memory_order_acq_rel);
+	}
+}
+
+static unsigned WaitForTask(TaskSystem* system, unsigned seen)
+{
+	for (int i = 0; i < TASK_SPIN_ROUNDS; ++i)
+	{
+		unsigned now = atomic_load_explicit(&system->generation, memory_order_acquire);
+		if (now != seen || atomic_load_explicit(&system->quit, memory_order_acquire))
+		{
+			return now;
+		}
+		Pause();
+	}
+	pthread_mutex_lock(&system->lock);
+	unsigned now = atomic_load_explicit(&system->generation, memory_order_acquire);
+	while (now == seen && atomic_load_explicit(&system->quit, memory_order_acquire) == false)
+	{
+		pthread_cond_wait(&system->wake, &system->lock);
+		now = atomic_load_explicit(&system->generation, memory_order_acquire);
+	}
+	pthread_mutex_unlock(&system->lock);
+	return now;
+}
+
+static void* ThreadMain(void* argument)
+{
+	Thread* thread = argument;
+	TaskSystem* system = thread->system;
+	unsigned seen = atomic_load_explicit(&system->generation, memory_order_acquire);
+	for (;;)
+	{
+		seen = WaitForTask(system, seen);
+		if (atomic_load_explicit(&system->quit, memory_order_acquire))
+		{
+			return NULL;
+		}
+		RunRanges(&system->task, thread->workerIndex);
+	}
+}
+
+TaskSystem* TaskSystem_Create(int workerCount)
+{
+	if (workerCount < 1 || workerCount > TB_MAX_WORKERS)
+	{
+		return NULL;
+	}
+	TaskSystem* system = calloc(1, sizeof(TaskSystem));
+	if (system == NULL)
+	{
+		return NULL;
+	}
+	system->workerCount = workerCount;
+	atomic_init(&system->generation, 0u);
+	atomic_init(&system->quit, false);
+	atomic_init(&system->task.nextRange, 0);
+	atomic_init(&system->task.doneRanges, 0);
+	pthread_mutex_init(&system->lock, NULL);
+	pthread_cond_init(&system->wake, NULL);
+	for (int i = 0; i < workerCount - 1; ++i)
+	{
+		Thread* thread = system->threads + i;
+		thread->system = system;
+		thread->workerIndex = (uint32_t)(i + 1);
+		if (pthread_create(&thread->handle, NULL, ThreadMain, thread) != 0)
+		{
+			TaskSystem_Destroy(system);
+			return NULL;
+		}
+		system->threadCount += 1;
+	}
+	return system;
+}
+
+void TaskSystem_Destroy(TaskSystem* system)
+{
+	if (system == NULL)
+	{
+		return;
+	}
+	pthread_mutex_lock(&system->lock);
+	atomic_store_explicit(&system->quit, true, memory_order_release);
+	pthread_cond_broadcast(&system->wake);
+	pthread_mutex_unlock(&system->lock);
+	for (int i = 0; i < system->threadCount; ++i)
+	{
+		pthread_join(system->threads[i].handle, NULL);
+	}
+	pthread_cond_destroy(&system->wake);
+	pthread_mutex_destroy(&system->lock);
+	free(system);
+}
+
+int TaskSystem_WorkerCount(const TaskSystem* system)
+{
+	return system->workerCount;
+}
+
+void* TaskSystem_Enqueue(tbTaskCallback* callback, int itemCount, int minRange, void* taskContext, void* userContext)
+{
+	TaskSystem* system = userContext;
+	if (system->threadCount == 0 || itemCount <= 0)
+	{
+		if (itemCount > 0)
+		{
+			callback(0, itemCount, 0, taskContext);
+		}
+		return NULL;
+	}
+	// As many ranges as workers (at least minRange items each), so each worker takes one.
+	int workers = system->workerCount;
+	int rangeSize = (itemCount + workers - 1) / workers;
+	rangeSize = rangeSize < minRange ? minRange : rangeSize;
+	Task* task = &system->task;
+	task->callback = callback;
+	task->context = taskContext;
+	task->itemCount = itemCount;
+	task->rangeSize = rangeSize;
+	task->rangeCount = (itemCount + rangeSize - 1) / rangeSize;
+	atomic_store_explicit(&task->doneRanges, 0, memory_order_relaxed);
+	atomic_store_explicit(&task->nextRange, 0, memory_order_release); // publishes the fields above
+	pthread_mutex_lock(&system->lock);
+	atomic_fetch_add_explicit(&system->generation, 1u, memory_order_acq_rel);
+	pthread_cond_broadcast(&system->wake);
+	pthread_mutex_unlock(&system->lock);
+	return task;
+}
+
+void TaskSystem_Finish(void* userTask, void* userContext)
+{
+	(void)userContext;
+	Task* task = userTask;
+	RunRanges(task, 0);
+	while (atomic_load_explicit(&task->doneRanges, memory_order_acquire) < task->rangeCount)
+	{
+		sched_yield(); // the last ranges are running on other threads
+	}
+}

@@ -1,0 +1,281 @@
+// The soft step's sub-steps spread over the game's workers (tbWorldDef::workerCount > 1).
+//
+// The sub-steps are a fixed sequence of stages: integrate velocities, warm start, solve, integrate
+// positions, relax, each contact stage once per graph colour (constraint_graph.c). Within a stage
+// the units are independent: bodies, or blocks of one colour, which share no moving body. So a
+// stage's units may run on any worker in any order and the result is bit-identical to the serial
+// loop; between stages everyone waits (a colour reads what the previous one wrote).
+//
+// Synchronisation (C11 atomics, no locks): every stage has its own counters, the next unit to
+// claim and the units done. One participant, the orchestrator, opens the stages one after another
+// and waits for each to be done before opening the next; every participant (the orchestrator too)
+// claims units of the open stage until none is left. The orchestrator is whoever arrives first,
+// the caller or one of the tasks it enqueued (compare-and-swap), and it can finish every stage on
+// its own: helpers only speed it up. So a task system that runs the tasks late, on fewer threads,
+// or inline inside enqueueTask still finishes (a helper that arrives after the last stage leaves).
+// Joints and the overflow constraints (no colour) are one-unit stages: whoever claims them runs
+// them alone, in order with the rest. Idea from Box2D v3's solver stages (Catto 2024, "Solver2D"
+// and the v3 solver notes); written here for Tumble's stage list.
+#include "solver_workers.h"
+
+#include "contact_solver.h"
+#include "integrator.h"
+#include "joint.h"
+#include "task.h"
+#include "world.h"
+
+#include <stdalign.h>
+#include <stdatomic.h>
+
+/// Bodies per unit of the integration stages, blocks (of four contacts) per unit of a colour.
+#define TB_BODIES_PER_UNIT 64
+#define TB_BLOCKS_PER_UNIT 4
+#define TB_UNITS_PER_WORKER 4
+
+typedef enum tbStageKind
+{
+	tb_stageIntegrateVelocities,
+	tb_stageIntegratePositions,
+	tb_stageWarmStartJoints,
+	tb_stageSolveJoints,
+	tb_stageWarmStartColor,
+	tb_stageSolveColor,
+	tb_stageWarmStartOverflow,
+	tb_stageSolveOverflow,
+} tbStageKind;
+
+typedef struct tbStage
+{
+	uint8_t kind;	///< tbStageKind
+	uint8_t policy; ///< tbBiasPolicy of a solve stage
+	bool useBias;	///< solve joints: the biased pass
+	int start;		///< first block of a colour stage
+	int count;		///< bodies or blocks
+	int unitSize;
+	int unitCount;
+	int firstClaim; ///< this stage's units in the program's claim flags
+	alignas(64) atomic_int doneUnits; ///< on a line of its own: every worker counts here
+} tbStage;
+
+typedef struct tbStageProgram
+{
+	tbStepContext* context;
+	int workerCount;
+	tbStage* stages;
+	int stageCount;
+	atomic_uchar* claims; ///< one flag per unit of every stage: set by the worker that runs it
+	int claimCount;
+	atomic_int openStage; ///< stages [0, openStage] may be worked on; stageCount: all done
+	atomic_int orchestrator; ///< 0 until a participant takes the role
+	atomic_int arrivals;	 ///< participants so far: each one's slot
+} tbStageProgram;
+
+static void tbAddStage(tbStageProgram* p, tbStageKind kind, int start, int count, int unitSize, tbBiasPolicy policy,
+					   bool useBias)
+{
+	if (count <= 0)
+	{
+		return;
+	}
+	// Units of at least unitSize, about TB_UNITS_PER_WORKER per worker: enough to even out uneven
+	// units, few enough that claiming costs little.
+	unitSize = tbMaxInt(unitSize, count / (TB_UNITS_PER_WORKER * p->workerCount));
+	tbStage* s = p->stages + p->stageCount++;
+	s->kind = (uint8_t)kind;
+	s->policy = (uint8_t)policy;
+	s->useBias = useBias;
+	s->start = start;
+	s->count = count;
+	s->unitSize = unitSize;
+	s->unitCount = (count + unitSize - 1) / unitSize;
+	s->firstClaim = p->claimCount;
+	p->claimCount += s->unitCount;
+	atomic_init(&s->doneUnits, 0);
+}
+
+/// One contact pass: each colour's blocks, then the overflow.
+static void tbAddContactPass(tbStageProgram* p, bool warmStart, tbBiasPolicy policy)
+{
+	const tbStepContext* context = p->context;
+	for (int color = 0; color < context->colorCount; ++color)
+	{
+		int start = context->colorBlockStart[color];
+		int count = context->colorBlockStart[color + 1] - start;
+		tbAddStage(p, warmStart ? tb_stageWarmStartColor : tb_stageSolveColor, start, count, TB_BLOCKS_PER_UNIT, policy,
+				   false);
+	}
+	tbAddStage(p, warmStart ? tb_stageWarmStartOverflow : tb_stageSolveOverflow, 0, context->overflowCount > 0 ? 1 : 0,
+			   1, policy, false);
+}
+
+/// The stage list of the soft step's sub-steps (tbSolveStage's loop with tbSoftSubStep inlined).
+static void tbBuildSoftProgram(tbStageProgram* p)
+{
+	tbStepContext* context = p->context;
+	bool joints = context->world->solverJointCount > 0;
+	int relaxIterations = context->world->def.relaxIterations + tbJointTreeRelaxIterations(context);
+	for (int i = 0; i < context->subStepCount; ++i)
+	{
+		tbAddStage(p, tb_stageIntegrateVelocities, 0, context->bodyCount, TB_BODIES_PER_UNIT, tb_biasSoft, false);
+		tbAddStage(p, tb_stageWarmStartJoints, 0, joints ? 1 : 0, 1, tb_biasSoft, false);
+		tbAddContactPass(p, true, tb_biasSoft);
+		tbAddStage(p, tb_stageSolveJoints, 0, joints ? 1 : 0, 1, tb_biasSoft, true);
+		tbAddContactPass(p, false, tb_biasSoft);
+		tbAddStage(p, tb_stageIntegratePositions, 0, context->bodyCount, TB_BODIES_PER_UNIT, tb_biasSoft, false);
+		for (int k = 0; k < relaxIterations; ++k)
+		{
+			tbAddStage(p, tb_stageSolveJoints, 0, joints ? 1 : 0, 1, tb_biasSoft, false);
+			tbAddContactPass(p, false, k == 0 ? tb_biasRelax : tb_biasRelaxRepeat);
+		}
+	}
+}
+
+static void tbRunUnit(tbStepContext* context, const tbStage* s, int unit)
+{
+	int begin = s->start + unit * s->unitSize;
+	int end = tbMinInt(s->start + s->count, begin + s->unitSize);
+	switch ((tbStageKind)s->kind)
+	{
+		case tb_stageIntegrateVelocities:
+			tbIntegrateVelocitiesRange(context, begin, end);
+			break;
+		case tb_stageIntegratePositions:
+			tbIntegratePositionsRange(context, begin, end);
+			break;
+		case tb_stageWarmStartJoints:
+			tbWarmStartJoints(context);
+			break;
+		case tb_stageSolveJoints:
+			tbSolveJoints(context, s->useBias);
+			break;
+		case tb_stageWarmStartColor:
+			tbWarmStartWideRange(context, begin, end, true);
+			break;
+		case tb_stageSolveColor:
+			tbSolveWideRange(context, (tbBiasPolicy)s->policy, begin, end, true);
+			break;
+		case tb_stageWarmStartOverflow:
+			tbWarmStartOverflow(context);
+			break;
+		case tb_stageSolveOverflow:
+		default:
+			tbSolveOverflow(context, (tbBiasPolicy)s->policy);
+			break;
+	}
+}
+
+/// Run every unit of stage s nobody has claimed. Participant `slot` of n starts at its own share
+/// (slot/n of the way along), so in a stage after stage it finds the same blocks and bodies it had
+/// before in its cache, and then takes what others have not reached.
+static void tbWorkOnStage(tbStageProgram* p, tbStage* s, int slot)
+{
+	int start = (int)((int64_t)slot * s->unitCount / p->workerCount);
+	for (int j = 0; j < s->unitCount; ++j)
+	{
+		int unit = start + j < s->unitCount ? start + j : start + j - s->unitCount;
+		if (atomic_exchange_explicit(p->claims + s->firstClaim + unit, 1, memory_order_relaxed) == 0)
+		{
+			tbRunUnit(p->context, s, unit);
+			atomic_fetch_add_explicit(&s->doneUnits, 1, memory_order_release);
+		}
+	}
+}
+
+static void tbOrchestrate(tbStageProgram* p, int slot)
+{
+	for (int k = 0; k < p->stageCount; ++k)
+	{
+		tbStage* s = p->stages + k;
+		atomic_store_explicit(&p->openStage, k, memory_order_release);
+		tbWorkOnStage(p, s, slot);
+		int rounds = 0;
+		while (atomic_load_explicit(&s->doneUnits, memory_order_acquire) < s->unitCount)
+		{
+			tbSpinPause(&rounds); // the last units of the stage are running on other workers
+		}
+	}
+	atomic_store_explicit(&p->openStage, p->stageCount, memory_order_release);
+}
+
+static void tbHelp(tbStageProgram* p, int slot)
+{
+	for (int k = 0; k < p->stageCount; ++k)
+	{
+		int open = atomic_load_explicit(&p->openStage, memory_order_acquire);
+		int rounds = 0;
+		while (open < k)
+		{
+			tbSpinPause(&rounds);
+			open = atomic_load_explicit(&p->openStage, memory_order_acquire);
+		}
+		if (open >= p->stageCount)
+		{
+			return;
+		}
+		tbWorkOnStage(p, p->stages + k, slot);
+	}
+}
+
+static void tbParticipate(tbStageProgram* p)
+{
+	int slot = atomic_fetch_add_explicit(&p->arrivals, 1, memory_order_relaxed) % p->workerCount;
+	int expected = 0;
+	if (atomic_compare_exchange_strong_explicit(&p->orchestrator, &expected, 1, memory_order_acq_rel,
+												memory_order_acquire))
+	{
+		tbOrchestrate(p, slot);
+	}
+	else
+	{
+		tbHelp(p, slot);
+	}
+}
+
+static void tbHelperTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
+{
+	(void)workerIndex;
+	for (int i = startIndex; i < endIndex; ++i)
+	{
+		tbParticipate(context);
+	}
+}
+
+bool tbSolveSubStepsOnWorkers(tbStepContext* context)
+{
+	tbWorld* world = context->world;
+	int workers = tbWorkerCount(world);
+	if (workers <= 1 || world->def.solver != tb_solverSoft || context->wideConstraints == NULL ||
+		context->enableWarmStarting == false)
+	{
+		return false; // the serial loop (warm starting off zeroes impulses there)
+	}
+	// Stages per sub-step: 2 integrations, 2 joint stages per pass, one per colour and the overflow
+	// per contact pass (warm start, solve, relaxes).
+	int relaxIterations = world->def.relaxIterations + tbJointTreeRelaxIterations(context);
+	int passes = 2 + relaxIterations;
+	int perSubStep = 2 + passes * (2 + context->colorCount);
+	int capacity = context->subStepCount * perSubStep;
+	tbStageProgram program;
+	program.context = context;
+	program.workerCount = workers;
+	program.stageCount = 0;
+	program.stages = tbArenaAlloc(&world->stepArena, capacity * (int)sizeof(tbStage) + 64);
+	program.stages = (tbStage*)(((uintptr_t)program.stages + 63) & ~(uintptr_t)63); // the alignment above
+	program.claimCount = 0;
+	atomic_init(&program.openStage, -1);
+	atomic_init(&program.orchestrator, 0);
+	atomic_init(&program.arrivals, 0);
+	tbBuildSoftProgram(&program);
+	program.claims = tbArenaAlloc(&world->stepArena, program.claimCount);
+	for (int i = 0; i < program.claimCount; ++i)
+	{
+		atomic_init(program.claims + i, 0);
+	}
+	void* handle = world->def.enqueueTask(tbHelperTask, workers - 1, 1, &program, world->def.userTaskContext);
+	tbParticipate(&program);
+	if (handle != NULL)
+	{
+		world->def.finishTask(handle, world->def.userTaskContext);
+	}
+	return true; // the stages go with the step arena
+}

@@ -1,0 +1,18 @@
+// Internal: running parts of the step on the game's task system (tbWorldDef::enqueueTask).
+#pragma once
+
+#include "tumble/types.h"
+
+struct tbWorld;
+
+/// Workers the step may use: the world's workerCount when task callbacks are set, else 1.
+int tbWorkerCount(const struct tbWorld* world);
+
+/// Run task over items [0, itemCount) on the world's workers, ranges of at least minRange items,
+/// and return when every item has run. Without task callbacks (or with one worker, or too few
+/// items to split) it runs on the caller as task(0, itemCount, 0, context).
+void tbParallelFor(struct tbWorld* world, tbTaskCallback* task, int itemCount, int minRange, void* context);
+
+/// One round of a spin-wait: a pause hint to the processor, and after many rounds a yield of the
+/// thread, so that waiting workers on an oversubscribed machine let the others run.
+void tbSpinPause(int* rounds);
