@@ -2,6 +2,12 @@
 // generation counter (a step issues its tasks microseconds apart), then sleep on a condition
 // variable. Ranges are claimed with an atomic counter, so a range is run exactly once, by
 // whichever thread gets to it first; completions are counted to know when the task is done.
+//
+// The one task record is reused, so a thread late from the last task must not read it while the
+// next is written. The generation works as a sequence lock: odd while the caller writes a task,
+// even once it is published. A thread announces itself (busy) before it reads a published task and
+// checks that the generation did not move meanwhile; the caller makes the generation odd, then
+// waits until no thread is busy, before it writes.
 #include "task_system.h"
 
 #include <pthread.h>
@@ -35,7 +41,8 @@ struct TaskSystem
 	Thread threads[TB_MAX_WORKERS];
 	int threadCount;
 	Task task;
-	atomic_uint generation; ///< incremented when a task is posted
+	atomic_uint generation; ///< odd while a task is written, even when published
+	atomic_int busy;		///< threads reading or running the published task
 	atomic_bool quit;
 	pthread_mutex_t lock;
 	pthread_cond_t wake;
@@ -100,7 +107,16 @@ static void* ThreadMain(void* argument)
 		{
 			return NULL;
 		}
-		RunRanges(&system->task, thread->workerIndex);
+		if (seen & 1u)
+		{
+			continue; // being written: wait for it to be published
+		}
+		atomic_fetch_add_explicit(&system->busy, 1, memory_order_seq_cst);
+		if (atomic_load_explicit(&system->generation, memory_order_seq_cst) == seen)
+		{
+			RunRanges(&system->task, thread->workerIndex);
+		}
+		atomic_fetch_sub_explicit(&system->busy, 1, memory_order_release);
 	}
 }
 
@@ -117,6 +133,7 @@ TaskSystem* TaskSystem_Create(int workerCount)
 	}
 	system->workerCount = workerCount;
 	atomic_init(&system->generation, 0u);
+	atomic_init(&system->busy, 0);
 	atomic_init(&system->quit, false);
 	atomic_init(&system->task.nextRange, 0);
 	atomic_init(&system->task.doneRanges, 0);
@@ -177,15 +194,20 @@ void* TaskSystem_Enqueue(tbTaskCallback* callback, int itemCount, int minRange, 
 	int rangeSize = (itemCount + workers - 1) / workers;
 	rangeSize = rangeSize < minRange ? minRange : rangeSize;
 	Task* task = &system->task;
+	atomic_fetch_add_explicit(&system->generation, 1u, memory_order_seq_cst); // odd: writing
+	while (atomic_load_explicit(&system->busy, memory_order_seq_cst) != 0)
+	{
+		Pause(); // a thread is leaving the last task
+	}
 	task->callback = callback;
 	task->context = taskContext;
 	task->itemCount = itemCount;
 	task->rangeSize = rangeSize;
 	task->rangeCount = (itemCount + rangeSize - 1) / rangeSize;
 	atomic_store_explicit(&task->doneRanges, 0, memory_order_relaxed);
-	atomic_store_explicit(&task->nextRange, 0, memory_order_release); // publishes the fields above
+	atomic_store_explicit(&task->nextRange, 0, memory_order_relaxed);
 	pthread_mutex_lock(&system->lock);
-	atomic_fetch_add_explicit(&system->generation, 1u, memory_order_acq_rel);
+	atomic_fetch_add_explicit(&system->generation, 1u, memory_order_release); // even: published
 	pthread_cond_broadcast(&system->wake);
 	pthread_mutex_unlock(&system->lock);
 	return task;

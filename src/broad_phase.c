@@ -139,6 +139,10 @@ void tbBroadPhase_Destroy(tbBroadPhase* bp)
 	tbFree(bp->table.proxies, bp->table.capacity * (int)sizeof(tbBroadProxy));
 	tbFree(bp->moveBuffer, bp->moveCapacity * (int)sizeof(int));
 	tbPairList_Destroy(&bp->pairList);
+	for (int i = 0; i < TB_MAX_WORKERS; ++i)
+	{
+		tbPairList_Destroy(bp->workerPairs + i);
+	}
 	memset(bp, 0, sizeof(*bp));
 	bp->freeProxy = -1;
 }
@@ -310,6 +314,7 @@ static void tbSortUniquePairs(tbBroadPhase* bp)
 typedef struct tbPairQueryContext
 {
 	tbBroadPhase* bp;
+	tbPairList* list; ///< where this query's pairs go
 	int queryKey;
 } tbPairQueryContext;
 
@@ -326,7 +331,7 @@ static bool tbPairQueryCallback(int treeProxyId, int otherKey, void* context)
 	{
 		return true;
 	}
-	tbPairList_Add(&c->bp->pairList, &c->bp->table, c->queryKey, otherKey);
+	tbPairList_Add(c->list, &c->bp->table, c->queryKey, otherKey);
 	return true;
 }
 
@@ -362,7 +367,29 @@ static void tbRefreshMovableTree(tbBroadPhase* bp)
 	bp->enlargedCount = 0;
 }
 
-static void tbTreeFindPairs(tbBroadPhase* bp)
+/// The pairs of moved proxies [start, end) of the move buffer, appended to `list` (read-only on
+/// the trees and the table: several ranges may run at once).
+static void tbQueryMovedProxies(tbBroadPhase* bp, tbPairList* list, int start, int end)
+{
+	for (int i = start; i < end; ++i)
+	{
+		int key = bp->moveBuffer[i];
+		if (key < 0)
+		{
+			continue; // destroyed after it moved
+		}
+		const tbBroadProxy* p = bp->table.proxies + key;
+		tbPairQueryContext context = {bp, list, key};
+		tbDynamicTree_Query(&bp->movableTree, p->aabb, TB_PAIR_QUERY_BIT, tbPairQueryCallback, &context);
+		if (p->type != tb_proxyStatic)
+		{
+			tbDynamicTree_Query(&bp->staticTree, p->aabb, TB_PAIR_QUERY_BIT, tbPairQueryCallback, &context);
+		}
+	}
+}
+
+/// The trees brought up to date before they are queried (serial: they change).
+static void tbPrepareTrees(tbBroadPhase* bp)
 {
 	tbRefreshMovableTree(bp);
 	int staticCount = bp->staticTree.proxyCount;
@@ -371,21 +398,46 @@ static void tbTreeFindPairs(tbBroadPhase* bp)
 		tbDynamicTree_Rebuild(&bp->staticTree, true);
 		bp->staticInsertCount = 0;
 	}
-	for (int i = 0; i < bp->moveCount; ++i)
+}
+
+static void tbTreeFindPairs(tbBroadPhase* bp)
+{
+	tbPrepareTrees(bp);
+	tbQueryMovedProxies(bp, &bp->pairList, 0, bp->moveCount);
+}
+
+static void tbFindPairsTask(int start, int end, uint32_t workerIndex, void* context)
+{
+	tbBroadPhase* bp = context;
+	tbQueryMovedProxies(bp, bp->workerPairs + workerIndex, start, end);
+}
+
+void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext, int workerCount)
+{
+	if (bp->method != tb_broadPhaseTree || workerCount <= 1)
 	{
-		int key = bp->moveBuffer[i];
-		if (key < 0)
+		tbBroadPhase_UpdatePairs(bp);
+		return;
+	}
+	bp->pairList.count = 0;
+	tbPrepareTrees(bp);
+	for (int w = 0; w < workerCount; ++w)
+	{
+		bp->workerPairs[w].count = 0;
+		bp->workerPairs[w].filter = bp->pairList.filter;
+		bp->workerPairs[w].filterContext = bp->pairList.filterContext;
+	}
+	run(tbFindPairsTask, bp->moveCount, 64, bp, runnerContext);
+	for (int w = 0; w < workerCount; ++w)
+	{
+		const tbPairList* list = bp->workerPairs + w;
+		for (int i = 0; i < list->count; ++i)
 		{
-			continue; // destroyed after it moved
-		}
-		const tbBroadProxy* p = bp->table.proxies + key;
-		tbPairQueryContext context = {bp, key};
-		tbDynamicTree_Query(&bp->movableTree, p->aabb, TB_PAIR_QUERY_BIT, tbPairQueryCallback, &context);
-		if (p->type != tb_proxyStatic)
-		{
-			tbDynamicTree_Query(&bp->staticTree, p->aabb, TB_PAIR_QUERY_BIT, tbPairQueryCallback, &context);
+			tbPairList_Append(&bp->pairList, list->pairs[i]);
 		}
 	}
+	tbSortUniquePairs(bp);
+	tbClearMoveBuffer(bp);
 }
 
 void tbBroadPhase_UpdatePairs(tbBroadPhase* bp)

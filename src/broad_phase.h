@@ -16,6 +16,7 @@
 #include "proxy_table.h"
 #include "sort_and_sweep.h"
 
+#include "tumble/constants.h"
 #include "tumble/types.h"
 
 
@@ -35,6 +36,8 @@ typedef struct tbBroadPhase
 
 	// Pairs found by the last UpdatePairs (sorted, unique), with the optional pair filter.
 	tbPairList pairList;
+	// Pairs each worker found (tree method on workers), merged into pairList before the sort.
+	tbPairList workerPairs[TB_MAX_WORKERS];
 
 	// Method state. Only the selected method's state is live.
 	tbDynamicTree staticTree;
@@ -69,6 +72,16 @@ void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB);
 
 /// Fill bp->pairList with the pair set described above and clear the move buffer.
 void tbBroadPhase_UpdatePairs(tbBroadPhase* bp);
+
+/// Runs task over items [0, itemCount) on up to workerCount workers and returns when all ran
+/// (the world's tbParallelFor, handed in so that the broad phase needs no world).
+typedef void tbRangeRunnerFcn(tbTaskCallback* task, int itemCount, int minRange, void* taskContext,
+							  void* runnerContext);
+
+/// The same, the tree method's queries of moved proxies spread over workers (each worker keeps
+/// its own pairs; the merged list is sorted, so the result does not depend on the split).
+void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext,
+									   int workerCount);
 
 tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey);
 bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB);

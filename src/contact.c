@@ -283,10 +283,15 @@ bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* context)
 	return tbShouldCreateContact(world, shapeIdA, shapeIdB);
 }
 
+static void tbRunOnWorkers(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* world)
+{
+	tbParallelFor(world, task, itemCount, minRange, taskContext);
+}
+
 void tbUpdatePairsStage(tbWorld* world)
 {
 	tbBroadPhase* bp = &world->broadPhase;
-	tbBroadPhase_UpdatePairs(bp);
+	tbBroadPhase_UpdatePairsOnWorkers(bp, tbRunOnWorkers, world, tbWorkerCount(world));
 	world->counters.pairCandidates = bp->pairList.count;
 	// Every pair passed tbContactPairFilter as it was found, and the pairs are unique: each
 	// becomes a contact.

@@ -11,11 +11,23 @@
 // Methods: tb_continuousDefault uses the closed-form quadratic for circle pairs whose motion is
 // linear and conservative advancement otherwise; tb_continuousConservative uses conservative
 // advancement for every pair; tb_continuousOff skips the stage.
+#include "task.h"
 #include "world.h"
+
+#include <string.h>
+
+/// Time-of-impact counters of one worker (summed into the world's after the stage).
+typedef struct tbToiCounters
+{
+	int calls;
+	int iterationsMax;
+	int failures;
+} tbToiCounters;
 
 typedef struct tbContinuousContext
 {
 	tbWorld* world;
+	tbToiCounters* counters;
 	tbBody* fastBody;
 	int fastBodyId;
 	tbSweep sweep;
@@ -78,7 +90,7 @@ static tbTOIOutput tbComputeTOI(tbContinuousContext* c, const tbShape* other, co
 	tbWorld* world = c->world;
 	bool quadratic = world->def.continuous == tb_continuousDefault && tbIsLinearCircle(c->fastShape, &c->sweep) &&
 					 tbIsLinearCircle(other, otherSweep);
-	world->counters.toiCalls += 1;
+	c->counters->calls += 1;
 	if (quadratic)
 	{
 		return tbTimeOfImpactCircles(&other->geometry.circle, otherSweep, &c->fastShape->geometry.circle, &c->sweep,
@@ -92,8 +104,8 @@ static tbTOIOutput tbComputeTOI(tbContinuousContext* c, const tbShape* other, co
 	input.maxFraction = c->fraction;
 	input.targetSeparation = TB_TOI_TARGET_SEPARATION;
 	tbTOIOutput output = tbTimeOfImpact(&input);
-	world->counters.toiIterationsMax = tbMaxInt(world->counters.toiIterationsMax, output.iterations);
-	world->counters.toiFailures += output.state == tb_toiStateFailed ? 1 : 0;
+	c->counters->iterationsMax = tbMaxInt(c->counters->iterationsMax, output.iterations);
+	c->counters->failures += output.state == tb_toiStateFailed ? 1 : 0;
 	return output;
 }
 
@@ -126,10 +138,10 @@ static tbTOIOutput tbComputeCoreTOI(tbContinuousContext* c, const tbShape* other
 		return output;
 	}
 	input.targetSeparation = tbMinFloat(TB_TOI_TARGET_SEPARATION, 0.5f * gap);
-	c->world->counters.toiCalls += 1;
+	c->counters->calls += 1;
 	output = tbTimeOfImpact(&input);
-	c->world->counters.toiIterationsMax = tbMaxInt(c->world->counters.toiIterationsMax, output.iterations);
-	c->world->counters.toiFailures += output.state == tb_toiStateFailed ? 1 : 0;
+	c->counters->iterationsMax = tbMaxInt(c->counters->iterationsMax, output.iterations);
+	c->counters->failures += output.state == tb_toiStateFailed ? 1 : 0;
 	return output;
 }
 
@@ -261,11 +273,12 @@ static void tbStopCoreApproach(tbBody* body, tbVec2 normal, tbVec2 otherVelocity
 	}
 }
 
-static void tbSolveFastBody(tbWorld* world, int bodyId)
+static void tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters)
 {
 	tbBody* body = world->bodies + bodyId;
 	tbContinuousContext c;
 	c.world = world;
+	c.counters = counters;
 	c.fastBody = body;
 	c.fastBodyId = bodyId;
 	c.sweep = tbMakeBodySweep(body);
@@ -308,24 +321,63 @@ static void tbSolveFastBody(tbWorld* world, int bodyId)
 	}
 }
 
+typedef struct tbContinuousTaskContext
+{
+	tbWorld* world;
+	const int* bodies;
+	tbToiCounters counters[TB_MAX_WORKERS];
+} tbContinuousTaskContext;
+
+static void tbContinuousTask(int start, int end, uint32_t workerIndex, void* context)
+{
+	tbContinuousTaskContext* task = context;
+	for (int i = start; i < end; ++i)
+	{
+		tbSolveFastBody(task->world, task->bodies[i], task->counters + workerIndex);
+	}
+}
+
+/// Fast bodies that are not bullets stop only at static shapes, which do not move: each depends on
+/// nothing the others change, so they run on the workers. Bullets also stop at moving bodies (at
+/// their positions after the others were stopped) and run after, one at a time in body order.
 void tbContinuousStage(tbWorld* world)
 {
 	if (world->def.continuous == tb_continuousOff)
 	{
 		return;
 	}
+	int bytes = world->awakeBodyCount * (int)sizeof(int);
+	int* fast = tbArenaAlloc(&world->stepArena, bytes > 0 ? bytes : (int)sizeof(int));
+	int fastCount = 0, bulletCount = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		int bodyId = world->awakeBodies[i];
 		tbBody* body = world->bodies + bodyId;
 		float motion;
-		body->isFast = false;
-		if (body->type != tb_dynamicBody || tbIsFast(world, body, &motion) == false)
+		body->isFast = body->type == tb_dynamicBody && tbIsFast(world, body, &motion);
+		if (body->isFast && body->isBullet)
 		{
-			continue;
+			fast[world->awakeBodyCount - 1 - bulletCount++] = bodyId; // bullets from the back, reversed
 		}
-		body->isFast = true;
-		world->counters.fastBodies += 1;
-		tbSolveFastBody(world, bodyId);
+		else if (body->isFast)
+		{
+			fast[fastCount++] = bodyId;
+		}
+	}
+	world->counters.fastBodies += fastCount + bulletCount;
+	tbContinuousTaskContext* task = tbArenaAlloc(&world->stepArena, (int)sizeof(tbContinuousTaskContext));
+	memset(task, 0, sizeof(*task));
+	task->world = world;
+	task->bodies = fast;
+	tbParallelFor(world, tbContinuousTask, fastCount, 16, task);
+	for (int i = 0; i < bulletCount; ++i)
+	{
+		tbSolveFastBody(world, fast[world->awakeBodyCount - 1 - i], task->counters);
+	}
+	for (int w = 0; w < TB_MAX_WORKERS; ++w)
+	{
+		world->counters.toiCalls += task->counters[w].calls;
+		world->counters.toiIterationsMax = tbMaxInt(world->counters.toiIterationsMax, task->counters[w].iterationsMax);
+		world->counters.toiFailures += task->counters[w].failures;
 	}
 }

@@ -11,6 +11,11 @@ void tbPairList_Add(tbPairList* list, const tbProxyTable* table, int proxyKeyA, 
 	{
 		return;
 	}
+	tbPairList_Append(list, a < b ? (tbShapePair){a, b} : (tbShapePair){b, a});
+}
+
+void tbPairList_Append(tbPairList* list, tbShapePair pair)
+{
 	if (list->count == list->capacity)
 	{
 		int n = list->capacity;
@@ -18,7 +23,7 @@ void tbPairList_Add(tbPairList* list, const tbProxyTable* table, int proxyKeyA, 
 		list->pairs = tbGrowAlloc(list->pairs, n * (int)sizeof(tbShapePair), m * (int)sizeof(tbShapePair));
 		list->capacity = m;
 	}
-	list->pairs[list->count++] = a < b ? (tbShapePair){a, b} : (tbShapePair){b, a};
+	list->pairs[list->count++] = pair;
 }
 
 void tbPairList_Destroy(tbPairList* list)

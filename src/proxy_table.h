@@ -56,5 +56,8 @@ typedef struct tbPairList
 /// Append the pair of two proxies unless the filter drops it.
 void tbPairList_Add(tbPairList* list, const tbProxyTable* table, int proxyKeyA, int proxyKeyB);
 
+/// Append a pair as it is (no filter).
+void tbPairList_Append(tbPairList* list, tbShapePair pair);
+
 /// Release the list's memory.
 void tbPairList_Destroy(tbPairList* list);
