@@ -1,5 +1,7 @@
-// Broad-phase micro-benchmark: milliseconds per step for the tree, sort-and-sweep and brute force
-// on 1k–64k moving boxes, with uniform (1 m) and mixed (0.2–2 m) sizes.
+// Broad-phase micro-benchmark: milliseconds per step for the tree, sort-and-sweep, the spatial hash
+// and brute force on 1k–64k moving boxes, in four mixes: uniform (1 m boxes, one per 4 m²), mixed
+// (0.2–2 m, a factor 10), wide (0.1–10 m, a factor 100: where a grid suffers) and sparse (1 m boxes,
+// one per 400 m²: mostly empty space).
 //
 // Each step moves every box a little (random velocity, bouncing in a square whose area grows with
 // the body count so the density stays constant) and, as a world does, re-sends a box to the
@@ -40,7 +42,7 @@ typedef struct Result
 	float msPerStep;
 } Result;
 
-#define MAX_RESULTS 64
+#define MAX_RESULTS 128
 static Result s_results[MAX_RESULTS];
 static int s_resultCount;
 
@@ -52,18 +54,44 @@ static const char* MethodName(tbBroadPhaseMethod method)
 			return "tree";
 		case tb_broadPhaseSortAndSweep:
 			return "sort_and_sweep";
+		case tb_broadPhaseSpatialHash:
+			return "spatial_hash";
 		default:
 			return "brute_force";
 	}
 }
 
-static void CreateBodies(tbBroadPhase* bp, int count, bool mixed, float halfWidth)
+typedef enum Mix
+{
+	mixUniform,
+	mixMixed,
+	mixWide,
+	mixSparse,
+	mixCount
+} Mix;
+
+static const char* const s_mixNames[mixCount] = {"uniform", "mixed", "wide", "sparse"};
+
+static float RandomSize(Mix mix)
+{
+	switch (mix)
+	{
+		case mixMixed:
+			return RandomFloat(0.2f, 2.0f);
+		case mixWide:
+			return RandomFloat(0.1f, 1.0f) * (RandomFloat(0.0f, 1.0f) < 0.1f ? 10.0f : 1.0f);
+		default:
+			return 1.0f;
+	}
+}
+
+static void CreateBodies(tbBroadPhase* bp, int count, Mix mix, float halfWidth)
 {
 	s_seed = 12345u;
 	for (int i = 0; i < count; ++i)
 	{
-		float w = mixed ? RandomFloat(0.2f, 2.0f) : 1.0f;
-		float h = mixed ? RandomFloat(0.2f, 2.0f) : 1.0f;
+		float w = RandomSize(mix);
+		float h = RandomSize(mix);
 		float x = RandomFloat(-halfWidth, halfWidth - w), y = RandomFloat(-halfWidth, halfWidth - h);
 		Body* b = s_bodies + i;
 		b->tight = (tbAABB){{x, y}, {x + w, y + h}};
@@ -99,17 +127,18 @@ static void MoveBodies(tbBroadPhase* bp, int count, float halfWidth)
 }
 
 /// Time `steps` steps after a warm-up of 10 (first sort, static rebuild, allocation growth).
-static float RunCase(tbBroadPhaseMethod method, int count, bool mixed, int steps, int* pairCount)
+static float RunCase(tbBroadPhaseMethod method, int count, Mix mix, int steps, int* pairCount)
 {
-	// Density: one body per 4 m², so the square's side is 2·sqrt(count) m.
+	// Density: one body per 4 m² (sparse: per 400 m²), so the square's side is 2·sqrt(count) m (20·).
+	float area = (mix == mixSparse ? 400.0f : 4.0f) * (float)count;
 	float halfWidth = 1.0f;
-	while (4.0f * halfWidth * halfWidth < 4.0f * (float)count)
+	while (4.0f * halfWidth * halfWidth < area)
 	{
 		halfWidth *= 1.05f;
 	}
 	tbBroadPhase bp;
 	tbBroadPhase_Create(&bp, method);
-	CreateBodies(&bp, count, mixed, halfWidth);
+	CreateBodies(&bp, count, mix, halfWidth);
 	for (int i = 0; i < 10; ++i)
 	{
 		MoveBodies(&bp, count, halfWidth);
@@ -130,14 +159,14 @@ static float RunCase(tbBroadPhaseMethod method, int count, bool mixed, int steps
 int main(void)
 {
 	const int counts[] = {1000, 4000, 16000, 64000};
-	const tbBroadPhaseMethod methods[] = {tb_broadPhaseTree, tb_broadPhaseSortAndSweep, tb_broadPhaseBruteForce};
-	printf("%-15s %7s %6s %12s %8s\n", "method", "bodies", "sizes", "ms/step", "pairs");
-	for (int s = 0; s < 2; ++s)
+	const tbBroadPhaseMethod methods[] = {tb_broadPhaseTree, tb_broadPhaseSortAndSweep, tb_broadPhaseSpatialHash,
+										  tb_broadPhaseBruteForce};
+	printf("%-15s %7s %7s %12s %8s\n", "method", "bodies", "sizes", "ms/step", "pairs");
+	for (int s = 0; s < mixCount; ++s)
 	{
-		bool mixed = s == 1;
 		for (int c = 0; c < 4; ++c)
 		{
-			for (int m = 0; m < 3; ++m)
+			for (int m = 0; m < 4; ++m)
 			{
 				if (methods[m] == tb_broadPhaseBruteForce && counts[c] > 16000)
 				{
@@ -145,9 +174,9 @@ int main(void)
 				}
 				int steps = counts[c] >= 16000 ? 20 : 100;
 				int pairs = 0;
-				float ms = RunCase(methods[m], counts[c], mixed, steps, &pairs);
-				const char* sizes = mixed ? "mixed" : "uniform";
-				printf("%-15s %7d %6s %12.3f %8d\n", MethodName(methods[m]), counts[c], sizes, (double)ms, pairs);
+				float ms = RunCase(methods[m], counts[c], (Mix)s, steps, &pairs);
+				const char* sizes = s_mixNames[s];
+				printf("%-15s %7d %7s %12.3f %8d\n", MethodName(methods[m]), counts[c], sizes, (double)ms, pairs);
 				fflush(stdout);
 				s_results[s_resultCount++] = (Result){MethodName(methods[m]), counts[c], sizes, ms};
 			}

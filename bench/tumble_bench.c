@@ -1341,7 +1341,7 @@ static void PrintUsage(void)
 {
 	printf("usage: tumble-bench [SCENE...] [--steps N] [--repeat R] [--csv FILE] [--peers]\n"
 		   "                    [--peer box2d-2.4.1|box2d-3|chipmunk-7]... [--interleave]\n"
-		   "                    [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
+		   "                    [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
 		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree] [--workers N]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"

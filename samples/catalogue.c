@@ -984,6 +984,29 @@ static Scene* BuildLoopTheLoop(void)
 	return scene;
 }
 
+/// A pile of same-size balls, the spatial hash's case: 4,000 balls of radius 0.25 m (friction
+/// 0.4) dropped in a grid of rows 0.6 m apart into a 40 m wide open box of static segments.
+static Scene* BuildBallPile(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	memcpy(scene->bodies[ground].name, "box", 4);
+	tbVec2 corners[4] = {V(-20.0f, 40.0f), V(-20.0f, 0.0f), V(20.0f, 0.0f), V(20.0f, 40.0f)};
+	for (int i = 0; i < 3; ++i)
+	{
+		tbGeometry side = Scene_MakeSegmentGeometry(corners[i], corners[i + 1]);
+		Scene_AddGeometry(scene, ground, &side, 1.0f, 0.4f);
+	}
+	for (int i = 0; i < 4000; ++i)
+	{
+		float x = -19.4f + 0.6f * (float)(i % 64) + 0.05f * (float)((i / 64) % 2);
+		float y = 0.5f + 0.6f * (float)(i / 64);
+		AddCircleBody(scene, tb_dynamicBody, V(x, y), 0.25f, 1.0f, 0.4f);
+	}
+	return scene;
+}
+
 typedef Scene* SceneBuilder(void);
 
 typedef struct CatalogueEntry
@@ -1043,6 +1066,8 @@ static const CatalogueEntry s_entries[] = {
 	{"platformer", "a level: chain ground with slopes and a valley, concave ledge and cup, boxes and balls, an "
 				   "upright capsule character sent across at 8 m/s",
 	 BuildPlatformer},
+	{"ball_pile", "4,000 balls of radius 0.25 m dropped into a 40 m open box (the spatial hash's case)",
+	 BuildBallPile},
 	{"loop_the_loop", "two frictionless balls in vertical 5 m loops at 1.1 and 0.9 times the closed-form speed "
 					  "sqrt(5 g (R - r)) that just reaches the top",
 	 BuildLoopTheLoop},

@@ -55,7 +55,7 @@ static void PrintUsage(void)
 	printf("usage:\n"
 		   "  tumble list\n"
 		   "  tumble run SCENE [--steps N] [--png DIR] [--every K] [--size WxH] [--csv FILE]\n"
-		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|brute|auto] [--narrowphase sat|gjk|auto]\n"
+		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                   [--toi off|quadratic|ca] [--solver baumgarte|ngs|soft] [--substeps N]\n"
 		   "                   [--iterations N] [--scalar-solver] [--no-recycle] [--workers N] [--sheet FILE.png] [--frames N] [--contacts]\n"
 		   "                   [--aabbs] [--tree]\n"

@@ -674,6 +674,7 @@ typedef struct NamedValue
 
 static const NamedValue s_broadPhaseNames[] = {
 	{"tree", tb_broadPhaseTree}, {"sap", tb_broadPhaseSortAndSweep}, {"brute", tb_broadPhaseBruteForce},
+	{"hash", tb_broadPhaseSpatialHash},
 	{"auto", tb_broadPhaseAuto}, {NULL, 0}};
 static const NamedValue s_narrowPhaseNames[] = {
 	{"sat", tb_narrowPhaseSAT}, {"gjk", tb_narrowPhaseGJK}, {"auto", tb_narrowPhaseAuto}, {NULL, 0}};

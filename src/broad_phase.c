@@ -1,5 +1,5 @@
-// Broad phase: the proxy table, the move buffer and the pair set, dispatching to one of three
-// methods (dynamic tree, sort-and-sweep, brute force). See broad_phase.h for the contract; the
+// Broad phase: the proxy table, the move buffer and the pair set, dispatching to one of four
+// methods (dynamic tree, sort-and-sweep, spatial hash, brute force). See broad_phase.h for the contract; the
 // pair set is the same under every method, so switching methods never changes a trajectory.
 //
 // Tree method: static proxies live in a static tree and movable ones in a movable tree, so the
@@ -23,6 +23,7 @@
 #include "brute_force.h"
 #include "core.h"
 #include "sort_and_sweep.h"
+#include "spatial_hash.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -54,6 +55,9 @@ static void tbAddToMethod(tbBroadPhase* bp, int key)
 		case tb_broadPhaseSortAndSweep:
 			tbSortAndSweep_AddProxy(bp->sweep, &bp->table, key);
 			break;
+		case tb_broadPhaseSpatialHash:
+			tbSpatialHash_AddProxy(bp->hash, &bp->table, key);
+			break;
 		default:
 			tbBruteForce_AddProxy(bp->brute, &bp->table, key);
 			break;
@@ -71,6 +75,9 @@ static void tbRemoveFromMethod(tbBroadPhase* bp, int key)
 		case tb_broadPhaseSortAndSweep:
 			tbSortAndSweep_RemoveProxy(bp->sweep, key);
 			break;
+		case tb_broadPhaseSpatialHash:
+			tbSpatialHash_RemoveProxy(bp->hash, &bp->table, key);
+			break;
 		default:
 			tbBruteForce_RemoveProxy(bp->brute, key);
 			break;
@@ -86,6 +93,7 @@ static void tbCreateMethodState(tbBroadPhase* bp)
 	bp->movableTree.rebuildSplit = tb_splitMidpoint;
 	bp->sweep = bp->method == tb_broadPhaseSortAndSweep ? tbSortAndSweep_Create() : NULL;
 	bp->brute = bp->method == tb_broadPhaseBruteForce ? tbBruteForce_Create() : NULL;
+	bp->hash = bp->method == tb_broadPhaseSpatialHash ? tbSpatialHash_Create() : NULL;
 	bp->staticInsertCount = 0;
 	bp->enlargedCount = 0;
 	for (int key = 0; key < bp->table.capacity; ++key)
@@ -105,6 +113,11 @@ static void tbDestroyMethodState(tbBroadPhase* bp)
 	{
 		tbSortAndSweep_Destroy(bp->sweep);
 		bp->sweep = NULL;
+	}
+	if (bp->hash != NULL)
+	{
+		tbSpatialHash_Destroy(bp->hash);
+		bp->hash = NULL;
 	}
 	if (bp->brute != NULL)
 	{
@@ -256,7 +269,12 @@ void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB)
 		tbDynamicTree_EnlargeProxy(&bp->movableTree, p->handle, fatAABB);
 		bp->enlargedCount += 1;
 	}
-	// Sort-and-sweep reloads endpoint values from the table; brute force reads the table.
+	else if (bp->method == tb_broadPhaseSpatialHash && p->type == tb_proxyStatic)
+	{
+		tbSpatialHash_MoveStaticProxy(bp->hash);
+	}
+	// Sort-and-sweep reloads endpoint values from the table; brute force reads the table; the
+	// spatial hash re-hashes movable proxies each update.
 	tbMarkMoved(bp, proxyKey);
 }
 
@@ -451,6 +469,9 @@ void tbBroadPhase_UpdatePairs(tbBroadPhase* bp)
 		case tb_broadPhaseSortAndSweep:
 			tbSortAndSweep_FindPairs(bp->sweep, &bp->table, &bp->pairList);
 			break;
+		case tb_broadPhaseSpatialHash:
+			tbSpatialHash_FindPairs(bp->hash, &bp->table, &bp->pairList);
+			break;
 		default:
 			tbBruteForce_FindPairs(bp->brute, &bp->table, &bp->pairList);
 			break;
@@ -506,6 +527,9 @@ void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, 
 		case tb_broadPhaseSortAndSweep:
 			tbSortAndSweep_Query(&bp->table, aabb, maskBits, callback, context);
 			break;
+		case tb_broadPhaseSpatialHash:
+			tbSpatialHash_Query(bp->hash, &bp->table, aabb, maskBits, false, callback, context);
+			break;
 		default:
 			tbBruteForce_Query(&bp->table, aabb, maskBits, callback, context);
 			break;
@@ -537,6 +561,11 @@ void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t mask
 	{
 		tbUserQueryContext c = {bp, maskBits, callback, NULL, context, 0.0f, false};
 		tbDynamicTree_Query(&bp->staticTree, aabb, maskBits, tbUserQueryCallback, &c);
+		return;
+	}
+	if (bp->method == tb_broadPhaseSpatialHash)
+	{
+		tbSpatialHash_Query(bp->hash, &bp->table, aabb, maskBits, true, callback, context);
 		return;
 	}
 	tbStaticQueryContext c = {bp, callback, context};
@@ -584,6 +613,9 @@ void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, u
 		}
 		case tb_broadPhaseSortAndSweep:
 			tbSortAndSweep_RayCast(&bp->table, input, maskBits, callback, context);
+			break;
+		case tb_broadPhaseSpatialHash:
+			tbSpatialHash_RayCast(&bp->table, input, maskBits, callback, context);
 			break;
 		default:
 			tbBruteForce_RayCast(&bp->table, input, maskBits, callback, context);
@@ -666,6 +698,8 @@ bool tbBroadPhase_Validate(const tbBroadPhase* bp)
 			return tbValidateTreeProxies(bp);
 		case tb_broadPhaseSortAndSweep:
 			return tbSortAndSweep_Validate(bp->sweep, &bp->table);
+		case tb_broadPhaseSpatialHash:
+			return tbSpatialHash_Validate(bp->hash, &bp->table);
 		default:
 			return tbBruteForce_Validate(bp->brute, &bp->table);
 	}

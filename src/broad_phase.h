@@ -1,7 +1,7 @@
-// Internal: the broad phase, one interface over three methods (dynamic tree, sort-and-sweep,
-// brute force). Each method lives in its own file with the same functions in the same order:
+// Internal: the broad phase, one interface over four methods (dynamic tree, sort-and-sweep,
+// spatial hash, brute force). Each method lives in its own file with the same functions in the same order:
 // dynamic_tree.c (the stand-alone tree, used here through tbBroadPhase), sort_and_sweep.c,
-// brute_force.c; broad_phase.c dispatches and builds the pair set.
+// spatial_hash.c, brute_force.c; broad_phase.c dispatches and builds the pair set.
 //
 // Contract (what makes trajectories identical under every method):
 // - A proxy is a fat AABB plus category bits plus an int shape index (the world's shape id).
@@ -15,6 +15,7 @@
 #include "brute_force.h"
 #include "proxy_table.h"
 #include "sort_and_sweep.h"
+#include "spatial_hash.h"
 
 #include "tumble/constants.h"
 #include "tumble/types.h"
@@ -43,6 +44,7 @@ typedef struct tbBroadPhase
 	tbDynamicTree staticTree;
 	tbDynamicTree movableTree;
 	tbSortAndSweep* sweep;
+	tbSpatialHash* hash;
 	tbBruteForce* brute;
 
 	// Static proxies inserted into the static tree since its last rebuild (tree method): a bulk

@@ -45,16 +45,16 @@
 #define TB_CONTACTS_PER_TASK 256
 
 // The solver index of a body, or `staticIndex` for bodies that are not in the awake set (static,
-// asleep, or a stale index). The check against awakeBodies makes a stale solverIndex harmless.
+// asleep, or a stale index). The check against awakeBodies makes a stale solverIndex harmless, so
+// nothing is written here (contacts are prepared on several workers; a static body has many).
 static int tbGetSolverIndex(const tbWorld* world, int bodyId, int staticIndex)
 {
-	tbBody* body = world->bodies + bodyId;
+	const tbBody* body = world->bodies + bodyId;
 	int index = body->solverIndex;
 	if (index >= 0 && index < staticIndex && world->awakeBodies[index] == bodyId)
 	{
 		return index;
 	}
-	body->solverIndex = TB_NULL_INDEX;
 	return staticIndex;
 }
 

@@ -9,6 +9,7 @@
 #include "array.h"
 
 #include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
 
 static tbWorld* s_worlds[TB_MAX_WORLDS];
@@ -166,15 +167,51 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 }
 
 // The automatic broad phase, from the scene's statistics over a window of steps. Measured with
-// tumble-bench-broadphase (every body moving): sort-and-sweep is ~1.5× faster than the tree up to
-// ~4k bodies when about a third of the proxies move each step (break-even near a quarter: the
-// tree's cost follows the moves, sort-and-sweep's does not), and 1.5× slower at 64k; it also sweeps sleeping and static proxies every step, and
-// its queries (continuous collision, user queries) scan linearly. So sort-and-sweep is chosen
-// only when few movable proxies mostly all move, static proxies do not dominate and fast bodies
-// are rare; otherwise the tree. A switch needs two windows in a row that agree (hysteresis).
-// Both methods report identical pairs, so switching never changes a trajectory.
+// tumble-bench (catalogue scenes, every method) and tumble-bench-broadphase (boxes drifting): the
+// spatial hash is the fastest when many proxies move each step and the boxes are of similar sizes
+// (junkyard 1.5×, rain 1.36×, the ball pile 1.14×, the tumbler 1.1× faster than the tree; 2× at
+// 16k–64k uniform boxes), and the slowest when sizes spread over 100× (3× slower at 64k: large
+// boxes cover many cells). The tree wins when few proxies move (a settled pile: it does nothing for
+// unmoved proxies while the hash re-hashes every movable proxy; many_pyramids 4 % faster).
+// Sort-and-sweep wins only for few, sparse, similar-size boxes, where all three cost little. So:
+// the hash when more than a quarter of the movable proxies move per step and the 90th percentile
+// of their sizes is within TB_AUTO_HASH_SPREAD of the median; else sort-and-sweep when few movable
+// proxies mostly all move, static proxies do not dominate and fast bodies are rare (its queries
+// scan linearly); otherwise the tree. A switch needs two windows in a row that agree (hysteresis).
+// Every method reports identical pairs, so switching never changes a trajectory.
 #define TB_AUTO_WINDOW 60
 #define TB_AUTO_SWEEP_MAX_PROXIES 4096
+#define TB_AUTO_HASH_SPREAD 4.0f
+
+static int tbCompareSizes(const void* a, const void* b)
+{
+	float x = *(const float*)a, y = *(const float*)b;
+	return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+/// 90th percentile over median of the movable proxies' largest box side (1 without proxies).
+static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
+{
+	if (movable == 0)
+	{
+		return 1.0f;
+	}
+	float* sides = tbAlloc(movable * (int)sizeof(float));
+	int n = 0;
+	for (int key = 0; key < bp->table.capacity && n < movable; ++key)
+	{
+		const tbBroadProxy* p = bp->table.proxies + key;
+		if (p->isFree == false && p->type != tb_proxyStatic)
+		{
+			tbVec2 d = tbSub(p->aabb.upperBound, p->aabb.lowerBound);
+			sides[n++] = tbMaxFloat(d.x, d.y);
+		}
+	}
+	qsort(sides, (size_t)n, sizeof(float), tbCompareSizes);
+	float median = sides[n / 2], high = sides[(9 * n) / 10];
+	tbFree(sides, movable * (int)sizeof(float));
+	return median > 0.0f ? high / median : TB_AUTO_HASH_SPREAD + 1.0f;
+}
 
 static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 {
@@ -188,6 +225,10 @@ static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 	float window = (float)world->autoWindowSteps;
 	float movedFraction = movable > 0 ? (float)world->autoMovedProxies / (window * (float)movable) : 0.0f;
 	float fastFraction = movable > 0 ? (float)world->autoFastBodies / (window * (float)movable) : 0.0f;
+	if (movedFraction > 0.25f && tbMovableSizeSpread(bp, movable) <= TB_AUTO_HASH_SPREAD)
+	{
+		return tb_broadPhaseSpatialHash;
+	}
 	bool sweep = movable <= TB_AUTO_SWEEP_MAX_PROXIES && movedFraction > 0.25f && statics <= movable &&
 				 fastFraction < 0.01f;
 	return sweep ? tb_broadPhaseSortAndSweep : tb_broadPhaseTree;

@@ -1,5 +1,6 @@
-// Broad phase: the three methods (tree, sort-and-sweep, brute force) must report identical pair
-// sets — same pairs, same order — on a moving scene, across method switches and destroys.
+// Broad phase: the four methods (tree, sort-and-sweep, spatial hash, brute force) must report
+// identical pair sets — same pairs, same order — on a moving scene, across method switches and
+// destroys; brute force, the last, is the reference.
 #include <criterion/criterion.h>
 
 #include "broad_phase.h"
@@ -17,9 +18,10 @@ static float RandomFloat(float lower, float upper)
 	return lower + (upper - lower) * (float)(s_seed >> 8) / 16777216.0f;
 }
 
-#define METHOD_COUNT 3
+#define METHOD_COUNT 4
+#define REFERENCE (METHOD_COUNT - 1)
 static const tbBroadPhaseMethod s_methods[METHOD_COUNT] = {tb_broadPhaseTree, tb_broadPhaseSortAndSweep,
-															tb_broadPhaseBruteForce};
+															tb_broadPhaseSpatialHash, tb_broadPhaseBruteForce};
 
 #define MAX_BODIES 2000
 
@@ -235,9 +237,11 @@ Test(broad_phase, set_method_mid_run_keeps_pairs_identical)
 			// Rotate the methods of the first two broad phases; re-set the reference so all count
 			// as moved there too.
 			int shift = step / 30;
-			tbBroadPhase_SetMethod(&scene->bp[0], s_methods[shift % 3]);
-			tbBroadPhase_SetMethod(&scene->bp[1], s_methods[(shift + 1) % 3]);
-			tbBroadPhase_SetMethod(&scene->bp[2], tb_broadPhaseBruteForce);
+			for (int m = 0; m < REFERENCE; ++m)
+			{
+				tbBroadPhase_SetMethod(&scene->bp[m], s_methods[(shift + m) % REFERENCE]);
+			}
+			tbBroadPhase_SetMethod(&scene->bp[REFERENCE], tb_broadPhaseBruteForce);
 			ValidateAll(scene);
 		}
 		UpdateAndCompare(scene, step);
@@ -370,10 +374,82 @@ Test(broad_phase, queries_and_ray_casts_agree_across_methods)
 		}
 		for (int m = 0; m < METHOD_COUNT - 1; ++m)
 		{
-			cr_assert_eq(results[m].count, results[2].count);
-			cr_assert(memcmp(results[m].shapes, results[2].shapes, (size_t)results[m].count * sizeof(int)) == 0);
-			cr_assert_float_eq(fractions[m], fractions[2], 1e-6f, "ray %d method %d", q, (int)s_methods[m]);
+			cr_assert_eq(results[m].count, results[REFERENCE].count, "query %d method %d", q, (int)s_methods[m]);
+			cr_assert(memcmp(results[m].shapes, results[REFERENCE].shapes, (size_t)results[m].count * sizeof(int)) == 0);
+			cr_assert_float_eq(fractions[m], fractions[REFERENCE], 1e-6f, "ray %d method %d", q, (int)s_methods[m]);
 		}
 	}
 	DestroyScene(scene);
+}
+
+typedef struct StaticHits
+{
+	const tbBroadPhase* bp;
+	int shapes[MAX_BODIES];
+	int count;
+} StaticHits;
+
+static bool CollectStatic(int proxyKey, int shapeIndex, void* context)
+{
+	StaticHits* hits = context;
+	cr_assert(hits->bp->table.proxies[proxyKey].type == tb_proxyStatic, "a static query returned a movable proxy");
+	hits->shapes[hits->count++] = shapeIndex;
+	return true;
+}
+
+// Sizes the spatial hash handles worst: a 400 × 2 m static ground and a 60 × 60 m static wall
+// (thousands of cells: kept apart as large proxies), a 30 m box moving through 0.05 m grains,
+// proxies created and destroyed between updates. Every method must still report brute force's
+// pairs, and static-only queries (continuous collision's) must return brute force's statics.
+Test(broad_phase, mixed_sizes_and_huge_proxies_agree)
+{
+	int startBytes = tbGetByteCount();
+	s_seed = 99u;
+	Scene* scene = &s_scene;
+	CreateScene(scene, 600, 30.0f, 0.1f);
+	tbAABB huge[3] = {{{-200.0f, -32.0f}, {200.0f, -30.0f}}, {{31.0f, -30.0f}, {91.0f, 30.0f}}, {{-15.0f, -15.0f}, {15.0f, 15.0f}}};
+	int hugeKeys[METHOD_COUNT][3];
+	for (int m = 0; m < METHOD_COUNT; ++m)
+	{
+		for (int h = 0; h < 3; ++h)
+		{
+			hugeKeys[m][h] = tbBroadPhase_CreateProxy(&scene->bp[m], huge[h], 1, MAX_BODIES + h,
+													  h < 2 ? tb_proxyStatic : tb_proxyMovable);
+		}
+	}
+	for (int i = 0; i < 100; ++i)
+	{
+		float x = RandomFloat(-29.0f, 29.0f), y = RandomFloat(-29.0f, 29.0f);
+		scene->tight[i] = (tbAABB){{x, y}, {x + 0.05f, y + 0.05f}}; // grains among the boxes
+		MoveBody(scene, i, tbAABB_Fatten(scene->tight[i], 0.01f));
+	}
+	static StaticHits hits[METHOD_COUNT];
+	for (int step = 0; step < 90; ++step)
+	{
+		StepScene(scene);
+		float t = (float)step / 90.0f;
+		tbAABB moving = {{-45.0f + 60.0f * t, -15.0f}, {-15.0f + 60.0f * t, 15.0f}};
+		for (int m = 0; m < METHOD_COUNT; ++m)
+		{
+			tbBroadPhase_MoveProxy(&scene->bp[m], hugeKeys[m][2], moving);
+		}
+		UpdateAndCompare(scene, step);
+		ValidateAll(scene);
+		tbAABB box = {{RandomFloat(-40.0f, 20.0f), RandomFloat(-40.0f, 20.0f)}, {0.0f, 0.0f}};
+		box.upperBound = tbAdd(box.lowerBound, (tbVec2){RandomFloat(0.1f, 20.0f), RandomFloat(0.1f, 20.0f)});
+		for (int m = 0; m < METHOD_COUNT; ++m)
+		{
+			hits[m].bp = &scene->bp[m];
+			hits[m].count = 0;
+			tbBroadPhase_QueryStatic(&scene->bp[m], box, UINT64_MAX, CollectStatic, hits + m);
+			qsort(hits[m].shapes, (size_t)hits[m].count, sizeof(int), CompareInts);
+		}
+		for (int m = 0; m < REFERENCE; ++m)
+		{
+			cr_assert_eq(hits[m].count, hits[REFERENCE].count, "step %d method %d static query", step, (int)s_methods[m]);
+			cr_assert(memcmp(hits[m].shapes, hits[REFERENCE].shapes, (size_t)hits[m].count * sizeof(int)) == 0);
+		}
+	}
+	DestroyScene(scene);
+	cr_assert_eq(tbGetByteCount(), startBytes);
 }

@@ -57,14 +57,17 @@ static uint64_t RunRain(tbBroadPhaseMethod method, int steps, int* contacts)
 
 Test(determinism, trajectories_identical_under_every_broad_phase)
 {
-	int contactsTree, contactsSweep, contactsBrute;
+	int contactsTree, contactsSweep, contactsBrute, contactsHash;
 	uint64_t tree = RunRain(tb_broadPhaseTree, 120, &contactsTree);
 	uint64_t sweep = RunRain(tb_broadPhaseSortAndSweep, 120, &contactsSweep);
 	uint64_t brute = RunRain(tb_broadPhaseBruteForce, 120, &contactsBrute);
+	uint64_t hash = RunRain(tb_broadPhaseSpatialHash, 120, &contactsHash);
 	// The scene must actually collide, or the comparison proves nothing.
 	cr_assert_gt(contactsTree, 1000);
 	cr_assert_eq(tree, sweep, "sort-and-sweep trajectory differs from the tree's");
 	cr_assert_eq(tree, brute, "brute-force trajectory differs from the tree's");
+	cr_assert_eq(tree, hash, "spatial-hash trajectory differs from the tree's");
+	cr_assert_eq(contactsTree, contactsHash);
 	cr_assert_eq(contactsTree, contactsSweep);
 	cr_assert_eq(contactsTree, contactsBrute);
 }
@@ -80,9 +83,10 @@ Test(determinism, same_scene_twice_gives_same_bits)
 /// alternate direction; circles 2 m apart in a row, so nothing touches): each moves 0.2 m per step,
 /// more than its fat box holds for long, so about half the proxies move every step, yet no body
 /// moves more than the 0.25 m that speculative contacts cover, so none is fast; there is no static
-/// geometry. This is the regime where sort-and-sweep beats the tree (tumble-bench-broadphase),
-/// and the automatic broad phase must pick it, with a trajectory equal to the tree's bit for bit.
-static uint64_t RunDrift(tbBroadPhaseMethod method, tbBroadPhaseMethod* chosen)
+/// geometry. This is the regime where the spatial hash (same sizes) or sort-and-sweep (spread
+/// sizes) beats the tree (tumble-bench-broadphase). With spreadSizes every fifth circle has radius
+/// 3 and the rows are 8 m apart.
+static uint64_t RunDrift(tbBroadPhaseMethod method, bool spreadSizes, tbBroadPhaseMethod* chosen)
 {
 	tbWorldDef def = tbDefaultWorldDef();
 	def.gravity = tbMakeVec2(0.0f, 0.0f);
@@ -94,11 +98,12 @@ static uint64_t RunDrift(tbBroadPhaseMethod method, tbBroadPhaseMethod* chosen)
 		float direction = (i / 32) % 2 == 0 ? 1.0f : -1.0f;
 		tbBodyDef bd = tbDefaultBodyDef();
 		bd.type = tb_dynamicBody;
-		bd.position = tbMakeVec2(2.0f * (float)(i % 32), 2.0f * (float)(i / 32));
+		float spacing = spreadSizes ? 8.0f : 2.0f;
+		bd.position = tbMakeVec2(spacing * (float)(i % 32), spacing * (float)(i / 32));
 		bd.linearVelocity = tbMakeVec2(12.0f * direction, 0.0f);
 		bodies[i] = tbCreateBody(world, &bd);
 		tbShapeDef sd = tbDefaultShapeDef();
-		tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+		tbCircle circle = {{0.0f, 0.0f}, spreadSizes && i % 5 == 0 ? 3.0f : 0.5f};
 		tbCreateCircleShape(bodies[i], &sd, &circle);
 	}
 	for (int i = 0; i < 240; ++i)
@@ -120,14 +125,21 @@ static uint64_t RunDrift(tbBroadPhaseMethod method, tbBroadPhaseMethod* chosen)
 	return hash;
 }
 
-Test(determinism, auto_broad_phase_picks_sweep_for_small_moving_scenes)
+// 1,000 moving circles of one size: auto switches from the tree to the spatial hash; with one in
+// five six times wider (90th percentile of sizes 6× the median), to sort-and-sweep. Either way the
+// trajectory is the tree's, bit for bit.
+Test(determinism, auto_broad_phase_picks_hash_or_sweep_for_moving_scenes)
 {
-	tbBroadPhaseMethod autoChoice, treeChoice;
-	uint64_t autoHash = RunDrift(tb_broadPhaseAuto, &autoChoice);
-	uint64_t treeHash = RunDrift(tb_broadPhaseTree, &treeChoice);
-	cr_assert_eq(autoChoice, tb_broadPhaseSortAndSweep, "auto chose %d", (int)autoChoice);
-	cr_assert_eq(treeChoice, tb_broadPhaseTree);
-	cr_assert_eq(autoHash, treeHash, "switching broad phase changed the trajectory");
+	for (int spread = 0; spread < 2; ++spread)
+	{
+		tbBroadPhaseMethod autoChoice, treeChoice;
+		uint64_t autoHash = RunDrift(tb_broadPhaseAuto, spread == 1, &autoChoice);
+		uint64_t treeHash = RunDrift(tb_broadPhaseTree, spread == 1, &treeChoice);
+		tbBroadPhaseMethod expected = spread == 1 ? tb_broadPhaseSortAndSweep : tb_broadPhaseSpatialHash;
+		cr_assert_eq(autoChoice, expected, "spread %d: auto chose %d", spread, (int)autoChoice);
+		cr_assert_eq(treeChoice, tb_broadPhaseTree);
+		cr_assert_eq(autoHash, treeHash, "switching broad phase changed the trajectory");
+	}
 }
 
 /// A catalogue scene stepped on a reference task system of `workers` workers (1: no task system);

@@ -17,6 +17,7 @@ typedef enum tbBroadPhaseMethod
 	tb_broadPhaseTree,		   ///< dynamic AABB tree (SAH insertion, rotations)
 	tb_broadPhaseSortAndSweep, ///< sort-and-sweep on the axis of largest variance
 	tb_broadPhaseBruteForce,   ///< all pairs, O(n²): the ground truth
+	tb_broadPhaseSpatialHash,  ///< uniform grid hashed into buckets, cell twice the median box: many same-size bodies
 	tb_broadPhaseMethodCount
 } tbBroadPhaseMethod;
 

@@ -1,0 +1,34 @@
+// Internal: the spatial-hash broad phase (spatial_hash.c), a uniform grid hashed into buckets.
+// Same functions in the same order as sort_and_sweep.h, plus the static-only query continuous
+// collision uses.
+#pragma once
+
+#include "proxy_table.h"
+
+typedef struct tbSpatialHash tbSpatialHash;
+
+tbSpatialHash* tbSpatialHash_Create(void);
+void tbSpatialHash_Destroy(tbSpatialHash* hash);
+
+/// A static proxy added, removed or moved makes the static grid be rebuilt on the next FindPairs;
+/// movable proxies are hashed afresh by every FindPairs.
+void tbSpatialHash_AddProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey);
+void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey);
+void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash);
+
+/// Hash the proxies and append every overlapping pair with a moved member (not static–static)
+/// through tbPairList_Add.
+void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs);
+
+/// Queries: static proxies through the static grid when it is current, movable ones by a scan of
+/// the table (they may have moved since the grid was built). Ray casts scan the table.
+void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, tbAABB aabb, uint64_t maskBits,
+						 bool staticOnly, tbTreeQueryCallbackFcn* callback, void* context);
+void tbSpatialHash_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
+						   tbTreeRayCastCallbackFcn* callback, void* context);
+
+/// Cell size (m) in use, for the benchmarks.
+float tbSpatialHash_GetCellSize(const tbSpatialHash* hash);
+
+/// The static grid, when current, holds every small static proxy in every cell its box covers.
+bool tbSpatialHash_Validate(const tbSpatialHash* hash, const tbProxyTable* table);
