@@ -343,6 +343,7 @@ typedef struct Options
 	const char* csvPath;
 	bool peers;					 ///< time peers too (--peers: all built ones; --peer NAME: those named)
 	int workers;				 ///< --workers N: Tumble on a task system of N workers, Box2D v3 with N workers
+	bool skipTumble;			 ///< --skip-tumble: time the peers only (to time engines in separate processes)
 	bool peerNamed[engineCount]; ///< --peer NAME given for this engine
 	bool interleaveSteps;		 ///< --interleave: the engines' worlds side by side, stepped in turn
 	TumbleConfig config;
@@ -510,6 +511,7 @@ static int RunScenes(const Options* options)
 		{
 			wanted[e] = EngineAvailable((Engine)e) && (e == engineTumble || options->peerNamed[e]);
 		}
+		wanted[engineTumble] = options->skipTumble == false;
 		RunSceneEngines(scene, names[s], steps, options->repeat, &options->config, wanted, options->interleaveSteps,
 						results[s]);
 		for (int e = 0; e < engineCount; ++e)
@@ -1354,7 +1356,9 @@ static void PrintUsage(void)
 		   "--peer NAME only the peers named; --repeat rounds interleave the engines run by run,\n"
 		   "--interleave step by step (all worlds built side by side, each step timed alone).\n"
 		   "--workers N runs Tumble on the reference task system (samples/task_system.c) and Box2D v3\n"
-		   "with N workers (its own scheduler); the other peers stay single-threaded.\n");
+		   "with N workers (its own scheduler); the other peers stay single-threaded. Two engines' worker\n"
+		   "threads disturb each other in one process: --skip-tumble times the peers alone, so that\n"
+		   "separate processes can be alternated.\n");
 }
 
 static bool ParseMethod(const char* option, const char* value, SceneMethods* methods)
@@ -1448,6 +1452,10 @@ int main(int argc, char** argv)
 		else if (strcmp(arg, "--scalar-solver") == 0)
 		{
 			options.config.overrides.scalarSolver = true;
+		}
+		else if (strcmp(arg, "--skip-tumble") == 0)
+		{
+			options.skipTumble = true;
 		}
 		else if (strcmp(arg, "--workers") == 0 && hasValue)
 		{
