@@ -177,9 +177,13 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 // the hash when more than a quarter of the movable proxies move per step and the 90th percentile
 // of their sizes is within TB_AUTO_HASH_SPREAD of the median; else sort-and-sweep when few movable
 // proxies mostly all move, static proxies do not dominate and fast bodies are rare (its queries
-// scan linearly); otherwise the tree. A switch needs two windows in a row that agree (hysteresis).
+// scan linearly); otherwise the tree. A switch needs two windows in a row that agree (hysteresis):
+// windows of 60 steps, 15 while the world is young.
 // Every method reports identical pairs, so switching never changes a trajectory.
 #define TB_AUTO_WINDOW 60
+/// Windows are shorter while the world is young (its first TB_AUTO_WINDOW steps), so that a scene
+/// that suits another method switches by step 30 rather than 120.
+#define TB_AUTO_FIRST_WINDOW 15
 #define TB_AUTO_SWEEP_MAX_PROXIES 4096
 #define TB_AUTO_HASH_SPREAD 4.0f
 
@@ -243,7 +247,8 @@ static void tbUpdateAutoBroadPhase(tbWorld* world)
 	world->autoWindowSteps += 1;
 	world->autoMovedProxies += world->counters.proxyMoves;
 	world->autoFastBodies += world->counters.fastBodies;
-	if (world->autoWindowSteps < TB_AUTO_WINDOW)
+	int window = world->stepIndex < TB_AUTO_WINDOW ? TB_AUTO_FIRST_WINDOW : TB_AUTO_WINDOW;
+	if (world->autoWindowSteps < window)
 	{
 		return;
 	}
