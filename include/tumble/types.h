@@ -13,7 +13,7 @@ extern "C" {
 /// Broad-phase method. Every method reports the same pairs in the same order.
 typedef enum tbBroadPhaseMethod
 {
-	tb_broadPhaseAuto,		   ///< chosen from the scene (currently: the dynamic tree)
+	tb_broadPhaseAuto,		   ///< chosen from the scene: the tree, or the spatial hash or sort-and-sweep (docs/methods.md)
 	tb_broadPhaseTree,		   ///< dynamic AABB tree (SAH insertion, rotations)
 	tb_broadPhaseSortAndSweep, ///< sort-and-sweep on the axis of largest variance
 	tb_broadPhaseBruteForce,   ///< all pairs, O(n²): the ground truth
