@@ -189,8 +189,9 @@ void* TaskSystem_Enqueue(tbTaskCallback* callback, int itemCount, int minRange, 
 		}
 		return NULL;
 	}
-	// As many ranges as workers (at least minRange items each), so each worker takes one.
-	int workers = system->workerCount;
+	// Four ranges per worker (at least minRange items each): uneven items even out as workers that
+	// finish early take more ranges.
+	int workers = 4 * system->workerCount;
 	int rangeSize = (itemCount + workers - 1) / workers;
 	rangeSize = rangeSize < minRange ? minRange : rangeSize;
 	Task* task = &system->task;
