@@ -1,4 +1,4 @@
-// tumble-stability: the stress scenes of /work/shared/STRESS.md run under each position method
+// tumble-stability: the stress scenes of docs/stability.md (set-ups and pass criteria there) run under each position method
 // (soft step, Baumgarte, NGS) at 1, 2, 4 and 8 sub-steps or iterations, judged by each scene's
 // pass criterion. Writes a CSV of the measurements and the markdown page docs/stability.md.
 //
@@ -153,7 +153,7 @@ typedef Result SceneFunction(const Config* config);
 #define CRADLE_SECONDS 3
 
 // Touching stack of 20 (catalogue touching_stack: 1 m boxes, friction 0.6, centres 0.5 + i).
-// Pass (STRESS.md): the top box within 0.1 m of its rigid height 19.5 m, here also within
+// Pass: the top box within 0.1 m of its rigid height 19.5 m, here also within
 // 0.1 m of x = 0 (a stack that topples fails), after 10 s.
 static Result RunTouchingStack(const Config* config)
 {
@@ -182,7 +182,7 @@ static Result RunTouchingStack(const Config* config)
 	return r;
 }
 
-// Pyramid of base 20 (catalogue pyramid: 210 boxes, friction 0.6, sleep off). Pass (STRESS.md):
+// Pyramid of base 20 (catalogue pyramid: 210 boxes, friction 0.6, sleep off). Pass:
 // top box drift < 0.1 m and kinetic energy < 1e-2 J after 5 s.
 static Result RunPyramid(const Config* config)
 {
@@ -262,7 +262,7 @@ static float RandomSigned(uint32_t* state)
 	return 2.0f * ((float)(NextRandom(state) >> 8) / 16777216.0f) - 1.0f;
 }
 
-// Card house (catalogue card_house, which matches STRESS.md). Five runs, each card placed with
+// Card house (catalogue card_house, the stress set-up). Five runs, each card placed with
 // ±0.05 mm uniform noise in x and y. A run stands when both cards of the top A-frame stay within
 // 0.05 m of their start for 10 s. Pass: ≥ 4 of 5 stand and the deepest penetration < 5 mm.
 static Result RunCardHouse(const Config* config)
@@ -326,7 +326,7 @@ static Result RunCardHouse(const Config* config)
 	return r;
 }
 
-// Confined (catalogue confined, matches STRESS.md: 625 circles r 0.5, 0.72 m apart, inside four
+// Confined (catalogue confined, set-up: 625 circles r 0.5, 0.72 m apart, inside four
 // capsules bounding x ∈ [−10, 10], y ∈ [0.5, 20], no gravity). Pass: no pair overlaps > 0.5 m
 // (sampled every 5 steps), kinetic energy < 1e-2 J at 5 s, speed < 3 m/s after 1 s, every centre
 // inside the box.
@@ -365,7 +365,7 @@ static Result RunConfined(const Config* config)
 	return r;
 }
 
-// Overlap recovery (catalogue overlap_recovery, matches STRESS.md: base-4 pyramid of 1 m boxes
+// Overlap recovery (catalogue overlap_recovery, set-up: base-4 pyramid of 1 m boxes
 // 0.75 m apart). Pass: deepest overlap < 0.01 m from t = 1 s on, peak speed ≤ 3.5 m/s over 2 s,
 // no box rises > 0.1 m above its rest height (row r rests at 0.5 + r).
 static Result RunOverlapRecovery(const Config* config)
@@ -438,7 +438,7 @@ static Result RunSlope(const Config* config)
 	return r;
 }
 
-// Newton's cradle (catalogue newtons_cradle, matches STRESS.md: five r 0.5 balls e = 1 touching,
+// Newton's cradle (catalogue newtons_cradle, set-up: five r 0.5 balls e = 1 touching,
 // a sixth at v0 = 2.71 m/s, no gravity, no friction). Pass after 3 s: the last ball ≥ 0.9 v0,
 // every other ball ≤ 0.1 v0.
 static Result RunNewtonsCradle(const Config* config)
@@ -594,8 +594,8 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 {
 	fprintf(f, "# Stability: position methods on the stress scenes\n\n");
 	fprintf(f, "Produced by `scripts/stability.sh` (Release build, no sanitizers, `tumble-stability`); the measured\n"
-			   "numbers are in `bench/results/stability.csv`. Scenes and pass criteria follow\n"
-			   "`/work/shared/STRESS.md`; the run took %.0f s on this machine.\n\n",
+			   "numbers are in `bench/results/stability.csv`. Scenes and pass criteria are those of the table\n"
+			   "below (set-ups and criteria stated there); the run took %.0f s on this machine.\n\n",
 			seconds);
 	fprintf(f, "Rows: **soft** is the soft step (Box2D v3) at 1, 2, 4, 8 sub-steps per 1/60 s step (relax\n"
 			   "iterations 1, the default); **baumgarte** and **ngs** run one sub-step per step with 1, 2, 4, 8\n"
@@ -648,7 +648,7 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 	if (cardsRefused)
 	{
 		fprintf(f, "\n**Card house not run (n/a):** `tbCreatePolygonShape` refuses the card, `tbMakeBox(0.001, 0.2)`\n"
-				   "(0.002 × 0.4 m, STRESS.md's size): `tbCheckPolygon` → `tbValidateHull` rejects edges shorter than\n"
+				   "(0.002 × 0.4 m, the stress set-up's size): `tbCheckPolygon` → `tbValidateHull` rejects edges shorter than\n"
 				   "`TB_LINEAR_SLOP` = 0.005 m, so `card_house` builds 40 bodies without shapes. Box2D v3 accepts this box.\n"
 				   "The column will fill in when the library accepts thin boxes.\n");
 	}
@@ -676,7 +676,7 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 	{
 		fprintf(f, "It holds every scene.\n");
 	}
-	fprintf(f, "\nFor scale (STRESS.md): Box2D v3's soft contacts sink a touching stack of 20 by 0.13 m, its last\n"
+	fprintf(f, "\nFor scale (measured peers): Box2D v3's soft contacts sink a touching stack of 20 by 0.13 m, its last\n"
 			   "cradle ball leaves at 1.4 of 2.71 m/s (0.52 v0), and it lets a heavy box on small ones sink 0.08–0.2 m.\n");
 
 	fprintf(f, "\n## Scenes, durations and criteria\n\n");
@@ -690,23 +690,23 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 			"| mass 1:100, 1:1000 | catalogue `mass_ratio`: two 1 m boxes on the ground, the top one 100× denser "
 			"(for 1:1000 its density is set to 1000 here); the heavy box is as big as the light one | %d s | top box "
 			"stays within 0.05 m of (0, 1.5) and turns < 0.1 rad; deepest penetration over the run < 0.05 m |\n"
-			"| card house | catalogue `card_house` (matches STRESS.md: 40 cards, 5 levels, friction 0.7); 5 runs "
+			"| card house | catalogue `card_house` (set-up: 40 cards, 5 levels, friction 0.7); 5 runs "
 			"with ±0.05 mm uniform placement noise in x and y | %d s per run | ≥ 4 runs keep both cards of the top "
 			"A-frame within 0.05 m; deepest penetration over all runs < 5 mm |\n"
-			"| confined 625 | catalogue `confined` (matches STRESS.md: 625 circles r 0.5 0.72 m apart in four "
+			"| confined 625 | catalogue `confined` (set-up: 625 circles r 0.5 0.72 m apart in four "
 			"capsules, no gravity) | %d s | overlap ≤ 0.5 m (sampled every 5 steps), kinetic energy < 1e-2 J at "
 			"the end, speed < 3 m/s after 1 s, no centre outside the box (cell: final kinetic energy) |\n"
-			"| overlap recovery | catalogue `overlap_recovery` (matches STRESS.md: base-4 pyramid, centres 0.75 m"
+			"| overlap recovery | catalogue `overlap_recovery` (set-up: base-4 pyramid, centres 0.75 m"
 			" apart) | %d s | overlap < 0.01 m from 1 s on, peak speed ≤ 3.5 m/s, no box > 0.1 m above its rest"
 			" height (cell: last time an overlap ≥ 0.01 m was seen) |\n"
 			"| slope creep | catalogue `slope` (1 m box on a 20° slab) with both frictions changed to "
-			"μ = tan 20° + 0.02 = 0.384 (the catalogue uses 0.6) | %d s (as STRESS.md) | creep along the slope "
+			"μ = tan 20° + 0.02 = 0.384 (the catalogue uses 0.6) | %d s (the criterion's duration) | creep along the slope "
 			"< 1 mm |\n"
-			"| Newton's cradle | catalogue `newtons_cradle` (matches STRESS.md: 5 balls r 0.5, e = 1, striker at "
+			"| Newton's cradle | catalogue `newtons_cradle` (set-up: 5 balls r 0.5, e = 1, striker at "
 			"v0 = 2.71 m/s, no gravity, no friction) | %d s | last ball ≥ 0.9 v0, every other ball ≤ 0.1 v0 |\n",
 			STACK_SECONDS, PYRAMID_SECONDS, MASS_RATIO_SECONDS, CARD_SECONDS, CONFINED_SECONDS, OVERLAP_SECONDS,
 			SLOPE_SECONDS, CRADLE_SECONDS);
-	fprintf(f, "\nDurations are shortened from STRESS.md's 10 s where the scene is settled or costly (pyramid and"
+	fprintf(f, "\nDurations are shortened from the usual 10 s where the scene is settled or costly (pyramid and"
 			   "\nconfined 5 s, as their criteria are stated at 5 s; overlap recovery 2 s; cradle 3 s, the last ball"
 			   "\nleaves at about 0.75 s).\n");
 	WriteSweep(f, sweep);

@@ -1,8 +1,8 @@
 // World-level checks of the contact solver against closed forms and the stress criteria of
-// docs/STRESS.md (shared/STRESS.md): sliding distance, bounce apex, slope creep and slide, stacks,
+// the stress criteria of docs/stability.md: sliding distance, bounce apex, slope creep and slide, stacks,
 // mass ratio, overlap recovery. 60 Hz, 4 sub-steps, g = 10 m/s², unless a test says otherwise.
 // Each scene runs with the default soft step; the rigid methods run where they are expected to
-// pass (failures of Baumgarte/NGS on the hard scenes are documented in STRESS.md, not asserted).
+// pass (failures of Baumgarte/NGS on the hard scenes are documented in docs/stability.md, not asserted).
 #include "tumble/tumble.h"
 
 #include <criterion/criterion.h>
@@ -241,7 +241,7 @@ static void SlopeHold(tbSolverMethod method)
 {
 	float travel = SlopeTravel(method, tanf(SLOPE_ANGLE) + 0.05f, 600);
 	fprintf(stderr, "slope hold[%s]: creep %.6f m in 10 s\n", s_methodNames[method], travel);
-	// 1 mm in 10 s: STRESS.md "slope" pass criterion.
+	// 1 mm in 10 s: the "slope" pass criterion (docs/stability.md).
 	cr_expect(fabsf(travel) < 1e-3f, "creep %f m", travel);
 }
 
@@ -252,7 +252,7 @@ static void SlopeSlide(tbSolverMethod method)
 	float expected = 0.5f * GRAVITY * (sinf(SLOPE_ANGLE) - mu * cosf(SLOPE_ANGLE));
 	fprintf(stderr, "slope slide[%s]: %.4f m in 1 s (closed form %.4f, error %.2f%%)\n", s_methodNames[method], travel,
 			expected, 100.0f * (travel - expected) / expected);
-	// 2%: the brief's tolerance (STRESS.md asks 1%; semi-implicit Euler is +½·a·Δt·t ahead = +0.8%).
+	// 2%: the brief's tolerance (the stress criterion asks 1%; semi-implicit Euler is +½·a·Δt·t ahead = +0.8%).
 	cr_expect(fabsf(travel - expected) < 0.02f * expected, "slide %f vs %f", travel, expected);
 }
 
@@ -369,7 +369,7 @@ Test(solver, heavy_on_light_ngs)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Overlap recovery (STRESS.md): a 4-base pyramid of ten 1 m boxes with centres 0.75 m apart in x
+// Overlap recovery (docs/stability.md): a 4-base pyramid of ten 1 m boxes with centres 0.75 m apart in x
 // and y (25% overlap). Must separate within 1 s without flinging anything.
 
 static void OverlapRecovery(tbSolverMethod method)
@@ -397,7 +397,7 @@ static void OverlapRecovery(tbSolverMethod method)
 	float overlap = MaxPenetration(&scene);
 	fprintf(stderr, "overlap recovery[%s]: overlap after 1 s %.4f m, peak speed %.3f m/s\n", s_methodNames[method],
 			overlap, peakSpeed);
-	// Brief: < 0.01 m within 1 s, no body above 4 m/s (STRESS.md: soft solvers 3 m/s, projection 8–12).
+	// Brief: < 0.01 m within 1 s, no body above 4 m/s (measured: soft solvers 3 m/s, projection 8–12).
 	cr_expect(overlap < 0.01f, "overlap %f", overlap);
 	cr_expect(peakSpeed < 4.0f, "peak speed %f", peakSpeed);
 	tbDestroyWorld(scene.worldId);
@@ -414,12 +414,12 @@ Test(solver, overlap_recovery_ngs)
 }
 
 // Not asserted for Baumgarte: the velocity bias (β/h)·overlap = 0.2·240·0.25 = 12 m/s per
-// sub-step flings the boxes (measured peak 33 m/s), the failure STRESS.md describes.
+// sub-step flings the boxes (measured peak 33 m/s), the failure docs/stability.md records.
 
 // ---------------------------------------------------------------------------------------------
 // Determinism, settling and sleep. The solve order (island.c, tbOrderSolverContacts) must not
 // depend on addresses, and a pyramid must come to rest without the sideways drift that a fixed
-// Gauss–Seidel sweep causes (STRESS.md "pyramid": top drift < 0.1 m).
+// Gauss–Seidel sweep causes ("pyramid" criterion, docs/stability.md: top drift < 0.1 m).
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -532,7 +532,7 @@ Test(solver, determinism_golden_hash)
 
 Test(solver, pyramid_20_settles_and_sleeps)
 {
-	// STRESS.md "pyramid": base 20 (210 boxes), friction 0.6, touching. Brief: fully asleep within
+	// "pyramid" (docs/stability.md): base 20 (210 boxes), friction 0.6, touching. Brief: fully asleep within
 	// 5 s, top box within 0.05 m of its start height (default soft step, sleep on).
 	Scene scene = CreateScene(tb_solverSoft, true);
 	AddGround(&scene, 0.0f, 0.6f, 0.0f);
@@ -574,7 +574,7 @@ Test(solver, stack_sleeps)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Soft step: touching stack of 20 (STRESS.md). At 30 Hz the soft contacts make the column sway
+// Soft step: touching stack of 20 (docs/stability.md). At 30 Hz the soft contacts make the column sway
 // and, with one relax pass, buckle (critical stiffness ≈ 45–50 Hz); settled contacts take the
 // resting stiffness (2 × 30 Hz, at most ¼ of the sub-step rate, solver_soft.c), which keeps it
 // standing, and more sub-steps must not be worse than fewer.
@@ -619,7 +619,7 @@ Test(solver, touching_stack_20_soft_more_substeps_not_worse)
 	float sink16 = TouchingStack20(16, &slide16);
 	fprintf(stderr, "touching stack 20: sink/slide 4: %.3f/%.3f, 8: %.3f/%.3f, 16: %.3f/%.3f m\n", sink4, slide4, sink8,
 			slide8, sink16, slide16);
-	// STRESS.md: top within 0.1 m of its rigid height (and standing).
+	// docs/stability.md: top within 0.1 m of its rigid height (and standing).
 	cr_expect(sink4 < 0.1f && fabsf(slide4) < 0.1f, "4 sub-steps: sink %f slide %f", sink4, slide4);
 	cr_expect(sink8 < 0.1f && fabsf(slide8) < 0.1f, "8 sub-steps: sink %f slide %f", sink8, slide8);
 	cr_expect(sink16 < 0.1f && fabsf(slide16) < 0.1f, "16 sub-steps: sink %f slide %f", sink16, slide16);
