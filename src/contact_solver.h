@@ -18,6 +18,8 @@ void tbPrepareContacts(tbStepContext* context);
 void tbWarmStartContacts(tbStepContext* context);
 void tbSolveContacts(tbStepContext* context, tbBiasPolicy policy);
 void tbApplyRestitution(tbStepContext* context);
+/// Impact propagation before the solve (tbWorldDef::enableImpactPropagation; contact_solver.c).
+void tbPropagateImpacts(tbStepContext* context);
 void tbStoreImpulses(tbStepContext* context);
 
 // contact_solver_wide.c

@@ -181,6 +181,7 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbGatherBodies(&context);
 	tbPrepareMethod(&context);
 	tbPrepareContacts(&context);
+	tbPropagateImpacts(&context); // before the colouring packs the constraints
 	tbPrepareJoints(&context); // joint.c: joints are few, solved one at a time (scalar)
 	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)
 	{

@@ -110,6 +110,9 @@ typedef struct tbWorldDef
 									///< bodies (joint_tree.c); false: row by row (Gauss–Seidel). Default true
 	bool enableManifoldRecycling;	///< touching pairs that barely moved since their manifold was computed keep
 									///< its points and only update separations (contact.c). Default true
+	bool enableImpactPropagation;	///< bouncing contacts (restitution > 0) take their impacts one pair at a
+									///< time before the solve, so an impact travels along a chain of touching
+									///< bodies (Newton's cradle). Default false (docs/methods.md)
 	tbFrictionCallback* frictionCallback;
 	tbRestitutionCallback* restitutionCallback;
 	int workerCount;					///< 1 to TB_MAX_WORKERS, default 1; more needs both task callbacks
