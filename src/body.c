@@ -1066,6 +1066,64 @@ void tbBody_EnableSleep(tbBodyId bodyId, bool enableSleep)
 	}
 }
 
+bool tbBody_IsSleepEnabled(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_IsSleepEnabled", NULL, false);
+	return body != NULL && body->enableSleep;
+}
+
+bool tbBody_SetSleepThreshold(tbBodyId bodyId, float sleepThreshold)
+{
+	const char* f = "tbBody_SetSleepThreshold";
+	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, true);
+	if (body == NULL || tbCheckNonNegative(f, "sleepThreshold", sleepThreshold) == false)
+	{
+		return false;
+	}
+	body->sleepThreshold = sleepThreshold;
+	return true;
+}
+
+float tbBody_GetSleepThreshold(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetSleepThreshold", NULL, false);
+	return body != NULL ? body->sleepThreshold : 0.0f;
+}
+
+void tbBody_ClearForces(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_ClearForces", NULL, false);
+	if (body != NULL)
+	{
+		body->force = tb_vec2_zero;
+		body->torque = 0.0f;
+	}
+}
+
+tbVec2 tbBody_GetWorldPointVelocity(tbBodyId bodyId, tbVec2 worldPoint)
+{
+	const char* f = "tbBody_GetWorldPointVelocity";
+	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, false);
+	if (body == NULL || tbCheckVec2(f, "worldPoint", worldPoint) == false)
+	{
+		return tb_vec2_zero;
+	}
+	tbVec2 r = tbSub(worldPoint, body->center);
+	return tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, r));
+}
+
+tbVec2 tbBody_GetLocalPointVelocity(tbBodyId bodyId, tbVec2 localPoint)
+{
+	const char* f = "tbBody_GetLocalPointVelocity";
+	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, false);
+	if (body == NULL || tbCheckVec2(f, "localPoint", localPoint) == false)
+	{
+		return tb_vec2_zero;
+	}
+	tbVec2 r = tbRotateVector(body->transform.q, tbSub(localPoint, body->localCenter));
+	return tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, r));
+}
+
 bool tbBody_IsBullet(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_IsBullet", NULL, false);

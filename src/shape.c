@@ -529,6 +529,18 @@ tbBodyId tbShape_GetBody(tbShapeId shapeId)
 	return shape != NULL ? tbMakeBodyId(world, shape->bodyId) : TB_NULL_BODY_ID;
 }
 
+tbWorldId tbShape_GetWorld(tbShapeId shapeId)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetWorld", &world, false);
+	if (shape == NULL)
+	{
+		return TB_NULL_WORLD_ID;
+	}
+	tbWorldId id = {(uint16_t)(world->worldId + 1), world->generation};
+	return id;
+}
+
 tbGeometry tbShape_GetGeometry(tbShapeId shapeId)
 {
 	tbGeometry g;

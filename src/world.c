@@ -635,6 +635,18 @@ bool tbWorld_SetRestitutionThreshold(tbWorldId worldId, float value)
 	return true;
 }
 
+float tbWorld_GetRestitutionThreshold(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetRestitutionThreshold");
+	return world != NULL ? world->def.restitutionThreshold : 0.0f;
+}
+
+float tbWorld_GetHitEventThreshold(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetHitEventThreshold");
+	return world != NULL ? world->def.hitEventThreshold : 0.0f;
+}
+
 bool tbWorld_SetHitEventThreshold(tbWorldId worldId, float value)
 {
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetHitEventThreshold");

@@ -103,3 +103,49 @@ Test(body, disabled_body_is_out_of_the_simulation)
 	cr_assert(fabsf(tbBody_GetPosition(box).y - 0.5f) < 0.01f, "rests at y %g", (double)tbBody_GetPosition(box).y);
 	tbDestroyWorld(world);
 }
+
+// Box2D v3's smaller body, shape and world accessors. A body at the origin turning at ω = 2 rad/s
+// and moving at (1, 0) m/s: the point (0, 1) moves at v + ω × r = (1, 0) + (−2, 0) = (−1, 0).
+// Clearing a force before the step leaves the velocity as it was (no gravity); the sleep
+// threshold is read back and a negative one refused; the world's thresholds read back.
+Test(body, v3_accessors, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	worldDef.gravity = tbMakeVec2(0.0f, 0.0f);
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.linearVelocity = tbMakeVec2(1.0f, 0.0f);
+	bodyDef.angularVelocity = 2.0f;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	tbShapeId shape = tbCreateCircleShape(body, &shapeDef, &circle);
+
+	tbVec2 v = tbBody_GetWorldPointVelocity(body, tbMakeVec2(0.0f, 1.0f));
+	cr_assert_float_eq(v.x, -1.0f, 1e-6f);
+	cr_assert_float_eq(v.y, 0.0f, 1e-6f);
+	v = tbBody_GetLocalPointVelocity(body, tbMakeVec2(0.0f, 1.0f));
+	cr_assert_float_eq(v.x, -1.0f, 1e-6f);
+
+	tbBody_ApplyForce(body, tbMakeVec2(100.0f, 0.0f), tbBody_GetPosition(body), true);
+	tbBody_ClearForces(body);
+	tbWorld_Step(world, 1.0f / 60.0f, 4);
+	cr_assert_float_eq(tbBody_GetLinearVelocity(body).x, 1.0f, 1e-6f);
+
+	cr_assert(tbBody_IsSleepEnabled(body));
+	cr_assert(tbBody_SetSleepThreshold(body, 0.2f));
+	cr_assert_float_eq(tbBody_GetSleepThreshold(body), 0.2f, 0.0f);
+	int before = s_errors;
+	cr_assert(tbBody_SetSleepThreshold(body, -1.0f) == false);
+	ExpectError(before, "tbBody_SetSleepThreshold", "sleepThreshold");
+	cr_assert_float_eq(tbBody_GetSleepThreshold(body), 0.2f, 0.0f);
+
+	cr_assert(tbWorld_SetRestitutionThreshold(world, 2.5f));
+	cr_assert_float_eq(tbWorld_GetRestitutionThreshold(world), 2.5f, 0.0f);
+	cr_assert(tbWorld_SetHitEventThreshold(world, 0.5f));
+	cr_assert_float_eq(tbWorld_GetHitEventThreshold(world), 0.5f, 0.0f);
+	tbWorldId owner = tbShape_GetWorld(shape);
+	cr_assert(owner.index1 == world.index1 && owner.generation == world.generation);
+	tbDestroyWorld(world);
+}

@@ -42,6 +42,8 @@ TB_API bool tbWorld_IsSleepingEnabled(tbWorldId worldId);
 TB_API bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio, float pushSpeed);
 TB_API bool tbWorld_SetRestitutionThreshold(tbWorldId worldId, float value);
 TB_API bool tbWorld_SetHitEventThreshold(tbWorldId worldId, float value);
+TB_API float tbWorld_GetRestitutionThreshold(tbWorldId worldId);
+TB_API float tbWorld_GetHitEventThreshold(tbWorldId worldId);
 TB_API void tbWorld_SetFrictionCallback(tbWorldId worldId, tbFrictionCallback* callback);
 TB_API void tbWorld_SetRestitutionCallback(tbWorldId worldId, tbRestitutionCallback* callback);
 /// Register the custom filter (NULL removes it); see tbCustomFilterFcn.
@@ -200,6 +202,15 @@ TB_API float tbBody_GetGravityScale(tbBodyId bodyId);
 TB_API bool tbBody_IsAwake(tbBodyId bodyId);
 TB_API void tbBody_SetAwake(tbBodyId bodyId, bool awake);
 TB_API void tbBody_EnableSleep(tbBodyId bodyId, bool enableSleep);
+TB_API bool tbBody_IsSleepEnabled(tbBodyId bodyId);
+/// Speed (m/s) below which the body counts as resting (its fastest point: |v| + |ω|·extent).
+TB_API bool tbBody_SetSleepThreshold(tbBodyId bodyId, float sleepThreshold);
+TB_API float tbBody_GetSleepThreshold(tbBodyId bodyId);
+/// Drop the force and torque accumulated since the last step.
+TB_API void tbBody_ClearForces(tbBodyId bodyId);
+/// Velocity of a point fixed to the body: v + ω × r, r from the centre of mass (world axes).
+TB_API tbVec2 tbBody_GetWorldPointVelocity(tbBodyId bodyId, tbVec2 worldPoint);
+TB_API tbVec2 tbBody_GetLocalPointVelocity(tbBodyId bodyId, tbVec2 localPoint);
 TB_API bool tbBody_IsBullet(tbBodyId bodyId);
 TB_API void tbBody_SetBullet(tbBodyId bodyId, bool flag);
 TB_API void tbBody_SetFixedRotation(tbBodyId bodyId, bool flag);
@@ -234,6 +245,7 @@ TB_API bool tbShape_IsValid(tbShapeId shapeId);
 
 TB_API tbShapeType tbShape_GetType(tbShapeId shapeId);
 TB_API tbBodyId tbShape_GetBody(tbShapeId shapeId);
+TB_API tbWorldId tbShape_GetWorld(tbShapeId shapeId);
 TB_API tbGeometry tbShape_GetGeometry(tbShapeId shapeId);
 /// The geometry of one kind (an error and zeros for a shape of another kind).
 TB_API tbCircle tbShape_GetCircle(tbShapeId shapeId);
