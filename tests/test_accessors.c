@@ -1,0 +1,221 @@
+// Public accessors that no other test exercised: each is checked for what it returns or what it
+// does to the motion, with the closed form written beside the expected number.
+#include <criterion/criterion.h>
+
+#include "tumble/tumble.h"
+
+#include <math.h>
+#include <string.h>
+
+#define TIME_STEP (1.0f / 60.0f)
+
+static tbWorldId CreateWorld(float gravity)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, gravity);
+	return tbCreateWorld(&def);
+}
+
+static tbBodyId CreateBox(tbWorldId world, tbVec2 position, float halfWidth, tbShapeId* shape)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = position;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon box = tbMakeBox(halfWidth, halfWidth);
+	tbShapeId id = tbCreatePolygonShape(body, &shapeDef, &box);
+	if (shape != NULL)
+	{
+		*shape = id;
+	}
+	return body;
+}
+
+// A unit box (m = 1 kg, I = m(w² + h²)/12 = 1/6 kg·m²) given torque 1 N·m for one step turns at
+// Δω = τ·Δt/I = 6/60 = 0.1 rad/s. Damping, gravity scale, bullet and fixed rotation read back;
+// fixed rotation then stops the turning. Vectors turn with the body (90°: local x is world y).
+Test(accessors, body_settings_and_vectors)
+{
+	tbWorldId world = CreateWorld(0.0f);
+	tbBodyId body = CreateBox(world, tbMakeVec2(0.0f, 0.0f), 0.5f, NULL);
+	cr_assert(tbBody_ApplyTorque(body, 1.0f, true));
+	tbWorld_Step(world, TIME_STEP, 4);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 0.1f, 1e-5f);
+
+	tbBody_SetLinearDamping(body, 0.5f);
+	tbBody_SetAngularDamping(body, 0.25f);
+	tbBody_SetGravityScale(body, 2.0f);
+	tbBody_SetBullet(body, true);
+	cr_assert_float_eq(tbBody_GetLinearDamping(body), 0.5f, 0.0f);
+	cr_assert_float_eq(tbBody_GetAngularDamping(body), 0.25f, 0.0f);
+	cr_assert_float_eq(tbBody_GetGravityScale(body), 2.0f, 0.0f);
+	cr_assert(tbBody_IsBullet(body));
+	tbBody_SetFixedRotation(body, true);
+	tbWorld_Step(world, TIME_STEP, 4);
+	cr_assert_float_eq(tbBody_GetAngularVelocity(body), 0.0f, 0.0f);
+
+	int marker = 7;
+	tbBody_SetUserData(body, &marker);
+	cr_assert(tbBody_GetUserData(body) == &marker);
+	tbWorldId owner = tbBody_GetWorld(body);
+	cr_assert(owner.index1 == world.index1 && owner.generation == world.generation);
+
+	tbBody_SetTransform(body, tbMakeVec2(0.0f, 0.0f), tbMakeRot(0.5f * 3.14159265f));
+	tbVec2 worldX = tbBody_GetWorldVector(body, tbMakeVec2(1.0f, 0.0f));
+	cr_assert(fabsf(worldX.x) < 1e-6f && fabsf(worldX.y - 1.0f) < 1e-6f);
+	tbVec2 localY = tbBody_GetLocalVector(body, tbMakeVec2(0.0f, 1.0f));
+	cr_assert(fabsf(localY.x - 1.0f) < 1e-6f && fabsf(localY.y) < 1e-6f);
+	tbDestroyWorld(world);
+}
+
+// Shape settings read back; the AABB of a unit box at (2, 3) is [1.5, 2.5] × [2.5, 3.5]; points
+// inside and outside test as such; a sensor reports itself; a changed filter is read back.
+Test(accessors, shape_settings)
+{
+	tbWorldId world = CreateWorld(0.0f);
+	tbShapeId shape;
+	tbBodyId body = CreateBox(world, tbMakeVec2(2.0f, 3.0f), 0.5f, &shape);
+	cr_assert(tbShape_SetFriction(shape, 0.25f));
+	cr_assert(tbShape_SetRestitution(shape, 0.75f));
+	cr_assert_float_eq(tbShape_GetFriction(shape), 0.25f, 0.0f);
+	cr_assert_float_eq(tbShape_GetRestitution(shape), 0.75f, 0.0f);
+	cr_assert_float_eq(tbShape_GetDensity(shape), 1.0f, 0.0f);
+	int marker = 3;
+	tbShape_SetUserData(shape, &marker);
+	cr_assert(tbShape_GetUserData(shape) == &marker);
+	cr_assert(tbShape_IsSensor(shape) == false);
+	tbFilter filter = {0x4, 0x2, -1};
+	cr_assert(tbShape_SetFilter(shape, filter));
+	tbFilter back = tbShape_GetFilter(shape);
+	cr_assert(back.categoryBits == 0x4 && back.maskBits == 0x2 && back.groupIndex == -1);
+	tbAABB box = tbShape_GetAABB(shape);
+	cr_assert_float_eq(box.lowerBound.x, 1.5f, 1e-6f);
+	cr_assert_float_eq(box.upperBound.y, 3.5f, 1e-6f);
+	cr_assert(tbShape_TestPoint(shape, tbMakeVec2(2.2f, 3.2f)));
+	cr_assert(tbShape_TestPoint(shape, tbMakeVec2(2.7f, 3.2f)) == false);
+	cr_assert_eq(tbShape_GetContactCapacity(shape), 0, "nothing touches it");
+	tbShape_EnableHitEvents(shape, true);
+	cr_assert(tbShape_AreHitEventsEnabled(shape));
+	tbBody_EnableContactEvents(body, false);
+	cr_assert(tbShape_AreContactEventsEnabled(shape) == false);
+	tbDestroyWorld(world);
+}
+
+// The stateless AABB and point tests by shape kind, against hand-computed boxes: a circle of
+// radius 1 at (1, 0) moved by (2, 0) spans [2, 4] × [−1, 1]; a capsule (0,0)–(2,0) of radius 0.5
+// spans [−0.5, 2.5] × [−0.5, 0.5]; a segment (0,0)–(1,1) spans [0, 1]²; a unit box turned 45°
+// spans ±√2/2. Offset polygons keep their offset.
+Test(accessors, geometry_boxes_and_points)
+{
+	tbTransform moved = {{2.0f, 0.0f}, tbMakeRot(0.0f)};
+	tbCircle circle = {{1.0f, 0.0f}, 1.0f};
+	tbAABB a = tbComputeCircleAABB(&circle, moved);
+	cr_assert(a.lowerBound.x == 2.0f && a.upperBound.x == 4.0f && a.lowerBound.y == -1.0f && a.upperBound.y == 1.0f);
+	tbCapsule capsule = {{0.0f, 0.0f}, {2.0f, 0.0f}, 0.5f};
+	a = tbComputeCapsuleAABB(&capsule, tb_transform_identity);
+	cr_assert(a.lowerBound.x == -0.5f && a.upperBound.x == 2.5f && a.upperBound.y == 0.5f);
+	tbSegment segment = {{0.0f, 0.0f}, {1.0f, 1.0f}};
+	a = tbComputeSegmentAABB(&segment, tb_transform_identity);
+	cr_assert(a.lowerBound.x == 0.0f && a.upperBound.x == 1.0f && a.upperBound.y == 1.0f);
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	tbTransform turned = {{0.0f, 0.0f}, tbMakeRot(0.25f * 3.14159265f)};
+	a = tbComputePolygonAABB(&box, turned);
+	cr_assert_float_eq(a.upperBound.x, 0.70710678f, 1e-5f);
+	cr_assert(tbPointInCircle(tbMakeVec2(1.5f, 0.5f), &circle));
+	cr_assert(tbPointInCircle(tbMakeVec2(2.5f, 0.0f), &circle) == false);
+	cr_assert(tbPointInCapsule(tbMakeVec2(1.0f, 0.4f), &capsule));
+	cr_assert(tbPointInCapsule(tbMakeVec2(1.0f, 0.6f), &capsule) == false);
+	cr_assert(tbPointInPolygon(tbMakeVec2(0.4f, -0.4f), &box));
+	cr_assert(tbPointInPolygon(tbMakeVec2(0.6f, 0.0f), &box) == false);
+	tbVec2 points[3] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}};
+	tbHull hull = tbComputeHull(points, 3);
+	tbPolygon offset = tbMakeOffsetPolygon(&hull, tbMakeVec2(10.0f, 0.0f), tbMakeRot(0.0f));
+	cr_assert_float_eq(offset.centroid.x, 10.0f + 1.0f / 3.0f, 1e-5f);
+}
+
+static float MaxFriction(float frictionA, int materialA, float frictionB, int materialB)
+{
+	(void)materialA;
+	(void)materialB;
+	return fmaxf(frictionA, frictionB);
+}
+
+static float NoBounce(float restitutionA, int materialA, float restitutionB, int materialB)
+{
+	(void)restitutionA;
+	(void)materialA;
+	(void)restitutionB;
+	(void)materialB;
+	return 0.0f;
+}
+
+// World switches: sleeping off keeps a resting box awake; the mixing callbacks decide a box's
+// friction (max(0, 1) = 1: a box sliding at 2 m/s stops within v²/(2μg) = 0.2 m, where the default
+// mix sqrt(0·1) = 0 lets it slide on) and restitution (0: no bounce); every method can be switched
+// at run time and the step still runs; the profile's step time is non-negative and at least the
+// sum of its parts' largest; version numbers are set.
+Test(accessors, world_switches_and_callbacks)
+{
+	tbWorldId world = CreateWorld(-10.0f);
+	tbWorld_EnableSleeping(world, false);
+	cr_assert(tbWorld_IsSleepingEnabled(world) == false);
+	tbWorld_SetFrictionCallback(world, MaxFriction);
+	tbWorld_SetRestitutionCallback(world, NoBounce);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef groundShape = tbDefaultShapeDef();
+	groundShape.friction = 0.0f;
+	groundShape.restitution = 1.0f;
+	tbSegment floor = {{-50.0f, 0.0f}, {50.0f, 0.0f}};
+	tbCreateSegmentShape(ground, &groundShape, &floor);
+	tbShapeId shape;
+	tbBodyId box = CreateBox(world, tbMakeVec2(0.0f, 0.5f), 0.5f, &shape);
+	tbShape_SetFriction(shape, 1.0f);
+	tbBody_SetLinearVelocity(box, tbMakeVec2(2.0f, 0.0f));
+	for (int step = 0; step < 120; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, 4);
+	}
+	cr_assert(tbBody_GetPosition(box).x < 0.25f, "slid %g m; max friction 1 stops it within 0.2 m",
+			  (double)tbBody_GetPosition(box).x);
+	cr_assert(tbBody_IsAwake(box), "sleeping is off");
+	cr_assert(fabsf(tbBody_GetLinearVelocity(box).y) < 0.01f, "no bounce");
+	cr_assert(tbWorld_SetBroadPhaseMethod(world, tb_broadPhaseSpatialHash));
+	cr_assert(tbWorld_SetNarrowPhaseMethod(world, tb_narrowPhaseGJK));
+	cr_assert(tbWorld_SetContinuousMethod(world, tb_continuousConservative));
+	cr_assert(tbWorld_SetContactTuning(world, 20.0f, 5.0f, 2.0f));
+	tbWorld_Step(world, TIME_STEP, 4);
+	cr_assert(fabsf(tbBody_GetPosition(box).y - 0.5f) < 0.02f, "still resting after the switches");
+	tbProfile profile = tbWorld_GetProfile(world);
+	cr_assert(profile.step >= 0.0f && profile.step >= profile.solve && profile.step >= profile.collide);
+	tbVersion version = tbGetVersion();
+	cr_assert(version.major > 0 || version.minor > 0);
+	uint64_t ticks = tbGetTicks();
+	cr_assert(tbGetMilliseconds(ticks) >= 0.0f);
+	tbDestroyWorld(world);
+}
+
+// Chain accessors: the body and world it belongs to; a material changed at run time reaches the
+// segments.
+Test(accessors, chain_settings)
+{
+	tbWorldId world = CreateWorld(-10.0f);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &bodyDef);
+	tbVec2 points[5] = {{4, 0}, {3, 0}, {2, 0}, {1, 0}, {0, 0}};
+	tbChainDef def = tbDefaultChainDef();
+	def.points = points;
+	def.count = 5;
+	tbChainId chain = tbCreateChain(ground, &def);
+	tbBodyId owner = tbChain_GetBody(chain);
+	cr_assert(owner.index1 == ground.index1);
+	cr_assert(tbChain_GetWorld(chain).index1 == world.index1);
+	tbSurfaceMaterial ice = tbDefaultSurfaceMaterial();
+	ice.friction = 0.05f;
+	cr_assert(tbChain_SetSurfaceMaterial(chain, &ice, 0));
+	tbShapeId segments[2];
+	cr_assert_eq(tbChain_GetSegments(chain, segments, 2), 2);
+	cr_assert_float_eq(tbShape_GetFriction(segments[1]), 0.05f, 0.0f);
+	tbDestroyWorld(world);
+}
