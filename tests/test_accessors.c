@@ -219,3 +219,161 @@ Test(accessors, chain_settings)
 	cr_assert_float_eq(tbShape_GetFriction(segments[1]), 0.05f, 0.0f);
 	tbDestroyWorld(world);
 }
+
+/// A disc of radius 0.5 at the origin, no gravity, joined to a static ground at its centre.
+static tbBodyId CreateDisc(tbWorldId world, tbBodyId* ground)
+{
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	*ground = tbCreateBody(world, &groundDef);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	tbBodyId disc = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	tbCreateCircleShape(disc, &shapeDef, &circle);
+	return disc;
+}
+
+/// Hold a steady external load for a second (the motor's speed is 0) and return the motor's
+/// reaction through `read`.
+static float HoldAgainst(tbWorldId world, tbBodyId body, float torque, tbVec2 force, tbJointId joint,
+						 float (*read)(tbJointId))
+{
+	for (int step = 0; step < 60; ++step)
+	{
+		tbBody_ApplyTorque(body, torque, true);
+		tbBody_ApplyForce(body, force, tbBody_GetWorldCenterOfMass(body), true);
+		tbWorld_Step(world, TIME_STEP, 4);
+	}
+	return read(joint);
+}
+
+// Motors at speed 0 hold a steady load, so the motor's reaction equals the load (Newton's third
+// law; 2 % covers the soft step's last sub-step): a torque of 2 N·m on a revolute joint, 3 N·m on a
+// wheel joint, a force of 5 N along a distance joint.
+Test(accessors, joint_motors_report_the_load_they_hold)
+{
+	tbWorldId world = CreateWorld(0.0f);
+	tbBodyId ground;
+	tbBodyId disc = CreateDisc(world, &ground);
+	tbRevoluteJointDef revolute = tbDefaultRevoluteJointDef();
+	revolute.base.bodyIdA = ground;
+	revolute.base.bodyIdB = disc;
+	revolute.enableMotor = true;
+	revolute.maxMotorTorque = 100.0f;
+	tbJointId joint = tbCreateRevoluteJoint(world, &revolute);
+	float torque = HoldAgainst(world, disc, 2.0f, tb_vec2_zero, joint, tbRevoluteJoint_GetMotorTorque);
+	cr_assert(fabsf(fabsf(torque) - 2.0f) < 0.04f, "revolute motor torque %g, load 2 N·m", (double)torque);
+	tbDestroyWorld(world);
+
+	world = CreateWorld(0.0f);
+	disc = CreateDisc(world, &ground);
+	tbWheelJointDef wheel = tbDefaultWheelJointDef();
+	wheel.base.bodyIdA = ground;
+	wheel.base.bodyIdB = disc;
+	wheel.enableMotor = true;
+	wheel.maxMotorTorque = 100.0f;
+	joint = tbCreateWheelJoint(world, &wheel);
+	torque = HoldAgainst(world, disc, 3.0f, tb_vec2_zero, joint, tbWheelJoint_GetMotorTorque);
+	cr_assert(fabsf(fabsf(torque) - 3.0f) < 0.06f, "wheel motor torque %g, load 3 N·m", (double)torque);
+	tbDestroyWorld(world);
+
+	world = CreateWorld(0.0f);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	ground = tbCreateBody(world, &groundDef);
+	tbBodyId box = CreateBox(world, tbMakeVec2(2.0f, 0.0f), 0.5f, NULL);
+	tbDistanceJointDef distance = tbDefaultDistanceJointDef();
+	distance.base.bodyIdA = ground;
+	distance.base.bodyIdB = box;
+	distance.length = 2.0f;
+	distance.enableSpring = true;
+	distance.hertz = 0.0f; // no spring force: the motor alone holds the length
+	distance.enableMotor = true;
+	distance.maxMotorForce = 100.0f;
+	joint = tbCreateDistanceJoint(world, &distance);
+	float force = HoldAgainst(world, box, 0.0f, tbMakeVec2(5.0f, 0.0f), joint, tbDistanceJoint_GetMotorForce);
+	cr_assert(fabsf(fabsf(force) - 5.0f) < 0.1f, "distance motor force %g, load 5 N", (double)force);
+	cr_assert(fabsf(tbBody_GetPosition(box).x - 2.0f) < 0.01f, "the motor holds the length");
+
+	tbTransform frame = {{0.1f, -0.2f}, tbMakeRot(0.0f)};
+	cr_assert(tbJoint_SetLocalFrameB(joint, frame));
+	tbTransform back = tbJoint_GetLocalFrameB(joint);
+	cr_assert(back.p.x == 0.1f && back.p.y == -0.2f);
+	tbBody_SetAwake(box, false);
+	cr_assert(tbBody_IsAwake(box) == false);
+	tbJoint_WakeBodies(joint);
+	cr_assert(tbBody_IsAwake(box));
+	tbDestroyWorld(world);
+}
+
+typedef struct DrawCounts
+{
+	int circles, segments, polygons;
+} DrawCounts;
+
+static void CountCircle(tbTransform transform, float radius, uint32_t color, void* context)
+{
+	(void)transform;
+	(void)radius;
+	(void)color;
+	((DrawCounts*)context)->circles += 1;
+}
+
+static void CountSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+{
+	(void)p1;
+	(void)p2;
+	(void)color;
+	((DrawCounts*)context)->segments += 1;
+}
+
+static void CountPolygon(tbTransform transform, const tbVec2* vertices, int count, float radius, uint32_t color,
+						 void* context)
+{
+	(void)transform;
+	(void)vertices;
+	(void)count;
+	(void)radius;
+	(void)color;
+	((DrawCounts*)context)->polygons += 1;
+}
+
+// Debug drawing visits each shape once with its kind's callback: one disc, one box, one ground
+// segment (joints and the rest are off in this draw).
+Test(accessors, debug_draw_visits_every_shape)
+{
+	tbWorldId world = CreateWorld(0.0f);
+	tbBodyId ground;
+	CreateDisc(world, &ground);
+	CreateBox(world, tbMakeVec2(3.0f, 0.0f), 0.5f, NULL);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbSegment floor = {{-5.0f, -2.0f}, {5.0f, -2.0f}};
+	tbCreateSegmentShape(ground, &shapeDef, &floor);
+	DrawCounts counts = {0, 0, 0};
+	tbDebugDraw draw = tbDefaultDebugDraw();
+	draw.DrawSolidCircle = CountCircle;
+	draw.DrawSegment = CountSegment;
+	draw.DrawSolidPolygon = CountPolygon;
+	draw.drawShapes = true;
+	draw.drawJoints = false;
+	draw.context = &counts;
+	tbWorld_Draw(world, &draw);
+	cr_assert_eq(counts.circles, 1);
+	cr_assert_eq(counts.polygons, 1);
+	cr_assert_eq(counts.segments, 1);
+	tbDestroyWorld(world);
+}
+
+// A 0.5 m box resting on a chain segment (ground solid below, straight joints on both sides)
+// touches it along its bottom face: two points, normal straight up, separations 0.
+Test(accessors, chain_segment_and_polygon_manifold)
+{
+	tbChainSegment segment = {{2.0f, 0.0f}, {{1.0f, 0.0f}, {0.0f, 0.0f}}, {-1.0f, 0.0f}, -1};
+	tbPolygon box = tbMakeBox(0.25f, 0.25f);
+	tbTransform xf = {{0.5f, 0.25f}, tbMakeRot(0.0f)};
+	tbManifold m = tbCollideChainSegmentAndPolygon(&segment, tb_transform_identity, &box, xf);
+	cr_assert_eq(m.pointCount, 2);
+	cr_assert_float_eq(m.normal.y, 1.0f, 1e-6f);
+	cr_assert_float_eq(m.points[0].separation, 0.0f, 1e-5f);
+	cr_assert_float_eq(m.points[1].separation, 0.0f, 1e-5f);
+}
