@@ -486,3 +486,57 @@ Test(chain, loop_the_loop_needs_the_closed_form_speed)
 	cr_assert(below < top - 0.2f, "at 0.95 v the ball should leave the track before the top (reached %g)",
 			  (double)below);
 }
+
+// Robustness of the chain collider: 20,000 random placements of circles, capsules, boxes and
+// rounded polygons (random size, angle, position, up to 0.5 m inside the surface) around a joint
+// of random angle between two segments give manifolds with at most 2 points, a finite unit
+// normal and finite separations, never below the deepest overlap the placement allows (the
+// shape's own size plus the speculative distance), and nothing for a centre behind the segment.
+Test(chain, random_placements_give_valid_manifolds)
+{
+	unsigned seed = 2026u;
+#define RANDOM(lo, hi) (seed = seed * 1664525u + 1013904223u, (lo) + ((hi) - (lo)) * (float)(seed >> 8) / 16777216.0f)
+	for (int trial = 0; trial < 20000; ++trial)
+	{
+		float turn = RANDOM(-1.2f, 1.2f);
+		tbChainSegment segment = {{2.0f, 0.0f}, {{1.0f, 0.0f}, {0.0f, 0.0f}}, {-cosf(turn), -sinf(turn)}, -1};
+		tbTransform xf = {{RANDOM(-1.0f, 2.0f), RANDOM(-0.5f, 1.0f)}, tbMakeRot(RANDOM(-3.2f, 3.2f))};
+		float size = RANDOM(0.05f, 0.6f);
+		int kind = trial % 4;
+		tbManifold m;
+		if (kind == 0)
+		{
+			tbCircle circle = {{0.0f, 0.0f}, size};
+			m = tbCollideChainSegmentAndCircle(&segment, tb_transform_identity, &circle, xf);
+		}
+		else if (kind == 1)
+		{
+			tbCapsule capsule = {{-size, 0.0f}, {size, 0.0f}, 0.5f * size};
+			m = tbCollideChainSegmentAndCapsule(&segment, tb_transform_identity, &capsule, xf);
+		}
+		else
+		{
+			tbPolygon box = kind == 2 ? tbMakeBox(size, 0.5f * size) : tbMakeRoundedBox(size, 0.5f * size, 0.1f * size);
+			m = tbCollideChainSegmentAndPolygon(&segment, tb_transform_identity, &box, xf);
+		}
+		cr_assert(m.pointCount >= 0 && m.pointCount <= 2);
+		if (xf.p.y < 0.0f)
+		{
+			cr_assert_eq(m.pointCount, 0, "trial %d: centre behind the segment, yet %d points", trial, m.pointCount);
+		}
+		if (m.pointCount == 0)
+		{
+			continue;
+		}
+		cr_assert(isfinite(m.normal.x) && isfinite(m.normal.y), "trial %d: normal not finite", trial);
+		cr_assert(fabsf(tbLength(m.normal) - 1.0f) < 1e-4f, "trial %d: normal not unit", trial);
+		for (int i = 0; i < m.pointCount; ++i)
+		{
+			float s = m.points[i].separation;
+			cr_assert(isfinite(s), "trial %d: separation not finite", trial);
+			cr_assert(s > -2.5f * size - 0.05f && s < TB_SPECULATIVE_DISTANCE + 1e-4f, "trial %d: separation %g",
+					  trial, (double)s);
+		}
+	}
+#undef RANDOM
+}
