@@ -1,5 +1,6 @@
 // Bodies: creation and destruction, the awake set, mass from shapes, getters and setters, and
 // the finalize stage (shape boxes, broad-phase moves, sleep timers, move events).
+#include "task.h"
 #include "world.h"
 
 #include "array.h"
@@ -1261,14 +1262,37 @@ static void tbPushMoveEvent(tbWorld* world, tbBody* body, int bodyId)
 	TB_ARRAY_PUSH(world->moveEvents, world->moveCount, world->moveCapacity, event);
 }
 
+typedef struct tbFinalizeTaskContext
+{
+	tbWorld* world;
+	float timeStep;
+} tbFinalizeTaskContext;
+
+/// Sleep timers and shape boxes of awake bodies [start, end): each writes only its own body and
+/// shapes.
+static void tbFinalizeTask(int start, int end, uint32_t workerIndex, void* context)
+{
+	(void)workerIndex;
+	tbFinalizeTaskContext* task = context;
+	tbWorld* world = task->world;
+	for (int i = start; i < end; ++i)
+	{
+		tbBody* body = world->bodies + world->awakeBodies[i];
+		tbUpdateSleepTime(world, body, task->timeStep);
+		tbComputeBodyShapeBoxes(world, body, false);
+	}
+}
+
 void tbFinalizeStage(tbWorld* world, float timeStep)
 {
+	tbFinalizeTaskContext task = {world, timeStep};
+	tbParallelFor(world, tbFinalizeTask, world->awakeBodyCount, 256, &task);
+	// In body order: the broad phase's move buffer and the move events keep the serial order.
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		int bodyId = world->awakeBodies[i];
 		tbBody* body = world->bodies + bodyId;
-		tbUpdateSleepTime(world, body, timeStep);
-		tbUpdateBodyShapeBoxes(world, body, false);
+		tbMoveFlaggedProxies(world, body);
 		tbPushMoveEvent(world, body, bodyId);
 	}
 	tbReportHitEvents(world);

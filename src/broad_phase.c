@@ -427,18 +427,38 @@ static void tbTreeFindPairs(tbBroadPhase* bp)
 static void tbFindPairsTask(int start, int end, uint32_t workerIndex, void* context)
 {
 	tbBroadPhase* bp = context;
+	if (bp->method == tb_broadPhaseSpatialHash)
+	{
+		for (int i = start; i < end; ++i)
+		{
+			int key = bp->moveBuffer[i];
+			if (key >= 0)
+			{
+				tbSpatialHash_QueryMoved(bp->hash, &bp->table, bp->workerPairs + workerIndex, key);
+			}
+		}
+		return;
+	}
 	tbQueryMovedProxies(bp, bp->workerPairs + workerIndex, start, end);
 }
 
 void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext, int workerCount)
 {
-	if (bp->method != tb_broadPhaseTree || workerCount <= 1)
+	bool tree = bp->method == tb_broadPhaseTree;
+	if ((tree == false && bp->method != tb_broadPhaseSpatialHash) || workerCount <= 1)
 	{
 		tbBroadPhase_UpdatePairs(bp);
 		return;
 	}
 	bp->pairList.count = 0;
-	tbPrepareTrees(bp);
+	if (tree)
+	{
+		tbPrepareTrees(bp);
+	}
+	else
+	{
+		tbSpatialHash_PrepareFind(bp->hash, &bp->table);
+	}
 	for (int w = 0; w < workerCount; ++w)
 	{
 		bp->workerPairs[w].count = 0;

@@ -80,8 +80,8 @@ void tbBroadPhase_UpdatePairs(tbBroadPhase* bp);
 typedef void tbRangeRunnerFcn(tbTaskCallback* task, int itemCount, int minRange, void* taskContext,
 							  void* runnerContext);
 
-/// The same, the tree method's queries of moved proxies spread over workers (each worker keeps
-/// its own pairs; the merged list is sorted, so the result does not depend on the split).
+/// The same, the queries of moved proxies (tree and spatial hash) spread over workers (each worker
+/// keeps its own pairs; the merged list is sorted, so the result does not depend on the split).
 void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext,
 									   int workerCount);
 

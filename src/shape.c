@@ -149,7 +149,10 @@ float tbSpeculativeReach(const tbBody* body)
 /// for two steps (half the proxy moves on the tumbler): every box then reaches a step further ahead
 /// than the body can go, and bodies moving together overlap each other's boxes (the tumbler kept
 /// 13,278 contacts where Box2D v3 keeps 8,823; now 9,052, with no more time per step).
-void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
+/// The shapes' tight boxes, and the fat boxes of those whose sweep left their fat box, which are
+/// flagged (shape->proxyMoved) for tbMoveFlaggedProxies: writes only this body's shapes, so
+/// bodies may be done on several workers at once.
+void tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
 {
 	float margin = body->type == tb_staticBody ? 0.0f
 											  : tbMinFloat(TB_AABB_MARGIN, TB_AABB_MARGIN_FRACTION * body->maxExtent);
@@ -174,10 +177,30 @@ void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
 		if (shape->proxyKey != TB_NULL_INDEX && (forceMove || tbAABB_Contains(shape->fatAABB, sweep) == false))
 		{
 			shape->fatAABB = tbAABB_Fatten(sweep, margin);
-			tbBroadPhase_MoveProxy(&world->broadPhase, shape->proxyKey, shape->fatAABB);
-			world->counters.proxyMoves += 1;
+			shape->proxyMoved = true;
 		}
 	}
+}
+
+/// Move the flagged proxies of a body in the broad phase (serial: the broad phase changes).
+void tbMoveFlaggedProxies(tbWorld* world, const tbBody* body)
+{
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		tbShape* shape = world->shapes + id;
+		if (shape->proxyMoved)
+		{
+			tbBroadPhase_MoveProxy(&world->broadPhase, shape->proxyKey, shape->fatAABB);
+			world->counters.proxyMoves += 1;
+			shape->proxyMoved = false;
+		}
+	}
+}
+
+void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
+{
+	tbComputeBodyShapeBoxes(world, body, forceMove);
+	tbMoveFlaggedProxies(world, body);
 }
 
 static bool tbCheckShapeDef(const tbShapeDef* def, const char* f)

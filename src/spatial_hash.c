@@ -401,7 +401,7 @@ static void tbQueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, t
 	}
 }
 
-void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs)
+void tbSpatialHash_PrepareFind(tbSpatialHash* hash, const tbProxyTable* table)
 {
 	tbUpdateCellSize(hash, table);
 	if (hash->staticDirty)
@@ -410,6 +410,17 @@ void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbP
 		hash->staticDirty = false;
 	}
 	tbGrid_Build(&hash->movableGrid, hash, table, false);
+	hash->updateCount += 1;
+}
+
+void tbSpatialHash_QueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs, int proxyKey)
+{
+	tbQueryMoved(hash, table, pairs, proxyKey);
+}
+
+void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs)
+{
+	tbSpatialHash_PrepareFind(hash, table);
 	for (int key = 0; key < table->capacity; ++key)
 	{
 		if (table->proxies[key].isFree == false && table->proxies[key].moveIndex >= 0)
@@ -417,7 +428,6 @@ void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbP
 			tbQueryMoved(hash, table, pairs, key);
 		}
 	}
-	hash->updateCount += 1;
 }
 
 // --------------------------------------------------------------------------------------------

@@ -19,6 +19,10 @@ void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash);
 /// Hash the proxies and append every overlapping pair with a moved member (not static–static)
 /// through tbPairList_Add.
 void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs);
+/// FindPairs in two parts, for workers: hash the proxies (serial), then the queries of moved
+/// proxies, each appending to its own list (read-only on the grids: several may run at once).
+void tbSpatialHash_PrepareFind(tbSpatialHash* hash, const tbProxyTable* table);
+void tbSpatialHash_QueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs, int proxyKey);
 
 /// Queries: static proxies through the static grid when it is current, movable ones by a scan of
 /// the table (they may have moved since the grid was built). Ray casts scan the table.

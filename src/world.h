@@ -79,6 +79,7 @@ typedef struct tbShape
 	int bodyId;
 	int proxyKey;
 	bool isSensor;
+	bool proxyMoved; ///< finalize: the fat box changed, the proxy is to be moved (shape.c)
 
 	tbGeometry geometry; ///< in the body frame
 	void* userData;
@@ -360,6 +361,10 @@ bool tbCheckGeometry(const char* f, const tbGeometry* geometry);
 float tbSpeculativeReach(const tbBody* body);
 /// Refresh the shape boxes of a body and move broad-phase proxies that left their fat boxes.
 void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);
+/// The two halves of tbUpdateBodyShapeBoxes: boxes computed and proxies flagged (per body, on
+/// any worker), then the flagged proxies moved (in body order, on the caller).
+void tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove);
+void tbMoveFlaggedProxies(tbWorld* world, const tbBody* body);
 
 // contact.c
 void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB);
