@@ -57,7 +57,8 @@ static void PrintUsage(void)
 		   "  tumble run SCENE [--steps N] [--png DIR] [--every K] [--size WxH] [--csv FILE]\n"
 		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                   [--toi off|quadratic|ca] [--solver baumgarte|ngs|soft] [--substeps N]\n"
-		   "                   [--iterations N] [--scalar-solver] [--no-recycle] [--workers N] [--sheet FILE.png] [--frames N] [--contacts]\n"
+		   "                   [--iterations N] [--scalar-solver] [--no-recycle] [--impact-propagation] [--workers N]\n"
+		   "                   [--sheet FILE.png] [--frames N] [--contacts]\n"
 		   "                   [--aabbs] [--tree]\n"
 		   "  tumble export SCENE\n"
 		   "  tumble sheet SCENE --out FILE.png [--frames N] [run options]\n"
@@ -230,6 +231,10 @@ static bool ParseFlagOption(Options* options, const char* flag)
 	if (strcmp(flag, "--no-recycle") == 0)
 	{
 		return (options->overrides.noRecycle = true);
+	}
+	if (strcmp(flag, "--impact-propagation") == 0)
+	{
+		return (options->overrides.impactPropagation = true);
 	}
 	return false;
 }

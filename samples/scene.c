@@ -331,6 +331,10 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 		{
 			def.enableManifoldRecycling = false;
 		}
+		if (overrides->impactPropagation)
+		{
+			def.enableImpactPropagation = true;
+		}
 		if (overrides->tasks != NULL)
 		{
 			def.workerCount = TaskSystem_WorkerCount(overrides->tasks);

@@ -180,6 +180,7 @@ typedef struct SceneOverrides
 	int subSteps;			///< > 0 replaces the scene's sub-step count (for callers that step)
 	bool scalarSolver;		///< true: the scalar reference contact solver (tbWorldDef::enableWideSolver off)
 	bool noRecycle;			///< true: every manifold recomputed (tbWorldDef::enableManifoldRecycling off)
+	bool impactPropagation; ///< true: tbWorldDef::enableImpactPropagation (Newton's cradle)
 	struct TaskSystem* tasks; ///< non-null: the world runs on its workers (task_system.h)
 } SceneOverrides;
 
