@@ -1285,13 +1285,24 @@ static void tbFinalizeTask(int start, int end, uint32_t workerIndex, void* conte
 
 void tbFinalizeStage(tbWorld* world, float timeStep)
 {
-	tbFinalizeTaskContext task = {world, timeStep};
-	tbParallelFor(world, tbFinalizeTask, world->awakeBodyCount, 256, &task);
-	// In body order: the broad phase's move buffer and the move events keep the serial order.
+	bool split = tbWorkerCount(world) > 1;
+	if (split)
+	{
+		tbFinalizeTaskContext task = {world, timeStep};
+		tbParallelFor(world, tbFinalizeTask, world->awakeBodyCount, 256, &task);
+	}
+	// In body order: the broad phase's move buffer and the move events keep the serial order. On one
+	// worker the boxes are computed here too, in the same pass (a second walk over the bodies would
+	// only cost memory traffic).
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		int bodyId = world->awakeBodies[i];
 		tbBody* body = world->bodies + bodyId;
+		if (split == false)
+		{
+			tbUpdateSleepTime(world, body, timeStep);
+			tbComputeBodyShapeBoxes(world, body, false);
+		}
 		tbMoveFlaggedProxies(world, body);
 		tbPushMoveEvent(world, body, bodyId);
 	}
