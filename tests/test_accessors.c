@@ -196,6 +196,8 @@ Test(accessors, world_switches_and_callbacks)
 	cr_assert(version.major == 0 && version.minor == 1 && version.revision == 0);
 	uint64_t first = tbGetTicks(), second = tbGetTicks();
 	cr_assert(second >= first, "the tick counter runs backwards");
+	float elapsed = tbGetMilliseconds(first); // time since `first`: finite and not negative
+	cr_assert(isfinite(elapsed) && elapsed >= 0.0f, "elapsed %g ms", (double)elapsed);
 	tbDestroyWorld(world);
 }
 
