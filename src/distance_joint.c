@@ -105,7 +105,7 @@ void tbWarmStartDistanceJoint(tbJoint* joint, tbStepContext* context)
 	tbVec2 axis = tbNormalize(separation);
 	float axialImpulse = d->impulse + d->lowerImpulse - d->upperImpulse + d->motorImpulse;
 	tbApplyJointImpulse(joint, &b, rA, rB, tbMulSV(axialImpulse, axis), 0.0f);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 // Velocity of anchor B relative to anchor A along the line.
@@ -204,7 +204,7 @@ void tbSolveDistanceJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 		d->impulse += impulse;
 		tbApplyJointImpulse(joint, &b, rA, rB, tbMulSV(impulse, axis), 0.0f);
 	}
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 // The rigid row along the line: Ċ = u·(vB + ωB × rB − vA − ωA × rA).

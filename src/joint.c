@@ -812,42 +812,6 @@ tbTransform tbJointWorldFrameB(const tbWorld* world, const tbJoint* joint)
 // ---------------------------------------------------------------------------------------------
 // The step
 
-tbJointBodies tbLoadJointBodies(const tbStepContext* context, const tbJoint* joint)
-{
-	tbJointBodies b;
-	b.sA = context->bodies + joint->indexA;
-	b.sB = context->bodies + joint->indexB;
-	b.vA = b.sA->linearVelocity;
-	b.wA = b.sA->angularVelocity;
-	b.vB = b.sB->linearVelocity;
-	b.wB = b.sB->angularVelocity;
-	return b;
-}
-
-void tbStoreJointBodies(tbJointBodies* b)
-{
-	b->sA->linearVelocity = b->vA;
-	b->sA->angularVelocity = b->wA;
-	b->sB->linearVelocity = b->vB;
-	b->sB->angularVelocity = b->wB;
-}
-
-void tbJointAnchors(const tbJoint* joint, const tbJointBodies* b, tbVec2* rA, tbVec2* rB, tbVec2* d)
-{
-	*rA = tbRotateVector(b->sA->deltaRotation, joint->frameA.p);
-	*rB = tbRotateVector(b->sB->deltaRotation, joint->frameB.p);
-	tbVec2 dc = tbSub(b->sB->deltaPosition, b->sA->deltaPosition);
-	*d = tbAdd(tbAdd(dc, joint->deltaCenter), tbSub(*rB, *rA));
-}
-
-void tbApplyJointImpulse(const tbJoint* joint, tbJointBodies* b, tbVec2 rA, tbVec2 rB, tbVec2 P, float L)
-{
-	b->vA = tbMulSub(b->vA, joint->invMassA, P);
-	b->wA -= joint->invIA * (tbCross(rA, P) + L);
-	b->vB = tbMulAdd(b->vB, joint->invMassB, P);
-	b->wB += joint->invIB * (tbCross(rB, P) + L);
-}
-
 static bool tbIsAwakeDynamic(const tbBody* body)
 {
 	return body->type == tb_dynamicBody && body->awakeIndex != TB_NULL_INDEX;
@@ -943,13 +907,34 @@ void tbPrepareJoints(tbStepContext* context)
 	tbBuildJointTrees(context);
 }
 
-void tbWarmStartJoints(tbStepContext* context)
+// In colour order the joints are visited scattered over the pool (each colour takes every few
+// ids), which the processor cannot predict; a joint (272 bytes) is asked for a few joints ahead.
+#define TB_JOINT_PREFETCH_DISTANCE 4
+
+static inline void tbPrefetchJoint(const tbWorld* world, int i, int end)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	if (i < end)
+	{
+		const char* p = (const char*)(world->joints + world->solverJoints[i]);
+		for (int line = 0; line < (int)sizeof(tbJoint); line += 64)
+		{
+			__builtin_prefetch(p + line);
+		}
+	}
+#else
+	(void)world;
+	(void)i;
+	(void)end;
+#endif
+}
+
+void tbWarmStartJointRange(tbStepContext* context, int begin, int end)
 {
 	tbWorld* world = context->world;
-	world->jointTreesStale = true; // a new sub-step: the bodies moved
-
-	for (int i = 0; i < world->solverJointCount; ++i)
+	for (int i = begin; i < end; ++i)
 	{
+		tbPrefetchJoint(world, i + TB_JOINT_PREFETCH_DISTANCE, end);
 		tbJoint* joint = world->joints + world->solverJoints[i];
 		switch (joint->type)
 		{
@@ -977,11 +962,18 @@ void tbWarmStartJoints(tbStepContext* context)
 	}
 }
 
-static void tbSolveJointRows(tbStepContext* context, bool useBias)
+void tbWarmStartJoints(tbStepContext* context)
+{
+	context->world->jointTreesStale = true; // a new sub-step: the bodies moved
+	tbWarmStartJointRange(context, 0, context->world->solverJointCount);
+}
+
+void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBias)
 {
 	tbWorld* world = context->world;
-	for (int i = 0; i < world->solverJointCount; ++i)
+	for (int i = begin; i < end; ++i)
 	{
+		tbPrefetchJoint(world, i + TB_JOINT_PREFETCH_DISTANCE, end);
 		tbJoint* joint = world->joints + world->solverJoints[i];
 		switch (joint->type)
 		{
@@ -1018,7 +1010,7 @@ static void tbSolveJointRows(tbStepContext* context, bool useBias)
 // symmetric sweep 0.9; with 2 N·m friction motors 26.5 and 3.4 (row by row: none). Exact solves
 // in the relaxing pass too cost twice as much for the same peak chain stretch. Positions change only between sub-steps, so the trees are
 // factored once per sub-step (the first biased pass: Baumgarte and NGS run several).
-void tbSolveJoints(tbStepContext* context, bool useBias)
+void tbBeginJointPass(tbStepContext* context, bool useBias)
 {
 	tbWorld* world = context->world;
 	if (useBias && world->jointTreesStale)
@@ -1027,11 +1019,17 @@ void tbSolveJoints(tbStepContext* context, bool useBias)
 		world->jointTreesStale = false;
 	}
 	tbMarkTreeRows(context, useBias);
-	tbSolveJointRows(context, useBias);
+}
+
+void tbSolveJoints(tbStepContext* context, bool useBias)
+{
+	tbWorld* world = context->world;
+	tbBeginJointPass(context, useBias);
+	tbSolveJointRowRange(context, 0, world->solverJointCount, useBias);
 	if (useBias && world->jointTreeCount > 0)
 	{
 		tbSolveJointTrees(context);
-		tbSolveJointRows(context, useBias);
+		tbSolveJointRowRange(context, 0, world->solverJointCount, useBias);
 	}
 }
 
@@ -1048,6 +1046,17 @@ int tbJointTreeRelaxIterations(const tbStepContext* context)
 {
 	const tbWorld* world = context->world;
 	return world->jointTreeCount > 0 && world->def.relaxIterations > 0 ? 2 : 0;
+}
+
+// The relaxing iterations after the first are there for contact stacks (card houses, docs/
+// stability.md); joints solved row by row are relaxed by the first alone. Measured on a grid of
+// 19,800 revolute joints (joint_grid, 300 steps): relaxing them in both iterations gives a mean
+// pin gap of 0.0239 m against 0.0257 m (Box2D v3.2: 0.0259 m, one relaxing pass) for 1.3 ms more
+// per step (4.7 → 3.4 ms of solve). Joint trees need their rows relaxed in every iteration, with
+// the contacts (tbJointTreeRelaxIterations above).
+bool tbRelaxJointsInIteration(const tbStepContext* context, int iteration)
+{
+	return iteration == 0 || context->world->jointTreeCount > 0;
 }
 
 void tbSetJointRow(tbJointRows* rows, int row, tbVec3Row a, tbVec3Row b, float C, float* impulse)

@@ -89,7 +89,7 @@ void tbWarmStartMotorJoint(tbJoint* joint, tbStepContext* context)
 	tbVec2 linear = tbAdd(m->linearVelocityImpulse, m->linearSpringImpulse);
 	float angular = m->angularVelocityImpulse + m->angularSpringImpulse;
 	tbApplyJointImpulse(joint, &b, rA, rB, linear, angular);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 // Add `impulse` to an accumulated impulse vector whose length is capped: returns what was applied.
@@ -169,7 +169,7 @@ void tbSolveMotorJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 		tbVec2 impulse = tbAccumulateCapped(&m->linearVelocityImpulse, tbNeg(x), context->h * m->maxVelocityForce);
 		tbApplyJointImpulse(joint, &b, rA, rB, impulse, 0.0f);
 	}
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 void tbGetMotorJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque)

@@ -125,7 +125,7 @@ void tbWarmStartPrismaticJoint(tbJoint* joint, tbStepContext* context)
 	tbAxisFrame g = tbMakeAxisFrame(joint, &b);
 	float axial = p->springImpulse + p->motorImpulse + p->lowerImpulse - p->upperImpulse;
 	tbApplyAxisImpulse(joint, &b, &g, axial, p->impulse.x, p->impulse.y);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 void tbSolveAxisLimit(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axialMass, float C,
@@ -189,7 +189,7 @@ void tbSolvePrismaticJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	tbSolvePrismaticAxis(joint, &b, &g, context, useBias);
 	if (joint->solvedInTree)
 	{
-		tbStoreJointBodies(&b); // the line and the angle are solved with its tree (joint_tree.c)
+		tbStoreJointBodies(joint, &b); // the line and the angle are solved with its tree (joint_tree.c)
 		return;
 	}
 
@@ -219,7 +219,7 @@ void tbSolvePrismaticJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 					  -soft.massScale * x.y - soft.impulseScale * p->impulse.y};
 	p->impulse = tbAdd(p->impulse, impulse);
 	tbApplyAxisImpulse(joint, &b, &g, 0.0f, impulse.x, impulse.y);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 // The rows across the axis and in angle (see the header comment).

@@ -110,7 +110,7 @@ void tbWarmStartRevoluteJoint(tbJoint* joint, tbStepContext* context)
 	tbJointAnchors(joint, &b, &rA, &rB, &d);
 	float axialImpulse = r->springImpulse + r->motorImpulse + r->lowerImpulse - r->upperImpulse;
 	tbApplyJointImpulse(joint, &b, rA, rB, r->linearImpulse, axialImpulse);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 // Angle of frame B relative to frame A now: the frames at the start of the step turned by each
@@ -189,7 +189,7 @@ void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	tbSolveRevoluteAngular(joint, &b, context, useBias);
 	if (joint->solvedInTree)
 	{
-		tbStoreJointBodies(&b); // the pin is solved with its tree (joint_tree.c)
+		tbStoreJointBodies(joint, &b); // the pin is solved with its tree (joint_tree.c)
 		return;
 	}
 
@@ -214,7 +214,7 @@ void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 					  -soft.massScale * x.y - soft.impulseScale * r->linearImpulse.y};
 	r->linearImpulse = tbAdd(r->linearImpulse, impulse);
 	tbApplyJointImpulse(joint, &b, rA, rB, impulse, 0.0f);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 // The pin's two rows: Ċ = vB + ωB × rB − vA − ωA × rA, with ω × r = ω·(−r.y, r.x).

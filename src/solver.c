@@ -182,7 +182,8 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbPrepareMethod(&context);
 	tbPrepareContacts(&context);
 	tbPropagateImpacts(&context); // before the colouring packs the constraints
-	tbPrepareJoints(&context); // joint.c: joints are few, solved one at a time (scalar)
+	tbPrepareJoints(&context); // joint.c
+	tbColorJoints(&context);   // constraint_graph.c: the joints' solve order, colour by colour
 	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)
 	{
 		tbColorConstraints(&context); // NGS has its own solver loops (solver_ngs.c): scalar only

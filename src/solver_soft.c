@@ -107,7 +107,10 @@ void tbSoftSubStep(tbStepContext* context)
 	int relaxIterations = context->world->def.relaxIterations + tbJointTreeRelaxIterations(context); // joint.c
 	for (int i = 0; i < relaxIterations; ++i)
 	{
-		tbSolveJoints(context, false); // rigid, no correction
+		if (tbRelaxJointsInIteration(context, i))
+		{
+			tbSolveJoints(context, false); // rigid, no correction
+		}
 		tbSolveContacts(context, i == 0 ? tb_biasRelax : tb_biasRelaxRepeat);
 	}
 }

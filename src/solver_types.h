@@ -175,6 +175,17 @@ typedef struct tbStepContext
 	int* wideLocation; ///< per constraint: block·TB_SIMD_WIDTH + lane, or −1 (overflow, or unpacked)
 	int colorCount;											///< colours in use this step
 	int colorBlockStart[TB_GRAPH_COLOR_COUNT + 1]; ///< blocks of colour k: [start[k], start[k + 1])
+	// Joints (constraint_graph.c): world->solverJoints reordered. First the joints of small
+	// mechanisms, [0, jointSmallCount), in units of whole mechanisms [jointUnitStart[u],
+	// jointUnitStart[u + 1]) for u < jointUnitCount; then colour groups: group k holds
+	// [jointColorStart[k], jointColorStart[k + 1]) for k < jointColorCount, the last group being the
+	// joints that found no colour (solved alone, after the colours).
+	int jointSmallCount;
+	int* jointUnitStart; ///< step arena
+	int jointUnitCount;
+	int jointColorStart[TB_GRAPH_COLOR_COUNT + 2];
+	int jointColorCount; ///< groups in use, the overflow group included when it is not empty
+	bool jointOverflow;	 ///< the last group is the joints without a colour
 	void* wideMemory; ///< step arena
 	int wideMemoryBytes;
 	void* ngsScratch; ///< solver_ngs.c's constraints, step arena (taken at the first sub-step)

@@ -13,8 +13,9 @@
 // the caller or one of the tasks it enqueued (compare-and-swap), and it can finish every stage on
 // its own: helpers only speed it up. So a task system that runs the tasks late, on fewer threads,
 // or inline inside enqueueTask still finishes (a helper that arrives after the last stage leaves).
-// Joints and the overflow constraints (no colour) are one-unit stages: whoever claims them runs
-// them alone, in order with the rest. Idea from Box2D v3's solver stages (Catto 2024, "Solver2D"
+// Joints have colours of their own (constraint_graph.c): a joint pass is a stage per joint colour,
+// before the contact colours. The joint trees' exact solve, the joints and the contacts that found
+// no colour are one-unit stages: whoever claims them runs them alone, in order with the rest. Idea from Box2D v3's solver stages (Catto 2024, "Solver2D"
 // and the v3 solver notes); written here for Tumble's stage list.
 #include "solver_workers.h"
 
@@ -27,17 +28,23 @@
 #include <stdalign.h>
 #include <stdatomic.h>
 
-/// Bodies per unit of the integration stages, blocks (of four contacts) per unit of a colour.
+/// Bodies per unit of the integration stages, blocks (of four contacts) per unit of a colour,
+/// joints per unit of a joint colour.
 #define TB_BODIES_PER_UNIT 64
 #define TB_BLOCKS_PER_UNIT 4
+#define TB_JOINTS_PER_UNIT 16
 #define TB_UNITS_PER_WORKER 4
 
 typedef enum tbStageKind
 {
 	tb_stageIntegrateVelocities,
 	tb_stageIntegratePositions,
+	tb_stageWarmStartMechanisms,
 	tb_stageWarmStartJoints,
+	tb_stageBeginJointPass,
+	tb_stageSolveMechanisms,
 	tb_stageSolveJoints,
+	tb_stageSolveJointTrees,
 	tb_stageWarmStartColor,
 	tb_stageSolveColor,
 	tb_stageWarmStartOverflow,
@@ -48,7 +55,7 @@ typedef struct tbStage
 {
 	uint8_t kind;	///< tbStageKind
 	uint8_t policy; ///< tbBiasPolicy of a solve stage
-	bool useBias;	///< solve joints: the biased pass
+	bool useBias;	///< joint stages: the biased pass
 	int start;		///< first block of a colour stage
 	int count;		///< bodies or blocks
 	int unitSize;
@@ -108,23 +115,55 @@ static void tbAddContactPass(tbStageProgram* p, bool warmStart, tbBiasPolicy pol
 			   1, policy, false);
 }
 
+/// One joint pass: the small mechanisms (units of whole mechanisms) and each joint colour (the last
+/// group may be the joints without one, one unit).
+static void tbAddJointColors(tbStageProgram* p, tbStageKind kind, bool useBias)
+{
+	const tbStepContext* context = p->context;
+	tbAddStage(p, kind == tb_stageWarmStartJoints ? tb_stageWarmStartMechanisms : tb_stageSolveMechanisms, 0,
+			   context->jointUnitCount, 1, tb_biasSoft, useBias);
+	for (int k = 0; k < context->jointColorCount; ++k)
+	{
+		int start = context->jointColorStart[k];
+		int count = context->jointColorStart[k + 1] - start;
+		bool overflow = k == context->jointColorCount - 1 && context->jointOverflow;
+		tbAddStage(p, kind, start, count, overflow ? count : TB_JOINTS_PER_UNIT, tb_biasSoft, useBias);
+	}
+}
+
+/// tbSolveJoints as stages: the trees' marking and factoring, the rows colour by colour, and in a
+/// biased pass with trees the trees' exact solve and the rows once more.
+static void tbAddJointPass(tbStageProgram* p, bool useBias)
+{
+	bool trees = p->context->world->jointTreeCount > 0;
+	tbAddStage(p, tb_stageBeginJointPass, 0, trees ? 1 : 0, 1, tb_biasSoft, useBias);
+	tbAddJointColors(p, tb_stageSolveJoints, useBias);
+	if (useBias && trees)
+	{
+		tbAddStage(p, tb_stageSolveJointTrees, 0, 1, 1, tb_biasSoft, useBias);
+		tbAddJointColors(p, tb_stageSolveJoints, useBias);
+	}
+}
+
 /// The stage list of the soft step's sub-steps (tbSolveStage's loop with tbSoftSubStep inlined).
 static void tbBuildSoftProgram(tbStageProgram* p)
 {
 	tbStepContext* context = p->context;
-	bool joints = context->world->solverJointCount > 0;
 	int relaxIterations = context->world->def.relaxIterations + tbJointTreeRelaxIterations(context);
 	for (int i = 0; i < context->subStepCount; ++i)
 	{
 		tbAddStage(p, tb_stageIntegrateVelocities, 0, context->bodyCount, TB_BODIES_PER_UNIT, tb_biasSoft, false);
-		tbAddStage(p, tb_stageWarmStartJoints, 0, joints ? 1 : 0, 1, tb_biasSoft, false);
+		tbAddJointColors(p, tb_stageWarmStartJoints, false);
 		tbAddContactPass(p, true, tb_biasSoft);
-		tbAddStage(p, tb_stageSolveJoints, 0, joints ? 1 : 0, 1, tb_biasSoft, true);
+		tbAddJointPass(p, true);
 		tbAddContactPass(p, false, tb_biasSoft);
 		tbAddStage(p, tb_stageIntegratePositions, 0, context->bodyCount, TB_BODIES_PER_UNIT, tb_biasSoft, false);
 		for (int k = 0; k < relaxIterations; ++k)
 		{
-			tbAddStage(p, tb_stageSolveJoints, 0, joints ? 1 : 0, 1, tb_biasSoft, false);
+			if (tbRelaxJointsInIteration(context, k))
+			{
+				tbAddJointPass(p, false);
+			}
 			tbAddContactPass(p, false, k == 0 ? tb_biasRelax : tb_biasRelaxRepeat);
 		}
 	}
@@ -142,11 +181,25 @@ static void tbRunUnit(tbStepContext* context, const tbStage* s, int unit)
 		case tb_stageIntegratePositions:
 			tbIntegratePositionsRange(context, begin, end);
 			break;
+		case tb_stageWarmStartMechanisms:
+			tbWarmStartJointRange(context, context->jointUnitStart[begin], context->jointUnitStart[end]);
+			break;
 		case tb_stageWarmStartJoints:
-			tbWarmStartJoints(context);
+			tbWarmStartJointRange(context, begin, end);
+			break;
+		case tb_stageSolveMechanisms:
+			tbSolveJointRowRange(context, context->jointUnitStart[begin], context->jointUnitStart[end], s->useBias);
+			break;
+		case tb_stageBeginJointPass:
+			// The program's one biased pass per sub-step factors the trees for the new positions.
+			context->world->jointTreesStale = context->world->jointTreesStale || s->useBias;
+			tbBeginJointPass(context, s->useBias);
 			break;
 		case tb_stageSolveJoints:
-			tbSolveJoints(context, s->useBias);
+			tbSolveJointRowRange(context, begin, end, s->useBias);
+			break;
+		case tb_stageSolveJointTrees:
+			tbSolveJointTrees(context);
 			break;
 		case tb_stageWarmStartColor:
 			tbWarmStartWideRange(context, begin, end, true);
@@ -244,16 +297,17 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 {
 	tbWorld* world = context->world;
 	int workers = tbWorkerCount(world);
-	if (workers <= 1 || world->def.solver != tb_solverSoft || context->wideConstraints == NULL ||
+	bool contactsColored = context->wideConstraints != NULL || context->constraintCount == 0;
+	if (workers <= 1 || world->def.solver != tb_solverSoft || contactsColored == false ||
 		context->enableWarmStarting == false)
 	{
 		return false; // the serial loop (warm starting off zeroes impulses there)
 	}
-	// Stages per sub-step: 2 integrations, 2 joint stages per pass, one per colour and the overflow
-	// per contact pass (warm start, solve, relaxes).
+	// Stages per sub-step: 2 integrations; per pass (warm start, solve, relaxes) one per contact
+	// colour and the overflow, and for the joints the trees' 2 stages and twice their colours.
 	int relaxIterations = world->def.relaxIterations + tbJointTreeRelaxIterations(context);
 	int passes = 2 + relaxIterations;
-	int perSubStep = 2 + passes * (2 + context->colorCount);
+	int perSubStep = 2 + passes * (1 + context->colorCount + 2 + 2 * (1 + context->jointColorCount));
 	int capacity = context->subStepCount * perSubStep;
 	tbStageProgram program;
 	program.context = context;

@@ -72,7 +72,7 @@ void tbWarmStartWeldJoint(tbJoint* joint, tbStepContext* context)
 	tbVec2 rA, rB, d;
 	tbJointAnchors(joint, &b, &rA, &rB, &d);
 	tbApplyJointImpulse(joint, &b, rA, rB, w->linearImpulse, w->angularImpulse);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 void tbSolveWeldJoint(tbJoint* joint, tbStepContext* context, bool useBias)
@@ -121,7 +121,7 @@ void tbSolveWeldJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 		w->linearImpulse = tbAdd(w->linearImpulse, impulse);
 		tbApplyJointImpulse(joint, &b, rA, rB, impulse, 0.0f);
 	}
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 // The rigid rows: the angle, Ċ = ωB − ωA, and the pin, as the revolute joint's.

@@ -80,7 +80,7 @@ void tbWarmStartWheelJoint(tbJoint* joint, tbStepContext* context)
 	tbAxisFrame g = tbMakeAxisFrame(joint, &b);
 	float axial = w->springImpulse + w->lowerImpulse - w->upperImpulse;
 	tbApplyAxisImpulse(joint, &b, &g, axial, w->perpImpulse, w->motorImpulse);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 static void tbSolveWheelAxis(tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, const tbStepContext* context,
@@ -123,7 +123,7 @@ void tbSolveWheelJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	tbSolveWheelAxis(joint, &b, &g, context, useBias);
 	if (joint->solvedInTree)
 	{
-		tbStoreJointBodies(&b); // the line is solved with its tree (joint_tree.c)
+		tbStoreJointBodies(joint, &b); // the line is solved with its tree (joint_tree.c)
 		return;
 	}
 
@@ -140,7 +140,7 @@ void tbSolveWheelJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	float impulse = -soft.massScale * perpMass * (Cdot + soft.biasRate * C) - soft.impulseScale * w->perpImpulse;
 	w->perpImpulse += impulse;
 	tbApplyAxisImpulse(joint, &b, &g, 0.0f, impulse, 0.0f);
-	tbStoreJointBodies(&b);
+	tbStoreJointBodies(joint, &b);
 }
 
 // The point-on-line row (see the header comment).
