@@ -907,34 +907,11 @@ void tbPrepareJoints(tbStepContext* context)
 	tbBuildJointTrees(context);
 }
 
-// In colour order the joints are visited scattered over the pool (each colour takes every few
-// ids), which the processor cannot predict; a joint (272 bytes) is asked for a few joints ahead.
-#define TB_JOINT_PREFETCH_DISTANCE 4
-
-static inline void tbPrefetchJoint(const tbWorld* world, int i, int end)
-{
-#if defined(__GNUC__) || defined(__clang__)
-	if (i < end)
-	{
-		const char* p = (const char*)(world->joints + world->solverJoints[i]);
-		for (int line = 0; line < (int)sizeof(tbJoint); line += 64)
-		{
-			__builtin_prefetch(p + line);
-		}
-	}
-#else
-	(void)world;
-	(void)i;
-	(void)end;
-#endif
-}
-
 void tbWarmStartJointRange(tbStepContext* context, int begin, int end)
 {
 	tbWorld* world = context->world;
 	for (int i = begin; i < end; ++i)
 	{
-		tbPrefetchJoint(world, i + TB_JOINT_PREFETCH_DISTANCE, end);
 		tbJoint* joint = world->joints + world->solverJoints[i];
 		switch (joint->type)
 		{
@@ -973,7 +950,6 @@ void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBi
 	tbWorld* world = context->world;
 	for (int i = begin; i < end; ++i)
 	{
-		tbPrefetchJoint(world, i + TB_JOINT_PREFETCH_DISTANCE, end);
 		tbJoint* joint = world->joints + world->solverJoints[i];
 		switch (joint->type)
 		{
