@@ -96,9 +96,8 @@ typedef struct tbWheelJoint
 
 typedef struct tbJoint
 {
-	// The solver's view of the step first, set by tbPrepareJoints, then the kind's part: the solve
-	// reads these three cache lines and never the rest (the pool is walked in colour order, so a
-	// joint's lines are not near the previous joint's; measured on a grid of 19,800 revolute joints).
+	// The solver's view of the step first, set by tbPrepareJoints, then the kind's part: what the
+	// solve reads sits together at the front, the fields only the API reads at the back.
 	uint8_t type;		   ///< tbJointType
 	bool solvedInTree;	   ///< this pass: its equality rows are solved by its tree, not row by row
 	int indexA, indexB;	   ///< solver body indices (the static stand-in for static or sleeping bodies)
