@@ -879,6 +879,7 @@ void tbPrepareJoints(tbStepContext* context)
 		tbPrepareJointBase(joint, context);
 		joint->treeNode = TB_NULL_INDEX;
 		joint->solvedInTree = false;
+		joint->loopyMechanism = false;
 		switch (joint->type)
 		{
 			case tb_distanceJoint:
@@ -904,7 +905,6 @@ void tbPrepareJoints(tbStepContext* context)
 		}
 		world->solverJoints[world->solverJointCount++] = id;
 	}
-	tbBuildJointTrees(context);
 }
 
 void tbWarmStartJointRange(tbStepContext* context, int begin, int end)

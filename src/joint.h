@@ -100,6 +100,7 @@ typedef struct tbJoint
 	// solve reads sits together at the front, the fields only the API reads at the back.
 	uint8_t type;		   ///< tbJointType
 	bool solvedInTree;	   ///< this pass: its equality rows are solved by its tree, not row by row
+	bool loopyMechanism;   ///< this step: its mechanism has too many loops for a joint tree (constraint_graph.c)
 	int indexA, indexB;	   ///< solver body indices (the static stand-in for static or sleeping bodies)
 	float invMassA, invIA; ///< 0 unless the body is awake and dynamic
 	float invMassB, invIB;
@@ -230,8 +231,8 @@ int tbJointEqualityRowCount(const tbJoint* joint);
 void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows);
 
 // joint_tree.c: the equality rows of each tree of joined bodies solved exactly.
-/// Once per step, after the joints are prepared: the trees (spanning trees of the joint graph of
-/// awake dynamic bodies).
+/// Once per step, after the joints are prepared and ordered (tbColorJoints): the trees (spanning
+/// trees of the joint graph of awake dynamic bodies) of the mechanisms that are mostly trees.
 void tbBuildJointTrees(tbStepContext* context);
 /// Once per sub-step, before the first biased pass: rows and factorisation with the current anchors.
 void tbFactorJointTrees(tbStepContext* context);

@@ -177,7 +177,7 @@ static tbTreeNode tbMakeNode(int parent, int dim, int body, int joint, int side)
 /// returns the new count. bodyNode[solver index] marks the bodies taken and joint->treeNode the
 /// joints, by preorder position.
 static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId, tbTreeNode* order, int count,
-					  int* bodyNode, int* stack, int* loopEnds)
+					  int* bodyNode, int* stack)
 {
 	tbWorld* world = context->world;
 	const tbBody* root = world->bodies + rootBodyId;
@@ -203,14 +203,10 @@ static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId
 			int edge = key & 1;
 			key = joint->edges[edge].nextKey;
 			const tbBody* other = world->bodies + joint->edges[edge ^ 1].bodyId;
-			if (joint->treeNode != TB_NULL_INDEX || tbJointEqualityRowCount(joint) == 0)
+			if (joint->treeNode != TB_NULL_INDEX || tbJointEqualityRowCount(joint) == 0 ||
+				tbIsTreeBody(context, other) == false || bodyNode[other->awakeIndex] != TB_NULL_INDEX)
 			{
-				continue; // taken, or no equality rows
-			}
-			if (tbIsTreeBody(context, other) == false || bodyNode[other->awakeIndex] != TB_NULL_INDEX)
-			{
-				*loopEnds += 1; // it closes a loop (through ground or not): seen from each tree body it joins
-				continue;
+				continue; // taken, no equality rows, or it closes a loop (through ground or not)
 			}
 			joint->treeNode = count;
 			order[count++] = tbMakeNode(bodyNodeIndex, tbJointEqualityRowCount(joint), -1,
@@ -221,23 +217,6 @@ static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId
 		}
 	}
 	return count;
-}
-
-/// The exact solve pays where a structure is mostly a tree (chains, ragdolls, bridges, vehicles).
-/// Where loops are many (a mesh or a grid of joints: about one loop per tree joint), Gauss–Seidel
-/// closes them anyway and the tree only adds its cost: on a 100 × 100 grid of revolute joints the
-/// exact spanning tree cut the largest pin gap from 0.50 to 0.20 m but made the step 2.3× longer
-/// (6.5 → 14.9 ms), and it took two more relaxing iterations. So a tree is kept when the joints
-/// closing loops in it are at most a quarter of its joints (each such joint is seen from both of
-/// its tree bodies, from one when it closes through ground).
-static bool tbTreeIsWorthIt(const tbTreeNode* nodes, int count, int loopEnds)
-{
-	int joints = 0;
-	for (int k = 0; k < count; ++k)
-	{
-		joints += nodes[k].joint >= 0 ? 1 : 0;
-	}
-	return 2 * loopEnds <= joints;
 }
 
 /// Floats of a node in the pool: D (n²), H (3 × n or n × 3), L (the same), x (n).
@@ -270,16 +249,16 @@ void tbBuildJointTrees(tbStepContext* context)
 		bodyNode[i] = TB_NULL_INDEX;
 	}
 
-	// Roots in joint-id order: first the joints to ground (the tree hangs from one of them), then
+	// Roots in the solve order (joint-id order within a small mechanism): first the joints to ground (the tree hangs from one of them), then
 	// an awake dynamic body of any joint still outside a tree. Each tree is stored in reverse
 	// preorder (children before parents), its parent links renumbered to match.
 	int count = 0, treeCount = 0;
 	for (int pass = 0; pass < 2 * jointCount; ++pass)
 	{
 		tbJoint* joint = world->joints + world->solverJoints[pass % jointCount];
-		if (joint->treeNode != TB_NULL_INDEX || tbJointEqualityRowCount(joint) == 0)
+		if (joint->treeNode != TB_NULL_INDEX || joint->loopyMechanism || tbJointEqualityRowCount(joint) == 0)
 		{
-			continue;
+			continue; // in a tree, in a mechanism left to Gauss–Seidel (constraint_graph.c), or no rows
 		}
 		bool treeA = tbIsTreeBody(context, world->bodies + joint->edges[0].bodyId);
 		bool treeB = tbIsTreeBody(context, world->bodies + joint->edges[1].bodyId);
@@ -293,21 +272,9 @@ void tbBuildJointTrees(tbStepContext* context)
 		{
 			continue; // its body is in a tree already: the joint closes a loop
 		}
-		int start = count, loopEnds = 0;
-		count = tbGrowTree(context, toGround ? joint : NULL, root, preorder, count, bodyNode, stack, &loopEnds);
+		int start = count;
+		count = tbGrowTree(context, toGround ? joint : NULL, root, preorder, count, bodyNode, stack);
 		int n = count - start;
-		if (tbTreeIsWorthIt(preorder + start, n, loopEnds) == false)
-		{
-			for (int k = start; k < count; ++k)
-			{
-				if (preorder[k].joint >= 0)
-				{
-					world->joints[preorder[k].joint].treeNode = TB_NULL_INDEX;
-				}
-			}
-			count = start; // its bodies stay marked: nothing else roots a tree among them
-			continue;
-		}
 		for (int k = 0; k < n; ++k)
 		{
 			tbTreeNode node = preorder[start + k];

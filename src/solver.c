@@ -183,7 +183,8 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbPrepareContacts(&context);
 	tbPropagateImpacts(&context); // before the colouring packs the constraints
 	tbPrepareJoints(&context); // joint.c
-	tbColorJoints(&context);   // constraint_graph.c: the joints' solve order, colour by colour
+	tbColorJoints(&context);   // constraint_graph.c: the joints' solve order, mechanism by mechanism or by colour
+	tbBuildJointTrees(&context); // joint_tree.c: exact solves of the mechanisms that are mostly trees
 	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)
 	{
 		tbColorConstraints(&context); // NGS has its own solver loops (solver_ngs.c): scalar only
