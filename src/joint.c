@@ -16,10 +16,10 @@
 // contacts (anchors in world axes, masses, softness); warm started before the contacts in every
 // sub-step; solved before the contacts in each velocity pass. Joints go first so that the
 // contacts, solved last, have the final word on non-penetration. Row by row, the joints are
-// solved one at a time in joint-id order (scalar): they are few compared with contacts. Colouring
-// them into the constraint graph with the contacts (constraint_graph.c) so that the wide solver
-// can take them four at a time is a later step. In the biased passes the equality rows of each
-// tree of joined bodies are solved exactly instead (joint_tree.c, tbSolveJoints below).
+// solved one at a time (scalar) in the order tbColorJoints gives (constraint_graph.c): small
+// mechanisms in joint-id order, whole mechanisms side by side on the workers, the joints of large
+// ones colour by colour. In the biased passes the equality rows of each tree of joined bodies are
+// solved exactly instead (joint_tree.c, tbSolveJoints below).
 //
 // Position error by method (the `useBias` pass):
 // - soft step: rows solved one at a time are soft constraints (Catto, "Soft Constraints", GDC

@@ -4,8 +4,8 @@
 // union member and in the kind's own file (revolute_joint.c, distance_joint.c, ...).
 //
 // Per step (joint.c): tbPrepareJoints gathers the joints with an awake dynamic body into
-// world->solverJoints (joint-id order) and computes anchors, masses and softness once; each
-// sub-step warm starts them before the contacts and solves them before the contacts in the biased
+// world->solverJoints (joint-id order) and computes anchors, masses and softness once;
+// tbColorJoints (constraint_graph.c) puts them in solve order; each sub-step warm starts them before the contacts and solves them before the contacts in the biased
 // and in the relaxing pass; tbFinishJoints reports joint events. Impulses stay in the joints for
 // the next step's warm start.
 #pragma once
