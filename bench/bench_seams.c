@@ -68,7 +68,7 @@ static tbBodyId CreateMover(tbWorldId world, bool capsule)
 	bodyDef.position = tbMakeVec2(1.0f, 0.25f);
 	tbBodyId body = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.friction = 0.0f;
+	shapeDef.material.friction = 0.0f;
 	if (capsule)
 	{
 		tbCapsule shape = {{-0.25f, 0.0f}, {0.25f, 0.0f}, 0.25f};

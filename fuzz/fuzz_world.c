@@ -127,8 +127,8 @@ static void CreateShape(FuzzInput* in, Ids* ids)
 {
 	tbShapeDef def = tbDefaultShapeDef();
 	def.density = FuzzInt(in, 2) ? FuzzFloat(in) : 1.0f;
-	def.friction = FuzzInt(in, 2) ? FuzzFloat(in) : 0.6f;
-	def.restitution = FuzzInt(in, 4) == 0 ? FuzzFloat(in) : 0.0f;
+	def.material.friction = FuzzInt(in, 2) ? FuzzFloat(in) : 0.6f;
+	def.material.restitution = FuzzInt(in, 4) == 0 ? FuzzFloat(in) : 0.0f;
 	tbGeometry g = FuzzGeometry(in);
 	tbShapeId shape = tbCreateShape(PickBody(in, ids), &def, &g);
 	if (TB_IS_NON_NULL(shape))

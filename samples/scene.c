@@ -373,8 +373,8 @@ static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const 
 		const SceneShape* shape = body->shapes + i;
 		tbShapeDef shapeDef = tbDefaultShapeDef();
 		shapeDef.density = shape->density;
-		shapeDef.friction = shape->friction;
-		shapeDef.restitution = shape->restitution;
+		shapeDef.material.friction = shape->friction;
+		shapeDef.material.restitution = shape->restitution;
 		shapeDef.isSensor = shape->isSensor;
 		shapeDef.enableHitEvents = shape->enableHitEvents;
 		shapeDef.filter.groupIndex = shape->groupIndex;

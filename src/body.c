@@ -196,7 +196,10 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->gravityScale = def->gravityScale;
 	body->sleepThreshold = def->sleepThreshold;
 	body->enableSleep = def->enableSleep;
-	body->fixedRotation = def->fixedRotation;
+	body->fixedRotation = def->fixedRotation || def->motionLocks.angularZ;
+	body->lockLinearX = def->motionLocks.linearX;
+	body->lockLinearY = def->motionLocks.linearY;
+	world->linearLockCount += body->lockLinearX || body->lockLinearY ? 1 : 0;
 	body->isBullet = def->isBullet;
 	body->headShapeId = TB_NULL_INDEX;
 	body->headContactKey = TB_NULL_INDEX;
@@ -259,6 +262,7 @@ void tbDestroyBody(tbBodyId bodyId)
 	body->inUse = false;
 	body->generation += 1;
 	world->bodyCount -= 1;
+	world->linearLockCount -= body->lockLinearX || body->lockLinearY ? 1 : 0;
 	TB_ARRAY_PUSH(world->bodyFree, world->bodyFreeCount, world->bodyFreeCapacity, bodyId.index1 - 1);
 }
 
@@ -1150,6 +1154,45 @@ void tbBody_SetFixedRotation(tbBodyId bodyId, bool flag)
 		body->angularVelocity = 0.0f;
 		tbUpdateBodyMass(world, body);
 	}
+}
+
+void tbBody_SetMotionLocks(tbBodyId bodyId, tbMotionLocks locks)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetMotionLocks", &world, true);
+	if (body == NULL)
+	{
+		return;
+	}
+	world->linearLockCount -= body->lockLinearX || body->lockLinearY ? 1 : 0;
+	body->lockLinearX = locks.linearX;
+	body->lockLinearY = locks.linearY;
+	world->linearLockCount += body->lockLinearX || body->lockLinearY ? 1 : 0;
+	body->linearVelocity.x = locks.linearX ? 0.0f : body->linearVelocity.x;
+	body->linearVelocity.y = locks.linearY ? 0.0f : body->linearVelocity.y;
+	if (body->fixedRotation != locks.angularZ)
+	{
+		body->fixedRotation = locks.angularZ;
+		body->angularVelocity = 0.0f;
+		tbUpdateBodyMass(world, body);
+	}
+	if (body->type != tb_staticBody)
+	{
+		tbWakeBody(world, body);
+	}
+}
+
+tbMotionLocks tbBody_GetMotionLocks(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetMotionLocks", NULL, false);
+	tbMotionLocks locks = {false, false, false};
+	if (body != NULL)
+	{
+		locks.linearX = body->lockLinearX;
+		locks.linearY = body->lockLinearY;
+		locks.angularZ = body->fixedRotation;
+	}
+	return locks;
 }
 
 void tbBody_SetUserData(tbBodyId bodyId, void* userData)

@@ -7,6 +7,7 @@
 
 #include "tumble/tumble.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #define TB_CHAIN_DEF_MAGIC 0x6C3E91A5
@@ -22,17 +23,11 @@ typedef struct tbChain
 	bool inUse;
 } tbChain;
 
-tbSurfaceMaterial tbDefaultSurfaceMaterial(void)
-{
-	tbSurfaceMaterial material = {0.6f, 0.0f, 0};
-	return material;
-}
-
 tbChainDef tbDefaultChainDef(void)
 {
 	tbChainDef def;
 	memset(&def, 0, sizeof(def));
-	static const tbSurfaceMaterial defaultMaterial = {0.6f, 0.0f, 0};
+	static const tbSurfaceMaterial defaultMaterial = {0.6f, 0.0f, 0.0f, 0.0f, 0u, 0u}; // tbDefaultSurfaceMaterial
 	def.materials = &defaultMaterial;
 	def.materialCount = 1;
 	def.filter = tbDefaultFilter();
@@ -92,14 +87,9 @@ bool tbChain_IsValid(tbChainId chainId)
 
 static bool tbCheckMaterial(const char* f, const tbSurfaceMaterial* material, int index)
 {
-	if (tbIsValidFloat(material->friction) == false || material->friction < 0.0f ||
-		tbIsValidFloat(material->restitution) == false || material->restitution < 0.0f)
-	{
-		tbReportError(f, "materials[%d] has friction %g and restitution %g; both must be finite and ≥ 0", index,
-					  (double)material->friction, (double)material->restitution);
-		return false;
-	}
-	return true;
+	char name[32];
+	snprintf(name, sizeof(name), "materials[%d]", index);
+	return tbCheckSurfaceMaterial(f, name, material);
 }
 
 /// Everything about a chain definition that can be wrong, before anything is created.
@@ -211,9 +201,7 @@ tbChainId tbCreateChain(tbBodyId bodyId, const tbChainDef* def)
 	for (int i = 0; i < chain->segmentCount; ++i)
 	{
 		const tbSurfaceMaterial* material = chain->materials + (chain->materialCount == 1 ? 0 : i);
-		shapeDef.friction = material->friction;
-		shapeDef.restitution = material->restitution;
-		shapeDef.userMaterialId = material->userMaterialId;
+		shapeDef.material = *material;
 		geometry.chainSegment = tbMakeChainSegment(def, i, index);
 		chain = world->chains + index; // tbAddShape does not move chains, but stay explicit
 		chain->shapeIds[i] = tbAddShape(world, bodyId.index1 - 1, &shapeDef, &geometry);
@@ -354,9 +342,8 @@ bool tbChain_SetSurfaceMaterial(tbChainId chainId, const tbSurfaceMaterial* mate
 		if (chain->materialCount == 1 || i == materialIndex)
 		{
 			tbShape* shape = world->shapes + chain->shapeIds[i];
-			shape->friction = material->friction;
-			shape->restitution = material->restitution;
-			shape->userMaterialId = material->userMaterialId;
+			shape->material = *material;
+			tbRemixShapeContacts(world, shape);
 		}
 	}
 	return true;
@@ -368,7 +355,7 @@ tbSurfaceMaterial tbChain_GetSurfaceMaterial(tbChainId chainId, int materialInde
 	tbChain* chain = tbGetChainChecked(chainId, f, NULL, false);
 	if (chain == NULL || tbCheckMaterialIndex(f, chain, materialIndex) == false)
 	{
-		tbSurfaceMaterial none = {0.0f, 0.0f, 0};
+		tbSurfaceMaterial none = {0.0f, 0.0f, 0.0f, 0.0f, 0u, 0u};
 		return none;
 	}
 	return chain->materials[materialIndex];

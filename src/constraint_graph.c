@@ -14,7 +14,9 @@
 // trailing zeros. Greedy colouring needs at most (largest degree + 1) colours; measured on the
 // benchmark scenes: at most 9 on the pyramids, 11 on the tumbler, none overflowing. Constraints that find no free colour among
 // TB_GRAPH_COLOR_COUNT (very crowded bodies: a body with many small neighbours) go to an overflow
-// list that the scalar solver handles after the colours.
+// list that the scalar solver handles after the colours, and so do contacts with rolling
+// resistance or a tangent speed (tbSurfaceMaterial): the wide blocks do not carry them, so that
+// the common contact pays nothing for them.
 //
 // Order. Gauss–Seidel results depend on the order, and the order here is colour by colour,
 // within a colour the island stage's order (a hash of the contact id, island.c). Colouring in
@@ -71,6 +73,10 @@ static void tbAssignColors(const tbStepContext* context, uint32_t* bodyMasks, ui
 		bool movesB = tbMovesB(c);
 		uint32_t used = (movesA ? bodyMasks[c->indexA] : 0u) | (movesB ? bodyMasks[c->indexB] : 0u);
 		uint32_t free = ~used & allColors;
+		if (c->rollingResistance > 0.0f || c->tangentSpeed != 0.0f)
+		{
+			free = 0u; // the wide blocks carry no surface extras: the scalar solver takes it
+		}
 
 		int color = TB_GRAPH_COLOR_COUNT;
 		if (free != 0u)

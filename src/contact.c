@@ -20,17 +20,17 @@
 // either contact solver (the default mix also reaches it, for frictions above about 1.8e19).
 static float tbMixFriction(const tbWorld* world, const tbShape* a, const tbShape* b)
 {
-	float mixed = sqrtf(a->friction * b->friction);
+	float mixed = sqrtf(a->material.friction * b->material.friction);
 	if (world->def.frictionCallback == NULL)
 	{
 		return mixed;
 	}
-	float value = world->def.frictionCallback(a->friction, a->userMaterialId, b->friction, b->userMaterialId);
+	float value = world->def.frictionCallback(a->material.friction, a->material.userMaterialId, b->material.friction, b->material.userMaterialId);
 	if (!(value >= 0.0f))
 	{
 		tbReportError("tbWorld_Step", "frictionCallback returned %g for frictions %g and %g; it must return a number >= 0 "
-					  "(the default mix sqrt(a*b) = %g is used)", (double)value, (double)a->friction,
-					  (double)b->friction, (double)mixed);
+					  "(the default mix sqrt(a*b) = %g is used)", (double)value, (double)a->material.friction,
+					  (double)b->material.friction, (double)mixed);
 		return mixed;
 	}
 	return value;
@@ -38,21 +38,51 @@ static float tbMixFriction(const tbWorld* world, const tbShape* a, const tbShape
 
 static float tbMixRestitution(const tbWorld* world, const tbShape* a, const tbShape* b)
 {
-	float mixed = tbMaxFloat(a->restitution, b->restitution);
+	float mixed = tbMaxFloat(a->material.restitution, b->material.restitution);
 	if (world->def.restitutionCallback == NULL)
 	{
 		return mixed;
 	}
 	float value =
-		world->def.restitutionCallback(a->restitution, a->userMaterialId, b->restitution, b->userMaterialId);
+		world->def.restitutionCallback(a->material.restitution, a->material.userMaterialId, b->material.restitution, b->material.userMaterialId);
 	if (!(value >= 0.0f) || tbIsValidFloat(value) == false)
 	{
 		tbReportError("tbWorld_Step", "restitutionCallback returned %g for restitutions %g and %g; it must return a "
 					  "finite number >= 0 (the default mix max(a, b) = %g is used)", (double)value,
-					  (double)a->restitution, (double)b->restitution, (double)mixed);
+					  (double)a->material.restitution, (double)b->material.restitution, (double)mixed);
 		return mixed;
 	}
 	return value;
+}
+
+/// Rounding radius of a shape: what rolls (circle, capsule, rounded polygon); 0 for the rest.
+static float tbRollingRadius(const tbShape* shape)
+{
+	switch (shape->geometry.type)
+	{
+		case tb_circleShape:
+			return shape->geometry.circle.radius;
+		case tb_capsuleShape:
+			return shape->geometry.capsule.radius;
+		case tb_polygonShape:
+			return shape->geometry.polygon.radius;
+		default:
+			return 0.0f;
+	}
+}
+
+// Rolling resistance and tangent speed as Box2D v3.2 mixes them: the larger coefficient times the
+// larger rounding radius (the lever arm of the resisting torque: a torque of c·r·N resists the
+// rolling of a wheel of radius r under normal force N), and the two surfaces' speeds added.
+void tbMixContactMaterials(const tbWorld* world, tbContact* contact)
+{
+	const tbShape* a = world->shapes + contact->shapeIdA;
+	const tbShape* b = world->shapes + contact->shapeIdB;
+	contact->friction = tbMixFriction(world, a, b);
+	contact->restitution = tbMixRestitution(world, a, b);
+	float resistance = tbMaxFloat(a->material.rollingResistance, b->material.rollingResistance);
+	contact->rollingResistance = resistance > 0.0f ? resistance * tbMaxFloat(tbRollingRadius(a), tbRollingRadius(b)) : 0.0f;
+	contact->tangentSpeed = a->material.tangentSpeed + b->material.tangentSpeed;
 }
 
 static void tbLinkEdge(tbWorld* world, int contactId, int edgeIndex)
@@ -116,8 +146,7 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	contact->shapeIdB = shapeIdB;
 	contact->edges[0].bodyId = a->bodyId;
 	contact->edges[1].bodyId = b->bodyId;
-	contact->friction = tbMixFriction(world, a, b);
-	contact->restitution = tbMixRestitution(world, a, b);
+	tbMixContactMaterials(world, contact);
 	contact->stamp = UINT32_MAX;
 	if (a->isSensor || b->isSensor)
 	{
@@ -305,6 +334,7 @@ void tbUpdatePairsStage(tbWorld* world)
 /// feature id (warm starting).
 static void tbMatchPoints(tbManifold* manifold, const tbManifold* old)
 {
+	manifold->rollingImpulse = old->rollingImpulse;
 	for (int i = 0; i < manifold->pointCount; ++i)
 	{
 		tbManifoldPoint* mp = manifold->points + i;

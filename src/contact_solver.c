@@ -208,6 +208,11 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 	const tbSolverBody* sA = context->bodies + c->indexA;
 	const tbSolverBody* sB = context->bodies + c->indexB;
 	float warmScale = context->enableWarmStarting ? 1.0f : 0.0f;
+	c->tangentSpeed = contact->tangentSpeed;
+	c->rollingResistance = contact->rollingResistance;
+	float kRolling = c->invIA + c->invIB;
+	c->rollingMass = kRolling > 0.0f ? 1.0f / kRolling : 0.0f;
+	c->rollingImpulse = warmScale * manifold->rollingImpulse;
 
 	for (int j = 0; j < c->pointCount; ++j)
 	{
@@ -310,10 +315,13 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 		tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
 		tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
 	}
+	sA->angularVelocity -= c->invIA * c->rollingImpulse;
+	sB->angularVelocity += c->invIB * c->rollingImpulse;
 }
 
 static void tbZeroImpulses(tbContactConstraint* c)
 {
+	c->rollingImpulse = 0.0f;
 	for (int j = 0; j < c->pointCount; ++j)
 	{
 		c->points[j].normalImpulse = 0.0f;
@@ -438,6 +446,26 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 		wB += iB * tbCross(rB, P);
 	}
 
+	if (c->rollingResistance > 0.0f)
+	{
+		// Rolling resistance: an angular impulse against the relative spin, bounded by a torque of
+		// rollingResistance × the normal force (Box2D v3.2's model): a ball of radius r rolling
+		// without slipping on level ground then decelerates at c·g/(1 + I/(m·r²)).
+		float totalNormalImpulse = 0.0f;
+		for (int j = 0; j < pointCount; ++j)
+		{
+			totalNormalImpulse += c->points[j].normalImpulse;
+		}
+		float maxImpulse = c->rollingResistance * totalNormalImpulse;
+		float impulse = -c->rollingMass * (wB - wA);
+		float newImpulse = tbClampFloat(c->rollingImpulse + impulse, -maxImpulse, maxImpulse);
+		impulse = newImpulse - c->rollingImpulse;
+		c->rollingImpulse = newImpulse;
+		wA -= iA * impulse;
+		wB += iB * impulse;
+	}
+
+	// Friction drives the relative tangential speed to the surfaces' tangent speed (0 but on belts).
 	float friction = c->friction;
 	for (int j = 0; j < pointCount; ++j)
 	{
@@ -445,7 +473,7 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 		tbVec2 rA = cp->anchorA;
 		tbVec2 rB = cp->anchorB;
 		tbVec2 dv = tbSub(tbAdd(vB, tbCrossSV(wB, rB)), tbAdd(vA, tbCrossSV(wA, rA)));
-		float vt = tbDot(dv, tangent);
+		float vt = tbDot(dv, tangent) - c->tangentSpeed;
 		float impulse = -cp->tangentMass * vt;
 		float maxFriction = friction * cp->normalImpulse;
 		float newImpulse = tbClampFloat(cp->tangentImpulse + impulse, -maxFriction, maxFriction);
@@ -640,6 +668,7 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 		if (location >= 0)
 		{
 			tbLoadWideImpulses(context, location, manifold->pointCount, manifold->points);
+			manifold->rollingImpulse = 0.0f; // wide blocks hold no surface extras (constraint_graph.c)
 			continue;
 		}
 		const tbContactConstraint* c = context->constraints + index;
@@ -651,6 +680,7 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 			mp->tangentImpulse = cp->tangentImpulse;
 			mp->maxNormalImpulse = cp->maxNormalImpulse;
 		}
+		manifold->rollingImpulse = c->rollingImpulse;
 	}
 }
 

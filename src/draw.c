@@ -4,6 +4,10 @@
 
 static uint32_t tbBodyColor(const tbBody* body, const tbShape* shape)
 {
+	if (shape->material.customColor != 0u)
+	{
+		return shape->material.customColor; // the game's choice (tbSurfaceMaterial::customColor)
+	}
 	if (body->type == tb_staticBody)
 	{
 		return tb_colorStatic;
@@ -16,7 +20,6 @@ static uint32_t tbBodyColor(const tbBody* body, const tbShape* shape)
 	{
 		return tb_colorKinematic;
 	}
-	(void)shape;
 	// A stable per-body hue from its id so neighbouring bodies are told apart.
 	static const uint32_t palette[6] = {0x4E79A7, 0xF28E2B, 0xE15759, 0x76B7B2, 0xEDC948, 0xB07AA1};
 	return palette[(uint32_t)(body->headShapeId * 2654435761u) % 6u];

@@ -85,6 +85,12 @@ void tbIntegratePositionsRange(tbStepContext* context, int start, int end)
 	for (int i = start; i < end; ++i)
 	{
 		tbSolverBody* sb = context->bodies + i;
+		if (context->linearLocks != NULL && context->linearLocks[i] != 0)
+		{
+			// Motion locks act as a constraint solved last (Box2D v3.2 does the same): the body
+			// never moves along a locked axis; the contacts solved before saw it free along it.
+			tbApplyLinearLocks(context->linearLocks[i], &sb->linearVelocity);
+		}
 		sb->deltaPosition = tbMulAdd(sb->deltaPosition, h, sb->linearVelocity);
 		sb->deltaRotation = tbIntegrateRotation(sb->deltaRotation, h * sb->angularVelocity);
 	}

@@ -7,6 +7,13 @@
 /// per-step rotation bound; applied to the velocities a step starts from and after each update.
 void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb);
 
+/// Zero the components of v along the locked axes (1: x, 2: y; tbStepContext::linearLocks).
+static inline void tbApplyLinearLocks(uint8_t locks, tbVec2* v)
+{
+	v->x = (locks & 1u) != 0u ? 0.0f : v->x;
+	v->y = (locks & 2u) != 0u ? 0.0f : v->y;
+}
+
 /// Semi-implicit Euler velocity update of one sub-step, then the speed clamps.
 void tbIntegrateVelocities(tbStepContext* context);
 

@@ -12,7 +12,7 @@ tbShapeDef tbDefaultShapeDef(void)
 {
 	tbShapeDef def;
 	memset(&def, 0, sizeof(def));
-	def.friction = 0.6f;
+	def.material = tbDefaultSurfaceMaterial();
 	def.density = 1.0f;
 	def.filter = tbDefaultFilter();
 	def.enableSensorEvents = true;
@@ -203,6 +203,38 @@ void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove)
 	tbMoveFlaggedProxies(world, body);
 }
 
+tbSurfaceMaterial tbDefaultSurfaceMaterial(void)
+{
+	tbSurfaceMaterial material;
+	memset(&material, 0, sizeof(material));
+	material.friction = 0.6f;
+	return material;
+}
+
+bool tbCheckSurfaceMaterial(const char* f, const char* name, const tbSurfaceMaterial* material)
+{
+	if (tbCheckPointer(f, name, material) == false)
+	{
+		return false;
+	}
+	const float values[3] = {material->friction, material->restitution, material->rollingResistance};
+	const char* const fields[3] = {"friction", "restitution", "rollingResistance"};
+	for (int i = 0; i < 3; ++i)
+	{
+		if (tbIsValidFloat(values[i]) == false || values[i] < 0.0f)
+		{
+			tbReportError(f, "%s.%s is %g; it must be finite and >= 0", name, fields[i], (double)values[i]);
+			return false;
+		}
+	}
+	if (tbIsValidFloat(material->tangentSpeed) == false)
+	{
+		tbReportError(f, "%s.tangentSpeed is %g; it must be finite", name, (double)material->tangentSpeed);
+		return false;
+	}
+	return true;
+}
+
 static bool tbCheckShapeDef(const tbShapeDef* def, const char* f)
 {
 	if (tbCheckPointer(f, "def", def) == false)
@@ -215,8 +247,7 @@ static bool tbCheckShapeDef(const tbShapeDef* def, const char* f)
 						 "fields");
 		return false;
 	}
-	return tbCheckNonNegative(f, "def->density", def->density) && tbCheckNonNegative(f, "def->friction", def->friction) &&
-		   tbCheckNonNegative(f, "def->restitution", def->restitution);
+	return tbCheckNonNegative(f, "def->density", def->density) && tbCheckSurfaceMaterial(f, "def->material", &def->material);
 }
 
 static bool tbCheckRadius(const char* f, const char* name, float radius)
@@ -384,9 +415,7 @@ int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeo
 	shape->userData = def->userData;
 	shape->filter = def->filter;
 	shape->density = def->density;
-	shape->friction = def->friction;
-	shape->restitution = def->restitution;
-	shape->userMaterialId = def->userMaterialId;
+	shape->material = def->material;
 	shape->isSensor = def->isSensor;
 	shape->enableSensorEvents = def->enableSensorEvents;
 	shape->enableContactEvents = def->enableContactEvents;
@@ -775,38 +804,97 @@ float tbShape_GetDensity(tbShapeId shapeId)
 	return shape != NULL ? shape->density : 0.0f;
 }
 
-bool tbShape_SetFriction(tbShapeId shapeId, float friction)
+// The shape's contacts take a changed material from the next step on (as when they were made).
+void tbRemixShapeContacts(tbWorld* world, const tbShape* shape)
 {
-	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetFriction", NULL, true);
-	if (shape == NULL || tbCheckNonNegative("tbShape_SetFriction", "friction", friction) == false)
+	int shapeId = (int)(shape - world->shapes);
+	const tbBody* body = world->bodies + shape->bodyId;
+	for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+	{
+		tbContact* contact = world->contacts + (key >> 1);
+		key = contact->edges[key & 1].nextKey;
+		if (contact->shapeIdA == shapeId || contact->shapeIdB == shapeId)
+		{
+			tbMixContactMaterials(world, contact);
+		}
+	}
+}
+
+static bool tbSetShapeMaterial(const char* f, tbShapeId shapeId, const tbSurfaceMaterial* material, const char* name)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, true);
+	if (shape == NULL || tbCheckSurfaceMaterial(f, name, material) == false)
 	{
 		return false;
 	}
-	shape->friction = friction;
+	shape->material = *material;
+	tbRemixShapeContacts(world, shape);
 	return true;
+}
+
+bool tbShape_SetSurfaceMaterial(tbShapeId shapeId, const tbSurfaceMaterial* material)
+{
+	return tbSetShapeMaterial("tbShape_SetSurfaceMaterial", shapeId, material, "material");
+}
+
+tbSurfaceMaterial tbShape_GetSurfaceMaterial(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetSurfaceMaterial", NULL, false);
+	return shape != NULL ? shape->material : tbDefaultSurfaceMaterial();
+}
+
+bool tbShape_SetFriction(tbShapeId shapeId, float friction)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetFriction", NULL, true);
+	if (shape == NULL)
+	{
+		return false;
+	}
+	tbSurfaceMaterial material = shape->material;
+	material.friction = friction;
+	return tbSetShapeMaterial("tbShape_SetFriction", shapeId, &material, "new material");
 }
 
 float tbShape_GetFriction(tbShapeId shapeId)
 {
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetFriction", NULL, false);
-	return shape != NULL ? shape->friction : 0.0f;
+	return shape != NULL ? shape->material.friction : 0.0f;
 }
 
 bool tbShape_SetRestitution(tbShapeId shapeId, float restitution)
 {
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetRestitution", NULL, true);
-	if (shape == NULL || tbCheckNonNegative("tbShape_SetRestitution", "restitution", restitution) == false)
+	if (shape == NULL)
 	{
 		return false;
 	}
-	shape->restitution = restitution;
-	return true;
+	tbSurfaceMaterial material = shape->material;
+	material.restitution = restitution;
+	return tbSetShapeMaterial("tbShape_SetRestitution", shapeId, &material, "new material");
 }
 
 float tbShape_GetRestitution(tbShapeId shapeId)
 {
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetRestitution", NULL, false);
-	return shape != NULL ? shape->restitution : 0.0f;
+	return shape != NULL ? shape->material.restitution : 0.0f;
+}
+
+void tbShape_SetUserMaterial(tbShapeId shapeId, uint64_t material)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetUserMaterial", &world, true);
+	if (shape != NULL)
+	{
+		shape->material.userMaterialId = material;
+		tbRemixShapeContacts(world, shape); // the mixing callbacks see the id
+	}
+}
+
+uint64_t tbShape_GetUserMaterial(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetUserMaterial", NULL, false);
+	return shape != NULL ? shape->material.userMaterialId : 0u;
 }
 
 tbFilter tbShape_GetFilter(tbShapeId shapeId)

@@ -41,6 +41,11 @@ static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraint
 	context->constraints = (tbContactConstraint*)(p + bodyBytes + motionBytes);
 	context->bodyCount = bodyCount;
 	context->constraintCount = constraintCount;
+	context->linearLocks = NULL;
+	if (context->world->linearLockCount > 0)
+	{
+		context->linearLocks = tbArenaAlloc(&context->world->stepArena, bodyCount + 1);
+	}
 }
 
 
@@ -66,6 +71,11 @@ static void tbGatherBodiesTask(int start, int end, uint32_t workerIndex, void* t
 		sb->padding = 0.0f;
 		sb->deltaPosition = tb_vec2_zero;
 		sb->deltaRotation = tb_rot_identity;
+
+		if (context->linearLocks != NULL)
+		{
+			context->linearLocks[i] = (uint8_t)((body->lockLinearX ? 1 : 0) | (body->lockLinearY ? 2 : 0));
+		}
 
 		tbSolverMotion* m = context->motions + i;
 		if (body->type == tb_dynamicBody)
@@ -106,7 +116,12 @@ static void tbScatterBodiesTask(int start, int end, uint32_t workerIndex, void* 
 	for (int i = start; i < end; ++i)
 	{
 		tbBody* body = world->bodies + world->awakeBodies[i];
-		const tbSolverBody* sb = context->bodies + i;
+		tbSolverBody* sb = context->bodies + i;
+		if (context->linearLocks != NULL && context->linearLocks[i] != 0)
+		{
+			tbApplyLinearLocks(context->linearLocks[i], &sb->linearVelocity); // what the relax passes left
+			tbApplyLinearLocks(context->linearLocks[i], &sb->deltaPosition);  // NGS position corrections
+		}
 		body->linearVelocity = sb->linearVelocity;
 		body->angularVelocity = sb->angularVelocity;
 		body->center = tbAdd(body->center0, sb->deltaPosition);

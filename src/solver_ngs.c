@@ -280,7 +280,7 @@ static void tbSolveVelocityConstraints(tbStepContext* context, const tbNGSConstr
 			tbVec2 rA = cp->anchorA;
 			tbVec2 rB = cp->anchorB;
 			tbVec2 dv = tbSub(tbAdd(vB, tbCrossSV(wB, rB)), tbAdd(vA, tbCrossSV(wA, rA)));
-			float vt = tbDot(dv, tangent);
+			float vt = tbDot(dv, tangent) - c->tangentSpeed;
 			float impulse = -cp->tangentMass * vt;
 			float maxFriction = c->friction * cp->normalImpulse;
 			float newImpulse = tbClampFloat(cp->tangentImpulse + impulse, -maxFriction, maxFriction);

@@ -84,7 +84,7 @@ typedef struct tbContactConstraintPoint
 
 _Static_assert(sizeof(tbContactConstraintPoint) == 44, "tbContactConstraintPoint is meant to be 44 bytes");
 
-/// One contact as the solver sees it: 144 bytes.
+/// One contact as the solver sees it: 160 bytes.
 typedef struct tbContactConstraint
 {
 	int indexA;				///< solver body index of A (bodyCount for the static stand-in)
@@ -97,9 +97,15 @@ typedef struct tbContactConstraint
 	tbSoftness softness;	///< used by the soft bias policy only
 	int pointCount;
 	tbContactConstraintPoint points[2];
+	// Surface extras (tbSurfaceMaterial): a contact that has one is solved by the scalar solver
+	// (constraint_graph.c sends it to the overflow list).
+	float tangentSpeed;		 ///< m/s, target relative tangential speed (conveyor belts)
+	float rollingResistance; ///< m: the resisting torque's bound per unit normal impulse
+	float rollingMass;		 ///< kg·m², 1/(IA⁻¹ + IB⁻¹)
+	float rollingImpulse;	 ///< N·m·s, accumulated over the sub-step
 } tbContactConstraint;
 
-_Static_assert(sizeof(tbContactConstraint) == 144, "tbContactConstraint is meant to be 144 bytes");
+_Static_assert(sizeof(tbContactConstraint) == 160, "tbContactConstraint is meant to be 160 bytes");
 
 /// How the velocity solve treats separation. Speculative gaps (s > 0) always get bias s/h: the
 /// constraint lets the bodies close exactly the gap in one sub-step and no more.
@@ -160,6 +166,7 @@ typedef struct tbStepContext
 
 	tbSolverBody* bodies; ///< bodyCount + 1 (the last is the static stand-in)
 	tbSolverMotion* motions;
+	uint8_t* linearLocks; ///< per solver body: 1 x locked, 2 y locked (motion locks); NULL when no body has one
 	int bodyCount;
 
 	tbContactConstraint* constraints; ///< in the order of world->solverContacts

@@ -61,7 +61,9 @@ typedef struct tbBody
 	uint16_t generation;
 	bool inUse;
 	bool enableSleep;
-	bool fixedRotation;
+	bool fixedRotation; ///< also motion lock angularZ
+	bool lockLinearX;	///< motion locks (tbMotionLocks)
+	bool lockLinearY;
 	bool isBullet;
 	bool isFast; ///< moved far this step: swept by continuous collision
 	bool isMarked;
@@ -86,9 +88,7 @@ typedef struct tbShape
 	tbAABB fatAABB; ///< the broad-phase box (aabb enlarged by TB_AABB_MARGIN)
 	tbFilter filter;
 	float density;
-	float friction;
-	float restitution;
-	int userMaterialId;
+	tbSurfaceMaterial material;
 	int nextShapeId;
 	uint16_t generation;
 	bool inUse;
@@ -155,6 +155,8 @@ typedef struct tbContact
 	int shapeIdB;
 	float friction;
 	float restitution;
+	float rollingResistance; ///< N·m per N of normal force: max of the shapes' × the larger radius
+	float tangentSpeed;		 ///< m/s, the shapes' tangent speeds added
 	bool inUse;
 	tbSimplexCache cache; ///< GJK warm start for the GJK/EPA narrow phase
 	tbManifold manifold;
@@ -234,6 +236,7 @@ typedef struct tbWorld
 	int jointHighWater;
 	int* jointFree;
 	int jointFreeCount, jointFreeCapacity;
+	int linearLockCount; ///< bodies with a linear motion lock (the solver skips the locks when 0)
 	int* solverJoints;
 	int solverJointCount, solverJointCapacity;
 	tbJointEvent* jointEvents;
@@ -368,6 +371,13 @@ void tbMoveFlaggedProxies(tbWorld* world, const tbBody* body);
 
 // contact.c
 void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB);
+/// The contact's mixed friction, restitution, rolling resistance and tangent speed from its shapes.
+void tbMixContactMaterials(const tbWorld* world, tbContact* contact);
+/// shape.c: a surface material's values are usable (finite; friction, restitution, rolling
+/// resistance ≥ 0), or an error naming `name`'s field.
+bool tbCheckSurfaceMaterial(const char* function, const char* name, const tbSurfaceMaterial* material);
+/// shape.c: the shape's contacts remix their materials (after the shape's material changed).
+void tbRemixShapeContacts(tbWorld* world, const tbShape* shape);
 void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies);
 /// Narrow phase for one contact: recompute its manifold and its touching and reported flags.
 /// Returns the reported flag change (begin/end events): +1 began, −1 stopped, 0 no change; sets

@@ -134,14 +134,14 @@ Test(accessors, geometry_boxes_and_points)
 	cr_assert_float_eq(offset.centroid.x, 10.0f + 1.0f / 3.0f, 1e-5f);
 }
 
-static float MaxFriction(float frictionA, int materialA, float frictionB, int materialB)
+static float MaxFriction(float frictionA, uint64_t materialA, float frictionB, uint64_t materialB)
 {
 	(void)materialA;
 	(void)materialB;
 	return fmaxf(frictionA, frictionB);
 }
 
-static float NoBounce(float restitutionA, int materialA, float restitutionB, int materialB)
+static float NoBounce(float restitutionA, uint64_t materialA, float restitutionB, uint64_t materialB)
 {
 	(void)restitutionA;
 	(void)materialA;
@@ -165,8 +165,8 @@ Test(accessors, world_switches_and_callbacks)
 	tbBodyDef groundDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &groundDef);
 	tbShapeDef groundShape = tbDefaultShapeDef();
-	groundShape.friction = 0.0f;
-	groundShape.restitution = 1.0f;
+	groundShape.material.friction = 0.0f;
+	groundShape.material.restitution = 1.0f;
 	tbSegment floor = {{-50.0f, 0.0f}, {50.0f, 0.0f}};
 	tbCreateSegmentShape(ground, &groundShape, &floor);
 	tbShapeId shape;

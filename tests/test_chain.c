@@ -50,7 +50,7 @@ static tbBodyId CreateMover(tbWorldId world, Mover kind)
 	bodyDef.type = tb_dynamicBody;
 	bodyDef.fixedRotation = true; // a character's body: the test is about normals, not tipping
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.friction = 0.0f;
+	shapeDef.material.friction = 0.0f;
 	tbBodyId body;
 	if (kind == MoverBox)
 	{
@@ -184,7 +184,7 @@ Test(chain, loops_hold_inside_or_outside)
 	bodyDef.linearVelocity = tbMakeVec2(17.0f, 9.0f);
 	tbBodyId ball = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.restitution = 0.8f;
+	shapeDef.material.restitution = 0.8f;
 	tbCircle circle = {{0.0f, 0.0f}, 0.3f};
 	tbCreateCircleShape(ball, &shapeDef, &circle);
 	bodyDef.linearVelocity = tb_vec2_zero;
@@ -250,7 +250,7 @@ Test(chain, materials_per_segment)
 	bodyDef.linearVelocity = tbMakeVec2(3.0f, 0.0f);
 	tbBodyId box = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.friction = 1.0f; // friction mixes as sqrt(1 · μ_ground): 0 on the smooth half, 1 on the rough
+	shapeDef.material.friction = 1.0f; // friction mixes as sqrt(1 · μ_ground): 0 on the smooth half, 1 on the rough
 	tbPolygon boxShape = tbMakeBox(0.25f, 0.25f);
 	tbCreatePolygonShape(box, &shapeDef, &boxShape);
 	for (int step = 0; step < 180; ++step)
@@ -276,8 +276,10 @@ Test(chain, bad_input_is_refused, .init = SetupErrors, .fini = TeardownErrors)
 	tbVec2 good[5] = {{4, 0}, {3, 0}, {2, 0}, {1, 0}, {0, 0}};
 	tbVec2 nan[5] = {{4, 0}, {3, 0}, {NAN, 0}, {1, 0}, {0, 0}};
 	tbVec2 duplicate[5] = {{4, 0}, {3, 0}, {3, 0.001f}, {1, 0}, {0, 0}};
-	tbSurfaceMaterial negative = {-1.0f, 0.0f, 0};
-	tbSurfaceMaterial two[2] = {{0.5f, 0.0f, 0}, {0.5f, 0.0f, 0}};
+	tbSurfaceMaterial negative = tbDefaultSurfaceMaterial();
+	negative.friction = -1.0f;
+	tbSurfaceMaterial two[2] = {tbDefaultSurfaceMaterial(), tbDefaultSurfaceMaterial()};
+	two[0].friction = two[1].friction = 0.5f;
 	int shapesBefore = tbWorld_GetCounters(world).shapeCount;
 
 	tbChainDef def = tbDefaultChainDef();
@@ -463,7 +465,7 @@ static float HighestPoint(float speedFraction)
 	bodyDef.linearVelocity = tbMakeVec2(speedFraction * sqrtf(5.0f * g * (R - r)), 0.0f);
 	tbBodyId ball = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.friction = 0.0f;
+	shapeDef.material.friction = 0.0f;
 	tbCircle circle = {{0.0f, 0.0f}, r};
 	tbCreateCircleShape(ball, &shapeDef, &circle);
 	float highest = 0.0f;

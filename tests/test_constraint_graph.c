@@ -232,8 +232,8 @@ static tbBodyId AddBox(tbWorldId worldId, tbBodyType type, tbVec2 position, floa
 	bd.angularVelocity = angularVelocity;
 	tbBodyId id = tbCreateBody(worldId, &bd);
 	tbShapeDef sd = tbDefaultShapeDef();
-	sd.friction = s_friction;
-	sd.restitution = restitution;
+	sd.material.friction = s_friction;
+	sd.material.restitution = restitution;
 	tbPolygon box = tbMakeBox(halfWidth, 0.5f);
 	tbCreatePolygonShape(id, &sd, &box);
 	return id;

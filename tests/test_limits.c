@@ -801,7 +801,7 @@ Test(world_limits, restitution_rebounds_from_the_clamped_approach_speed_at_most_
 			ballDef.position = tbMakeVec2(0.0f, 0.5f);
 			ballDef.linearVelocity = tbMakeVec2(0.0f, speeds[k]);
 			tbBodyId ball = tbCreateBody(world, &ballDef);
-			shapeDef.restitution = restitutions[k];
+			shapeDef.material.restitution = restitutions[k];
 			tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 			cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(ball, &shapeDef, &circle)));
 			cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
@@ -930,7 +930,7 @@ Test(world_limits, ngs_restitution_sees_the_clamped_integrated_velocity, .init =
 	ballDef.type = tb_dynamicBody;
 	ballDef.position = tbMakeVec2(0.0f, 0.5f);
 	tbBodyId ball = tbCreateBody(world, &ballDef);
-	shapeDef.restitution = 0.5f;
+	shapeDef.material.restitution = 0.5f;
 	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 	cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(ball, &shapeDef, &circle)));
 	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 1));
@@ -966,7 +966,7 @@ Test(world_limits, impact_speed_estimate_bounded_by_the_speed_clamp, .init = Set
 		ballDef.linearVelocity = tbMakeVec2(0.0f, -1.0f);
 		ballDef.gravityScale = FLT_MAX;
 		tbBodyId ball = tbCreateBody(world, &ballDef);
-		shapeDef.restitution = 0.5f;
+		shapeDef.material.restitution = 0.5f;
 		tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 		cr_assert(TB_IS_NON_NULL(tbCreateCircleShape(ball, &shapeDef, &circle)));
 		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));

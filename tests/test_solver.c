@@ -47,8 +47,8 @@ static void AddGround(Scene* scene, float angle, float friction, float restituti
 	bd.rotation = tbMakeRot(angle);
 	scene->ground = tbCreateBody(scene->worldId, &bd);
 	tbShapeDef sd = tbDefaultShapeDef();
-	sd.friction = friction;
-	sd.restitution = restitution;
+	sd.material.friction = friction;
+	sd.material.restitution = restitution;
 	scene->groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
 	tbCreatePolygonShape(scene->ground, &sd, &scene->groundBox);
 }
@@ -62,7 +62,7 @@ static tbBodyId AddBox(Scene* scene, tbVec2 position, float angle, float halfWid
 	tbBodyId id = tbCreateBody(scene->worldId, &bd);
 	tbShapeDef sd = tbDefaultShapeDef();
 	sd.density = density;
-	sd.friction = friction;
+	sd.material.friction = friction;
 	tbPolygon box = tbMakeBox(halfWidth, halfWidth);
 	tbCreatePolygonShape(id, &sd, &box);
 	cr_assert(scene->bodyCount < MAX_BODIES);
@@ -155,7 +155,7 @@ static float BounceApex(tbSolverMethod method, float restitution, float* finalHe
 	bd.position = tbMakeVec2(0.0f, 5.5f);
 	tbBodyId ball = tbCreateBody(scene.worldId, &bd);
 	tbShapeDef sd = tbDefaultShapeDef();
-	sd.restitution = restitution; // mixed with the ground's 0 by max
+	sd.material.restitution = restitution; // mixed with the ground's 0 by max
 	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 	tbCreateCircleShape(ball, &sd, &circle);
 
@@ -437,7 +437,7 @@ static tbBodyId* AddPyramid(tbWorldId worldId, int base, float friction)
 	cr_assert(ids != NULL);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
 	tbShapeDef sd = tbDefaultShapeDef();
-	sd.friction = friction;
+	sd.material.friction = friction;
 	int n = 0;
 	for (int row = 0; row < base; ++row)
 	{
@@ -591,7 +591,7 @@ static float TouchingStack20(int subSteps, float* slide)
 	tbBodyDef gd = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(worldId, &gd);
 	tbShapeDef sd = tbDefaultShapeDef();
-	sd.friction = 0.6f;
+	sd.material.friction = 0.6f;
 	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
 	tbCreatePolygonShape(ground, &sd, &groundBox);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
@@ -668,8 +668,8 @@ static void RunCradle(bool propagate, float* last, float* others)
 	tbWorldId world = tbCreateWorld(&def);
 	tbBodyId balls[6];
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.friction = 0.0f;
-	shapeDef.restitution = 1.0f;
+	shapeDef.material.friction = 0.0f;
+	shapeDef.material.restitution = 1.0f;
 	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 	for (int i = 0; i < 6; ++i)
 	{

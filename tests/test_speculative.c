@@ -126,7 +126,7 @@ static float BounceRatio(tbSolverMethod solver, float phase)
 	bodyDef.position = (tbVec2){0.0f, radius + gap};
 	tbBodyId body = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.restitution = e;
+	shapeDef.material.restitution = e;
 	tbCircle circle = {{0.0f, 0.0f}, radius};
 	tbCreateCircleShape(body, &shapeDef, &circle);
 

@@ -271,7 +271,7 @@ Test(bad_input, shape_rejected, .init = SetupErrors, .fini = TeardownErrors)
 	cr_assert(TB_IS_NULL(tbCreateCircleShape(f.body, &sd, &circle)));
 	ExpectError(n + 3, "tbCreateCircleShape", "density");
 	sd = tbDefaultShapeDef();
-	sd.friction = NAN;
+	sd.material.friction = NAN;
 	cr_assert(TB_IS_NULL(tbCreateCircleShape(f.body, &sd, &circle)));
 	ExpectError(n + 4, "tbCreateCircleShape", "friction");
 	sd = tbDefaultShapeDef();
@@ -703,7 +703,7 @@ Test(memory, no_bytes_left_after_destroy)
 
 // --- material mixing ----------------------------------------------------------------------------
 
-static float MinFriction(float a, int ma, float b, int mb)
+static float MinFriction(float a, uint64_t ma, float b, uint64_t mb)
 {
 	(void)ma;
 	(void)mb;
@@ -718,14 +718,14 @@ static tbWorldId BoxOnGround(const tbWorldDef* def, tbVec2 position, tbVec2 velo
 	tbBodyDef bd = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &bd);
 	tbShapeDef sd = tbDefaultShapeDef();
-	sd.friction = groundFriction;
+	sd.material.friction = groundFriction;
 	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
 	tbCreatePolygonShape(ground, &sd, &groundBox);
 	bd.type = tb_dynamicBody;
 	bd.position = position;
 	bd.linearVelocity = velocity;
 	*box = tbCreateBody(world, &bd);
-	sd.friction = boxFriction;
+	sd.material.friction = boxFriction;
 	tbPolygon square = tbMakeSquare(0.5f);
 	tbCreatePolygonShape(*box, &sd, &square);
 	return world;
@@ -750,13 +750,13 @@ static float SlideDistance(tbFrictionCallback* callback)
 	return distance;
 }
 
-static float NaNFriction(float a, int ma, float b, int mb)
+static float NaNFriction(float a, uint64_t ma, float b, uint64_t mb)
 {
 	(void)a, (void)ma, (void)b, (void)mb;
 	return NAN;
 }
 
-static float InfiniteRestitution(float a, int ma, float b, int mb)
+static float InfiniteRestitution(float a, uint64_t ma, float b, uint64_t mb)
 {
 	(void)a, (void)ma, (void)b, (void)mb;
 	return INFINITY;

@@ -328,6 +328,7 @@ typedef struct tbManifoldPoint
 typedef struct tbManifold
 {
 	tbVec2 normal;
+	float rollingImpulse; ///< N·m·s, rolling resistance's angular impulse of the last sub-step (solver)
 	tbManifoldPoint points[2];
 	int pointCount;
 } tbManifold;

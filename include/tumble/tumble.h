@@ -214,6 +214,9 @@ TB_API tbVec2 tbBody_GetLocalPointVelocity(tbBodyId bodyId, tbVec2 localPoint);
 TB_API bool tbBody_IsBullet(tbBodyId bodyId);
 TB_API void tbBody_SetBullet(tbBodyId bodyId, bool flag);
 TB_API void tbBody_SetFixedRotation(tbBodyId bodyId, bool flag);
+/// Locks (tbMotionLocks); angularZ is fixedRotation. Wakes the body.
+TB_API void tbBody_SetMotionLocks(tbBodyId bodyId, tbMotionLocks locks);
+TB_API tbMotionLocks tbBody_GetMotionLocks(tbBodyId bodyId);
 TB_API void tbBody_SetUserData(tbBodyId bodyId, void* userData);
 TB_API void* tbBody_GetUserData(tbBodyId bodyId);
 TB_API const char* tbBody_GetName(tbBodyId bodyId);
@@ -273,6 +276,11 @@ TB_API bool tbShape_SetFriction(tbShapeId shapeId, float friction);
 TB_API float tbShape_GetFriction(tbShapeId shapeId);
 TB_API bool tbShape_SetRestitution(tbShapeId shapeId, float restitution);
 TB_API float tbShape_GetRestitution(tbShapeId shapeId);
+/// Replaces the whole material (checked as in tbShapeDef); contacts use it from the next step.
+TB_API bool tbShape_SetSurfaceMaterial(tbShapeId shapeId, const tbSurfaceMaterial* material);
+TB_API tbSurfaceMaterial tbShape_GetSurfaceMaterial(tbShapeId shapeId);
+TB_API void tbShape_SetUserMaterial(tbShapeId shapeId, uint64_t material);
+TB_API uint64_t tbShape_GetUserMaterial(tbShapeId shapeId);
 TB_API tbFilter tbShape_GetFilter(tbShapeId shapeId);
 TB_API bool tbShape_SetFilter(tbShapeId shapeId, tbFilter filter);
 TB_API void tbShape_SetUserData(tbShapeId shapeId, void* userData);

@@ -41,11 +41,12 @@ typedef enum tbSolverMethod
 
 /// Friction mixing: return the friction of a pair (≥ 0; infinity never slides). Default
 /// sqrt(frictionA · frictionB). A NaN or negative answer is reported and the default used.
-typedef float tbFrictionCallback(float frictionA, int userMaterialIdA, float frictionB, int userMaterialIdB);
+typedef float tbFrictionCallback(float frictionA, uint64_t userMaterialIdA, float frictionB, uint64_t userMaterialIdB);
 
 /// Restitution mixing: a finite number ≥ 0. Default max(restitutionA, restitutionB). Any other
 /// answer is reported and the default used.
-typedef float tbRestitutionCallback(float restitutionA, int userMaterialIdA, float restitutionB, int userMaterialIdB);
+typedef float tbRestitutionCallback(float restitutionA, uint64_t userMaterialIdA, float restitutionB,
+									uint64_t userMaterialIdB);
 
 /// Custom filter (tbWorld_SetCustomFilterCallback): asked whether two shapes that pass their
 /// filters may collide, when either shape enables custom filtering; false keeps them apart. Called
@@ -133,6 +134,16 @@ typedef enum tbBodyType
 	tb_bodyTypeCount
 } tbBodyType;
 
+/// Motion locks (Box2D v3.2's b2MotionLocks): a locked linear axis keeps the body's velocity along
+/// it at zero (applied after each sub-step's solve, a constraint that comes last: contacts along
+/// that axis feel the body as free and may be softer); a locked rotation is fixedRotation.
+typedef struct tbMotionLocks
+{
+	bool linearX;  ///< no translation along world x
+	bool linearY;  ///< no translation along world y
+	bool angularZ; ///< no rotation (the same as fixedRotation)
+} tbMotionLocks;
+
 /// Body definition: start from tbDefaultBodyDef().
 typedef struct tbBodyDef
 {
@@ -149,7 +160,8 @@ typedef struct tbBodyDef
 	const char* name;		///< optional, not copied
 	bool enableSleep;		///< default true
 	bool isAwake;			///< default true
-	bool fixedRotation;		///< default false
+	bool fixedRotation;		///< default false; the same as motionLocks.angularZ (either locks rotation)
+	tbMotionLocks motionLocks; ///< default none
 	bool isBullet;			///< swept against dynamic bodies too, default false
 	int internalValue;
 } tbBodyDef;
@@ -193,14 +205,29 @@ typedef struct tbExplosionDef
 /// maskBits all set, everything else zero.
 TB_API tbExplosionDef tbDefaultExplosionDef(void);
 
+/// Surface material of a shape or a chain segment (Box2D v3.2's b2SurfaceMaterial). Mixed per
+/// contact: friction and restitution by the world's callbacks (default sqrt(a·b) and max(a, b)),
+/// rolling resistance max(a, b) times the larger shape radius, tangent speeds added.
+typedef struct tbSurfaceMaterial
+{
+	float friction;			///< ≥ 0, default 0.6
+	float restitution;		///< ≥ 0, default 0
+	float rollingResistance; ///< ≥ 0, default 0: a rolling round shape of radius r on it feels a torque
+							 ///< up to rollingResistance·r·(normal force) against its rolling
+	float tangentSpeed;		///< m/s, default 0: the surface moves along itself (a conveyor belt);
+							 ///< friction drives what touches it towards this speed
+	uint64_t userMaterialId; ///< passed to the mixing callbacks
+	uint32_t customColor;	///< debug draw colour (0xRRGGBB), 0: the default colours
+} tbSurfaceMaterial;
+
+TB_API tbSurfaceMaterial tbDefaultSurfaceMaterial(void);
+
 /// Shape definition: start from tbDefaultShapeDef().
 typedef struct tbShapeDef
 {
 	void* userData;
-	float friction;		 ///< ≥ 0, default 0.6
-	float restitution;	 ///< ≥ 0, default 0
+	tbSurfaceMaterial material; ///< friction, restitution, rolling resistance, tangent speed, ...
 	float density;		 ///< kg/m², ≥ 0, default 1
-	int userMaterialId;	 ///< passed to the mixing callbacks
 	tbFilter filter;
 	bool isSensor;			   ///< reports overlaps, no response
 	bool enableSensorEvents;   ///< default true; a sensor reports a visitor only when both shapes enable it
@@ -214,15 +241,6 @@ typedef struct tbShapeDef
 
 TB_API tbShapeDef tbDefaultShapeDef(void);
 
-/// Surface of a chain segment (Box2D v3.2's b2SurfaceMaterial, the fields Tumble implements).
-typedef struct tbSurfaceMaterial
-{
-	float friction;		///< ≥ 0, default 0.6
-	float restitution;	///< ≥ 0, default 0
-	int userMaterialId; ///< passed to the mixing callbacks
-} tbSurfaceMaterial;
-
-TB_API tbSurfaceMaterial tbDefaultSurfaceMaterial(void);
 
 /// Chain definition: start from tbDefaultChainDef(). A chain is a run of one-sided segments, solid
 /// on the left of each segment's direction (so an outline given counter-clockwise with isLoop is

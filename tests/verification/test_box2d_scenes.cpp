@@ -102,8 +102,8 @@ struct Pair
 		tbBodyId id = tbCreateBody(world, &bodyDef);
 		tbShapeDef shapeDef = tbDefaultShapeDef();
 		shapeDef.density = spec.shape.density;
-		shapeDef.friction = spec.shape.friction;
-		shapeDef.restitution = spec.shape.restitution;
+		shapeDef.material.friction = spec.shape.friction;
+		shapeDef.material.restitution = spec.shape.restitution;
 		if (spec.shape.isCircle)
 		{
 			tbCircle c = {{0.0f, 0.0f}, spec.shape.radius};
