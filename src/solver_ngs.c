@@ -323,6 +323,19 @@ static void tbSolveVelocityConstraints(tbStepContext* context, const tbNGSConstr
 			}
 		}
 
+		if (c->rollingResistance > 0.0f)
+		{
+			// Rolling resistance as in the soft step's scalar solver (contact_solver.c).
+			float maxImpulse = c->rollingResistance * (c->points[0].normalImpulse +
+													   (c->pointCount > 1 ? c->points[1].normalImpulse : 0.0f));
+			float impulse = -c->rollingMass * (wB - wA);
+			float newImpulse = tbClampFloat(c->rollingImpulse + impulse, -maxImpulse, maxImpulse);
+			impulse = newImpulse - c->rollingImpulse;
+			c->rollingImpulse = newImpulse;
+			wA -= iA * impulse;
+			wB += iB * impulse;
+		}
+
 		sA->linearVelocity = vA;
 		sA->angularVelocity = wA;
 		sB->linearVelocity = vB;
