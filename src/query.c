@@ -324,3 +324,141 @@ bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform t
 	tbLeaveQuery(world);
 	return true;
 }
+
+// --- Character movers (mover.c has the planes and their solver) ------------------------------
+
+/// A mover's capsule: finite, radius above twice the linear slop (the plane solver's tolerance).
+static bool tbCheckMover(const char* f, tbPos origin, const tbCapsule* mover)
+{
+	if (tbCheckPointer(f, "mover", mover) == false || tbCheckCoordinate(f, "origin", origin) == false ||
+		tbCheckVec2(f, "mover->center1", mover->center1) == false ||
+		tbCheckVec2(f, "mover->center2", mover->center2) == false)
+	{
+		return false;
+	}
+	if (tbIsValidFloat(mover->radius) == false || mover->radius <= 2.0f * TB_LINEAR_SLOP)
+	{
+		tbReportError(f, "mover->radius is %g; it must be finite and > %g m (twice the linear slop)",
+					  (double)mover->radius, (double)(2.0f * TB_LINEAR_SLOP));
+		return false;
+	}
+	return true;
+}
+
+/// The capsule's box, relative to the origin, placed in the world.
+static tbAABB tbMoverBox(tbPos origin, const tbCapsule* mover)
+{
+	tbVec2 r = {mover->radius, mover->radius};
+	tbAABB box = {tbSub(tbMin(mover->center1, mover->center2), r), tbAdd(tbMax(mover->center1, mover->center2), r)};
+	box.lowerBound = tbAdd(box.lowerBound, origin);
+	box.upperBound = tbAdd(box.upperBound, origin);
+	return box;
+}
+
+/// A shape's body transform relative to the query origin.
+static tbTransform tbRelativeTransform(const tbWorld* world, const tbShape* shape, tbPos origin)
+{
+	tbTransform transform = world->bodies[shape->bodyId].transform;
+	transform.p = tbSub(transform.p, origin);
+	return transform;
+}
+
+typedef struct tbMoverQuery
+{
+	tbQueryContext q;
+	tbPos origin;
+	const tbCapsule* mover;
+	tbPlaneResultFcn* planeFcn;
+	float fraction;
+} tbMoverQuery;
+
+static bool tbMoverPlaneCallback(int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	tbMoverQuery* m = context;
+	const tbShape* shape = m->q.world->shapes + shapeIndex;
+	if (tbQueryFilterAccepts(m->q.filter, shape) == false || shape->isSensor)
+	{
+		return true;
+	}
+	tbPlaneResult result = tbCollideMover(m->mover, &shape->geometry, tbRelativeTransform(m->q.world, shape, m->origin));
+	if (result.hit == false)
+	{
+		return true;
+	}
+	return m->planeFcn(tbMakeShapeId(m->q.world, shapeIndex), &result, m->q.userContext);
+}
+
+bool tbWorld_CollideMover(tbWorldId worldId, tbPos origin, const tbCapsule* mover, tbQueryFilter filter,
+						  tbPlaneResultFcn* fcn, void* context)
+{
+	const char* f = "tbWorld_CollideMover";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckMover(f, origin, mover) == false)
+	{
+		return false;
+	}
+	tbMoverQuery m;
+	memset(&m, 0, sizeof(m));
+	m.q = tbMakeQueryContext(world, filter, context);
+	m.origin = origin;
+	m.mover = mover;
+	m.planeFcn = fcn;
+	tbEnterQuery(world);
+	tbBroadPhase_Query(&world->broadPhase, tbMoverBox(origin, mover), filter.maskBits, tbMoverPlaneCallback, &m);
+	tbLeaveQuery(world);
+	return true;
+}
+
+static bool tbMoverCastCallback(int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	tbMoverQuery* m = context;
+	const tbShape* shape = m->q.world->shapes + shapeIndex;
+	if (tbQueryFilterAccepts(m->q.filter, shape) == false || shape->isSensor)
+	{
+		return true;
+	}
+	tbShapeCastPairInput cast;
+	memset(&cast, 0, sizeof(cast));
+	cast.proxyA = tbMakeShapeProxy(&shape->geometry);
+	tbVec2 centers[2] = {m->mover->center1, m->mover->center2};
+	cast.proxyB = tbMakeProxy(centers, 2, m->mover->radius);
+	cast.transformA = tbRelativeTransform(m->q.world, shape, m->origin);
+	cast.transformB = tb_transform_identity;
+	cast.translationB = m->q.translation;
+	cast.maxFraction = m->fraction;
+	cast.canEncroach = true; // the plane solver keeps the slop; the sweep may use it
+	tbCastOutput output = tbShapeCast(&cast);
+	// Shapes the mover starts in (fraction 0) are left to the planes: ignoring them lets a mover
+	// pressed into a wall move away from it.
+	if (output.hit && output.fraction > 0.0f && output.fraction < m->fraction)
+	{
+		m->fraction = output.fraction;
+	}
+	return true;
+}
+
+float tbWorld_CastMover(tbWorldId worldId, tbPos origin, const tbCapsule* mover, tbVec2 translation,
+						tbQueryFilter filter)
+{
+	const char* f = "tbWorld_CastMover";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (world == NULL || tbCheckMover(f, origin, mover) == false || tbCheckVec2(f, "translation", translation) == false)
+	{
+		return 0.0f;
+	}
+	tbMoverQuery m;
+	memset(&m, 0, sizeof(m));
+	m.q = tbMakeQueryContext(world, filter, NULL);
+	m.q.translation = translation;
+	m.origin = origin;
+	m.mover = mover;
+	m.fraction = 1.0f;
+	tbAABB box = tbMoverBox(origin, mover);
+	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
+	tbEnterQuery(world);
+	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbMoverCastCallback, &m);
+	tbLeaveQuery(world);
+	return m.fraction;
+}

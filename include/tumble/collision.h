@@ -304,6 +304,48 @@ typedef struct tbShapeCastPairInput
 TB_API tbCastOutput tbShapeCast(const tbShapeCastPairInput* input);
 
 // ---------------------------------------------------------------------------------------------
+// Character movers (mover.c), Box2D v3.2's kit for characters moved by the game, not by forces:
+// collect the planes the mover's capsule touches (tbCollideMover, tbWorld_CollideMover), find the
+// largest motion toward the target those planes allow (tbSolvePlanes), sweep it (tbWorld_CastMover)
+// and keep the velocity out of the planes (tbClipVector).
+
+/// A plane the mover touches: its outward normal (from the shape to the mover) and offset, so that
+/// moving the mover by δ leaves dot(normal, δ) − offset of separation (negative: still overlapping).
+typedef struct tbPlaneResult
+{
+	tbPlane plane;
+	tbVec2 point; ///< closest point on the shape
+	bool hit;	  ///< false: the shape is beyond the mover's reach; ignore the plane
+} tbPlaneResult;
+
+/// A plane for tbSolvePlanes, usually from a tbPlaneResult.
+typedef struct tbCollisionPlane
+{
+	tbPlane plane;
+	float pushLimit;   ///< m, largest push this plane may give (FLT_MAX: rigid; less: a soft plane)
+	float push;		   ///< m, the push tbSolvePlanes found (output)
+	bool clipVelocity; ///< whether tbClipVector removes velocity into this plane (false for soft planes)
+} tbCollisionPlane;
+
+typedef struct tbPlaneSolverResult
+{
+	tbVec2 delta;		///< the motion the planes allow
+	int iterationCount; ///< diagnostics
+} tbPlaneSolverResult;
+
+/// The planes a capsule mover touches against one shape (shape placed by transform; the mover in
+/// the same frame). Every kind of shape; a chain segment acts as a two-sided segment.
+TB_API tbPlaneResult tbCollideMover(const tbCapsule* mover, const tbGeometry* shape, tbTransform transform);
+
+/// The motion closest to targetDelta that leaves the mover outside every plane (within the linear
+/// slop), each plane pushing at most its pushLimit: projected Gauss–Seidel on the pushes, at most
+/// 20 sweeps. Writes each plane's push.
+TB_API tbPlaneSolverResult tbSolvePlanes(tbVec2 targetDelta, tbCollisionPlane* planes, int count);
+
+/// The vector without its components into the planes that pushed (push > 0) and clip velocity.
+TB_API tbVec2 tbClipVector(tbVec2 vector, const tbCollisionPlane* planes, int count);
+
+// ---------------------------------------------------------------------------------------------
 // Contact manifolds (manifold.c: closed forms and SAT; manifold_gjk.c: GJK/EPA path)
 
 /// Feature id of a manifold point: stays the same while the same features touch (warm starting).

@@ -33,6 +33,20 @@ typedef struct tbTransform
 	tbRot q;
 } tbTransform;
 
+/// A world position (Box2D v3.2's b2Pos): a plain vector, as v3.2 outside its large-world build.
+/// Functions that take an origin (tbWorld_CastMover, tbWorld_CollideMover) measure their shapes
+/// from it.
+typedef tbVec2 tbPos;
+/// A world transform (Box2D v3.2's b2WorldTransform): a plain transform.
+typedef tbTransform tbWorldTransform;
+
+/// A line: the points x with dot(normal, x) = offset (normal of unit length).
+typedef struct tbPlane
+{
+	tbVec2 normal;
+	float offset;
+} tbPlane;
+
 /// 2×2 matrix stored by columns.
 typedef struct tbMat22
 {
@@ -47,6 +61,7 @@ typedef struct tbAABB
 } tbAABB;
 
 static const tbVec2 tb_vec2_zero = {0.0f, 0.0f};
+static const tbPos tbPos_zero = {0.0f, 0.0f};
 static const tbRot tb_rot_identity = {1.0f, 0.0f};
 static const tbTransform tb_transform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
 static const tbMat22 tb_mat22_zero = {{0.0f, 0.0f}, {0.0f, 0.0f}};

@@ -89,6 +89,9 @@ typedef bool tbOverlapResultFcn(tbShapeId shapeId, void* context);
 /// Ray callback: return −1 to ignore this shape, 0 to stop, `fraction` to clip to this hit,
 /// 1 to continue without clipping.
 typedef float tbCastResultFcn(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context);
+/// tbWorld_CollideMover's callback: one plane the mover touches (relative to the origin); return
+/// false to stop.
+typedef bool tbPlaneResultFcn(tbShapeId shapeId, const tbPlaneResult* plane, void* context);
 
 typedef struct tbRayResult
 {
@@ -135,6 +138,16 @@ TB_API tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbVec2 origin, tbVe
 /// Every shape hit by a shape moving by translation (GJK shape cast).
 TB_API bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform, tbVec2 translation,
 							  tbQueryFilter filter, tbCastResultFcn* fcn, void* context);
+/// Sweep a capsule mover (relative to origin) along translation; returns the fraction it can go
+/// (1: all the way). Shapes it already overlaps at the start are ignored, so a mover pressed into
+/// a wall can still leave it; it may end closer than the linear slop (use tbWorld_CollideMover and
+/// tbSolvePlanes to keep it out). Refused (returns 0, with a message) for bad input.
+TB_API float tbWorld_CastMover(tbWorldId worldId, tbPos origin, const tbCapsule* mover, tbVec2 translation,
+							   tbQueryFilter filter);
+/// The planes a capsule mover (relative to origin) touches, one call per shape within its reach,
+/// planes relative to origin. Returns false (with a message) for bad input.
+TB_API bool tbWorld_CollideMover(tbWorldId worldId, tbPos origin, const tbCapsule* mover, tbQueryFilter filter,
+								 tbPlaneResultFcn* fcn, void* context);
 
 // ---------------------------------------------------------------------------------------------
 // Bodies
