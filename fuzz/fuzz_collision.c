@@ -212,8 +212,8 @@ static void DistanceEverything(const FuzzShape* a, tbTransform xfA, const FuzzSh
 static void RayCastEverything(const FuzzShape* shape, tbVec2 origin, tbVec2 translation, bool check)
 {
 	tbRayCastInput ray = {origin, translation, 1.0f};
-	tbCastOutput out = tbRayCastShape(&ray, &shape->geometry);
-	(void)tbPointInShape(origin, &shape->geometry);
+	tbCastOutput out = tbRayCastShape(&shape->geometry, &ray);
+	(void)tbPointInShape(&shape->geometry, origin);
 	tbAABB box = tbComputeShapeAABB(&shape->geometry, tb_transform_identity);
 	tbMassData mass = tbComputeShapeMass(&shape->geometry, 1.0f);
 	// any input: a hit has finite numbers and a fraction in [0, 1] (a translation of any length)

@@ -401,7 +401,7 @@ tbMassData tbComputeShapeMass(const tbGeometry* shape, float density)
 // ---------------------------------------------------------------------------------------------
 // Bounding boxes
 
-static tbAABB tbMakeAABB(tbVec2 lower, tbVec2 upper, float radius)
+static tbAABB tbMakeInflatedAABB(tbVec2 lower, tbVec2 upper, float radius)
 {
 	tbAABB box = {{lower.x - radius, lower.y - radius}, {upper.x + radius, upper.y + radius}};
 	return box;
@@ -410,21 +410,21 @@ static tbAABB tbMakeAABB(tbVec2 lower, tbVec2 upper, float radius)
 tbAABB tbComputeCircleAABB(const tbCircle* shape, tbTransform transform)
 {
 	tbVec2 p = tbTransformPoint(transform, shape->center);
-	return tbMakeAABB(p, p, shape->radius);
+	return tbMakeInflatedAABB(p, p, shape->radius);
 }
 
 tbAABB tbComputeCapsuleAABB(const tbCapsule* shape, tbTransform transform)
 {
 	tbVec2 p1 = tbTransformPoint(transform, shape->center1);
 	tbVec2 p2 = tbTransformPoint(transform, shape->center2);
-	return tbMakeAABB(tbMin(p1, p2), tbMax(p1, p2), shape->radius);
+	return tbMakeInflatedAABB(tbMin(p1, p2), tbMax(p1, p2), shape->radius);
 }
 
 tbAABB tbComputePolygonAABB(const tbPolygon* shape, tbTransform transform)
 {
 	if (shape->count < 1)
 	{
-		return tbMakeAABB(transform.p, transform.p, 0.0f);
+		return tbMakeInflatedAABB(transform.p, transform.p, 0.0f);
 	}
 	tbVec2 lower = tbTransformPoint(transform, shape->vertices[0]);
 	tbVec2 upper = lower;
@@ -434,14 +434,14 @@ tbAABB tbComputePolygonAABB(const tbPolygon* shape, tbTransform transform)
 		lower = tbMin(lower, v);
 		upper = tbMax(upper, v);
 	}
-	return tbMakeAABB(lower, upper, shape->radius);
+	return tbMakeInflatedAABB(lower, upper, shape->radius);
 }
 
 tbAABB tbComputeSegmentAABB(const tbSegment* shape, tbTransform transform)
 {
 	tbVec2 p1 = tbTransformPoint(transform, shape->point1);
 	tbVec2 p2 = tbTransformPoint(transform, shape->point2);
-	return tbMakeAABB(tbMin(p1, p2), tbMax(p1, p2), 0.0f);
+	return tbMakeInflatedAABB(tbMin(p1, p2), tbMax(p1, p2), 0.0f);
 }
 
 tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbTransform transform)
@@ -460,7 +460,7 @@ tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbTransform transform)
 			return tbComputePolygonAABB(&shape->polygon, transform);
 		default:
 			TB_ASSERT(false);
-			return tbMakeAABB(transform.p, transform.p, 0.0f);
+			return tbMakeInflatedAABB(transform.p, transform.p, 0.0f);
 	}
 }
 
@@ -480,12 +480,12 @@ static tbVec2 tbClosestPointOnSegment(tbVec2 p, tbVec2 a, tbVec2 b)
 	return tbMulAdd(a, t, ab);
 }
 
-bool tbPointInCircle(tbVec2 point, const tbCircle* shape)
+bool tbPointInCircle(const tbCircle* shape, tbVec2 point)
 {
 	return tbDistanceSquared(point, shape->center) <= shape->radius * shape->radius;
 }
 
-bool tbPointInCapsule(tbVec2 point, const tbCapsule* shape)
+bool tbPointInCapsule(const tbCapsule* shape, tbVec2 point)
 {
 	tbVec2 closest = tbClosestPointOnSegment(point, shape->center1, shape->center2);
 	return tbDistanceSquared(point, closest) <= shape->radius * shape->radius;
@@ -504,7 +504,7 @@ static bool tbPointInCore(tbVec2 point, const tbPolygon* shape)
 	return true;
 }
 
-bool tbPointInPolygon(tbVec2 point, const tbPolygon* shape)
+bool tbPointInPolygon(const tbPolygon* shape, tbVec2 point)
 {
 	if (shape->count < 3)
 	{
@@ -528,16 +528,16 @@ bool tbPointInPolygon(tbVec2 point, const tbPolygon* shape)
 	return false;
 }
 
-bool tbPointInShape(tbVec2 point, const tbGeometry* shape)
+bool tbPointInShape(const tbGeometry* shape, tbVec2 point)
 {
 	switch (shape->type)
 	{
 		case tb_circleShape:
-			return tbPointInCircle(point, &shape->circle);
+			return tbPointInCircle(&shape->circle, point);
 		case tb_capsuleShape:
-			return tbPointInCapsule(point, &shape->capsule);
+			return tbPointInCapsule(&shape->capsule, point);
 		case tb_polygonShape:
-			return tbPointInPolygon(point, &shape->polygon);
+			return tbPointInPolygon(&shape->polygon, point);
 		case tb_segmentShape:
 		case tb_chainSegmentShape:
 		default:
@@ -631,7 +631,7 @@ static tbCastOutput tbRayCastCircleUnchecked(const tbRayCastInput* input, tbVec2
 	return tbMakeHit(point, tbNormalize(tbSub(point, center)), t / length);
 }
 
-tbCastOutput tbRayCastCircle(const tbRayCastInput* input, const tbCircle* shape)
+tbCastOutput tbRayCastCircle(const tbCircle* shape, const tbRayCastInput* input)
 {
 	if (tbCheckRay("tbRayCastCircle", input) == false)
 	{
@@ -640,7 +640,7 @@ tbCastOutput tbRayCastCircle(const tbRayCastInput* input, const tbCircle* shape)
 	tbRayCastInput scaled;
 	if (tbScaleHugeRay(input, &scaled))
 	{
-		return tbUnscaleHit(tbRayCastCircle(&scaled, shape));
+		return tbUnscaleHit(tbRayCastCircle(shape, &scaled));
 	}
 	return tbRayCastCircleUnchecked(input, shape->center, shape->radius);
 }
@@ -675,7 +675,7 @@ static tbCastOutput tbRayCastSegmentUnchecked(const tbRayCastInput* input, tbVec
 
 /// One-sided segments are solid only from the right of point1 → point2 (the side of the
 /// normal rightPerp(point2 − point1)); a ray starting on the left passes through.
-tbCastOutput tbRayCastSegment(const tbRayCastInput* input, const tbSegment* shape, bool oneSided)
+tbCastOutput tbRayCastSegment(const tbSegment* shape, const tbRayCastInput* input, bool oneSided)
 {
 	if (tbCheckRay("tbRayCastSegment", input) == false)
 	{
@@ -684,7 +684,7 @@ tbCastOutput tbRayCastSegment(const tbRayCastInput* input, const tbSegment* shap
 	tbRayCastInput scaled;
 	if (tbScaleHugeRay(input, &scaled))
 	{
-		return tbUnscaleHit(tbRayCastSegment(&scaled, shape, oneSided));
+		return tbUnscaleHit(tbRayCastSegment(shape, &scaled, oneSided));
 	}
 	if (oneSided)
 	{
@@ -714,16 +714,16 @@ static tbCastOutput tbRayCastOffsetEdge(const tbRayCastInput* input, tbVec2 v1, 
 	return tbRayCastSegmentUnchecked(input, tbAdd(v1, offset), tbAdd(v2, offset));
 }
 
-tbCastOutput tbRayCastCapsule(const tbRayCastInput* input, const tbCapsule* shape)
+tbCastOutput tbRayCastCapsule(const tbCapsule* shape, const tbRayCastInput* input)
 {
-	if (tbCheckRay("tbRayCastCapsule", input) == false || tbPointInCapsule(input->origin, shape))
+	if (tbCheckRay("tbRayCastCapsule", input) == false || tbPointInCapsule(shape, input->origin))
 	{
 		return tbNoHit();
 	}
 	tbRayCastInput scaled;
 	if (tbScaleHugeRay(input, &scaled))
 	{
-		return tbUnscaleHit(tbRayCastCapsule(&scaled, shape));
+		return tbUnscaleHit(tbRayCastCapsule(shape, &scaled));
 	}
 	// Boundary: the two end circles and the two sides of the core segment offset by ±r.
 	tbVec2 c1 = shape->center1, c2 = shape->center2;
@@ -779,7 +779,7 @@ static tbCastOutput tbRayCastCorePolygon(const tbRayCastInput* input, const tbPo
 	return tbMakeHit(tbMulAdd(input->origin, lower, input->translation), shape->normals[index], lower);
 }
 
-tbCastOutput tbRayCastPolygon(const tbRayCastInput* input, const tbPolygon* shape)
+tbCastOutput tbRayCastPolygon(const tbPolygon* shape, const tbRayCastInput* input)
 {
 	if (tbCheckRay("tbRayCastPolygon", input) == false || shape->count < 3)
 	{
@@ -788,13 +788,13 @@ tbCastOutput tbRayCastPolygon(const tbRayCastInput* input, const tbPolygon* shap
 	tbRayCastInput scaled;
 	if (tbScaleHugeRay(input, &scaled))
 	{
-		return tbUnscaleHit(tbRayCastPolygon(&scaled, shape));
+		return tbUnscaleHit(tbRayCastPolygon(shape, &scaled));
 	}
 	if (shape->radius == 0.0f)
 	{
 		return tbRayCastCorePolygon(input, shape);
 	}
-	if (tbPointInPolygon(input->origin, shape))
+	if (tbPointInPolygon(shape, input->origin))
 	{
 		return tbNoHit();
 	}
@@ -811,20 +811,20 @@ tbCastOutput tbRayCastPolygon(const tbRayCastInput* input, const tbPolygon* shap
 	return best;
 }
 
-tbCastOutput tbRayCastShape(const tbRayCastInput* input, const tbGeometry* shape)
+tbCastOutput tbRayCastShape(const tbGeometry* shape, const tbRayCastInput* input)
 {
 	switch (shape->type)
 	{
 		case tb_circleShape:
-			return tbRayCastCircle(input, &shape->circle);
+			return tbRayCastCircle(&shape->circle, input);
 		case tb_capsuleShape:
-			return tbRayCastCapsule(input, &shape->capsule);
+			return tbRayCastCapsule(&shape->capsule, input);
 		case tb_segmentShape:
-			return tbRayCastSegment(input, &shape->segment, false);
+			return tbRayCastSegment(&shape->segment, input, false);
 		case tb_chainSegmentShape:
-			return tbRayCastSegment(input, &shape->chainSegment.segment, true); // one-sided, as it collides
+			return tbRayCastSegment(&shape->chainSegment.segment, input, true); // one-sided, as it collides
 		case tb_polygonShape:
-			return tbRayCastPolygon(input, &shape->polygon);
+			return tbRayCastPolygon(&shape->polygon, input);
 		default:
 			TB_ASSERT(false);
 			return tbNoHit();

@@ -39,3 +39,29 @@ tbCosSin tbComputeCosSin(float radians)
 	tbCosSin cs = {c / length, s / length};
 	return cs;
 }
+
+tbRot tbComputeRotationBetweenUnitVectors(tbVec2 v1, tbVec2 v2)
+{
+	tbRot q = {tbDot(v1, v2), tbCross(v1, v2)};
+	return tbNormalizeRot(q);
+}
+
+bool tbIsValidRotation(tbRot q)
+{
+	return tbIsValidRot(q);
+}
+
+bool tbIsValidPlane(tbPlane plane)
+{
+	return tbIsValidVec2(plane.normal) && tbIsNormalized(plane.normal) && tbIsValidFloat(plane.offset);
+}
+
+bool tbIsValidPosition(tbPos p)
+{
+	return tbIsValidVec2(p);
+}
+
+bool tbIsValidWorldTransform(tbWorldTransform t)
+{
+	return tbIsValidPosition(t.p) && tbIsValidRotation(t.q);
+}

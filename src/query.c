@@ -117,7 +117,7 @@ static bool tbPointQueryCallback(int proxyKey, int shapeIndex, void* context)
 		return true;
 	}
 	tbVec2 local = tbInvTransformPoint(q->world->bodies[shape->bodyId].transform, q->point);
-	if (tbPointInShape(local, &shape->geometry) == false)
+	if (tbPointInShape(&shape->geometry, local) == false)
 	{
 		return true;
 	}
@@ -204,7 +204,7 @@ static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int sh
 	tbRayCastInput local = *input;
 	local.origin = tbInvTransformPoint(xf, input->origin);
 	local.translation = tbInvRotateVector(xf.q, input->translation);
-	tbCastOutput output = tbRayCastShape(&local, &shape->geometry);
+	tbCastOutput output = tbRayCastShape(&shape->geometry, &local);
 	if (output.hit == false)
 	{
 		return input->maxFraction;

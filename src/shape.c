@@ -952,7 +952,7 @@ bool tbShape_TestPoint(tbShapeId shapeId, tbVec2 point)
 		return false;
 	}
 	tbVec2 local = tbInvTransformPoint(world->bodies[shape->bodyId].transform, point);
-	return tbPointInShape(local, &shape->geometry);
+	return tbPointInShape(&shape->geometry, local);
 }
 
 tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input)
@@ -972,7 +972,7 @@ tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input)
 	tbRayCastInput local = *input;
 	local.origin = tbInvTransformPoint(xf, input->origin);
 	local.translation = tbInvRotateVector(xf.q, input->translation);
-	output = tbRayCastShape(&local, &shape->geometry);
+	output = tbRayCastShape(&shape->geometry, &local);
 	if (output.hit)
 	{
 		output.point = tbTransformPoint(xf, output.point);

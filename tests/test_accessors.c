@@ -122,12 +122,12 @@ Test(accessors, geometry_boxes_and_points)
 	tbTransform turned = {{0.0f, 0.0f}, tbMakeRot(0.25f * 3.14159265f)};
 	a = tbComputePolygonAABB(&box, turned);
 	cr_assert_float_eq(a.upperBound.x, 0.70710678f, 1e-5f);
-	cr_assert(tbPointInCircle(tbMakeVec2(1.5f, 0.5f), &circle));
-	cr_assert(tbPointInCircle(tbMakeVec2(2.5f, 0.0f), &circle) == false);
-	cr_assert(tbPointInCapsule(tbMakeVec2(1.0f, 0.4f), &capsule));
-	cr_assert(tbPointInCapsule(tbMakeVec2(1.0f, 0.6f), &capsule) == false);
-	cr_assert(tbPointInPolygon(tbMakeVec2(0.4f, -0.4f), &box));
-	cr_assert(tbPointInPolygon(tbMakeVec2(0.6f, 0.0f), &box) == false);
+	cr_assert(tbPointInCircle(&circle, tbMakeVec2(1.5f, 0.5f)));
+	cr_assert(tbPointInCircle(&circle, tbMakeVec2(2.5f, 0.0f)) == false);
+	cr_assert(tbPointInCapsule(&capsule, tbMakeVec2(1.0f, 0.4f)));
+	cr_assert(tbPointInCapsule(&capsule, tbMakeVec2(1.0f, 0.6f)) == false);
+	cr_assert(tbPointInPolygon(&box, tbMakeVec2(0.4f, -0.4f)));
+	cr_assert(tbPointInPolygon(&box, tbMakeVec2(0.6f, 0.0f)) == false);
 	tbVec2 points[3] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}};
 	tbHull hull = tbComputeHull(points, 3);
 	tbPolygon offset = tbMakeOffsetPolygon(&hull, tbMakeVec2(10.0f, 0.0f), tbMakeRot(0.0f));

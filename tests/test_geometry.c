@@ -253,26 +253,26 @@ Test(geometry, shape_aabbs)
 Test(geometry, point_in_shape)
 {
 	tbGeometry circle = {.type = tb_circleShape, .circle = {{1.0f, 0.0f}, 0.5f}};
-	cr_expect(tbPointInShape(tbMakeVec2(1.4f, 0.0f), &circle));
-	cr_expect(tbPointInShape(tbMakeVec2(1.4f, 0.4f), &circle) == false);
+	cr_expect(tbPointInShape(&circle, tbMakeVec2(1.4f, 0.0f)));
+	cr_expect(tbPointInShape(&circle, tbMakeVec2(1.4f, 0.4f)) == false);
 
 	tbGeometry capsule = {.type = tb_capsuleShape, .capsule = {{0.0f, 0.0f}, {2.0f, 0.0f}, 0.5f}};
-	cr_expect(tbPointInShape(tbMakeVec2(1.0f, 0.45f), &capsule));
-	cr_expect(tbPointInShape(tbMakeVec2(-0.45f, 0.0f), &capsule));
-	cr_expect(tbPointInShape(tbMakeVec2(-0.4f, 0.4f), &capsule) == false, "outside the end cap (0.566 > 0.5)");
+	cr_expect(tbPointInShape(&capsule, tbMakeVec2(1.0f, 0.45f)));
+	cr_expect(tbPointInShape(&capsule, tbMakeVec2(-0.45f, 0.0f)));
+	cr_expect(tbPointInShape(&capsule, tbMakeVec2(-0.4f, 0.4f)) == false, "outside the end cap (0.566 > 0.5)");
 
 	tbGeometry box = {.type = tb_polygonShape, .polygon = tbMakeBox(1.0f, 0.5f)};
-	cr_expect(tbPointInShape(tbMakeVec2(0.9f, -0.4f), &box));
-	cr_expect(tbPointInShape(tbMakeVec2(1.1f, 0.0f), &box) == false);
+	cr_expect(tbPointInShape(&box, tbMakeVec2(0.9f, -0.4f)));
+	cr_expect(tbPointInShape(&box, tbMakeVec2(1.1f, 0.0f)) == false);
 
 	// Rounded box, core 1 × 1 with r = 0.5: the corner is a quarter disc about (1, 1).
 	tbGeometry rounded = {.type = tb_polygonShape, .polygon = tbMakeRoundedBox(1.0f, 1.0f, 0.5f)};
-	cr_expect(tbPointInShape(tbMakeVec2(1.3f, 1.3f), &rounded), "0.42 from the corner");
-	cr_expect(tbPointInShape(tbMakeVec2(1.4f, 1.4f), &rounded) == false, "0.57 from the corner");
-	cr_expect(tbPointInShape(tbMakeVec2(0.0f, 1.45f), &rounded));
+	cr_expect(tbPointInShape(&rounded, tbMakeVec2(1.3f, 1.3f)), "0.42 from the corner");
+	cr_expect(tbPointInShape(&rounded, tbMakeVec2(1.4f, 1.4f)) == false, "0.57 from the corner");
+	cr_expect(tbPointInShape(&rounded, tbMakeVec2(0.0f, 1.45f)));
 
 	tbGeometry segment = {.type = tb_segmentShape, .segment = {{0.0f, 0.0f}, {1.0f, 0.0f}}};
-	cr_expect(tbPointInShape(tbMakeVec2(0.5f, 0.0f), &segment) == false, "segments are not solid");
+	cr_expect(tbPointInShape(&segment, tbMakeVec2(0.5f, 0.0f)) == false, "segments are not solid");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -283,23 +283,23 @@ Test(geometry, ray_cast_circle)
 	tbCircle circle = {{2.0f, 0.0f}, 1.0f};
 	// Head-on along x from (−1, 0), length 4: surface at x = 1, fraction (1 − (−1))/4 = 0.5.
 	tbRayCastInput input = makeRay(-1.0f, 0.0f, 4.0f, 0.0f);
-	expectHit(tbRayCastCircle(&input, &circle), tbMakeVec2(1.0f, 0.0f), tbMakeVec2(-1.0f, 0.0f), 0.5f);
+	expectHit(tbRayCastCircle(&circle, &input), tbMakeVec2(1.0f, 0.0f), tbMakeVec2(-1.0f, 0.0f), 0.5f);
 	// At height 0.6: x = 2 − √(1 − 0.36) = 1.2, fraction 2.2/4 = 0.55, normal (−0.8, 0.6).
 	input = makeRay(-1.0f, 0.6f, 4.0f, 0.0f);
-	expectHit(tbRayCastCircle(&input, &circle), tbMakeVec2(1.2f, 0.6f), tbMakeVec2(-0.8f, 0.6f), 0.55f);
+	expectHit(tbRayCastCircle(&circle, &input), tbMakeVec2(1.2f, 0.6f), tbMakeVec2(-0.8f, 0.6f), 0.55f);
 	// Misses: passes above; too short (maxFraction 0.4 < 0.5); pointing away; zero length.
 	input = makeRay(-1.0f, 1.5f, 4.0f, 0.0f);
-	cr_expect(tbRayCastCircle(&input, &circle).hit == false);
+	cr_expect(tbRayCastCircle(&circle, &input).hit == false);
 	input = makeRay(-1.0f, 0.0f, 4.0f, 0.0f);
 	input.maxFraction = 0.4f;
-	cr_expect(tbRayCastCircle(&input, &circle).hit == false);
+	cr_expect(tbRayCastCircle(&circle, &input).hit == false);
 	input = makeRay(-1.0f, 0.0f, -4.0f, 0.0f);
-	cr_expect(tbRayCastCircle(&input, &circle).hit == false);
+	cr_expect(tbRayCastCircle(&circle, &input).hit == false);
 	input = makeRay(-1.0f, 0.0f, 0.0f, 0.0f);
-	cr_expect(tbRayCastCircle(&input, &circle).hit == false);
+	cr_expect(tbRayCastCircle(&circle, &input).hit == false);
 	// Starting inside: no hit.
 	input = makeRay(2.0f, 0.5f, 4.0f, 0.0f);
-	cr_expect(tbRayCastCircle(&input, &circle).hit == false);
+	cr_expect(tbRayCastCircle(&circle, &input).hit == false);
 }
 
 Test(geometry, ray_cast_capsule)
@@ -307,21 +307,21 @@ Test(geometry, ray_cast_capsule)
 	tbCapsule capsule = {{0.0f, 0.0f}, {2.0f, 0.0f}, 0.5f};
 	// Down onto the flat side: y = 0.5 at fraction 2.5/4.
 	tbRayCastInput input = makeRay(1.0f, 3.0f, 0.0f, -4.0f);
-	expectHit(tbRayCastCapsule(&input, &capsule), tbMakeVec2(1.0f, 0.5f), tbMakeVec2(0.0f, 1.0f), 0.625f);
+	expectHit(tbRayCastCapsule(&capsule, &input), tbMakeVec2(1.0f, 0.5f), tbMakeVec2(0.0f, 1.0f), 0.625f);
 	// Along the axis into the end cap: x = −0.5 at fraction 1.5/4.
 	input = makeRay(-2.0f, 0.0f, 4.0f, 0.0f);
-	expectHit(tbRayCastCapsule(&input, &capsule), tbMakeVec2(-0.5f, 0.0f), tbMakeVec2(-1.0f, 0.0f), 0.375f);
+	expectHit(tbRayCastCapsule(&capsule, &input), tbMakeVec2(-0.5f, 0.0f), tbMakeVec2(-1.0f, 0.0f), 0.375f);
 	// Into the cap at height 0.3: x = −√(0.25 − 0.09) = −0.4, fraction 1.6/4, normal (−0.8, 0.6).
 	input = makeRay(-2.0f, 0.3f, 4.0f, 0.0f);
-	expectHit(tbRayCastCapsule(&input, &capsule), tbMakeVec2(-0.4f, 0.3f), tbMakeVec2(-0.8f, 0.6f), 0.4f);
+	expectHit(tbRayCastCapsule(&capsule, &input), tbMakeVec2(-0.4f, 0.3f), tbMakeVec2(-0.8f, 0.6f), 0.4f);
 	// From the far side (+x), into the other cap: x = 2.5, fraction 1.5/4.
 	input = makeRay(4.0f, 0.0f, -4.0f, 0.0f);
-	expectHit(tbRayCastCapsule(&input, &capsule), tbMakeVec2(2.5f, 0.0f), tbMakeVec2(1.0f, 0.0f), 0.375f);
+	expectHit(tbRayCastCapsule(&capsule, &input), tbMakeVec2(2.5f, 0.0f), tbMakeVec2(1.0f, 0.0f), 0.375f);
 	// Miss: parallel just above; inside: no hit.
 	input = makeRay(-2.0f, 0.6f, 6.0f, 0.0f);
-	cr_expect(tbRayCastCapsule(&input, &capsule).hit == false);
+	cr_expect(tbRayCastCapsule(&capsule, &input).hit == false);
 	input = makeRay(1.0f, 0.2f, 0.0f, 4.0f);
-	cr_expect(tbRayCastCapsule(&input, &capsule).hit == false);
+	cr_expect(tbRayCastCapsule(&capsule, &input).hit == false);
 }
 
 Test(geometry, ray_cast_polygon)
@@ -329,23 +329,23 @@ Test(geometry, ray_cast_polygon)
 	tbPolygon box = tbMakeBox(1.0f, 1.0f);
 	// Into the left face at (−1, 0.5), fraction 2/4.
 	tbRayCastInput input = makeRay(-3.0f, 0.5f, 4.0f, 0.0f);
-	expectHit(tbRayCastPolygon(&input, &box), tbMakeVec2(-1.0f, 0.5f), tbMakeVec2(-1.0f, 0.0f), 0.5f);
+	expectHit(tbRayCastPolygon(&box, &input), tbMakeVec2(-1.0f, 0.5f), tbMakeVec2(-1.0f, 0.0f), 0.5f);
 	// Slanted from (3, 1.5) by (−4, −2): reaches x = 1 at t = 0.5 (y = 0.5) before y = 1 matters.
 	input = makeRay(3.0f, 1.5f, -4.0f, -2.0f);
-	expectHit(tbRayCastPolygon(&input, &box), tbMakeVec2(1.0f, 0.5f), tbMakeVec2(1.0f, 0.0f), 0.5f);
+	expectHit(tbRayCastPolygon(&box, &input), tbMakeVec2(1.0f, 0.5f), tbMakeVec2(1.0f, 0.0f), 0.5f);
 	// Miss above; too short; starting inside.
 	input = makeRay(-3.0f, 2.0f, 4.0f, 0.0f);
-	cr_expect(tbRayCastPolygon(&input, &box).hit == false);
+	cr_expect(tbRayCastPolygon(&box, &input).hit == false);
 	input = makeRay(-3.0f, 0.5f, 4.0f, 0.0f);
 	input.maxFraction = 0.45f;
-	cr_expect(tbRayCastPolygon(&input, &box).hit == false);
+	cr_expect(tbRayCastPolygon(&box, &input).hit == false);
 	input = makeRay(0.0f, 0.0f, 4.0f, 0.0f);
-	cr_expect(tbRayCastPolygon(&input, &box).hit == false);
+	cr_expect(tbRayCastPolygon(&box, &input).hit == false);
 
 	// Offset, rotated box: 90° turns the 2 × 1 box upright at (5, 0); its left face is x = 4.5.
 	tbPolygon offset = tbMakeOffsetBox(1.0f, 0.5f, tbMakeVec2(5.0f, 0.0f), tbMakeRot(0.5f * TB_PI));
 	input = makeRay(0.0f, 0.25f, 9.0f, 0.0f);
-	expectHit(tbRayCastPolygon(&input, &offset), tbMakeVec2(4.5f, 0.25f), tbMakeVec2(-1.0f, 0.0f), 0.5f);
+	expectHit(tbRayCastPolygon(&offset, &input), tbMakeVec2(4.5f, 0.25f), tbMakeVec2(-1.0f, 0.0f), 0.5f);
 }
 
 Test(geometry, ray_cast_rounded_polygon)
@@ -354,20 +354,20 @@ Test(geometry, ray_cast_rounded_polygon)
 	tbPolygon rounded = tbMakeRoundedBox(1.0f, 1.0f, 0.5f);
 	// Flat face pushed out to x = −1.5: fraction 1.5/4.
 	tbRayCastInput input = makeRay(-3.0f, 0.0f, 4.0f, 0.0f);
-	expectHit(tbRayCastPolygon(&input, &rounded), tbMakeVec2(-1.5f, 0.0f), tbMakeVec2(-1.0f, 0.0f), 0.375f);
+	expectHit(tbRayCastPolygon(&rounded, &input), tbMakeVec2(-1.5f, 0.0f), tbMakeVec2(-1.0f, 0.0f), 0.375f);
 	// Down the diagonal onto the corner arc about (1, 1): hit at 1 + 0.5·√½ on both axes,
 	// fraction (3 − 1.3535534)/2, normal (√½, √½).
 	input = makeRay(3.0f, 3.0f, -2.0f, -2.0f);
 	float c = 1.0f + 0.5f * 0.70710678f;
-	expectHit(tbRayCastPolygon(&input, &rounded), tbMakeVec2(c, c), tbMakeVec2(0.70710678f, 0.70710678f),
+	expectHit(tbRayCastPolygon(&rounded, &input), tbMakeVec2(c, c), tbMakeVec2(0.70710678f, 0.70710678f),
 			  (3.0f - c) / 2.0f);
 	// Passing the corner where a sharp box would be hit: y = 1.45 at x = 1.45 is 0.636 from (1, 1).
 	input = makeRay(3.0f, 1.45f, 0.0f, 0.0f);
 	input.translation = tbMakeVec2(-1.55f, 0.0f);
-	cr_expect(tbRayCastPolygon(&input, &rounded).hit == false);
+	cr_expect(tbRayCastPolygon(&rounded, &input).hit == false);
 	// Inside the skin: no hit.
 	input = makeRay(1.2f, 0.0f, 4.0f, 0.0f);
-	cr_expect(tbRayCastPolygon(&input, &rounded).hit == false);
+	cr_expect(tbRayCastPolygon(&rounded, &input).hit == false);
 }
 
 Test(geometry, ray_cast_segment)
@@ -375,23 +375,23 @@ Test(geometry, ray_cast_segment)
 	tbSegment segment = {{0.0f, -1.0f}, {0.0f, 1.0f}};
 	// From the left, crossing at (0, 0.5), fraction 0.5; the normal faces the ray.
 	tbRayCastInput input = makeRay(-2.0f, 0.5f, 4.0f, 0.0f);
-	expectHit(tbRayCastSegment(&input, &segment, false), tbMakeVec2(0.0f, 0.5f), tbMakeVec2(-1.0f, 0.0f), 0.5f);
+	expectHit(tbRayCastSegment(&segment, &input, false), tbMakeVec2(0.0f, 0.5f), tbMakeVec2(-1.0f, 0.0f), 0.5f);
 	// One-sided: solid only on the right of point1 → point2, i.e. the +x side here.
-	cr_expect(tbRayCastSegment(&input, &segment, true).hit == false);
+	cr_expect(tbRayCastSegment(&segment, &input, true).hit == false);
 	input = makeRay(2.0f, 0.5f, -4.0f, 0.0f);
-	expectHit(tbRayCastSegment(&input, &segment, true), tbMakeVec2(0.0f, 0.5f), tbMakeVec2(1.0f, 0.0f), 0.5f);
+	expectHit(tbRayCastSegment(&segment, &input, true), tbMakeVec2(0.0f, 0.5f), tbMakeVec2(1.0f, 0.0f), 0.5f);
 	// Misses: past the end, parallel, too short.
 	input = makeRay(-2.0f, 1.5f, 4.0f, 0.0f);
-	cr_expect(tbRayCastSegment(&input, &segment, false).hit == false);
+	cr_expect(tbRayCastSegment(&segment, &input, false).hit == false);
 	input = makeRay(0.0f, -3.0f, 0.0f, 6.0f);
-	cr_expect(tbRayCastSegment(&input, &segment, false).hit == false);
+	cr_expect(tbRayCastSegment(&segment, &input, false).hit == false);
 	input = makeRay(-2.0f, 0.5f, 4.0f, 0.0f);
 	input.maxFraction = 0.4f;
-	cr_expect(tbRayCastSegment(&input, &segment, false).hit == false);
+	cr_expect(tbRayCastSegment(&segment, &input, false).hit == false);
 	// Through the tagged union (two-sided).
 	tbGeometry shape = {.type = tb_segmentShape, .segment = segment};
 	input = makeRay(2.0f, -0.5f, -4.0f, 0.0f);
-	expectHit(tbRayCastShape(&input, &shape), tbMakeVec2(0.0f, -0.5f), tbMakeVec2(1.0f, 0.0f), 0.5f);
+	expectHit(tbRayCastShape(&shape, &input), tbMakeVec2(0.0f, -0.5f), tbMakeVec2(1.0f, 0.0f), 0.5f);
 }
 
 static void ignoreError(const char* message, void* context)
@@ -409,7 +409,7 @@ Test(geometry, invalid_input_is_reported_not_nan)
 	cr_expect_eq(tbMakeBox(-1.0f, 1.0f).count, 0);
 	tbCircle circle = {{0.0f, 0.0f}, 1.0f};
 	tbRayCastInput input = makeRay(NAN, 0.0f, 1.0f, 0.0f);
-	tbCastOutput out = tbRayCastCircle(&input, &circle);
+	tbCastOutput out = tbRayCastCircle(&circle, &input);
 	cr_expect(out.hit == false && out.fraction == 0.0f);
 	cr_expect_eq(tbGetErrorCount() - before, 3, "each bad call is reported once");
 	tbSetErrorCallback(NULL, NULL);

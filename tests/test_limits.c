@@ -669,8 +669,8 @@ Test(collision_input, ray_longer_than_sqrt_flt_max_hits_what_it_passes, .init = 
 	for (int i = 0; i < 2; ++i)
 	{
 		tbRayCastInput ray = {{-10.0f, 0.1f}, {length[i], 0.0f}, 1.0f};
-		tbCastOutput hits[4] = {tbRayCastCircle(&ray, &circle), tbRayCastCapsule(&ray, &capsule),
-								tbRayCastSegment(&ray, &segment, false), tbRayCastPolygon(&ray, &box)};
+		tbCastOutput hits[4] = {tbRayCastCircle(&circle, &ray), tbRayCastCapsule(&capsule, &ray),
+								tbRayCastSegment(&segment, &ray, false), tbRayCastPolygon(&box, &ray)};
 		float entry[4] = {-sqrtf(0.99f), -0.5f, 0.275f, -1.0f};
 		for (int k = 0; k < 4; ++k)
 		{
@@ -694,11 +694,11 @@ Test(collision_input, ray_cast_that_overflows_reports_no_hit_not_nan, .init = Se
 	// whose numbers overflow (a ray from (3e38, 3e38), beyond TB_MAX_COORDINATE) is no hit either.
 	tbSegment segment = {{-8.4f, -8.4f}, {8.0f, 9.6f}};
 	tbRayCastInput ray = {{3e38f, 9.6f}, {-3e38f, -1.78e38f}, 1.0f};
-	tbCastOutput out = tbRayCastSegment(&ray, &segment, false);
+	tbCastOutput out = tbRayCastSegment(&segment, &ray, false);
 	cr_assert_not(out.hit, "hit at (%g, %g), fraction %g", (double)out.point.x, (double)out.point.y,
 				  (double)out.fraction);
 	tbRayCastInput diagonal = {{3e38f, 3e38f}, {-3e38f, -3e38f}, 1.0f};
-	out = tbRayCastSegment(&diagonal, &segment, false);
+	out = tbRayCastSegment(&segment, &diagonal, false);
 	cr_assert_not(out.hit, "hit at (%g, %g), fraction %g", (double)out.point.x, (double)out.point.y,
 				  (double)out.fraction);
 	cr_assert_eq(s_errors, 0);

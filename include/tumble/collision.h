@@ -156,10 +156,10 @@ TB_API tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbTransform transform)
 TB_API tbMassData tbComputeShapeMass(const tbGeometry* shape, float density);
 
 /// Point-in-shape tests, point in the shape's local frame.
-TB_API bool tbPointInCircle(tbVec2 point, const tbCircle* shape);
-TB_API bool tbPointInCapsule(tbVec2 point, const tbCapsule* shape);
-TB_API bool tbPointInPolygon(tbVec2 point, const tbPolygon* shape);
-TB_API bool tbPointInShape(tbVec2 point, const tbGeometry* shape);
+TB_API bool tbPointInCircle(const tbCircle* shape, tbVec2 point);
+TB_API bool tbPointInCapsule(const tbCapsule* shape, tbVec2 point);
+TB_API bool tbPointInPolygon(const tbPolygon* shape, tbVec2 point);
+TB_API bool tbPointInShape(const tbGeometry* shape, tbVec2 point);
 
 /// Ray cast input: the ray is origin + t·translation for t in [0, maxFraction].
 typedef struct tbRayCastInput
@@ -180,11 +180,11 @@ typedef struct tbCastOutput
 } tbCastOutput;
 
 /// Ray casts in the shape's local frame. A ray starting inside a solid shape does not hit it.
-TB_API tbCastOutput tbRayCastCircle(const tbRayCastInput* input, const tbCircle* shape);
-TB_API tbCastOutput tbRayCastCapsule(const tbRayCastInput* input, const tbCapsule* shape);
-TB_API tbCastOutput tbRayCastSegment(const tbRayCastInput* input, const tbSegment* shape, bool oneSided);
-TB_API tbCastOutput tbRayCastPolygon(const tbRayCastInput* input, const tbPolygon* shape);
-TB_API tbCastOutput tbRayCastShape(const tbRayCastInput* input, const tbGeometry* shape);
+TB_API tbCastOutput tbRayCastCircle(const tbCircle* shape, const tbRayCastInput* input);
+TB_API tbCastOutput tbRayCastCapsule(const tbCapsule* shape, const tbRayCastInput* input);
+TB_API tbCastOutput tbRayCastSegment(const tbSegment* shape, const tbRayCastInput* input, bool oneSided);
+TB_API tbCastOutput tbRayCastPolygon(const tbPolygon* shape, const tbRayCastInput* input);
+TB_API tbCastOutput tbRayCastShape(const tbGeometry* shape, const tbRayCastInput* input);
 
 // ---------------------------------------------------------------------------------------------
 // Distance (distance.c: GJK) and penetration (epa.c: EPA)

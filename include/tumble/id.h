@@ -74,6 +74,17 @@ typedef struct tbContactId
 #define TB_IS_NON_NULL(id) ((id).index1 != 0)
 
 /// Ids as integers, for saving (Box2D v3's store/load functions; TB_STORE_ID is the same packing).
+TB_INLINE uint32_t tbStoreWorldId(tbWorldId id)
+{
+	return ((uint32_t)id.index1 << 16) | (uint32_t)id.generation;
+}
+
+TB_INLINE tbWorldId tbLoadWorldId(uint32_t x)
+{
+	tbWorldId id = {(uint16_t)(x >> 16), (uint16_t)x};
+	return id;
+}
+
 TB_INLINE uint64_t tbStoreBodyId(tbBodyId id)
 {
 	return ((uint64_t)(uint32_t)id.index1 << 32) | ((uint64_t)id.world0 << 16) | (uint64_t)id.generation;

@@ -536,6 +536,168 @@ TB_INLINE bool tbIsValidAABB(tbAABB a)
 	return d.x >= 0.0f && d.y >= 0.0f && tbIsValidVec2(a.lowerBound) && tbIsValidVec2(a.upperBound);
 }
 
+// --- Box2D v3.2's names for the same things, and its smaller helpers ---------------------------
+
+static const tbVec2 tbVec2_zero = {0.0f, 0.0f};
+static const tbRot tbRot_identity = {1.0f, 0.0f};
+static const tbTransform tbTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
+static const tbWorldTransform tbWorldTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
+
+TB_INLINE int tbAbsInt(int a)
+{
+	return a < 0 ? -a : a;
+}
+
+TB_INLINE int tbClampInt(int a, int lower, int upper)
+{
+	return a < lower ? lower : (a > upper ? upper : a);
+}
+
+/// ⌈numerator / denominator⌉ for positive operands.
+TB_INLINE int tbCeilingInt(int numerator, int denominator)
+{
+	return (numerator + denominator - 1) / denominator;
+}
+
+/// The rotation whose (cos, sin) is the given unit vector.
+TB_INLINE tbRot tbMakeRotFromUnitVector(tbVec2 unitVector)
+{
+	tbRot q = {unitVector.x, unitVector.y};
+	return q;
+}
+
+/// cos² + sin² within 6e-4 of 1 (tbIsValidRot also asks for finite numbers).
+TB_INLINE bool tbIsNormalizedRot(tbRot q)
+{
+	float d = q.c * q.c + q.s * q.s - 1.0f;
+	return -6e-4f < d && d < 6e-4f;
+}
+
+/// The opposite rotation (its transpose).
+TB_INLINE tbRot tbInvertRot(tbRot q)
+{
+	tbRot r = {q.c, -q.s};
+	return r;
+}
+
+/// Angular velocity that turns q1 into q2 in time 1/inv_h, to first order: with q2 ≈ q1 + ω·h·q1⊥,
+/// ω·h = sin(θ2 − θ1) = q1.c·q2.s − q1.s·q2.c.
+TB_INLINE float tbComputeAngularVelocity(tbRot q1, tbRot q2, float inv_h)
+{
+	return inv_h * (q1.c * q2.s - q1.s * q2.c);
+}
+
+/// The rotation taking unit vector v1 to unit vector v2: cos = v1·v2, sin = v1 × v2.
+TB_API tbRot tbComputeRotationBetweenUnitVectors(tbVec2 v1, tbVec2 v2);
+TB_API bool tbIsValidRotation(tbRot q);
+TB_API bool tbIsValidPlane(tbPlane plane);
+TB_API bool tbIsValidPosition(tbPos p);
+TB_API bool tbIsValidWorldTransform(tbWorldTransform t);
+
+/// Signed distance of a point from a plane (positive on the normal's side).
+TB_INLINE float tbPlaneSeparation(tbPlane plane, tbVec2 point)
+{
+	return tbDot(plane.normal, point) - plane.offset;
+}
+
+/// Box of points inflated by radius.
+TB_INLINE tbAABB tbMakeAABB(const tbVec2* points, int count, float radius)
+{
+	tbAABB box = {points[0], points[0]};
+	for (int i = 1; i < count; ++i)
+	{
+		box.lowerBound = tbMin(box.lowerBound, points[i]);
+		box.upperBound = tbMax(box.upperBound, points[i]);
+	}
+	tbVec2 r = {radius, radius};
+	box.lowerBound = tbSub(box.lowerBound, r);
+	box.upperBound = tbAdd(box.upperBound, r);
+	return box;
+}
+
+/// The velocity, after one implicit step, of a unit mass on a spring of the given frequency and
+/// damping ratio pulled back to 0: v' = (v − ω²h·x)/(1 + 2ζωh + ω²h²). Position += h·v' after it.
+TB_INLINE float tbSpringDamper(float hertz, float dampingRatio, float position, float velocity, float timeStep)
+{
+	float omega = 2.0f * TB_PI * hertz;
+	float omegaH = omega * timeStep;
+	return (velocity - omega * omegaH * position) / (1.0f + 2.0f * dampingRatio * omegaH + omegaH * omegaH);
+}
+
+// World positions (tbPos) are plain vectors in Tumble (Box2D v3.2 outside its large-world build):
+// these conversions are exact and cost nothing; they let v3.2 code written for positions port.
+TB_INLINE tbPos tbToPos(tbVec2 v)
+{
+	return v;
+}
+
+TB_INLINE tbVec2 tbToVec2(tbPos p)
+{
+	return p;
+}
+
+TB_INLINE float tbRoundDownFloat(double x)
+{
+	return (float)x;
+}
+
+TB_INLINE float tbRoundUpFloat(double x)
+{
+	return (float)x;
+}
+
+/// a − b as a vector.
+TB_INLINE tbVec2 tbSubPos(tbPos a, tbPos b)
+{
+	return tbSub(a, b);
+}
+
+/// p + d.
+TB_INLINE tbPos tbOffsetPos(tbPos p, tbVec2 d)
+{
+	return tbAdd(p, d);
+}
+
+TB_INLINE tbPos tbLerpPosition(tbPos a, tbPos b, float t)
+{
+	tbPos p = {(1.0f - t) * a.x + t * b.x, (1.0f - t) * a.y + t * b.y};
+	return p;
+}
+
+TB_INLINE tbPos tbTransformWorldPoint(tbWorldTransform t, tbVec2 p)
+{
+	return tbTransformPoint(t, p);
+}
+
+TB_INLINE tbVec2 tbInvTransformWorldPoint(tbWorldTransform t, tbPos p)
+{
+	return tbInvTransformPoint(t, p);
+}
+
+/// Frame B seen from frame A.
+TB_INLINE tbTransform tbInvMulWorldTransforms(tbWorldTransform A, tbWorldTransform B)
+{
+	return tbInvMulTransforms(A, B);
+}
+
+/// A local transform B carried into the world by A.
+TB_INLINE tbWorldTransform tbMulWorldTransforms(tbWorldTransform A, tbTransform B)
+{
+	return tbMulTransforms(A, B);
+}
+
+/// The transform with its position measured from base.
+TB_INLINE tbTransform tbToRelativeTransform(tbWorldTransform t, tbPos base)
+{
+	tbTransform r = {tbSub(t.p, base), t.q};
+	return r;
+}
+
+TB_INLINE tbWorldTransform tbMakeWorldTransform(tbTransform t)
+{
+	return t;
+}
+
 #ifdef __cplusplus
 }
 #endif
