@@ -268,3 +268,42 @@ Test(math, unwind_nlerp_and_cos_sin)
 	cr_assert_float_eq(cs.sine, sinf(1.0f), 1e-6f);
 	cr_assert_float_eq(cs.cosine * cs.cosine + cs.sine * cs.sine, 1.0f, 1e-6f);
 }
+
+// Box2D v3.2's helpers under their v3.2 names: the rotation between unit vectors, validity tests,
+// the implicit spring-damper step, and the position helpers (plain vectors in Tumble).
+Test(math, v3_helpers_match_their_closed_forms)
+{
+	tbRot q = tbComputeRotationBetweenUnitVectors((tbVec2){1.0f, 0.0f}, (tbVec2){0.0f, 1.0f});
+	cr_expect_float_eq(q.c, 0.0f, 1e-7f);
+	cr_expect_float_eq(q.s, 1.0f, 1e-7f);
+	tbVec2 u = {cosf(0.3f), sinf(0.3f)}, v = {cosf(1.1f), sinf(1.1f)};
+	cr_expect_float_eq(tbRot_GetAngle(tbComputeRotationBetweenUnitVectors(u, v)), 0.8f, 1e-6f);
+
+	cr_expect(tbIsValidRotation(tbRot_identity));
+	cr_expect_not(tbIsValidRotation((tbRot){2.0f, 0.0f}));
+	cr_expect_not(tbIsValidRotation((tbRot){NAN, 0.0f}));
+	cr_expect(tbIsValidPlane((tbPlane){{0.0f, 1.0f}, -3.0f}));
+	cr_expect_not(tbIsValidPlane((tbPlane){{0.0f, 2.0f}, 0.0f}));
+	cr_expect_not(tbIsValidPlane((tbPlane){{0.0f, 1.0f}, INFINITY}));
+	cr_expect(tbIsValidPosition((tbPos){1e6f, -1e6f}));
+	cr_expect_not(tbIsValidPosition((tbPos){NAN, 0.0f}));
+	cr_expect(tbIsValidWorldTransform(tbWorldTransform_identity));
+	cr_expect_not(tbIsValidWorldTransform((tbWorldTransform){{0.0f, INFINITY}, {1.0f, 0.0f}}));
+
+	// Implicit step of x'' = −ω²x − 2ζωx': v' = (v − ω²h·x)/(1 + 2ζωh + ω²h²).
+	float omega = 2.0f * TB_PI * 2.0f, h = 0.01f;
+	float expected = (0.5f - omega * omega * h * 0.1f) / (1.0f + 2.0f * 0.7f * omega * h + omega * omega * h * h);
+	cr_expect_float_eq(tbSpringDamper(2.0f, 0.7f, 0.1f, 0.5f, h), expected, 1e-6f);
+	// ω·h = sin(Δθ) to first order.
+	cr_expect_float_eq(tbComputeAngularVelocity(tbMakeRot(0.2f), tbMakeRot(0.21f), 100.0f), 100.0f * sinf(0.01f), 1e-3f);
+	cr_expect_eq(tbPlaneSeparation((tbPlane){{0.0f, 1.0f}, 2.0f}, (tbVec2){5.0f, 3.5f}), 1.5f);
+	tbVec2 pts[2] = {{1.0f, 2.0f}, {-1.0f, 4.0f}};
+	tbAABB box = tbMakeAABB(pts, 2, 0.5f);
+	cr_expect(box.lowerBound.x == -1.5f && box.lowerBound.y == 1.5f && box.upperBound.x == 1.5f && box.upperBound.y == 4.5f);
+	tbPos p = tbOffsetPos(tbToPos((tbVec2){1.0f, 2.0f}), (tbVec2){0.5f, 0.5f});
+	cr_expect(tbSubPos(p, tbPos_zero).x == 1.5f && tbToVec2(p).y == 2.5f);
+	cr_expect_eq(tbAbsInt(-3), 3);
+	cr_expect_eq(tbClampInt(9, 0, 4), 4);
+	cr_expect_eq(tbCeilingInt(7, 2), 4);
+	cr_expect_eq(tbInvertRot(tbMakeRot(0.5f)).s, -tbMakeRot(0.5f).s);
+}
