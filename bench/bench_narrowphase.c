@@ -112,8 +112,7 @@ static void benchCirclePolygon(const CirclePolygonPair* pairs, bool useGJK)
 				tbDistanceInput input = {0};
 				input.proxyA = tbMakeProxy(p->polygon.vertices, p->polygon.count, p->polygon.radius);
 				input.proxyB = tbMakeProxy(&p->circle.center, 1, p->circle.radius);
-				input.transformA = p->xfA;
-				input.transformB = p->xfB;
+				input.transform = tbInvMulTransforms(p->xfA, p->xfB);
 				tbSeparationOutput s = tbShapeSeparation(&input, NULL);
 				touching += s.separation < TB_SPECULATIVE_DISTANCE;
 			}

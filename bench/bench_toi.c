@@ -60,7 +60,6 @@ static void makeCircleCases(void)
 		c->input.sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, 0.0f, 0.0f);
 		c->input.sweepB = makeSweep(startB, tbAdd(startB, moveB), 0.0f, 0.0f);
 		c->input.maxFraction = 1.0f;
-		c->input.targetSeparation = TB_TOI_TARGET_SEPARATION;
 	}
 }
 
@@ -110,7 +109,6 @@ static tbTOIInput spinningLaunch(uint32_t* seed, float omega)
 	input.proxyB = boxProxy(2.0f, 0.05f);
 	input.sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, 0.0f, 0.0f);
 	input.maxFraction = 1.0f;
-	input.targetSeparation = TB_TOI_TARGET_SEPARATION;
 	float heading = lcgRange(seed, -0.5236f, 0.5236f);
 	float spin = (lcgNext(seed) & 1u) ? omega : -omega;
 	float angle = lcgRange(seed, -3.1416f, 3.1416f);

@@ -1044,9 +1044,8 @@ static int TOIChart(FILE* out)
 				{
 					tbGeometry ga = {.type = tb_circleShape, .circle = circlesA[i]};
 					tbGeometry gb = {.type = tb_circleShape, .circle = circlesB[i]};
-					tbTOIInput input = {tbMakeShapeProxy(&ga), tbMakeShapeProxy(&gb), cases[i].sweepA, cases[i].sweepB, 1.0f,
-										target};
-					outputs[i] = tbTimeOfImpact(&input);
+					tbTOIInput input = {tbMakeShapeProxy(&ga), tbMakeShapeProxy(&gb), cases[i].sweepA, cases[i].sweepB, 1.0f};
+					outputs[i] = tbTimeOfImpactToTarget(&input, target);
 				}
 			}
 			best = fmin(best, (NowMs() - start) * 1e6 / TOI_QUERIES);
@@ -1063,8 +1062,8 @@ static int TOIChart(FILE* out)
 		double start = NowMs();
 		for (int i = 0; i < TOI_QUERIES; ++i)
 		{
-			tbTOIInput input = {proxy, proxy, cases[i].sweepA, cases[i].sweepB, 1.0f, target};
-			outputs[i] = tbTimeOfImpact(&input);
+			tbTOIInput input = {proxy, proxy, cases[i].sweepA, cases[i].sweepB, 1.0f};
+			outputs[i] = tbTimeOfImpactToTarget(&input, target);
 		}
 		best = fmin(best, (NowMs() - start) * 1e6 / TOI_QUERIES);
 	}

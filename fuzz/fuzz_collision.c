@@ -154,20 +154,18 @@ static void DistanceEverything(const FuzzShape* a, tbTransform xfA, const FuzzSh
 	memset(&input, 0, sizeof(input));
 	input.proxyA = tbMakeShapeProxy(&a->geometry);
 	input.proxyB = tbMakeShapeProxy(&b->geometry);
-	input.transformA = xfA;
-	input.transformB = xfB;
+	input.transform = tbInvMulTransforms(xfA, xfB);
 	input.useRadii = true;
 	tbSimplexCache cache = {0};
-	tbDistanceOutput distance = tbShapeDistance(&input, &cache, NULL);
+	tbDistanceOutput distance = tbShapeDistance(&input, &cache, NULL, 0);
 	tbSeparationOutput separation = tbShapeSeparation(&input, NULL);
 
 	tbShapeCastPairInput cast;
 	memset(&cast, 0, sizeof(cast));
 	cast.proxyA = input.proxyA;
 	cast.proxyB = input.proxyB;
-	cast.transformA = xfA;
-	cast.transformB = xfB;
-	cast.translationB = translation;
+	cast.transform = input.transform;
+	cast.translationB = tbInvRotateVector(xfA.q, translation);
 	cast.maxFraction = 1.0f;
 	tbCastOutput hit = tbShapeCast(&cast);
 
@@ -178,7 +176,6 @@ static void DistanceEverything(const FuzzShape* a, tbTransform xfA, const FuzzSh
 	toi.sweepA = (tbSweep){{0.0f, 0.0f}, xfA.p, xfA.p, xfA.q, xfA.q};
 	toi.sweepB = (tbSweep){{0.0f, 0.0f}, xfB.p, tbAdd(xfB.p, translation), xfB.q, tbMakeRot(0.3f)};
 	toi.maxFraction = 1.0f;
-	toi.targetSeparation = TB_TOI_TARGET_SEPARATION;
 	tbTOIOutput impact = tbTimeOfImpact(&toi);
 	if (a->geometry.type == tb_circleShape && b->geometry.type == tb_circleShape)
 	{

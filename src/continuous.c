@@ -102,8 +102,7 @@ static tbTOIOutput tbComputeTOI(tbContinuousContext* c, const tbShape* other, co
 	input.sweepA = *otherSweep;
 	input.sweepB = c->sweep;
 	input.maxFraction = c->fraction;
-	input.targetSeparation = TB_TOI_TARGET_SEPARATION;
-	tbTOIOutput output = tbTimeOfImpact(&input);
+	tbTOIOutput output = tbTimeOfImpact(&input); // to TB_TOI_TARGET_SEPARATION
 	c->counters->iterationsMax = tbMaxInt(c->counters->iterationsMax, output.iterations);
 	c->counters->failures += output.state == tb_toiStateFailed ? 1 : 0;
 	return output;
@@ -128,18 +127,16 @@ static tbTOIOutput tbComputeCoreTOI(tbContinuousContext* c, const tbShape* other
 	tbDistanceInput start;
 	start.proxyA = input.proxyA;
 	start.proxyB = input.proxyB;
-	start.transformA = tbGetSweepTransform(otherSweep, 0.0f);
-	start.transformB = tbGetSweepTransform(&c->sweep, 0.0f);
+	start.transform = tbInvMulTransforms(tbGetSweepTransform(otherSweep, 0.0f), tbGetSweepTransform(&c->sweep, 0.0f));
 	start.useRadii = true;
-	float gap = tbShapeDistance(&start, NULL, NULL).distance;
+	float gap = tbShapeDistance(&start, NULL, NULL, 0).distance;
 	tbTOIOutput output = {tb_toiStateOverlapped, 0.0f, 0, {0.0f, 0.0f}, {0.0f, 0.0f}};
 	if (gap < 1e-5f)
 	{
 		return output;
 	}
-	input.targetSeparation = tbMinFloat(TB_TOI_TARGET_SEPARATION, 0.5f * gap);
 	c->counters->calls += 1;
-	output = tbTimeOfImpact(&input);
+	output = tbTimeOfImpactToTarget(&input, tbMinFloat(TB_TOI_TARGET_SEPARATION, 0.5f * gap));
 	c->counters->iterationsMax = tbMaxInt(c->counters->iterationsMax, output.iterations);
 	c->counters->failures += output.state == tb_toiStateFailed ? 1 : 0;
 	return output;

@@ -672,8 +672,10 @@ static void tbSimplexToWorld(tbSimplex* simplex, tbTransform transformA)
 	}
 }
 
-tbDistanceOutput tbShapeDistance(const tbDistanceInput* input, tbSimplexCache* cache, tbSimplex* simplex)
+tbDistanceOutput tbShapeDistance(const tbDistanceInput* input, tbSimplexCache* cache, tbSimplex* simplexes,
+								 int simplexCapacity)
 {
+	tbSimplex* simplex = simplexes != NULL && simplexCapacity > 0 ? simplexes : NULL;
 	if (tbCheckProxyPair("tbShapeDistance", &input->proxyA, &input->proxyB) == false)
 	{
 		tbDistanceOutput refused = {0};
@@ -683,21 +685,26 @@ tbDistanceOutput tbShapeDistance(const tbDistanceInput* input, tbSimplexCache* c
 		}
 		return refused;
 	}
-	tbTransform relative = tbInvMulTransforms(input->transformA, input->transformB);
-	tbShapeProxy localB = tbMakeRelativeProxy(&input->proxyB, relative);
-
+	tbShapeProxy localB = tbMakeRelativeProxy(&input->proxyB, input->transform);
 	tbDistanceOutput output = tbLocalShapeDistance(&input->proxyA, &localB, cache, simplex);
 	if (input->useRadii)
 	{
 		tbApplyRadii(&output, input->proxyA.radius, input->proxyB.radius);
 	}
+	return output;
+}
 
-	output.pointA = tbTransformPoint(input->transformA, output.pointA);
-	output.pointB = tbTransformPoint(input->transformA, output.pointB);
-	output.normal = tbRotateVector(input->transformA.q, output.normal);
+tbDistanceOutput tbShapeDistanceBetween(const tbShapeProxy* proxyA, tbTransform transformA, const tbShapeProxy* proxyB,
+										tbTransform transformB, bool useRadii, tbSimplexCache* cache, tbSimplex* simplex)
+{
+	tbDistanceInput input = {*proxyA, *proxyB, tbInvMulTransforms(transformA, transformB), useRadii};
+	tbDistanceOutput output = tbShapeDistance(&input, cache, simplex, simplex != NULL ? 1 : 0);
+	output.pointA = tbTransformPoint(transformA, output.pointA);
+	output.pointB = tbTransformPoint(transformA, output.pointB);
+	output.normal = tbRotateVector(transformA.q, output.normal);
 	if (simplex != NULL)
 	{
-		tbSimplexToWorld(simplex, input->transformA);
+		tbSimplexToWorld(simplex, transformA);
 	}
 	return output;
 }
@@ -745,10 +752,9 @@ tbCastOutput tbShapeCast(const tbShapeCastPairInput* input)
 		return output;
 	}
 
-	// Work in A's frame: B's proxy at λ = 0 and the translation rotated into that frame.
-	tbTransform relative = tbInvMulTransforms(input->transformA, input->transformB);
-	tbShapeProxy proxyB = tbMakeRelativeProxy(&input->proxyB, relative);
-	tbVec2 translation = tbInvRotateVector(input->transformA.q, input->translationB);
+	// Everything in A's frame: B's proxy at λ = 0 and its translation.
+	tbShapeProxy proxyB = tbMakeRelativeProxy(&input->proxyB, input->transform);
+	tbVec2 translation = input->translationB;
 	const tbShapeProxy* proxyA = &input->proxyA;
 
 	// Target core distance: the radii (surfaces touching), less one linear slop when the caller
@@ -775,9 +781,9 @@ tbCastOutput tbShapeCast(const tbShapeCastPairInput* input)
 		{
 			if (iteration == 1)
 			{
-				return tbMakeInitialOverlap(&distance, input->transformA, proxyA->radius, proxyB.radius);
+				return tbMakeInitialOverlap(&distance, tb_transform_identity, proxyA->radius, proxyB.radius);
 			}
-			return tbMakeCastHit(&distance, input->transformA, proxyA->radius, fraction, iteration);
+			return tbMakeCastHit(&distance, tb_transform_identity, proxyA->radius, fraction, iteration);
 		}
 
 		// closing speed along the normal; convexity of d(λ) makes the tangent step conservative
@@ -799,5 +805,21 @@ tbCastOutput tbShapeCast(const tbShapeCastPairInput* input)
 
 	// Iteration cap: report no hit rather than a guess (only pathological inputs get here).
 	output.iterations = TB_TOI_MAX_ITERATIONS;
+	return output;
+}
+
+tbCastOutput tbShapeCastBetween(const tbShapeProxy* proxyA, tbTransform transformA, const tbShapeProxy* proxyB,
+								tbTransform transformB, tbVec2 translationB, float maxFraction, bool canEncroach)
+{
+	tbShapeCastPairInput input;
+	input.proxyA = *proxyA;
+	input.proxyB = *proxyB;
+	input.transform = tbInvMulTransforms(transformA, transformB);
+	input.translationB = tbInvRotateVector(transformA.q, translationB);
+	input.maxFraction = maxFraction;
+	input.canEncroach = canEncroach;
+	tbCastOutput output = tbShapeCast(&input);
+	output.point = tbTransformPoint(transformA, output.point);
+	output.normal = tbRotateVector(transformA.q, output.normal);
 	return output;
 }

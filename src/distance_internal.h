@@ -23,5 +23,15 @@ float tbProxyScale(const tbShapeProxy* proxyA, const tbShapeProxy* proxyB);
 tbDistanceOutput tbLocalShapeDistance(const tbShapeProxy* proxyA, const tbShapeProxy* proxyB, tbSimplexCache* cache,
 									  tbSimplex* simplex);
 
+/// tbShapeDistance for proxies placed in the world by their transforms, with the answer in the
+/// world (the engine's form: continuous collision, queries). simplex may be NULL.
+tbDistanceOutput tbShapeDistanceBetween(const tbShapeProxy* proxyA, tbTransform transformA, const tbShapeProxy* proxyB,
+										tbTransform transformB, bool useRadii, tbSimplexCache* cache, tbSimplex* simplex);
+
+/// tbShapeCast for proxies placed in the world, B moving by translationB (world); point and normal
+/// in the world.
+tbCastOutput tbShapeCastBetween(const tbShapeProxy* proxyA, tbTransform transformA, const tbShapeProxy* proxyB,
+								tbTransform transformB, tbVec2 translationB, float maxFraction, bool canEncroach);
+
 /// Vertex of the Minkowski difference B − A furthest along direction: s_B(d) − s_A(−d).
 tbSimplexVertex tbMakeSupportVertex(const tbShapeProxy* proxyA, const tbShapeProxy* proxyB, tbVec2 direction);

@@ -329,8 +329,7 @@ tbSeparationOutput tbShapeSeparation(const tbDistanceInput* input, tbSimplexCach
 		return refused;
 	}
 	const tbShapeProxy* proxyA = &input->proxyA;
-	tbTransform relative = tbInvMulTransforms(input->transformA, input->transformB);
-	tbShapeProxy proxyB = tbMakeRelativeProxy(&input->proxyB, relative);
+	tbShapeProxy proxyB = tbMakeRelativeProxy(&input->proxyB, input->transform);
 	float scale = tbProxyScale(proxyA, &proxyB);
 
 	tbSimplex simplex;
@@ -363,8 +362,8 @@ tbSeparationOutput tbShapeSeparation(const tbDistanceInput* input, tbSimplexCach
 	float radiusA = proxyA->radius;
 	float radiusB = proxyB.radius;
 	output.separation = coreSeparation - (radiusA + radiusB);
-	output.normal = tbRotateVector(input->transformA.q, normal);
-	output.pointA = tbTransformPoint(input->transformA, tbMulAdd(pointA, radiusA, normal));
-	output.pointB = tbTransformPoint(input->transformA, tbMulSub(pointB, radiusB, normal));
+	output.normal = normal;
+	output.pointA = tbMulAdd(pointA, radiusA, normal);
+	output.pointB = tbMulSub(pointB, radiusB, normal);
 	return output;
 }

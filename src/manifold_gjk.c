@@ -158,7 +158,7 @@ static tbManifold tbClipToReferenceFace(const tbPolygon* ref, int refEdge, const
 	return m;
 }
 
-// Corner facing corner across a gap: one point from the GJK witness points (world).
+// Corner facing corner across a gap: one point from the GJK witness points (A's frame).
 static tbManifold tbCornerManifold(const tbSeparationOutput* separation, const tbPolygon* polygonA,
 								   const tbPolygon* localB, tbVec2 localNormal)
 {
@@ -221,10 +221,9 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 	tbDistanceInput input = {0};
 	input.proxyA = tbMakeProxy(polygonA->vertices, polygonA->count, polygonA->radius);
 	input.proxyB = tbMakeProxy(polygonB->vertices, polygonB->count, polygonB->radius);
-	input.transformA = xfA;
-	input.transformB = xfB;
+	input.transform = tbInvMulTransforms(xfA, xfB);
 	input.useRadii = true;
-	tbSeparationOutput separation = tbShapeSeparation(&input, NULL);
+	tbSeparationOutput separation = tbShapeSeparation(&input, NULL); // in A's frame
 	if (separation.separation >= keep)
 	{
 		return empty;
@@ -232,7 +231,7 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 
 	// B and the normal in A's frame
 	tbPolygon localB = tbTransformPolygon(tbInvMulTransforms(xfA, xfB), polygonB);
-	tbVec2 n = tbInvRotateVector(xfA.q, separation.normal);
+	tbVec2 n = separation.normal;
 
 	int faceA = tbMostAlignedFace(polygonA, n);
 	int faceB = tbMostAlignedFace(&localB, tbNeg(n));
@@ -242,7 +241,7 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 	float coreSeparation = separation.separation + polygonA->radius + polygonB->radius;
 	if (coreSeparation > tbMaxFloat(separationA, separationB) + TB_GJK_CORNER_TOLERANCE)
 	{
-		return tbCornerManifold(&separation, polygonA, &localB, n);
+		return tbLocalManifoldToWorld(tbCornerManifold(&separation, polygonA, &localB, n), xfA);
 	}
 
 	tbManifold m;
@@ -259,7 +258,7 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 	{
 		// the incident edge is edge-on to the face or misses its slab (only within the
 		// tolerances above): the GJK/EPA witness pair is still a valid single contact
-		return tbCornerManifold(&separation, polygonA, &localB, n);
+		return tbLocalManifoldToWorld(tbCornerManifold(&separation, polygonA, &localB, n), xfA);
 	}
 	return tbLocalManifoldToWorld(m, xfA);
 }

@@ -8,6 +8,7 @@
 // and move by the fraction it allows; velocity = tbClipVector(velocity, planes). Sliding along
 // walls, standing on slopes and stopping at corners all come out of the planes.
 #include "core.h"
+#include "distance_internal.h"
 
 #include "tumble/collision.h"
 
@@ -31,15 +32,11 @@ tbPlaneResult tbCollideMover(const tbCapsule* mover, const tbGeometry* shape, tb
 	// Distance between the cores (the mover's segment, the shape without its rounding): the mover
 	// reaches the shape when it is within the two radii. The plane's normal points from the shape
 	// to the mover; its offset is how far the mover must go along it to just touch.
-	tbDistanceInput input;
-	float shapeRadius = tbCoreProxy(shape, &input.proxyA);
+	tbShapeProxy core;
+	float shapeRadius = tbCoreProxy(shape, &core);
 	tbVec2 centers[2] = {mover->center1, mover->center2};
-	input.proxyB = tbMakeProxy(centers, 2, 0.0f);
-	input.transformA = transform;
-	input.transformB = tb_transform_identity;
-	input.useRadii = false;
-	tbSimplexCache cache = {0};
-	tbDistanceOutput output = tbShapeDistance(&input, &cache, NULL);
+	tbShapeProxy segment = tbMakeProxy(centers, 2, 0.0f);
+	tbDistanceOutput output = tbShapeDistanceBetween(&core, transform, &segment, tb_transform_identity, false, NULL, NULL);
 	float reach = mover->radius + shapeRadius;
 	// Cores that overlap have no normal: the mover is too deep inside to be pushed out sensibly.
 	if (output.distance > reach || output.distance <= 0.0f)

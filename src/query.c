@@ -3,6 +3,8 @@
 // and the shape's category against the query's mask).
 #include "world.h"
 
+#include "distance_internal.h"
+
 #include <string.h>
 
 static bool tbQueryFilterAccepts(tbQueryFilter filter, const tbShape* shape)
@@ -154,10 +156,9 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = q->proxy;
-	input.transformA = q->world->bodies[shape->bodyId].transform;
-	input.transformB = q->transform;
+	input.transform = tbInvMulTransforms(q->world->bodies[shape->bodyId].transform, q->transform);
 	input.useRadii = true;
-	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL);
+	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL, 0);
 	if (output.distance > 0.0f)
 	{
 		return true;
@@ -270,15 +271,9 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 	{
 		return true;
 	}
-	tbShapeCastPairInput cast;
-	memset(&cast, 0, sizeof(cast));
-	cast.proxyA = tbMakeShapeProxy(&shape->geometry);
-	cast.proxyB = q->proxy;
-	cast.transformA = q->world->bodies[shape->bodyId].transform;
-	cast.transformB = q->transform;
-	cast.translationB = q->translation;
-	cast.maxFraction = q->maxFraction;
-	tbCastOutput output = tbShapeCast(&cast);
+	tbShapeProxy proxyA = tbMakeShapeProxy(&shape->geometry);
+	tbCastOutput output = tbShapeCastBetween(&proxyA, q->world->bodies[shape->bodyId].transform, &q->proxy,
+											 q->transform, q->translation, q->maxFraction, false);
 	if (output.hit == false)
 	{
 		return true;
@@ -419,17 +414,12 @@ static bool tbMoverCastCallback(int proxyKey, int shapeIndex, void* context)
 	{
 		return true;
 	}
-	tbShapeCastPairInput cast;
-	memset(&cast, 0, sizeof(cast));
-	cast.proxyA = tbMakeShapeProxy(&shape->geometry);
+	tbShapeProxy proxyA = tbMakeShapeProxy(&shape->geometry);
 	tbVec2 centers[2] = {m->mover->center1, m->mover->center2};
-	cast.proxyB = tbMakeProxy(centers, 2, m->mover->radius);
-	cast.transformA = tbRelativeTransform(m->q.world, shape, m->origin);
-	cast.transformB = tb_transform_identity;
-	cast.translationB = m->q.translation;
-	cast.maxFraction = m->fraction;
-	cast.canEncroach = true; // the plane solver keeps the slop; the sweep may use it
-	tbCastOutput output = tbShapeCast(&cast);
+	tbShapeProxy proxyB = tbMakeProxy(centers, 2, m->mover->radius);
+	// canEncroach: the plane solver keeps the slop; the sweep may use it
+	tbCastOutput output = tbShapeCastBetween(&proxyA, tbRelativeTransform(m->q.world, shape, m->origin), &proxyB,
+											 tb_transform_identity, m->q.translation, m->fraction, true);
 	// Shapes the mover starts in (fraction 0) are left to the planes: ignoring them lets a mover
 	// pressed into a wall move away from it.
 	if (output.hit && output.fraction > 0.0f && output.fraction < m->fraction)

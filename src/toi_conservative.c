@@ -134,10 +134,10 @@ static float tbMaxRadiusAboutCenter(const tbShapeProxy* proxy, tbVec2 localCente
 	return sqrtf(maxDistanceSquared);
 }
 
-static bool tbValidTOIInput(const char* function, const tbTOIInput* input)
+static bool tbValidTOIInput(const char* function, const tbTOIInput* input, float targetSeparation)
 {
 	if (tbCheckPointer(function, "input", input) == false ||
-		tbCheckNonNegative(function, "input->targetSeparation", input->targetSeparation) == false ||
+		tbCheckNonNegative(function, "targetSeparation", targetSeparation) == false ||
 		tbCheckNonNegative(function, "input->maxFraction", input->maxFraction) == false)
 	{
 		return false;
@@ -310,8 +310,13 @@ static void tbSetContact(tbTOIOutput* output, const tbDistanceOutput* distance, 
 
 tbTOIOutput tbTimeOfImpact(const tbTOIInput* input)
 {
+	return tbTimeOfImpactToTarget(input, TB_TOI_TARGET_SEPARATION);
+}
+
+tbTOIOutput tbTimeOfImpactToTarget(const tbTOIInput* input, float targetSeparation)
+{
 	tbTOIOutput output = {tb_toiStateUnknown, 0.0f, 0, {0.0f, 0.0f}, {0.0f, 0.0f}};
-	if (tbValidTOIInput("tbTimeOfImpact", input) == false)
+	if (tbValidTOIInput("tbTimeOfImpact", input, targetSeparation) == false)
 	{
 		return output;
 	}
@@ -319,21 +324,18 @@ tbTOIOutput tbTimeOfImpact(const tbTOIInput* input)
 	tbAdvanceBound bound = tbMakeAdvanceBound(input);
 	float radiusA = input->proxyA.radius;
 	float radiusB = input->proxyB.radius;
-	float target = input->targetSeparation;
+	float target = targetSeparation;
 	float tMax = input->maxFraction;
 
-	tbDistanceInput distanceInput;
-	distanceInput.proxyA = input->proxyA;
-	distanceInput.proxyB = input->proxyB;
-	distanceInput.useRadii = false;
 	tbSimplexCache cache = {0};
 
 	float t = 0.0f;
 	for (int iteration = 1;; ++iteration)
 	{
-		distanceInput.transformA = tbSweepTransformAt(&input->sweepA, bound.omegaA, t);
-		distanceInput.transformB = tbSweepTransformAt(&input->sweepB, bound.omegaB, t);
-		tbDistanceOutput distance = tbShapeDistance(&distanceInput, &cache, NULL);
+		tbTransform transformA = tbSweepTransformAt(&input->sweepA, bound.omegaA, t);
+		tbTransform transformB = tbSweepTransformAt(&input->sweepB, bound.omegaB, t);
+		tbDistanceOutput distance = tbShapeDistanceBetween(&input->proxyA, transformA, &input->proxyB, transformB, false,
+														   &cache, NULL);
 		float separation = distance.distance - radiusA - radiusB;
 		output.iterations = iteration;
 
@@ -372,7 +374,7 @@ tbTOIOutput tbTimeOfImpact(const tbTOIInput* input)
 		}
 		float lambda = tbWitnessTurnRate(&cache, &bound);
 		float step = tbMaxFloat(gap / closingSpeed,
-								tbSecondOrderStep(input, &bound, distanceInput.transformA, distanceInput.transformB,
+								tbSecondOrderStep(input, &bound, transformA, transformB,
 												  distance.normal, gap, t, lambda));
 		if (step >= tMax - t)
 		{

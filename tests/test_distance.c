@@ -57,10 +57,19 @@ static tbDistanceInput makeInput(const tbPolygon* a, tbTransform xfA, const tbPo
 	tbDistanceInput input = {0};
 	input.proxyA = tbMakeProxy(a->vertices, a->count, a->radius);
 	input.proxyB = tbMakeProxy(b->vertices, b->count, b->radius);
-	input.transformA = xfA;
-	input.transformB = xfB;
+	input.transform = tbInvMulTransforms(xfA, xfB);
 	input.useRadii = true;
 	return input;
+}
+
+/// tbShapeDistance answers in A's frame; these tests check against the world polygons.
+static tbDistanceOutput distanceInWorld(const tbDistanceInput* input, tbTransform xfA)
+{
+	tbDistanceOutput out = tbShapeDistance(input, NULL, NULL, 0);
+	out.pointA = tbTransformPoint(xfA, out.pointA);
+	out.pointB = tbTransformPoint(xfA, out.pointB);
+	out.normal = tbRotateVector(xfA.q, out.normal);
+	return out;
 }
 
 static bool pointInsideWorldPolygon(tbVec2 p, const tbVec2* v, int count)
@@ -219,10 +228,9 @@ Test(gjk, circle_circle_closed_form)
 		tbDistanceInput input = {0};
 		input.proxyA = tbMakeProxy(&c1, 1, r1);
 		input.proxyB = tbMakeProxy(&c2, 1, r2);
-		input.transformA = tb_transform_identity;
-		input.transformB = tb_transform_identity;
+		input.transform = tb_transform_identity;
 		input.useRadii = true;
-		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL);
+		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL, 0);
 
 		float centres = tbDistance(c1, c2);
 		float expected = fmaxf(centres - r1 - r2, 0.0f);
@@ -250,7 +258,7 @@ Test(gjk, random_polygons_match_brute_force)
 		tbTransform xfA = randomTransform(4.0f);
 		tbTransform xfB = randomTransform(4.0f);
 		tbDistanceInput input = makeInput(&a, xfA, &b, xfB);
-		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL);
+		tbDistanceOutput out = distanceInWorld(&input, xfA);
 
 		float expected = bruteForceDistance(&a, xfA, &b, xfB);
 		overlaps += expected == 0.0f;
@@ -277,9 +285,9 @@ Test(gjk, warm_start_same_answer_fewer_iterations)
 		tbDistanceInput input = makeInput(&a, randomTransform(4.0f), &b, randomTransform(4.0f));
 
 		tbSimplexCache cache = {0};
-		tbDistanceOutput cold = tbShapeDistance(&input, &cache, NULL);
+		tbDistanceOutput cold = tbShapeDistance(&input, &cache, NULL, 0);
 		cr_assert(cache.count >= 1 && cache.count <= 3);
-		tbDistanceOutput warm = tbShapeDistance(&input, &cache, NULL);
+		tbDistanceOutput warm = tbShapeDistance(&input, &cache, NULL, 0);
 		cr_assert_float_eq(warm.distance, cold.distance, DISTANCE_TOLERANCE, "pair %d", i);
 		cr_assert(warm.iterations <= cold.iterations, "pair %d: warm %d cold %d", i, warm.iterations, cold.iterations);
 	}
@@ -294,8 +302,8 @@ Test(gjk, warm_start_after_small_motion)
 	{
 		tbTransform xfB = {{-2.0f + 0.04f * (float)i, 1.1f}, tbMakeRot(0.0f)};
 		tbDistanceInput input = makeInput(&box, tb_transform_identity, &box, xfB);
-		tbDistanceOutput warm = tbShapeDistance(&input, &cache, NULL);
-		tbDistanceOutput cold = tbShapeDistance(&input, NULL, NULL);
+		tbDistanceOutput warm = tbShapeDistance(&input, &cache, NULL, 0);
+		tbDistanceOutput cold = tbShapeDistance(&input, NULL, NULL, 0);
 		cr_assert_float_eq(warm.distance, cold.distance, DISTANCE_TOLERANCE, "step %d", i);
 	}
 }
@@ -316,7 +324,7 @@ Test(gjk, tiny_edges_do_not_overlap)
 		xfB.q = turn;
 		xfB.p = tbRotateVector(turn, xfB.p);
 		tbDistanceInput input = makeInput(&tiny, xfA, &tiny, xfB);
-		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL);
+		tbDistanceOutput out = distanceInWorld(&input, xfA);
 		cr_assert(out.simplexCount < 3, "angle %d overlap reported", i);
 		cr_assert_float_eq(out.distance, 0.001f, 1e-7f, "angle %d: %g", i, (double)out.distance);
 	}
@@ -326,13 +334,13 @@ Test(gjk, tiny_edges_do_not_overlap)
 	tbDistanceInput input = {0};
 	input.proxyA = tbMakeProxy(sliver, 3, 0.0f);
 	input.proxyB = tbMakeProxy(sliver, 3, 0.0f);
-	input.transformA = tb_transform_identity;
+	input.transform = tb_transform_identity;
 	for (int i = 0; i < 100; ++i)
 	{
 		// copy turned by π: its base runs 1 mm under A's base, parallel edges, 1 mm gap
 		float slide = randomFloat(-0.0009f, 0.0009f);
-		input.transformB = (tbTransform){{0.002f + slide, -0.001f}, tbMakeRot(TB_PI)};
-		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL);
+		input.transform = (tbTransform){{0.002f + slide, -0.001f}, tbMakeRot(TB_PI)}; // A at the origin
+		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL, 0);
 		cr_assert(out.simplexCount < 3);
 		cr_assert_float_eq(out.distance, 0.001f, 1e-7f, "%g", (double)out.distance);
 	}
@@ -355,8 +363,8 @@ Test(gjk, far_from_origin)
 
 		tbDistanceInput far = makeInput(&box, xfA, &box, xfB);
 		tbDistanceInput near = makeInput(&box, nearA, &box, nearB);
-		tbDistanceOutput outFar = tbShapeDistance(&far, NULL, NULL);
-		tbDistanceOutput outNear = tbShapeDistance(&near, NULL, NULL);
+		tbDistanceOutput outFar = distanceInWorld(&far, xfA);
+		tbDistanceOutput outNear = distanceInWorld(&near, nearA);
 		cr_assert(outFar.simplexCount < 3);
 		// xfB.p was rounded at 1000 m (6e-5 m): compare with the gap it actually encodes
 		tbVec2 actualOffset = tbInvRotateVector(xfA.q, tbSub(xfB.p, xfA.p));
@@ -387,8 +395,7 @@ Test(shape_cast, circles_match_closed_form)
 		tbShapeCastPairInput input = {0};
 		input.proxyA = tbMakeProxy(&cA, 1, rA);
 		input.proxyB = tbMakeProxy(&cB, 1, rB);
-		input.transformA = tb_transform_identity;
-		input.transformB = tb_transform_identity;
+		input.transform = tb_transform_identity;
 		input.translationB = r;
 		input.maxFraction = 1.0f;
 		tbCastOutput out = tbShapeCast(&input);
@@ -429,8 +436,8 @@ Test(shape_cast, box_drop_onto_box_far_away)
 	tbShapeCastPairInput input = {0};
 	input.proxyA = tbMakeProxy(box.vertices, 4, 0.0f);
 	input.proxyB = tbMakeProxy(box.vertices, 4, 0.0f);
-	input.transformA = (tbTransform){{1000.0f, 1000.0f}, tb_rot_identity};
-	input.transformB = (tbTransform){{1000.0f, 1002.0f}, tb_rot_identity};
+	tbTransform xfA = {{1000.0f, 1000.0f}, tb_rot_identity}, xfB = {{1000.0f, 1002.0f}, tb_rot_identity};
+	input.transform = tbInvMulTransforms(xfA, xfB); // exact here: the answer does not depend on where the pair is
 	input.translationB = tbMakeVec2(0.0f, -2.0f);
 	input.maxFraction = 1.0f;
 	tbCastOutput out = tbShapeCast(&input);
@@ -456,8 +463,7 @@ static tbShapeCastPairInput CircleCast(tbVec2 centerB, float radiusA, float radi
 	tbShapeCastPairInput input = {0};
 	input.proxyA = tbMakeProxy(&origin, 1, radiusA);
 	input.proxyB = tbMakeProxy(&origin, 1, radiusB);
-	input.transformA = tb_transform_identity;
-	input.transformB = (tbTransform){centerB, tb_rot_identity};
+	input.transform = (tbTransform){centerB, tb_rot_identity}; // A at the origin
 	input.translationB = translation;
 	input.maxFraction = 1.0f;
 	return input;
@@ -484,18 +490,18 @@ Test(shape_cast, initial_overlap_hits_at_zero_with_zero_normal)
 	cr_assert_float_eq(out.point.x, 0.375f, 1e-6f);
 	cr_assert_float_eq(out.point.y, 0.0f, 1e-6f);
 
-	// boxes touching face to face, B moving along the face: the same answer, in world frame
+	// boxes touching face to face, B moving along the face: the same answer, in A's frame
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
 	input = (tbShapeCastPairInput){0};
 	input.proxyA = tbMakeProxy(box.vertices, 4, 0.0f);
 	input.proxyB = tbMakeProxy(box.vertices, 4, 0.0f);
-	input.transformA = (tbTransform){{10.0f, 20.0f}, tb_rot_identity};
-	input.transformB = (tbTransform){{10.0f, 21.0f}, tb_rot_identity};
+	input.transform = tbInvMulTransforms((tbTransform){{10.0f, 20.0f}, tb_rot_identity},
+										 (tbTransform){{10.0f, 21.0f}, tb_rot_identity});
 	input.translationB = tbMakeVec2(1.0f, 0.0f);
 	input.maxFraction = 1.0f;
 	out = tbShapeCast(&input);
 	cr_assert(out.hit && out.fraction == 0.0f && out.normal.x == 0.0f && out.normal.y == 0.0f);
-	cr_assert_float_eq(out.point.y, 20.5f, 1e-5f, "on the shared face");
+	cr_assert_float_eq(out.point.y, 0.5f, 1e-5f, "on the shared face (A's frame)");
 
 	// apart and not moving: no hit
 	input = CircleCast(tbMakeVec2(2.0f, 0.0f), 0.5f, 0.25f, tbMakeVec2(0.0f, 0.0f));

@@ -77,19 +77,17 @@ static void QueryPair(const tbPolygon* a, const tbPolygon* b, tbTransform xfB)
 	memcpy(input.proxyB.points, b->vertices, sizeof(b->vertices));
 	input.proxyA.radius = a->radius;
 	input.proxyB.radius = b->radius;
-	input.transformA = xfA;
-	input.transformB = xfB;
+	input.transform = tbInvMulTransforms(xfA, xfB);
 	input.useRadii = true;
-	(void)tbShapeDistance(&input, NULL, NULL);
+	(void)tbShapeDistance(&input, NULL, NULL, 0);
 	(void)tbShapeSeparation(&input, NULL);
 
 	tbShapeCastPairInput cast;
 	memset(&cast, 0, sizeof(cast));
 	cast.proxyA = input.proxyA;
 	cast.proxyB = input.proxyB;
-	cast.transformA = xfA;
-	cast.transformB = xfB;
-	cast.translationB = tbMakeVec2(3.0f, 0.0f);
+	cast.transform = input.transform;
+	cast.translationB = tbInvRotateVector(xfA.q, tbMakeVec2(3.0f, 0.0f));
 	cast.maxFraction = 1.0f;
 	(void)tbShapeCast(&cast);
 
@@ -102,7 +100,6 @@ static void QueryPair(const tbPolygon* a, const tbPolygon* b, tbTransform xfB)
 	toi.sweepB.q1 = toi.sweepB.q2 = xfB.q;
 	toi.sweepB.c2 = tbAdd(xfB.p, tbMakeVec2(3.0f, 0.0f));
 	toi.maxFraction = 1.0f;
-	toi.targetSeparation = TB_TOI_TARGET_SEPARATION;
 	(void)tbTimeOfImpact(&toi);
 }
 
@@ -198,8 +195,8 @@ Test(collision_input, proxy_with_bad_count_or_radius_refused, .init = SetupHooks
 	memset(&input, 0, sizeof(input));
 	input.proxyA = proxy;
 	input.proxyB = tbMakeProxy(points, 1, 0.5f);
-	input.transformA = input.transformB = tb_transform_identity;
-	tbDistanceOutput distance = tbShapeDistance(&input, NULL, NULL);
+	input.transform = tb_transform_identity;
+	tbDistanceOutput distance = tbShapeDistance(&input, NULL, NULL, 0);
 	ExpectError(n + 5, "tbShapeDistance", "proxyA");
 	cr_assert(distance.distance == 0.0f && distance.iterations == 0);
 	tbSeparationOutput separation = tbShapeSeparation(&input, NULL);
@@ -209,7 +206,7 @@ Test(collision_input, proxy_with_bad_count_or_radius_refused, .init = SetupHooks
 	memset(&cast, 0, sizeof(cast));
 	cast.proxyA = input.proxyB;
 	cast.proxyB = proxy;
-	cast.transformA = cast.transformB = tb_transform_identity;
+	cast.transform = tb_transform_identity;
 	cast.maxFraction = 1.0f;
 	cr_assert_not(tbShapeCast(&cast).hit);
 	ExpectError(n + 7, "tbShapeCast", "proxyB");
@@ -441,10 +438,10 @@ Test(collision_input, distance_between_boxes_smaller_than_sqrt_flt_min_is_finite
 	memset(&input, 0, sizeof(input));
 	input.proxyA = tbMakeShapeProxy(&(tbGeometry){.type = tb_polygonShape, .polygon = a});
 	input.proxyB = tbMakeShapeProxy(&(tbGeometry){.type = tb_polygonShape, .polygon = b});
-	input.transformA = (tbTransform){{1e-20f, 1e-20f}, {0.950232625f, 0.311541259f}};
-	input.transformB = (tbTransform){{FLT_MIN, -1e-40f}, {1.0f, 1e-20f}};
+	input.transform = tbInvMulTransforms((tbTransform){{1e-20f, 1e-20f}, {0.950232625f, 0.311541259f}},
+										 (tbTransform){{FLT_MIN, -1e-40f}, {1.0f, 1e-20f}});
 	input.useRadii = true;
-	tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL);
+	tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL, 0);
 	cr_assert(isfinite(out.pointA.x) && isfinite(out.pointA.y) && isfinite(out.pointB.x) && isfinite(out.pointB.y),
 			  "(%g, %g) (%g, %g)", (double)out.pointA.x, (double)out.pointA.y, (double)out.pointB.x,
 			  (double)out.pointB.y);

@@ -62,10 +62,9 @@ static float separationAt(const tbShapeProxy* proxyA, tbTransform xfA, const tbS
 	tbDistanceInput input;
 	input.proxyA = *proxyA;
 	input.proxyB = *proxyB;
-	input.transformA = xfA;
-	input.transformB = xfB;
+	input.transform = tbInvMulTransforms(xfA, xfB);
 	input.useRadii = false;
-	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL);
+	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL, 0);
 	return output.distance - proxyA->radius - proxyB->radius;
 }
 
@@ -100,14 +99,13 @@ static tbTOIInput circleTOIInput(const CirclePair* pair)
 	input.sweepA = pair->sweepA;
 	input.sweepB = pair->sweepB;
 	input.maxFraction = pair->maxFraction;
-	input.targetSeparation = pair->target;
 	return input;
 }
 
 static tbTOIOutput conservativeTOI(const CirclePair* pair)
 {
 	tbTOIInput input = circleTOIInput(pair);
-	return tbTimeOfImpact(&input);
+	return tbTimeOfImpactToTarget(&input, pair->target);
 }
 
 // Circles at rest relative to their bodies: A at the origin, B at (x, y), both static unless moved.
@@ -452,12 +450,11 @@ static tbShapeProxy boxProxy(float halfWidth, float halfHeight, float radius)
 // The defining property of the time of impact t of a hit: the separation at t is the target
 // (within the tolerance), 1e-3 earlier it is larger than the target, and no sampled time in
 // [0, t] comes closer than the target (the motion never passed through).
-static void checkHitProperty(const tbTOIInput* input, tbTOIOutput output, const char* name)
+static void checkHitProperty(const tbTOIInput* input, float target, tbTOIOutput output, const char* name)
 {
 	cr_assert_eq(output.state, tb_toiStateHit, "%s: state %d", name, (int)output.state);
 	cr_assert(isFiniteOutput(output), "%s", name);
 	cr_assert(output.iterations < TB_TOI_MAX_ITERATIONS, "%s", name);
-	float target = input->targetSeparation;
 	float atImpact = sweptSeparation(input, output.fraction);
 	cr_assert(atImpact >= target - 1.0e-5f && atImpact <= target + CA_TOLERANCE, "%s: separation %g at t = %g", name,
 			  atImpact, output.fraction);
@@ -483,7 +480,6 @@ static tbTOIInput makeTOIInput(tbShapeProxy proxyA, tbSweep sweepA, tbShapeProxy
 	input.sweepA = sweepA;
 	input.sweepB = sweepB;
 	input.maxFraction = 1.0f;
-	input.targetSeparation = TB_TOI_TARGET_SEPARATION;
 	return input;
 }
 
@@ -493,11 +489,11 @@ Test(toi, conservative_box_box_with_rotation)
 	tbSweep sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, tbMakeVec2(0.5f, 0.0f), 0.0f, 1.5f);
 	tbSweep sweepB = makeSweep(tb_vec2_zero, tbMakeVec2(4.0f, 0.5f), tbMakeVec2(0.5f, 0.2f), 0.3f, -0.7f);
 	tbTOIInput input = makeTOIInput(boxProxy(0.5f, 0.5f, 0.0f), sweepA, boxProxy(1.0f, 0.25f, 0.0f), sweepB);
-	checkHitProperty(&input, tbTimeOfImpact(&input), "box-box");
+	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "box-box");
 
 	// Off-centre centre of mass: the box swings about (0.8, 0) of its own frame.
 	input.sweepB.localCenter = tbMakeVec2(0.8f, 0.0f);
-	checkHitProperty(&input, tbTimeOfImpact(&input), "box-box off-centre");
+	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "box-box off-centre");
 }
 
 Test(toi, conservative_capsule_polygon)
@@ -507,7 +503,7 @@ Test(toi, conservative_capsule_polygon)
 	tbSweep sweepA = makeSweep(tb_vec2_zero, tbMakeVec2(-3.0f, 1.0f), tbMakeVec2(1.0f, -0.5f), 0.0f, 2.0f);
 	tbSweep sweepB = staticSweep(tb_vec2_zero);
 	tbTOIInput input = makeTOIInput(tbMakeProxy(capsule, 2, 0.2f), sweepA, tbMakeProxy(triangle, 3, 0.0f), sweepB);
-	checkHitProperty(&input, tbTimeOfImpact(&input), "capsule-polygon");
+	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "capsule-polygon");
 }
 
 Test(toi, conservative_segment_circle)
@@ -517,7 +513,7 @@ Test(toi, conservative_segment_circle)
 	tbSweep sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, tb_vec2_zero, 0.0f, 1.0f);
 	tbSweep sweepB = makeSweep(tb_vec2_zero, tbMakeVec2(1.5f, 2.0f), tbMakeVec2(1.2f, -1.0f), 0.0f, 0.0f);
 	tbTOIInput input = makeTOIInput(tbMakeProxy(segment, 2, 0.0f), sweepA, tbMakeProxy(&center, 1, 0.3f), sweepB);
-	checkHitProperty(&input, tbTimeOfImpact(&input), "segment-circle");
+	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "segment-circle");
 }
 
 Test(toi, conservative_rounded_polygon)
@@ -525,7 +521,7 @@ Test(toi, conservative_rounded_polygon)
 	tbSweep sweepA = makeSweep(tbMakeVec2(0.1f, 0.0f), tbMakeVec2(-2.0f, 0.0f), tbMakeVec2(0.5f, 0.3f), 0.2f, 1.2f);
 	tbSweep sweepB = makeSweep(tb_vec2_zero, tbMakeVec2(1.0f, 0.0f), tbMakeVec2(0.8f, 0.0f), 0.0f, -0.5f);
 	tbTOIInput input = makeTOIInput(boxProxy(0.4f, 0.3f, 0.1f), sweepA, boxProxy(0.3f, 0.6f, 0.05f), sweepB);
-	checkHitProperty(&input, tbTimeOfImpact(&input), "rounded polygons");
+	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "rounded polygons");
 }
 
 Test(toi, conservative_overlap_at_start)
@@ -549,7 +545,6 @@ static tbTOIInput spinningBoxLaunch(uint32_t* seed)
 	input.proxyB = boxProxy(2.0f, 0.05f, 0.0f);
 	input.sweepA = staticSweep(tb_vec2_zero);
 	input.maxFraction = 1.0f;
-	input.targetSeparation = TB_TOI_TARGET_SEPARATION;
 	for (;;)
 	{
 		float heading = lcgRange(seed, -0.5236f, 0.5236f);
@@ -578,13 +573,13 @@ Test(toi, conservative_spinning_thin_box_never_tunnels)
 					 output.iterations);
 		cr_assert_lt(output.iterations, TB_TOI_MAX_ITERATIONS, "launch %d", launch);
 		float separation = sweptSeparation(&input, output.fraction);
-		cr_assert(separation >= input.targetSeparation - 1.0e-5f &&
-					  separation <= input.targetSeparation + CA_TOLERANCE,
+		cr_assert(separation >= TB_TOI_TARGET_SEPARATION - 1.0e-5f &&
+					  separation <= TB_TOI_TARGET_SEPARATION + CA_TOLERANCE,
 				  "launch %d: separation %g", launch, separation);
 		for (int i = 0; i <= 100; ++i)
 		{
 			float t = output.fraction * (float)i / 100.0f;
-			cr_assert_geq(sweptSeparation(&input, t), input.targetSeparation - 1.0e-5f, "launch %d passed at %g",
+			cr_assert_geq(sweptSeparation(&input, t), TB_TOI_TARGET_SEPARATION - 1.0e-5f, "launch %d passed at %g",
 						  launch, t);
 		}
 		maxIterations = output.iterations > maxIterations ? output.iterations : maxIterations;
@@ -622,7 +617,7 @@ static float coreReach(const tbShapeProxy* proxy, tbVec2 localCenter)
 	return reach;
 }
 
-static DenseReference denseReference(const tbTOIInput* input, int samples)
+static DenseReference denseReference(const tbTOIInput* input, float target, int samples)
 {
 	DenseReference reference = {-1, FLT_MAX, input->maxFraction / (float)samples, 0.0f, 0.0f, 0.0f};
 	tbVec2 relative = tbSub(tbSub(input->sweepB.c2, input->sweepB.c1), tbSub(input->sweepA.c2, input->sweepA.c1));
@@ -635,7 +630,7 @@ static DenseReference denseReference(const tbTOIInput* input, int samples)
 	{
 		float separation = sweptSeparation(input, input->maxFraction * (float)i / (float)samples);
 		reference.minSeparation = fminf(reference.minSeparation, separation);
-		if (reference.firstBelow < 0 && separation < input->targetSeparation)
+		if (reference.firstBelow < 0 && separation < target)
 		{
 			reference.firstBelow = i;
 			reference.beforeSeparation = previous;
@@ -657,7 +652,7 @@ static tbRot rotation(float c, float s)
 // max(0.005, 0.0280768629 + 0.01 − 0.015). Exact floats printed with %a from its generator: a
 // circle core drifting 0.16 m, and a 3.65 × 7.43 m box core moving (0.82, 8.06) m while turning
 // 0.688 rad, whose long face sweeps onto the circle.
-static tbTOIInput circleAndTurningLongBox(void)
+static tbTOIInput circleAndTurningLongBox(float* target)
 {
 	tbVec2 center = {0.0f, 0.0f};
 	tbTOIInput input;
@@ -674,14 +669,14 @@ static tbTOIInput circleAndTurningLongBox(void)
 	input.sweepB.q1 = rotation(-0x1.346958p-1f, 0x1.98b046p-1f);   // angle 2.21726
 	input.sweepB.q2 = rotation(-0x1.f1bab8p-1f, 0x1.e0286ap-3f);   // angle 2.90494
 	input.maxFraction = 1.0f;
-	input.targetSeparation = 0x1.7a176p-6f; // 0.0230768621 m
+	*target = 0x1.7a176p-6f; // 0.0230768621 m
 	return input;
 }
 
 // Same test, seed 3001, case 6129: a 0.38 × 6.30 m box core turning −0.892 rad while a triangle
 // core (centre of mass at its centroid) flies 9.5 m past it turning 0.801 rad. Box2D's core target
 // for two 0.01 m skins is max(0.005, 0.02 − 0.015) = 0.005 m; the cores come within 0.0156 m.
-static tbTOIInput turningLongBoxAndPassingTriangle(void)
+static tbTOIInput turningLongBoxAndPassingTriangle(float* target)
 {
 	tbVec2 triangle[3] = {{-0x1.1cdb6ap+0f, 0x1.4706e2p-1f},  // (-1.11272299, 0.638724387)
 						  {-0x1.59c5bcp-1f, -0x1.174496p+0f}, // (-0.675336719, -1.09089029)
@@ -700,22 +695,23 @@ static tbTOIInput turningLongBoxAndPassingTriangle(void)
 	input.sweepB.q1 = rotation(-0x1.a6069p-2f, -0x1.d27eb8p-1f);   // angle -1.99559
 	input.sweepB.q2 = rotation(0x1.781dcep-2f, -0x1.dc3656p-1f);   // angle -1.19469
 	input.maxFraction = 1.0f;
-	input.targetSeparation = 0x1.47ae14p-8f; // 0.005 m
+	*target = 0x1.47ae14p-8f; // 0.005 m
 	return input;
 }
 
 Test(toi, conservative_circle_meets_turning_long_box)
 {
-	tbTOIInput input = circleAndTurningLongBox();
-	tbTOIOutput output = tbTimeOfImpact(&input);
-	checkHitProperty(&input, output, "circle vs turning long box (Box2D seed 3001 case 3557)");
+	float target;
+	tbTOIInput input = circleAndTurningLongBox(&target);
+	tbTOIOutput output = tbTimeOfImpactToTarget(&input, target);
+	checkHitProperty(&input, target, output, "circle vs turning long box (Box2D seed 3001 case 3557)");
 
 	// Reference: 100,000 samples (spacing 1e-5 of the sweep). The time of impact lies between the
 	// last sample above the target and the first one below. The advancement must not pass the first
 	// sample below (safety), and stops once the separation is within its tolerance band of
 	// CA_TOLERANCE above the target, which at the sampled approach speed s = (before − below)/spacing
 	// is at most CA_TOLERANCE/s of the sweep before the last sample above.
-	DenseReference reference = denseReference(&input, 100000);
+	DenseReference reference = denseReference(&input, target, 100000);
 	cr_assert_gt(reference.firstBelow, 0);
 	float below = reference.spacing * (float)reference.firstBelow;
 	float above = below - reference.spacing;
@@ -732,8 +728,9 @@ Test(toi, conservative_circle_meets_turning_long_box)
 
 Test(toi, conservative_turning_long_box_passes_triangle)
 {
-	tbTOIInput input = turningLongBoxAndPassingTriangle();
-	tbTOIOutput output = tbTimeOfImpact(&input);
+	float target;
+	tbTOIInput input = turningLongBoxAndPassingTriangle(&target);
+	tbTOIOutput output = tbTimeOfImpactToTarget(&input, target);
 	cr_assert_eq(output.state, tb_toiStateSeparated, "state %d at %.7f after %d iterations", (int)output.state,
 				 output.fraction, output.iterations);
 	cr_assert_lt(output.iterations, TB_TOI_MAX_ITERATIONS);
@@ -744,15 +741,15 @@ Test(toi, conservative_turning_long_box_passes_triangle)
 	// fall below the smaller of them by at most lipschitz × spacing / 2 (no point of either body
 	// moves faster than |vB − vA| + |ωA|·ρA + |ωB|·ρB relative to the other), so the sampled
 	// minimum minus that margin is a lower bound of the true closest approach.
-	DenseReference reference = denseReference(&input, 100000);
+	DenseReference reference = denseReference(&input, target, 100000);
 	float margin = 0.5f * reference.lipschitz * reference.spacing;
 	cr_assert_eq(reference.firstBelow, -1);
-	cr_assert_gt(reference.minSeparation - margin, input.targetSeparation,
+	cr_assert_gt(reference.minSeparation - margin, target,
 				 "closest sampled separation %g m, margin %g m, target %g m", reference.minSeparation, margin,
-				 input.targetSeparation);
+				 target);
 	cr_log_info("case 6129: separated after %d iterations; closest approach %.7f m (sampling margin %.2g m), target "
 				"%.4f m",
-				output.iterations, reference.minSeparation, margin, input.targetSeparation);
+				output.iterations, reference.minSeparation, margin, target);
 }
 
 // A long thin box (0.1–0.4 × 4–8 m) turning 0.5–1 rad about its centre while a small circle or
@@ -787,7 +784,6 @@ static tbTOIInput turningLongFaceSweep(uint32_t* seed)
 	input.sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, tb_vec2_zero, angleA, angleA + turnA);
 	input.sweepB = makeSweep(tb_vec2_zero, start, tbAdd(start, travel), angleB, angleB + lcgRange(seed, -1.0f, 1.0f));
 	input.maxFraction = 1.0f;
-	input.targetSeparation = TB_TOI_TARGET_SEPARATION;
 	return input;
 }
 
@@ -809,12 +805,12 @@ Test(toi, conservative_turning_long_faces_converge)
 		for (int i = 0; i <= 200; ++i)
 		{
 			float t = output.fraction * (float)i / 200.0f;
-			cr_assert_geq(sweptSeparation(&input, t), input.targetSeparation - 1.0e-5f, "sweep %d passed at %g", k, t);
+			cr_assert_geq(sweptSeparation(&input, t), TB_TOI_TARGET_SEPARATION - 1.0e-5f, "sweep %d passed at %g", k, t);
 		}
 		if (output.state == tb_toiStateHit)
 		{
 			float atImpact = sweptSeparation(&input, output.fraction);
-			cr_assert_leq(atImpact, input.targetSeparation + CA_TOLERANCE, "sweep %d: separation %g at the hit", k,
+			cr_assert_leq(atImpact, TB_TOI_TARGET_SEPARATION + CA_TOLERANCE, "sweep %d: separation %g at the hit", k,
 						  atImpact);
 			hits += 1;
 		}

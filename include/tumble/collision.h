@@ -213,21 +213,21 @@ typedef struct tbSimplexCache
 	uint8_t indexB[3];
 } tbSimplexCache;
 
-/// Input to GJK.
+/// Input to GJK (Box2D v3.2's form): shape B placed in shape A's frame, so the answer does not
+/// depend on where the pair is in the world; the outputs are in A's frame.
 typedef struct tbDistanceInput
 {
 	tbShapeProxy proxyA;
 	tbShapeProxy proxyB;
-	tbTransform transformA;
-	tbTransform transformB;
-	bool useRadii;	///< subtract the radii (surface to surface) instead of core to core
+	tbTransform transform; ///< B in A's frame: tbInvMulTransforms(transformA, transformB)
+	bool useRadii;		   ///< subtract the radii (surface to surface) instead of core to core
 } tbDistanceInput;
 
-/// Output of GJK.
+/// Output of GJK, in A's frame.
 typedef struct tbDistanceOutput
 {
-	tbVec2 pointA;	   ///< closest point on A (world)
-	tbVec2 pointB;	   ///< closest point on B (world)
+	tbVec2 pointA;	   ///< closest point on A
+	tbVec2 pointB;	   ///< closest point on B
 	tbVec2 normal;	   ///< unit vector from A to B (zero when the cores overlap)
 	float distance;	   ///< ≥ 0; zero when overlapping
 	int iterations;	   ///< GJK iterations
@@ -237,8 +237,8 @@ typedef struct tbDistanceOutput
 /// Vertex of the Minkowski difference B − A, with its support indices.
 typedef struct tbSimplexVertex
 {
-	tbVec2 wA;	   ///< support point on A (world)
-	tbVec2 wB;	   ///< support point on B (world)
+	tbVec2 wA;	   ///< support point on A (A's frame)
+	tbVec2 wB;	   ///< support point on B (A's frame)
 	tbVec2 w;	   ///< wB − wA
 	float a;	   ///< barycentric coordinate of the closest point
 	int indexA;	   ///< index of wA in proxyA
@@ -253,10 +253,12 @@ typedef struct tbSimplex
 } tbSimplex;
 
 /// GJK distance (van den Bergen, "Collision Detection in Interactive 3D Environments", §4.3;
-/// Ericson, "Real-Time Collision Detection", §9.5). `cache` may be NULL; when given it
-/// warm-starts this call and receives the final simplex. `simplex` may be NULL; when given it
-/// receives the final simplex (for EPA).
-TB_API tbDistanceOutput tbShapeDistance(const tbDistanceInput* input, tbSimplexCache* cache, tbSimplex* simplex);
+/// Ericson, "Real-Time Collision Detection", §9.5), in A's frame. `cache` may be NULL; when given
+/// it warm-starts this call and receives the final simplex. `simplexes` may be NULL; with a
+/// capacity of 1 or more, simplexes[0] receives the final simplex (Box2D v3 records one per
+/// iteration there, for debugging; Tumble keeps the final one, what EPA starts from).
+TB_API tbDistanceOutput tbShapeDistance(const tbDistanceInput* input, tbSimplexCache* cache, tbSimplex* simplexes,
+										int simplexCapacity);
 
 /// Closest points between two segments p1–q1 and p2–q2 (Ericson §5.1.9).
 typedef struct tbSegmentDistanceResult
@@ -268,12 +270,12 @@ typedef struct tbSegmentDistanceResult
 
 TB_API tbSegmentDistanceResult tbSegmentDistance(tbVec2 p1, tbVec2 q1, tbVec2 p2, tbVec2 q2);
 
-/// Signed separation of two convex shapes (radii included).
+/// Signed separation of two convex shapes (radii included), in A's frame.
 typedef struct tbSeparationOutput
 {
 	tbVec2 normal;	   ///< unit vector from A to B; always defined (never NaN), even for coincident shapes
-	tbVec2 pointA;	   ///< deepest/closest point on A's surface (world)
-	tbVec2 pointB;	   ///< deepest/closest point on B's surface (world)
+	tbVec2 pointA;	   ///< deepest/closest point on A's surface
+	tbVec2 pointB;	   ///< deepest/closest point on B's surface
 	float separation;  ///< > 0 apart, < 0 penetrating (depth = −separation)
 	int iterations;	   ///< GJK plus EPA iterations
 	bool usedEPA;	   ///< true when the cores overlapped and EPA gave the answer
@@ -283,14 +285,14 @@ typedef struct tbSeparationOutput
 /// 2001) from GJK's final simplex, with a tolerance and iteration cap.
 TB_API tbSeparationOutput tbShapeSeparation(const tbDistanceInput* input, tbSimplexCache* cache);
 
-/// Input to a shape cast: A stays, B translates by `translation`.
+/// Input of a shape cast (Box2D v3.2's form): B placed and moving in A's frame; the output point
+/// and normal are in A's frame.
 typedef struct tbShapeCastPairInput
 {
 	tbShapeProxy proxyA;
 	tbShapeProxy proxyB;
-	tbTransform transformA;
-	tbTransform transformB;
-	tbVec2 translationB;
+	tbTransform transform; ///< B in A's frame: tbInvMulTransforms(transformA, transformB)
+	tbVec2 translationB;   ///< B's motion, in A's frame
 	float maxFraction;
 	bool canEncroach;  ///< allow the final separation to be less than the radii (for speculative use)
 } tbShapeCastPairInput;
@@ -462,8 +464,7 @@ typedef struct tbTOIInput
 	tbShapeProxy proxyB;
 	tbSweep sweepA;
 	tbSweep sweepB;
-	float maxFraction;		///< sweep interval [0, maxFraction]
-	float targetSeparation; ///< stop at this surface separation (TB_TOI_TARGET_SEPARATION typical; 0 for exact contact)
+	float maxFraction; ///< sweep interval [0, maxFraction]
 } tbTOIInput;
 
 typedef struct tbTOIOutput
@@ -476,8 +477,13 @@ typedef struct tbTOIOutput
 } tbTOIOutput;
 
 /// Conservative advancement (Mirtich 1996; Coumans, "Continuous collision detection and physics",
-/// 2005) for any convex pair with linear and angular motion.
+/// 2005) for any convex pair with linear and angular motion, stopping when the surfaces are
+/// TB_TOI_TARGET_SEPARATION apart.
 TB_API tbTOIOutput tbTimeOfImpact(const tbTOIInput* input);
+
+/// The same, stopping at a chosen surface separation (≥ 0; 0 for exact contact). Tumble's
+/// addition: Box2D v3's input has no target, so it is an argument here, not a field.
+TB_API tbTOIOutput tbTimeOfImpactToTarget(const tbTOIInput* input, float targetSeparation);
 
 /// Two circles in linear motion: the earliest root of |Δp + Δv·t| = rA + rB + target, t in
 /// [0, maxFraction], in closed form. Circle centres are local to their bodies; the circles must

@@ -55,7 +55,8 @@
 // - Time of impact. Box2D stops when the CORE distance reaches
 //   target = max(linearSlop, totalRadius − 3·linearSlop) within ±0.25·linearSlop. Tumble's
 //   target is a surface separation ≥ 0, so the Tumble proxies are given radius 0 (cores) and
-//   targetSeparation = Box2D's core target: both then solve the same equation.
+//   the target separation (tbTimeOfImpactToTarget) = Box2D's core target: both then solve the
+//   same equation.
 #include "verify_common.h"
 
 #include "tumble/collision.h"
@@ -229,12 +230,13 @@ void PlacePair(VerifyRandom& rng, const tbGeometry& a, float extentA, const tbGe
 		tbDistanceInput input = {};
 		input.proxyA = tbMakeShapeProxy(&a);
 		input.proxyB = tbMakeShapeProxy(&b);
-		input.transformA = TumbleTransform(*poseA);
-		input.transformB = TumbleTransform(*poseB);
+		tbTransform xfA = TumbleTransform(*poseA);
+		input.transform = tbInvMulTransforms(xfA, TumbleTransform(*poseB));
 		input.useRadii = true;
 		tbSeparationOutput separation = tbShapeSeparation(&input, nullptr);
 		float shift = wanted - separation.separation;
-		poseB->p = {poseB->p.x + shift * separation.normal.x, poseB->p.y + shift * separation.normal.y};
+		tbVec2 normal = tbRotateVector(xfA.q, separation.normal); // the answer is in A's frame
+		poseB->p = {poseB->p.x + shift * normal.x, poseB->p.y + shift * normal.y};
 	}
 }
 
@@ -1074,10 +1076,9 @@ Test(box2d_collision, gjk_distance_matches_b2Distance)
 		tbDistanceInput tumbleInput = {};
 		tumbleInput.proxyA = tbMakeShapeProxy(&a.geometry);
 		tumbleInput.proxyB = tbMakeShapeProxy(&b.geometry);
-		tumbleInput.transformA = TumbleTransform(poseA);
-		tumbleInput.transformB = TumbleTransform(poseB);
+		tumbleInput.transform = tbInvMulTransforms(TumbleTransform(poseA), TumbleTransform(poseB));
 		tumbleInput.useRadii = true;
-		tbDistanceOutput output = tbShapeDistance(&tumbleInput, nullptr, nullptr);
+		tbDistanceOutput output = tbShapeDistance(&tumbleInput, nullptr, nullptr, 0);
 
 		cases += 1;
 		float error = fabsf(output.distance - reference.distance);
@@ -1267,8 +1268,7 @@ void CheckTimeOfImpact(const char* check, uint32_t seed, bool circlesOnly)
 			tumbleInput.sweepA = tumbleA;
 			tumbleInput.sweepB = tumbleB;
 			tumbleInput.maxFraction = 1.0f;
-			tumbleInput.targetSeparation = target;
-			output = tbTimeOfImpact(&tumbleInput);
+			output = tbTimeOfImpactToTarget(&tumbleInput, target);
 		}
 		cases += 1;
 		std::string text = VerifyFormat(
