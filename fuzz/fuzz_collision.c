@@ -225,7 +225,7 @@ static void RayCastEverything(const FuzzShape* shape, tbVec2 origin, tbVec2 tran
 	}
 }
 
-static bool TreeCallback(int proxyId, int userData, void* context)
+static bool TreeCallback(int proxyId, uint64_t userData, void* context)
 {
 	(void)proxyId;
 	(void)userData;
@@ -233,7 +233,7 @@ static bool TreeCallback(int proxyId, int userData, void* context)
 	return true;
 }
 
-static float TreeRayCallback(const tbRayCastInput* input, int proxyId, int userData, void* context)
+static float TreeRayCallback(const tbRayCastInput* input, int proxyId, uint64_t userData, void* context)
 {
 	(void)proxyId;
 	(void)userData;
@@ -243,7 +243,7 @@ static float TreeRayCallback(const tbRayCastInput* input, int proxyId, int userD
 
 static void TreeEverything(FuzzInput* in)
 {
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	int ids[32];
 	int count = 0;
 	int operations = FuzzInt(in, 64);

@@ -49,7 +49,7 @@ static void tbAddToMethod(tbBroadPhase* bp, int key)
 	switch (bp->method)
 	{
 		case tb_broadPhaseTree:
-			p->handle = tbDynamicTree_CreateProxy(tbTreeOf(bp, p), p->aabb, p->categoryBits | TB_PAIR_QUERY_BIT, key);
+			p->handle = tbDynamicTree_CreateProxy(tbTreeOf(bp, p), p->aabb, p->categoryBits | TB_PAIR_QUERY_BIT, (uint64_t)key);
 			bp->staticInsertCount += p->type == tb_proxyStatic ? 1 : 0;
 			break;
 		case tb_broadPhaseSortAndSweep:
@@ -88,8 +88,8 @@ static void tbRemoveFromMethod(tbBroadPhase* bp, int key)
 /// Build the selected method's state from the proxy table.
 static void tbCreateMethodState(tbBroadPhase* bp)
 {
-	bp->staticTree = tbDynamicTree_Create();
-	bp->movableTree = tbDynamicTree_Create();
+	bp->staticTree = tbDynamicTree_Create(0);
+	bp->movableTree = tbDynamicTree_Create(0);
 	bp->movableTree.rebuildSplit = tb_splitMidpoint;
 	bp->sweep = bp->method == tb_broadPhaseSortAndSweep ? tbSortAndSweep_Create() : NULL;
 	bp->brute = bp->method == tb_broadPhaseBruteForce ? tbBruteForce_Create() : NULL;
@@ -336,9 +336,10 @@ typedef struct tbPairQueryContext
 	int queryKey;
 } tbPairQueryContext;
 
-static bool tbPairQueryCallback(int treeProxyId, int otherKey, void* context)
+static bool tbPairQueryCallback(int treeProxyId, uint64_t userData, void* context)
 {
 	(void)treeProxyId;
+	int otherKey = (int)userData; // the tree's user data is the proxy key
 	tbPairQueryContext* c = context;
 	if (otherKey == c->queryKey)
 	{
@@ -509,16 +510,17 @@ typedef struct tbUserQueryContext
 {
 	const tbBroadPhase* bp;
 	uint64_t maskBits;
-	tbTreeQueryCallbackFcn* queryCallback;
-	tbTreeRayCastCallbackFcn* rayCallback;
+	tbProxyQueryFcn* queryCallback;
+	tbProxyRayCastFcn* rayCallback;
 	void* userContext;
 	float maxFraction;
 	bool stopped;
 } tbUserQueryContext;
 
-static bool tbUserQueryCallback(int treeProxyId, int key, void* context)
+static bool tbUserQueryCallback(int treeProxyId, uint64_t userData, void* context)
 {
 	(void)treeProxyId;
+	int key = (int)userData;
 	tbUserQueryContext* c = context;
 	const tbBroadProxy* p = c->bp->table.proxies + key;
 	if ((p->categoryBits & c->maskBits) == 0)
@@ -529,7 +531,7 @@ static bool tbUserQueryCallback(int treeProxyId, int key, void* context)
 	return c->stopped == false;
 }
 
-void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 						void* context)
 {
 	switch (bp->method)
@@ -560,7 +562,7 @@ void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, 
 typedef struct tbStaticQueryContext
 {
 	const tbBroadPhase* bp;
-	tbTreeQueryCallbackFcn* callback;
+	tbProxyQueryFcn* callback;
 	void* userContext;
 } tbStaticQueryContext;
 
@@ -574,7 +576,7 @@ static bool tbStaticQueryCallback(int key, int shapeIndex, void* context)
 	return c->callback(key, shapeIndex, c->userContext);
 }
 
-void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 							  void* context)
 {
 	if (bp->method == tb_broadPhaseTree)
@@ -592,9 +594,10 @@ void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t mask
 	tbBroadPhase_Query(bp, aabb, maskBits, tbStaticQueryCallback, &c);
 }
 
-static float tbUserRayCastCallback(const tbRayCastInput* input, int treeProxyId, int key, void* context)
+static float tbUserRayCastCallback(const tbRayCastInput* input, int treeProxyId, uint64_t userData, void* context)
 {
 	(void)treeProxyId;
+	int key = (int)userData;
 	tbUserQueryContext* c = context;
 	const tbBroadProxy* p = c->bp->table.proxies + key;
 	if ((p->categoryBits & c->maskBits) == 0)
@@ -614,7 +617,7 @@ static float tbUserRayCastCallback(const tbRayCastInput* input, int treeProxyId,
 }
 
 void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
-						  tbTreeRayCastCallbackFcn* callback, void* context)
+						  tbProxyRayCastFcn* callback, void* context)
 {
 	switch (bp->method)
 	{
@@ -677,7 +680,7 @@ static bool tbValidateTreeProxies(const tbBroadPhase* bp)
 		}
 		const tbDynamicTree* tree = p->type == tb_proxyStatic ? &bp->staticTree : &bp->movableTree;
 		tbAABB box = tbDynamicTree_GetAABB(tree, p->handle);
-		if (tbDynamicTree_GetUserData(tree, p->handle) != key || memcmp(&box, &p->aabb, sizeof(box)) != 0)
+		if (tbDynamicTree_GetUserData(tree, p->handle) != (uint64_t)key || memcmp(&box, &p->aabb, sizeof(box)) != 0)
 		{
 			return false;
 		}

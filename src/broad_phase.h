@@ -90,18 +90,18 @@ bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKe
 
 /// Visit proxies overlapping aabb whose category bits share a bit with maskBits (callback gets
 /// proxy key and shape index; return false to stop).
-void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 						void* context);
 
 /// tbBroadPhase_Query restricted to static proxies (continuous collision of non-bullets, which
 /// only stop at static geometry). The tree method walks the static tree alone; the others scan
 /// their table and skip movable proxies. Same proxies, same order as Query's static part.
-void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 							  void* context);
 
 /// Ray cast over the proxies (callback as for the tree).
 void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
-						  tbTreeRayCastCallbackFcn* callback, void* context);
+						  tbProxyRayCastFcn* callback, void* context);
 
 /// Height of the movable tree, or 0 for other methods.
 int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp);

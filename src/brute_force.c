@@ -138,7 +138,7 @@ void tbBruteForce_FindPairs(tbBruteForce* brute, const tbProxyTable* table, tbPa
 	}
 }
 
-void tbBruteForce_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbBruteForce_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 						void* context)
 {
 	for (int key = 0; key < table->capacity; ++key)
@@ -179,7 +179,7 @@ static bool tbSegmentHitsBox(tbVec2 p, tbVec2 d, float maxFraction, tbAABB box)
 }
 
 void tbBruteForce_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
-						  tbTreeRayCastCallbackFcn* callback, void* context)
+						  tbProxyRayCastFcn* callback, void* context)
 {
 	tbRayCastInput subInput = *input;
 	for (int key = 0; key < table->capacity; ++key)

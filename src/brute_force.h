@@ -18,9 +18,9 @@ void tbBruteForce_FindPairs(tbBruteForce* brute, const tbProxyTable* table, tbPa
 
 /// Linear scans over the proxy table (also used by sort-and-sweep). Callbacks get the proxy key
 /// and the shape index.
-void tbBruteForce_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbBruteForce_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 						void* context);
 void tbBruteForce_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
-						  tbTreeRayCastCallbackFcn* callback, void* context);
+						  tbProxyRayCastFcn* callback, void* context);
 
 bool tbBruteForce_Validate(const tbBruteForce* brute, const tbProxyTable* table);

@@ -51,12 +51,12 @@ typedef struct tbTreeNode
 {
 	tbAABB aabb;		   ///< fat box of a leaf, union of the children for an internal node
 	uint64_t categoryBits; ///< leaf: the proxy's bits; internal: OR of the children
+	uint64_t userData;	   ///< leaf payload returned to queries
 	int parent;			   ///< parent node, or next free node when free
 	int child1;			   ///< TB_NULL_NODE for a leaf
 	int child2;
-	int userData; ///< leaf payload returned to queries
-	int height;	  ///< 0 for a leaf, 1 + max(children) for an internal node, −1 when free
-	int enlarged; ///< a leaf grown in place since the last rebuild, or an ancestor of one
+	int16_t height;	  ///< 0 for a leaf, 1 + max(children) for an internal node, −1 when free
+	int16_t enlarged; ///< a leaf grown in place since the last rebuild, or an ancestor of one
 } tbTreeNode;
 
 _Static_assert(sizeof(tbTreeNode) == 48, "tree node is 48 bytes");
@@ -136,22 +136,6 @@ static void tbTreeStackFree(tbTreeStack* stack)
 // --------------------------------------------------------------------------------------------
 // Node allocation
 
-tbDynamicTree tbDynamicTree_Create(void)
-{
-	tbDynamicTree tree;
-	memset(&tree, 0, sizeof(tree));
-	tree.root = TB_NULL_NODE;
-	tree.freeList = TB_NULL_NODE;
-	return tree;
-}
-
-void tbDynamicTree_Destroy(tbDynamicTree* tree)
-{
-	tbFree(tree->nodes, tree->nodeCapacity * (int)sizeof(tbTreeNode));
-	tbFree(tree->rebuildLeaves, tree->rebuildCapacity * (int)sizeof(tbRebuildLeaf));
-	*tree = tbDynamicTree_Create();
-}
-
 /// Double the node array and thread the new nodes onto the free list.
 static void tbGrowNodes(tbDynamicTree* tree)
 {
@@ -165,6 +149,27 @@ static void tbGrowNodes(tbDynamicTree* tree)
 	}
 	tree->freeList = oldCapacity;
 	tree->nodeCapacity = newCapacity;
+}
+
+tbDynamicTree tbDynamicTree_Create(int proxyCapacity)
+{
+	tbDynamicTree tree;
+	memset(&tree, 0, sizeof(tree));
+	tree.root = TB_NULL_NODE;
+	tree.freeList = TB_NULL_NODE;
+	// n proxies make 2n − 1 nodes.
+	while (proxyCapacity > 0 && tree.nodeCapacity < 2 * proxyCapacity)
+	{
+		tbGrowNodes(&tree);
+	}
+	return tree;
+}
+
+void tbDynamicTree_Destroy(tbDynamicTree* tree)
+{
+	tbFree(tree->nodes, tree->nodeCapacity * (int)sizeof(tbTreeNode));
+	tbFree(tree->rebuildLeaves, tree->rebuildCapacity * (int)sizeof(tbRebuildLeaf));
+	*tree = tbDynamicTree_Create(0);
 }
 
 static int tbAllocateNode(tbDynamicTree* tree)
@@ -204,7 +209,7 @@ static void tbRefitNode(tbDynamicTree* tree, int index)
 	const tbTreeNode* b = tree->nodes + node->child2;
 	node->aabb = tbAABB_Union(a->aabb, b->aabb);
 	node->categoryBits = a->categoryBits | b->categoryBits;
-	node->height = 1 + tbMaxInt(a->height, b->height);
+	node->height = (int16_t)(1 + tbMaxInt(a->height, b->height));
 }
 
 /// A candidate rotation at node A: swap A's child `upper` with `lower`, a child of A's other
@@ -455,7 +460,7 @@ static void tbClearEnlargedPath(tbDynamicTree* tree, int index)
 	}
 }
 
-int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, int userData)
+int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, uint64_t userData)
 {
 	int leaf = tbAllocateNode(tree);
 	tbTreeNode* node = tree->nodes + leaf;
@@ -510,12 +515,16 @@ void tbDynamicTree_EnlargeProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb)
 // --------------------------------------------------------------------------------------------
 // Queries
 
-void tbDynamicTree_Query(const tbDynamicTree* tree, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
-						 void* context)
+/// Depth-first visit of the leaves whose boxes overlap aabb and, when filtered, whose category
+/// bits meet maskBits (internal nodes hold the OR of their leaves' bits, so a subtree without the
+/// bits is skipped whole).
+static tbTreeStats tbQueryTree(const tbDynamicTree* tree, tbAABB aabb, uint64_t maskBits, bool filtered,
+							   tbTreeQueryCallbackFcn* callback, void* context)
 {
+	tbTreeStats stats = {0, 0};
 	if (tree->root == TB_NULL_NODE)
 	{
-		return;
+		return stats;
 	}
 	tbTreeStack stack;
 	tbTreeStackInit(&stack);
@@ -524,22 +533,37 @@ void tbDynamicTree_Query(const tbDynamicTree* tree, tbAABB aabb, uint64_t maskBi
 	{
 		int index = stack.items[--stack.count];
 		const tbTreeNode* node = tree->nodes + index;
-		if ((node->categoryBits & maskBits) == 0 || tbAABB_Overlaps(node->aabb, aabb) == false)
+		if ((filtered && (node->categoryBits & maskBits) == 0) || tbAABB_Overlaps(node->aabb, aabb) == false)
 		{
 			continue;
 		}
 		if (tbIsLeaf(node))
 		{
+			stats.leafVisits += 1;
 			if (callback(index, node->userData, context) == false)
 			{
 				break;
 			}
 			continue;
 		}
+		stats.nodeVisits += 1;
 		tbTreeStackPush(&stack, node->child1);
 		tbTreeStackPush(&stack, node->child2);
 	}
 	tbTreeStackFree(&stack);
+	return stats;
+}
+
+tbTreeStats tbDynamicTree_Query(const tbDynamicTree* tree, tbAABB aabb, uint64_t maskBits,
+								tbTreeQueryCallbackFcn* callback, void* context)
+{
+	return tbQueryTree(tree, aabb, maskBits, true, callback, context);
+}
+
+tbTreeStats tbDynamicTree_QueryAll(const tbDynamicTree* tree, tbAABB aabb, tbTreeQueryCallbackFcn* callback,
+								   void* context)
+{
+	return tbQueryTree(tree, aabb, 0u, false, callback, context);
 }
 
 /// Bounding box of the segment p1 → p1 + fraction·d.
@@ -561,12 +585,13 @@ static bool tbSegmentMissesBox(tbVec2 p1, tbVec2 normal, tbAABB box)
 	return separation > radius;
 }
 
-void tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInput* input, uint64_t maskBits,
-						   tbTreeRayCastCallbackFcn* callback, void* context)
+tbTreeStats tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInput* input, uint64_t maskBits,
+								  tbTreeRayCastCallbackFcn* callback, void* context)
 {
+	tbTreeStats stats = {0, 0};
 	if (tree->root == TB_NULL_NODE)
 	{
-		return;
+		return stats;
 	}
 	tbVec2 p1 = input->origin;
 	tbVec2 d = input->translation;
@@ -588,10 +613,12 @@ void tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInput* inpu
 		}
 		if (tbIsLeaf(node) == false)
 		{
+			stats.nodeVisits += 1;
 			tbTreeStackPush(&stack, node->child1);
 			tbTreeStackPush(&stack, node->child2);
 			continue;
 		}
+		stats.leafVisits += 1;
 		tbRayCastInput subInput = {p1, d, maxFraction};
 		float value = callback(&subInput, index, node->userData, context);
 		if (value == 0.0f)
@@ -605,6 +632,99 @@ void tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInput* inpu
 		}
 	}
 	tbTreeStackFree(&stack);
+	return stats;
+}
+
+/// The box swept from its start to start + fraction·translation.
+static tbAABB tbSweptBox(tbAABB box, tbVec2 translation, float fraction)
+{
+	tbVec2 t = tbMulSV(fraction, translation);
+	tbAABB moved = {tbAdd(box.lowerBound, t), tbAdd(box.upperBound, t)};
+	return tbAABB_Union(box, moved);
+}
+
+// A box moving along d is a ray for the boxes grown by its half extents (the Minkowski sum): a
+// node is skipped when the swept box misses it or the centre's segment misses the node grown by
+// the half extents (the separating-axis test on the segment's normal, as the ray cast).
+tbTreeStats tbDynamicTree_BoxCast(const tbDynamicTree* tree, const tbBoxCastInput* input, uint64_t maskBits,
+								  tbTreeBoxCastCallbackFcn* callback, void* context)
+{
+	tbTreeStats stats = {0, 0};
+	if (tree->root == TB_NULL_NODE)
+	{
+		return stats;
+	}
+	tbVec2 p1 = tbAABB_Center(input->box);
+	tbVec2 extents = tbAABB_Extents(input->box);
+	tbVec2 d = input->translation;
+	tbVec2 normal = tbLeftPerp(d);
+	float maxFraction = input->maxFraction;
+	tbAABB swept = tbSweptBox(input->box, d, maxFraction);
+
+	tbTreeStack stack;
+	tbTreeStackInit(&stack);
+	tbTreeStackPush(&stack, tree->root);
+	while (stack.count > 0)
+	{
+		int index = stack.items[--stack.count];
+		const tbTreeNode* node = tree->nodes + index;
+		tbAABB grown = {tbSub(node->aabb.lowerBound, extents), tbAdd(node->aabb.upperBound, extents)};
+		if ((node->categoryBits & maskBits) == 0 || tbAABB_Overlaps(node->aabb, swept) == false ||
+			tbSegmentMissesBox(p1, normal, grown))
+		{
+			continue;
+		}
+		if (tbIsLeaf(node) == false)
+		{
+			stats.nodeVisits += 1;
+			tbTreeStackPush(&stack, node->child1);
+			tbTreeStackPush(&stack, node->child2);
+			continue;
+		}
+		stats.leafVisits += 1;
+		tbBoxCastInput subInput = {input->box, d, maxFraction};
+		float value = callback(&subInput, index, node->userData, context);
+		if (value == 0.0f)
+		{
+			break;
+		}
+		if (0.0f < value && value < maxFraction)
+		{
+			maxFraction = value;
+			swept = tbSweptBox(input->box, d, maxFraction);
+		}
+	}
+	tbTreeStackFree(&stack);
+	return stats;
+}
+
+void tbDynamicTree_SetCategoryBits(tbDynamicTree* tree, int proxyId, uint64_t categoryBits)
+{
+	TB_ASSERT(0 <= proxyId && proxyId < tree->nodeCapacity && tbIsLeaf(tree->nodes + proxyId));
+	tbTreeNode* nodes = tree->nodes;
+	nodes[proxyId].categoryBits = categoryBits;
+	// The ancestors hold the OR of their leaves' bits: recompute them up the path (a tree height).
+	for (int index = nodes[proxyId].parent; index != TB_NULL_NODE; index = nodes[index].parent)
+	{
+		nodes[index].categoryBits = nodes[nodes[index].child1].categoryBits | nodes[nodes[index].child2].categoryBits;
+	}
+}
+
+tbAABB tbDynamicTree_GetRootBounds(const tbDynamicTree* tree)
+{
+	tbAABB empty = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+	return tree->root == TB_NULL_NODE ? empty : tree->nodes[tree->root].aabb;
+}
+
+int tbDynamicTree_GetProxyCount(const tbDynamicTree* tree)
+{
+	return tree->proxyCount;
+}
+
+int tbDynamicTree_GetByteCount(const tbDynamicTree* tree)
+{
+	return (int)sizeof(tbDynamicTree) + tree->nodeCapacity * (int)sizeof(tbTreeNode) +
+		   tree->rebuildCapacity * (int)sizeof(tbRebuildLeaf);
 }
 
 // --------------------------------------------------------------------------------------------
@@ -661,6 +781,22 @@ static bool tbValidateNode(const tbDynamicTree* tree, int index, int parent, int
 	const tbTreeNode* b = tree->nodes + node->child2;
 	return node->height == 1 + tbMaxInt(a->height, b->height) && tbAABB_Contains(node->aabb, a->aabb) &&
 		   tbAABB_Contains(node->aabb, b->aabb) && node->categoryBits == (a->categoryBits | b->categoryBits);
+}
+
+bool tbDynamicTree_ValidateNoEnlarged(const tbDynamicTree* tree)
+{
+	if (tbDynamicTree_Validate(tree) == false)
+	{
+		return false;
+	}
+	for (int i = 0; i < tree->nodeCapacity; ++i)
+	{
+		if (tree->nodes[i].height >= 0 && tree->nodes[i].enlarged != 0)
+		{
+			return false;
+		}
+	}
+	return true;
 }
 
 bool tbDynamicTree_Validate(const tbDynamicTree* tree)
@@ -963,7 +1099,7 @@ int tbDynamicTree_Rebuild(tbDynamicTree* tree, bool fullBuild)
 // --------------------------------------------------------------------------------------------
 // Accessors
 
-int tbDynamicTree_GetUserData(const tbDynamicTree* tree, int proxyId)
+uint64_t tbDynamicTree_GetUserData(const tbDynamicTree* tree, int proxyId)
 {
 	TB_ASSERT(0 <= proxyId && proxyId < tree->nodeCapacity);
 	return tree->nodes[proxyId].userData;

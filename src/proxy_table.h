@@ -5,6 +5,13 @@
 
 #include "tumble/collision.h"
 
+/// The broad phase's query callbacks (every method's): a proxy by its key in the proxy table and
+/// the shape it belongs to; return false to stop. (The dynamic tree's own callbacks carry its
+/// 64-bit user data; the tree method adapts them in broad_phase.c.)
+typedef bool tbProxyQueryFcn(int proxyKey, int shapeIndex, void* context);
+/// Ray cast callback: the new max fraction (0 stops, the input's maxFraction ignores the proxy).
+typedef float tbProxyRayCastFcn(const tbRayCastInput* input, int proxyKey, int shapeIndex, void* context);
+
 /// A candidate pair: shape indices with a < b.
 typedef struct tbShapePair
 {

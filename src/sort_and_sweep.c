@@ -355,14 +355,14 @@ void tbSortAndSweep_FindPairs(tbSortAndSweep* sweep, const tbProxyTable* table, 
 	sweep->updateCount += 1;
 }
 
-void tbSortAndSweep_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbSortAndSweep_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 						  void* context)
 {
 	tbBruteForce_Query(table, aabb, maskBits, callback, context);
 }
 
 void tbSortAndSweep_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
-							tbTreeRayCastCallbackFcn* callback, void* context)
+							tbProxyRayCastFcn* callback, void* context)
 {
 	tbBruteForce_RayCast(table, input, maskBits, callback, context);
 }

@@ -20,10 +20,10 @@ void tbSortAndSweep_FindPairs(tbSortAndSweep* sweep, const tbProxyTable* table, 
 
 /// Queries and ray casts scan the proxy table linearly (tbBruteForce_Query/RayCast): the sorted
 /// endpoints would only prune one axis, and queries are rare next to pair updates.
-void tbSortAndSweep_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbTreeQueryCallbackFcn* callback,
+void tbSortAndSweep_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 						  void* context);
 void tbSortAndSweep_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
-							tbTreeRayCastCallbackFcn* callback, void* context);
+							tbProxyRayCastFcn* callback, void* context);
 
 /// Endpoints sorted, two live endpoints per live proxy, values equal to the proxies' boxes.
 bool tbSortAndSweep_Validate(const tbSortAndSweep* sweep, const tbProxyTable* table);

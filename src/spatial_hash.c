@@ -439,7 +439,7 @@ typedef struct tbBoxQuery
 	const tbProxyTable* table;
 	tbAABB aabb;
 	uint64_t maskBits;
-	tbTreeQueryCallbackFcn* callback;
+	tbProxyQueryFcn* callback;
 	void* context;
 } tbBoxQuery;
 
@@ -488,7 +488,7 @@ static bool tbQueryStaticGrid(const tbBoxQuery* q)
 }
 
 void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, tbAABB aabb, uint64_t maskBits,
-						 bool staticOnly, tbTreeQueryCallbackFcn* callback, void* context)
+						 bool staticOnly, tbProxyQueryFcn* callback, void* context)
 {
 	tbBoxQuery q = {hash, table, aabb, maskBits, callback, context};
 	// Static proxies: through the grid when it is current (its cells for a box covering few of
@@ -531,7 +531,7 @@ void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, t
 }
 
 void tbSpatialHash_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
-						   tbTreeRayCastCallbackFcn* callback, void* context)
+						   tbProxyRayCastFcn* callback, void* context)
 {
 	tbBruteForce_RayCast(table, input, maskBits, callback, context);
 }

@@ -27,9 +27,9 @@ void tbSpatialHash_QueryMoved(const tbSpatialHash* hash, const tbProxyTable* tab
 /// Queries: static proxies through the static grid when it is current, movable ones by a scan of
 /// the table (they may have moved since the grid was built). Ray casts scan the table.
 void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, tbAABB aabb, uint64_t maskBits,
-						 bool staticOnly, tbTreeQueryCallbackFcn* callback, void* context);
+						 bool staticOnly, tbProxyQueryFcn* callback, void* context);
 void tbSpatialHash_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
-						   tbTreeRayCastCallbackFcn* callback, void* context);
+						   tbProxyRayCastFcn* callback, void* context);
 
 /// Cell size (m) in use, for the benchmarks.
 float tbSpatialHash_GetCellSize(const tbSpatialHash* hash);

@@ -33,7 +33,7 @@ typedef struct Collector
 	int count;
 } Collector;
 
-static bool CollectCallback(int proxyId, int userData, void* context)
+static bool CollectCallback(int proxyId, uint64_t userData, void* context)
 {
 	(void)userData;
 	Collector* c = context;
@@ -71,7 +71,7 @@ static void CheckQuery(const tbDynamicTree* tree, const int* ids, const tbAABB* 
 Test(dynamic_tree, validate_after_random_insert_move_remove)
 {
 	s_seed = 1u;
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	static int ids[MAX_PROXIES];
 	int count = 0;
 	for (int i = 0; i < 300; ++i)
@@ -115,7 +115,7 @@ Test(dynamic_tree, height_of_row_and_grid)
 	// Acceptance: height < 2·log2(n) after inserting a row of 200 unit boxes (15.3) and a 20×20
 	// grid (17.3), and < 3·log2(n) after moving every proxy of the grid (25.9). An AVL-balanced
 	// tree stays below 1.44·log2(n + 2) (Knuth, TAOCP vol. 3, §6.2.3).
-	tbDynamicTree row = tbDynamicTree_Create();
+	tbDynamicTree row = tbDynamicTree_Create(0);
 	for (int i = 0; i < 200; ++i)
 	{
 		tbAABB box = {{(float)i, 0.0f}, {(float)i + 1.0f, 1.0f}};
@@ -126,7 +126,7 @@ Test(dynamic_tree, height_of_row_and_grid)
 	cr_assert_lt((float)rowHeight, 2.0f * log2f(200.0f), "row height %d", rowHeight);
 	tbDynamicTree_Destroy(&row);
 
-	tbDynamicTree grid = tbDynamicTree_Create();
+	tbDynamicTree grid = tbDynamicTree_Create(0);
 	int ids[400];
 	for (int i = 0; i < 20; ++i)
 	{
@@ -157,7 +157,7 @@ Test(dynamic_tree, height_of_row_and_grid)
 Test(dynamic_tree, query_matches_brute_force)
 {
 	s_seed = 7u;
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	static int ids[1000];
 	static tbAABB boxes[1000];
 	static uint64_t bits[1000];
@@ -211,7 +211,7 @@ typedef struct RayContext
 	int calls;
 } RayContext;
 
-static float ClosestRayCallback(const tbRayCastInput* input, int proxyId, int userData, void* context)
+static float ClosestRayCallback(const tbRayCastInput* input, int proxyId, uint64_t userData, void* context)
 {
 	(void)userData;
 	RayContext* c = context;
@@ -232,7 +232,7 @@ static float ClosestRayCallback(const tbRayCastInput* input, int proxyId, int us
 Test(dynamic_tree, ray_cast_closest_matches_brute_force)
 {
 	s_seed = 99u;
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	static tbAABB boxes[800];
 	static int ids[800];
 	for (int i = 0; i < 800; ++i)
@@ -270,7 +270,7 @@ Test(dynamic_tree, ray_cast_closest_matches_brute_force)
 	tbDynamicTree_Destroy(&tree);
 }
 
-static float StopRayCallback(const tbRayCastInput* input, int proxyId, int userData, void* context)
+static float StopRayCallback(const tbRayCastInput* input, int proxyId, uint64_t userData, void* context)
 {
 	(void)input;
 	(void)proxyId;
@@ -281,7 +281,7 @@ static float StopRayCallback(const tbRayCastInput* input, int proxyId, int userD
 
 Test(dynamic_tree, ray_cast_zero_stops)
 {
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	for (int i = 0; i < 10; ++i)
 	{
 		tbDynamicTree_CreateProxy(&tree, (tbAABB){{(float)i * 2.0f, -1.0f}, {(float)i * 2.0f + 1.0f, 1.0f}}, 1, i);
@@ -296,7 +296,7 @@ Test(dynamic_tree, ray_cast_zero_stops)
 Test(dynamic_tree, rebuild_is_valid_and_queries_match)
 {
 	s_seed = 2024u;
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	static int ids[1000];
 	static tbAABB boxes[1000];
 	static uint64_t bits[1000];
@@ -352,7 +352,7 @@ Test(dynamic_tree, rebuild_is_valid_and_queries_match)
 static void CheckPartialRebuild(tbTreeSplit split)
 {
 	s_seed = 777u;
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	tree.rebuildSplit = split;
 	static int ids[1000];
 	static tbAABB boxes[1000];
@@ -408,7 +408,7 @@ Test(dynamic_tree, partial_rebuild_places_only_grown_leaves)
 
 static int s_visited;
 
-static bool CountingCallback(int proxyId, int userData, void* context)
+static bool CountingCallback(int proxyId, uint64_t userData, void* context)
 {
 	(void)proxyId;
 	(void)userData;
@@ -420,7 +420,7 @@ static bool CountingCallback(int proxyId, int userData, void* context)
 Test(dynamic_tree, mask_bits_prune)
 {
 	s_seed = 5u;
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	static int ids[600];
 	static tbAABB boxes[600];
 	static uint64_t bits[600];
@@ -452,7 +452,7 @@ Test(dynamic_tree, visit_nodes_and_no_bytes_left)
 {
 	int startBytes = tbGetByteCount();
 	s_seed = 11u;
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	for (int i = 0; i < 500; ++i)
 	{
 		tbDynamicTree_CreateProxy(&tree, RandomBox(40.0f, 0.5f, 2.0f), 1, i);
@@ -466,4 +466,89 @@ Test(dynamic_tree, visit_nodes_and_no_bytes_left)
 	cr_assert_gt(tbGetByteCount(), startBytes);
 	tbDynamicTree_Destroy(&tree);
 	cr_assert_eq(tbGetByteCount(), startBytes, "bytes left after destroy: %d", tbGetByteCount() - startBytes);
+}
+
+typedef struct BoxCastHits
+{
+	int order[8];
+	int count;
+	int beyondReach; ///< candidates reported although the clipped sweep could not reach them
+	float nearest;
+} BoxCastHits;
+
+/// Each candidate clips the cast at its own box: the fraction where the moving box's right side
+/// reaches the candidate's left side (boxes on one row, the cast along +x).
+static float ClipAtBox(const tbBoxCastInput* input, int proxyId, uint64_t userData, void* context)
+{
+	BoxCastHits* hits = context;
+	hits->order[hits->count++] = (int)userData;
+	float left = 2.0f * (float)userData - 0.5f; // proxy k spans [2k − 0.5, 2k + 0.5]
+	float reach = input->box.upperBound.x + input->maxFraction * input->translation.x;
+	hits->beyondReach += left > reach ? 1 : 0;
+	float fraction = (left - input->box.upperBound.x) / input->translation.x;
+	hits->nearest = fraction > 0.0f && fraction < hits->nearest ? fraction : hits->nearest;
+	(void)proxyId;
+	return fraction > 0.0f ? fraction : input->maxFraction;
+}
+
+static bool CountInto(int proxyId, uint64_t userData, void* context)
+{
+	(void)proxyId;
+	(void)userData;
+	*(int*)context += 1;
+	return true;
+}
+
+// Tree extras in Box2D v3.2's grammar: box cast (candidates beyond the nearest hit are clipped
+// away), query-all ignoring categories, category changes, root bounds, proxy and byte counts, and
+// validation that no grown proxy waits for a rebuild.
+Test(dynamic_tree, box_cast_query_all_and_bookkeeping)
+{
+	tbDynamicTree tree = tbDynamicTree_Create(8);
+	cr_assert_geq(tree.nodeCapacity, 15, "room for 8 proxies: 2·8 − 1 nodes");
+	int bytes = tbDynamicTree_GetByteCount(&tree);
+	cr_assert_gt(bytes, 15 * 40);
+	int proxies[6];
+	for (int k = 0; k < 6; ++k)
+	{
+		tbAABB box = {{2.0f * (float)k - 0.5f, -0.5f}, {2.0f * (float)k + 0.5f, 0.5f}};
+		proxies[k] = tbDynamicTree_CreateProxy(&tree, box, k == 3 ? 2u : 1u, (uint64_t)k);
+	}
+	cr_assert_eq(tbDynamicTree_GetProxyCount(&tree), 6);
+	tbAABB root = tbDynamicTree_GetRootBounds(&tree);
+	cr_assert(root.lowerBound.x == -0.5f && root.upperBound.x == 10.5f && root.upperBound.y == 0.5f);
+
+	// A box of half height 0.25 starting between boxes 0 and 1 and moving 10 m along +x reaches
+	// boxes 2…5 (box 1 overlaps its start: its fraction is not positive and it does not clip).
+	// The nearest, box 2, is hit at (3.5 − 1.5)/10 = 0.2; no box is reported once the clipped
+	// sweep can no longer reach it (the order of the others depends on the tree's shape).
+	tbBoxCastInput cast = {{{1.0f, -0.25f}, {1.5f, 0.25f}}, {10.0f, 0.0f}, 1.0f};
+	BoxCastHits hits = {{0}, 0, 0, 1.0f};
+	tbTreeStats stats = tbDynamicTree_BoxCast(&tree, &cast, ~0ull, ClipAtBox, &hits);
+	cr_assert_eq(hits.beyondReach, 0);
+	cr_assert_float_eq(hits.nearest, 0.2f, 1e-6f);
+	cr_assert_geq(hits.count, 1);
+	cr_assert_leq(hits.count, 5);
+	cr_assert_eq(stats.leafVisits, hits.count);
+	// Box 3 has category 2: a mask without it skips it; query-all sees it.
+	int seen = 0;
+	tbAABB around3 = {{5.9f, -0.1f}, {6.1f, 0.1f}};
+	tbDynamicTree_Query(&tree, around3, 1u, CountInto, &seen);
+	cr_assert_eq(seen, 0);
+	stats = tbDynamicTree_QueryAll(&tree, around3, CountInto, &seen);
+	cr_assert_eq(seen, 1);
+	cr_assert_eq(stats.leafVisits, 1);
+	tbDynamicTree_SetCategoryBits(&tree, proxies[3], 1u);
+	cr_assert_eq(tbDynamicTree_GetCategoryBits(&tree, proxies[3]), 1u);
+	tbDynamicTree_Query(&tree, around3, 1u, CountInto, &seen);
+	cr_assert_eq(seen, 2, "box 3 found under its new category");
+
+	// A proxy grown in place waits for a rebuild.
+	cr_assert(tbDynamicTree_ValidateNoEnlarged(&tree));
+	tbDynamicTree_EnlargeProxy(&tree, proxies[0], (tbAABB){{-1.0f, -1.0f}, {1.0f, 1.0f}});
+	cr_assert(tbDynamicTree_Validate(&tree));
+	cr_assert_not(tbDynamicTree_ValidateNoEnlarged(&tree));
+	tbDynamicTree_Rebuild(&tree, false);
+	cr_assert(tbDynamicTree_ValidateNoEnlarged(&tree));
+	tbDynamicTree_Destroy(&tree);
 }

@@ -414,7 +414,7 @@ Test(world_limits, tree_rebuild_with_leaves_spanning_more_than_float_max)
 {
 	// Before: the binned rebuild converted 0·∞ = NaN to int (undefined) when the leaf centres
 	// spanned more than FLT_MAX. The tree stays valid and both leaves are found.
-	tbDynamicTree tree = tbDynamicTree_Create();
+	tbDynamicTree tree = tbDynamicTree_Create(0);
 	tbAABB left = {{-3e38f, 0.0f}, {-2.9e38f, 1.0f}};
 	tbAABB right = {{2.9e38f, 0.0f}, {3e38f, 1.0f}};
 	tbAABB middle = {{0.0f, 0.0f}, {1.0f, 1.0f}};

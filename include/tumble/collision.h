@@ -527,11 +527,19 @@ typedef struct tbDynamicTree
 	tbTreeSplit rebuildSplit; ///< how tbDynamicTree_Rebuild splits; tb_splitBinnedSah from Create
 } tbDynamicTree;
 
-TB_API tbDynamicTree tbDynamicTree_Create(void);
+/// Work done by a query: internal nodes and leaves visited.
+typedef struct tbTreeStats
+{
+	int nodeVisits;
+	int leafVisits;
+} tbTreeStats;
+
+/// A tree with room for proxyCapacity proxies before it allocates (0: allocate on first insert).
+TB_API tbDynamicTree tbDynamicTree_Create(int proxyCapacity);
 TB_API void tbDynamicTree_Destroy(tbDynamicTree* tree);
 
 /// Insert a proxy; returns its id (stable until destroyed). userData is returned by queries.
-TB_API int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, int userData);
+TB_API int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, uint64_t userData);
 TB_API void tbDynamicTree_DestroyProxy(tbDynamicTree* tree, int proxyId);
 
 /// Re-insert a proxy with a new box.
@@ -541,19 +549,41 @@ TB_API void tbDynamicTree_MoveProxy(tbDynamicTree* tree, int proxyId, tbAABB aab
 /// anew by the next tbDynamicTree_Rebuild, partial or full, or by tbDynamicTree_MoveProxy.
 TB_API void tbDynamicTree_EnlargeProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb);
 
+/// A proxy's category bits (queries see them at once: the ancestors' unions are recomputed).
+TB_API void tbDynamicTree_SetCategoryBits(tbDynamicTree* tree, int proxyId, uint64_t categoryBits);
+
 /// Query callback: return false to stop.
-typedef bool tbTreeQueryCallbackFcn(int proxyId, int userData, void* context);
+typedef bool tbTreeQueryCallbackFcn(int proxyId, uint64_t userData, void* context);
 
 /// Visit every proxy whose box overlaps aabb and whose category bits share a bit with maskBits.
-TB_API void tbDynamicTree_Query(const tbDynamicTree* tree, tbAABB aabb, uint64_t maskBits,
-								tbTreeQueryCallbackFcn* callback, void* context);
+TB_API tbTreeStats tbDynamicTree_Query(const tbDynamicTree* tree, tbAABB aabb, uint64_t maskBits,
+									   tbTreeQueryCallbackFcn* callback, void* context);
+
+/// Visit every proxy whose box overlaps aabb, whatever its category bits.
+TB_API tbTreeStats tbDynamicTree_QueryAll(const tbDynamicTree* tree, tbAABB aabb, tbTreeQueryCallbackFcn* callback,
+										  void* context);
 
 /// Ray cast callback: return the new max fraction (0 stops, the input's maxFraction ignores
 /// this proxy, a smaller value clips the ray).
-typedef float tbTreeRayCastCallbackFcn(const tbRayCastInput* input, int proxyId, int userData, void* context);
+typedef float tbTreeRayCastCallbackFcn(const tbRayCastInput* input, int proxyId, uint64_t userData, void* context);
 
-TB_API void tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInput* input, uint64_t maskBits,
-								  tbTreeRayCastCallbackFcn* callback, void* context);
+TB_API tbTreeStats tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInput* input, uint64_t maskBits,
+										 tbTreeRayCastCallbackFcn* callback, void* context);
+
+/// A box swept along translation, up to maxFraction of it.
+typedef struct tbBoxCastInput
+{
+	tbAABB box;
+	tbVec2 translation;
+	float maxFraction;
+} tbBoxCastInput;
+
+/// Box cast callback: as the ray cast's.
+typedef float tbTreeBoxCastCallbackFcn(const tbBoxCastInput* input, int proxyId, uint64_t userData, void* context);
+
+/// Visit the proxies whose boxes the swept box may touch, nearest-first clipping as the ray cast.
+TB_API tbTreeStats tbDynamicTree_BoxCast(const tbDynamicTree* tree, const tbBoxCastInput* input, uint64_t maskBits,
+										 tbTreeBoxCastCallbackFcn* callback, void* context);
 
 /// Height of the tree (a single leaf has height 0).
 TB_API int tbDynamicTree_GetHeight(const tbDynamicTree* tree);
@@ -563,13 +593,20 @@ TB_API float tbDynamicTree_GetAreaRatio(const tbDynamicTree* tree);
 
 /// Check parent links, child boxes inside parents, stored heights and counts. True when valid.
 TB_API bool tbDynamicTree_Validate(const tbDynamicTree* tree);
+/// Validate, and no proxy grown in place is waiting for a rebuild. True when both hold.
+TB_API bool tbDynamicTree_ValidateNoEnlarged(const tbDynamicTree* tree);
+/// Box of the whole tree (an empty box at the origin when it has no proxy).
+TB_API tbAABB tbDynamicTree_GetRootBounds(const tbDynamicTree* tree);
+TB_API int tbDynamicTree_GetProxyCount(const tbDynamicTree* tree);
+/// Bytes the tree holds (nodes and rebuild scratch).
+TB_API int tbDynamicTree_GetByteCount(const tbDynamicTree* tree);
 
 /// Rebuild the tree top-down, splitting by tree->rebuildSplit: all of it when fullBuild, else
 /// only above the subtrees that hold no proxy grown by tbDynamicTree_EnlargeProxy since the last
 /// rebuild (those are kept whole). Returns the number of leaves and kept subtrees it placed.
 TB_API int tbDynamicTree_Rebuild(tbDynamicTree* tree, bool fullBuild);
 
-TB_API int tbDynamicTree_GetUserData(const tbDynamicTree* tree, int proxyId);
+TB_API uint64_t tbDynamicTree_GetUserData(const tbDynamicTree* tree, int proxyId);
 TB_API tbAABB tbDynamicTree_GetAABB(const tbDynamicTree* tree, int proxyId);
 TB_API uint64_t tbDynamicTree_GetCategoryBits(const tbDynamicTree* tree, int proxyId);
 
