@@ -91,5 +91,5 @@ void Character_Step(Character* c, tbWorldId world, float moveSpeed, bool jump, f
 	c->onGround = planes.onGround;
 	c->planeCount = planes.count;
 	tbTransform pose = {c->position, tb_rot_identity};
-	tbBody_SetTargetTransform(c->body, pose, dt);
+	tbBody_SetTargetTransform(c->body, pose, dt, true);
 }

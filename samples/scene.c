@@ -517,7 +517,7 @@ bool SceneWorld_Step(SceneWorld* world, const Scene* scene, int subSteps)
 		tbTransform target;
 		if (Scene_DriveTarget(scene, index, world->stepIndex, &target))
 		{
-			tbBody_SetTargetTransform(world->bodyIds[index], target, scene->timeStep);
+			tbBody_SetTargetTransform(world->bodyIds[index], target, scene->timeStep, true);
 		}
 	}
 	world->stepIndex += 1;

@@ -20,6 +20,7 @@ tbBodyDef tbDefaultBodyDef(void)
 	def.gravityScale = 1.0f;
 	def.sleepThreshold = TB_LINEAR_SLEEP_TOLERANCE;
 	def.enableSleep = true;
+	def.enableContactRecycling = true;
 	def.isAwake = true;
 	def.internalValue = TB_BODY_DEF_MAGIC;
 	return def;
@@ -199,6 +200,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->fixedRotation = def->fixedRotation || def->motionLocks.angularZ;
 	body->lockLinearX = def->motionLocks.linearX;
 	body->lockLinearY = def->motionLocks.linearY;
+	body->enableContactRecycling = def->enableContactRecycling;
 	world->linearLockCount += body->lockLinearX || body->lockLinearY ? 1 : 0;
 	body->isBullet = def->isBullet;
 	body->headShapeId = TB_NULL_INDEX;
@@ -701,7 +703,7 @@ static bool tbTargetVelocity(const tbBody* body, tbTransform target, float timeS
 	return tbIsValidVec2(*v) && tbIsValidFloat(*w);
 }
 
-bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeStep)
+bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeStep, bool wake)
 {
 	const char* f = "tbBody_SetTargetTransform";
 	tbWorld* world;
@@ -731,8 +733,14 @@ bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeSt
 		return false;
 	}
 	w = body->fixedRotation ? 0.0f : w;
-	if (tbDot(v, v) > 0.0f || w != 0.0f)
+	if (body->awakeIndex == TB_NULL_INDEX)
 	{
+		// Asleep: the speed of its fastest point decides, as the sleep test's does.
+		float speed = tbLength(v) + body->maxExtent * tbAbsFloat(w);
+		if (wake == false || speed < body->sleepThreshold)
+		{
+			return true;
+		}
 		tbWakeBody(world, body);
 	}
 	body->linearVelocity = v;
@@ -1193,6 +1201,21 @@ tbMotionLocks tbBody_GetMotionLocks(tbBodyId bodyId)
 		locks.angularZ = body->fixedRotation;
 	}
 	return locks;
+}
+
+void tbBody_EnableContactRecycling(tbBodyId bodyId, bool flag)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_EnableContactRecycling", NULL, true);
+	if (body != NULL)
+	{
+		body->enableContactRecycling = flag;
+	}
+}
+
+bool tbBody_IsContactRecyclingEnabled(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_IsContactRecyclingEnabled", NULL, false);
+	return body != NULL && body->enableContactRecycling;
 }
 
 void tbBody_SetUserData(tbBodyId bodyId, void* userData)

@@ -505,7 +505,8 @@ static float tbRelativeMotion(tbTransform relative0, tbTransform relative, const
 static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin)
 {
 	const tbManifoldBase* base = &contact->base;
-	if ((contact->flags & tb_contactRecyclable) == 0 || bodyA->isFast || bodyB->isFast)
+	if ((contact->flags & tb_contactRecyclable) == 0 || bodyA->isFast || bodyB->isFast ||
+		bodyA->enableContactRecycling == false || bodyB->enableContactRecycling == false)
 	{
 		return false;
 	}

@@ -354,8 +354,22 @@ bool tbCheckGeometry(const char* f, const tbGeometry* g)
 		case tb_polygonShape:
 			return tbCheckPolygon(f, &g->polygon);
 		case tb_chainSegmentShape:
-			tbReportError(f, "geometry->type is a chain segment; chain segments are made by tbCreateChain");
-			return false;
+			// A segment with its ghost points (an orphan, tbCreateChainSegmentShape; a chain makes its own).
+			if (tbCheckCoordinate(f, "chainSegment->ghost1", g->chainSegment.ghost1) == false ||
+				tbCheckCoordinate(f, "chainSegment->segment.point1", g->chainSegment.segment.point1) == false ||
+				tbCheckCoordinate(f, "chainSegment->segment.point2", g->chainSegment.segment.point2) == false ||
+				tbCheckCoordinate(f, "chainSegment->ghost2", g->chainSegment.ghost2) == false)
+			{
+				return false;
+			}
+			if (tbDistanceSquared(g->chainSegment.segment.point1, g->chainSegment.segment.point2) <
+				TB_LINEAR_SLOP * TB_LINEAR_SLOP)
+			{
+				tbReportError(f, "chain segment points are closer than %g m; give the segment a length",
+							  (double)TB_LINEAR_SLOP);
+				return false;
+			}
+			return true;
 		default:
 			tbReportError(f, "geometry->type is %d; use a tbShapeType value", (int)g->type);
 			return false;
@@ -482,6 +496,20 @@ tbShapeId tbCreatePolygonShape(tbBodyId bodyId, const tbShapeDef* def, const tbP
 	g.type = tb_polygonShape;
 	g.polygon = *polygon;
 	return tbCreateShapeInternal(bodyId, def, &g, "tbCreatePolygonShape");
+}
+
+tbShapeId tbCreateChainSegmentShape(tbBodyId bodyId, const tbShapeDef* def, const tbChainSegment* chainSegment)
+{
+	if (tbCheckPointer("tbCreateChainSegmentShape", "chainSegment", chainSegment) == false)
+	{
+		return TB_NULL_SHAPE_ID;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_chainSegmentShape;
+	g.chainSegment = *chainSegment;
+	g.chainSegment.chainId = TB_NULL_INDEX; // an orphan: no chain owns it
+	return tbCreateShapeInternal(bodyId, def, &g, "tbCreateChainSegmentShape");
 }
 
 tbShapeId tbCreateSegmentShape(tbBodyId bodyId, const tbShapeDef* def, const tbSegment* segment)
@@ -715,6 +743,20 @@ bool tbShape_SetSegment(tbShapeId shapeId, const tbSegment* segment)
 	g.type = tb_segmentShape;
 	g.segment = *segment;
 	return tbSetGeometry(shapeId, &g, "tbShape_SetSegment");
+}
+
+bool tbShape_SetChainSegment(tbShapeId shapeId, const tbChainSegment* chainSegment)
+{
+	if (tbCheckPointer("tbShape_SetChainSegment", "chainSegment", chainSegment) == false)
+	{
+		return false;
+	}
+	tbGeometry g;
+	memset(&g, 0, sizeof(g));
+	g.type = tb_chainSegmentShape;
+	g.chainSegment = *chainSegment;
+	g.chainSegment.chainId = TB_NULL_INDEX; // the result is an orphan (a chain's own segments are refused)
+	return tbSetGeometry(shapeId, &g, "tbShape_SetChainSegment");
 }
 
 bool tbShape_SetPolygon(tbShapeId shapeId, const tbPolygon* polygon)

@@ -128,13 +128,48 @@ static bool tbCheckWorkers(const tbWorldDef* def, const char* f)
 		tbReportError(f, "def->enqueueTask and def->finishTask must be given together (or neither)");
 		return false;
 	}
-	if (def->workerCount > 1 && def->enqueueTask == NULL)
+	return true; // without task callbacks the step runs on the caller, whatever the count
+}
+
+/// Capacities are counts: ≥ 0, and small enough that the reserved arrays fit an int of bytes.
+static bool tbCheckCapacity(const char* f, const tbCapacity* c)
+{
+	const int counts[5] = {c->staticShapeCount, c->dynamicShapeCount, c->staticBodyCount, c->dynamicBodyCount,
+						   c->contactCount};
+	const char* const names[5] = {"staticShapeCount", "dynamicShapeCount", "staticBodyCount", "dynamicBodyCount",
+								  "contactCount"};
+	for (int i = 0; i < 5; ++i)
 	{
-		tbReportError(f, "def->workerCount is %d without task callbacks; set enqueueTask and finishTask or use 1",
-					  def->workerCount);
-		return false;
+		if (counts[i] < 0 || counts[i] > (1 << 22))
+		{
+			tbReportError(f, "def->capacity.%s is %d; it must be between 0 and %d", names[i], counts[i], 1 << 22);
+			return false;
+		}
 	}
 	return true;
+}
+
+/// Room for the expected counts (tbCapacity), so that reaching them allocates nothing more.
+static void tbReserveCapacity(tbWorld* world, const tbCapacity* c)
+{
+	int bodies = c->staticBodyCount + c->dynamicBodyCount;
+	int shapes = c->staticShapeCount + c->dynamicShapeCount;
+	if (bodies > 0)
+	{
+		TB_ARRAY_RESERVE(world->bodies, world->bodyCapacity, bodies);
+	}
+	if (c->dynamicBodyCount > 0)
+	{
+		TB_ARRAY_RESERVE(world->awakeBodies, world->awakeBodyCapacity, c->dynamicBodyCount);
+	}
+	if (shapes > 0)
+	{
+		TB_ARRAY_RESERVE(world->shapes, world->shapeCapacity, shapes);
+	}
+	if (c->contactCount > 0)
+	{
+		TB_ARRAY_RESERVE(world->contacts, world->contactCapacity, c->contactCount);
+	}
 }
 
 static bool tbCheckWorldDef(const tbWorldDef* def)
@@ -156,7 +191,8 @@ static bool tbCheckWorldDef(const tbWorldDef* def)
 		   tbCheckPositive(f, "def->contactHertz", def->contactHertz) &&
 		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
 		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
-		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f) && tbCheckWorkers(def, f);
+		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f) && tbCheckWorkers(def, f) &&
+		   tbCheckCapacity(f, &def->capacity);
 }
 
 /// Auto starts with the dynamic tree: it costs nothing for sleeping and static bodies, handles any
@@ -297,6 +333,7 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	tbHashSet_Create(&world->pairSet, 64);
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
 	tbBroadPhase_SetPairFilter(&world->broadPhase, tbContactPairFilter, world);
+	tbReserveCapacity(world, &def->capacity);
 	s_worlds[slot] = world;
 	tbWorldId id = {(uint16_t)(slot + 1), world->generation};
 	return id;
@@ -879,4 +916,20 @@ tbCounters tbWorld_GetCounters(tbWorldId worldId)
 	world->counters.contactCount = world->contactCount;
 	world->counters.awakeBodyCount = world->awakeBodyCount;
 	return world->counters;
+}
+
+void tbWorld_SetWorkerCount(tbWorldId worldId, int count)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_SetWorkerCount");
+	if (world == NULL || tbStructureLocked(world, "tbWorld_SetWorkerCount", "change the worker count"))
+	{
+		return;
+	}
+	world->def.workerCount = tbClampInt(count, 1, TB_MAX_WORKERS);
+}
+
+int tbWorld_GetWorkerCount(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetWorkerCount");
+	return world != NULL ? world->def.workerCount : 0;
 }

@@ -10,8 +10,6 @@
 
 #include "tumble/tumble.h"
 
-#define TB_NULL_INDEX (-1)
-
 // ---------------------------------------------------------------------------------------------
 // Bodies (body.c)
 
@@ -64,6 +62,7 @@ typedef struct tbBody
 	bool fixedRotation; ///< also motion lock angularZ
 	bool lockLinearX;	///< motion locks (tbMotionLocks)
 	bool lockLinearY;
+	bool enableContactRecycling;
 	bool isBullet;
 	bool isFast; ///< moved far this step: swept by continuous collision
 	bool isMarked;

@@ -540,7 +540,7 @@ Test(target_transform, kinematic_body_reaches_target_in_one_step)
 	tbWorldId world = MakeWeightlessWorld();
 	tbBodyId body = MakeDrivenBox(world, tb_kinematicBody, tbMakeVec2(1.0f, 2.0f), 0.3f, tb_vec2_zero);
 	tbTransform target = {tbMakeVec2(1.5f, 1.8f), tbMakeRot(0.35f)};
-	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT));
+	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT, true));
 	// v = Δp/Δt, ω = Δθ/Δt (the body's centre is its origin)
 	float turn = AngleBetween(tbMakeRot(0.3f), target.q);
 	cr_assert_float_eq(tbBody_GetLinearVelocity(body).x, 0.5f / TARGET_DT, 1e-3f);
@@ -566,7 +566,7 @@ Test(target_transform, turns_the_short_way_across_pi)
 	tbWorldId world = MakeWeightlessWorld();
 	tbBodyId body = MakeDrivenBox(world, tb_kinematicBody, tbMakeVec2(0.0f, 0.0f), 3.0f, tb_vec2_zero);
 	tbTransform target = {tbMakeVec2(0.0f, 0.0f), tbMakeRot(-3.0f)};
-	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT));
+	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT, true));
 	float turn = 2.0f * TB_PI - 6.0f;
 	cr_assert_float_eq(tbBody_GetAngularVelocity(body) * TARGET_DT, turn, 1e-5f);
 	cr_assert(tbWorld_Step(world, TARGET_DT, TARGET_SUB_STEPS));
@@ -586,7 +586,7 @@ Test(target_transform, offset_centre_of_mass_aims_the_centre)
 	tbVec2 local = tbMakeVec2(1.0f, 0.0f);
 	tbBodyId body = MakeDrivenBox(world, tb_dynamicBody, tbMakeVec2(-2.0f, 1.0f), 0.0f, local);
 	tbTransform target = {tbMakeVec2(-1.0f, 1.5f), tbMakeRot(0.04f)};
-	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT));
+	cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT, true));
 	cr_assert(tbWorld_Step(world, TARGET_DT, TARGET_SUB_STEPS));
 	tbVec2 centre = tbBody_GetWorldCenterOfMass(body);
 	tbVec2 targetCentre = tbTransformPoint(target, local);
@@ -610,7 +610,7 @@ Test(target_transform, follows_a_path_step_after_step)
 	{
 		tbTransform target = {tbMakeVec2(4.0f * sinf(2.0f * TARGET_DT * (float)k), 0.0f), tb_rot_identity};
 		tbVec2 before = tbBody_GetPosition(body);
-		cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT));
+		cr_assert(tbBody_SetTargetTransform(body, target, TARGET_DT, true));
 		cr_assert(tbWorld_Step(world, TARGET_DT, TARGET_SUB_STEPS));
 		tbVec2 p = tbBody_GetPosition(body);
 		cr_assert_float_eq(p.x, target.p.x, PositionTolerance(before, target.p), "step %d: %.9g vs %.9g", k, (double)p.x,
@@ -627,10 +627,10 @@ Test(target_transform, wakes_a_sleeping_body_only_to_move_it)
 	tbBody_SetAwake(body, false);
 	cr_assert_not(tbBody_IsAwake(body));
 	tbTransform here = {tbMakeVec2(0.0f, 0.0f), tb_rot_identity};
-	cr_assert(tbBody_SetTargetTransform(body, here, TARGET_DT));
+	cr_assert(tbBody_SetTargetTransform(body, here, TARGET_DT, true));
 	cr_assert_not(tbBody_IsAwake(body), "the target is where the body is: nothing to move");
 	tbTransform there = {tbMakeVec2(0.1f, 0.0f), tb_rot_identity};
-	cr_assert(tbBody_SetTargetTransform(body, there, TARGET_DT));
+	cr_assert(tbBody_SetTargetTransform(body, there, TARGET_DT, true));
 	cr_assert(tbBody_IsAwake(body));
 	tbDestroyWorld(world);
 }
@@ -644,36 +644,36 @@ Test(bad_input, target_transform_rejected, .init = SetupErrors, .fini = Teardown
 	tbTransform infPosition = {tbMakeVec2(1.0f, INFINITY), tb_rot_identity};
 	tbTransform longRotation = {tbMakeVec2(1.0f, 2.0f), {2.0f, 0.0f}};
 	tbTransform nanRotation = {tbMakeVec2(1.0f, 2.0f), {NAN, 0.0f}};
-	cr_assert_not(tbBody_SetTargetTransform(f.body, nanPosition, TARGET_DT));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, nanPosition, TARGET_DT, true));
 	ExpectError(n, "tbBody_SetTargetTransform", "target.p");
-	cr_assert_not(tbBody_SetTargetTransform(f.body, infPosition, TARGET_DT));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, infPosition, TARGET_DT, true));
 	ExpectError(n + 1, "tbBody_SetTargetTransform", "target.p");
-	cr_assert_not(tbBody_SetTargetTransform(f.body, longRotation, TARGET_DT));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, longRotation, TARGET_DT, true));
 	ExpectError(n + 2, "tbBody_SetTargetTransform", "target.q");
-	cr_assert_not(tbBody_SetTargetTransform(f.body, nanRotation, TARGET_DT));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, nanRotation, TARGET_DT, true));
 	ExpectError(n + 3, "tbBody_SetTargetTransform", "target.q");
-	cr_assert_not(tbBody_SetTargetTransform(f.body, good, 0.0f));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, 0.0f, true));
 	ExpectError(n + 4, "tbBody_SetTargetTransform", "timeStep");
-	cr_assert_not(tbBody_SetTargetTransform(f.body, good, -TARGET_DT));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, -TARGET_DT, true));
 	ExpectError(n + 5, "tbBody_SetTargetTransform", "timeStep");
-	cr_assert_not(tbBody_SetTargetTransform(f.body, good, NAN));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, NAN, true));
 	ExpectError(n + 6, "tbBody_SetTargetTransform", "timeStep");
-	cr_assert_not(tbBody_SetTargetTransform(f.body, good, INFINITY));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, INFINITY, true));
 	ExpectError(n + 7, "tbBody_SetTargetTransform", "timeStep");
 	// a step so short that the velocity overflows: 2 m in 1e-39 s
-	cr_assert_not(tbBody_SetTargetTransform(f.body, good, 1e-39f));
+	cr_assert_not(tbBody_SetTargetTransform(f.body, good, 1e-39f, true));
 	ExpectError(n + 8, "tbBody_SetTargetTransform", "timeStep");
 	cr_assert_float_eq(tbBody_GetAngularVelocity(f.body), 0.0f, 0.0f);
 	ExpectUnchanged(f.before, TakeSnapshot(f.world, f.body));
 	// a static body cannot be driven
 	tbBodyDef def = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(f.world, &def);
-	cr_assert_not(tbBody_SetTargetTransform(ground, good, TARGET_DT));
+	cr_assert_not(tbBody_SetTargetTransform(ground, good, TARGET_DT, true));
 	ExpectError(n + 9, "tbBody_SetTargetTransform", "static");
 	// a destroyed body's id is refused
 	tbBodyId doomed = MakeBall(f.world, tbMakeVec2(5.0f, 0.0f), tb_vec2_zero);
 	tbDestroyBody(doomed);
-	cr_assert_not(tbBody_SetTargetTransform(doomed, good, TARGET_DT));
+	cr_assert_not(tbBody_SetTargetTransform(doomed, good, TARGET_DT, true));
 	ExpectError(n + 10, "tbBody_SetTargetTransform", "destroyed");
 	tbDestroyWorld(f.world);
 }

@@ -33,6 +33,9 @@ extern "C" {
 #define TB_ZERO_INIT {0}
 #endif
 
+/// The null index (Box2D v3's B2_NULL_INDEX): no proxy, no node, no entry.
+#define TB_NULL_INDEX (-1)
+
 /// Library version (semantic versioning).
 typedef struct tbVersion
 {

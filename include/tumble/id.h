@@ -69,6 +69,14 @@ typedef struct tbContactId
 #define TB_NULL_CONTACT_ID ((tbContactId){0})
 #endif
 
+/// Null ids as constants (Box2D v3's b2_nullBodyId and the rest).
+static const tbWorldId tb_nullWorldId = TB_ZERO_INIT;
+static const tbBodyId tb_nullBodyId = TB_ZERO_INIT;
+static const tbShapeId tb_nullShapeId = TB_ZERO_INIT;
+static const tbChainId tb_nullChainId = TB_ZERO_INIT;
+static const tbJointId tb_nullJointId = TB_ZERO_INIT;
+static const tbContactId tb_nullContactId = TB_ZERO_INIT;
+
 /// True if the id is null (all zero). A non-null id may still be stale: use tbBody_IsValid etc.
 #define TB_IS_NULL(id) ((id).index1 == 0)
 #define TB_IS_NON_NULL(id) ((id).index1 != 0)

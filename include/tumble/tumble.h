@@ -19,6 +19,10 @@ extern "C" {
 /// Create a world. Returns a null id and reports an error on a bad definition or when
 /// TB_MAX_WORLDS exist.
 TB_API tbWorldId tbCreateWorld(const tbWorldDef* def);
+/// Workers the step may use from now on, clamped to [1, TB_MAX_WORKERS]; without task callbacks
+/// the step runs on the caller whatever the count. Not while the world steps or is queried.
+TB_API void tbWorld_SetWorkerCount(tbWorldId worldId, int count);
+TB_API int tbWorld_GetWorkerCount(tbWorldId worldId);
 
 /// Destroy a world and everything in it. Its body, shape and joint ids become stale.
 TB_API void tbDestroyWorld(tbWorldId worldId);
@@ -179,9 +183,11 @@ TB_API bool tbBody_SetAngularVelocity(tbBodyId bodyId, float angularVelocity);
 /// angle takes the shortest way (|turn| ≤ π). The position is reached to rounding; the rotation
 /// integrator turns n sub-steps by n·atan(θ/n), short of the turn θ by at most |θ|³/(3n²). The
 /// step's clamps bound one step's travel (turn ≤ TB_MAX_ROTATION, speed ≤ maximumLinearSpeed).
-/// Refused (false, error hook, nothing changed): stale id, locked world, static body, non-finite
-/// or non-unit target, timeStep not finite and > 0.
-TB_API bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeStep);
+/// A sleeping body is woken to move when wake is true and the motion is not slower than its sleep
+/// threshold (a target it would creep to leaves it asleep); with wake false it stays asleep and
+/// unchanged. Refused (false, error hook, nothing changed): stale id, locked world, static body,
+/// non-finite or non-unit target, timeStep not finite and > 0.
+TB_API bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeStep, bool wake);
 
 TB_API bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbVec2 point, bool wake);
 TB_API bool tbBody_ApplyForceToCenter(tbBodyId bodyId, tbVec2 force, bool wake);
@@ -227,6 +233,9 @@ TB_API tbVec2 tbBody_GetLocalPointVelocity(tbBodyId bodyId, tbVec2 localPoint);
 TB_API bool tbBody_IsBullet(tbBodyId bodyId);
 TB_API void tbBody_SetBullet(tbBodyId bodyId, bool flag);
 TB_API void tbBody_SetFixedRotation(tbBodyId bodyId, bool flag);
+/// Manifold recycling for this body's contacts (tbBodyDef::enableContactRecycling), from the next step.
+TB_API void tbBody_EnableContactRecycling(tbBodyId bodyId, bool flag);
+TB_API bool tbBody_IsContactRecyclingEnabled(tbBodyId bodyId);
 /// Locks (tbMotionLocks); angularZ is fixedRotation. Wakes the body.
 TB_API void tbBody_SetMotionLocks(tbBodyId bodyId, tbMotionLocks locks);
 TB_API tbMotionLocks tbBody_GetMotionLocks(tbBodyId bodyId);
@@ -253,6 +262,9 @@ TB_API tbAABB tbBody_ComputeAABB(tbBodyId bodyId);
 TB_API tbShapeId tbCreateCircleShape(tbBodyId bodyId, const tbShapeDef* def, const tbCircle* circle);
 TB_API tbShapeId tbCreateCapsuleShape(tbBodyId bodyId, const tbShapeDef* def, const tbCapsule* capsule);
 TB_API tbShapeId tbCreatePolygonShape(tbBodyId bodyId, const tbShapeDef* def, const tbPolygon* polygon);
+/// A one-sided segment with ghost points that no chain owns (tbShape_GetParentChain: null); the
+/// caller keeps its neighbours' ghosts consistent. Its chainId is ignored (set to TB_NULL_INDEX).
+TB_API tbShapeId tbCreateChainSegmentShape(tbBodyId bodyId, const tbShapeDef* def, const tbChainSegment* chainSegment);
 TB_API tbShapeId tbCreateSegmentShape(tbBodyId bodyId, const tbShapeDef* def, const tbSegment* segment);
 /// Any shape from a tagged union.
 TB_API tbShapeId tbCreateShape(tbBodyId bodyId, const tbShapeDef* def, const tbGeometry* geometry);
@@ -274,6 +286,8 @@ TB_API tbPolygon tbShape_GetPolygon(tbShapeId shapeId);
 TB_API bool tbShape_SetCircle(tbShapeId shapeId, const tbCircle* circle);
 TB_API bool tbShape_SetCapsule(tbShapeId shapeId, const tbCapsule* capsule);
 TB_API bool tbShape_SetSegment(tbShapeId shapeId, const tbSegment* segment);
+/// Make the shape an orphan chain segment (or update one); a segment owned by a chain is refused.
+TB_API bool tbShape_SetChainSegment(tbShapeId shapeId, const tbChainSegment* chainSegment);
 TB_API bool tbShape_SetPolygon(tbShapeId shapeId, const tbPolygon* polygon);
 /// Events at run time (the shape def's enable*Events): existing contacts follow at once.
 TB_API void tbShape_EnableContactEvents(tbShapeId shapeId, bool flag);

@@ -85,6 +85,17 @@ typedef void* tbEnqueueTaskCallback(tbTaskCallback* task, int itemCount, int min
 typedef void tbFinishTaskCallback(void* userTask, void* userContext);
 
 /// World definition: start from tbDefaultWorldDef().
+/// Expected sizes (Box2D v3.2's b2Capacity): the world reserves room for them when it is created,
+/// so that filling it up to these counts allocates nothing more. Zero: grow as needed.
+typedef struct tbCapacity
+{
+	int staticShapeCount;
+	int dynamicShapeCount; ///< dynamic and kinematic
+	int staticBodyCount;
+	int dynamicBodyCount; ///< dynamic and kinematic
+	int contactCount;
+} tbCapacity;
+
 typedef struct tbWorldDef
 {
 	tbVec2 gravity;					///< m/s², default (0, −10)
@@ -116,7 +127,8 @@ typedef struct tbWorldDef
 									///< bodies (Newton's cradle). Default false (docs/methods.md)
 	tbFrictionCallback* frictionCallback;
 	tbRestitutionCallback* restitutionCallback;
-	int workerCount;					///< 1 to TB_MAX_WORKERS, default 1; more needs both task callbacks
+	tbCapacity capacity;				///< expected sizes: room reserved at creation (default all 0)
+	int workerCount;					///< 1 to TB_MAX_WORKERS, default 1; used with the task callbacks
 	tbEnqueueTaskCallback* enqueueTask; ///< the game's task system, or NULL: the step runs on the caller
 	tbFinishTaskCallback* finishTask;
 	void* userTaskContext;
@@ -162,6 +174,8 @@ typedef struct tbBodyDef
 	bool isAwake;			///< default true
 	bool fixedRotation;		///< default false; the same as motionLocks.angularZ (either locks rotation)
 	tbMotionLocks motionLocks; ///< default none
+	bool enableContactRecycling; ///< default true; false: its contacts never reuse an old manifold
+								 ///< (tbWorldDef::enableManifoldRecycling), e.g. a character
 	bool isBullet;			///< swept against dynamic bodies too, default false
 	int internalValue;
 } tbBodyDef;
@@ -569,6 +583,149 @@ typedef enum tbHexColor
 	tb_colorAABB = 0xB07AA1,
 	tb_colorTree = 0xBAB0AC,
 	tb_colorJoint = 0x8FBC8F,
+
+	// The named colours of SVG and CSS (W3C CSS Color Module Level 3), as Box2D v3 names them.
+	tb_colorAliceBlue = 0xF0F8FF,
+	tb_colorAntiqueWhite = 0xFAEBD7,
+	tb_colorAqua = 0x00FFFF,
+	tb_colorAquamarine = 0x7FFFD4,
+	tb_colorAzure = 0xF0FFFF,
+	tb_colorBeige = 0xF5F5DC,
+	tb_colorBisque = 0xFFE4C4,
+	tb_colorBlack = 0x000000,
+	tb_colorBlanchedAlmond = 0xFFEBCD,
+	tb_colorBlue = 0x0000FF,
+	tb_colorBlueViolet = 0x8A2BE2,
+	tb_colorBrown = 0xA52A2A,
+	tb_colorBurlywood = 0xDEB887,
+	tb_colorCadetBlue = 0x5F9EA0,
+	tb_colorChartreuse = 0x7FFF00,
+	tb_colorChocolate = 0xD2691E,
+	tb_colorCoral = 0xFF7F50,
+	tb_colorCornflowerBlue = 0x6495ED,
+	tb_colorCornsilk = 0xFFF8DC,
+	tb_colorCrimson = 0xDC143C,
+	tb_colorCyan = 0x00FFFF,
+	tb_colorDarkBlue = 0x00008B,
+	tb_colorDarkCyan = 0x008B8B,
+	tb_colorDarkGoldenRod = 0xB8860B,
+	tb_colorDarkGray = 0xA9A9A9,
+	tb_colorDarkGreen = 0x006400,
+	tb_colorDarkKhaki = 0xBDB76B,
+	tb_colorDarkMagenta = 0x8B008B,
+	tb_colorDarkOliveGreen = 0x556B2F,
+	tb_colorDarkOrange = 0xFF8C00,
+	tb_colorDarkOrchid = 0x9932CC,
+	tb_colorDarkRed = 0x8B0000,
+	tb_colorDarkSalmon = 0xE9967A,
+	tb_colorDarkSeaGreen = 0x8FBC8F,
+	tb_colorDarkSlateBlue = 0x483D8B,
+	tb_colorDarkSlateGray = 0x2F4F4F,
+	tb_colorDarkTurquoise = 0x00CED1,
+	tb_colorDarkViolet = 0x9400D3,
+	tb_colorDeepPink = 0xFF1493,
+	tb_colorDeepSkyBlue = 0x00BFFF,
+	tb_colorDimGray = 0x696969,
+	tb_colorDodgerBlue = 0x1E90FF,
+	tb_colorFireBrick = 0xB22222,
+	tb_colorFloralWhite = 0xFFFAF0,
+	tb_colorForestGreen = 0x228B22,
+	tb_colorFuchsia = 0xFF00FF,
+	tb_colorGainsboro = 0xDCDCDC,
+	tb_colorGhostWhite = 0xF8F8FF,
+	tb_colorGold = 0xFFD700,
+	tb_colorGoldenRod = 0xDAA520,
+	tb_colorGray = 0x808080,
+	tb_colorGreen = 0x008000,
+	tb_colorGreenYellow = 0xADFF2F,
+	tb_colorHoneyDew = 0xF0FFF0,
+	tb_colorHotPink = 0xFF69B4,
+	tb_colorIndianRed = 0xCD5C5C,
+	tb_colorIndigo = 0x4B0082,
+	tb_colorIvory = 0xFFFFF0,
+	tb_colorKhaki = 0xF0E68C,
+	tb_colorLavender = 0xE6E6FA,
+	tb_colorLavenderBlush = 0xFFF0F5,
+	tb_colorLawnGreen = 0x7CFC00,
+	tb_colorLemonChiffon = 0xFFFACD,
+	tb_colorLightBlue = 0xADD8E6,
+	tb_colorLightCoral = 0xF08080,
+	tb_colorLightCyan = 0xE0FFFF,
+	tb_colorLightGoldenRodYellow = 0xFAFAD2,
+	tb_colorLightGray = 0xD3D3D3,
+	tb_colorLightGreen = 0x90EE90,
+	tb_colorLightPink = 0xFFB6C1,
+	tb_colorLightSalmon = 0xFFA07A,
+	tb_colorLightSeaGreen = 0x20B2AA,
+	tb_colorLightSkyBlue = 0x87CEFA,
+	tb_colorLightSlateGray = 0x778899,
+	tb_colorLightSteelBlue = 0xB0C4DE,
+	tb_colorLightYellow = 0xFFFFE0,
+	tb_colorLime = 0x00FF00,
+	tb_colorLimeGreen = 0x32CD32,
+	tb_colorLinen = 0xFAF0E6,
+	tb_colorMagenta = 0xFF00FF,
+	tb_colorMaroon = 0x800000,
+	tb_colorMediumAquaMarine = 0x66CDAA,
+	tb_colorMediumBlue = 0x0000CD,
+	tb_colorMediumOrchid = 0xBA55D3,
+	tb_colorMediumPurple = 0x9370DB,
+	tb_colorMediumSeaGreen = 0x3CB371,
+	tb_colorMediumSlateBlue = 0x7B68EE,
+	tb_colorMediumSpringGreen = 0x00FA9A,
+	tb_colorMediumTurquoise = 0x48D1CC,
+	tb_colorMediumVioletRed = 0xC71585,
+	tb_colorMidnightBlue = 0x191970,
+	tb_colorMintCream = 0xF5FFFA,
+	tb_colorMistyRose = 0xFFE4E1,
+	tb_colorMoccasin = 0xFFE4B5,
+	tb_colorNavajoWhite = 0xFFDEAD,
+	tb_colorNavy = 0x000080,
+	tb_colorOldLace = 0xFDF5E6,
+	tb_colorOlive = 0x808000,
+	tb_colorOliveDrab = 0x6B8E23,
+	tb_colorOrange = 0xFFA500,
+	tb_colorOrangeRed = 0xFF4500,
+	tb_colorOrchid = 0xDA70D6,
+	tb_colorPaleGoldenRod = 0xEEE8AA,
+	tb_colorPaleGreen = 0x98FB98,
+	tb_colorPaleTurquoise = 0xAFEEEE,
+	tb_colorPaleVioletRed = 0xDB7093,
+	tb_colorPapayaWhip = 0xFFEFD5,
+	tb_colorPeachPuff = 0xFFDAB9,
+	tb_colorPeru = 0xCD853F,
+	tb_colorPink = 0xFFC0CB,
+	tb_colorPlum = 0xDDA0DD,
+	tb_colorPowderBlue = 0xB0E0E6,
+	tb_colorPurple = 0x800080,
+	tb_colorRebeccaPurple = 0x663399,
+	tb_colorRed = 0xFF0000,
+	tb_colorRosyBrown = 0xBC8F8F,
+	tb_colorRoyalBlue = 0x4169E1,
+	tb_colorSaddleBrown = 0x8B4513,
+	tb_colorSalmon = 0xFA8072,
+	tb_colorSandyBrown = 0xF4A460,
+	tb_colorSeaGreen = 0x2E8B57,
+	tb_colorSeaShell = 0xFFF5EE,
+	tb_colorSienna = 0xA0522D,
+	tb_colorSilver = 0xC0C0C0,
+	tb_colorSkyBlue = 0x87CEEB,
+	tb_colorSlateBlue = 0x6A5ACD,
+	tb_colorSlateGray = 0x708090,
+	tb_colorSnow = 0xFFFAFA,
+	tb_colorSpringGreen = 0x00FF7F,
+	tb_colorSteelBlue = 0x4682B4,
+	tb_colorTan = 0xD2B48C,
+	tb_colorTeal = 0x008080,
+	tb_colorThistle = 0xD8BFD8,
+	tb_colorTomato = 0xFF6347,
+	tb_colorTurquoise = 0x40E0D0,
+	tb_colorViolet = 0xEE82EE,
+	tb_colorWheat = 0xF5DEB3,
+	tb_colorWhite = 0xFFFFFF,
+	tb_colorWhiteSmoke = 0xF5F5F5,
+	tb_colorYellow = 0xFFFF00,
+	tb_colorYellowGreen = 0x9ACD32,
 } tbHexColor;
 
 typedef struct tbDebugDraw
