@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Box2D v3's own public-API tests against Tumble, renamed b2 → tb and nothing else (B2_ → TB_,
+# include "box2d/box2d.h" → "tumble/tumble.h"). Nothing of Box2D is kept: the files are copied to a
+# temporary directory, built against Tumble's static library and run there.
+# Usage: scripts/port-tests.sh /path/to/box2d [BUILD_DIR]   (BUILD_DIR default build/, built first)
+# Files: test_math, test_id, test_shape, test_distance, test_dynamic_tree, test_world (with the
+# shared benchmark scenes and ragdoll it uses). test_collision is left out: it includes Box2D's
+# internal headers (aabb.h, shape.h), which no port can provide.
+set -euo pipefail
+box2d="${1:?usage: scripts/port-tests.sh /path/to/box2d [BUILD_DIR]}"
+here="$(cd "$(dirname "$0")/.." && pwd)"
+build="${2:-$here/build}"
+cmake --build "$build" --target tumble -j2 >/dev/null
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+rename() { sed -e 's/\bb2/tb/g; s/\bB2_/TB_/g; s#"box2d/box2d.h"#"tumble/tumble.h"#; s#box2d/#tumble/#g' "$1" >"$2"; }
+for f in test_math.c test_id.c test_shape.c test_distance.c test_dynamic_tree.c test_world.c test_macros.h; do
+	rename "$box2d/test/$f" "$tmp/$f"
+done
+for f in benchmarks.c benchmarks.h human.c human.h utils.c utils.h; do
+	rename "$box2d/shared/$f" "$tmp/$f"
+done
+cat >"$tmp/main.c" <<'MAIN'
+#include "test_macros.h"
+#include "tumble/tumble.h"
+int MathTest(void);
+int IdTest(void);
+int ShapeTest(void);
+int DistanceTest(void);
+int DynamicTreeTest(void);
+int WorldTest(void);
+int main(void)
+{
+	RUN_TEST(MathTest);
+	RUN_TEST(IdTest);
+	RUN_TEST(ShapeTest);
+	RUN_TEST(DistanceTest);
+	RUN_TEST(DynamicTreeTest);
+	RUN_TEST(WorldTest);
+	printf("all ported tests passed\n");
+	return 0;
+}
+MAIN
+cc -std=c17 -O1 -I"$here/include" -I"$tmp" "$tmp"/*.c "$build/libtumble.a" -lm -lpthread -o "$tmp/port-tests"
+"$tmp/port-tests"
