@@ -49,6 +49,7 @@ static void AddShape(b2BodyId body, const SceneShape* shape)
 	def.material.restitution = shape->restitution;
 	def.isSensor = shape->isSensor;
 	def.enableHitEvents = shape->enableHitEvents;
+	def.filter.groupIndex = shape->groupIndex;
 	const tbGeometry* g = &shape->geometry;
 	switch (g->type)
 	{
@@ -123,6 +124,167 @@ static b2BodyId MakeBody(b2WorldId world, const SceneBody* sb)
 	return body;
 }
 
+static b2Transform ToB2Transform(tbTransform t)
+{
+	return (b2Transform){ToB2(t.p), {t.q.c, t.q.s}};
+}
+
+// v3.2's joint definitions have the very fields of Tumble's (the same grammar), so each kind's
+// definition is copied field by field: the same constraint, only the solver differs.
+static b2JointDef ToB2JointBase(const PeerWorld* peer, const SceneJoint* sj)
+{
+	const tbJointDef* d = &sj->def.base;
+	b2JointDef base = {0};
+	base.bodyIdA = peer->bodies[sj->bodyA];
+	base.bodyIdB = peer->bodies[sj->bodyB];
+	base.localFrameA = ToB2Transform(d->localFrameA);
+	base.localFrameB = ToB2Transform(d->localFrameB);
+	base.forceThreshold = d->forceThreshold;
+	base.torqueThreshold = d->torqueThreshold;
+	base.constraintHertz = d->constraintHertz;
+	base.constraintDampingRatio = d->constraintDampingRatio;
+	base.drawScale = d->drawScale;
+	base.collideConnected = d->collideConnected;
+	return base;
+}
+
+static void AddRevolute(PeerWorld* peer, const SceneJoint* sj)
+{
+	const tbRevoluteJointDef* s = &sj->def.revolute;
+	b2RevoluteJointDef d = b2DefaultRevoluteJointDef();
+	d.base = ToB2JointBase(peer, sj);
+	d.targetAngle = s->targetAngle;
+	d.enableSpring = s->enableSpring;
+	d.hertz = s->hertz;
+	d.dampingRatio = s->dampingRatio;
+	d.enableLimit = s->enableLimit;
+	d.lowerAngle = s->lowerAngle;
+	d.upperAngle = s->upperAngle;
+	d.enableMotor = s->enableMotor;
+	d.maxMotorTorque = s->maxMotorTorque;
+	d.motorSpeed = s->motorSpeed;
+	b2CreateRevoluteJoint(peer->world, &d);
+}
+
+static void AddPrismatic(PeerWorld* peer, const SceneJoint* sj)
+{
+	const tbPrismaticJointDef* s = &sj->def.prismatic;
+	b2PrismaticJointDef d = b2DefaultPrismaticJointDef();
+	d.base = ToB2JointBase(peer, sj);
+	d.enableSpring = s->enableSpring;
+	d.hertz = s->hertz;
+	d.dampingRatio = s->dampingRatio;
+	d.targetTranslation = s->targetTranslation;
+	d.enableLimit = s->enableLimit;
+	d.lowerTranslation = s->lowerTranslation;
+	d.upperTranslation = s->upperTranslation;
+	d.enableMotor = s->enableMotor;
+	d.maxMotorForce = s->maxMotorForce;
+	d.motorSpeed = s->motorSpeed;
+	b2CreatePrismaticJoint(peer->world, &d);
+}
+
+static void AddDistance(PeerWorld* peer, const SceneJoint* sj)
+{
+	const tbDistanceJointDef* s = &sj->def.distance;
+	b2DistanceJointDef d = b2DefaultDistanceJointDef();
+	d.base = ToB2JointBase(peer, sj);
+	d.length = s->length;
+	d.enableSpring = s->enableSpring;
+	d.lowerSpringForce = s->lowerSpringForce;
+	d.upperSpringForce = s->upperSpringForce;
+	d.hertz = s->hertz;
+	d.dampingRatio = s->dampingRatio;
+	d.enableLimit = s->enableLimit;
+	d.minLength = s->minLength;
+	d.maxLength = s->maxLength;
+	d.enableMotor = s->enableMotor;
+	d.maxMotorForce = s->maxMotorForce;
+	d.motorSpeed = s->motorSpeed;
+	b2CreateDistanceJoint(peer->world, &d);
+}
+
+static void AddOtherJoint(PeerWorld* peer, const SceneJoint* sj)
+{
+	switch (sj->type)
+	{
+		case tb_weldJoint:
+		{
+			b2WeldJointDef d = b2DefaultWeldJointDef();
+			d.base = ToB2JointBase(peer, sj);
+			d.linearHertz = sj->def.weld.linearHertz;
+			d.angularHertz = sj->def.weld.angularHertz;
+			d.linearDampingRatio = sj->def.weld.linearDampingRatio;
+			d.angularDampingRatio = sj->def.weld.angularDampingRatio;
+			b2CreateWeldJoint(peer->world, &d);
+			break;
+		}
+		case tb_wheelJoint:
+		{
+			const tbWheelJointDef* s = &sj->def.wheel;
+			b2WheelJointDef d = b2DefaultWheelJointDef();
+			d.base = ToB2JointBase(peer, sj);
+			d.enableSpring = s->enableSpring;
+			d.hertz = s->hertz;
+			d.dampingRatio = s->dampingRatio;
+			d.enableLimit = s->enableLimit;
+			d.lowerTranslation = s->lowerTranslation;
+			d.upperTranslation = s->upperTranslation;
+			d.enableMotor = s->enableMotor;
+			d.maxMotorTorque = s->maxMotorTorque;
+			d.motorSpeed = s->motorSpeed;
+			b2CreateWheelJoint(peer->world, &d);
+			break;
+		}
+		case tb_motorJoint:
+		{
+			const tbMotorJointDef* s = &sj->def.motor;
+			b2MotorJointDef d = b2DefaultMotorJointDef();
+			d.base = ToB2JointBase(peer, sj);
+			d.linearVelocity = ToB2(s->linearVelocity);
+			d.maxVelocityForce = s->maxVelocityForce;
+			d.angularVelocity = s->angularVelocity;
+			d.maxVelocityTorque = s->maxVelocityTorque;
+			d.linearHertz = s->linearHertz;
+			d.linearDampingRatio = s->linearDampingRatio;
+			d.maxSpringForce = s->maxSpringForce;
+			d.angularHertz = s->angularHertz;
+			d.angularDampingRatio = s->angularDampingRatio;
+			d.maxSpringTorque = s->maxSpringTorque;
+			b2CreateMotorJoint(peer->world, &d);
+			break;
+		}
+		case tb_filterJoint:
+		{
+			b2FilterJointDef d = b2DefaultFilterJointDef();
+			d.base = ToB2JointBase(peer, sj);
+			b2CreateFilterJoint(peer->world, &d);
+			break;
+		}
+		default:
+			break;
+	}
+}
+
+static void AddJoint(PeerWorld* peer, const SceneJoint* sj)
+{
+	switch (sj->type)
+	{
+		case tb_revoluteJoint:
+			AddRevolute(peer, sj);
+			break;
+		case tb_prismaticJoint:
+			AddPrismatic(peer, sj);
+			break;
+		case tb_distanceJoint:
+			AddDistance(peer, sj);
+			break;
+		default:
+			AddOtherJoint(peer, sj);
+			break;
+	}
+}
+
 static int s_workerCount = 1;
 
 void PeerBox2D3_SetWorkerCount(int workerCount)
@@ -151,6 +313,10 @@ PeerWorld* PeerBox2D3_Create(const Scene* scene)
 		{
 			peer->driven[peer->drivenCount++] = i;
 		}
+	}
+	for (int j = 0; j < scene->jointCount; ++j)
+	{
+		AddJoint(peer, scene->joints + j);
 	}
 	return peer;
 }

@@ -4,6 +4,7 @@
 #include <chipmunk/chipmunk_private.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 struct PeerWorld
@@ -110,6 +111,12 @@ static cpBody* MakeBody(cpSpace* space, const SceneBody* sb)
 		cpShapeSetFriction(cs, sqrtf(shape->friction));
 		cpShapeSetElasticity(cs, sqrtf(shape->restitution));
 		cpShapeSetSensor(cs, shape->isSensor);
+		if (shape->groupIndex < 0)
+		{
+			// A negative group never collides with itself: Chipmunk's group does the same.
+			cpShapeSetFilter(cs, cpShapeFilterNew((cpGroup)(uintptr_t)(-shape->groupIndex), CP_ALL_CATEGORIES,
+												  CP_ALL_CATEGORIES));
+		}
 		cpSpaceAddShape(space, cs);
 	}
 	cpBodySetAngle(body, sb->angle);
@@ -120,6 +127,45 @@ static cpBody* MakeBody(cpSpace* space, const SceneBody* sb)
 		cpBodySetAngularVelocity(body, sb->angularVelocity);
 	}
 	return body;
+}
+
+// A revolute joint as Chipmunk builds one: a pivot at the two anchors (body-local, from the body
+// origin), a rotary limit on θB − θA shifted by the frames' angles (Tumble's angle is
+// (θB + φB) − (θA + φA)), and a simple motor whose rate is −motorSpeed (Chipmunk drives ωB − ωA
+// to −rate) with its torque capped by maxForce. Other kinds, and revolute springs, are not mapped:
+// such a scene is not run (false).
+static bool AddJoint(PeerWorld* peer, const SceneJoint* sj)
+{
+	if (sj->type != tb_revoluteJoint || sj->def.revolute.enableSpring)
+	{
+		return false;
+	}
+	const tbRevoluteJointDef* s = &sj->def.revolute;
+	cpBody* a = peer->bodies[sj->bodyA];
+	cpBody* b = peer->bodies[sj->bodyB];
+	if (cpBodyGetType(a) != CP_BODY_TYPE_DYNAMIC && cpBodyGetType(b) != CP_BODY_TYPE_DYNAMIC)
+	{
+		return true; // between two bodies that never move (joint_grid's top row): nothing to solve
+	}
+	tbTransform fA = s->base.localFrameA, fB = s->base.localFrameB;
+	cpConstraint* pivot = cpPivotJointNew2(a, b, ToCp(fA.p), ToCp(fB.p));
+	cpSpaceAddConstraint(peer->space, pivot);
+	float offset = atan2f(fB.q.s, fB.q.c) - atan2f(fA.q.s, fA.q.c);
+	if (s->enableLimit)
+	{
+		cpSpaceAddConstraint(peer->space, cpRotaryLimitJointNew(a, b, s->lowerAngle - offset, s->upperAngle - offset));
+	}
+	if (s->enableMotor)
+	{
+		cpConstraint* motor = cpSimpleMotorNew(a, b, -s->motorSpeed);
+		cpConstraintSetMaxForce(motor, s->maxMotorTorque);
+		cpSpaceAddConstraint(peer->space, motor);
+	}
+	if (s->base.collideConnected == false)
+	{
+		cpConstraintSetCollideBodies(pivot, cpFalse);
+	}
+	return true;
 }
 
 PeerWorld* PeerChipmunk_Create(const Scene* scene, bool useTree)
@@ -149,6 +195,16 @@ PeerWorld* PeerChipmunk_Create(const Scene* scene, bool useTree)
 		if (scene->bodies[i].drive.enabled)
 		{
 			peer->driven[peer->drivenCount++] = i;
+		}
+	}
+	for (int j = 0; j < scene->jointCount; ++j)
+	{
+		if (AddJoint(peer, scene->joints + j) == false)
+		{
+			fprintf(stderr, "chipmunk-7: joint %d (%s) is not mapped to Chipmunk; scene not run\n", j,
+					Scene_JointTypeName(scene->joints[j].type));
+			PeerChipmunk_Destroy(peer);
+			return NULL;
 		}
 	}
 	for (int i = 0; i < scene->bodyCount; ++i)

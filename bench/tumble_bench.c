@@ -470,8 +470,9 @@ static void WriteCsvRow(FILE* file, const RunResult* r, const Options* options, 
 			tumble ? options->config.subSteps : 0, tumble ? options->config.overrides.velocityIterations : 0);
 }
 
-static const char* s_defaultScenes[] = {"large_pyramid", "many_pyramids", "tumbler", "smash",	  "spinner",
-										"rain",			 "washer",		  "junkyard", "compounds"};
+static const char* s_defaultScenes[] = {"large_pyramid", "many_pyramids", "tumbler",	"smash",
+										"spinner",		 "rain",		  "washer",		"junkyard",
+										"compounds",	 "joint_grid",	  "rain_ragdolls"};
 
 static int RunScenes(const Options* options)
 {
@@ -1350,7 +1351,8 @@ static void PrintUsage(void)
 		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
 		   "       tumble-bench --list\n"
 		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain washer junkyard\n"
-		   "compounds, each at its catalogue step count, 60 Hz, 4 sub-steps for the soft solver\n"
+		   "compounds joint_grid rain_ragdolls, each at its catalogue step count, 60 Hz, 4 sub-steps\n"
+		   "for the soft solver\n"
 		   "(1 for baumgarte/ngs). --peers adds Box2D 2.4.1, Box2D v3 and Chipmunk 7 where built,\n"
 		   "--peer NAME only the peers named; --repeat rounds interleave the engines run by run,\n"
 		   "--interleave step by step (all worlds built side by side, each step timed alone).\n"

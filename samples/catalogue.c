@@ -856,6 +856,83 @@ static void AddRagdoll(Scene* scene, float x, float y, int group)
 	}
 }
 
+/// Box2D v3's joint_grid benchmark: 100 × 100 circles of radius 0.4 one metre apart, each joined
+/// by a revolute joint to the one above and the one to its left; the seven bodies at the top
+/// middle are static, so the grid hangs and swings; sleep off. v3 keeps the circles from colliding
+/// with one another by category (2) and mask (~2); here they share a negative collision group,
+/// which keeps the same pairs apart (the broad phase still reports the neighbours the mask would
+/// have pruned, and the pair filter drops them).
+static Scene* BuildJointGrid(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 300;
+	scene->enableSleep = false;
+	const int n = 100;
+	for (int k = 0; k < n; ++k)
+	{
+		for (int i = 0; i < n; ++i)
+		{
+			bool anchored = k >= n / 2 - 3 && k <= n / 2 + 3 && i == 0;
+			int body = AddCircleBody(scene, anchored ? tb_staticBody : tb_dynamicBody, V((float)k, -(float)i), 0.4f,
+									 1.0f, 0.6f);
+			scene->bodies[body].shapes[0].groupIndex = -1;
+			if (i > 0)
+			{
+				SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, body - 1, body);
+				joint->def.base.localFrameA.p = V(0.0f, -0.5f);
+				joint->def.base.localFrameB.p = V(0.0f, 0.5f);
+				joint->def.base.drawScale = 0.4f;
+			}
+			if (k > 0)
+			{
+				SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, body - n, body);
+				joint->def.base.localFrameA.p = V(0.5f, 0.0f);
+				joint->def.base.localFrameB.p = V(-0.5f, 0.0f);
+				joint->def.base.drawScale = 0.4f;
+			}
+		}
+	}
+	return scene;
+}
+
+/// Box2D v3's rain benchmark with jointed ragdolls: its five floors (501 static 0.5 m boxes each,
+/// 45 m apart) and 40 columns of 5 ragdolls over each floor (the catalogue's 10-bone ragdoll:
+/// capsules and a head on revolute joints with limits and 0.5 N·m friction motors). v3 drops its
+/// 11-bone humans a column at a time and recycles the oldest column; here all 1,000 ragdolls
+/// (10,000 bodies, 9,000 joints) are present from the start and fall together.
+static Scene* BuildRainRagdolls(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	const int rowCount = 5, columnCount = 40, groupSize = 5, gridCount = 500;
+	const float gridSize = 0.5f;
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	for (int i = 0; i < rowCount; ++i)
+	{
+		for (int j = 0; j <= gridCount; ++j)
+		{
+			tbVec2 center = V(-0.5f * (float)gridCount * gridSize + (float)j * gridSize, 45.0f * (float)i);
+			tbGeometry box = Scene_MakeBoxGeometry(0.5f * gridSize, 0.5f * gridSize, center, 0.0f);
+			Scene_AddGeometry(scene, ground, &box, 1.0f, 0.6f);
+		}
+	}
+	float span = (float)gridCount * gridSize;
+	float groupDistance = span / (float)columnCount;
+	int group = -1;
+	for (int row = 0; row < rowCount; ++row)
+	{
+		for (int column = 0; column < columnCount; ++column)
+		{
+			float x = -0.5f * span + groupDistance * ((float)column + 0.5f);
+			for (int k = 0; k < groupSize; ++k)
+			{
+				AddRagdoll(scene, x + 0.5f * (float)k, 41.5f + 45.0f * (float)row, group--);
+			}
+		}
+	}
+	return scene;
+}
+
 /// 24 ragdolls dropped in a pile (rows of 6, 1.5 m apart, 3 m between rows).
 static Scene* BuildRagdolls(void)
 {
@@ -1063,6 +1140,12 @@ static const CatalogueEntry s_entries[] = {
 	{"car", "a chassis on two wheel joints (5 Hz suspension, rear motor) driving over sine hills", BuildCar},
 	{"ragdolls", "24 ragdolls of 10 bodies (revolute joints with limits and friction) dropped in a pile",
 	 BuildRagdolls},
+	{"joint_grid", "Box2D v3 benchmark: 100 x 100 circles on 19,800 revolute joints hanging from 7 static bodies, "
+				   "sleep off",
+	 BuildJointGrid},
+	{"rain_ragdolls", "Box2D v3 rain benchmark with jointed ragdolls: 1,000 ragdolls of 10 bodies over five "
+					  "floors, all dropped at once",
+	 BuildRainRagdolls},
 	{"platformer", "a level: chain ground with slopes and a valley, concave ledge and cup, boxes and balls, an "
 				   "upright capsule character sent across at 8 m/s",
 	 BuildPlatformer},

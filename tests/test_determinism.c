@@ -171,11 +171,12 @@ static uint64_t RunOnWorkers(const char* name, int workers, int steps, int* even
 // The step on 1, 2, 4 and 8 workers gives the same bits: every unit of parallel work writes only
 // its own data (contacts, bodies, blocks of one colour), and everything appended or counted is
 // done afterwards in a fixed order. Scenes: rain (shapes of every kind, joints off), ragdolls
-// (joints), tumbler (a kinematic body in many blocks of one colour).
+// (small mechanisms: joint trees, whole mechanisms per unit), tumbler (a kinematic body in many
+// blocks of one colour), joint_grid (one mechanism of 19,800 joints, solved colour by colour).
 Test(determinism, identical_on_any_number_of_workers)
 {
-	const char* names[3] = {"rain", "ragdolls", "tumbler"};
-	for (int n = 0; n < 3; ++n)
+	const char* names[4] = {"rain", "ragdolls", "tumbler", "joint_grid"};
+	for (int n = 0; n < 4; ++n)
 	{
 		int events1;
 		uint64_t one = RunOnWorkers(names[n], 1, 120, &events1);
