@@ -32,6 +32,12 @@ typedef struct PeerCounters
 	int awakeBodyCount;
 } PeerCounters;
 
+/// Joints: Box2D v3 builds every kind one to one; Box2D 2.4.1 builds revolute, prismatic and wheel
+/// joints, distance joints and welds with its own (no revolute or prismatic spring, no motor or
+/// filter joint: such a scene is refused, the adapter returns NULL with a message); Chipmunk builds
+/// revolute joints (pivot, rotary limit, simple motor) and refuses the rest. Negative collision
+/// groups map to each engine's group.
+///
 /// Box2D 2.4.1: 8 velocity and 3 position iterations, continuous collision on (its default).
 /// Polygons carry Box2D's fixed 0.01 m skin (b2_polygonRadius); rounded polygons are inflated
 /// by their radius (mitred corners); capsules become two circles and a box on one body.
