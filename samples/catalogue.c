@@ -933,6 +933,101 @@ static Scene* BuildRainRagdolls(void)
 	return scene;
 }
 
+/// A door: a 0.1 × 2 m plank hinged at its bottom-left corner to the ground (revolute, limits 0 to
+/// 90°), shoved by a 2 m/s box sliding into it from the right on frictionless ground.
+static Scene* BuildDoor(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 240;
+	int ground = AddGround(scene, 20.0f, 0.0f);
+	int door = AddBoxBody(scene, tb_dynamicBody, V(0.05f, 1.0f), 0.0f, 0.05f, 1.0f, 1.0f, 0.0f);
+	SceneJoint* hinge = Scene_AddJoint(scene, tb_revoluteJoint, ground, door);
+	Scene_SetJointAnchor(scene, hinge, V(0.0f, 0.0f));
+	hinge->def.revolute.enableLimit = true;
+	hinge->def.revolute.lowerAngle = 0.0f;
+	hinge->def.revolute.upperAngle = 0.5f * TB_PI;
+	int box = AddBoxBody(scene, tb_dynamicBody, V(3.0f, 1.5f), 0.0f, 0.5f, 0.5f, 4.0f, 0.0f);
+	scene->bodies[box].linearVelocity = V(-2.0f, 0.0f);
+	scene->bodies[box].gravityScale = 0.0f; // slides at 1.5 m so it meets the door's upper half
+	return scene;
+}
+
+/// A piston: a pusher on a horizontal prismatic joint to the ground, driven by a motor at 1 m/s
+/// (200 N) between limits 0 and 4 m, pushing three boxes along the ground.
+static Scene* BuildPiston(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 300;
+	int ground = AddGround(scene, 20.0f, 0.6f);
+	int pusher = AddBoxBody(scene, tb_dynamicBody, V(-4.0f, 0.5f), 0.0f, 0.25f, 0.5f, 1.0f, 0.6f);
+	SceneJoint* slide = Scene_AddJoint(scene, tb_prismaticJoint, ground, pusher);
+	Scene_SetJointAnchor(scene, slide, V(-4.0f, 0.5f));
+	tbPrismaticJointDef* p = &slide->def.prismatic;
+	p->enableMotor = true;
+	p->motorSpeed = 1.0f;
+	p->maxMotorForce = 200.0f;
+	p->enableLimit = true;
+	p->lowerTranslation = 0.0f;
+	p->upperTranslation = 4.0f;
+	for (int i = 0; i < 3; ++i)
+	{
+		AddBoxBody(scene, tb_dynamicBody, V(-2.0f + 0.8f * (float)i, 0.35f), 0.0f, 0.35f, 0.35f, 1.0f, 0.6f);
+	}
+	return scene;
+}
+
+/// Dragging a box with the mouse, the Box2D v3.2 way: a motor joint pulls the box toward a
+/// target with a spring (4 Hz, damping ratio 0.7, at most 500 N). The target is a kinematic body
+/// (no shape) driven along x = 3 sin(t) at height 3 m, standing for the mouse.
+static Scene* BuildMouseDrag(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 600;
+	AddGround(scene, 20.0f, 0.6f);
+	int mouse = Scene_AddBody(scene, tb_kinematicBody, V(0.0f, 3.0f), 0.0f);
+	scene->bodies[mouse].drive = (SceneDrive){true, V(3.0f, 0.0f), 1.0f};
+	int box = AddBoxBody(scene, tb_dynamicBody, V(0.0f, 0.5f), 0.0f, 0.5f, 0.5f, 1.0f, 0.6f);
+	SceneJoint* drag = Scene_AddJoint(scene, tb_motorJoint, mouse, box);
+	tbMotorJointDef* m = &drag->def.motor;
+	m->linearHertz = 4.0f;
+	m->linearDampingRatio = 0.7f;
+	m->maxSpringForce = 500.0f;
+	m->angularHertz = 2.0f;
+	m->angularDampingRatio = 1.0f;
+	m->maxSpringTorque = 50.0f;
+	return scene;
+}
+
+/// Newton's cradle on joints: five balls (radius 0.25 m, restitution 1, no friction) each hanging
+/// on a rigid 2 m distance joint from a static bar, touching; the first pulled out to the side
+/// 1.5 m higher. With impact propagation (`tumble run newtons_cradle_joints --impact-propagation`)
+/// the impact passes down the row as the closed form says.
+static Scene* BuildCradleJoints(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 300;
+	int bar = Scene_AddBody(scene, tb_staticBody, V(0.0f, 4.0f), 0.0f);
+	const float r = 0.25f, length = 2.0f;
+	for (int i = 0; i < 5; ++i)
+	{
+		float x = 2.0f * r * ((float)i - 2.0f);
+		tbVec2 position = V(x, 4.0f - length);
+		if (i == 0)
+		{
+			float angle = acosf((length - 1.5f) / length); // 1.5 m up: released from rest
+			position = V(x - length * sinf(angle), 4.0f - length * cosf(angle));
+		}
+		int ball = Scene_AddBody(scene, tb_dynamicBody, position, 0.0f);
+		tbGeometry circle = Scene_MakeCircleGeometry(tb_vec2_zero, r);
+		int shape = Scene_AddGeometry(scene, ball, &circle, 1.0f, 0.0f);
+		scene->bodies[ball].shapes[shape].restitution = 1.0f;
+		SceneJoint* rod = Scene_AddJoint(scene, tb_distanceJoint, bar, ball);
+		rod->def.base.localFrameA.p = V(x, 0.0f);
+		rod->def.distance.length = length;
+	}
+	return scene;
+}
+
 /// 24 ragdolls dropped in a pile (rows of 6, 1.5 m apart, 3 m between rows).
 static Scene* BuildRagdolls(void)
 {
@@ -1140,6 +1235,13 @@ static const CatalogueEntry s_entries[] = {
 	{"car", "a chassis on two wheel joints (5 Hz suspension, rear motor) driving over sine hills", BuildCar},
 	{"ragdolls", "24 ragdolls of 10 bodies (revolute joints with limits and friction) dropped in a pile",
 	 BuildRagdolls},
+	{"door", "a door on a revolute hinge with a 0-90 deg limit, shoved open by a sliding box", BuildDoor},
+	{"piston", "a pusher on a motorised prismatic joint (1 m/s, limits 0-4 m) pushing three boxes", BuildPiston},
+	{"mouse_drag", "a box dragged by a motor joint's spring toward a moving target (Box2D v3.2's mouse drag)",
+	 BuildMouseDrag},
+	{"newtons_cradle_joints", "five balls on rigid distance joints from a bar, the first released 1.5 m up "
+							  "(run with --impact-propagation)",
+	 BuildCradleJoints},
 	{"joint_grid", "Box2D v3 benchmark: 100 x 100 circles on 19,800 revolute joints hanging from 7 static bodies, "
 				   "sleep off",
 	 BuildJointGrid},
