@@ -42,6 +42,9 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 	echo "== scenes (Tumble, Box2D 2.4.1, Box2D v3, Chipmunk 7 in one process)"
 	"$BENCH" --peers --interleave --repeat "$REPEAT" "${STEPS_ARGS[@]}" --csv "$RESULTS/scenes.csv" | grep -v '^Initializing cpSpace\|^Compile with' \
 		| tee "$RESULTS/scenes.txt"
+	echo "== jointed scenes (every peer builds the joints; 120 steps)"
+	"$BENCH" joint_grid rain_ragdolls --peers --interleave --repeat "$REPEAT" --steps 120 --csv "$RESULTS/joints.csv" \
+		| grep -v '^Initializing cpSpace\|^Compile with' | tee "$RESULTS/joints.txt"
 	echo "== sleeping bodies"
 	"$BENCH" sleep --repeat "$REPEAT" --csv "$RESULTS/sleep.csv"
 	echo "== solver chart"
@@ -56,13 +59,16 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 fi
 
 # scenes.csv (long) -> scenes_wide.csv: scene,tumble,box2d,box2d3,chipmunk (median ms per step)
+wide() {
 awk -F, 'function or_nan(v) { return v == "" ? "NaN" : v }
 	NR > 1 { if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } ms[$1, $2] = $5 }
 	END { print "scene,tumble,box2d,box2d3,chipmunk"
 		for (i = 1; i <= n; ++i) { s = order[i]
 			printf "%s,%s,%s,%s,%s\n", s, ms[s, "tumble"], or_nan(ms[s, "box2d-2.4.1"]), or_nan(ms[s, "box2d-3"]),
-				or_nan(ms[s, "chipmunk-7"]) } }' \
-	"$RESULTS/scenes.csv" >"$RESULTS/scenes_wide.csv"
+				or_nan(ms[s, "chipmunk-7"]) } }' "$1"
+}
+wide "$RESULTS/scenes.csv" >"$RESULTS/scenes_wide.csv"
+[[ -s "$RESULTS/joints.csv" ]] && wide "$RESULTS/joints.csv" >"$RESULTS/joints_wide.csv"
 
 plot() { # plot SCRIPT OUTPUT VAR=FILE...
 	local script="$1" output="$2"
@@ -72,6 +78,7 @@ plot() { # plot SCRIPT OUTPUT VAR=FILE...
 	if [[ -s "$RESULTS/${1#*=}" ]]; then gnuplot "${args[@]}" "$CHARTS/$script" && echo "docs/$output"; fi
 }
 plot scenes.gp perf_scenes.png DATA=scenes_wide.csv
+plot scenes.gp perf_joints.png DATA=joints_wide.csv
 plot solver.gp perf_solver.png DATA=solver.csv
 plot broadphase.gp perf_broadphase.png DATA=broadphase.csv
 plot narrowphase.gp perf_narrowphase.png DATA=narrowphase.csv
