@@ -50,13 +50,15 @@ typedef float tbRestitutionCallback(float restitutionA, uint64_t userMaterialIdA
 
 /// Custom filter (tbWorld_SetCustomFilterCallback): asked whether two shapes that pass their
 /// filters may collide, when either shape enables custom filtering; false keeps them apart. Called
-/// from the step's pair stage, in a fixed order, on the stepping thread; the world is locked (do
-/// not change it).
+/// from the step's pair stage (and continuous collision); without task callbacks on the stepping
+/// thread, with them possibly on several workers at once and in no fixed order: answer from the
+/// arguments alone. The world is locked (do not change it).
 typedef bool tbCustomFilterFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, void* context);
 
-/// Pre-solve (tbWorld_SetPreSolveCallback): called in the collide stage, in contact-id order, for
-/// each touching non-sensor contact with a dynamic body when either shape enables pre-solve
-/// events, after its manifold is updated and before it is solved. It may change the manifold:
+/// Pre-solve (tbWorld_SetPreSolveCallback): called in the collide stage for each touching
+/// non-sensor contact with a dynamic body when either shape enables pre-solve events, after its
+/// manifold is updated and before it is solved: without task callbacks on the stepping thread in
+/// contact-id order, with them possibly on several workers at once (write only the manifold given). It may change the manifold:
 /// set pointCount to 0 to disable the contact for this step (a one-way platform), or remove a
 /// point; it may not add points (pointCount is clamped to what it was) and a non-finite normal
 /// or separation is refused (error hook, manifold restored). The world is locked; impulses in the
@@ -65,7 +67,8 @@ typedef void tbPreSolveFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* m
 
 /// Pre-continuous: called when continuous collision would stop a fast body at a shape (A, the
 /// other shape; B, the fast body's) whose pair enables pre-solve events, with the point and normal
-/// (from A to B) at the time of impact; return false to let the body pass.
+/// (from A to B) at the time of impact; return false to let the body pass. Like pre-solve, it may
+/// run on several workers at once when the world has task callbacks.
 typedef bool tbPreContinuousFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbVec2 point, tbVec2 normal, void* context);
 
 /// Tasks (Box2D v3.2's grammar): the game's task system runs parts of the step on its worker
