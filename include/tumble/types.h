@@ -320,7 +320,7 @@ typedef struct tbJointDef
 typedef struct tbDistanceJointDef
 {
 	tbJointDef base;
-	float length;		   ///< m, > 0, rest length (clamped below to TB_LINEAR_SLOP), default 1
+	float length;		   ///< m, ≥ 0, rest length (raised to TB_LINEAR_SLOP when below), default 1
 	bool enableSpring;	   ///< false: rigid (limit and motor are then ignored)
 	float lowerSpringForce; ///< N, the largest pulling force (negative), default −FLT_MAX
 	float upperSpringForce; ///< N, the largest pushing force, default FLT_MAX; lower ≤ upper
