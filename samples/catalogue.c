@@ -465,14 +465,16 @@ static Scene* BuildManyPyramids(void)
 }
 
 // A 20 m drum of four boxes (density 50) turning at 25°/s about (0, 10) with 2,025 boxes of
-// half size 0.125 inside. Box2D drives a dynamic drum with a motor joint; without joints the
-// drum here is a kinematic body with that angular velocity.
-static Scene* BuildTumbler(void)
+// half size 0.125 inside. Box2D drives a dynamic drum with a motorised revolute joint to ground
+// (1e8 N·m): `tumbler_motor` does the same; `tumbler` makes the drum a kinematic body with that
+// angular velocity (the variant every engine ran before Tumble had joints).
+static Scene* MakeTumbler(bool motorised)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 750;
-	int drum = Scene_AddBody(scene, tb_kinematicBody, V(0.0f, 10.0f), 0.0f);
-	scene->bodies[drum].angularVelocity = 25.0f * DEG_TO_RAD;
+	int ground = motorised ? Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f) : -1;
+	int drum = Scene_AddBody(scene, motorised ? tb_dynamicBody : tb_kinematicBody, V(0.0f, 10.0f), 0.0f);
+	scene->bodies[drum].angularVelocity = motorised ? 0.0f : 25.0f * DEG_TO_RAD;
 	tbGeometry walls[4] = {
 		Scene_MakeBoxGeometry(0.5f, 10.0f, V(10.0f, 0.0f), 0.0f),
 		Scene_MakeBoxGeometry(0.5f, 10.0f, V(-10.0f, 0.0f), 0.0f),
@@ -482,6 +484,14 @@ static Scene* BuildTumbler(void)
 	for (int i = 0; i < 4; ++i)
 	{
 		Scene_AddGeometry(scene, drum, walls + i, 50.0f, 0.6f);
+	}
+	if (motorised)
+	{
+		SceneJoint* axle = Scene_AddJoint(scene, tb_revoluteJoint, ground, drum);
+		Scene_SetJointAnchor(scene, axle, V(0.0f, 10.0f));
+		axle->def.revolute.enableMotor = true;
+		axle->def.revolute.motorSpeed = 25.0f * DEG_TO_RAD;
+		axle->def.revolute.maxMotorTorque = 1e8f;
 	}
 	const int gridCount = 45;
 	for (int i = 0; i < gridCount; ++i)
@@ -493,6 +503,16 @@ static Scene* BuildTumbler(void)
 		}
 	}
 	return scene;
+}
+
+static Scene* BuildTumbler(void)
+{
+	return MakeTumbler(false);
+}
+
+static Scene* BuildTumblerMotor(void)
+{
+	return MakeTumbler(true);
 }
 
 // An 8 m box (density 8) at 40 m/s into a 120 × 80 block of 0.4 m boxes that start asleep; no gravity.
@@ -517,11 +537,12 @@ static Scene* BuildSmash(void)
 	return scene;
 }
 
-// Box2D v3's spinner without joints: a kinematic rounded blade (0.8 × 40 m, radius 0.2)
-// spinning at 5 rad/s about (0, 12) inside a 360-segment circle of radius 40 centred at (0, 32)
-// (Box2D uses a chain loop and a motorised revolute joint), stirring 6,076 capsules, circles and
-// squares (density 0.25, friction 0.1, restitution 0.1).
-static Scene* BuildSpinner(void)
+// Box2D v3's spinner: a rounded blade (0.8 × 40 m, radius 0.2) spinning at 5 rad/s about (0, 12)
+// inside a 360-segment circle of radius 40 centred at (0, 32) (Box2D uses a chain loop), stirring
+// 6,076 capsules, circles and squares (density 0.25, friction 0.1, restitution 0.1). Box2D drives
+// a dynamic blade with a motorised revolute joint of unbounded torque: `spinner_motor` does the
+// same; `spinner` makes the blade a kinematic body with that angular velocity.
+static Scene* MakeSpinner(bool motorised)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 1000;
@@ -535,11 +556,19 @@ static Scene* BuildSpinner(void)
 													   V(40.0f * cosf(a2), 32.0f + 40.0f * sinf(a2)));
 		Scene_AddGeometry(scene, ground, &segment, 1.0f, 0.1f);
 	}
-	int blade = Scene_AddBody(scene, tb_kinematicBody, V(0.0f, 12.0f), 0.0f);
-	scene->bodies[blade].angularVelocity = 5.0f;
+	int blade = Scene_AddBody(scene, motorised ? tb_dynamicBody : tb_kinematicBody, V(0.0f, 12.0f), 0.0f);
+	scene->bodies[blade].angularVelocity = motorised ? 0.0f : 5.0f;
 	tbGeometry bladeShape = Scene_MakeBoxGeometry(0.4f, 20.0f, tb_vec2_zero, 0.0f);
 	bladeShape.polygon = tbMakeRoundedBox(0.4f, 20.0f, 0.2f);
 	Scene_AddGeometry(scene, blade, &bladeShape, 1.0f, 0.0f);
+	if (motorised)
+	{
+		SceneJoint* axle = Scene_AddJoint(scene, tb_revoluteJoint, ground, blade);
+		Scene_SetJointAnchor(scene, axle, V(0.0f, 12.0f));
+		axle->def.revolute.enableMotor = true;
+		axle->def.revolute.motorSpeed = 5.0f;
+		axle->def.revolute.maxMotorTorque = 1e30f; // unbounded (v3: FLT_MAX, which a scene file cannot round-trip)
+	}
 	tbGeometry kinds[3] = {
 		Scene_MakeCapsuleGeometry(V(-0.25f, 0.0f), V(0.25f, 0.0f), 0.25f),
 		Scene_MakeCircleGeometry(tb_vec2_zero, 0.35f),
@@ -559,6 +588,16 @@ static Scene* BuildSpinner(void)
 		}
 	}
 	return scene;
+}
+
+static Scene* BuildSpinner(void)
+{
+	return MakeSpinner(false);
+}
+
+static Scene* BuildSpinnerMotor(void)
+{
+	return MakeSpinner(true);
 }
 
 // Box2D v3's washer: a kinematic drum about (0, 10) turning at 25°/s (and drifting at
@@ -1217,6 +1256,12 @@ static const CatalogueEntry s_entries[] = {
 	 BuildManyPyramids},
 	{"tumbler", "Box2D v3 benchmark variant: 2,025 small boxes in a kinematic drum turning at 25 deg/s (no joint)",
 	 BuildTumbler},
+	{"tumbler_motor", "Box2D v3 benchmark: 2,025 small boxes in a dynamic drum on a motorised revolute joint "
+					  "(25 deg/s)",
+	 BuildTumblerMotor},
+	{"spinner_motor", "Box2D v3 benchmark: a dynamic blade on a motorised revolute joint (5 rad/s) stirring 6,076 "
+					  "shapes in a 360-segment ring",
+	 BuildSpinnerMotor},
 	{"smash", "Box2D v3 benchmark: 8 m box at 40 m/s into 9,600 sleeping boxes, no gravity", BuildSmash},
 	{"spinner", "Box2D v3 benchmark variant: kinematic blade at 5 rad/s (no joint) stirring 6,076 shapes in a "
 				"360-segment ring",
