@@ -1,6 +1,8 @@
 // Box2D 2.4.1 adapter for tumble-bench (see peers.h): builds a Scene as b2World bodies and fixtures.
 #include "peers.h"
 
+#include "../tools/box2d24_joints.h"
+
 #include <box2d/box2d.h>
 
 #include <cfloat>
@@ -124,142 +126,6 @@ static b2BodyType ToB2Type(tbBodyType type)
 	}
 }
 
-static float FrameAngle(tbTransform frame)
-{
-	return std::atan2(frame.q.s, frame.q.c);
-}
-
-static void SetJointBase(const PeerWorld* peer, const SceneJoint& sj, b2JointDef* def)
-{
-	def->bodyA = peer->bodies[(size_t)sj.bodyA];
-	def->bodyB = peer->bodies[(size_t)sj.bodyB];
-	def->collideConnected = sj.def.base.collideConnected;
-}
-
-// Box2D 2.4.1's joints for the scene's: revolute (its angle is θB − θA − referenceAngle, Tumble's
-// (θB + φB) − (θA + φA) with φ the frames' angles, so referenceAngle = φA − φB), prismatic and
-// wheel (axis: frame A's x axis), distance (spring by b2LinearStiffness from hertz and damping
-// ratio) and weld (rigid, or soft by b2AngularStiffness). 2.4.1 has no revolute or prismatic
-// spring, no motor joint of v3's kind and no filter joint: a scene with one is not run (false).
-static bool AddJoint(PeerWorld* peer, const SceneJoint& sj)
-{
-	const tbJointDef& base = sj.def.base;
-	b2Vec2 anchorA = ToB2(base.localFrameA.p), anchorB = ToB2(base.localFrameB.p);
-	float reference = FrameAngle(base.localFrameA) - FrameAngle(base.localFrameB);
-	b2Vec2 axis(base.localFrameA.q.c, base.localFrameA.q.s);
-	switch (sj.type)
-	{
-		case tb_revoluteJoint:
-		{
-			const tbRevoluteJointDef& s = sj.def.revolute;
-			if (s.enableSpring)
-			{
-				return false;
-			}
-			b2RevoluteJointDef d;
-			SetJointBase(peer, sj, &d);
-			d.localAnchorA = anchorA;
-			d.localAnchorB = anchorB;
-			d.referenceAngle = reference;
-			d.enableLimit = s.enableLimit;
-			d.lowerAngle = s.lowerAngle;
-			d.upperAngle = s.upperAngle;
-			d.enableMotor = s.enableMotor;
-			d.maxMotorTorque = s.maxMotorTorque;
-			d.motorSpeed = s.motorSpeed;
-			peer->world->CreateJoint(&d);
-			return true;
-		}
-		case tb_prismaticJoint:
-		{
-			const tbPrismaticJointDef& s = sj.def.prismatic;
-			if (s.enableSpring)
-			{
-				return false;
-			}
-			b2PrismaticJointDef d;
-			SetJointBase(peer, sj, &d);
-			d.localAnchorA = anchorA;
-			d.localAnchorB = anchorB;
-			d.localAxisA = axis;
-			d.referenceAngle = reference;
-			d.enableLimit = s.enableLimit;
-			d.lowerTranslation = s.lowerTranslation;
-			d.upperTranslation = s.upperTranslation;
-			d.enableMotor = s.enableMotor;
-			d.maxMotorForce = s.maxMotorForce;
-			d.motorSpeed = s.motorSpeed;
-			peer->world->CreateJoint(&d);
-			return true;
-		}
-		case tb_wheelJoint:
-		{
-			const tbWheelJointDef& s = sj.def.wheel;
-			b2WheelJointDef d;
-			SetJointBase(peer, sj, &d);
-			d.localAnchorA = anchorA;
-			d.localAnchorB = anchorB;
-			d.localAxisA = axis;
-			d.enableLimit = s.enableLimit;
-			d.lowerTranslation = s.lowerTranslation;
-			d.upperTranslation = s.upperTranslation;
-			d.enableMotor = s.enableMotor;
-			d.maxMotorTorque = s.maxMotorTorque;
-			d.motorSpeed = s.motorSpeed;
-			if (s.enableSpring)
-			{
-				b2LinearStiffness(d.stiffness, d.damping, s.hertz, s.dampingRatio, d.bodyA, d.bodyB);
-			}
-			peer->world->CreateJoint(&d);
-			return true;
-		}
-		case tb_distanceJoint:
-		{
-			const tbDistanceJointDef& s = sj.def.distance;
-			if (s.enableMotor)
-			{
-				return false;
-			}
-			b2DistanceJointDef d;
-			SetJointBase(peer, sj, &d);
-			d.localAnchorA = anchorA;
-			d.localAnchorB = anchorB;
-			d.length = s.length;
-			d.minLength = s.enableLimit ? s.minLength : s.length;
-			d.maxLength = s.enableLimit ? s.maxLength : s.length;
-			if (s.enableSpring)
-			{
-				b2LinearStiffness(d.stiffness, d.damping, s.hertz, s.dampingRatio, d.bodyA, d.bodyB);
-				d.minLength = s.enableLimit ? s.minLength : 0.0f;
-				d.maxLength = s.enableLimit ? s.maxLength : FLT_MAX;
-			}
-			peer->world->CreateJoint(&d);
-			return true;
-		}
-		case tb_weldJoint:
-		{
-			const tbWeldJointDef& s = sj.def.weld;
-			if (s.linearHertz > 0.0f)
-			{
-				return false;
-			}
-			b2WeldJointDef d;
-			SetJointBase(peer, sj, &d);
-			d.localAnchorA = anchorA;
-			d.localAnchorB = anchorB;
-			d.referenceAngle = reference;
-			if (s.angularHertz > 0.0f)
-			{
-				b2AngularStiffness(d.stiffness, d.damping, s.angularHertz, s.angularDampingRatio, d.bodyA, d.bodyB);
-			}
-			peer->world->CreateJoint(&d);
-			return true;
-		}
-		default:
-			return false;
-	}
-}
-
 PeerWorld* PeerBox2D_Create(const Scene* scene)
 {
 	PeerWorld* peer = new PeerWorld;
@@ -301,7 +167,7 @@ PeerWorld* PeerBox2D_Create(const Scene* scene)
 	}
 	for (int j = 0; j < scene->jointCount; ++j)
 	{
-		if (AddJoint(peer, scene->joints[j]) == false)
+		if (Box2D24_AddJoint(peer->world, peer->bodies, scene->joints[j]) == false)
 		{
 			fprintf(stderr, "box2d-2.4.1: joint %d (%s) has no Box2D 2.4.1 equivalent; scene not run\n", j,
 					Scene_JointTypeName(scene->joints[j].type));

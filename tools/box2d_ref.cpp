@@ -8,7 +8,8 @@
 // scene format has no iteration counts), sleep as the scene says. Driven bodies (a scene's
 // "drive") get, before each step, the velocity that reaches the step's target from their pose.
 //
-// Shapes Box2D 2.4 cannot represent exactly are refused with a message:
+// Joints map to Box2D 2.4.1's (box2d24_joints.h); a joint feature 2.4.1 lacks is refused with a
+// message. Shapes Box2D 2.4 cannot represent exactly are refused with a message:
 // - capsules: a box plus two circles has the right outline but not the right mass (the circles
 //   overlap the box, so the overlap is counted twice) — refused;
 // - polygons: Box2D 2.4 gives every polygon a fixed 0.01 m skin (b2_polygonRadius); a Tumble
@@ -16,6 +17,8 @@
 //   stderr), one with radius 0.01 m exactly, any other radius is refused.
 #include "scene.h"
 #include "scene_file.h"
+
+#include "box2d24_joints.h"
 
 #include <box2d/box2d.h>
 
@@ -217,6 +220,18 @@ int main(int argc, char** argv)
 		body->SetLinearVelocity(b2Vec2(sb.linearVelocity.x, sb.linearVelocity.y));
 		body->SetAngularVelocity(sb.angularVelocity);
 		bodies.push_back(body);
+	}
+	for (int j = 0; j < scene->jointCount; ++j)
+	{
+		if (Box2D24_AddJoint(&world, bodies, scene->joints[j]) == false)
+		{
+			fprintf(stderr,
+					"box2d-ref: joints[%d]: a %s joint with a feature Box2D 2.4.1 does not have (revolute or prismatic "
+					"spring, distance motor, soft linear weld, motor or filter joint)\n",
+					j, Scene_JointTypeName(scene->joints[j].type));
+			Scene_Destroy(scene);
+			return 1;
+		}
 	}
 
 	FILE* csv = nullptr;
