@@ -34,6 +34,8 @@ static void AddFixture(b2Body* body, const SceneShape& shape, const b2Shape& geo
 	def.restitution = shape.restitution;
 	def.isSensor = shape.isSensor;
 	def.filter.groupIndex = (int16)shape.groupIndex;
+	def.filter.categoryBits = (uint16)shape.categoryBits; // Box2D 2.4.1 has 16 filter bits: the low ones
+	def.filter.maskBits = (uint16)shape.maskBits;
 	body->CreateFixture(&def);
 }
 

@@ -50,6 +50,8 @@ static void AddShape(b2BodyId body, const SceneShape* shape)
 	def.isSensor = shape->isSensor;
 	def.enableHitEvents = shape->enableHitEvents;
 	def.filter.groupIndex = shape->groupIndex;
+	def.filter.categoryBits = shape->categoryBits;
+	def.filter.maskBits = shape->maskBits;
 	const tbGeometry* g = &shape->geometry;
 	switch (g->type)
 	{

@@ -111,12 +111,10 @@ static cpBody* MakeBody(cpSpace* space, const SceneBody* sb)
 		cpShapeSetFriction(cs, sqrtf(shape->friction));
 		cpShapeSetElasticity(cs, sqrtf(shape->restitution));
 		cpShapeSetSensor(cs, shape->isSensor);
-		if (shape->groupIndex < 0)
-		{
-			// A negative group never collides with itself: Chipmunk's group does the same.
-			cpShapeSetFilter(cs, cpShapeFilterNew((cpGroup)(uintptr_t)(-shape->groupIndex), CP_ALL_CATEGORIES,
-												  CP_ALL_CATEGORIES));
-		}
+		// A negative group never collides with itself: Chipmunk's group does the same. Categories
+		// and masks map to Chipmunk's bitmasks (their low 32 bits).
+		cpGroup group = shape->groupIndex < 0 ? (cpGroup)(uintptr_t)(-shape->groupIndex) : CP_NO_GROUP;
+		cpShapeSetFilter(cs, cpShapeFilterNew(group, (cpBitmask)shape->categoryBits, (cpBitmask)shape->maskBits));
 		cpSpaceAddShape(space, cs);
 	}
 	cpBodySetAngle(body, sb->angle);

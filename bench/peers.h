@@ -36,7 +36,8 @@ typedef struct PeerCounters
 /// joints, distance joints and welds with its own (no revolute or prismatic spring, no motor or
 /// filter joint: such a scene is refused, the adapter returns NULL with a message); Chipmunk builds
 /// revolute joints (pivot, rotary limit, simple motor) and refuses the rest. Negative collision
-/// groups map to each engine's group.
+/// groups map to each engine's group; category and mask bits to each engine's (Box2D 2.4.1 has 16
+/// bits, Chipmunk 32 here: the low ones).
 ///
 /// Box2D 2.4.1: 8 velocity and 3 position iterations, continuous collision on (its default).
 /// Polygons carry Box2D's fixed 0.01 m skin (b2_polygonRadius); rounded polygons are inflated

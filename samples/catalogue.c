@@ -897,10 +897,8 @@ static void AddRagdoll(Scene* scene, float x, float y, int group)
 
 /// Box2D v3's joint_grid benchmark: 100 × 100 circles of radius 0.4 one metre apart, each joined
 /// by a revolute joint to the one above and the one to its left; the seven bodies at the top
-/// middle are static, so the grid hangs and swings; sleep off. v3 keeps the circles from colliding
-/// with one another by category (2) and mask (~2); here they share a negative collision group,
-/// which keeps the same pairs apart (the broad phase still reports the neighbours the mask would
-/// have pruned, and the pair filter drops them).
+/// middle are static, so the grid hangs and swings; sleep off. As in v3, the circles are kept from
+/// colliding with one another by their filter: category 2, mask everything but 2.
 static Scene* BuildJointGrid(void)
 {
 	Scene* scene = Scene_Create();
@@ -914,7 +912,8 @@ static Scene* BuildJointGrid(void)
 			bool anchored = k >= n / 2 - 3 && k <= n / 2 + 3 && i == 0;
 			int body = AddCircleBody(scene, anchored ? tb_staticBody : tb_dynamicBody, V((float)k, -(float)i), 0.4f,
 									 1.0f, 0.6f);
-			scene->bodies[body].shapes[0].groupIndex = -1;
+			scene->bodies[body].shapes[0].categoryBits = 2u;
+			scene->bodies[body].shapes[0].maskBits = ~(uint64_t)2u;
 			if (i > 0)
 			{
 				SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, body - 1, body);

@@ -86,6 +86,8 @@ SceneShape Scene_DefaultShape(void)
 	shape.geometry.circle.radius = 0.5f;
 	shape.density = 1.0f;
 	shape.friction = 0.6f;
+	shape.categoryBits = TB_DEFAULT_CATEGORY_BITS;
+	shape.maskBits = TB_DEFAULT_MASK_BITS;
 	return shape;
 }
 
@@ -378,6 +380,8 @@ static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const 
 		shapeDef.isSensor = shape->isSensor;
 		shapeDef.enableHitEvents = shape->enableHitEvents;
 		shapeDef.filter.groupIndex = shape->groupIndex;
+		shapeDef.filter.categoryBits = shape->categoryBits;
+		shapeDef.filter.maskBits = shape->maskBits;
 		if (TB_IS_NULL(tbCreateShape(bodyId, &shapeDef, &shape->geometry)) && *refusedShape < 0)
 		{
 			*refusedShape = i;

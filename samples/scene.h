@@ -37,6 +37,8 @@ typedef struct SceneShape
 	bool isSensor;
 	bool enableHitEvents; ///< default false (tbShapeDef::enableHitEvents)
 	int groupIndex; ///< collision group (tbFilter): shapes sharing a negative group never collide, default 0
+	uint64_t categoryBits; ///< tbFilter's, default TB_DEFAULT_CATEGORY_BITS
+	uint64_t maskBits;	   ///< tbFilter's, default TB_DEFAULT_MASK_BITS (all)
 } SceneShape;
 
 /// A scripted path for a kinematic body (Box2D v3's junkyard pusher): before step k (k = 0, 1, …)

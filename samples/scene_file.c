@@ -5,6 +5,7 @@
 
 #include <cJSON.h>
 
+#include <ctype.h>
 #include <errno.h>
 #include <float.h>
 #include <limits.h>
@@ -189,6 +190,46 @@ static bool ReadBool(Parser* parser, const cJSON* object, const char* path, cons
 		return Fail(parser, child, "must be true or false");
 	}
 	*out = cJSON_IsTrue(item);
+	return true;
+}
+
+/// 64 filter bits: a string of hexadecimal digits ("0x2", "0xfffffffffffffffd"; JSON numbers
+/// cannot hold 64 bits exactly) or a whole number up to 2^53.
+static bool ReadBits(Parser* parser, const cJSON* object, const char* path, const char* key, uint64_t* out)
+{
+	const cJSON* item = Find(object, key);
+	if (item == NULL)
+	{
+		return true;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, key);
+	if (cJSON_IsNumber(item))
+	{
+		double value = item->valuedouble;
+		if (!(value >= 0.0 && value <= 9007199254740992.0) || value != floor(value))
+		{
+			return Fail(parser, child, "must be a whole number 0..2^53 or a hexadecimal string such as \"0x2\"");
+		}
+		*out = (uint64_t)value;
+		return true;
+	}
+	const char* text = cJSON_IsString(item) ? item->valuestring : NULL;
+	if (text == NULL || text[0] != '0' || (text[1] != 'x' && text[1] != 'X') || text[2] == '\0' || strlen(text) > 18)
+	{
+		return Fail(parser, child, "must be a hexadecimal string of up to 16 digits such as \"0x2\"");
+	}
+	uint64_t value = 0;
+	for (const char* c = text + 2; *c != '\0'; ++c)
+	{
+		int digit = isdigit((unsigned char)*c) ? *c - '0' : (isxdigit((unsigned char)*c) ? tolower((unsigned char)*c) - 'a' + 10 : -1);
+		if (digit < 0)
+		{
+			return Fail(parser, child, "must be a hexadecimal string of up to 16 digits such as \"0x2\"");
+		}
+		value = (value << 4) | (uint64_t)digit;
+	}
+	*out = value;
 	return true;
 }
 
@@ -527,7 +568,7 @@ static bool ReadShape(Parser* parser, const cJSON* item, const char* path, Scene
 {
 	static const char* const keys[] = {"box",	  "circle",	  "polygon",	 "capsule", "segment",
 									   "density", "friction", "restitution", "sensor",	"hit_events", "group",
-									   NULL};
+									   "category_bits", "mask_bits", NULL};
 	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
 	{
 		return false;
@@ -542,7 +583,9 @@ static bool ReadShape(Parser* parser, const cJSON* item, const char* path, Scene
 		   CheckNonNegative(parser, path, "restitution", shape->restitution) &&
 		   ReadBool(parser, item, path, "sensor", &shape->isSensor) &&
 		   ReadBool(parser, item, path, "hit_events", &shape->enableHitEvents) &&
-		   ReadInt(parser, item, path, "group", INT_MIN, INT_MAX, &shape->groupIndex);
+		   ReadInt(parser, item, path, "group", INT_MIN, INT_MAX, &shape->groupIndex) &&
+		   ReadBits(parser, item, path, "category_bits", &shape->categoryBits) &&
+		   ReadBits(parser, item, path, "mask_bits", &shape->maskBits);
 }
 
 static bool ReadShapes(Parser* parser, const cJSON* item, const char* path, Scene* scene, int bodyIndex)
@@ -1419,6 +1462,14 @@ static void AppendShape(TextBuffer* buffer, const SceneShape* shape)
 	if (shape->groupIndex != 0)
 	{
 		Append(buffer, ", \"group\": %d", shape->groupIndex);
+	}
+	if (shape->categoryBits != TB_DEFAULT_CATEGORY_BITS)
+	{
+		Append(buffer, ", \"category_bits\": \"0x%llx\"", (unsigned long long)shape->categoryBits);
+	}
+	if (shape->maskBits != TB_DEFAULT_MASK_BITS)
+	{
+		Append(buffer, ", \"mask_bits\": \"0x%llx\"", (unsigned long long)shape->maskBits);
 	}
 	Append(buffer, "}");
 }

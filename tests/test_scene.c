@@ -350,6 +350,10 @@ typedef struct BadFile
 
 static const BadFile s_badFiles[] = {
 	{"{\"gravity\": [0]}", "gravity: must be an array of 2 numbers"},
+	{"{\"bodies\": [{\"shapes\": [{\"circle\": {\"radius\": 1}, \"category_bits\": \"0xZZ\"}]}]}",
+	 "bodies[0].shapes[0].category_bits: must be a hexadecimal string of up to 16 digits such as \"0x2\""},
+	{"{\"bodies\": [{\"shapes\": [{\"circle\": {\"radius\": 1}, \"mask_bits\": -1}]}]}",
+	 "bodies[0].shapes[0].mask_bits: must be a whole number 0..2^53 or a hexadecimal string such as \"0x2\""},
 	{"{\"bodies\": [{}, {}, {}, {\"shapes\": [{\"circle\": {\"radius\": -1}}]}]}",
 	 "bodies[3].shapes[0].circle.radius: must be > 0"},
 	{"{\"bodies\": [{\"positon\": [0, 0]}]}", "bodies[0].positon: unknown key"},
@@ -540,4 +544,35 @@ Test(scene, card_house_cards_are_accepted)
 	cr_assert_eq(shapeCount, 41, "the world refused %d of 41 shapes", 41 - shapeCount);
 	SceneWorld_Destroy(&world);
 	Scene_Destroy(scene);
+}
+
+// Filter bits survive a scene file: 64-bit categories and masks, written as hexadecimal strings,
+// read back to the same bits, and reach the shapes built from them.
+Test(scene, filter_bits_round_trip)
+{
+	const char* text = "{\"bodies\": [{\"shapes\": [{\"circle\": {\"radius\": 1}, \"category_bits\": \"0x8000000000000002\", "
+					   "\"mask_bits\": \"0xfffffffffffffffd\"}, {\"circle\": {\"radius\": 1}, \"category_bits\": 4}]}]}";
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(scene, "%s", error);
+	cr_expect_eq(scene->bodies[0].shapes[0].categoryBits, 0x8000000000000002ull);
+	cr_expect_eq(scene->bodies[0].shapes[0].maskBits, 0xfffffffffffffffdull);
+	cr_expect_eq(scene->bodies[0].shapes[1].categoryBits, 4u);
+	cr_expect_eq(scene->bodies[0].shapes[1].maskBits, TB_DEFAULT_MASK_BITS);
+	char* written = SceneFile_Export(scene, error, (int)sizeof(error));
+	cr_assert_not_null(written);
+	Scene* again = SceneFile_Parse(written, error, (int)sizeof(error));
+	cr_assert_not_null(again, "%s", error);
+	cr_expect_eq(again->bodies[0].shapes[0].maskBits, 0xfffffffffffffffdull);
+	SceneWorld world = Scene_BuildWorld(again, NULL);
+	tbShapeId shapes[2];
+	cr_assert_eq(tbBody_GetShapes(world.bodyIds[0], shapes, 2), 2);
+	tbFilter a = tbShape_GetFilter(shapes[0]), b = tbShape_GetFilter(shapes[1]);
+	tbFilter first = a.categoryBits == 4u ? b : a; // the body lists its shapes newest first
+	cr_expect_eq(first.categoryBits, 0x8000000000000002ull);
+	cr_expect_eq(first.maskBits, 0xfffffffffffffffdull);
+	SceneWorld_Destroy(&world);
+	free(written);
+	Scene_Destroy(scene);
+	Scene_Destroy(again);
 }
