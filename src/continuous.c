@@ -208,8 +208,10 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	{
 		return true;
 	}
-	bool againstDynamic = otherBody->type != tb_staticBody;
-	if (againstDynamic && (c->fastBody->isBullet == false || otherBody->isBullet || otherBody->type != tb_dynamicBody))
+	// Non-bullets stop only at static shapes; bullets also at dynamic and kinematic bodies (a
+	// moving kinematic wall, a door or a lift, is swept along its own motion), not at other bullets.
+	bool againstMoving = otherBody->type != tb_staticBody;
+	if (againstMoving && (c->fastBody->isBullet == false || otherBody->isBullet))
 	{
 		return true;
 	}

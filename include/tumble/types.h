@@ -179,7 +179,7 @@ typedef struct tbBodyDef
 	tbMotionLocks motionLocks; ///< default none
 	bool enableContactRecycling; ///< default true; false: its contacts never reuse an old manifold
 								 ///< (tbWorldDef::enableManifoldRecycling), e.g. a character
-	bool isBullet;			///< swept against dynamic bodies too, default false
+	bool isBullet;			///< swept against dynamic and kinematic bodies too (not bullets), default false
 	int internalValue;
 } tbBodyDef;
 
