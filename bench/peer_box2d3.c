@@ -358,6 +358,22 @@ PeerCounters PeerBox2D3_GetCounters(PeerWorld* peer)
 	return result;
 }
 
+StageProfile PeerBox2D3_GetProfile(PeerWorld* peer)
+{
+	b2Profile p = b2World_GetProfile(peer->world);
+	StageProfile result;
+	result.pairs = p.pairs;
+	result.collide = p.collide;
+	result.setup = p.solverSetup;
+	result.solve = p.constraints;
+	result.finalize = p.transforms + p.refit;
+	result.continuous = p.bullets;
+	result.events = p.hitEvents + p.jointEvents + p.sensorHits + p.sensors;
+	result.sleep = p.splitIslands + p.sleepIslands;
+	result.step = p.step;
+	return result;
+}
+
 void PeerBox2D3_Destroy(PeerWorld* peer)
 {
 	b2DestroyWorld(peer->world);

@@ -15,6 +15,16 @@ extern "C" {
 
 typedef struct PeerWorld PeerWorld;
 
+/// Milliseconds of one step by stage, in Tumble's stage names (tumble-bench profile). Box2D v3's
+/// own profile maps as: setup = solverSetup; solve = constraints (prepare, sub-steps, restitution,
+/// store); finalize = transforms + refit; continuous = bullets (v3 sweeps non-bullet fast bodies
+/// inside its transforms); events = hitEvents + jointEvents + sensorHits + sensors; sleep =
+/// splitIslands + sleepIslands.
+typedef struct StageProfile
+{
+	float pairs, collide, setup, solve, finalize, continuous, events, sleep, step;
+} StageProfile;
+
 /// State of one body read back from a peer: origin position, rotation, velocity of the centre of mass.
 typedef struct PeerBody
 {
@@ -59,6 +69,7 @@ void PeerBox2D3_SetWorkerCount(int workerCount);
 void PeerBox2D3_Step(PeerWorld* world);
 PeerBody PeerBox2D3_GetBody(PeerWorld* world, int bodyIndex);
 PeerCounters PeerBox2D3_GetCounters(PeerWorld* world);
+StageProfile PeerBox2D3_GetProfile(PeerWorld* world);
 void PeerBox2D3_Destroy(PeerWorld* world);
 
 /// Chipmunk 7: 10 iterations, collision slop 0.01 m (its default 0.1 m is ten box skins),

@@ -1337,6 +1337,96 @@ static int Poses(FILE* out, const Options* options)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Stage profile: where each engine's step goes, from each engine's own timers, the two stepped
+// in turn (a Tumble step, a Box2D v3 step, …) so that both see the same machine load.
+
+static StageProfile Sim_GetProfile(const Sim* sim)
+{
+	StageProfile result = {0};
+	if (sim->engine == engineTumble)
+	{
+		tbProfile p = tbWorld_GetProfile(sim->tumble.worldId);
+		StageProfile t = {p.pairs, p.collide,	 p.islands, p.solve, p.finalize,
+						  p.continuous, p.events, p.sleep,	 p.step};
+		result = t;
+	}
+#ifdef TUMBLE_HAVE_BOX2D3
+	else if (sim->engine == engineBox2D3)
+	{
+		result = PeerBox2D3_GetProfile(sim->peer);
+	}
+#endif
+	return result;
+}
+
+#define STAGE_COUNT 9
+
+static void AddProfile(double sums[STAGE_COUNT], StageProfile p)
+{
+	const float values[STAGE_COUNT] = {p.pairs,		 p.collide, p.setup, p.solve, p.finalize,
+									   p.continuous, p.events,	p.sleep, p.step};
+	for (int k = 0; k < STAGE_COUNT; ++k)
+	{
+		sums[k] += values[k];
+	}
+}
+
+static int StageProfileTable(FILE* out, const Options* options)
+{
+	static const char* stageNames[STAGE_COUNT] = {"pairs",		"collide", "set-up", "solve", "finalize",
+												  "continuous", "events",  "sleep",	 "step"};
+	fprintf(out, "scene,stage,tumble_ms,box2d3_ms\n");
+	for (int s = 0; s < options->sceneCount; ++s)
+	{
+		Scene* scene = Catalogue_Build(options->scenes[s]);
+		if (scene == NULL)
+		{
+			fprintf(stderr, "tumble-bench: unknown scene '%s'\n", options->scenes[s]);
+			return 2;
+		}
+		int steps = options->steps > 0 ? options->steps : scene->steps;
+		Sim sims[2];
+		bool made[2] = {Sim_Create(sims + 0, scene, engineTumble, &options->config), false};
+		made[1] = EngineAvailable(engineBox2D3) && Sim_Create(sims + 1, scene, engineBox2D3, &options->config);
+		double sums[2][STAGE_COUNT] = {{0}};
+		for (int i = 0; i < steps; ++i)
+		{
+			for (int e = 0; e < 2; ++e)
+			{
+				if (made[e])
+				{
+					Sim_Step(sims + e);
+					if (i > 0) // the first step builds the trees and the contacts from nothing
+					{
+						AddProfile(sums[e], Sim_GetProfile(sims + e));
+					}
+				}
+			}
+		}
+		double n = steps > 1 ? (double)(steps - 1) : 1.0;
+		printf("%s, %d steps, ms per step (first step left out)\n| stage | Tumble | Box2D v3 | Tumble / v3 |\n"
+			   "|---|---|---|---|\n",
+			   options->scenes[s], steps);
+		for (int k = 0; k < STAGE_COUNT; ++k)
+		{
+			double t = sums[0][k] / n;
+			double v = made[1] ? sums[1][k] / n : NAN;
+			printf("| %s | %.3f | %.3f | %.2f |\n", stageNames[k], t, v, v > 0.0 ? t / v : NAN);
+			fprintf(out, "%s,%s,%.4f,%.4f\n", options->scenes[s], stageNames[k], t, v);
+		}
+		for (int e = 0; e < 2; ++e)
+		{
+			if (made[e])
+			{
+				Sim_Destroy(sims + e);
+			}
+		}
+		Scene_Destroy(scene);
+	}
+	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Command line
 
 static void PrintUsage(void)
@@ -1345,10 +1435,11 @@ static void PrintUsage(void)
 		   "                    [--peer box2d-2.4.1|box2d-3|chipmunk-7]... [--interleave]\n"
 		   "                    [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
-		   "                    [--substeps N] [--iterations N] [--scalar-solver] [--chipmunk-tree] [--workers N]\n"
+		   "                    [--substeps N] [--iterations N] [--relax N] [--scalar-solver] [--chipmunk-tree] [--workers N]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
 		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
+		   "       tumble-bench profile SCENE... [--steps N] [--csv FILE]   (stage by stage, Tumble and Box2D v3)\n"
 		   "       tumble-bench --list\n"
 		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain washer junkyard\n"
 		   "compounds joint_grid rain_ragdolls, each at its catalogue step count, 60 Hz, 4 sub-steps\n"
@@ -1491,6 +1582,10 @@ int main(int argc, char** argv)
 		{
 			options.config.overrides.velocityIterations = atoi(argv[++i]);
 		}
+		else if (strcmp(arg, "--relax") == 0 && hasValue)
+		{
+			options.config.overrides.relaxIterations = atoi(argv[++i]);
+		}
 		else if ((strcmp(arg, "--broadphase") == 0 || strcmp(arg, "--narrowphase") == 0 || strcmp(arg, "--toi") == 0 ||
 				  strcmp(arg, "--solver") == 0) &&
 				 hasValue)
@@ -1508,7 +1603,8 @@ int main(int argc, char** argv)
 			return 2;
 		}
 		else if (command == NULL &&
-				 (strstr(arg, "-chart") != NULL || strcmp(arg, "sleep") == 0 || strcmp(arg, "poses") == 0))
+				 (strstr(arg, "-chart") != NULL || strcmp(arg, "sleep") == 0 || strcmp(arg, "poses") == 0 ||
+				  strcmp(arg, "profile") == 0))
 		{
 			command = arg;
 		}
@@ -1541,7 +1637,11 @@ int main(int argc, char** argv)
 		return 1;
 	}
 	int status = 2;
-	if (strcmp(command, "solver-chart") == 0)
+	if (strcmp(command, "profile") == 0)
+	{
+		status = StageProfileTable(out, &options);
+	}
+	else if (strcmp(command, "solver-chart") == 0)
 	{
 		status = SolverChart(out);
 	}

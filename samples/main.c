@@ -57,7 +57,7 @@ static void PrintUsage(void)
 		   "  tumble run SCENE [--steps N] [--png DIR] [--every K] [--size WxH] [--csv FILE]\n"
 		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                   [--toi off|quadratic|ca] [--solver baumgarte|ngs|soft] [--substeps N]\n"
-		   "                   [--iterations N] [--scalar-solver] [--no-recycle] [--impact-propagation] [--workers N]\n"
+		   "                   [--iterations N] [--relax N] [--scalar-solver] [--no-recycle] [--impact-propagation] [--workers N]\n"
 		   "                   [--sheet FILE.png] [--frames N] [--contacts]\n"
 		   "                   [--aabbs] [--tree]\n"
 		   "  tumble export SCENE\n"
@@ -188,6 +188,10 @@ static int ParseValueOption(Options* options, const char* flag, const char* valu
 	else if (strcmp(flag, "--iterations") == 0)
 	{
 		ok = ParsePositiveInt(value, &options->overrides.velocityIterations);
+	}
+	else if (strcmp(flag, "--relax") == 0)
+	{
+		ok = ParsePositiveInt(value, &options->overrides.relaxIterations);
 	}
 	else if (strcmp(flag, "--sheet") == 0 || strcmp(flag, "--out") == 0)
 	{

@@ -325,6 +325,10 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 		{
 			def.velocityIterations = overrides->velocityIterations;
 		}
+		if (overrides->relaxIterations > 0)
+		{
+			def.relaxIterations = overrides->relaxIterations;
+		}
 		if (overrides->scalarSolver)
 		{
 			def.enableWideSolver = false;

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Build the libFuzzer harnesses (clang, ASan + UBSan) and run each for a bounded time.
 #   scripts/fuzz.sh [SECONDS_PER_HARNESS] [HARNESS...]
+# FUZZ_SEED=N fixes libFuzzer's random seed (the test command uses 1, so a CI run explores the
+# same inputs as the last one did, and a red run can be reproduced).
 # Defaults: 60 s each for fuzz_collision, fuzz_world and fuzz_scene, one process at a time (one
 # core). New inputs go to build/fuzz/corpus/<harness>; the committed seeds in
 # fuzz/corpus/<harness> are read, never written. A finding stops the harness with the crashing
@@ -29,7 +31,9 @@ status=0
 for harness in "${harnesses[@]}"; do
 	mkdir -p "build/fuzz/corpus/$harness"
 	echo "== $harness for ${seconds} s"
-	(cd build/fuzz && "./fuzz/$harness" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$harness-" \
+	seed=()
+	[ -n "${FUZZ_SEED:-}" ] && seed=(-seed="$FUZZ_SEED")
+	(cd build/fuzz && "./fuzz/$harness" -max_total_time="$seconds" "${seed[@]}" -print_final_stats=1 -artifact_prefix="$harness-" \
 		"corpus/$harness" "../../fuzz/corpus/$harness") || status=1
 done
 exit $status

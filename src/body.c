@@ -1372,5 +1372,4 @@ void tbFinalizeStage(tbWorld* world, float timeStep)
 		tbMoveFlaggedProxies(world, body);
 		tbPushMoveEvent(world, body, bodyId);
 	}
-	tbReportHitEvents(world);
 }

@@ -11,6 +11,30 @@
 #include <string.h>
 #include <time.h>
 
+// The two calls the C standard does not give portably: aligned allocation (MSVC's C runtime has no
+// aligned_alloc) and a monotonic clock (clock_gettime is POSIX). Everything else here is C17.
+#if defined(_WIN32)
+#include <malloc.h>
+#include <windows.h>
+static void* tbSystemAlignedAlloc(size_t alignment, size_t size)
+{
+	return _aligned_malloc(size, alignment);
+}
+static void tbSystemAlignedFree(void* memory)
+{
+	_aligned_free(memory);
+}
+#else
+static void* tbSystemAlignedAlloc(size_t alignment, size_t size)
+{
+	return aligned_alloc(alignment, size);
+}
+static void tbSystemAlignedFree(void* memory)
+{
+	free(memory);
+}
+#endif
+
 #define TB_ALIGNMENT 32
 
 static tbAllocFcn* s_allocFcn = NULL;
@@ -47,7 +71,7 @@ void* tbAlloc(int size)
 	// Round up to the alignment so aligned_alloc accepts the size.
 	int rounded = ((size - 1) | (TB_ALIGNMENT - 1)) + 1;
 	void* p = s_allocFcn != NULL ? s_allocFcn((unsigned int)rounded, TB_ALIGNMENT)
-								 : aligned_alloc(TB_ALIGNMENT, (size_t)rounded);
+								 : tbSystemAlignedAlloc(TB_ALIGNMENT, (size_t)rounded);
 	if (p == NULL)
 	{
 		fprintf(stderr, "tumble: out of memory allocating %d bytes\n", size);
@@ -69,7 +93,7 @@ void tbFree(void* memory, int size)
 	}
 	else
 	{
-		free(memory);
+		tbSystemAlignedFree(memory);
 	}
 	atomic_fetch_sub(&s_byteCount, size);
 }
@@ -170,11 +194,19 @@ int tbInternalAssert(const char* condition, const char* fileName, int lineNumber
 	abort();
 }
 
+/// Nanoseconds of a monotonic clock.
 uint64_t tbGetTicks(void)
 {
+#if defined(_WIN32)
+	LARGE_INTEGER counter, frequency;
+	QueryPerformanceCounter(&counter);
+	QueryPerformanceFrequency(&frequency);
+	return (uint64_t)((double)counter.QuadPart * (1e9 / (double)frequency.QuadPart));
+#else
 	struct timespec ts;
 	clock_gettime(CLOCK_MONOTONIC, &ts);
 	return (uint64_t)ts.tv_sec * 1000000000ull + (uint64_t)ts.tv_nsec;
+#endif
 }
 
 float tbGetMilliseconds(uint64_t ticks)

@@ -26,12 +26,6 @@ int tbInternalAssert(const char* condition, const char* fileName, int lineNumber
 		}                                                                                                             \
 	} while (0)
 
-#if defined(TUMBLE_VALIDATE)
-#define TB_VALIDATE 1
-#else
-#define TB_VALIDATE 0
-#endif
-
 /// Allocate size bytes (32-byte aligned) through the hook. Counts toward tbGetByteCount.
 void* tbAlloc(int size);
 
@@ -58,3 +52,13 @@ bool tbCheckLength(const char* function, const char* name, float value, bool pos
 bool tbCheckPoints(const char* function, const char* name, const tbVec2* points, int count);
 /// True when v is finite and each coordinate within ±TB_MAX_COORDINATE.
 bool tbIsCoordinate(tbVec2 v);
+
+/// Closest point to p on the segment a–b (Ericson, Real-Time Collision Detection, §5.1.2), with
+/// its fraction t along a → b; a degenerate segment (a = b) gives a and t = 0.
+static inline tbVec2 tbClosestPointOnSegment(float* t, tbVec2 p, tbVec2 a, tbVec2 b)
+{
+	tbVec2 e = tbSub(b, a);
+	float ee = tbDot(e, e);
+	*t = ee > 0.0f ? tbClampFloat(tbDot(tbSub(p, a), e) / ee, 0.0f, 1.0f) : 0.0f;
+	return tbMulAdd(a, *t, e);
+}

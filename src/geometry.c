@@ -467,19 +467,6 @@ tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbTransform transform)
 // ---------------------------------------------------------------------------------------------
 // Point tests
 
-// Closest point to p on the segment a–b (Ericson §5.1.2), safe for a == b.
-static tbVec2 tbClosestPointOnSegment(tbVec2 p, tbVec2 a, tbVec2 b)
-{
-	tbVec2 ab = tbSub(b, a);
-	float lengthSquared = tbDot(ab, ab);
-	if (lengthSquared < FLT_EPSILON * FLT_EPSILON)
-	{
-		return a;
-	}
-	float t = tbClampFloat(tbDot(tbSub(p, a), ab) / lengthSquared, 0.0f, 1.0f);
-	return tbMulAdd(a, t, ab);
-}
-
 bool tbPointInCircle(const tbCircle* shape, tbVec2 point)
 {
 	return tbDistanceSquared(point, shape->center) <= shape->radius * shape->radius;
@@ -487,7 +474,8 @@ bool tbPointInCircle(const tbCircle* shape, tbVec2 point)
 
 bool tbPointInCapsule(const tbCapsule* shape, tbVec2 point)
 {
-	tbVec2 closest = tbClosestPointOnSegment(point, shape->center1, shape->center2);
+	float t;
+	tbVec2 closest = tbClosestPointOnSegment(&t, point, shape->center1, shape->center2);
 	return tbDistanceSquared(point, closest) <= shape->radius * shape->radius;
 }
 
@@ -520,7 +508,8 @@ bool tbPointInPolygon(const tbPolygon* shape, tbVec2 point)
 	{
 		tbVec2 a = shape->vertices[i];
 		tbVec2 b = shape->vertices[(i + 1) % shape->count];
-		if (tbDistanceSquared(point, tbClosestPointOnSegment(point, a, b)) <= rr)
+		float t;
+		if (tbDistanceSquared(point, tbClosestPointOnSegment(&t, point, a, b)) <= rr)
 		{
 			return true;
 		}

@@ -34,6 +34,7 @@
 // polygons): it gives one normal but needs the same clipping afterwards and costs more.
 #include "core.h"
 #include "distance_internal.h"
+#include "manifold_internal.h"
 
 #include "tumble/collision.h"
 
@@ -42,10 +43,6 @@
 // The public pair routines keep a point while its separation is below this (m):
 // TB_SPECULATIVE_DISTANCE = 0.02 m.
 #define TB_KEEP_DISTANCE TB_SPECULATIVE_DISTANCE
-
-// GJK/EPA polygon manifold with a caller's keep distance (manifold_gjk.c; internal).
-tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-										  tbTransform xfB, float keep);
 
 // Relative tolerance of the reference face choice, 0.1 × linear slop = 0.0005 m: B's face is
 // the reference only when its separation exceeds A's by more than this, so that two
@@ -116,17 +113,6 @@ static tbManifoldPoint tbMakeManifoldPoint(tbVec2 qA, tbVec2 qB, tbVec2 n, float
 	return mp;
 }
 
-// Moves a manifold computed in A's frame to world space.
-static tbManifold tbManifoldToWorld(tbManifold m, tbTransform xfA)
-{
-	m.normal = tbRotateVector(xfA.q, m.normal);
-	for (int i = 0; i < m.pointCount; ++i)
-	{
-		m.points[i].point = tbTransformPoint(xfA, m.points[i].point);
-	}
-	return m;
-}
-
 // One point between two core points (circle centres, closest points of segments), in A's frame.
 // The normal is along qB − qA; when the cores touch (|qB − qA| < FLT_EPSILON) it is `fallback`,
 // so coincident shapes still get a unit normal and never a NaN.
@@ -164,15 +150,6 @@ static tbManifold tbFacePointManifold(tbVec2 q, float rA, tbVec2 c, float rB, tb
 	m.points[0] = mp;
 	m.pointCount = 1;
 	return m;
-}
-
-// Closest point to p on the segment a–b (Ericson §5.1.2), with its fraction t along a → b.
-static tbVec2 tbClosestPointOnSegment(float* t, tbVec2 p, tbVec2 a, tbVec2 b)
-{
-	tbVec2 e = tbSub(b, a);
-	float ee = tbDot(e, e);
-	*t = ee > 0.0f ? tbClampFloat(tbDot(tbSub(p, a), e) / ee, 0.0f, 1.0f) : 0.0f;
-	return tbMulAdd(a, *t, e);
 }
 
 // A capsule core or a segment as a 2-vertex polygon: edge 0 runs p1 → p2 with outward normal

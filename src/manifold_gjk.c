@@ -33,6 +33,7 @@
 // origin). anchorA and anchorB are left zero for the world to fill.
 
 #include "core.h"
+#include "manifold_internal.h"
 
 #include "tumble/collision.h"
 
@@ -192,21 +193,6 @@ static tbManifold tbCornerManifold(const tbSeparationOutput* separation, const t
 	return m;
 }
 
-static tbManifold tbLocalManifoldToWorld(tbManifold m, tbTransform xfA)
-{
-	m.normal = tbRotateVector(xfA.q, m.normal);
-	for (int i = 0; i < m.pointCount; ++i)
-	{
-		m.points[i].point = tbTransformPoint(xfA, m.points[i].point);
-	}
-	return m;
-}
-
-// Internal (declared in manifold.c too, which dispatches to it): points kept while the
-// separation is below `keep`.
-tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-										  tbTransform xfB, float keep);
-
 tbManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
 								tbTransform xfB)
 {
@@ -241,7 +227,7 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 	float coreSeparation = separation.separation + polygonA->radius + polygonB->radius;
 	if (coreSeparation > tbMaxFloat(separationA, separationB) + TB_GJK_CORNER_TOLERANCE)
 	{
-		return tbLocalManifoldToWorld(tbCornerManifold(&separation, polygonA, &localB, n), xfA);
+		return tbManifoldToWorld(tbCornerManifold(&separation, polygonA, &localB, n), xfA);
 	}
 
 	tbManifold m;
@@ -258,7 +244,7 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 	{
 		// the incident edge is edge-on to the face or misses its slab (only within the
 		// tolerances above): the GJK/EPA witness pair is still a valid single contact
-		return tbLocalManifoldToWorld(tbCornerManifold(&separation, polygonA, &localB, n), xfA);
+		return tbManifoldToWorld(tbCornerManifold(&separation, polygonA, &localB, n), xfA);
 	}
-	return tbLocalManifoldToWorld(m, xfA);
+	return tbManifoldToWorld(m, xfA);
 }

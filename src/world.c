@@ -328,7 +328,6 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	s_worldGenerations[slot] = world->generation;
 	world->bodyGenerationBase = s_bodyGenerations[slot];
 	world->shapeGenerationBase = s_shapeGenerations[slot];
-	world->inUse = true;
 	world->userData = def->userData;
 	tbHashSet_Create(&world->pairSet, 64);
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
@@ -514,6 +513,13 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 
 	t = tbGetTicks();
 	tbFinalizeStage(world, timeStep);
+	world->profile.finalize = tbGetMilliseconds(t);
+
+	t = tbGetTicks();
+	tbReportHitEvents(world);
+	world->profile.events = tbGetMilliseconds(t);
+
+	t = tbGetTicks();
 	tbSleepStage(world, timeStep);
 	world->profile.sleep = tbGetMilliseconds(t);
 

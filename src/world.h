@@ -181,7 +181,6 @@ typedef struct tbWorld
 	// destroyed world never matches an object of a new world that took its slot.
 	uint16_t bodyGenerationBase;
 	uint16_t shapeGenerationBase;
-	bool inUse;
 	bool locked; ///< true during the step: the API refuses every change
 	/// Query callbacks running (nested queries count): the API refuses what would change the
 	/// broad phase being walked (create, destroy, SetTransform, SetType, filters, collideConnected)
@@ -317,7 +316,7 @@ typedef struct tbWorld
 	float stepTime;		///< time step of the current (or last) tbWorld_Step (s); 0 before the first
 	tbProfile profile;
 	tbCounters counters;
-	int byteCount;
+	int hitContactCount; ///< contacts with tb_contactEnableHits (hit events are gathered only when > 0)
 	void* userData;
 } tbWorld;
 

@@ -189,7 +189,8 @@ Test(accessors, world_switches_and_callbacks)
 	cr_assert(fabsf(tbBody_GetPosition(box).y - 0.5f) < 0.02f, "still resting after the switches");
 	// The profile's stages are parts of the step (not a timing claim: only their sum is bounded).
 	tbProfile profile = tbWorld_GetProfile(world);
-	float parts = profile.pairs + profile.collide + profile.islands + profile.solve + profile.continuous + profile.sleep;
+	float parts = profile.pairs + profile.collide + profile.islands + profile.solve + profile.continuous +
+				  profile.finalize + profile.events + profile.sleep;
 	cr_assert(profile.solve > 0.0f && parts <= profile.step * 1.0001f + 1e-6f, "stages %g ms of a %g ms step",
 			  (double)parts, (double)profile.step);
 	tbVersion version = tbGetVersion(); // 0.1.0, as CHANGELOG.md's heading

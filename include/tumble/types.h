@@ -537,17 +537,18 @@ typedef struct tbJointEvents
 // ---------------------------------------------------------------------------------------------
 // Profile and counters
 
-/// Milliseconds spent in each stage of the last step.
+/// Milliseconds spent in each stage of the last step (tbWorld_Step's pipeline, in order).
 typedef struct tbProfile
 {
-	float step;
-	float pairs;
-	float collide;
-	float islands;
-	float solve;
-	float continuous;
-	float sleep;
-	float events;
+	float step;		  ///< the whole step
+	float pairs;	  ///< broad phase: new pairs from moved proxies, contacts created
+	float collide;	  ///< narrow phase: manifolds, begin/end touch, contacts destroyed
+	float islands;	  ///< awake bodies and touching contacts gathered, constraint graph coloured
+	float solve;	  ///< contact and joint preparation, sub-steps, impulses stored
+	float continuous; ///< time of impact of fast bodies
+	float finalize;	  ///< sleep timers, bounding boxes, proxies moved, move events
+	float events;	  ///< hit events gathered (0 when no contact enables them)
+	float sleep;	  ///< islands put to sleep
 } tbProfile;
 
 /// Counts from the last step.

@@ -1,4 +1,6 @@
-// Review regressions: each test pins one defect found in review of world/body/shape/contact/query.
+// Changes made through the API between and during steps: teleports, type changes and moving kinematic
+// bodies wake what they touch, destroyed shapes end their contacts with an event, event arrays stay
+// valid while the game destroys what they name, query callbacks cannot change the broad phase.
 // The scenes are tiny (a ground and a few boxes) so every test runs in well under a second.
 #include <criterion/criterion.h>
 
@@ -51,7 +53,7 @@ static void Run(tbWorldId world, int steps)
 // A sleeping box rests on a static ground. Moving the ground away with tbBody_SetTransform must
 // wake the box: otherwise neither body is awake, the contact is never updated, and the box hangs
 // in the air forever. After 1 s of free fall from rest a box drops g·t²/2 = 5 m; we ask for > 2 m.
-Test(review, teleport_wakes_resting_neighbours)
+Test(api_changes, teleport_wakes_resting_neighbours)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
@@ -71,7 +73,7 @@ Test(review, teleport_wakes_resting_neighbours)
 // Destroying a body that touches another between steps ends the touch. The end event must reach
 // the user after the next step (it used to be pushed and then cleared at the start of that step,
 // so it was never seen).
-Test(review, destroy_end_event_reported_after_next_step)
+Test(api_changes, destroy_end_event_reported_after_next_step)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
@@ -100,7 +102,7 @@ Test(review, destroy_end_event_reported_after_next_step)
 // reallocate the array in its hands. 16 boxes are lifted off the ground (16 end events fill the
 // array's first allocation of 16), then reading them while destroying a 17th touching box must
 // keep the array readable (AddressSanitizer reports a use after free otherwise).
-Test(review, event_array_stays_valid_while_destroying)
+Test(api_changes, event_array_stays_valid_while_destroying)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
@@ -153,7 +155,7 @@ static bool DestroyInCallback(tbShapeId shapeId, void* context)
 // Destroying bodies from inside a query callback frees broad-phase nodes that the query is still
 // walking. The world is locked during a query: the destroy is refused with an error that names the
 // function, every reported shape is alive, and the world keeps its 21 bodies.
-Test(review, query_callback_cannot_mutate, .init = SetupErrors, .fini = TeardownErrors)
+Test(api_changes, query_callback_cannot_mutate, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
@@ -200,7 +202,7 @@ static float CountCast(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fra
 // A NaN radius or a polygon with 100 vertices (the arrays hold 8) used to reach the narrow phase:
 // NaN distances, or reads past the vertex arrays. Both shape queries refuse them with an error
 // that names the function and the bad field, and report nothing.
-Test(review, shape_queries_check_geometry, .init = SetupErrors, .fini = TeardownErrors)
+Test(api_changes, shape_queries_check_geometry, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
@@ -235,7 +237,7 @@ Test(review, shape_queries_check_geometry, .init = SetupErrors, .fini = Teardown
 // of mass at rest, so its origin moves at ω × (origin − centre) = 2 × (−1, 0) = (0, −2) m/s.
 // Making it kinematic moves its centre to the origin; the origin must keep (0, −2) m/s (it used to
 // take the old centre's velocity, 0).
-Test(review, set_type_keeps_origin_velocity)
+Test(api_changes, set_type_keeps_origin_velocity)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	worldDef.gravity = tb_vec2_zero;
@@ -256,7 +258,7 @@ Test(review, set_type_keeps_origin_velocity)
 	tbDestroyWorld(world);
 }
 
-Test(review, moving_kinematic_wakes_resting_bodies)
+Test(api_changes, moving_kinematic_wakes_resting_bodies)
 {
 	// A box falls asleep on a kinematic platform at rest; the platform then moves up at 2 m/s. The
 	// box must wake and ride up with it: after 1 s the platform has risen 2 m (kinematic motion is
