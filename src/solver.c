@@ -34,11 +34,13 @@ static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraint
 {
 	int bodyBytes = (int)sizeof(tbSolverBody) * (bodyCount + 1);
 	int motionBytes = (((int)sizeof(tbSolverMotion) * bodyCount + 31) / 32) * 32;
+	int massBytes = (((int)sizeof(tbSolverMass) * (bodyCount + 1) + 31) / 32) * 32;
 	int constraintBytes = (int)sizeof(tbContactConstraint) * constraintCount;
-	char* p = tbArenaAlloc(&context->world->stepArena, bodyBytes + motionBytes + constraintBytes);
+	char* p = tbArenaAlloc(&context->world->stepArena, bodyBytes + motionBytes + massBytes + constraintBytes);
 	context->bodies = (tbSolverBody*)p;
 	context->motions = (tbSolverMotion*)(p + bodyBytes);
-	context->constraints = (tbContactConstraint*)(p + bodyBytes + motionBytes);
+	context->masses = (tbSolverMass*)(p + bodyBytes + motionBytes);
+	context->constraints = (tbContactConstraint*)(p + bodyBytes + motionBytes + massBytes);
 	context->bodyCount = bodyCount;
 	context->constraintCount = constraintCount;
 	context->linearLocks = NULL;
@@ -77,8 +79,15 @@ static void tbGatherBodiesTask(int start, int end, uint32_t workerIndex, void* t
 			context->linearLocks[i] = (uint8_t)((body->lockLinearX ? 1 : 0) | (body->lockLinearY ? 2 : 0));
 		}
 
+		tbSolverMass* mass = context->masses + i;
+		bool dynamic = body->type == tb_dynamicBody;
+		mass->invMass = dynamic ? body->invMass : 0.0f;
+		mass->invI = dynamic && !body->fixedRotation ? body->invInertia : 0.0f;
+		mass->gravityScale = body->gravityScale;
+		mass->padding = 0.0f;
+
 		tbSolverMotion* m = context->motions + i;
-		if (body->type == tb_dynamicBody)
+		if (dynamic)
 		{
 			tbVec2 acceleration = tbMulAdd(tbMulSV(body->gravityScale, gravity), body->invMass, body->force);
 			float invInertia = body->fixedRotation ? 0.0f : body->invInertia;
@@ -104,6 +113,7 @@ static void tbGatherBodies(tbStepContext* context)
 	tbSolverBody* fixed = context->bodies + context->bodyCount;
 	memset(fixed, 0, sizeof(*fixed));
 	fixed->deltaRotation = tb_rot_identity;
+	memset(context->masses + context->bodyCount, 0, sizeof(tbSolverMass));
 }
 
 

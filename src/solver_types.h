@@ -40,6 +40,20 @@ typedef struct tbSolverMotion
 
 _Static_assert(sizeof(tbSolverMotion) == 20, "tbSolverMotion is meant to be 20 bytes");
 
+/// What the contact preparation needs of a body, read once per contact end: 16 bytes in solver
+/// order, so that preparing a contact reads no tbBody beyond its solver index. Zero for
+/// kinematic bodies and for the static stand-in (they do not respond); invI is 0 for a body with
+/// fixed rotation.
+typedef struct tbSolverMass
+{
+	float invMass;		///< 1/kg
+	float invI;			///< 1/(kg·m²), about the centre of mass
+	float gravityScale; ///< the body's, for the impact speed estimate of speculative points
+	float padding;
+} tbSolverMass;
+
+_Static_assert(sizeof(tbSolverMass) == 16, "tbSolverMass is meant to be 16 bytes");
+
 /// Soft constraint coefficients (Catto 2024, "soft step"), for one stiffness and sub-step h:
 /// with ω = 2π·hertz, ζ the damping ratio and a = h·ω·(2ζ + h·ω),
 /// biasRate = ω/(2ζ + h·ω) (1/s), massScale = a/(1 + a), impulseScale = 1/(1 + a).
@@ -166,6 +180,7 @@ typedef struct tbStepContext
 
 	tbSolverBody* bodies; ///< bodyCount + 1 (the last is the static stand-in)
 	tbSolverMotion* motions;
+	tbSolverMass* masses; ///< bodyCount + 1, as bodies
 	uint8_t* linearLocks; ///< per solver body: 1 x locked, 2 y locked (motion locks); NULL when no body has one
 	int bodyCount;
 

@@ -28,6 +28,8 @@ typedef struct tbBody
 	float gravityScale;
 	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
 	int awakeIndex;		///< index in world->awakeBodies, or TB_NULL_INDEX when asleep or static
+	int solverIndex;	///< index in the solver's body arrays this step, or TB_NULL_INDEX (read by
+						///< the contact preparation for every contact: kept in this first line)
 	uint8_t type;		///< tbBodyType
 
 	tbVec2 center0;		///< centre of mass at the start of the step (continuous collision)
@@ -50,7 +52,6 @@ typedef struct tbBody
 	int headJointKey; ///< doubly linked joint edges (joint.h); key = (jointId << 1) | edge
 	int jointCount;
 
-	int solverIndex;	  ///< index in the solver's body arrays this step, or TB_NULL_INDEX
 	uint32_t islandStamp; ///< step stamp used by the island search (unsigned: wraps without overflow)
 
 	const char* name;
