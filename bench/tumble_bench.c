@@ -1435,7 +1435,8 @@ static void PrintUsage(void)
 		   "                    [--peer box2d-2.4.1|box2d-3|chipmunk-7]... [--interleave]\n"
 		   "                    [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
-		   "                    [--substeps N] [--iterations N] [--relax N] [--scalar-solver] [--chipmunk-tree] [--workers N]\n"
+		   "                    [--substeps N] [--iterations N] [--relax N] [--final-relax N]\n"
+		   "                    [--settled-ratio X] [--scalar-solver] [--chipmunk-tree] [--workers N]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
 		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
@@ -1585,6 +1586,15 @@ int main(int argc, char** argv)
 		else if (strcmp(arg, "--relax") == 0 && hasValue)
 		{
 			options.config.overrides.relaxIterations = atoi(argv[++i]);
+		}
+		else if (strcmp(arg, "--final-relax") == 0 && hasValue)
+		{
+			options.config.overrides.finalRelaxIterations = atoi(argv[++i]);
+			options.config.overrides.finalRelaxGiven = true;
+		}
+		else if (strcmp(arg, "--settled-ratio") == 0 && hasValue)
+		{
+			options.config.overrides.settledHertzRatio = (float)atof(argv[++i]);
 		}
 		else if ((strcmp(arg, "--broadphase") == 0 || strcmp(arg, "--narrowphase") == 0 || strcmp(arg, "--toi") == 0 ||
 				  strcmp(arg, "--solver") == 0) &&

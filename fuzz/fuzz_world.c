@@ -26,10 +26,15 @@ typedef struct Ids
 	int deadShapeCount;
 } Ids;
 
+// FUZZ_TRACE=1 in the environment prints every call's kind and every refusal's message: what a
+// finding needs to be read as a call sequence (./fuzz_world CRASH_FILE replays one input).
+static bool s_trace = false;
+#define TRACE(...) (s_trace ? (void)fprintf(stderr, __VA_ARGS__) : (void)0)
+
 static void Quiet(const char* message, void* context)
 {
-	(void)message;
 	(void)context;
+	TRACE("  refused: %s\n", message);
 }
 
 static tbVec2 FuzzVec2(FuzzInput* in)
@@ -117,6 +122,9 @@ static void CreateBody(FuzzInput* in, Ids* ids, tbWorldId world)
 	def.gravityScale = FuzzInt(in, 2) ? FuzzFloat(in) : 1.0f;
 	def.isBullet = FuzzInt(in, 4) == 0;
 	tbBodyId body = tbCreateBody(world, &def);
+	TRACE("create body type %d at (%g, %g) v (%g, %g) w %g gravityScale %g bullet %d -> %d\n", (int)def.type,
+		  (double)def.position.x, (double)def.position.y, (double)def.linearVelocity.x, (double)def.linearVelocity.y,
+		  (double)def.angularVelocity, (double)def.gravityScale, (int)def.isBullet, body.index1);
 	if (TB_IS_NON_NULL(body))
 	{
 		Remember(ids->bodies, &ids->bodyCount, body);
@@ -130,7 +138,14 @@ static void CreateShape(FuzzInput* in, Ids* ids)
 	def.material.friction = FuzzInt(in, 2) ? FuzzFloat(in) : 0.6f;
 	def.material.restitution = FuzzInt(in, 4) == 0 ? FuzzFloat(in) : 0.0f;
 	tbGeometry g = FuzzGeometry(in);
-	tbShapeId shape = tbCreateShape(PickBody(in, ids), &def, &g);
+	tbBodyId body = PickBody(in, ids);
+	tbShapeId shape = tbCreateShape(body, &def, &g);
+	TRACE("create shape type %d density %g friction %g restitution %g on body %d -> %d\n", (int)g.type,
+		  (double)def.density, (double)def.material.friction, (double)def.material.restitution, body.index1,
+		  shape.index1);
+	TRACE("  first floats of the geometry: %g %g %g %g %g (polygon: %d vertices, radius %g)\n",
+		  (double)g.circle.center.x, (double)g.circle.center.y, (double)g.circle.radius, (double)g.capsule.radius,
+		  (double)g.segment.point2.y, g.polygon.count, (double)g.polygon.radius);
 	if (TB_IS_NON_NULL(shape))
 	{
 		RememberShape(ids->shapes, &ids->shapeCount, shape);
@@ -166,14 +181,24 @@ static void DestroyShape(FuzzInput* in, Ids* ids)
 static void Modify(FuzzInput* in, Ids* ids)
 {
 	tbBodyId body = PickBody(in, ids);
-	switch (FuzzInt(in, 8))
+	int kind = FuzzInt(in, 8);
+	TRACE("modify body %d: kind %d\n", body.index1, kind);
+	switch (kind)
 	{
 		case 0:
-			tbBody_SetLinearVelocity(body, FuzzVec2(in));
+		{
+			tbVec2 v = FuzzVec2(in);
+			TRACE("  linear velocity (%g, %g)\n", (double)v.x, (double)v.y);
+			tbBody_SetLinearVelocity(body, v);
 			break;
+		}
 		case 1:
-			tbBody_SetAngularVelocity(body, FuzzFloat(in));
+		{
+			float w = FuzzFloat(in);
+			TRACE("  angular velocity %g\n", (double)w);
+			tbBody_SetAngularVelocity(body, w);
 			break;
+		}
 		case 2:
 			tbBody_SetTransform(body, FuzzVec2(in), tbMakeRot(FuzzFloat(in)));
 			break;
@@ -288,6 +313,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
+	s_trace = getenv("FUZZ_TRACE") != NULL;
 	tbSetErrorCallback(Quiet, NULL);
 	FuzzInput in = {data, size, 0};
 	Ids ids;
@@ -298,7 +324,13 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	{
 		int slot = FuzzInt(&in, 4);
 		tbWorldId world = ids.worlds[slot];
-		switch (FuzzInt(&in, 10))
+		int op = FuzzInt(&in, 10);
+		TRACE("world slot %d, op %d\n", slot, op);
+		if (s_trace)
+		{
+			CheckStep(&ids); // tracing: stop at the call that broke a body, not at the next step
+		}
+		switch (op)
 		{
 			case 0:
 			case 1:
@@ -317,9 +349,13 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 				Modify(&in, &ids);
 				break;
 			case 6:
-				if (steps < 200 && tbWorld_Step(world, FuzzInt(&in, 2) ? FuzzFloat(&in) : 1.0f / 60.0f, 1 + FuzzInt(&in, 8)))
+				if (steps < 200)
 				{
-					steps += 1;
+					float dt = FuzzInt(&in, 2) ? FuzzFloat(&in) : 1.0f / 60.0f;
+					int subSteps = 1 + FuzzInt(&in, 8);
+					bool stepped = tbWorld_Step(world, dt, subSteps);
+					TRACE("step dt %g, %d sub-steps: %s\n", (double)dt, subSteps, stepped ? "stepped" : "refused");
+					steps += stepped ? 1 : 0;
 				}
 				CheckStep(&ids);
 				break;

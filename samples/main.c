@@ -57,7 +57,8 @@ static void PrintUsage(void)
 		   "  tumble run SCENE [--steps N] [--png DIR] [--every K] [--size WxH] [--csv FILE]\n"
 		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                   [--toi off|quadratic|ca] [--solver baumgarte|ngs|soft] [--substeps N]\n"
-		   "                   [--iterations N] [--relax N] [--scalar-solver] [--no-recycle] [--impact-propagation] [--workers N]\n"
+		   "                   [--iterations N] [--relax N] [--final-relax N] [--settled-ratio X]\n"
+		   "                   [--scalar-solver] [--no-recycle] [--impact-propagation] [--workers N]\n"
 		   "                   [--sheet FILE.png] [--frames N] [--contacts]\n"
 		   "                   [--aabbs] [--tree]\n"
 		   "  tumble export SCENE\n"
@@ -192,6 +193,18 @@ static int ParseValueOption(Options* options, const char* flag, const char* valu
 	else if (strcmp(flag, "--relax") == 0)
 	{
 		ok = ParsePositiveInt(value, &options->overrides.relaxIterations);
+	}
+	else if (strcmp(flag, "--final-relax") == 0)
+	{
+		ok = options->overrides.finalRelaxGiven =
+			ParsePositiveInt(value, &options->overrides.finalRelaxIterations) || strcmp(value, "0") == 0;
+	}
+	else if (strcmp(flag, "--settled-ratio") == 0)
+	{
+		char* end = NULL;
+		float ratio = strtof(value, &end);
+		ok = end != value && *end == '\0' && ratio > 0.0f && ratio <= 1000.0f;
+		options->overrides.settledHertzRatio = ok ? ratio : 0.0f;
 	}
 	else if (strcmp(flag, "--sheet") == 0 || strcmp(flag, "--out") == 0)
 	{

@@ -329,6 +329,14 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 		{
 			def.relaxIterations = overrides->relaxIterations;
 		}
+		if (overrides->finalRelaxGiven)
+		{
+			def.finalRelaxIterations = overrides->finalRelaxIterations;
+		}
+		if (overrides->settledHertzRatio > 0.0f)
+		{
+			def.settledHertzRatio = overrides->settledHertzRatio;
+		}
 		if (overrides->scalarSolver)
 		{
 			def.enableWideSolver = false;

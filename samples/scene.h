@@ -181,6 +181,9 @@ typedef struct SceneOverrides
 	int velocityIterations; ///< > 0 replaces the world default
 	int subSteps;			///< > 0 replaces the scene's sub-step count (for callers that step)
 	int relaxIterations;	///< > 0 replaces tbWorldDef::relaxIterations (soft step's relaxing passes)
+	int finalRelaxIterations; ///< with finalRelaxGiven, replaces tbWorldDef::finalRelaxIterations
+	bool finalRelaxGiven;
+	float settledHertzRatio; ///< > 0 replaces tbWorldDef::settledHertzRatio
 	bool scalarSolver;		///< true: the scalar reference contact solver (tbWorldDef::enableWideSolver off)
 	bool noRecycle;			///< true: every manifold recomputed (tbWorldDef::enableManifoldRecycling off)
 	bool impactPropagation; ///< true: tbWorldDef::enableImpactPropagation (Newton's cradle)

@@ -169,11 +169,11 @@ static void tbSettleSoftness(const tbStepContext* context, tbContactConstraint* 
 	float ramp = tbClampFloat(((float)age - settleSteps) / settleSteps, 0.0f, 1.0f);
 	if (ramp >= 1.0f)
 	{
-		c->softness = context->staticSoftness;
+		c->softness = context->settledSoftness;
 	}
 	else if (ramp > 0.0f)
 	{
-		float hertz = context->contactHertz + (context->restHertz - context->contactHertz) * ramp;
+		float hertz = context->contactHertz + (context->settledHertz - context->contactHertz) * ramp;
 		c->softness = tbMakeSoftness(hertz, context->dampingRatio, context->h);
 	}
 }

@@ -215,8 +215,10 @@ static tbMassData tbMassFromMoments(tbAreaMoments moments, tbVec2 origin, float 
 {
 	tbMassData data = {0};
 	data.center = origin;
-	if (moments.area <= 0.0f)
+	if (!(moments.area >= FLT_MIN))
 	{
+		// No area, or less than FLT_MIN (a 1e-20 m box: 4e-40 m²): 1/area would overflow to ∞ and
+		// the centre become ∞ · 0 = NaN. Such a shape has no mass, as a segment has none.
 		return data;
 	}
 	tbVec2 offset = tbMulSV(1.0f / moments.area, moments.first);

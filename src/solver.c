@@ -219,6 +219,7 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	{
 		for (int i = 0; i < subStepCount; ++i)
 		{
+			context.subStepIndex = i;
 			tbIntegrateVelocities(&context);
 			tbWarmStartJoints(&context);
 			tbWarmStartContacts(&context);

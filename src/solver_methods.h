@@ -8,6 +8,9 @@
 
 void tbSoftPrepare(tbStepContext* context);
 void tbSoftSubStep(tbStepContext* context);
+/// Relaxing passes of sub-step subStepIndex: relaxIterations, finalRelaxIterations more in the last
+/// sub-step, and the joint trees' extra ones (joint.c).
+int tbSoftRelaxIterations(const tbStepContext* context, int subStepIndex);
 /// After tbPrepareContacts: the soft step's stiffness of each dynamic contact.
 
 void tbBaumgartePrepare(tbStepContext* context);

@@ -14,27 +14,46 @@
 //
 // Per sub-step: one biased pass (push-out of overlap at a bounded speed), integrate positions,
 // then relaxIterations passes with the bias off, which remove the push-out velocity so that
-// resolved overlap does not turn into bounce (the "relax" of soft step). Speculative gaps
-// (s > 0) always use the rigid bias s/h. The default is 2 relax passes: they let piles at the
-// resting stiffness settle (measured at 60 Hz, 4 sub-steps, 10 s: large_pyramid's fastest box
-// after 9 s 0.58 m/s with 1 pass, 0.002 m/s with 2, 0.001 m/s with 3; heavy_on_pyramids never
-// sleeps with 1 pass, sleeps at step 332 with 2 and 178 with 3). Perturbed card houses stand in
-// 60 of 60 with 1, 2 or 3 passes. Positions do not move between the relax passes of a sub-step,
-// so the wide solver computes each point's speculative bias in the first and reuses it in the
-// others (tb_biasRelaxRepeat: no position deltas gathered, bit-identical impulses). Extra passes
-// anywhere in the step work alike (1 pass per sub-step plus 4 in the last one also settles the
-// pyramid): it is the number of relaxing sweeps per step that settles a pile.
+// resolved overlap does not turn into bounce (the "relax" of soft step); the last sub-step adds
+// finalRelaxIterations passes. Speculative gaps (s > 0) always use the rigid bias s/h. It is the
+// number of relaxing sweeps per step, wherever they fall, that lets a pile at its resting
+// stiffness settle, and its stiffness that sets how many it needs. Measured at 60 Hz, 4 sub-steps,
+// 10 s, sleep off where it says drift (tests/test_stability.c's scenes):
+//
+//   relaxing passes    settled  large_pyramid top      heavy_on_    touching  card houses  step, ms
+//   per sub-step+last  stiffness drift/speed/sag       pyramids     stack sag standing     pyramid
+//   2 + 0 (earlier)    60 Hz    0.013/0.002/0.199 m    asleep 332   0.035 m   20/20        6.07
+//   1 + 0              60 Hz    0.227/0.579/0.223 m    never        0.035 m   20/20
+//   1 + 2              60 Hz    0.064/0.031/0.195 m    asleep 478   0.035 m   20/20
+//   1 + 0              52.5 Hz  0.042/0.036/0.263 m    asleep 506   0.045 m   20/20
+//   1 + 1 (default)    52.5 Hz  0.008/0.006/0.257 m    asleep 392   0.045 m   20/20        5.55
+//   1 + 1              48 Hz    0.017/0.003/0.304 m    asleep 266   0.054 m (sways 0.12 m)
+//   1 + 0              45 Hz    0.017/0.003/0.342 m    asleep 249   0.064 m (sways 0.31 m)
+//   1 + 0              30 Hz    0.009/0.000/0.734 m    asleep 154   1.28 m (falls)
+//
+// (speed: the fastest box over the last second; step: large_pyramid, one worker, medians of 3
+// alternated runs of 120 steps.) Settled contacts at 1.75 × contactHertz with one relaxing pass
+// per sub-step and one more in the last keep every test's bound with three fewer passes a step
+// (12 → 9; the passes after the first in a sub-step are the cheap repeats, so the step is 9 %
+// faster, not 25 %); the sag grows as 1/ω² (a touching stack 0.035 → 0.045 m, Box2D v3: 0.135 m).
+// A softer settled spring needs fewer sweeps but the tall stack sways; a stiffer one needs two
+// per sub-step. Positions do not move between the relax passes of a sub-step, so the wide solver
+// computes each point's speculative bias in the first and reuses it in the others
+// (tb_biasRelaxRepeat: no position deltas gathered, bit-identical impulses). Perturbed card
+// houses stand in 20 of 20 in every row.
 //
 // Stiffness (tests/test_stability.c, docs/methods.md):
 // - the resting stiffness, restHertz = min(2·contactHertz, ¼ sub-step rate): a spring faster than
 //   a quarter of the sub-step rate is not resolved by the integrator and only adds jitter. Static
 //   and kinematic contacts always use it (the ground has infinite mass, so there is no mass ratio
-//   to protect; Box2D v3 makes the same choice), and so do dynamic contacts once settled. A load F
-//   settles at F/(m_eff·ω²), so the resting stiffness is what keeps piles from sagging: the touching
-//   stack of 20 sinks 0.035 m at 60 Hz, 0.136 m at 30 Hz, where it also sways (0.15 m) and, without
-//   extra relax passes, buckles and falls;
+//   to protect; Box2D v3 makes the same choice);
+// - the settled stiffness, settledHertz = min(settledHertzRatio·contactHertz, ¼ sub-step rate),
+//   of dynamic contacts once settled (table above). A load F settles at F/(m_eff·ω²), so it is
+//   what keeps piles from sagging: the touching stack of 20 sinks 0.045 m at 52.5 Hz, 0.035 m at
+//   60 Hz, 0.136 m at 30 Hz, where it also sways (0.15 m) and, without extra relax passes,
+//   buckles and falls;
 // - a new dynamic contact keeps contactHertz for TB_SOFT_SETTLE_TIME of touching and then
-//   stiffens to restHertz: impacts and bodies falling into place meet the soft spring (a stiff
+//   stiffens to settledHertz: impacts and bodies falling into place meet the soft spring (a stiff
 //   one rings through a pile and saturates friction: 47 of 60 perturbed card houses stand with
 //   the resting stiffness from the first step, 59 of 60 with the settling);
 // - a dynamic contact overlapping by more than TB_SOFT_DEEP_OVERLAP at the start of the step is
@@ -48,7 +67,7 @@
 // load back into the stiffness and kept heavy piles jittering (docs/methods.md).
 //
 // Rejected: friction in fewer passes (Box2D v3 solves friction only in its relaxing pass). Measured
-// at 4 sub-steps against friction in every pass: friction in the first relaxing pass only was
+// at 4 sub-steps against friction in every pass (with the earlier 2 relaxing passes per sub-step): friction in the first relaxing pass only was
 // 10–15 % faster on the pyramids but made slopes creep 0.44 mm instead of 0.04 mm and left
 // large_pyramid's fastest box at 0.039 m/s after 9 s (0.002 m/s now); friction in the biased and
 // first relaxing passes only (5 % faster) left it at 0.69 m/s, in the biased and last only at
@@ -88,10 +107,13 @@ void tbSoftPrepare(tbStepContext* context)
 	}
 	hertz = tbMinFloat(hertz, maxHertz);
 	float restHertz = tbMinFloat(2.0f * hertz, maxHertz);
+	float settledHertz = tbMinFloat(def->settledHertzRatio * hertz, maxHertz);
 	context->contactHertz = hertz;
 	context->restHertz = restHertz;
+	context->settledHertz = settledHertz;
 	context->contactSoftness = tbMakeSoftness(hertz, def->contactDampingRatio, context->h);
 	context->staticSoftness = tbMakeSoftness(restHertz, def->contactDampingRatio, context->h);
+	context->settledSoftness = tbMakeSoftness(settledHertz, def->contactDampingRatio, context->h);
 	// The settling ramp below is applied by the contact preparation (tbSettleSoftness, contact_solver.c)
 	// while each contact is in cache; a pass of its own here waited on a load per contact.
 	context->settleSteps = TB_SOFT_SETTLE_TIME / context->timeStep;
@@ -99,12 +121,19 @@ void tbSoftPrepare(tbStepContext* context)
 	context->dampingRatio = def->contactDampingRatio;
 }
 
+int tbSoftRelaxIterations(const tbStepContext* context, int subStepIndex)
+{
+	const tbWorldDef* def = &context->world->def;
+	int final = subStepIndex == context->subStepCount - 1 ? def->finalRelaxIterations : 0;
+	return def->relaxIterations + final + tbJointTreeRelaxIterations(context); // joint.c
+}
+
 void tbSoftSubStep(tbStepContext* context)
 {
 	tbSolveJoints(context, true); // joint.c: soft positional correction
 	tbSolveContacts(context, tb_biasSoft);
 	tbIntegratePositions(context);
-	int relaxIterations = context->world->def.relaxIterations + tbJointTreeRelaxIterations(context); // joint.c
+	int relaxIterations = tbSoftRelaxIterations(context, context->subStepIndex);
 	for (int i = 0; i < relaxIterations; ++i)
 	{
 		if (tbRelaxJointsInIteration(context, i))

@@ -213,9 +213,12 @@ typedef struct tbStepContext
 	void* ngsScratch; ///< solver_ngs.c's constraints, step arena (taken at the first sub-step)
 
 	tbSoftness contactSoftness; ///< dynamic vs dynamic, new or deep (soft step: contactHertz)
-	tbSoftness staticSoftness;	///< dynamic vs static or kinematic, and settled dynamic (soft step: restHertz)
+	tbSoftness staticSoftness;	///< dynamic vs static or kinematic (soft step: restHertz)
+	tbSoftness settledSoftness; ///< settled dynamic (soft step: settledHertz)
 	float contactHertz;			///< soft step: Hz, stiffness of new and deep dynamic contacts
-	float restHertz;			///< soft step: Hz, stiffness of static and settled contacts
+	float restHertz;			///< soft step: Hz, stiffness of static and kinematic contacts
+	float settledHertz;			///< soft step: Hz, stiffness of dynamic contacts once settled
+	int subStepIndex;			///< the sub-step being solved, 0 .. subStepCount − 1
 	float settleSteps;			///< soft step: steps a new dynamic contact stays at contactHertz (0: no ramp)
 	float deepOverlap;			///< soft step: m, start-of-step overlap beyond which it stays at contactHertz
 	float dampingRatio;			///< soft step: of the ramped stiffness

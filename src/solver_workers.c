@@ -22,6 +22,7 @@
 #include "contact_solver.h"
 #include "integrator.h"
 #include "joint.h"
+#include "solver_methods.h"
 #include "task.h"
 #include "world.h"
 
@@ -149,9 +150,9 @@ static void tbAddJointPass(tbStageProgram* p, bool useBias)
 static void tbBuildSoftProgram(tbStageProgram* p)
 {
 	tbStepContext* context = p->context;
-	int relaxIterations = context->world->def.relaxIterations + tbJointTreeRelaxIterations(context);
 	for (int i = 0; i < context->subStepCount; ++i)
 	{
+		int relaxIterations = tbSoftRelaxIterations(context, i);
 		tbAddStage(p, tb_stageIntegrateVelocities, 0, context->bodyCount, TB_BODIES_PER_UNIT, tb_biasSoft, false);
 		tbAddJointColors(p, tb_stageWarmStartJoints, false);
 		tbAddContactPass(p, true, tb_biasSoft);
@@ -305,10 +306,13 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 	}
 	// Stages per sub-step: 2 integrations; per pass (warm start, solve, relaxes) one per contact
 	// colour and the overflow, and for the joints the trees' 2 stages and twice their colours.
-	int relaxIterations = world->def.relaxIterations + tbJointTreeRelaxIterations(context);
-	int passes = 2 + relaxIterations;
-	int perSubStep = 2 + passes * (1 + context->colorCount + 2 + 2 * (1 + context->jointColorCount));
-	int capacity = context->subStepCount * perSubStep;
+	int relaxPasses = 0;
+	for (int i = 0; i < context->subStepCount; ++i)
+	{
+		relaxPasses += tbSoftRelaxIterations(context, i);
+	}
+	int passStages = 1 + context->colorCount + 2 + 2 * (1 + context->jointColorCount);
+	int capacity = context->subStepCount * (2 + 2 * passStages) + relaxPasses * passStages;
 	tbStageProgram program;
 	program.context = context;
 	program.workerCount = workers;

@@ -30,6 +30,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.hitEventThreshold = 1.0f;
 	def.contactHertz = 30.0f;
 	def.contactDampingRatio = 10.0f;
+	def.settledHertzRatio = 1.75f;
 	def.contactHertzFollowsSubStep = false;
 	def.maxContactPushSpeed = 3.0f;
 	def.maximumLinearSpeed = 4000.0f;
@@ -40,7 +41,8 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.solver = tb_solverSoft;
 	def.velocityIterations = 8;
 	def.positionIterations = 3;
-	def.relaxIterations = 2;
+	def.relaxIterations = 1;
+	def.finalRelaxIterations = 1;
 	def.enableWideSolver = true;
 	def.enableJointTrees = true;
 	def.enableWarmStarting = true;
@@ -90,12 +92,20 @@ static bool tbCheckMethods(const tbWorldDef* def, const char* function)
 		return false;
 	}
 	if (def->velocityIterations < 1 || def->positionIterations < 0 || def->relaxIterations < 0 ||
-		def->velocityIterations > TB_MAX_ITERATIONS || def->positionIterations > TB_MAX_ITERATIONS ||
-		def->relaxIterations > TB_MAX_ITERATIONS)
+		def->finalRelaxIterations < 0 || def->velocityIterations > TB_MAX_ITERATIONS ||
+		def->positionIterations > TB_MAX_ITERATIONS || def->relaxIterations > TB_MAX_ITERATIONS ||
+		def->finalRelaxIterations > TB_MAX_ITERATIONS)
 	{
-		tbReportError(function, "def iterations are %d velocity, %d position, %d relax (velocity must be 1..%d, the "
-								"others 0..%d, TB_MAX_ITERATIONS)", def->velocityIterations, def->positionIterations,
-					  def->relaxIterations, TB_MAX_ITERATIONS, TB_MAX_ITERATIONS);
+		tbReportError(function, "def iterations are %d velocity, %d position, %d relax, %d final relax (velocity must "
+								"be 1..%d, the others 0..%d, TB_MAX_ITERATIONS)", def->velocityIterations,
+					  def->positionIterations, def->relaxIterations, def->finalRelaxIterations, TB_MAX_ITERATIONS,
+					  TB_MAX_ITERATIONS);
+		return false;
+	}
+	if (!(def->settledHertzRatio > 0.0f && def->settledHertzRatio <= 1000.0f))
+	{
+		tbReportError(function, "def.settledHertzRatio is %g (must be above 0 and at most 1000; 1.75 by default: "
+								"settled contacts at 1.75 × contactHertz)", (double)def->settledHertzRatio);
 		return false;
 	}
 	return true;

@@ -509,6 +509,42 @@ Test(world_limits, body_mass_below_flt_min_counts_as_no_mass, .init = SetupHooks
 	tbDestroyWorld(world);
 }
 
+Test(world_limits, polygon_with_area_below_flt_min_has_no_mass, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a box with half-extents 1e-20 m has an area of 4e-40 m², a subnormal
+	// float. The centroid's 1/area overflowed to ∞, the polygon's centre of mass became NaN, and a
+	// spinning body given that box had a NaN centre and velocity before any step. An area below
+	// FLT_MIN counts as none: no mass, centre at the vertices' mean (as a segment: no area, no
+	// mass), and the body moves as a dynamic body without mass does (1 kg about its origin).
+	tbPolygon box = tbMakeOffsetBox(1e-20f, 1e-20f, tbMakeVec2(1e-20f, 1e-20f), tb_rot_identity);
+	cr_assert_eq(box.count, 4);
+	tbMassData md = tbComputePolygonMass(&box, 1.0f);
+	cr_assert(md.mass == 0.0f && md.rotationalInertia == 0.0f, "mass %g, inertia %g", (double)md.mass,
+			  (double)md.rotationalInertia);
+	cr_assert(isfinite(md.center.x) && isfinite(md.center.y), "centre (%g, %g)", (double)md.center.x,
+			  (double)md.center.y);
+
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.linearVelocity = tbMakeVec2(-12.8f, 3.2f);
+	bodyDef.angularVelocity = 1.0f;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(body, &shapeDef, &box)));
+	cr_assert_float_eq(tbBody_GetMass(body), 1.0f, 0.0f);
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	cr_assert(isfinite(v.x) && isfinite(v.y), "v = (%g, %g)", (double)v.x, (double)v.y);
+	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+	tbVec2 p = tbBody_GetPosition(body);
+	v = tbBody_GetLinearVelocity(body);
+	cr_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y), "p (%g, %g) v (%g, %g)", (double)p.x,
+			  (double)p.y, (double)v.x, (double)v.y);
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
 Test(world_limits, rotational_inertia_below_flt_min_counts_as_none, .init = SetupHooks, .fini = TeardownHooks)
 {
 	// A circle of radius 1e-14 m and density 1e16 kg/m² has a normal mass, π·1e-12 kg, but a

@@ -1,4 +1,5 @@
-// Stability under load at the default settings (soft step, 60 Hz, 4 sub-steps, 2 relax passes):
+// Stability under load at the default settings (soft step, 60 Hz, 4 sub-steps, one relaxing pass
+// per sub-step and one more in the last, settled contacts at 1.75 × 30 Hz):
 // heavy loads come to rest, a large pyramid neither drifts nor keeps moving, a card house stands,
 // a touching stack and a pyramid sag little. The scenes are the shared catalogue's, so what is
 // tested here is what tumble-stability tables and the sample draws.

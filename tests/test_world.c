@@ -370,6 +370,17 @@ Test(bad_input, world_def_rejected, .init = SetupErrors, .fini = TeardownErrors)
 	ExpectError(n + 1, "tbCreateWorld", "contactHertz");
 	cr_assert(TB_IS_NULL(tbCreateWorld(NULL)));
 	ExpectError(n + 2, "tbCreateWorld", "def");
+	def = tbDefaultWorldDef();
+	def.finalRelaxIterations = -1;
+	cr_assert(TB_IS_NULL(tbCreateWorld(&def)));
+	ExpectError(n + 3, "tbCreateWorld", "final relax");
+	def = tbDefaultWorldDef();
+	def.settledHertzRatio = NAN;
+	cr_assert(TB_IS_NULL(tbCreateWorld(&def)));
+	ExpectError(n + 4, "tbCreateWorld", "settledHertzRatio");
+	def.settledHertzRatio = 0.0f;
+	cr_assert(TB_IS_NULL(tbCreateWorld(&def)));
+	ExpectError(n + 5, "tbCreateWorld", "settledHertzRatio");
 }
 
 // --- handles ------------------------------------------------------------------------------------

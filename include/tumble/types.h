@@ -104,8 +104,10 @@ typedef struct tbWorldDef
 	tbVec2 gravity;					///< m/s², default (0, −10)
 	float restitutionThreshold;		///< m/s: restitution applies above this approach speed, default 1
 	float hitEventThreshold;		///< m/s: approach speed that makes a hit event, default 1
-	float contactHertz;				///< soft contact stiffness of new dynamic contacts, default 30 Hz; static and
-									///< settled ones use twice this, at most ¼ of the sub-step rate
+	float contactHertz;				///< soft contact stiffness of new dynamic contacts, default 30 Hz; static
+									///< ones use twice this, at most ¼ of the sub-step rate
+	float settledHertzRatio;		///< soft: a dynamic contact that has touched for 0.25 s stiffens to this ×
+									///< contactHertz, at most ¼ of the sub-step rate; default 1.75
 	float contactDampingRatio;		///< soft contact damping ratio, default 10
 	bool contactHertzFollowsSubStep; ///< soft: stiffness = min(contactHertz·subSteps/4, ¼ sub-step rate)
 	float maxContactPushSpeed;		///< soft: m/s, largest speed at which overlap is pushed out, default 3
@@ -117,7 +119,8 @@ typedef struct tbWorldDef
 	tbSolverMethod solver;			///< default soft
 	int velocityIterations;			///< Baumgarte/NGS iterations per sub-step, default 8
 	int positionIterations;			///< NGS position iterations per sub-step, default 3
-	int relaxIterations;			///< soft: relaxing iterations per sub-step, default 2
+	int relaxIterations;			///< soft: relaxing iterations per sub-step, default 1
+	int finalRelaxIterations;		///< soft: relaxing iterations added to the last sub-step, default 1
 	bool enableWarmStarting;		///< default true
 	bool enableWideSolver;			///< soft and Baumgarte: contacts graph-coloured and solved four at a
 									///< time (SIMD); false: the scalar reference in hashed order. Default true
