@@ -31,6 +31,8 @@ typedef struct tbBody
 	int solverIndex;	///< index in the solver's body arrays this step, or TB_NULL_INDEX (read by
 						///< the contact preparation for every contact: kept in this first line)
 	uint8_t type;		///< tbBodyType
+	bool isFast;		///< moved far this step: swept by continuous collision (read per contact: first line)
+	bool enableContactRecycling; ///< read per contact by the narrow phase: first line
 
 	tbVec2 center0;		///< centre of mass at the start of the step (continuous collision)
 	tbRot rotation0;	///< rotation at the start of the step
@@ -63,9 +65,7 @@ typedef struct tbBody
 	bool fixedRotation; ///< also motion lock angularZ
 	bool lockLinearX;	///< motion locks (tbMotionLocks)
 	bool lockLinearY;
-	bool enableContactRecycling;
 	bool isBullet;
-	bool isFast; ///< moved far this step: swept by continuous collision
 	bool isMarked;
 	bool isDisabled; ///< out of the simulation (tbBody_Disable): no proxies, no contacts, never awake
 } tbBody;
