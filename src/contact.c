@@ -772,6 +772,7 @@ void tbCollideStage(tbWorld* world)
 	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
 	tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
 	int kept = 0;
+	int reported = 0;
 	world->touchingContactCount = 0;
 	for (int i = 0; i < world->stepContactCount; ++i)
 	{
@@ -785,6 +786,7 @@ void tbCollideStage(tbWorld* world)
 		}
 		world->stepContacts[kept++] = contactId;
 		tbCountCollideResult(world, result);
+		reported += (contact->flags & tb_contactReported) != 0 ? 1 : 0;
 		if ((contact->flags & (tb_contactTouching | tb_contactSensor)) == tb_contactTouching)
 		{
 			TB_ARRAY_PUSH(world->touchingContacts, world->touchingContactCount, world->touchingContactCapacity,
@@ -807,6 +809,7 @@ void tbCollideStage(tbWorld* world)
 		}
 	}
 	world->stepContactCount = kept;
+	world->counters.touchingCount = reported; // counted here, where each flag is in cache anyway
 }
 
 /// Hit events: one per impact, in the step its contact begins to touch or later. A solved contact

@@ -457,12 +457,7 @@ static void tbUpdateCounters(tbWorld* world)
 	c->awakeBodyCount = world->awakeBodyCount;
 	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
 	c->byteCount = tbGetByteCount();
-	int touching = 0;
-	for (int i = 0; i < world->stepContactCount; ++i)
-	{
-		touching += (world->contacts[world->stepContacts[i]].flags & tb_contactReported) ? 1 : 0;
-	}
-	c->touchingCount = touching;
+	// touchingCount: set by the collide stage (contact.c), which reads every step contact's flags.
 }
 
 /// The step: each stage is a function in the file of its concept, run top to bottom.
