@@ -50,7 +50,10 @@ static FuzzShape MakePolygonShape(FuzzInput* in)
 	}
 	else if (kind == 1)
 	{
-		shape.geometry.polygon = tbMakeRoundedBox(FuzzFloat(in), FuzzFloat(in), FuzzFloat(in));
+		float hx = FuzzFloat(in); // one statement each: the same decoding with any compiler
+		float hy = FuzzFloat(in);
+		float radius = FuzzFloat(in);
+		shape.geometry.polygon = tbMakeRoundedBox(hx, hy, radius);
 	}
 	else
 	{

@@ -52,7 +52,10 @@ static tbBodyId PickBody(FuzzInput* in, const Ids* ids)
 	}
 	if (choice == 1)
 	{
-		tbBodyId random = {FuzzInt(in, 8) - 1, (uint16_t)FuzzInt(in, 4), (uint16_t)FuzzInt(in, 4)};
+		int index = FuzzInt(in, 8) - 1; // one statement each: a fixed decoding order (see FuzzGeometry)
+		int world = FuzzInt(in, 4);
+		int generation = FuzzInt(in, 4);
+		tbBodyId random = {index, (uint16_t)world, (uint16_t)generation};
 		return random;
 	}
 	return ids->bodyCount > 0 ? ids->bodies[FuzzInt(in, ids->bodyCount)] : TB_NULL_BODY_ID;
@@ -105,9 +108,17 @@ static tbGeometry FuzzGeometry(FuzzInput* in)
 			g.segment.point2 = FuzzVec2(in);
 			break;
 		default:
+		{
+			// Each value in its own statement: the bytes decode in this order with any compiler (C
+			// leaves the order of a call's arguments unspecified; clang goes left to right).
+			float hx = FuzzFloat(in);
+			float hy = FuzzFloat(in);
+			tbVec2 center = FuzzVec2(in);
+			float angle = FuzzFloat(in);
 			g.type = tb_polygonShape;
-			g.polygon = tbMakeOffsetBox(FuzzFloat(in), FuzzFloat(in), FuzzVec2(in), tbMakeRot(FuzzFloat(in)));
+			g.polygon = tbMakeOffsetBox(hx, hy, center, tbMakeRot(angle));
 			break;
+		}
 	}
 	return g;
 }
@@ -143,9 +154,26 @@ static void CreateShape(FuzzInput* in, Ids* ids)
 	TRACE("create shape type %d density %g friction %g restitution %g on body %d -> %d\n", (int)g.type,
 		  (double)def.density, (double)def.material.friction, (double)def.material.restitution, body.index1,
 		  shape.index1);
-	TRACE("  first floats of the geometry: %g %g %g %g %g (polygon: %d vertices, radius %g)\n",
-		  (double)g.circle.center.x, (double)g.circle.center.y, (double)g.circle.radius, (double)g.capsule.radius,
-		  (double)g.segment.point2.y, g.polygon.count, (double)g.polygon.radius);
+	if (g.type == tb_circleShape)
+	{
+		TRACE("  circle (%g, %g) r %g\n", (double)g.circle.center.x, (double)g.circle.center.y,
+			  (double)g.circle.radius);
+	}
+	else if (g.type == tb_capsuleShape)
+	{
+		TRACE("  capsule (%g, %g) (%g, %g) r %g\n", (double)g.capsule.center1.x, (double)g.capsule.center1.y,
+			  (double)g.capsule.center2.x, (double)g.capsule.center2.y, (double)g.capsule.radius);
+	}
+	else if (g.type == tb_segmentShape)
+	{
+		TRACE("  segment (%g, %g) (%g, %g)\n", (double)g.segment.point1.x, (double)g.segment.point1.y,
+			  (double)g.segment.point2.x, (double)g.segment.point2.y);
+	}
+	else
+	{
+		TRACE("  polygon of %d vertices, first (%g, %g), radius %g\n", g.polygon.count,
+			  (double)g.polygon.vertices[0].x, (double)g.polygon.vertices[0].y, (double)g.polygon.radius);
+	}
 	if (TB_IS_NON_NULL(shape))
 	{
 		RememberShape(ids->shapes, &ids->shapeCount, shape);
@@ -200,14 +228,29 @@ static void Modify(FuzzInput* in, Ids* ids)
 			break;
 		}
 		case 2:
-			tbBody_SetTransform(body, FuzzVec2(in), tbMakeRot(FuzzFloat(in)));
+		{
+			tbVec2 p = FuzzVec2(in);
+			float angle = FuzzFloat(in);
+			TRACE("  transform (%g, %g) angle %g\n", (double)p.x, (double)p.y, (double)angle);
+			tbBody_SetTransform(body, p, tbMakeRot(angle));
 			break;
+		}
 		case 3:
-			tbBody_ApplyForceToCenter(body, FuzzVec2(in), true);
+		{
+			tbVec2 force = FuzzVec2(in);
+			TRACE("  force (%g, %g)\n", (double)force.x, (double)force.y);
+			tbBody_ApplyForceToCenter(body, force, true);
 			break;
+		}
 		case 4:
-			tbBody_ApplyLinearImpulse(body, FuzzVec2(in), FuzzVec2(in), true);
+		{
+			tbVec2 impulse = FuzzVec2(in);
+			tbVec2 point = FuzzVec2(in);
+			TRACE("  impulse (%g, %g) at (%g, %g)\n", (double)impulse.x, (double)impulse.y, (double)point.x,
+				  (double)point.y);
+			tbBody_ApplyLinearImpulse(body, impulse, point, true);
 			break;
+		}
 		case 5:
 			tbBody_ApplyTorque(body, FuzzFloat(in), true);
 			break;
@@ -217,7 +260,10 @@ static void Modify(FuzzInput* in, Ids* ids)
 		default:
 			if (ids->shapeCount > 0)
 			{
-				tbShape_SetDensity(ids->shapes[FuzzInt(in, ids->shapeCount)], FuzzFloat(in), true);
+				tbShapeId shape = ids->shapes[FuzzInt(in, ids->shapeCount)];
+				float density = FuzzFloat(in);
+				TRACE("  density of shape %d: %g\n", shape.index1, (double)density);
+				tbShape_SetDensity(shape, density, true);
 			}
 			break;
 	}

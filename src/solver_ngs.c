@@ -34,8 +34,8 @@
 // (if none holds, rounding: keep the previous impulse). Solving the pair together removes the
 // see-saw of point-by-point Gauss–Seidel on a box resting on two corners, which otherwise leaves
 // a small rotation per step that makes stacks walk. K is accepted only when well conditioned,
-// K11² < 1000·det K; otherwise, as in 2.4, only the first point is solved for velocity (its
-// partner still takes part in the position pass).
+// K11² < 1000·det K (tested on K/K11, which is scale-free); otherwise, as in 2.4, only the first
+// point is solved for velocity (its partner still takes part in the position pass).
 //
 // Differences from 2.4 that remain: the position pass uses the linearised separation with the
 // normal held fixed (2.4 rotates the reference face normal with its body and re-derives the
@@ -49,6 +49,7 @@
 
 #include "tumble/constants.h"
 
+#include <float.h>
 #include <stdbool.h>
 
 /// Per-constraint NGS data, rebuilt at every sub-step from the constraint and its manifold.
@@ -104,17 +105,24 @@ static void tbSetupBlock(tbNGSConstraint* info, tbContactConstraint* c, tbStepCo
 	float k11 = mAB + c->invIA * rn1A * rn1A + c->invIB * rn1B * rn1B;
 	float k22 = mAB + c->invIA * rn2A * rn2A + c->invIB * rn2B * rn2B;
 	float k12 = mAB + c->invIA * rn1A * rn2A + c->invIB * rn1B * rn2B;
-	float det = k11 * k22 - k12 * k12;
-	if (k11 * k11 < TB_NGS_MAX_CONDITION * det)
+	// The condition test and the inverse on K/K11 (entries of order 1): for very heavy bodies
+	// (1e22 kg) K's entries are of order 1e-23 and det K = K11·K22 − K12² underflowed to a
+	// subnormal whose inverse overflowed, giving NaN impulses (found by fuzz_world). With
+	// K̂ = K/K11: K11² < 1000·det K ⟺ 1 < 1000·det K̂, and K⁻¹ = K̂⁻¹/K11.
+	float invK11 = k11 >= FLT_MIN ? 1.0f / k11 : 0.0f;
+	float q12 = k12 * invK11, q22 = k22 * invK11;
+	float detQ = q22 - q12 * q12;
+	bool conditioned = invK11 > 0.0f && 1.0f < TB_NGS_MAX_CONDITION * detQ;
+	float scale = conditioned ? invK11 / detQ : 0.0f; // K11/det K = 1/(K11·det K̂)
+	if (conditioned && scale <= FLT_MAX)
 	{
 		info->block = true;
 		info->k11 = k11;
 		info->k12 = k12;
 		info->k22 = k22;
-		float invDet = 1.0f / det;
-		info->m11 = invDet * k22;
-		info->m12 = -invDet * k12;
-		info->m22 = invDet * k11;
+		info->m11 = scale * q22;
+		info->m12 = -scale * q12;
+		info->m22 = scale;
 	}
 	else
 	{

@@ -545,6 +545,52 @@ Test(world_limits, polygon_with_area_below_flt_min_has_no_mass, .init = SetupHoo
 	tbDestroyWorld(world);
 }
 
+Test(world_limits, ngs_block_solver_keeps_bodies_of_1e22_kg_finite, .init = SetupHooks, .fini = TeardownHooks)
+{
+	// Found by fuzz_world: a capsule of density 3e19 (about 1.8e22 kg) overlapping a static one
+	// under the NGS solver. The two-point block solver's K had entries of order 1e-23, det K
+	// underflowed to a subnormal, 1/det K overflowed, and the impulses became ∞ − ∞ = NaN in the
+	// first step. The condition test and the inverse now work on K/K11 (entries of order 1).
+	// Checked: every step finite, and the overlap pushed out within NGS's allowed 3 linear slops.
+	tbWorldDef def = tbDefaultWorldDef();
+	def.solver = tb_solverNGS;
+	tbWorldId world = tbCreateWorld(&def);
+	tbCapsule capsule = {{-12.8f, 5.8f}, {7.6f, -12.4f}, 7.6f};
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	groundDef.position = tbMakeVec2(0.0f, -11.2f);
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.material.restitution = 0.6f;
+	tbCreateCapsuleShape(ground, &shapeDef, &capsule);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.angularVelocity = 7.6f;
+	bodyDef.linearVelocity = tbMakeVec2(3.2f, 1.6f);
+	tbBodyId heavy = tbCreateBody(world, &bodyDef);
+	shapeDef = tbDefaultShapeDef();
+	shapeDef.density = 3e19f;
+	tbCreateCapsuleShape(heavy, &shapeDef, &capsule);
+	cr_assert(tbBody_GetMass(heavy) > 1e22f, "mass %g kg", (double)tbBody_GetMass(heavy));
+	for (int i = 0; i < 60; ++i)
+	{
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 5));
+		tbVec2 p = tbBody_GetPosition(heavy);
+		tbVec2 v = tbBody_GetLinearVelocity(heavy);
+		float w = tbBody_GetAngularVelocity(heavy);
+		cr_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y) && isfinite(w),
+				  "step %d: p (%g, %g) v (%g, %g) w %g", i, (double)p.x, (double)p.y, (double)v.x, (double)v.y,
+				  (double)w);
+	}
+	tbManifold m = tbCollideCapsules(&capsule, tbBody_GetTransform(ground), &capsule, tbBody_GetTransform(heavy));
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		cr_assert(m.points[i].separation > -3.0f * TB_LINEAR_SLOP, "still overlapping by %g m",
+				  (double)-m.points[i].separation);
+	}
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
 Test(world_limits, rotational_inertia_below_flt_min_counts_as_none, .init = SetupHooks, .fini = TeardownHooks)
 {
 	// A circle of radius 1e-14 m and density 1e16 kg/m² has a normal mass, π·1e-12 kg, but a
