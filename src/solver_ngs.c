@@ -559,7 +559,8 @@ static void tbSolveTimeOfImpact(tbStepContext* context, tbNGSConstraint* infos)
 				float vRel = tbDot(tbSub(vB, vA), ck->normal);
 				if (vRel < -threshold)
 				{
-					info->bias[j] = -ck->restitution * vRel;
+					// Bounded as every rebound is (contact_solver.h): restitution 9e18 made it ∞.
+					info->bias[j] = tbReboundSpeed(ck->restitution, vRel, context->maxLinearSpeed);
 				}
 			}
 			tbSetupBlock(info, ck, context);

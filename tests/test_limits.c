@@ -591,6 +591,49 @@ Test(world_limits, ngs_block_solver_keeps_bodies_of_1e22_kg_finite, .init = Setu
 	tbDestroyWorld(world);
 }
 
+Test(world_limits, ngs_time_of_impact_rebound_bounded_by_twice_maximum_speed, .init = SetupHooks,
+	 .fini = TeardownHooks)
+{
+	// Found by fuzz_world: NGS with one sub-step solves a fast body's impacts at their time of
+	// impact (2.4's TOI sub-step), and that solve took its restitution bias as −e·v unbounded: a
+	// segment of restitution 9.3e18 gave a body an angular velocity of 3e20 rad/s and then NaN. It
+	// now takes the rebound bound every other restitution path takes, at most
+	// max(approach speed, 2 · maximumLinearSpeed) (contact_solver.h). A 0.5 m ball at 120 m/s onto
+	// ground of restitution 9.3e18: it leaves at 2 · 4000 m/s at most, and stays finite and within
+	// reach (before: 1.1e21 m/s and y = 1.9e19 m after one step).
+	tbWorldDef def = tbDefaultWorldDef();
+	def.solver = tb_solverNGS;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.material.restitution = 9.3e18f;
+	tbPolygon groundBox = tbMakeOffsetBox(20.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbCreatePolygonShape(ground, &shapeDef, &groundBox);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = tbMakeVec2(0.0f, 2.0f);
+	bodyDef.linearVelocity = tbMakeVec2(0.0f, -120.0f);
+	tbBodyId ball = tbCreateBody(world, &bodyDef);
+	shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	tbCreateCircleShape(ball, &shapeDef, &circle);
+	float fastest = 0.0f;
+	for (int i = 0; i < 5; ++i)
+	{
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 1));
+		tbVec2 v = tbBody_GetLinearVelocity(ball);
+		tbVec2 p = tbBody_GetPosition(ball);
+		cr_assert(isfinite(v.x) && isfinite(v.y) && fabsf(p.y) < 1000.0f, "step %d: p (%g, %g) v (%g, %g)", i,
+				  (double)p.x, (double)p.y, (double)v.x, (double)v.y);
+		fastest = fmaxf(fastest, tbLength(v));
+	}
+	cr_assert(fastest <= 2.0f * def.maximumLinearSpeed * 1.0001f, "rebound %g m/s", (double)fastest);
+	cr_assert(fastest > 120.0f, "it does bounce (%g m/s)", (double)fastest);
+	cr_assert_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
 Test(world_limits, rotational_inertia_below_flt_min_counts_as_none, .init = SetupHooks, .fini = TeardownHooks)
 {
 	// A circle of radius 1e-14 m and density 1e16 kg/m² has a normal mass, π·1e-12 kg, but a
