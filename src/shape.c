@@ -4,6 +4,8 @@
 
 #include "array.h"
 
+#include "tumble/constants.h"
+
 #include <string.h>
 
 #define TB_SHAPE_DEF_MAGIC 0x7B3A1C03
@@ -376,17 +378,19 @@ bool tbCheckGeometry(const char* f, const tbGeometry* g)
 	}
 }
 
-// A density that makes the shape's mass or rotational inertia overflow float is refused: the
-// body would get an infinite mass and NaN positions.
+// A density that gives the shape a mass above TB_MAX_SHAPE_MASS, or a rotational inertia that
+// overflows float, is refused: the body would get an infinite mass and NaN positions, or impulses
+// that overflow (constants.h).
 static bool tbCheckShapeMass(const char* f, const tbGeometry* geometry, float density)
 {
 	tbMassData md = tbComputeShapeMass(geometry, density);
-	if (tbIsValidFloat(md.mass) && tbIsValidFloat(md.rotationalInertia))
+	if (md.mass <= TB_MAX_SHAPE_MASS && tbIsValidFloat(md.rotationalInertia))
 	{
 		return true;
 	}
-	tbReportError(f, "density %g gives this shape a mass of %g kg and a rotational inertia of %g kg m^2 (not finite "
-					 "floats); lower the density", (double)density, (double)md.mass, (double)md.rotationalInertia);
+	tbReportError(f, "density %g gives this shape a mass of %g kg and a rotational inertia of %g kg m^2 (the mass "
+					 "must be at most TB_MAX_SHAPE_MASS = %g kg, the inertia finite); lower the density",
+				  (double)density, (double)md.mass, (double)md.rotationalInertia, (double)TB_MAX_SHAPE_MASS);
 	return false;
 }
 

@@ -124,6 +124,13 @@
 /// program can run.
 #define TB_MAX_LINEAR_SPEED 1.0e6f
 
+/// Largest mass of one shape, 1e24 kg (the Earth's is 6e24 kg): a density that gives more is
+/// refused. Impulses scale with mass: at 5.6e36 kg a contact's angular impulse r × P overflowed
+/// float and the body's velocity became NaN. With every shape below this bound, a body of fewer
+/// than 2,000 shapes keeps r × P finite at any lever arm within TB_MAX_COORDINATE and any speed up
+/// to twice the default maximumLinearSpeed, over all the sub-steps of a step.
+#define TB_MAX_SHAPE_MASS 1.0e24f
+
 /// Default collision category and mask bits.
 #define TB_DEFAULT_CATEGORY_BITS 0x0000000000000001ULL
 #define TB_DEFAULT_MASK_BITS 0xFFFFFFFFFFFFFFFFULL
