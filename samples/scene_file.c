@@ -753,7 +753,7 @@ static bool CheckAtMost(Parser* parser, const char* path, const char* key, float
 }
 
 // The library's own checks decide what a shape may be (sizes within TB_MAX_COORDINATE, a polygon
-// that is not too thin to be convex in float, a density whose mass stays finite, ...). Build the
+// that is not too thin to be convex in float, a mass within TB_MAX_SHAPE_MASS, ...). Build the
 // scene into a scratch world and name the first body or shape the library refuses; its error
 // hook has printed the reason. A scene that loads is then a scene whose every part exists.
 static bool CheckBuilds(Parser* parser, const Scene* scene)
