@@ -223,6 +223,28 @@ Test(collision_input, proxy_with_bad_count_or_radius_refused, .init = SetupHooks
 
 // --- the world ----------------------------------------------------------------------------------
 
+/// A static 40 m × 2 m ground whose top face is at y = 0, of the given restitution.
+static void MakeGround(tbWorldId world, float restitution)
+{
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.material.restitution = restitution;
+	tbPolygon groundBox = tbMakeOffsetBox(20.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(ground, &shapeDef, &groundBox)));
+}
+
+/// Asserts that a body's position and velocities are finite after `step`.
+static void ExpectFiniteBody(tbBodyId body, int step)
+{
+	tbVec2 p = tbBody_GetPosition(body);
+	tbVec2 v = tbBody_GetLinearVelocity(body);
+	float w = tbBody_GetAngularVelocity(body);
+	cr_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y) && isfinite(w),
+			  "step %d: p (%g, %g) v (%g, %g) w %g", step, (double)p.x, (double)p.y, (double)v.x, (double)v.y,
+			  (double)w);
+}
+
 static tbBodyId MakeBox(tbWorldId world, tbVec2 position, tbVec2 velocity)
 {
 	tbBodyDef def = tbDefaultBodyDef();
@@ -347,11 +369,8 @@ Test(world_limits, shape_mass_above_the_bound_refused_and_bodies_of_the_bound_st
 	// that falls onto the ground at 100 m/s and stays finite.
 	tbWorldDef def = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&def);
-	tbBodyDef groundDef = tbDefaultBodyDef();
-	tbBodyId ground = tbCreateBody(world, &groundDef);
+	MakeGround(world, 0.0f);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbPolygon groundBox = tbMakeOffsetBox(20.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
-	tbCreatePolygonShape(ground, &shapeDef, &groundBox);
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	bodyDef.type = tb_dynamicBody;
 	bodyDef.position = tbMakeVec2(-2.0f, 3.0f);
@@ -376,12 +395,7 @@ Test(world_limits, shape_mass_above_the_bound_refused_and_bodies_of_the_bound_st
 	for (int i = 0; i < 60; ++i)
 	{
 		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
-		tbVec2 p = tbBody_GetPosition(body);
-		tbVec2 v = tbBody_GetLinearVelocity(body);
-		float w = tbBody_GetAngularVelocity(body);
-		cr_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y) && isfinite(w),
-				  "step %d: p (%g, %g) v (%g, %g) w %g", i, (double)p.x, (double)p.y, (double)v.x, (double)v.y,
-				  (double)w);
+		ExpectFiniteBody(body, i);
 	}
 	tbDestroyWorld(world);
 }
@@ -592,12 +606,7 @@ Test(world_limits, ngs_block_solver_keeps_bodies_of_1e22_kg_finite, .init = Setu
 	for (int i = 0; i < 60; ++i)
 	{
 		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 5));
-		tbVec2 p = tbBody_GetPosition(heavy);
-		tbVec2 v = tbBody_GetLinearVelocity(heavy);
-		float w = tbBody_GetAngularVelocity(heavy);
-		cr_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y) && isfinite(w),
-				  "step %d: p (%g, %g) v (%g, %g) w %g", i, (double)p.x, (double)p.y, (double)v.x, (double)v.y,
-				  (double)w);
+		ExpectFiniteBody(heavy, i);
 	}
 	tbManifold m = tbCollideCapsules(&capsule, tbBody_GetTransform(ground), &capsule, tbBody_GetTransform(heavy));
 	for (int i = 0; i < m.pointCount; ++i)
@@ -622,18 +631,13 @@ Test(world_limits, ngs_time_of_impact_rebound_bounded_by_twice_maximum_speed, .i
 	tbWorldDef def = tbDefaultWorldDef();
 	def.solver = tb_solverNGS;
 	tbWorldId world = tbCreateWorld(&def);
-	tbBodyDef groundDef = tbDefaultBodyDef();
-	tbBodyId ground = tbCreateBody(world, &groundDef);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.material.restitution = 9.3e18f;
-	tbPolygon groundBox = tbMakeOffsetBox(20.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
-	tbCreatePolygonShape(ground, &shapeDef, &groundBox);
+	MakeGround(world, 9.3e18f);
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	bodyDef.type = tb_dynamicBody;
 	bodyDef.position = tbMakeVec2(0.0f, 2.0f);
 	bodyDef.linearVelocity = tbMakeVec2(0.0f, -120.0f);
 	tbBodyId ball = tbCreateBody(world, &bodyDef);
-	shapeDef = tbDefaultShapeDef();
+	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 	tbCreateCircleShape(ball, &shapeDef, &circle);
 	float fastest = 0.0f;
