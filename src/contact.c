@@ -253,6 +253,9 @@ enum tbCollideResult
 	tb_collideRecycled = 0x10,
 	tb_collideGJK = 0x20,
 	tb_collideSAT = 0x40,
+	tb_collideSolver = 0x80,   ///< touching and not a sensor: the solver will see it
+	tb_collideReported = 0x100, ///< within the begin-touch distance (tb_contactReported)
+	tb_collideReady = 0x200,	///< a solver contact as it stands: a dynamic side and no sleeping one
 };
 
 static bool tbIsSegmentKind(tbShapeType type)
@@ -715,12 +718,19 @@ static void tbGatherAwakeContacts(tbWorld* world)
 	world->stepContactCount = 0;
 	if (2 * world->awakeBodyCount >= world->bodyCount)
 	{
+		// A byte per body says awake: the scan then reads the contacts in memory order and this
+		// small array, instead of two scattered bodies per contact.
 		TB_ARRAY_RESERVE(world->stepContacts, world->stepContactCapacity, world->contactCount);
+		uint8_t* awake = tbArenaAlloc(&world->stepArena, tbMaxInt(world->bodyHighWater, 1));
+		memset(awake, 0, (size_t)world->bodyHighWater);
+		for (int i = 0; i < world->awakeBodyCount; ++i)
+		{
+			awake[world->awakeBodies[i]] = 1;
+		}
 		for (int id = 0; id < world->contactHighWater; ++id)
 		{
 			const tbContact* contact = world->contacts + id;
-			if (contact->inUse && (world->bodies[contact->edges[0].bodyId].awakeIndex != TB_NULL_INDEX ||
-								   world->bodies[contact->edges[1].bodyId].awakeIndex != TB_NULL_INDEX))
+			if (contact->inUse && (awake[contact->edges[0].bodyId] | awake[contact->edges[1].bodyId]) != 0)
 			{
 				world->stepContacts[world->stepContactCount++] = id;
 			}
@@ -747,6 +757,18 @@ static void tbGatherAwakeContacts(tbWorld* world)
 	tbSortIndices(world->stepContacts, world->stepContactCount, world->islandStack);
 }
 
+/// A contact the island stage can hand to the solver without looking at it again: one side is
+/// dynamic and neither sleeps. Between here and the island stage bodies only wake, so it stays so;
+/// and a body that wakes after this has none of these contacts (island.c relies on both).
+static bool tbIsReadySolverContact(const tbWorld* world, const tbContact* contact)
+{
+	const tbBody* a = world->bodies + contact->edges[0].bodyId;
+	const tbBody* b = world->bodies + contact->edges[1].bodyId;
+	bool asleepA = a->type != tb_staticBody && a->awakeIndex == TB_NULL_INDEX;
+	bool asleepB = b->type != tb_staticBody && b->awakeIndex == TB_NULL_INDEX;
+	return (a->type == tb_dynamicBody || b->type == tb_dynamicBody) && asleepA == false && asleepB == false;
+}
+
 /// Collide task: the narrow phase of stepContacts[start..end), results into world->collideResults.
 static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
 {
@@ -759,7 +781,17 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 		const tbShape* a = world->shapes + contact->shapeIdA;
 		const tbShape* b = world->shapes + contact->shapeIdB;
 		bool overlap = tbBroadPhase_TestOverlap(bp, a->proxyKey, b->proxyKey);
-		world->collideResults[i] = (uint8_t)(overlap ? tbCollideContact(world, contact) : tb_collideDestroy);
+		uint32_t result = tb_collideDestroy;
+		if (overlap)
+		{
+			// The flags the caller's serial walk needs ride along, so it need not load the contact.
+			result = tbCollideContact(world, contact);
+			bool solver = (contact->flags & (tb_contactTouching | tb_contactSensor)) == tb_contactTouching;
+			result |= solver ? (uint32_t)tb_collideSolver : 0u;
+			result |= (contact->flags & tb_contactReported) != 0 ? (uint32_t)tb_collideReported : 0u;
+			result |= solver && tbIsReadySolverContact(world, contact) ? (uint32_t)tb_collideReady : 0u;
+		}
+		world->collideResults[i] = (uint16_t)result;
 	}
 }
 
@@ -777,7 +809,6 @@ void tbCollideStage(tbWorld* world)
 	for (int i = 0; i < world->stepContactCount; ++i)
 	{
 		int contactId = world->stepContacts[i];
-		tbContact* contact = world->contacts + contactId;
 		uint32_t result = world->collideResults[i];
 		if (result & tb_collideDestroy)
 		{
@@ -786,12 +817,18 @@ void tbCollideStage(tbWorld* world)
 		}
 		world->stepContacts[kept++] = contactId;
 		tbCountCollideResult(world, result);
-		reported += (contact->flags & tb_contactReported) != 0 ? 1 : 0;
-		if ((contact->flags & (tb_contactTouching | tb_contactSensor)) == tb_contactTouching)
+		reported += (result & tb_collideReported) != 0 ? 1 : 0;
+		if (result & tb_collideSolver)
 		{
-			TB_ARRAY_PUSH(world->touchingContacts, world->touchingContactCount, world->touchingContactCapacity,
-						  contactId);
+			// The sign says "ready" (tb_collideReady): the island stage takes it as it is.
+			int entry = (result & tb_collideReady) != 0 ? contactId : -1 - contactId;
+			TB_ARRAY_PUSH(world->touchingContacts, world->touchingContactCount, world->touchingContactCapacity, entry);
 		}
+		if ((result & (tb_collideBegan | tb_collideBeginEvent | tb_collideEndEvent)) == 0)
+		{
+			continue; // most contacts: nothing changed, and the contact itself is not loaded
+		}
+		tbContact* contact = world->contacts + contactId;
 		if (result & tb_collideBegan)
 		{
 			// New manifold points (speculative ones too) wake both bodies: the sleeping one joins

@@ -178,25 +178,45 @@ static void tbSettleSoftness(const tbStepContext* context, tbContactConstraint* 
 	}
 }
 
-static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbContactConstraint* c)
+// Which bodies of a contact the solve moves, and whether the wide blocks can carry it.
+static tbContactKey tbMakeContactKey(const tbStepContext* context, const tbContact* contact)
 {
-	tbWorld* world = context->world;
+	const tbWorld* world = context->world;
 	int bodyIdA = contact->edges[0].bodyId; // the bodies of shapes A and B (contact.c)
 	int bodyIdB = contact->edges[1].bodyId;
-	c->indexA = tbGetSolverIndex(world, bodyIdA, context->bodyCount);
-	c->indexB = tbGetSolverIndex(world, bodyIdB, context->bodyCount);
+	tbContactKey key;
+	key.indexA = tbGetSolverIndex(world, bodyIdA, context->bodyCount);
+	key.indexB = tbGetSolverIndex(world, bodyIdB, context->bodyCount);
 
 	// Only awake dynamic bodies respond; kinematic and static ends have infinite mass (their
 	// tbSolverMass is zero, as is the static stand-in's).
+	const tbSolverMass* massA = context->masses + key.indexA;
+	const tbSolverMass* massB = context->masses + key.indexB;
+	uint32_t flags = 0u;
+	flags |= massA->invMass > 0.0f || massA->invI > 0.0f ? (uint32_t)tb_keyMovesA : 0u;
+	flags |= massB->invMass > 0.0f || massB->invI > 0.0f ? (uint32_t)tb_keyMovesB : 0u;
+	bool dynamicA = key.indexA != context->bodyCount && world->bodies[bodyIdA].type == tb_dynamicBody;
+	bool dynamicB = key.indexB != context->bodyCount && world->bodies[bodyIdB].type == tb_dynamicBody;
+	flags |= dynamicA ? (uint32_t)tb_keyDynamicA : 0u;
+	flags |= dynamicB ? (uint32_t)tb_keyDynamicB : 0u;
+	flags |= contact->rollingResistance > 0.0f || contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
+	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
+	key.flags = flags;
+	return key;
+}
+
+static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbContactKey key, tbContactConstraint* c)
+{
+	c->indexA = key.indexA;
+	c->indexB = key.indexB;
 	const tbSolverMass* massA = context->masses + c->indexA;
 	const tbSolverMass* massB = context->masses + c->indexB;
-	bool dynamicA = c->indexA != context->bodyCount && world->bodies[bodyIdA].type == tb_dynamicBody;
-	bool dynamicB = c->indexB != context->bodyCount && world->bodies[bodyIdB].type == tb_dynamicBody;
 	c->invMassA = massA->invMass;
 	c->invIA = massA->invI;
 	c->invMassB = massB->invMass;
 	c->invIB = massB->invI;
-	c->softness = dynamicA && dynamicB ? context->contactSoftness : context->staticSoftness;
+	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
+	c->softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
 
 	const tbManifold* manifold = &contact->manifold;
 	tbVec2 normal = manifold->normal;
@@ -242,7 +262,7 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 	{
 		tbSettleSoftness(context, c, contact->touchingSteps);
 	}
-	if (world->def.solver == tb_solverNGS && context->subStepCount == 1)
+	if (context->world->def.solver == tb_solverNGS && context->subStepCount == 1)
 	{
 		tbPrepareConstraintNGS(context, manifold, c);
 	}
@@ -259,12 +279,35 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 // Contacts are read in contact-id order (memory order) and each constraint is written to its
 // place in the solve order: the loads stream and only the stores scatter (island.c keeps both
 // orders). Walking the solve order instead waited on a cache miss per contact.
+static void tbKeyContactsTask(int start, int end, uint32_t workerIndex, void* taskContext)
+{
+	(void)workerIndex;
+	tbStepContext* context = taskContext;
+	const tbWorld* world = context->world;
+	const int* contactIds = world->solverContactsById;
+	const int* slots = world->solverSlots;
+	for (int i = start; i < end; ++i)
+	{
+		context->keys[slots[i]] = tbMakeContactKey(context, world->contacts + contactIds[i]);
+	}
+}
+
+void tbKeyContacts(tbStepContext* context)
+{
+	int n = context->constraintCount;
+	context->keys = tbArenaAlloc(&context->world->stepArena, tbMaxInt((int)sizeof(tbContactKey) * n, 1));
+	tbParallelFor(context->world, tbKeyContactsTask, n, TB_CONTACTS_PER_TASK, context);
+}
+
 typedef struct tbPrepareTaskContext
 {
 	tbStepContext* context;
 	atomic_int restitutionCount;
 } tbPrepareTaskContext;
 
+// With the wide solver the colours are known (constraint_graph.c), and a coloured contact is
+// prepared on the stack and written straight into its lane: the scalar constraint is written only
+// for the overflow and for bouncing contacts (restitution and impact propagation read it).
 static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void* taskContext)
 {
 	(void)workerIndex;
@@ -273,12 +316,32 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 	tbWorld* world = context->world;
 	const int* contactIds = world->solverContactsById;
 	const int* slots = world->solverSlots;
+	const int* wideLocation = context->wideLocation;
 	int restitutionCount = 0;
 	for (int i = start; i < end; ++i)
 	{
-		tbContactConstraint* c = context->constraints + slots[i];
-		tbPrepareConstraint(context, world->contacts + contactIds[i], c);
-		restitutionCount += c->restitution != 0.0f ? 1 : 0;
+		int slot = slots[i];
+		tbContact* contact = world->contacts + contactIds[i];
+		tbContactConstraint* c = context->constraints + slot;
+		if (wideLocation == NULL)
+		{
+			tbPrepareConstraint(context, contact, tbMakeContactKey(context, contact), c);
+			restitutionCount += c->restitution != 0.0f ? 1 : 0;
+			continue;
+		}
+		tbContactConstraint local;
+		tbContactKey key = context->keys[slot];
+		tbPrepareConstraint(context, contact, key, &local);
+		int location = wideLocation[slot];
+		if (location >= 0)
+		{
+			tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH, &local, slot);
+		}
+		if (location < 0 || (key.flags & tb_keyBounces) != 0u)
+		{
+			*c = local;
+		}
+		restitutionCount += (key.flags & tb_keyBounces) != 0u ? 1 : 0;
 	}
 	atomic_fetch_add_explicit(&task->restitutionCount, restitutionCount, memory_order_relaxed);
 }
@@ -292,6 +355,17 @@ void tbPrepareContacts(tbStepContext* context)
 	atomic_init(&task.restitutionCount, 0);
 	tbParallelFor(context->world, tbPrepareContactsTask, context->constraintCount, TB_CONTACTS_PER_TASK, &task);
 	context->restitutionCount = atomic_load_explicit(&task.restitutionCount, memory_order_relaxed);
+}
+
+// Whether constraint i bounces. With the wide solver only bouncing constraints have a scalar copy,
+// so the key says it without reading the constraint.
+static inline bool tbConstraintBounces(const tbStepContext* context, int i)
+{
+	if (context->keys != NULL)
+	{
+		return (context->keys[i].flags & tb_keyBounces) != 0u;
+	}
+	return context->constraints[i].restitution != 0.0f;
 }
 
 // Apply impulse P at anchors rA, rB: A receives −P, B receives +P.
@@ -565,11 +639,11 @@ void tbPropagateImpacts(tbStepContext* context)
 		bool approaching = false;
 		for (int i = 0; i < context->constraintCount; ++i)
 		{
-			tbContactConstraint* c = context->constraints + i;
-			if (c->restitution == 0.0f)
+			if (tbConstraintBounces(context, i) == false)
 			{
 				continue;
 			}
+			tbContactConstraint* c = context->constraints + i;
 			tbSolverBody* sA = bodies + c->indexA;
 			tbSolverBody* sB = bodies + c->indexB;
 			for (int j = 0; j < c->pointCount; ++j)
@@ -592,8 +666,12 @@ void tbPropagateImpacts(tbStepContext* context)
 	}
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
+		if (tbConstraintBounces(context, i) == false)
+		{
+			continue;
+		}
 		tbContactConstraint* c = context->constraints + i;
-		for (int j = 0; c->restitution != 0.0f && j < c->pointCount; ++j)
+		for (int j = 0; j < c->pointCount; ++j)
 		{
 			tbContactConstraintPoint* cp = c->points + j;
 			cp->relativeVelocity = tbDot(tbRelativeVelocity(bodies + c->indexA, bodies + c->indexB, cp->anchorA, cp->anchorB),
@@ -616,12 +694,12 @@ void tbApplyRestitution(tbStepContext* context)
 	tbSolverBody* bodies = context->bodies;
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
-		tbContactConstraint* c = context->constraints + i;
-		float e = c->restitution;
-		if (e == 0.0f)
+		if (tbConstraintBounces(context, i) == false)
 		{
 			continue;
 		}
+		tbContactConstraint* c = context->constraints + i;
+		float e = c->restitution;
 		if (context->wideLocation != NULL && context->wideLocation[i] >= 0)
 		{
 			tbUnpackWideConstraint(context, i); // from now on the scalar copy holds its impulses

@@ -34,43 +34,6 @@ void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex)
 	}
 }
 
-// Every field of the lane is written (a second point the contact does not have as zeros), so the
-// block needs no clearing first.
-void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactConstraint* c, int constraintIndex)
-{
-	block->indexA[lane] = c->indexA;
-	block->indexB[lane] = c->indexB;
-	block->constraintIndex[lane] = constraintIndex;
-	block->pointCount[lane] = c->pointCount;
-	tbSetLaneW(&block->normalX, lane, c->normal.x);
-	tbSetLaneW(&block->normalY, lane, c->normal.y);
-	tbSetLaneW(&block->friction, lane, c->friction);
-	tbSetLaneW(&block->invMassA, lane, c->invMassA);
-	tbSetLaneW(&block->invIA, lane, c->invIA);
-	tbSetLaneW(&block->invMassB, lane, c->invMassB);
-	tbSetLaneW(&block->invIB, lane, c->invIB);
-	tbSetLaneW(&block->biasRate, lane, c->softness.biasRate);
-	tbSetLaneW(&block->massScale, lane, c->softness.massScale);
-	tbSetLaneW(&block->impulseScale, lane, c->softness.impulseScale);
-	static const tbContactConstraintPoint absent = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
-	for (int j = 0; j < 2; ++j)
-	{
-		const tbContactConstraintPoint* cp = j < c->pointCount ? c->points + j : &absent;
-		tbWideContactPoint* wp = block->points + j;
-		tbSetLaneW(&wp->anchorAX, lane, cp->anchorA.x);
-		tbSetLaneW(&wp->anchorAY, lane, cp->anchorA.y);
-		tbSetLaneW(&wp->anchorBX, lane, cp->anchorB.x);
-		tbSetLaneW(&wp->anchorBY, lane, cp->anchorB.y);
-		tbSetLaneW(&wp->baseSeparation, lane, cp->baseSeparation);
-		tbSetLaneW(&wp->normalImpulse, lane, cp->normalImpulse);
-		tbSetLaneW(&wp->tangentImpulse, lane, cp->tangentImpulse);
-		tbSetLaneW(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
-		tbSetLaneW(&wp->normalMass, lane, cp->normalMass);
-		tbSetLaneW(&wp->tangentMass, lane, cp->tangentMass);
-		tbSetLaneW(&wp->relaxBias, lane, 0.0f);
-	}
-}
-
 // A lane's location is block·TB_SIMD_WIDTH + lane (tbStepContext::wideLocation).
 void tbLoadWideImpulses(const tbStepContext* context, int location, int pointCount, tbManifoldPoint* points)
 {

@@ -149,7 +149,16 @@ static bool tbGatherRecordedContacts(tbWorld* world, uint32_t stamp)
 	TB_ARRAY_RESERVE(world->solverContacts, world->solverContactCapacity, world->touchingContactCount);
 	for (int i = 0; i < world->touchingContactCount; ++i)
 	{
-		int contactId = world->touchingContacts[i];
+		int entry = world->touchingContacts[i];
+		if (entry >= 0)
+		{
+			// Ready (contact.c): a dynamic side and both awake, so nothing to wake and no need to
+			// stamp it: only bodies woken after the collide stage are walked below, and a contact of
+			// such a body was not ready.
+			TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, entry);
+			continue;
+		}
+		int contactId = -1 - entry;
 		tbContact* contact = world->contacts + contactId;
 		const tbBody* a = world->bodies + contact->edges[0].bodyId;
 		tbBody* b = world->bodies + contact->edges[1].bodyId;

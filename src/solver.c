@@ -205,15 +205,16 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbAllocateStep(&context, world->awakeBodyCount, world->solverContactCount);
 	tbGatherBodies(&context);
 	tbPrepareMethod(&context);
-	tbPrepareContacts(&context);
-	tbPropagateImpacts(&context); // before the colouring packs the constraints
+	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)
+	{
+		tbKeyContacts(&context);	  // contact_solver.c: the bodies each contact moves
+		tbColorConstraints(&context); // NGS has its own solver loops (solver_ngs.c): scalar only
+	}
+	tbPrepareContacts(&context); // coloured contacts straight into their wide lanes
+	tbPropagateImpacts(&context);
 	tbPrepareJoints(&context); // joint.c
 	tbColorJoints(&context);   // constraint_graph.c: the joints' solve order, mechanism by mechanism or by colour
 	tbBuildJointTrees(&context); // joint_tree.c: exact solves of the mechanisms that are mostly trees
-	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)
-	{
-		tbColorConstraints(&context); // NGS has its own solver loops (solver_ngs.c): scalar only
-	}
 
 	if (tbSolveSubStepsOnWorkers(&context) == false)
 	{

@@ -121,6 +121,24 @@ typedef struct tbContactConstraint
 
 _Static_assert(sizeof(tbContactConstraint) == 160, "tbContactConstraint is meant to be 160 bytes");
 
+/// What colouring needs of a contact, known before the contact is prepared (contact_solver.c): the
+/// wide solver colours first and then prepares each contact straight into its lane.
+typedef struct tbContactKey
+{
+	int indexA, indexB; ///< solver body indices (bodyCount for the static stand-in)
+	uint32_t flags;		///< tbContactKeyFlag bits
+} tbContactKey;
+
+typedef enum tbContactKeyFlag
+{
+	tb_keyMovesA = 1,	   ///< the solve can change A's velocity (awake, positive inverse mass or inertia)
+	tb_keyMovesB = 2,
+	tb_keyDynamicA = 4,	   ///< A is an awake dynamic body (picks the contact's softness)
+	tb_keyDynamicB = 8,
+	tb_keyScalarOnly = 16, ///< rolling resistance or tangent speed: the wide blocks do not carry them
+	tb_keyBounces = 32,	   ///< restitution > 0: the scalar constraint is kept for restitution
+} tbContactKeyFlag;
+
 /// How the velocity solve treats separation. Speculative gaps (s > 0) always get bias s/h: the
 /// constraint lets the bodies close exactly the gap in one sub-step and no more.
 typedef enum tbBiasPolicy
@@ -184,7 +202,9 @@ typedef struct tbStepContext
 	uint8_t* linearLocks; ///< per solver body: 1 x locked, 2 y locked (motion locks); NULL when no body has one
 	int bodyCount;
 
-	tbContactConstraint* constraints; ///< in the order of world->solverContacts
+	tbContactConstraint* constraints; ///< in the order of world->solverContacts; with the wide
+									  ///< solver only the overflow's and the bouncing ones are written
+	tbContactKey* keys;				  ///< per constraint, wide solver only (NULL for the scalar one)
 	int constraintCount;
 	int restitutionCount; ///< constraints with restitution > 0 (tbApplyRestitution skips when 0)
 

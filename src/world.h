@@ -216,7 +216,7 @@ typedef struct tbWorld
 	int contactFreeCount, contactFreeCapacity;
 
 	// Narrow-phase results of the contacts in stepContacts (contact.c, tbCollideStage).
-	uint8_t* collideResults;
+	uint16_t* collideResults;
 	int collideResultCapacity;
 
 	// Chains (chain.c): a pool; each chain owns its segment shapes' ids and its materials.
@@ -272,7 +272,9 @@ typedef struct tbWorld
 	int* solverSlots;
 	int solverSlotCapacity;
 	/// Touching non-sensor contacts in stepContacts order, recorded by the collide stage, and the
-	/// awake-set version at its gather: the island stage's fast path (island.c).
+	/// awake-set version at its gather: the island stage's fast path (island.c). An entry is the
+	/// contact id when the contact is ready for the solver as it stands (a dynamic side, no sleeping
+	/// side), −1 − id when the island stage must look at its bodies.
 	int* touchingContacts;
 	int touchingContactCount, touchingContactCapacity;
 	uint32_t awakeSetVersion;  ///< bumped whenever a body joins or leaves the awake set

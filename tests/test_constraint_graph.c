@@ -1,8 +1,9 @@
 // Graph colouring and the wide contact solver (constraint_graph.c, contact_solver_wide.c).
 //
 // 1. The colouring on hand-built constraints: every constraint lands exactly once (a lane or the
-//    overflow list), no moving body appears twice in one colour, the order within a colour is the
-//    input order, padding lanes are inert, and bodies that do not move take no colour.
+//    overflow list), no moving body appears twice in one colour, colours follow the solve order
+//    and lanes within a colour the contact-id order, padding lanes are inert, and bodies that do
+//    not move take no colour.
 // 2. The wide solver against the scalar reference on whole worlds where both solve the contacts
 //    in the same order (every contact in colour 0). The lanes run the scalar arithmetic operation
 //    for operation (simd.h), so the trajectories must be equal, not just close: the tolerance is 0
@@ -77,6 +78,39 @@ static bool Moves(int index)
 	return index != STATIC_INDEX && index != KINEMATIC_BODY;
 }
 
+// What the step does around the colouring (solver.c): keys from the constraints (contact_solver.c
+// computes them from the contacts), the colouring, then each constraint packed into the lane the
+// colouring gave it (the preparation writes it there). `slots[i]` is the solve-order index of the
+// i-th contact in contact-id order (island.c); NULL for the identity.
+static void ColorAndPack(tbStepContext* context, tbWorld* world, const int* slots)
+{
+	int n = context->constraintCount;
+	static tbContactKey keys[64];
+	static int identity[64];
+	for (int i = 0; i < n; ++i)
+	{
+		const tbContactConstraint* c = context->constraints + i;
+		keys[i].indexA = c->indexA;
+		keys[i].indexB = c->indexB;
+		keys[i].flags = (c->invMassA > 0.0f || c->invIA > 0.0f ? (uint32_t)tb_keyMovesA : 0u) |
+						(c->invMassB > 0.0f || c->invIB > 0.0f ? (uint32_t)tb_keyMovesB : 0u);
+		identity[i] = i;
+	}
+	context->keys = keys;
+	world->solverSlots = (int*)(slots != NULL ? slots : identity);
+	tbColorConstraints(context);
+	for (int i = 0; i < n; ++i)
+	{
+		int location = context->wideLocation[i];
+		if (location >= 0)
+		{
+			tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH,
+						   context->constraints + i, i);
+		}
+	}
+	world->solverSlots = NULL;
+}
+
 Test(constraint_graph, colours_are_independent_sets_in_input_order)
 {
 	tbContactConstraint constraints[64];
@@ -88,7 +122,7 @@ Test(constraint_graph, colours_are_independent_sets_in_input_order)
 	context.bodyCount = BODY_COUNT;
 	context.constraints = constraints;
 	context.constraintCount = BuildConstraints(constraints);
-	tbColorConstraints(&context);
+	ColorAndPack(&context, &world, NULL);
 
 	int seen[64] = {0};
 	int colorOf[64];
@@ -184,6 +218,87 @@ Test(constraint_graph, colours_are_independent_sets_in_input_order)
 	cr_expect_eq(context.colorCount, TB_GRAPH_COLOR_COUNT);
 	tbReleaseColors(&context);
 	cr_expect_null(context.wideConstraints);
+	tbArenaDestroy(&world.stepArena);
+}
+
+// Colour of each constraint after ColorAndPack (−1: overflow).
+static void ColorsOf(const tbStepContext* context, int* colorOf)
+{
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		colorOf[i] = -1;
+	}
+	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
+	{
+		for (int b = context->colorBlockStart[k]; b < context->colorBlockStart[k + 1]; ++b)
+		{
+			for (int lane = 0; lane < TB_SIMD_WIDTH; ++lane)
+			{
+				int index = context->wideConstraints[b].constraintIndex[lane];
+				if (index >= 0)
+				{
+					colorOf[index] = k;
+				}
+			}
+		}
+	}
+}
+
+// Colours are assigned in the solve order (that is what Gauss–Seidel sees); the lanes of a colour
+// are handed out in contact-id order, the order the preparation writes them. Here contact-id order
+// is the solve order reversed: same colours as in input order, lanes in decreasing index.
+Test(constraint_graph, lanes_follow_contact_id_order_colours_follow_solve_order)
+{
+	tbContactConstraint constraints[64];
+	tbWorld world; // only its step arena is used
+	memset(&world, 0, sizeof(world));
+	tbStepContext context;
+	memset(&context, 0, sizeof(context));
+	context.world = &world;
+	context.bodyCount = BODY_COUNT;
+	context.constraints = constraints;
+	context.constraintCount = BuildConstraints(constraints);
+	int n = context.constraintCount;
+	int reference[64], reversed[64], slots[64];
+	ColorAndPack(&context, &world, NULL);
+	ColorsOf(&context, reference);
+	int overflow = context.overflowCount;
+	tbReleaseColors(&context);
+
+	for (int i = 0; i < n; ++i)
+	{
+		slots[i] = n - 1 - i;
+	}
+	ColorAndPack(&context, &world, slots);
+	ColorsOf(&context, reversed);
+	cr_expect_eq(context.overflowCount, overflow);
+	for (int i = 0; i < n; ++i)
+	{
+		cr_expect_eq(reversed[i], reference[i], "constraint %d: colour %d, %d in input order", i, reversed[i],
+					 reference[i]);
+	}
+	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
+	{
+		int last = n;
+		for (int b = context.colorBlockStart[k]; b < context.colorBlockStart[k + 1]; ++b)
+		{
+			for (int lane = 0; lane < TB_SIMD_WIDTH; ++lane)
+			{
+				int index = context.wideConstraints[b].constraintIndex[lane];
+				if (index >= 0)
+				{
+					cr_expect_lt(index, last, "colour %d: constraint %d after %d", k, index, last);
+					last = index;
+				}
+			}
+		}
+	}
+	// The overflow stays in solve order.
+	for (int i = 1; i < context.overflowCount; ++i)
+	{
+		cr_expect_gt(context.overflowConstraints[i], context.overflowConstraints[i - 1]);
+	}
+	tbReleaseColors(&context);
 	tbArenaDestroy(&world.stepArena);
 }
 
