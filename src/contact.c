@@ -769,6 +769,27 @@ static bool tbIsReadySolverContact(const tbWorld* world, const tbContact* contac
 	return (a->type == tb_dynamicBody || b->type == tb_dynamicBody) && asleepA == false && asleepB == false;
 }
 
+/// The solver key of a ready contact, from the bodies the narrow phase just read (tbCollideKey).
+/// The flags are those contact_solver.c derives from the solver's mass arrays: a body moves when
+/// it is dynamic with a positive inverse mass or (rotation not fixed) inverse inertia.
+static void tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* contact)
+{
+	const tbBody* a = world->bodies + contact->edges[0].bodyId;
+	const tbBody* b = world->bodies + contact->edges[1].bodyId;
+	bool dynamicA = a->type == tb_dynamicBody, dynamicB = b->type == tb_dynamicBody;
+	bool movesA = dynamicA && (a->invMass > 0.0f || (a->fixedRotation == false && a->invInertia > 0.0f));
+	bool movesB = dynamicB && (b->invMass > 0.0f || (b->fixedRotation == false && b->invInertia > 0.0f));
+	uint32_t flags = (movesA ? (uint32_t)tb_keyMovesA : 0u) | (movesB ? (uint32_t)tb_keyMovesB : 0u) |
+					 (dynamicA ? (uint32_t)tb_keyDynamicA : 0u) | (dynamicB ? (uint32_t)tb_keyDynamicB : 0u);
+	flags |= contact->rollingResistance > 0.0f || contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
+	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
+	tbCollideKey* key = world->collideKeys + contactId;
+	key->indexA = a->awakeIndex; // TB_NULL_INDEX for a static body; no side sleeps (ready)
+	key->indexB = b->awakeIndex;
+	key->flags = flags;
+	key->step = world->stepIndex;
+}
+
 /// Collide task: the narrow phase of stepContacts[start..end), results into world->collideResults.
 static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
 {
@@ -789,7 +810,11 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 			bool solver = (contact->flags & (tb_contactTouching | tb_contactSensor)) == tb_contactTouching;
 			result |= solver ? (uint32_t)tb_collideSolver : 0u;
 			result |= (contact->flags & tb_contactReported) != 0 ? (uint32_t)tb_collideReported : 0u;
-			result |= solver && tbIsReadySolverContact(world, contact) ? (uint32_t)tb_collideReady : 0u;
+			if (solver && tbIsReadySolverContact(world, contact))
+			{
+				result |= tb_collideReady;
+				tbWriteCollideKey(world, world->stepContacts[i], contact);
+			}
 		}
 		world->collideResults[i] = (uint16_t)result;
 	}
@@ -802,6 +827,13 @@ void tbCollideStage(tbWorld* world)
 {
 	tbGatherAwakeContacts(world);
 	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
+	// Keys for every contact slot in use; new entries start stale (a step that never comes round
+	// before the slot is written: the key pass checks the step).
+	TB_ARRAY_RESERVE(world->collideKeys, world->collideKeyCapacity, world->contactHighWater);
+	for (; world->collideKeyCount < world->contactHighWater; ++world->collideKeyCount)
+	{
+		world->collideKeys[world->collideKeyCount].step = world->stepIndex - 1u;
+	}
 	tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
 	int kept = 0;
 	int reported = 0;

@@ -286,9 +286,29 @@ static void tbKeyContactsTask(int start, int end, uint32_t workerIndex, void* ta
 	const tbWorld* world = context->world;
 	const int* contactIds = world->solverContactsById;
 	const int* slots = world->solverSlots;
+	const tbCollideKey* collideKeys = world->collideKeys;
+	// The narrow phase's keys hold when no body has left the awake set since (only then are its
+	// awake indices this step's solver indices); a contact it did not key (one side was asleep
+	// then) is keyed from its bodies.
+	bool useCollideKeys = world->gatheredRemovals == world->awakeRemovals;
+	uint32_t step = world->stepIndex;
+	int staticIndex = context->bodyCount;
 	for (int i = start; i < end; ++i)
 	{
-		context->keys[slots[i]] = tbMakeContactKey(context, world->contacts + contactIds[i]);
+		int contactId = contactIds[i];
+		const tbCollideKey* ck = collideKeys + contactId;
+		tbContactKey key;
+		if (useCollideKeys && contactId < world->collideKeyCount && ck->step == step)
+		{
+			key.indexA = ck->indexA == TB_NULL_INDEX ? staticIndex : ck->indexA;
+			key.indexB = ck->indexB == TB_NULL_INDEX ? staticIndex : ck->indexB;
+			key.flags = ck->flags;
+		}
+		else
+		{
+			key = tbMakeContactKey(context, world->contacts + contactId);
+		}
+		context->keys[slots[i]] = key;
 	}
 }
 

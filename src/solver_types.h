@@ -126,18 +126,9 @@ _Static_assert(sizeof(tbContactConstraint) == 160, "tbContactConstraint is meant
 typedef struct tbContactKey
 {
 	int indexA, indexB; ///< solver body indices (bodyCount for the static stand-in)
-	uint32_t flags;		///< tbContactKeyFlag bits
+	uint32_t flags;		///< tbContactKeyFlag bits (world.h)
 } tbContactKey;
 
-typedef enum tbContactKeyFlag
-{
-	tb_keyMovesA = 1,	   ///< the solve can change A's velocity (awake, positive inverse mass or inertia)
-	tb_keyMovesB = 2,
-	tb_keyDynamicA = 4,	   ///< A is an awake dynamic body (picks the contact's softness)
-	tb_keyDynamicB = 8,
-	tb_keyScalarOnly = 16, ///< rolling resistance or tangent speed: the wide blocks do not carry them
-	tb_keyBounces = 32,	   ///< restitution > 0: the scalar constraint is kept for restitution
-} tbContactKeyFlag;
 
 /// How the velocity solve treats separation. Speculative gaps (s > 0) always get bias s/h: the
 /// constraint lets the bodies close exactly the gap in one sub-step and no more.

@@ -169,6 +169,30 @@ typedef struct tbContact
 	uint32_t generation; ///< bumped when the slot is freed: stale tbContactIds are refused
 } tbContact;
 
+/// Bits of a contact's solver key (solver_types.h, tbContactKey; contact.c fills them for ready
+/// contacts during the narrow phase).
+typedef enum tbContactKeyFlag
+{
+	tb_keyMovesA = 1,	   ///< the solve can change A's velocity (awake, positive inverse mass or inertia)
+	tb_keyMovesB = 2,
+	tb_keyDynamicA = 4,	   ///< A is an awake dynamic body (picks the contact's softness)
+	tb_keyDynamicB = 8,
+	tb_keyScalarOnly = 16, ///< rolling resistance or tangent speed: the wide blocks do not carry them
+	tb_keyBounces = 32,	   ///< restitution > 0: the scalar constraint is kept for restitution
+} tbContactKeyFlag;
+
+/// What the narrow phase learnt of a contact that is ready for the solver (a dynamic side, no
+/// sleeping side), while it had both bodies in cache: their awake indices (TB_NULL_INDEX for a
+/// static body), which are the solver indices of this step, and the key bits. Valid in the step
+/// `step` only. A dense array by contact id, so the solver's key pass streams through it instead
+/// of visiting two bodies per contact (contact_solver.c).
+typedef struct tbCollideKey
+{
+	int indexA, indexB;
+	uint32_t flags;
+	uint32_t step;
+} tbCollideKey;
+
 // ---------------------------------------------------------------------------------------------
 // The world (world.c)
 
@@ -277,6 +301,8 @@ typedef struct tbWorld
 	/// side), −1 − id when the island stage must look at its bodies.
 	int* touchingContacts;
 	int touchingContactCount, touchingContactCapacity;
+	tbCollideKey* collideKeys; ///< by contact id, up to collideKeyCount (entries past it never written)
+	int collideKeyCount, collideKeyCapacity;
 	uint32_t awakeSetVersion;  ///< bumped whenever a body joins or leaves the awake set
 	uint32_t gatheredVersion; ///< awakeSetVersion when the collide stage gathered its contacts
 	uint32_t awakeRemovals;	  ///< bumped whenever bodies leave the awake set
