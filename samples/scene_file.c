@@ -986,7 +986,7 @@ static bool ReadJointType(Parser* parser, const cJSON* item, const char* path, t
 	}
 	return Scene_ParseJointType(name, type) ? true
 											: BadOption(parser, path, "type",
-														"distance, filter, motor, prismatic, revolute, weld, wheel");
+														"distance, filter, motor, mover, pogo, prismatic, revolute, weld, wheel");
 }
 
 // The frames: an anchor (the frame's origin) and an angle per body, in the body's frame.
