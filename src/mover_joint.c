@@ -76,8 +76,24 @@ static void tbApplyMoverImpulse(const tbJoint* joint, tbJointBodies* b, tbVec2 P
 	b->vB = tbMulAdd(b->vB, joint->invMassB, P);
 }
 
+// Zero caps on both axes: the joint is off, and an impulse kept from before is dropped rather than
+// warm started (the solve would not take it back).
+static bool tbMoverIsOff(tbMoverJoint* m)
+{
+	if (m->maxVelocityForce.x > 0.0f || m->maxVelocityForce.y > 0.0f)
+	{
+		return false;
+	}
+	m->linearVelocityImpulse = tb_vec2_zero;
+	return true;
+}
+
 void tbWarmStartMoverJoint(tbJoint* joint, tbStepContext* context)
 {
+	if (tbMoverIsOff(&joint->mover))
+	{
+		return;
+	}
 	tbJointBodies b = tbLoadJointBodies(context, joint);
 	tbApplyMoverImpulse(joint, &b, joint->mover.linearVelocityImpulse);
 	tbStoreJointBodies(joint, &b);
@@ -87,9 +103,8 @@ void tbSolveMoverJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 {
 	(void)useBias; // a user force, the same in every pass
 	tbMoverJoint* m = &joint->mover;
-	if (m->maxVelocityForce.x <= 0.0f && m->maxVelocityForce.y <= 0.0f)
+	if (tbMoverIsOff(m))
 	{
-		m->linearVelocityImpulse = tb_vec2_zero;
 		return;
 	}
 	tbJointBodies b = tbLoadJointBodies(context, joint);

@@ -401,6 +401,64 @@ Test(pogo, setters_take_effect_and_hertz_zero_turns_it_off)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Drawing
+
+typedef struct SegmentLog
+{
+	tbVec2 p1[8], p2[8];
+	int count;
+} SegmentLog;
+
+static void LogSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+{
+	(void)color;
+	SegmentLog* log = context;
+	if (log->count < 8)
+	{
+		log->p1[log->count] = p1;
+		log->p2[log->count] = p2;
+	}
+	log->count += 1;
+}
+
+static bool Near(tbVec2 a, tbVec2 b)
+{
+	return tbDistance(a, b) < 1e-5f;
+}
+
+// Debug drawing: the mover links the two centres and shows the commanded velocity (a tenth of a
+// second of it, drawScale 1); the pogo links the anchors, marks the rest length down frame B's
+// y-axis from anchor B and shows the normal at anchor A.
+Test(mover, mover_and_pogo_are_drawn)
+{
+	tbWorldId world = MakeWorld(tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 2.0f), 1.0f);
+	tbDebugDraw draw = tbDefaultDebugDraw();
+	SegmentLog log = {0};
+	draw.drawShapes = false;
+	draw.drawJoints = true;
+	draw.DrawSegment = LogSegment;
+	draw.context = &log;
+
+	tbJointId mover = MakeMover(world, ground, body, tbMakeVec2(4.0f, 0.0f), tbMakeVec2(10.0f, 10.0f));
+	tbWorld_Draw(world, &draw);
+	cr_assert_eq(log.count, 2, "mover: %d segments", log.count);
+	cr_expect(Near(log.p1[0], tb_vec2_zero) && Near(log.p2[0], tbMakeVec2(0.0f, 2.0f)), "centre to centre");
+	cr_expect(Near(log.p1[1], tbMakeVec2(0.0f, 2.0f)) && Near(log.p2[1], tbMakeVec2(0.4f, 2.0f)), "velocity");
+	tbDestroyJoint(mover);
+
+	log.count = 0;
+	MakePogo(world, ground, body, 1.5f, 2.0f, 0.5f, 10.0f, 10.0f);
+	tbWorld_Draw(world, &draw);
+	cr_assert_eq(log.count, 3, "pogo: %d segments", log.count);
+	cr_expect(Near(log.p1[0], tb_vec2_zero) && Near(log.p2[0], tbMakeVec2(0.0f, 2.0f)), "anchor to anchor");
+	cr_expect(Near(log.p1[1], tbMakeVec2(0.0f, 2.0f)) && Near(log.p2[1], tbMakeVec2(0.0f, 0.5f)), "rest length");
+	cr_expect(Near(log.p1[2], tb_vec2_zero) && Near(log.p2[2], tbMakeVec2(0.0f, 0.25f)), "normal");
+	tbDestroyWorld(world);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Bad input and determinism
 
 Test(mover, bad_input_is_refused_without_change, .init = SetupErrors, .fini = TeardownErrors)
