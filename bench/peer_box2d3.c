@@ -256,6 +256,31 @@ static void AddOtherJoint(PeerWorld* peer, const SceneJoint* sj)
 			b2CreateMotorJoint(peer->world, &d);
 			break;
 		}
+		case tb_moverJoint:
+		{
+			b2MoverJointDef d = b2DefaultMoverJointDef();
+			d.base = ToB2JointBase(peer, sj);
+			d.linearVelocity = ToB2(sj->def.mover.linearVelocity);
+			d.maxVelocityForce = ToB2(sj->def.mover.maxVelocityForce);
+			b2CreateMoverJoint(peer->world, &d);
+			break;
+		}
+		case tb_pogoJoint:
+		{
+			const tbPogoJointDef* s = &sj->def.pogo;
+			b2PogoJointDef d = b2DefaultPogoJointDef();
+			d.base = ToB2JointBase(peer, sj);
+			d.normal = ToB2(s->normal);
+			d.hertz = s->hertz;
+			d.dampingRatio = s->dampingRatio;
+			d.restLength = s->restLength;
+			d.maxTensionForce = s->maxTensionForce;
+			d.maxCompressionForce = s->maxCompressionForce;
+			d.impulse = s->impulse;
+			d.velocity = s->velocity;
+			b2CreatePogoJoint(peer->world, &d);
+			break;
+		}
 		case tb_filterJoint:
 		{
 			b2FilterJointDef d = b2DefaultFilterJointDef();

@@ -1036,6 +1036,39 @@ static Scene* BuildMouseDrag(void)
 	return scene;
 }
 
+/// A dynamic character (Box2D v3.2's mover and pogo joints): a 6 kg upright box, frictionless,
+/// held 1 m above the ground by a pogo (5 Hz, damping ratio 0.8, pushing up to 3 times its weight,
+/// pulling down up to half of it) and walked right at 2 m/s by a mover capped at 100 N along x
+/// (nothing along y: gravity and the pogo hold the height). It walks into three 1 kg boxes and
+/// shoves them along. The pogo's anchor on the ground stays where the walk starts: its length is
+/// measured along the world's up, so it holds the height wherever the character is. Sleep is off,
+/// as a pogo character needs (pogo_joint.c says why).
+static Scene* BuildDynamicCharacter(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 300;
+	scene->enableSleep = false;
+	int ground = AddGround(scene, 20.0f, 0.6f);
+	const float start = -6.0f, rest = 1.0f, weight = 60.0f;
+	int character = AddBoxBody(scene, tb_dynamicBody, V(start, rest), 0.0f, 0.3f, 0.5f, 10.0f, 0.0f);
+	scene->bodies[character].fixedRotation = true;
+	for (int i = 0; i < 3; ++i)
+	{
+		AddBoxBody(scene, tb_dynamicBody, V(0.9f * (float)i, 0.4f), 0.0f, 0.4f, 0.4f, 1.5625f, 0.4f);
+	}
+	SceneJoint* pogo = Scene_AddJoint(scene, tb_pogoJoint, ground, character);
+	pogo->def.base.localFrameA.p = V(start, 1.0f); // the ground's top under the start (ground origin 1 m down)
+	pogo->def.pogo.restLength = rest;
+	pogo->def.pogo.hertz = 5.0f;
+	pogo->def.pogo.dampingRatio = 0.8f;
+	pogo->def.pogo.maxCompressionForce = 3.0f * weight;
+	pogo->def.pogo.maxTensionForce = 0.5f * weight;
+	SceneJoint* mover = Scene_AddJoint(scene, tb_moverJoint, ground, character);
+	mover->def.mover.linearVelocity = V(2.0f, 0.0f);
+	mover->def.mover.maxVelocityForce = V(100.0f, 0.0f);
+	return scene;
+}
+
 /// Newton's cradle on joints: five balls (radius 0.25 m, restitution 1, no friction) each hanging
 /// on a rigid 2 m distance joint from a static bar, touching; the first pulled out to the side
 /// 1.5 m higher. With impact propagation (`tumble run newtons_cradle_joints --impact-propagation`)
@@ -1283,6 +1316,9 @@ static const CatalogueEntry s_entries[] = {
 	{"piston", "a pusher on a motorised prismatic joint (1 m/s, limits 0-4 m) pushing three boxes", BuildPiston},
 	{"mouse_drag", "a box dragged by a motor joint's spring toward a moving target (Box2D v3.2's mouse drag)",
 	 BuildMouseDrag},
+	{"dynamic_character", "a box character on a pogo joint (1 m, 5 Hz) walked at 2 m/s by a mover joint into three "
+						  "boxes (Box2D v3.2's dynamic mover joints)",
+	 BuildDynamicCharacter},
 	{"newtons_cradle_joints", "five balls on rigid distance joints from a bar, the first released 1.5 m up "
 							  "(run with --impact-propagation)",
 	 BuildCradleJoints},

@@ -181,6 +181,12 @@ void Scene_DefaultJointDef(tbJointType type, SceneJoint* joint)
 		case tb_motorJoint:
 			joint->def.motor = tbDefaultMotorJointDef();
 			break;
+		case tb_moverJoint:
+			joint->def.mover = tbDefaultMoverJointDef();
+			break;
+		case tb_pogoJoint:
+			joint->def.pogo = tbDefaultPogoJointDef();
+			break;
 		case tb_prismaticJoint:
 			joint->def.prismatic = tbDefaultPrismaticJointDef();
 			break;
@@ -458,6 +464,10 @@ static tbJointId CreateSceneJoint(tbWorldId worldId, const SceneWorld* world, co
 			return tbCreateFilterJoint(worldId, &copy.def.filter);
 		case tb_motorJoint:
 			return tbCreateMotorJoint(worldId, &copy.def.motor);
+		case tb_moverJoint:
+			return tbCreateMoverJoint(worldId, &copy.def.mover);
+		case tb_pogoJoint:
+			return tbCreatePogoJoint(worldId, &copy.def.pogo);
 		case tb_prismaticJoint:
 			return tbCreatePrismaticJoint(worldId, &copy.def.prismatic);
 		case tb_revoluteJoint:
@@ -705,7 +715,8 @@ static const NamedValue s_solverNames[] = {
 static const NamedValue s_bodyTypeNames[] = {
 	{"static", tb_staticBody}, {"kinematic", tb_kinematicBody}, {"dynamic", tb_dynamicBody}, {NULL, 0}};
 static const NamedValue s_jointTypeNames[] = {
-	{"distance", tb_distanceJoint}, {"filter", tb_filterJoint}, {"motor", tb_motorJoint},
+	{"distance", tb_distanceJoint}, {"filter", tb_filterJoint}, {"motor", tb_motorJoint}, {"mover", tb_moverJoint},
+	{"pogo", tb_pogoJoint},
 	{"prismatic", tb_prismaticJoint}, {"revolute", tb_revoluteJoint}, {"weld", tb_weldJoint},
 	{"wheel", tb_wheelJoint}, {NULL, 0}};
 

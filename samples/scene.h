@@ -87,6 +87,8 @@ typedef struct SceneJoint
 		tbDistanceJointDef distance;
 		tbFilterJointDef filter;
 		tbMotorJointDef motor;
+		tbMoverJointDef mover;
+		tbPogoJointDef pogo;
 		tbPrismaticJointDef prismatic;
 		tbRevoluteJointDef revolute;
 		tbWeldJointDef weld;

@@ -776,6 +776,7 @@ typedef enum FieldKind
 	FIELD_NON_NEGATIVE,
 	FIELD_BOOL,
 	FIELD_VEC2,
+	FIELD_NON_NEGATIVE_VEC2, ///< both coordinates >= 0 (the mover joint's force caps)
 } FieldKind;
 
 typedef struct JointField
@@ -815,6 +816,22 @@ static const JointField s_motorFields[] = {
 	FIELD(tbMotorJointDef, angularHertz, "angular_hertz", FIELD_NON_NEGATIVE),
 	FIELD(tbMotorJointDef, angularDampingRatio, "angular_damping_ratio", FIELD_NON_NEGATIVE),
 	FIELD(tbMotorJointDef, maxSpringTorque, "max_spring_torque", FIELD_NON_NEGATIVE),
+	{NULL, 0, FIELD_FLOAT}};
+
+static const JointField s_moverFields[] = {
+	FIELD(tbMoverJointDef, linearVelocity, "linear_velocity", FIELD_VEC2),
+	FIELD(tbMoverJointDef, maxVelocityForce, "max_velocity_force", FIELD_NON_NEGATIVE_VEC2),
+	{NULL, 0, FIELD_FLOAT}};
+
+static const JointField s_pogoFields[] = {
+	FIELD(tbPogoJointDef, normal, "normal", FIELD_VEC2),
+	FIELD(tbPogoJointDef, hertz, "hertz", FIELD_NON_NEGATIVE),
+	FIELD(tbPogoJointDef, dampingRatio, "damping_ratio", FIELD_NON_NEGATIVE),
+	FIELD(tbPogoJointDef, restLength, "rest_length", FIELD_NON_NEGATIVE),
+	FIELD(tbPogoJointDef, maxTensionForce, "max_tension_force", FIELD_NON_NEGATIVE),
+	FIELD(tbPogoJointDef, maxCompressionForce, "max_compression_force", FIELD_NON_NEGATIVE),
+	FIELD(tbPogoJointDef, impulse, "impulse", FIELD_FLOAT),
+	FIELD(tbPogoJointDef, velocity, "velocity", FIELD_FLOAT),
 	{NULL, 0, FIELD_FLOAT}};
 
 static const JointField s_prismaticFields[] = {
@@ -866,7 +883,8 @@ static const JointField s_wheelFields[] = {
 
 /// The fields of a kind, indexed by tbJointType.
 static const JointField* const s_jointFields[tb_jointTypeCount] = {
-	s_distanceFields, s_filterFields, s_motorFields, s_prismaticFields, s_revoluteFields, s_weldFields, s_wheelFields};
+	s_distanceFields, s_filterFields,	 s_motorFields, s_moverFields, s_pogoFields,
+	s_prismaticFields, s_revoluteFields, s_weldFields,	s_wheelFields};
 
 /// Keys every joint has.
 static const char* const s_jointBaseKeys[] = {"type",	"body_a",	"body_b",			 "anchor_a",
@@ -882,6 +900,10 @@ static bool ReadJointField(Parser* parser, const cJSON* item, const char* path, 
 			return ReadBool(parser, item, path, field->key, (bool*)target);
 		case FIELD_VEC2:
 			return ReadVec2(parser, item, path, field->key, (tbVec2*)target, false);
+		case FIELD_NON_NEGATIVE_VEC2:
+			return ReadVec2(parser, item, path, field->key, (tbVec2*)target, false) &&
+				   CheckNonNegative(parser, path, field->key, ((tbVec2*)target)->x) &&
+				   CheckNonNegative(parser, path, field->key, ((tbVec2*)target)->y);
 		case FIELD_NON_NEGATIVE:
 			return ReadFloat(parser, item, path, field->key, (float*)target, false) &&
 				   CheckNonNegative(parser, path, field->key, *(float*)target);
@@ -964,7 +986,7 @@ static bool ReadJointType(Parser* parser, const cJSON* item, const char* path, t
 	}
 	return Scene_ParseJointType(name, type) ? true
 											: BadOption(parser, path, "type",
-														"distance, filter, motor, prismatic, revolute, weld, wheel");
+														"distance, filter, motor, mover, pogo, prismatic, revolute, weld, wheel");
 }
 
 // The frames: an anchor (the frame's origin) and an angle per body, in the body's frame.
@@ -1618,7 +1640,8 @@ static void AppendJoint(TextBuffer* buffer, const SceneJoint* joint)
 	{
 		const char* value = (const char*)&joint->def + fields[i].offset;
 		const char* standard = (const char*)&defaults.def + fields[i].offset;
-		size_t size = fields[i].kind == FIELD_BOOL ? sizeof(bool) : (fields[i].kind == FIELD_VEC2 ? sizeof(tbVec2) : sizeof(float));
+		bool isVec2 = fields[i].kind == FIELD_VEC2 || fields[i].kind == FIELD_NON_NEGATIVE_VEC2;
+		size_t size = fields[i].kind == FIELD_BOOL ? sizeof(bool) : (isVec2 ? sizeof(tbVec2) : sizeof(float));
 		if (memcmp(value, standard, size) == 0)
 		{
 			continue;
@@ -1628,7 +1651,7 @@ static void AppendJoint(TextBuffer* buffer, const SceneJoint* joint)
 		{
 			Append(buffer, *(const bool*)value ? "true" : "false");
 		}
-		else if (fields[i].kind == FIELD_VEC2)
+		else if (isVec2)
 		{
 			AppendVec2(buffer, *(const tbVec2*)value);
 		}

@@ -2,7 +2,8 @@
 // detection), the functions every kind shares, the filter joint (no constraint: it only stops the
 // two bodies colliding), the joints' place in the step, and the hooks that make joined bodies one
 // island. Each constrained kind has its own file with its maths (revolute_joint.c,
-// distance_joint.c, weld_joint.c, prismatic_joint.c, wheel_joint.c, motor_joint.c).
+// distance_joint.c, weld_joint.c, prismatic_joint.c, wheel_joint.c, motor_joint.c, mover_joint.c,
+// pogo_joint.c).
 //
 // A joint is a set of equality and inequality constraints C(x) between two bodies, solved with
 // the contacts by sequential impulses (Catto, "Modeling and Solving Constraints", GDC 2009):
@@ -95,6 +96,27 @@ tbMotorJointDef tbDefaultMotorJointDef(void)
 	return def;
 }
 
+tbMoverJointDef tbDefaultMoverJointDef(void)
+{
+	tbMoverJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+// Box2D v3.2 leaves every field zero, the normal too; a zero normal is no direction, so the
+// default here is the world's up, the pogo axis's own default.
+tbPogoJointDef tbDefaultPogoJointDef(void)
+{
+	tbPogoJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.normal = tbMakeVec2(0.0f, 1.0f);
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
 tbPrismaticJointDef tbDefaultPrismaticJointDef(void)
 {
 	tbPrismaticJointDef def;
@@ -137,8 +159,8 @@ tbWheelJointDef tbDefaultWheelJointDef(void)
 // ---------------------------------------------------------------------------------------------
 // Ids and checks
 
-static const char* const s_jointTypeNames[tb_jointTypeCount] = {"distance", "filter",  "motor", "prismatic",
-																 "revolute", "weld", "wheel"};
+static const char* const s_jointTypeNames[tb_jointTypeCount] = {
+	"distance", "filter", "motor", "mover", "pogo", "prismatic", "revolute", "weld", "wheel"};
 
 tbJointId tbMakeJointId(const tbWorld* world, const tbJoint* joint)
 {
@@ -637,6 +659,12 @@ static void tbGetJointReaction(const tbWorld* world, const tbJoint* joint, float
 		case tb_motorJoint:
 			tbGetMotorJointReaction(world, joint, inv_h, force, torque);
 			break;
+		case tb_moverJoint:
+			tbGetMoverJointReaction(world, joint, inv_h, force, torque);
+			break;
+		case tb_pogoJoint:
+			tbGetPogoJointReaction(world, joint, inv_h, force, torque);
+			break;
 		case tb_prismaticJoint:
 			tbGetPrismaticJointReaction(world, joint, inv_h, force, torque);
 			break;
@@ -888,6 +916,12 @@ void tbPrepareJoints(tbStepContext* context)
 			case tb_motorJoint:
 				tbPrepareMotorJoint(joint, context);
 				break;
+			case tb_moverJoint:
+				tbPrepareMoverJoint(joint, context);
+				break;
+			case tb_pogoJoint:
+				tbPreparePogoJoint(joint, context);
+				break;
 			case tb_prismaticJoint:
 				tbPreparePrismaticJoint(joint, context);
 				break;
@@ -920,6 +954,12 @@ void tbWarmStartJointRange(tbStepContext* context, int begin, int end)
 				break;
 			case tb_motorJoint:
 				tbWarmStartMotorJoint(joint, context);
+				break;
+			case tb_moverJoint:
+				tbWarmStartMoverJoint(joint, context);
+				break;
+			case tb_pogoJoint:
+				tbWarmStartPogoJoint(joint, context);
 				break;
 			case tb_prismaticJoint:
 				tbWarmStartPrismaticJoint(joint, context);
@@ -958,6 +998,12 @@ void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBi
 				break;
 			case tb_motorJoint:
 				tbSolveMotorJoint(joint, context, useBias);
+				break;
+			case tb_moverJoint:
+				tbSolveMoverJoint(joint, context, useBias);
+				break;
+			case tb_pogoJoint:
+				tbSolvePogoJoint(joint, context, useBias);
 				break;
 			case tb_prismaticJoint:
 				tbSolvePrismaticJoint(joint, context, useBias);
@@ -1257,6 +1303,12 @@ void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw)
 				break;
 			case tb_motorJoint:
 				tbDrawMotorJoint(draw, world, joint);
+				break;
+			case tb_moverJoint:
+				tbDrawMoverJoint(draw, world, joint);
+				break;
+			case tb_pogoJoint:
+				tbDrawPogoJoint(draw, world, joint);
 				break;
 			case tb_prismaticJoint:
 				tbDrawPrismaticJoint(draw, world, joint);

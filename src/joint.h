@@ -51,6 +51,24 @@ typedef struct tbMotorJoint
 	float angularMass; ///< kg·m²
 } tbMotorJoint;
 
+typedef struct tbMoverJoint
+{
+	tbVec2 linearVelocity;		 ///< m/s, target of vB − vA
+	tbVec2 maxVelocityForce;	 ///< N, the cap on x and the cap on y
+	tbVec2 linearVelocityImpulse; ///< N·s, (x, y), each within ±h·cap
+	float linearMass;			 ///< kg, 1/(mA⁻¹ + mB⁻¹): the same on both axes
+} tbMoverJoint;
+
+typedef struct tbPogoJoint
+{
+	tbVec2 normal; ///< unit, world axes: the direction of the push on B
+	float hertz, dampingRatio, restLength;
+	float maxTensionForce, maxCompressionForce; ///< N
+	float impulse;	  ///< N·s along the normal, in [−h·maxTension, h·maxCompression]
+	float velocity;	  ///< m/s, the spring's velocity, advanced once per sub-step
+	float normalMass; ///< kg, along the normal at the start of the step
+} tbPogoJoint;
+
 typedef struct tbPrismaticJoint
 {
 	float hertz, dampingRatio, targetTranslation;
@@ -114,6 +132,8 @@ typedef struct tbJoint
 	{
 		tbDistanceJoint distance;
 		tbMotorJoint motor;
+		tbMoverJoint mover;
+		tbPogoJoint pogo;
 		tbPrismaticJoint prismatic;
 		tbRevoluteJoint revolute;
 		tbWeldJoint weld;
@@ -317,6 +337,19 @@ void tbWarmStartMotorJoint(tbJoint* joint, tbStepContext* context);
 void tbSolveMotorJoint(tbJoint* joint, tbStepContext* context, bool useBias);
 void tbGetMotorJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque);
 void tbDrawMotorJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint);
+
+void tbPrepareMoverJoint(tbJoint* joint, const tbStepContext* context);
+void tbWarmStartMoverJoint(tbJoint* joint, tbStepContext* context);
+void tbSolveMoverJoint(tbJoint* joint, tbStepContext* context, bool useBias);
+void tbGetMoverJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque);
+void tbDrawMoverJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint);
+
+void tbPreparePogoJoint(tbJoint* joint, const tbStepContext* context);
+/// Also advances the pogo's spring by one sub-step (once per sub-step, whatever the method's passes).
+void tbWarmStartPogoJoint(tbJoint* joint, tbStepContext* context);
+void tbSolvePogoJoint(tbJoint* joint, tbStepContext* context, bool useBias);
+void tbGetPogoJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque);
+void tbDrawPogoJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint);
 
 void tbPreparePrismaticJoint(tbJoint* joint, const tbStepContext* context);
 void tbWarmStartPrismaticJoint(tbJoint* joint, tbStepContext* context);

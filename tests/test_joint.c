@@ -1200,6 +1200,22 @@ Test(joint, every_kind_refuses_a_bad_definition, .init = SetupErrors, .fini = Te
 	ExpectError(before, "tbCreateMotorJoint", "def->maxSpringForce");
 
 	before = s_errors;
+	tbMoverJointDef mover = tbDefaultMoverJointDef();
+	mover.base.bodyIdA = a;
+	mover.base.bodyIdB = b;
+	mover.maxVelocityForce = tbMakeVec2(1.0f, -1.0f);
+	cr_expect(TB_IS_NULL(tbCreateMoverJoint(world, &mover)));
+	ExpectError(before, "tbCreateMoverJoint", "def->maxVelocityForce");
+
+	before = s_errors;
+	tbPogoJointDef pogo = tbDefaultPogoJointDef();
+	pogo.base.bodyIdA = a;
+	pogo.base.bodyIdB = b;
+	pogo.normal = tbMakeVec2(1.0f, 1.0f);
+	cr_expect(TB_IS_NULL(tbCreatePogoJoint(world, &pogo)));
+	ExpectError(before, "tbCreatePogoJoint", "def->normal");
+
+	before = s_errors;
 	tbWeldJointDef weld = tbDefaultWeldJointDef();
 	weld.base.bodyIdA = a;
 	weld.base.bodyIdB = b;

@@ -1,5 +1,6 @@
 // The catalogue's game scenes on joints — a door, a piston, a mouse drag, Newton's cradle on
-// rods — each checked against what its joint promises in closed form.
+// rods, a dynamic character on mover and pogo joints — each checked against what its joint
+// promises in closed form.
 #include "catalogue.h"
 #include "scene.h"
 
@@ -98,6 +99,47 @@ Test(joint_scenes, mouse_drag_follows_the_target)
 // v0 = sqrt(2·g·h) = 5.477 m/s (measured 5.464: the sub-step discretisation, 0.25 %); the impact
 // passes down the row and the last ball leaves at v0 (within 1 %) while the middle ones stay
 // nearly at rest (≤ 2 % of v0; measured 0.072 m/s). Without propagation the speed is shared.
+// The dynamic character walks at the mover's 2 m/s (nothing resists it before the boxes: within
+// 1e-4 relative, float rounding) at the pogo's rest height (no sag: the pogo's push is a velocity
+// target, not a force law; within 1 mm, measured at 1.5 s once the start has settled), then
+// shoves the boxes: the mover's 100 N cap outweighs their friction (0.4·10 N each), so the first
+// box moves on. Pushing (horizontal contact forces only: the character is frictionless), the
+// height stays at the rest length too, within the same 1 mm (measured within 3.2e-5 m).
+Test(joint_scenes, dynamic_character_walks_on_its_pogo)
+{
+	Scene* scene;
+	SceneWorld world = Build("dynamic_character", &scene, false);
+	tbBodyId character = world.bodyIds[1], box = world.bodyIds[2];
+	tbJointId pogo = world.jointIds[0];
+	cr_assert_eq(tbJoint_GetType(pogo), tb_pogoJoint);
+	float boxStart = tbBody_GetPosition(box).x;
+	float lowest = 1.0f, highest = 1.0f;
+	for (int step = 0; step < scene->steps; ++step)
+	{
+		SceneWorld_Step(&world, scene, scene->subSteps);
+		float height = tbBody_GetPosition(character).y;
+		if (step == 89)
+		{
+			float speed = tbBody_GetLinearVelocity(character).x;
+			cr_expect(fabsf(speed - 2.0f) < 2e-4f, "walking at %.6f m/s", (double)speed);
+			cr_expect(fabsf(height - 1.0f) < 1e-3f, "walking %.5f m high, rest 1 m", (double)height);
+			cr_expect(fabsf(tbPogoJoint_GetLength(pogo) - height) < 1e-5f, "the pogo's length is the height");
+		}
+		if (step >= 89)
+		{
+			lowest = fminf(lowest, height);
+			highest = fmaxf(highest, height);
+		}
+	}
+	cr_log_info("dynamic character: height %.6f..%.6f m while walking and pushing; first box moved %.3f m",
+				(double)lowest, (double)highest, (double)(tbBody_GetPosition(box).x - boxStart));
+	cr_expect(lowest > 0.999f && highest < 1.001f, "height %.6f..%.6f m", (double)lowest, (double)highest);
+	cr_expect_gt(tbBody_GetPosition(box).x - boxStart, 1.0f, "the first box was shoved %.3f m",
+				 (double)(tbBody_GetPosition(box).x - boxStart));
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+}
+
 Test(joint_scenes, cradle_on_rods_passes_the_impact)
 {
 	for (int propagate = 0; propagate < 2; ++propagate)

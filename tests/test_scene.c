@@ -325,6 +325,51 @@ Test(scene, the_documented_example_parses)
 	Scene_Destroy(scene);
 }
 
+// The character joints' keys: parsed into their definitions, exported and parsed again to the same
+// values, and built into joints of their kinds.
+Test(scene, mover_and_pogo_joints_round_trip)
+{
+	const char* text =
+		"{\"bodies\": [{}, {\"type\": \"dynamic\", \"position\": [0, 1], \"shapes\": [{\"circle\": {\"radius\": 0.3}}]}],"
+		" \"joints\": [{\"type\": \"mover\", \"body_a\": 0, \"body_b\": 1, \"linear_velocity\": [2, 0],"
+		" \"max_velocity_force\": [50, 0]},"
+		" {\"type\": \"pogo\", \"body_a\": 0, \"body_b\": 1, \"normal\": [0, 1], \"hertz\": 4, \"damping_ratio\": 0.5,"
+		" \"rest_length\": 1.2, \"max_tension_force\": 5, \"max_compression_force\": 60, \"impulse\": 0.1,"
+		" \"velocity\": -0.2}]}";
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(scene, "%s", error);
+	cr_assert_eq(scene->jointCount, 2);
+	for (int pass = 0; pass < 2; ++pass)
+	{
+		const tbMoverJointDef* mover = &scene->joints[0].def.mover;
+		const tbPogoJointDef* pogo = &scene->joints[1].def.pogo;
+		cr_assert_eq(scene->joints[0].type, tb_moverJoint);
+		cr_assert_eq(scene->joints[1].type, tb_pogoJoint);
+		cr_expect(mover->linearVelocity.x == 2.0f && mover->maxVelocityForce.x == 50.0f &&
+				  mover->maxVelocityForce.y == 0.0f);
+		cr_expect(pogo->hertz == 4.0f && pogo->dampingRatio == 0.5f && pogo->restLength == 1.2f &&
+				  pogo->maxTensionForce == 5.0f && pogo->maxCompressionForce == 60.0f && pogo->impulse == 0.1f &&
+				  pogo->velocity == -0.2f && pogo->normal.y == 1.0f);
+		if (pass == 0)
+		{
+			char* exported = SceneFile_Export(scene, error, (int)sizeof(error));
+			cr_assert_not_null(exported, "%s", error);
+			Scene_Destroy(scene);
+			scene = SceneFile_Parse(exported, error, (int)sizeof(error));
+			free(exported);
+			cr_assert_not_null(scene, "%s", error);
+		}
+	}
+	SceneWorld world = Scene_BuildWorld(scene, NULL);
+	cr_assert_eq(world.jointCount, 2);
+	cr_expect_eq(tbJoint_GetType(world.jointIds[0]), tb_moverJoint);
+	cr_expect_eq(tbJoint_GetType(world.jointIds[1]), tb_pogoJoint);
+	cr_expect_float_eq(tbPogoJoint_GetRestLength(world.jointIds[1]), 1.2f, 0.0f);
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+}
+
 Test(scene, defaults_fill_missing_keys)
 {
 	char error[256] = "";
@@ -396,7 +441,12 @@ static const BadFile s_badFiles[] = {
 	 "bodies[0].shapes[0].hit_events: must be true or false"},
 	{"{\"gravity\": [0, -10], \"gravity\": [0, 0]}", "gravity: duplicate key"},
 	{"{\"bodies\": [{}, {}], \"joints\": [{\"type\": \"hinge\", \"body_a\": 0, \"body_b\": 1}]}",
-	 "joints[0].type: must be one of distance, filter, motor, prismatic, revolute, weld, wheel"},
+	 "joints[0].type: must be one of distance, filter, motor, mover, pogo, prismatic, revolute, weld, wheel"},
+	{"{\"bodies\": [{}, {}], \"joints\": [{\"type\": \"mover\", \"body_a\": 0, \"body_b\": 1, "
+	 "\"max_velocity_force\": [1, -1]}]}",
+	 "joints[0].max_velocity_force: must be >= 0"},
+	{"{\"bodies\": [{}, {}], \"joints\": [{\"type\": \"pogo\", \"body_a\": 0, \"body_b\": 1, \"rest_length\": -1}]}",
+	 "joints[0].rest_length: must be >= 0"},
 	{"{\"bodies\": [{}, {}], \"joints\": [{\"type\": \"revolute\", \"body_a\": 0}]}",
 	 "joints[0].body_b: missing (required)"},
 	{"{\"bodies\": [{}, {}], \"joints\": [{\"type\": \"revolute\", \"body_a\": 0, \"body_b\": 2}]}",

@@ -27,7 +27,8 @@ inline void Box2D24_SetJointBase(const std::vector<b2Body*>& bodies, const Scene
 // (θB + φB) − (θA + φA) with φ the frames' angles, so referenceAngle = φA − φB), prismatic and
 // wheel (axis: frame A's x axis), distance (spring by b2LinearStiffness from hertz and damping
 // ratio) and weld (rigid, or soft by b2AngularStiffness). 2.4.1 has no revolute or prismatic
-// spring, no motor joint of v3's kind and no filter joint: a scene with one is not run (false).
+// spring, no motor, mover or pogo joint of v3's kind and no filter joint: a scene with one is not
+// run (false).
 inline bool Box2D24_AddJoint(b2World* world, const std::vector<b2Body*>& bodies, const SceneJoint& sj)
 {
 	const tbJointDef& base = sj.def.base;

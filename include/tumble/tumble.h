@@ -441,6 +441,31 @@ TB_API float tbMotorJoint_GetMaxSpringForce(tbJointId jointId);
 TB_API bool tbMotorJoint_SetMaxSpringTorque(tbJointId jointId, float maxTorque);
 TB_API float tbMotorJoint_GetMaxSpringTorque(tbJointId jointId);
 
+// Mover joint ----------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreateMoverJoint(tbWorldId worldId, const tbMoverJointDef* def);
+TB_API bool tbMoverJoint_SetLinearVelocity(tbJointId jointId, tbVec2 velocity);
+TB_API tbVec2 tbMoverJoint_GetLinearVelocity(tbJointId jointId);
+/// maxForce: the caps on x and on y (N, each ≥ 0).
+TB_API bool tbMoverJoint_SetMaxVelocityForce(tbJointId jointId, tbVec2 maxForce);
+TB_API tbVec2 tbMoverJoint_GetMaxVelocityForce(tbJointId jointId);
+
+// Pogo joint -----------------------------------------------------------------------------------
+
+TB_API tbJointId tbCreatePogoJoint(tbWorldId worldId, const tbPogoJointDef* def);
+TB_API bool tbPogoJoint_SetRestLength(tbJointId jointId, float length);
+TB_API float tbPogoJoint_GetRestLength(tbJointId jointId);
+TB_API bool tbPogoJoint_SetSpringHertz(tbJointId jointId, float hertz);
+TB_API float tbPogoJoint_GetSpringHertz(tbJointId jointId);
+TB_API bool tbPogoJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio);
+TB_API float tbPogoJoint_GetSpringDampingRatio(tbJointId jointId);
+/// Length now (m): anchor B minus anchor A along the y-axis of frame B.
+TB_API float tbPogoJoint_GetLength(tbJointId jointId);
+/// The spring's velocity (m/s), the rate of change of the length it commands.
+TB_API float tbPogoJoint_GetVelocity(tbJointId jointId);
+/// The accumulated impulse of the last sub-step (N·s, positive pushes): force = impulse/h.
+TB_API float tbPogoJoint_GetImpulse(tbJointId jointId);
+
 // Prismatic joint ------------------------------------------------------------------------------
 
 TB_API tbJointId tbCreatePrismaticJoint(tbWorldId worldId, const tbPrismaticJointDef* def);

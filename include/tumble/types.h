@@ -293,6 +293,8 @@ typedef enum tbJointType
 	tb_distanceJoint,
 	tb_filterJoint,
 	tb_motorJoint,
+	tb_moverJoint,
+	tb_pogoJoint,
 	tb_prismaticJoint,
 	tb_revoluteJoint,
 	tb_weldJoint,
@@ -370,6 +372,40 @@ typedef struct tbMotorJointDef
 } tbMotorJointDef;
 
 TB_API tbMotorJointDef tbDefaultMotorJointDef(void);
+
+/// Mover joint: drives the linear velocity of body B relative to body A towards linearVelocity,
+/// x and y separately, each capped by its own force; rotation is left alone. Made for a dynamic
+/// character moved by velocity commands (body A usually static), as in Box2D v3.2.
+typedef struct tbMoverJointDef
+{
+	tbJointDef base;
+	tbVec2 linearVelocity;	 ///< m/s, target velocity of body B relative to body A (world axes)
+	tbVec2 maxVelocityForce; ///< N, each ≥ 0: the cap on x and the cap on y (0 on both: no control)
+	int internalValue;
+} tbMoverJointDef;
+
+TB_API tbMoverJointDef tbDefaultMoverJointDef(void);
+
+/// Pogo joint: a one-sided spring leg for a dynamic character (Box2D v3.2). Its length is the
+/// distance from anchor A to anchor B along the y-axis of frame B; it pushes along `normal`
+/// (usually the ground normal, from body A to body B) so that the length follows a damped
+/// oscillator towards restLength, with the push and the pull each capped. The pogo is typically
+/// created again every step where the character stands; impulse and velocity carry its state over.
+typedef struct tbPogoJointDef
+{
+	tbJointDef base;
+	tbVec2 normal;			   ///< unit vector along which the pogo pushes B (and A back), default (0, 1)
+	float hertz;			   ///< Hz, ≥ 0, the spring's frequency (0: the pogo is off)
+	float dampingRatio;		   ///< ≥ 0 (0: no damping but the integrator's own)
+	float restLength;		   ///< m, ≥ 0
+	float maxTensionForce;	   ///< N, ≥ 0: the largest pull, how hard the character sticks to the ground
+	float maxCompressionForce; ///< N, ≥ 0: the largest push, how hard the pogo lifts the character
+	float impulse;			   ///< N·s, the accumulated impulse to start from (a re-created pogo's last)
+	float velocity;			   ///< m/s, the spring's velocity to start from (a re-created pogo's last)
+	int internalValue;
+} tbPogoJointDef;
+
+TB_API tbPogoJointDef tbDefaultPogoJointDef(void);
 
 /// Prismatic joint: body B slides along the x-axis of frame A and cannot turn relative to A. The
 /// translation is 0 when the frame origins coincide.
