@@ -162,14 +162,18 @@ void tbColorConstraints(tbStepContext* context)
 	// order (a hash of the contact id, island.c), every block was written lane by lane from
 	// sixteen places at once and fell out of the cache between its lanes.
 	const int* slots = context->world->solverSlots;
+	context->locationById = tbArenaAlloc(&context->world->stepArena, (int)sizeof(int) * n);
 	for (int i = 0; i < n; ++i)
 	{
 		int index = slots[i];
 		int k = colors[index];
+		int location = -1;
 		if (k != TB_GRAPH_COLOR_COUNT)
 		{
-			context->wideLocation[index] = blockStart[k] * TB_SIMD_WIDTH + filled[k]++;
+			location = blockStart[k] * TB_SIMD_WIDTH + filled[k]++;
+			context->wideLocation[index] = location;
 		}
+		context->locationById[i] = location;
 	}
 }
 
@@ -179,6 +183,7 @@ void tbReleaseColors(tbStepContext* context)
 	{
 		context->wideMemory = NULL; // step arena memory: released when the step ends
 		context->wideLocation = NULL;
+		context->locationById = NULL;
 		context->wideConstraints = NULL;
 		context->wideCount = 0;
 		context->overflowCount = 0;

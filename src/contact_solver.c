@@ -309,6 +309,7 @@ static void tbKeyContactsTask(int start, int end, uint32_t workerIndex, void* ta
 			key = tbMakeContactKey(context, world->contacts + contactId);
 		}
 		context->keys[slots[i]] = key;
+		context->keysById[i] = key;
 	}
 }
 
@@ -316,6 +317,7 @@ void tbKeyContacts(tbStepContext* context)
 {
 	int n = context->constraintCount;
 	context->keys = tbArenaAlloc(&context->world->stepArena, tbMaxInt((int)sizeof(tbContactKey) * n, 1));
+	context->keysById = tbArenaAlloc(&context->world->stepArena, tbMaxInt((int)sizeof(tbContactKey) * n, 1));
 	tbParallelFor(context->world, tbKeyContactsTask, n, TB_CONTACTS_PER_TASK, context);
 }
 
@@ -349,10 +351,11 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 			restitutionCount += c->restitution != 0.0f ? 1 : 0;
 			continue;
 		}
+		// Key and lane by contact-id order: both stream (by slot they were scattered loads).
 		tbContactConstraint local;
-		tbContactKey key = context->keys[slot];
+		tbContactKey key = context->keysById[i];
 		tbPrepareConstraint(context, contact, key, &local);
-		int location = wideLocation[slot];
+		int location = context->locationById[i];
 		if (location >= 0)
 		{
 			tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH, &local, slot);
@@ -763,7 +766,13 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 	{
 		int index = slots[i];
 		tbManifold* manifold = &world->contacts[contactIds[i]].manifold;
-		int location = wideLocation != NULL ? wideLocation[index] : -1;
+		int location = -1;
+		if (wideLocation != NULL)
+		{
+			// A bouncing constraint may have been unpacked by restitution (wideLocation says so).
+			bool bounces = (context->keysById[i].flags & tb_keyBounces) != 0u;
+			location = bounces ? wideLocation[index] : context->locationById[i];
+		}
 		if (location >= 0)
 		{
 			tbLoadWideImpulses(context, location, manifold->pointCount, manifold->points);

@@ -196,6 +196,7 @@ typedef struct tbStepContext
 	tbContactConstraint* constraints; ///< in the order of world->solverContacts; with the wide
 									  ///< solver only the overflow's and the bouncing ones are written
 	tbContactKey* keys;				  ///< per constraint, wide solver only (NULL for the scalar one)
+	tbContactKey* keysById;			  ///< the same in contact-id order (world->solverContactsById)
 	int constraintCount;
 	int restitutionCount; ///< constraints with restitution > 0 (tbApplyRestitution skips when 0)
 
@@ -206,6 +207,9 @@ typedef struct tbStepContext
 	int* overflowConstraints;
 	int overflowCount;
 	int* wideLocation; ///< per constraint: block·TB_SIMD_WIDTH + lane, or −1 (overflow, or unpacked)
+	/// The same in contact-id order (world->solverContactsById), for the passes that walk the
+	/// contacts in that order; not updated when restitution unpacks a bouncing constraint.
+	int* locationById;
 	int colorCount;											///< colours in use this step
 	int colorBlockStart[TB_GRAPH_COLOR_COUNT + 1]; ///< blocks of colour k: [start[k], start[k + 1])
 	// Joints (constraint_graph.c): world->solverJoints reordered. First the joints of small
