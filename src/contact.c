@@ -799,6 +799,10 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 	for (int i = startIndex; i < endIndex; ++i)
 	{
 		tbContact* contact = world->contacts + world->stepContacts[i];
+		if (i + TB_PREFETCH_AHEAD < endIndex)
+		{
+			tbPrefetch(world->contacts + world->stepContacts[i + TB_PREFETCH_AHEAD], (int)sizeof(tbContact));
+		}
 		const tbShape* a = world->shapes + contact->shapeIdA;
 		const tbShape* b = world->shapes + contact->shapeIdB;
 		bool overlap = tbBroadPhase_TestOverlap(bp, a->proxyKey, b->proxyKey);

@@ -40,6 +40,7 @@
 #include "tumble/constants.h"
 
 #include <stdatomic.h>
+#include <stddef.h>
 
 /// Contacts per task range when the step runs on workers.
 #define TB_CONTACTS_PER_TASK 256
@@ -344,6 +345,11 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 	{
 		int slot = slots[i];
 		tbContact* contact = world->contacts + contactIds[i];
+		if (i + TB_PREFETCH_AHEAD < end)
+		{
+			// what is read here: up to the settle clock after the manifold
+			tbPrefetch(world->contacts + contactIds[i + TB_PREFETCH_AHEAD], (int)offsetof(tbContact, base));
+		}
 		tbContactConstraint* c = context->constraints + slot;
 		if (wideLocation == NULL)
 		{
@@ -766,6 +772,10 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 	{
 		int index = slots[i];
 		tbManifold* manifold = &world->contacts[contactIds[i]].manifold;
+		if (i + TB_PREFETCH_AHEAD < end)
+		{
+			tbPrefetch(&world->contacts[contactIds[i + TB_PREFETCH_AHEAD]].manifold, (int)sizeof(tbManifold));
+		}
 		int location = -1;
 		if (wideLocation != NULL)
 		{
