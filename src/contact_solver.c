@@ -322,6 +322,27 @@ void tbKeyContacts(tbStepContext* context)
 	tbParallelFor(context->world, tbKeyContactsTask, n, TB_CONTACTS_PER_TASK, context);
 }
 
+// Whether restitution (tbApplyRestitution) can act on c: some point approaches at the restitution
+// threshold or faster. Most bouncing contacts in a pile rest or creep and never do, and with the wide
+// solver they then need no scalar copy (spinner: every shape has restitution 0.1). Impact
+// propagation can speed an approach up after this point, so with it every bouncing contact counts.
+static bool tbMayRebound(const tbStepContext* context, const tbContactConstraint* c)
+{
+	if (context->world->def.enableImpactPropagation)
+	{
+		return true;
+	}
+	float threshold = context->world->def.restitutionThreshold;
+	for (int j = 0; j < c->pointCount; ++j)
+	{
+		if (c->points[j].relativeVelocity <= -threshold)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
 typedef struct tbPrepareTaskContext
 {
 	tbStepContext* context;
@@ -361,6 +382,13 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 		tbContactConstraint local;
 		tbContactKey key = context->keysById[i];
 		tbPrepareConstraint(context, contact, key, &local);
+		if ((key.flags & tb_keyBounces) != 0u && tbMayRebound(context, &local) == false)
+		{
+			// Restitution will not touch it: solved and stored from its lane like any other.
+			key.flags &= ~(uint32_t)tb_keyBounces;
+			context->keys[slot].flags = key.flags;
+			context->keysById[i].flags = key.flags;
+		}
 		int location = context->locationById[i];
 		if (location >= 0)
 		{
