@@ -984,9 +984,22 @@ static bool ReadJointType(Parser* parser, const cJSON* item, const char* path, t
 	{
 		return Missing(parser, path, "type");
 	}
-	return Scene_ParseJointType(name, type) ? true
-											: BadOption(parser, path, "type",
-														"distance, filter, motor, mover, pogo, prismatic, revolute, weld, wheel");
+	if (Scene_ParseJointType(name, type))
+	{
+		return true;
+	}
+	// The list from the scene model's own names, so that a new kind cannot be left out of it.
+	char options[256] = "";
+	for (int kind = 0; kind < tb_jointTypeCount; ++kind)
+	{
+		const char* kindName = Scene_JointTypeName((tbJointType)kind);
+		if (kindName != NULL && strlen(options) + strlen(kindName) + 3 < sizeof(options))
+		{
+			strcat(options, kind > 0 ? ", " : "");
+			strcat(options, kindName);
+		}
+	}
+	return BadOption(parser, path, "type", options);
 }
 
 // The frames: an anchor (the frame's origin) and an angle per body, in the body's frame.
