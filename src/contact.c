@@ -130,6 +130,7 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	else
 	{
 		TB_ARRAY_RESERVE(world->contacts, world->contactCapacity, world->contactHighWater + 1);
+		TB_ARRAY_RESERVE(world->contactBodies, world->contactBodyCapacity, world->contactHighWater + 1);
 		id = world->contactHighWater++;
 		// A fresh slot's generations start from the world's generation, so an id kept from an
 		// earlier world in the same world slot does not match (64k reuses of one slot per world).
@@ -146,6 +147,7 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	contact->shapeIdB = shapeIdB;
 	contact->edges[0].bodyId = a->bodyId;
 	contact->edges[1].bodyId = b->bodyId;
+	world->contactBodies[id] = (tbBodyPair){a->bodyId, b->bodyId};
 	tbMixContactMaterials(world, contact);
 	contact->stamp = UINT32_MAX;
 	if (a->isSensor || b->isSensor)
@@ -236,6 +238,7 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 	contact->inUse = false;
 	contact->flags = 0;
 	contact->generation += 1;
+	world->contactBodies[contactId] = (tbBodyPair){TB_NULL_INDEX, TB_NULL_INDEX};
 	TB_ARRAY_PUSH(world->contactFree, world->contactFreeCount, world->contactFreeCapacity, contactId);
 	world->contactCount -= 1;
 }
@@ -721,16 +724,17 @@ static void tbGatherAwakeContacts(tbWorld* world)
 		// A byte per body says awake: the scan then reads the contacts in memory order and this
 		// small array, instead of two scattered bodies per contact.
 		TB_ARRAY_RESERVE(world->stepContacts, world->stepContactCapacity, world->contactCount);
-		uint8_t* awake = tbArenaAlloc(&world->stepArena, tbMaxInt(world->bodyHighWater, 1));
-		memset(awake, 0, (size_t)world->bodyHighWater);
+		// A free contact slot has both bodies TB_NULL_INDEX (−1): awake[−1] is a 0 kept for it.
+		uint8_t* awake = (uint8_t*)tbArenaAlloc(&world->stepArena, world->bodyHighWater + 1) + 1;
+		memset(awake - 1, 0, (size_t)world->bodyHighWater + 1);
 		for (int i = 0; i < world->awakeBodyCount; ++i)
 		{
 			awake[world->awakeBodies[i]] = 1;
 		}
+		const tbBodyPair* bodies = world->contactBodies;
 		for (int id = 0; id < world->contactHighWater; ++id)
 		{
-			const tbContact* contact = world->contacts + id;
-			if (contact->inUse && (awake[contact->edges[0].bodyId] | awake[contact->edges[1].bodyId]) != 0)
+			if ((awake[bodies[id].bodyIdA] | awake[bodies[id].bodyIdB]) != 0)
 			{
 				world->stepContacts[world->stepContactCount++] = id;
 			}

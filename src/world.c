@@ -380,6 +380,7 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->solverSlots, w->solverSlotCapacity);
 	TB_ARRAY_FREE(w->touchingContacts, w->touchingContactCapacity);
 	TB_ARRAY_FREE(w->collideKeys, w->collideKeyCapacity);
+	TB_ARRAY_FREE(w->contactBodies, w->contactBodyCapacity);
 	TB_ARRAY_FREE(w->islandStack, w->islandStackCapacity);
 	TB_ARRAY_FREE(w->islandBodies, w->islandBodyCapacity);
 	TB_ARRAY_FREE(w->beginEvents, w->beginCapacity);

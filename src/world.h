@@ -181,6 +181,12 @@ typedef enum tbContactKeyFlag
 	tb_keyBounces = 32,	   ///< restitution > 0: the scalar constraint is kept for restitution
 } tbContactKeyFlag;
 
+/// Two body ids (contact.c's dense copy of each contact's bodies).
+typedef struct tbBodyPair
+{
+	int bodyIdA, bodyIdB;
+} tbBodyPair;
+
 /// What the narrow phase learnt of a contact that is ready for the solver (a dynamic side, no
 /// sleeping side), while it had both bodies in cache: their awake indices (TB_NULL_INDEX for a
 /// static body), which are the solver indices of this step, and the key bits. Valid in the step
@@ -301,6 +307,11 @@ typedef struct tbWorld
 	/// side), −1 − id when the island stage must look at its bodies.
 	int* touchingContacts;
 	int touchingContactCount, touchingContactCapacity;
+	/// By contact id: the two bodies, or TB_NULL_INDEX for a free slot (up to contactHighWater). A
+	/// dense copy of what the collide stage's scan of the contact pool reads (contact.c), so the scan
+	/// does not walk 276-byte contacts for three fields.
+	tbBodyPair* contactBodies;
+	int contactBodyCapacity;
 	tbCollideKey* collideKeys; ///< by contact id, up to collideKeyCount (entries past it never written)
 	int collideKeyCount, collideKeyCapacity;
 	uint32_t awakeSetVersion;  ///< bumped whenever a body joins or leaves the awake set
