@@ -109,6 +109,7 @@ static void tbAddToAwakeSet(tbWorld* world, tbBody* body, int bodyId)
 	body->awakeIndex = world->awakeBodyCount;
 	TB_ARRAY_PUSH(world->awakeBodies, world->awakeBodyCount, world->awakeBodyCapacity, bodyId);
 	world->awakeSetVersion += 1;
+	world->jointWakeDirty = true;
 }
 
 static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
@@ -125,6 +126,7 @@ static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
 	body->awakeIndex = TB_NULL_INDEX;
 	world->awakeSetVersion += 1;
 	world->awakeRemovals += 1;
+	world->jointWakeDirty = true;
 }
 
 void tbWakeBody(tbWorld* world, tbBody* body)
@@ -185,6 +187,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->name = def->name;
 	body->userData = def->userData;
 	body->type = (uint8_t)def->type;
+	world->kinematicBodyCount += def->type == tb_kinematicBody ? 1 : 0;
 	body->transform.p = def->position;
 	body->transform.q = tbNormalizeRot(def->rotation);
 	body->center = def->position;
@@ -264,6 +267,7 @@ void tbDestroyBody(tbBodyId bodyId)
 	body->inUse = false;
 	body->generation += 1;
 	world->bodyCount -= 1;
+	world->kinematicBodyCount -= body->type == tb_kinematicBody ? 1 : 0;
 	world->linearLockCount -= body->lockLinearX || body->lockLinearY ? 1 : 0;
 	TB_ARRAY_PUSH(world->bodyFree, world->bodyFreeCount, world->bodyFreeCapacity, bodyId.index1 - 1);
 }
@@ -478,6 +482,7 @@ bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
 	{
 		tbRemoveFromAwakeSet(world, body);
 	}
+	world->kinematicBodyCount += (type == tb_kinematicBody ? 1 : 0) - (body->type == tb_kinematicBody ? 1 : 0);
 	body->type = (uint8_t)type;
 	if (type == tb_staticBody)
 	{

@@ -298,6 +298,7 @@ static void tbCompactAwakeSet(tbWorld* world)
 	world->awakeBodyCount = kept;
 	world->awakeSetVersion += 1;
 	world->awakeRemovals += 1;
+	world->jointWakeDirty = true;
 }
 
 static void tbPutIslandToSleep(tbWorld* world, int count)

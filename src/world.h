@@ -317,6 +317,11 @@ typedef struct tbWorld
 	uint32_t awakeSetVersion;  ///< bumped whenever a body joins or leaves the awake set
 	uint32_t gatheredVersion; ///< awakeSetVersion when the collide stage gathered its contacts
 	uint32_t awakeRemovals;	  ///< bumped whenever bodies leave the awake set
+	/// A body joined or left the awake set since the joints were last checked for a sleeping
+	/// partner of an awake body (tbWakeJointPartners); with no kinematic body that is the only
+	/// way such a joint appears.
+	bool jointWakeDirty;
+	int kinematicBodyCount; ///< kinematic bodies in the world (a moving one wakes its joined bodies)
 	uint32_t gatheredRemovals; ///< awakeRemovals when the collide stage gathered its contacts
 	int gatheredAwakeCount;	  ///< awakeBodyCount then: bodies woken since are appended after it
 	int* islandStack;

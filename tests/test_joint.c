@@ -640,6 +640,31 @@ Test(joint, joined_bodies_sleep_and_wake_together)
 	tbDestroyWorld(world);
 }
 
+// A joint with one side awake wakes the other at the next step. Sleeping one body of an awake
+// chain by hand (tbBody_SetAwake(false)) is such a case; the step looks for it only after the
+// awake set changed (joint.c), and this is the change it must notice. A step later nothing changed
+// and the chain stays awake with its link.
+Test(joint, a_body_put_to_sleep_by_hand_is_woken_by_its_awake_partner)
+{
+	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId links[4];
+	MakeHangingChain(world, ground, tbMakeVec2(0.0f, 0.0f), 4, links);
+	tbBody_SetLinearVelocity(links[3], tbMakeVec2(2.0f, 0.0f)); // swinging: nothing rests
+	tbWorld_Step(world, DT, SUB_STEPS);
+	tbBody_SetAwake(links[2], false);
+	cr_assert(tbBody_IsAwake(links[2]) == false);
+	cr_assert(tbBody_IsAwake(links[1]) && tbBody_IsAwake(links[3]));
+	tbWorld_Step(world, DT, SUB_STEPS);
+	cr_expect(tbBody_IsAwake(links[2]), "the awake links woke the one put to sleep");
+	tbWorld_Step(world, DT, SUB_STEPS);
+	for (int i = 0; i < 4; ++i)
+	{
+		cr_expect(tbBody_IsAwake(links[i]), "link %d awake", i);
+	}
+	tbDestroyWorld(world);
+}
+
 // collideConnected = false: two overlapping boxes joined by a revolute joint make no contact and
 // stay where they are; true: they collide and are pushed apart. Destroying the forbidding joint
 // lets the broad phase find the pair again.
