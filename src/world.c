@@ -5,6 +5,7 @@
 // state besides the hooks in core.c; it exists because value handles must be resolved without
 // pointers. Body and shape ids carry the world slot too.
 #include "world.h"
+#include "constraint_graph.h"
 
 #include "array.h"
 
@@ -381,6 +382,7 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->touchingContacts, w->touchingContactCapacity);
 	TB_ARRAY_FREE(w->collideKeys, w->collideKeyCapacity);
 	TB_ARRAY_FREE(w->contactBodies, w->contactBodyCapacity);
+	tbDestroyJointOrderCache(w);
 	TB_ARRAY_FREE(w->islandStack, w->islandStackCapacity);
 	TB_ARRAY_FREE(w->islandBodies, w->islandBodyCapacity);
 	TB_ARRAY_FREE(w->beginEvents, w->beginCapacity);

@@ -321,6 +321,7 @@ typedef struct tbWorld
 	/// partner of an awake body (tbWakeJointPartners); with no kinematic body that is the only
 	/// way such a joint appears.
 	bool jointWakeDirty;
+	struct tbJointOrderCache* jointOrderCache; ///< the joints' solve order of the last step (constraint_graph.c)
 	int kinematicBodyCount; ///< kinematic bodies in the world (a moving one wakes its joined bodies)
 	uint32_t gatheredRemovals; ///< awakeRemovals when the collide stage gathered its contacts
 	int gatheredAwakeCount;	  ///< awakeBodyCount then: bodies woken since are appended after it
