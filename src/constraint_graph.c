@@ -330,7 +330,7 @@ typedef struct tbJointOrderCache
 	int* ordered;		  ///< world->solverJoints after ordering
 	uint8_t* loopy;		  ///< tbJoint::loopyMechanism of each, in that order
 	int* unitStart;		  ///< jointUnitCount + 1 entries (capacity + 1 allocated)
-	int unitCount, smallCount, colorCount;
+	int unitCount, smallCount, colorCount, treeCandidates;
 	bool overflow;
 	int colorStart[TB_GRAPH_COLOR_COUNT + 2];
 } tbJointOrderCache;
@@ -379,6 +379,7 @@ static bool tbReuseJointOrder(tbStepContext* context, uint64_t fingerprint)
 	context->jointUnitStart = cache->unitCount > 0 ? cache->unitStart : NULL;
 	context->jointColorCount = cache->colorCount;
 	context->jointOverflow = cache->overflow;
+	context->jointTreeCandidates = cache->treeCandidates;
 	memcpy(context->jointColorStart, cache->colorStart, sizeof(cache->colorStart));
 	return true;
 }
@@ -419,6 +420,7 @@ static void tbKeepJointOrder(const tbStepContext* context, uint64_t fingerprint)
 	}
 	cache->colorCount = context->jointColorCount;
 	cache->overflow = context->jointOverflow;
+	cache->treeCandidates = context->jointTreeCandidates;
 	memcpy(cache->colorStart, context->jointColorStart, sizeof(cache->colorStart));
 }
 
@@ -449,6 +451,7 @@ void tbColorJoints(tbStepContext* context)
 	context->jointOverflow = false;
 	context->jointUnitCount = 0;
 	context->jointSmallCount = 0;
+	context->jointTreeCandidates = 0;
 	if (n == 0)
 	{
 		return;
@@ -459,6 +462,13 @@ void tbColorJoints(tbStepContext* context)
 		return;
 	}
 	tbComputeJointOrder(context);
+	// What joint_tree.c can root a tree at: without any, it skips its walks over the joints.
+	context->jointTreeCandidates = 0;
+	for (int i = 0; i < n; ++i)
+	{
+		const tbJoint* joint = world->joints + world->solverJoints[i];
+		context->jointTreeCandidates += joint->loopyMechanism == false && tbJointEqualityRowCount(joint) > 0 ? 1 : 0;
+	}
 	tbKeepJointOrder(context, fingerprint);
 }
 

@@ -272,9 +272,9 @@ void tbBuildJointTrees(tbStepContext* context)
 	world->jointTreeCount = 0;
 	world->jointTreeNodeCount = 0;
 	int jointCount = world->solverJointCount;
-	if (jointCount == 0 || world->def.enableJointTrees == false)
+	if (jointCount == 0 || world->def.enableJointTrees == false || context->jointTreeCandidates == 0)
 	{
-		return;
+		return; // no joint can be in a tree (constraint_graph.c counted them): nothing to walk
 	}
 	tbArena* arena = &world->stepArena;
 	int maxNodes = context->bodyCount + jointCount;

@@ -223,6 +223,7 @@ typedef struct tbStepContext
 	int jointColorStart[TB_GRAPH_COLOR_COUNT + 2];
 	int jointColorCount; ///< groups in use, the overflow group included when it is not empty
 	bool jointOverflow;	 ///< the last group is the joints without a colour
+	int jointTreeCandidates; ///< joints with equality rows outside loopy mechanisms (0: no joint tree to build)
 	void* wideMemory; ///< step arena
 	int wideMemoryBytes;
 	void* ngsScratch; ///< solver_ngs.c's constraints, step arena (taken at the first sub-step)
