@@ -941,12 +941,23 @@ void tbPrepareJoints(tbStepContext* context)
 	}
 }
 
+// Joints are visited in solve order, colour by colour, so their 272-byte records are scattered
+// over the joint pool (joint_grid: 5 MB): ask for the one a few ahead.
+static inline void tbPrefetchJointAhead(const tbWorld* world, int i, int end)
+{
+	if (i + TB_PREFETCH_AHEAD < end)
+	{
+		tbPrefetch(world->joints + world->solverJoints[i + TB_PREFETCH_AHEAD], (int)sizeof(tbJoint));
+	}
+}
+
 void tbWarmStartJointRange(tbStepContext* context, int begin, int end)
 {
 	tbWorld* world = context->world;
 	for (int i = begin; i < end; ++i)
 	{
 		tbJoint* joint = world->joints + world->solverJoints[i];
+		tbPrefetchJointAhead(world, i, end);
 		switch (joint->type)
 		{
 			case tb_distanceJoint:
@@ -991,6 +1002,7 @@ void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBi
 	for (int i = begin; i < end; ++i)
 	{
 		tbJoint* joint = world->joints + world->solverJoints[i];
+		tbPrefetchJointAhead(world, i, end);
 		switch (joint->type)
 		{
 			case tb_distanceJoint:
