@@ -62,6 +62,7 @@ static void ExpectSameBody(const SceneBody* a, const SceneBody* b, const char* w
 			  where);
 	cr_assert(Near(a->linearDamping, b->linearDamping) && Near(a->angularDamping, b->angularDamping), "%s", where);
 	cr_assert(Near(a->gravityScale, b->gravityScale), "%s: gravity scale", where);
+	cr_assert(Near(a->sleepThreshold, b->sleepThreshold), "%s: sleep threshold", where);
 	cr_assert(a->bullet == b->bullet && a->isAwake == b->isAwake && a->fixedRotation == b->fixedRotation, "%s: flags", where);
 	cr_assert(a->drive.enabled == b->drive.enabled && NearVec(a->drive.amplitude, b->drive.amplitude) &&
 				  Near(a->drive.angularFrequency, b->drive.angularFrequency),
@@ -138,6 +139,18 @@ static void ExpectSameScene(const Scene* a, const Scene* b, const char* name)
 		{
 			cr_assert(NearVec(ca->points[k], cb->points[k]), "%s chain %d point %d", name, i, k);
 		}
+	}
+	cr_assert_eq(a->templateCount, b->templateCount, "%s: template count", name);
+	for (int i = 0; i < a->templateCount; ++i)
+	{
+		cr_assert_str_eq(a->templates[i].name, b->templates[i].name, "%s template %d", name, i);
+		snprintf(where, sizeof(where), "%s template %s", name, a->templates[i].name);
+		ExpectSameScene(a->templates[i].parts, b->templates[i].parts, where);
+	}
+	cr_assert_eq(a->spawnerCount, b->spawnerCount, "%s: spawner count", name);
+	for (int i = 0; i < a->spawnerCount; ++i)
+	{
+		cr_assert_eq(memcmp(a->spawners + i, b->spawners + i, sizeof(SceneSpawner)), 0, "%s spawner %d", name, i);
 	}
 }
 
@@ -418,6 +431,36 @@ static const BadFile s_badFiles[] = {
 	 "chains[0]: refused by the library (see its message above: size, thinness, density or position)"},
 	{"{\"bodies\": [{}], \"chains\": [{\"body\": 0, \"friction\": -1, \"points\": [[0, 0], [1, 0], [2, 0], [3, 0]]}]}",
 	 "chains[0].friction: must be >= 0"},
+	{"{\"bodies\": [{\"sleep_threshold\": -1}]}", "bodies[0].sleep_threshold: must be >= 0"},
+	// spawn schedules: each bad item is named
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}]}], \"spawners\": [{\"template\": \"t\", \"interval\": 8, "
+	 "\"first_step\": -1, \"keep\": 2}]}",
+	 "spawners[0].first_step: must be 0..1000000"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}]}], \"spawners\": [{\"template\": \"human\", \"interval\": 8}]}",
+	 "spawners[0].template: no template called \"human\" (see \"templates\")"},
+	{"{\"spawners\": [{\"interval\": 8}]}", "spawners[0].template: missing (required)"},
+	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"keep\": 1}]}",
+	 "spawners[0].interval: missing (required)"},
+	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"interval\": 0, \"keep\": 1}]}",
+	 "spawners[0].interval: must be 1..1000000"},
+	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"interval\": 4}]}",
+	 "spawners[0].keep: must be > 0 when count is 0 (else instances pile up without end)"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}, {}]}], \"spawners\": [{\"template\": \"t\", \"interval\": 1, "
+	 "\"keep\": 60000}]}",
+	 "spawners[0]: keeps up to 60000 instances of 2 bodies alive: at most 100000 bodies"},
+	{"{\"templates\": [{\"name\": \"t\"}, {\"name\": \"t\"}]}",
+	 "templates[1].name: a template called \"t\" comes earlier (names must differ)"},
+	{"{\"templates\": [{\"bodies\": []}]}", "templates[0].name: missing (required)"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}], \"joints\": [{\"type\": \"revolute\", \"body_a\": 0, "
+	 "\"body_b\": 1}]}]}",
+	 "templates[0].joints[0].body_b: must be the index of a body (there are 1)"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{\"drive\": {\"amplitude\": [1, 0], \"angular_frequency\": 1}}]}]}",
+	 "templates[0].bodies[0].drive: not allowed in a template (spawned bodies are not driven)"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{\"shapes\": [{\"box\": {\"half_width\": 1e30, "
+	 "\"half_height\": 1}}]}]}]}",
+	 "templates[0].bodies[0].shapes[0]: refused by the library (see its message above: size, thinness, density or "
+	 "position)"},
+	{"{\"templates\": [{\"name\": \"t\", \"chains\": []}]}", "templates[0].chains: unknown key"},
 	{"[1, 2]", "scene: must be a JSON object"},
 	{"{\"gravity\": [0, -10],\n \"bodies\": [}", "line 2, column 13: invalid JSON"},
 };
@@ -575,4 +618,76 @@ Test(scene, filter_bits_round_trip)
 	free(written);
 	Scene_Destroy(scene);
 	Scene_Destroy(again);
+}
+
+// Joints of the living bodies: each joint is seen from both of its bodies.
+static int LiveJointCount(const SceneWorld* world)
+{
+	int capacity = SceneWorld_BodyCapacity(world);
+	tbBodyId* ids = malloc(sizeof(tbBodyId) * (size_t)capacity);
+	int count = SceneWorld_CollectBodies(world, ids, capacity);
+	int ends = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		ends += tbBody_GetJointCount(ids[i]);
+	}
+	free(ids);
+	return ends / 2;
+}
+
+// A schedule from a file: a jointed pair every 3 steps from step 2 at two spawn points, three
+// alive at most, five in all. After each step the world holds the closed-form count.
+Test(scene, spawn_schedule_from_a_file_builds_and_recycles)
+{
+	const char* text =
+		"{\"bodies\": [{\"shapes\": [{\"box\": {\"half_width\": 50, \"half_height\": 1}}]}],"
+		" \"templates\": [{\"name\": \"pair\", \"bodies\": ["
+		"   {\"type\": \"dynamic\", \"position\": [0, 0], \"sleep_threshold\": 0.1, \"shapes\": [{\"circle\": {\"radius\": 0.5}}]},"
+		"   {\"type\": \"dynamic\", \"position\": [1, 0], \"shapes\": [{\"circle\": {\"radius\": 0.5}}]}],"
+		"  \"joints\": [{\"type\": \"revolute\", \"body_a\": 0, \"body_b\": 1, \"anchor_a\": [0.5, 0], \"anchor_b\": [-0.5, 0]}]}],"
+		" \"spawners\": [{\"template\": \"pair\", \"first_step\": 2, \"interval\": 3, \"count\": 5, \"keep\": 3, \"slots\": 2,"
+		"   \"origin\": [-5, 10], \"slot_step\": [10, 0]}]}";
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(scene, "%s", error);
+	cr_assert_eq(scene->templateCount, 1);
+	cr_assert_eq(scene->spawnerCount, 1);
+	cr_assert_float_eq(scene->templates[0].parts->bodies[0].sleepThreshold, 0.1f, 1e-9f);
+	Scene* again = RoundTrip(scene);
+	ExpectSameScene(scene, again, "schedule");
+	Scene_Destroy(again);
+
+	SceneWorld world = Scene_BuildWorld(scene, NULL);
+	// instances 0 … 4 are built before steps 2, 5, 8, 11, 14; from the fourth on the oldest goes
+	static const int expectedLive[17] = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3};
+	tbBodyId first[2] = {TB_NULL_BODY_ID, TB_NULL_BODY_ID};
+	for (int step = 0; step < 17; ++step)
+	{
+		int bodies = 0, joints = 0;
+		Scene_LiveCounts(scene, step, &bodies, &joints);
+		cr_assert_eq(bodies, 1 + 2 * expectedLive[step], "after %d steps", step);
+		cr_assert_eq(joints, expectedLive[step], "after %d steps", step);
+		cr_assert_eq(tbWorld_GetCounters(world.worldId).bodyCount, bodies, "after %d steps", step);
+		cr_assert_eq(LiveJointCount(&world), joints, "after %d steps", step);
+		SceneWorld_Step(&world, scene, scene->subSteps);
+		if (step == 2)
+		{
+			const tbBodyId* ids = SceneWorld_InstanceBodies(&world, 0, 0);
+			cr_assert_not_null(ids);
+			first[0] = ids[0];
+			first[1] = ids[1];
+		}
+	}
+	// instance 3 took instance 0's place: its ids are stale; instance 4 (4 mod 2 slots = 0) is at
+	// the first spawn point again, instance 3 at the second
+	cr_assert_null(SceneWorld_InstanceBodies(&world, 0, 0));
+	cr_assert_not(tbBody_IsValid(first[0]) || tbBody_IsValid(first[1]));
+	const tbBodyId* last = SceneWorld_InstanceBodies(&world, 0, 4);
+	cr_assert_not_null(last);
+	cr_assert_float_eq(tbBody_GetPosition(last[0]).x, -5.0f, 0.5f);
+	cr_assert_float_eq(tbBody_GetPosition(SceneWorld_InstanceBodies(&world, 0, 3)[0]).x, 5.0f, 0.5f);
+	cr_assert_null(SceneWorld_InstanceBodies(&world, 0, 5));
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+	cr_assert_eq(tbGetByteCount(), 0, "the spawned bodies leak: %d bytes", (int)tbGetByteCount());
 }
