@@ -8,9 +8,21 @@
 #include <math.h>
 #include <stdlib.h>
 
+// The living instances of one spawner (see SpawnedInstances in scene.h): a ring of `capacity`.
+typedef struct PeerSpawned
+{
+	b2BodyId* bodies; // capacity × bodiesPer
+	b2JointId* joints; // capacity × jointsPer
+	int bodiesPer;
+	int jointsPer;
+	int capacity;
+} PeerSpawned;
+
 struct PeerWorld
 {
 	b2WorldId world;
+	PeerSpawned* spawned; // one per scene spawner
+	int spawnerCount;
 	b2BodyId* bodies; // scene body index -> body
 	int bodyCount;
 	int* driven; // scene indices of the bodies with a SceneDrive
@@ -97,11 +109,12 @@ static b2BodyType ToB2Type(tbBodyType type)
 	}
 }
 
-static b2BodyId MakeBody(b2WorldId world, const SceneBody* sb)
+static b2BodyId MakeBody(b2WorldId world, const SceneBody* sb, tbVec2 offset)
 {
 	b2BodyDef def = b2DefaultBodyDef();
 	def.type = ToB2Type(sb->type);
-	def.position = ToB2(sb->position);
+	def.position = (b2Vec2){sb->position.x + offset.x, sb->position.y + offset.y};
+	def.sleepThreshold = sb->sleepThreshold;
 	def.rotation = (b2Rot){cosf(sb->angle), sinf(sb->angle)}; // b2MakeRot approximates (~1e-3 rad)
 	def.linearDamping = sb->linearDamping;
 	def.angularDamping = sb->angularDamping;
@@ -133,12 +146,12 @@ static b2Transform ToB2Transform(tbTransform t)
 
 // v3.2's joint definitions have the very fields of Tumble's (the same grammar), so each kind's
 // definition is copied field by field: the same constraint, only the solver differs.
-static b2JointDef ToB2JointBase(const PeerWorld* peer, const SceneJoint* sj)
+static b2JointDef ToB2JointBase(const b2BodyId* bodies, const SceneJoint* sj)
 {
 	const tbJointDef* d = &sj->def.base;
 	b2JointDef base = {0};
-	base.bodyIdA = peer->bodies[sj->bodyA];
-	base.bodyIdB = peer->bodies[sj->bodyB];
+	base.bodyIdA = bodies[sj->bodyA];
+	base.bodyIdB = bodies[sj->bodyB];
 	base.localFrameA = ToB2Transform(d->localFrameA);
 	base.localFrameB = ToB2Transform(d->localFrameB);
 	base.forceThreshold = d->forceThreshold;
@@ -150,11 +163,11 @@ static b2JointDef ToB2JointBase(const PeerWorld* peer, const SceneJoint* sj)
 	return base;
 }
 
-static void AddRevolute(PeerWorld* peer, const SceneJoint* sj)
+static b2JointId AddRevolute(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
 {
 	const tbRevoluteJointDef* s = &sj->def.revolute;
 	b2RevoluteJointDef d = b2DefaultRevoluteJointDef();
-	d.base = ToB2JointBase(peer, sj);
+	d.base = ToB2JointBase(bodies, sj);
 	d.targetAngle = s->targetAngle;
 	d.enableSpring = s->enableSpring;
 	d.hertz = s->hertz;
@@ -165,14 +178,14 @@ static void AddRevolute(PeerWorld* peer, const SceneJoint* sj)
 	d.enableMotor = s->enableMotor;
 	d.maxMotorTorque = s->maxMotorTorque;
 	d.motorSpeed = s->motorSpeed;
-	b2CreateRevoluteJoint(peer->world, &d);
+	return b2CreateRevoluteJoint(world, &d);
 }
 
-static void AddPrismatic(PeerWorld* peer, const SceneJoint* sj)
+static b2JointId AddPrismatic(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
 {
 	const tbPrismaticJointDef* s = &sj->def.prismatic;
 	b2PrismaticJointDef d = b2DefaultPrismaticJointDef();
-	d.base = ToB2JointBase(peer, sj);
+	d.base = ToB2JointBase(bodies, sj);
 	d.enableSpring = s->enableSpring;
 	d.hertz = s->hertz;
 	d.dampingRatio = s->dampingRatio;
@@ -183,14 +196,14 @@ static void AddPrismatic(PeerWorld* peer, const SceneJoint* sj)
 	d.enableMotor = s->enableMotor;
 	d.maxMotorForce = s->maxMotorForce;
 	d.motorSpeed = s->motorSpeed;
-	b2CreatePrismaticJoint(peer->world, &d);
+	return b2CreatePrismaticJoint(world, &d);
 }
 
-static void AddDistance(PeerWorld* peer, const SceneJoint* sj)
+static b2JointId AddDistance(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
 {
 	const tbDistanceJointDef* s = &sj->def.distance;
 	b2DistanceJointDef d = b2DefaultDistanceJointDef();
-	d.base = ToB2JointBase(peer, sj);
+	d.base = ToB2JointBase(bodies, sj);
 	d.length = s->length;
 	d.enableSpring = s->enableSpring;
 	d.lowerSpringForce = s->lowerSpringForce;
@@ -203,29 +216,28 @@ static void AddDistance(PeerWorld* peer, const SceneJoint* sj)
 	d.enableMotor = s->enableMotor;
 	d.maxMotorForce = s->maxMotorForce;
 	d.motorSpeed = s->motorSpeed;
-	b2CreateDistanceJoint(peer->world, &d);
+	return b2CreateDistanceJoint(world, &d);
 }
 
-static void AddOtherJoint(PeerWorld* peer, const SceneJoint* sj)
+static b2JointId AddOtherJoint(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
 {
 	switch (sj->type)
 	{
 		case tb_weldJoint:
 		{
 			b2WeldJointDef d = b2DefaultWeldJointDef();
-			d.base = ToB2JointBase(peer, sj);
+			d.base = ToB2JointBase(bodies, sj);
 			d.linearHertz = sj->def.weld.linearHertz;
 			d.angularHertz = sj->def.weld.angularHertz;
 			d.linearDampingRatio = sj->def.weld.linearDampingRatio;
 			d.angularDampingRatio = sj->def.weld.angularDampingRatio;
-			b2CreateWeldJoint(peer->world, &d);
-			break;
+			return b2CreateWeldJoint(world, &d);
 		}
 		case tb_wheelJoint:
 		{
 			const tbWheelJointDef* s = &sj->def.wheel;
 			b2WheelJointDef d = b2DefaultWheelJointDef();
-			d.base = ToB2JointBase(peer, sj);
+			d.base = ToB2JointBase(bodies, sj);
 			d.enableSpring = s->enableSpring;
 			d.hertz = s->hertz;
 			d.dampingRatio = s->dampingRatio;
@@ -235,14 +247,13 @@ static void AddOtherJoint(PeerWorld* peer, const SceneJoint* sj)
 			d.enableMotor = s->enableMotor;
 			d.maxMotorTorque = s->maxMotorTorque;
 			d.motorSpeed = s->motorSpeed;
-			b2CreateWheelJoint(peer->world, &d);
-			break;
+			return b2CreateWheelJoint(world, &d);
 		}
 		case tb_motorJoint:
 		{
 			const tbMotorJointDef* s = &sj->def.motor;
 			b2MotorJointDef d = b2DefaultMotorJointDef();
-			d.base = ToB2JointBase(peer, sj);
+			d.base = ToB2JointBase(bodies, sj);
 			d.linearVelocity = ToB2(s->linearVelocity);
 			d.maxVelocityForce = s->maxVelocityForce;
 			d.angularVelocity = s->angularVelocity;
@@ -253,37 +264,108 @@ static void AddOtherJoint(PeerWorld* peer, const SceneJoint* sj)
 			d.angularHertz = s->angularHertz;
 			d.angularDampingRatio = s->angularDampingRatio;
 			d.maxSpringTorque = s->maxSpringTorque;
-			b2CreateMotorJoint(peer->world, &d);
-			break;
+			return b2CreateMotorJoint(world, &d);
 		}
 		case tb_filterJoint:
 		{
 			b2FilterJointDef d = b2DefaultFilterJointDef();
-			d.base = ToB2JointBase(peer, sj);
-			b2CreateFilterJoint(peer->world, &d);
-			break;
+			d.base = ToB2JointBase(bodies, sj);
+			return b2CreateFilterJoint(world, &d);
 		}
 		default:
-			break;
+			return b2_nullJointId;
 	}
 }
 
-static void AddJoint(PeerWorld* peer, const SceneJoint* sj)
+static b2JointId AddJoint(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
 {
 	switch (sj->type)
 	{
 		case tb_revoluteJoint:
-			AddRevolute(peer, sj);
-			break;
+			return AddRevolute(world, bodies, sj);
 		case tb_prismaticJoint:
-			AddPrismatic(peer, sj);
-			break;
+			return AddPrismatic(world, bodies, sj);
 		case tb_distanceJoint:
-			AddDistance(peer, sj);
-			break;
+			return AddDistance(world, bodies, sj);
 		default:
-			AddOtherJoint(peer, sj);
-			break;
+			return AddOtherJoint(world, bodies, sj);
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// Spawn schedule (SceneSpawner), as SceneWorld_Step runs it for Tumble: before a step, spawner by
+// spawner, destroy the oldest instance when the ring is full (joints, then bodies), then build.
+
+static bool AllocateSpawned(PeerWorld* peer, const Scene* scene)
+{
+	peer->spawnerCount = scene->spawnerCount;
+	peer->spawned = calloc((size_t)(scene->spawnerCount > 0 ? scene->spawnerCount : 1), sizeof(PeerSpawned));
+	if (peer->spawned == NULL)
+	{
+		return false;
+	}
+	for (int i = 0; i < scene->spawnerCount; ++i)
+	{
+		const SceneSpawner* spawner = scene->spawners + i;
+		const Scene* parts = scene->templates[spawner->templateIndex].parts;
+		PeerSpawned* ring = peer->spawned + i;
+		int capacity = spawner->keep > 0 ? spawner->keep : spawner->count;
+		capacity = spawner->count > 0 && spawner->count < capacity ? spawner->count : capacity;
+		ring->capacity = capacity > 0 ? capacity : 1;
+		ring->bodiesPer = parts->bodyCount;
+		ring->jointsPer = parts->jointCount;
+		ring->bodies = calloc((size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1)), sizeof(b2BodyId));
+		ring->joints = calloc((size_t)(ring->capacity * (ring->jointsPer > 0 ? ring->jointsPer : 1)), sizeof(b2JointId));
+		if (ring->bodies == NULL || ring->joints == NULL)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+static void RunSpawners(PeerWorld* peer)
+{
+	const Scene* scene = peer->scene;
+	for (int i = 0; i < peer->spawnerCount; ++i)
+	{
+		const SceneSpawner* spawner = scene->spawners + i;
+		int instance = SceneSpawner_InstanceAt(spawner, peer->stepIndex);
+		if (instance < 0)
+		{
+			continue;
+		}
+		PeerSpawned* ring = peer->spawned + i;
+		int slot = instance % ring->capacity;
+		b2BodyId* bodies = ring->bodies + slot * ring->bodiesPer;
+		b2JointId* joints = ring->joints + slot * ring->jointsPer;
+		if (instance >= ring->capacity)
+		{
+			for (int j = 0; j < ring->jointsPer; ++j)
+			{
+				if (b2Joint_IsValid(joints[j]))
+				{
+					b2DestroyJoint(joints[j]);
+				}
+			}
+			for (int b = 0; b < ring->bodiesPer; ++b)
+			{
+				if (b2Body_IsValid(bodies[b]))
+				{
+					b2DestroyBody(bodies[b]);
+				}
+			}
+		}
+		const Scene* parts = scene->templates[spawner->templateIndex].parts;
+		tbVec2 offset = SceneSpawner_Offset(spawner, instance);
+		for (int b = 0; b < ring->bodiesPer; ++b)
+		{
+			bodies[b] = MakeBody(peer->world, parts->bodies + b, offset);
+		}
+		for (int j = 0; j < ring->jointsPer; ++j)
+		{
+			joints[j] = AddJoint(peer->world, bodies, parts->joints + j);
+		}
 	}
 }
 
@@ -310,7 +392,7 @@ PeerWorld* PeerBox2D3_Create(const Scene* scene)
 	peer->driven = calloc(slots, sizeof(int));
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
-		peer->bodies[i] = MakeBody(peer->world, scene->bodies + i);
+		peer->bodies[i] = MakeBody(peer->world, scene->bodies + i, tb_vec2_zero);
 		if (scene->bodies[i].drive.enabled)
 		{
 			peer->driven[peer->drivenCount++] = i;
@@ -318,7 +400,12 @@ PeerWorld* PeerBox2D3_Create(const Scene* scene)
 	}
 	for (int j = 0; j < scene->jointCount; ++j)
 	{
-		AddJoint(peer, scene->joints + j);
+		AddJoint(peer->world, peer->bodies, scene->joints + j);
+	}
+	if (AllocateSpawned(peer, scene) == false)
+	{
+		PeerBox2D3_Destroy(peer);
+		return NULL;
 	}
 	return peer;
 }
@@ -326,6 +413,7 @@ PeerWorld* PeerBox2D3_Create(const Scene* scene)
 void PeerBox2D3_Step(PeerWorld* peer)
 {
 	const Scene* scene = peer->scene;
+	RunSpawners(peer);
 	for (int i = 0; i < peer->drivenCount; ++i)
 	{
 		tbTransform target;
@@ -355,6 +443,15 @@ PeerCounters PeerBox2D3_GetCounters(PeerWorld* peer)
 		b2BodyId body = peer->bodies[i];
 		result.awakeBodyCount += b2Body_GetType(body) != b2_staticBody && b2Body_IsAwake(body) ? 1 : 0;
 	}
+	for (int s = 0; s < peer->spawnerCount; ++s)
+	{
+		const PeerSpawned* ring = peer->spawned + s;
+		for (int i = 0; i < ring->capacity * ring->bodiesPer; ++i)
+		{
+			b2BodyId body = ring->bodies[i];
+			result.awakeBodyCount += b2Body_IsValid(body) && b2Body_IsAwake(body) ? 1 : 0;
+		}
+	}
 	return result;
 }
 
@@ -379,5 +476,11 @@ void PeerBox2D3_Destroy(PeerWorld* peer)
 	b2DestroyWorld(peer->world);
 	free(peer->bodies);
 	free(peer->driven);
+	for (int i = 0; i < peer->spawnerCount; ++i)
+	{
+		free(peer->spawned[i].bodies);
+		free(peer->spawned[i].joints);
+	}
+	free(peer->spawned);
 	free(peer);
 }
