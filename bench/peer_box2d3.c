@@ -314,8 +314,10 @@ static bool AllocateSpawned(PeerWorld* peer, const Scene* scene)
 		ring->capacity = capacity > 0 ? capacity : 1;
 		ring->bodiesPer = parts->bodyCount;
 		ring->jointsPer = parts->jointCount;
-		ring->bodies = calloc((size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1)), sizeof(b2BodyId));
-		ring->joints = calloc((size_t)(ring->capacity * (ring->jointsPer > 0 ? ring->jointsPer : 1)), sizeof(b2JointId));
+		size_t bodySlots = (size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1));
+		size_t jointSlots = (size_t)(ring->capacity * (ring->jointsPer > 0 ? ring->jointsPer : 1));
+		ring->bodies = calloc(bodySlots, sizeof(b2BodyId));
+		ring->joints = calloc(jointSlots, sizeof(b2JointId));
 		if (ring->bodies == NULL || ring->joints == NULL)
 		{
 			return false;

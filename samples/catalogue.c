@@ -1320,8 +1320,13 @@ static void AddHuman(Scene* scene, tbVec2 feet, float scale, const HumanJoints* 
 /// as in v3) dropped from 40 m above it every 8 steps, from step 0. The groups fill 40 columns
 /// 6.25 m apart from the left; from then on each spawn first destroys the oldest group of its
 /// floor and takes its column. One spawner per floor, in floor order as v3 creates them, so a
-/// step destroys and builds floor by floor. The joint frames are computed in the group's frame,
-/// so they differ from v3's (computed at the drop height) by float rounding (≤ 4e-6 m).
+/// step destroys and builds floor by floor. Differences from v3's own program, none of which
+/// changes the set-up: the joint anchors are computed in the group's frame, so they differ from
+/// v3's (computed at the drop height) by float rounding (≤ 4e-6 m); the forearms' 45° frame comes
+/// from cosf and sinf where v3's b2MakeRot approximates them (~1e-3 rad; the Box2D v3 peer gets
+/// the scene's frame, so both engines of tumble-bench build the same joint); a group's joints
+/// are all destroyed before its bodies, where v3 goes human by human (ids are reused in another
+/// order); and v3's program leaves its first step off the clock, tumble-bench times every step.
 static Scene* BuildRain(void)
 {
 	Scene* scene = Scene_Create();

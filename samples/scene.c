@@ -294,7 +294,8 @@ int Scene_FindTemplate(const Scene* scene, const char* name)
 
 SceneSpawner* Scene_AddSpawner(Scene* scene, int templateIndex, int interval, tbVec2 origin)
 {
-	scene->spawners = GrowArray(scene->spawners, &scene->spawnerCapacity, scene->spawnerCount + 1, sizeof(SceneSpawner));
+	scene->spawners =
+		GrowArray(scene->spawners, &scene->spawnerCapacity, scene->spawnerCount + 1, sizeof(SceneSpawner));
 	SceneSpawner* spawner = scene->spawners + scene->spawnerCount++;
 	memset(spawner, 0, sizeof(*spawner));
 	spawner->templateIndex = templateIndex;
@@ -588,9 +589,10 @@ static bool AllocateSpawned(SceneWorld* world, const Scene* scene)
 		ring->capacity = capacity > 0 ? capacity : 1;
 		ring->bodiesPer = parts->bodyCount;
 		ring->jointsPer = parts->jointCount;
-		ring->bodyIds = calloc((size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1)), sizeof(tbBodyId));
-		ring->jointIds =
-			calloc((size_t)(ring->capacity * (ring->jointsPer > 0 ? ring->jointsPer : 1)), sizeof(tbJointId));
+		size_t bodySlots = (size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1));
+		size_t jointSlots = (size_t)(ring->capacity * (ring->jointsPer > 0 ? ring->jointsPer : 1));
+		ring->bodyIds = calloc(bodySlots, sizeof(tbBodyId));
+		ring->jointIds = calloc(jointSlots, sizeof(tbJointId));
 		if (ring->bodyIds == NULL || ring->jointIds == NULL)
 		{
 			return false;
@@ -729,7 +731,8 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 		memcpy(world.names[i], scene->bodies[i].name, SCENE_NAME_SIZE);
 		world.names[i][SCENE_NAME_SIZE - 1] = '\0';
 		int refusedShape = -1; // scene files are checked when loaded (Scene_FindRefusedItem)
-		world.bodyIds[i] = CreateSceneBody(world.worldId, scene->bodies + i, tb_vec2_zero, world.names[i], &refusedShape);
+		world.bodyIds[i] =
+			CreateSceneBody(world.worldId, scene->bodies + i, tb_vec2_zero, world.names[i], &refusedShape);
 		if (scene->bodies[i].drive.enabled)
 		{
 			world.drivenBodies[world.drivenCount++] = i;

@@ -182,7 +182,8 @@ Test(scene, catalogue_has_the_required_scenes)
 	static const char* const required[] = {
 		"pyramid",		 "vertical_stack", "card_house",	"dominoes", "newtons_cradle", "ramp",
 		"mass_ratio",	 "bullets_wall",   "spinning_box",	"rain",		"confined",		  "large_pyramid",
-		"many_pyramids", "tumbler",		   "smash",			"spinner",	"washer",	"junkyard",		"rain_rigid",
+		"many_pyramids", "tumbler",		   "smash",			"spinner",	"washer",	"junkyard",
+		"rain_rigid",
 		"compounds",	"pendulum_chain", "rope_bridge",
 		"car",			 "ragdolls", "platformer"};
 	for (size_t i = 0; i < sizeof(required) / sizeof(required[0]); ++i)
@@ -436,7 +437,8 @@ static const BadFile s_badFiles[] = {
 	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}]}], \"spawners\": [{\"template\": \"t\", \"interval\": 8, "
 	 "\"first_step\": -1, \"keep\": 2}]}",
 	 "spawners[0].first_step: must be 0..1000000"},
-	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}]}], \"spawners\": [{\"template\": \"human\", \"interval\": 8}]}",
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}]}], "
+	 "\"spawners\": [{\"template\": \"human\", \"interval\": 8}]}",
 	 "spawners[0].template: no template called \"human\" (see \"templates\")"},
 	{"{\"spawners\": [{\"interval\": 8}]}", "spawners[0].template: missing (required)"},
 	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"keep\": 1}]}",
@@ -454,7 +456,8 @@ static const BadFile s_badFiles[] = {
 	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}], \"joints\": [{\"type\": \"revolute\", \"body_a\": 0, "
 	 "\"body_b\": 1}]}]}",
 	 "templates[0].joints[0].body_b: must be the index of a body (there are 1)"},
-	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{\"drive\": {\"amplitude\": [1, 0], \"angular_frequency\": 1}}]}]}",
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{\"drive\": {\"amplitude\": [1, 0], "
+	 "\"angular_frequency\": 1}}]}]}",
 	 "templates[0].bodies[0].drive: not allowed in a template (spawned bodies are not driven)"},
 	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{\"shapes\": [{\"box\": {\"half_width\": 1e30, "
 	 "\"half_height\": 1}}]}]}]}",
@@ -642,10 +645,13 @@ Test(scene, spawn_schedule_from_a_file_builds_and_recycles)
 	const char* text =
 		"{\"bodies\": [{\"shapes\": [{\"box\": {\"half_width\": 50, \"half_height\": 1}}]}],"
 		" \"templates\": [{\"name\": \"pair\", \"bodies\": ["
-		"   {\"type\": \"dynamic\", \"position\": [0, 0], \"sleep_threshold\": 0.1, \"shapes\": [{\"circle\": {\"radius\": 0.5}}]},"
+		"   {\"type\": \"dynamic\", \"position\": [0, 0], \"sleep_threshold\": 0.1,"
+		"    \"shapes\": [{\"circle\": {\"radius\": 0.5}}]},"
 		"   {\"type\": \"dynamic\", \"position\": [1, 0], \"shapes\": [{\"circle\": {\"radius\": 0.5}}]}],"
-		"  \"joints\": [{\"type\": \"revolute\", \"body_a\": 0, \"body_b\": 1, \"anchor_a\": [0.5, 0], \"anchor_b\": [-0.5, 0]}]}],"
-		" \"spawners\": [{\"template\": \"pair\", \"first_step\": 2, \"interval\": 3, \"count\": 5, \"keep\": 3, \"slots\": 2,"
+		"  \"joints\": [{\"type\": \"revolute\", \"body_a\": 0, \"body_b\": 1, \"anchor_a\": [0.5, 0],"
+		"    \"anchor_b\": [-0.5, 0]}]}],"
+		" \"spawners\": [{\"template\": \"pair\", \"first_step\": 2, \"interval\": 3, \"count\": 5, \"keep\": 3,"
+		"   \"slots\": 2,"
 		"   \"origin\": [-5, 10], \"slot_step\": [10, 0]}]}";
 	char error[256] = "";
 	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
