@@ -8,22 +8,22 @@
 #include <math.h>
 #include <stdlib.h>
 
-// The living instances of one spawner (see SpawnedInstances in scene.h): a ring of `capacity`.
+// The living instances of one spawner (see SpawnedInstances in scene.h): a ring of `capacity`
+// instances of `bodiesPer` bodies. Their joints are found from the bodies when they go.
 typedef struct PeerSpawned
 {
 	b2BodyId* bodies; // capacity × bodiesPer
-	b2JointId* joints; // capacity × jointsPer
 	int bodiesPer;
-	int jointsPer;
 	int capacity;
 } PeerSpawned;
 
 struct PeerWorld
 {
 	b2WorldId world;
+	b2BodyId* bodies; // scene body index -> body
+	const b2BodyId* jointBodies; // what the next joint's body indices refer to: bodies, or a spawned instance's
 	PeerSpawned* spawned; // one per scene spawner
 	int spawnerCount;
-	b2BodyId* bodies; // scene body index -> body
 	int bodyCount;
 	int* driven; // scene indices of the bodies with a SceneDrive
 	int drivenCount;
@@ -146,12 +146,12 @@ static b2Transform ToB2Transform(tbTransform t)
 
 // v3.2's joint definitions have the very fields of Tumble's (the same grammar), so each kind's
 // definition is copied field by field: the same constraint, only the solver differs.
-static b2JointDef ToB2JointBase(const b2BodyId* bodies, const SceneJoint* sj)
+static b2JointDef ToB2JointBase(const PeerWorld* peer, const SceneJoint* sj)
 {
 	const tbJointDef* d = &sj->def.base;
 	b2JointDef base = {0};
-	base.bodyIdA = bodies[sj->bodyA];
-	base.bodyIdB = bodies[sj->bodyB];
+	base.bodyIdA = peer->jointBodies[sj->bodyA];
+	base.bodyIdB = peer->jointBodies[sj->bodyB];
 	base.localFrameA = ToB2Transform(d->localFrameA);
 	base.localFrameB = ToB2Transform(d->localFrameB);
 	base.forceThreshold = d->forceThreshold;
@@ -163,11 +163,11 @@ static b2JointDef ToB2JointBase(const b2BodyId* bodies, const SceneJoint* sj)
 	return base;
 }
 
-static b2JointId AddRevolute(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
+static void AddRevolute(PeerWorld* peer, const SceneJoint* sj)
 {
 	const tbRevoluteJointDef* s = &sj->def.revolute;
 	b2RevoluteJointDef d = b2DefaultRevoluteJointDef();
-	d.base = ToB2JointBase(bodies, sj);
+	d.base = ToB2JointBase(peer, sj);
 	d.targetAngle = s->targetAngle;
 	d.enableSpring = s->enableSpring;
 	d.hertz = s->hertz;
@@ -178,14 +178,14 @@ static b2JointId AddRevolute(b2WorldId world, const b2BodyId* bodies, const Scen
 	d.enableMotor = s->enableMotor;
 	d.maxMotorTorque = s->maxMotorTorque;
 	d.motorSpeed = s->motorSpeed;
-	return b2CreateRevoluteJoint(world, &d);
+	b2CreateRevoluteJoint(peer->world, &d);
 }
 
-static b2JointId AddPrismatic(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
+static void AddPrismatic(PeerWorld* peer, const SceneJoint* sj)
 {
 	const tbPrismaticJointDef* s = &sj->def.prismatic;
 	b2PrismaticJointDef d = b2DefaultPrismaticJointDef();
-	d.base = ToB2JointBase(bodies, sj);
+	d.base = ToB2JointBase(peer, sj);
 	d.enableSpring = s->enableSpring;
 	d.hertz = s->hertz;
 	d.dampingRatio = s->dampingRatio;
@@ -196,14 +196,14 @@ static b2JointId AddPrismatic(b2WorldId world, const b2BodyId* bodies, const Sce
 	d.enableMotor = s->enableMotor;
 	d.maxMotorForce = s->maxMotorForce;
 	d.motorSpeed = s->motorSpeed;
-	return b2CreatePrismaticJoint(world, &d);
+	b2CreatePrismaticJoint(peer->world, &d);
 }
 
-static b2JointId AddDistance(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
+static void AddDistance(PeerWorld* peer, const SceneJoint* sj)
 {
 	const tbDistanceJointDef* s = &sj->def.distance;
 	b2DistanceJointDef d = b2DefaultDistanceJointDef();
-	d.base = ToB2JointBase(bodies, sj);
+	d.base = ToB2JointBase(peer, sj);
 	d.length = s->length;
 	d.enableSpring = s->enableSpring;
 	d.lowerSpringForce = s->lowerSpringForce;
@@ -216,28 +216,29 @@ static b2JointId AddDistance(b2WorldId world, const b2BodyId* bodies, const Scen
 	d.enableMotor = s->enableMotor;
 	d.maxMotorForce = s->maxMotorForce;
 	d.motorSpeed = s->motorSpeed;
-	return b2CreateDistanceJoint(world, &d);
+	b2CreateDistanceJoint(peer->world, &d);
 }
 
-static b2JointId AddOtherJoint(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
+static void AddOtherJoint(PeerWorld* peer, const SceneJoint* sj)
 {
 	switch (sj->type)
 	{
 		case tb_weldJoint:
 		{
 			b2WeldJointDef d = b2DefaultWeldJointDef();
-			d.base = ToB2JointBase(bodies, sj);
+			d.base = ToB2JointBase(peer, sj);
 			d.linearHertz = sj->def.weld.linearHertz;
 			d.angularHertz = sj->def.weld.angularHertz;
 			d.linearDampingRatio = sj->def.weld.linearDampingRatio;
 			d.angularDampingRatio = sj->def.weld.angularDampingRatio;
-			return b2CreateWeldJoint(world, &d);
+			b2CreateWeldJoint(peer->world, &d);
+			break;
 		}
 		case tb_wheelJoint:
 		{
 			const tbWheelJointDef* s = &sj->def.wheel;
 			b2WheelJointDef d = b2DefaultWheelJointDef();
-			d.base = ToB2JointBase(bodies, sj);
+			d.base = ToB2JointBase(peer, sj);
 			d.enableSpring = s->enableSpring;
 			d.hertz = s->hertz;
 			d.dampingRatio = s->dampingRatio;
@@ -247,13 +248,14 @@ static b2JointId AddOtherJoint(b2WorldId world, const b2BodyId* bodies, const Sc
 			d.enableMotor = s->enableMotor;
 			d.maxMotorTorque = s->maxMotorTorque;
 			d.motorSpeed = s->motorSpeed;
-			return b2CreateWheelJoint(world, &d);
+			b2CreateWheelJoint(peer->world, &d);
+			break;
 		}
 		case tb_motorJoint:
 		{
 			const tbMotorJointDef* s = &sj->def.motor;
 			b2MotorJointDef d = b2DefaultMotorJointDef();
-			d.base = ToB2JointBase(bodies, sj);
+			d.base = ToB2JointBase(peer, sj);
 			d.linearVelocity = ToB2(s->linearVelocity);
 			d.maxVelocityForce = s->maxVelocityForce;
 			d.angularVelocity = s->angularVelocity;
@@ -264,37 +266,44 @@ static b2JointId AddOtherJoint(b2WorldId world, const b2BodyId* bodies, const Sc
 			d.angularHertz = s->angularHertz;
 			d.angularDampingRatio = s->angularDampingRatio;
 			d.maxSpringTorque = s->maxSpringTorque;
-			return b2CreateMotorJoint(world, &d);
+			b2CreateMotorJoint(peer->world, &d);
+			break;
 		}
 		case tb_filterJoint:
 		{
 			b2FilterJointDef d = b2DefaultFilterJointDef();
-			d.base = ToB2JointBase(bodies, sj);
-			return b2CreateFilterJoint(world, &d);
+			d.base = ToB2JointBase(peer, sj);
+			b2CreateFilterJoint(peer->world, &d);
+			break;
 		}
 		default:
-			return b2_nullJointId;
+			break;
 	}
 }
 
-static b2JointId AddJoint(b2WorldId world, const b2BodyId* bodies, const SceneJoint* sj)
+static void AddJoint(PeerWorld* peer, const SceneJoint* sj)
 {
 	switch (sj->type)
 	{
 		case tb_revoluteJoint:
-			return AddRevolute(world, bodies, sj);
+			AddRevolute(peer, sj);
+			break;
 		case tb_prismaticJoint:
-			return AddPrismatic(world, bodies, sj);
+			AddPrismatic(peer, sj);
+			break;
 		case tb_distanceJoint:
-			return AddDistance(world, bodies, sj);
+			AddDistance(peer, sj);
+			break;
 		default:
-			return AddOtherJoint(world, bodies, sj);
+			AddOtherJoint(peer, sj);
+			break;
 	}
 }
 
 // ---------------------------------------------------------------------------------------------
 // Spawn schedule (SceneSpawner), as SceneWorld_Step runs it for Tumble: before a step, spawner by
-// spawner, destroy the oldest instance when the ring is full (joints, then bodies), then build.
+// spawner, destroy the oldest instance when the ring is full (its joints, then its bodies, as
+// v3's rain destroys a human), then build the new one.
 
 static bool AllocateSpawned(PeerWorld* peer, const Scene* scene)
 {
@@ -307,23 +316,39 @@ static bool AllocateSpawned(PeerWorld* peer, const Scene* scene)
 	for (int i = 0; i < scene->spawnerCount; ++i)
 	{
 		const SceneSpawner* spawner = scene->spawners + i;
-		const Scene* parts = scene->templates[spawner->templateIndex].parts;
 		PeerSpawned* ring = peer->spawned + i;
 		int capacity = spawner->keep > 0 ? spawner->keep : spawner->count;
 		capacity = spawner->count > 0 && spawner->count < capacity ? spawner->count : capacity;
 		ring->capacity = capacity > 0 ? capacity : 1;
-		ring->bodiesPer = parts->bodyCount;
-		ring->jointsPer = parts->jointCount;
-		size_t bodySlots = (size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1));
-		size_t jointSlots = (size_t)(ring->capacity * (ring->jointsPer > 0 ? ring->jointsPer : 1));
-		ring->bodies = calloc(bodySlots, sizeof(b2BodyId));
-		ring->joints = calloc(jointSlots, sizeof(b2JointId));
-		if (ring->bodies == NULL || ring->joints == NULL)
+		ring->bodiesPer = scene->templates[spawner->templateIndex].parts->bodyCount;
+		ring->bodies = calloc((size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1)), sizeof(b2BodyId));
+		if (ring->bodies == NULL)
 		{
 			return false;
 		}
 	}
 	return true;
+}
+
+// A body with more than 16 joints loses the rest with itself (b2DestroyBody destroys them).
+static void DestroyInstance(const b2BodyId* bodies, int count)
+{
+	for (int b = 0; b < count; ++b)
+	{
+		b2JointId joints[16];
+		int jointCount = b2Body_IsValid(bodies[b]) ? b2Body_GetJoints(bodies[b], joints, 16) : 0;
+		for (int j = 0; j < jointCount; ++j)
+		{
+			b2DestroyJoint(joints[j]);
+		}
+	}
+	for (int b = 0; b < count; ++b)
+	{
+		if (b2Body_IsValid(bodies[b]))
+		{
+			b2DestroyBody(bodies[b]);
+		}
+	}
 }
 
 static void RunSpawners(PeerWorld* peer)
@@ -338,25 +363,10 @@ static void RunSpawners(PeerWorld* peer)
 			continue;
 		}
 		PeerSpawned* ring = peer->spawned + i;
-		int slot = instance % ring->capacity;
-		b2BodyId* bodies = ring->bodies + slot * ring->bodiesPer;
-		b2JointId* joints = ring->joints + slot * ring->jointsPer;
+		b2BodyId* bodies = ring->bodies + (instance % ring->capacity) * ring->bodiesPer;
 		if (instance >= ring->capacity)
 		{
-			for (int j = 0; j < ring->jointsPer; ++j)
-			{
-				if (b2Joint_IsValid(joints[j]))
-				{
-					b2DestroyJoint(joints[j]);
-				}
-			}
-			for (int b = 0; b < ring->bodiesPer; ++b)
-			{
-				if (b2Body_IsValid(bodies[b]))
-				{
-					b2DestroyBody(bodies[b]);
-				}
-			}
+			DestroyInstance(bodies, ring->bodiesPer);
 		}
 		const Scene* parts = scene->templates[spawner->templateIndex].parts;
 		tbVec2 offset = SceneSpawner_Offset(spawner, instance);
@@ -364,9 +374,10 @@ static void RunSpawners(PeerWorld* peer)
 		{
 			bodies[b] = MakeBody(peer->world, parts->bodies + b, offset);
 		}
-		for (int j = 0; j < ring->jointsPer; ++j)
+		peer->jointBodies = bodies;
+		for (int j = 0; j < parts->jointCount; ++j)
 		{
-			joints[j] = AddJoint(peer->world, bodies, parts->joints + j);
+			AddJoint(peer, parts->joints + j);
 		}
 	}
 }
@@ -400,9 +411,10 @@ PeerWorld* PeerBox2D3_Create(const Scene* scene)
 			peer->driven[peer->drivenCount++] = i;
 		}
 	}
+	peer->jointBodies = peer->bodies;
 	for (int j = 0; j < scene->jointCount; ++j)
 	{
-		AddJoint(peer->world, peer->bodies, scene->joints + j);
+		AddJoint(peer, scene->joints + j);
 	}
 	if (AllocateSpawned(peer, scene) == false)
 	{
@@ -481,7 +493,6 @@ void PeerBox2D3_Destroy(PeerWorld* peer)
 	for (int i = 0; i < peer->spawnerCount; ++i)
 	{
 		free(peer->spawned[i].bodies);
-		free(peer->spawned[i].joints);
 	}
 	free(peer->spawned);
 	free(peer);
