@@ -15,6 +15,7 @@ typedef struct PeerSpawned
 	b2BodyId* bodies; // capacity × bodiesPer
 	int bodiesPer;
 	int capacity;
+	int built; // instances built so far
 } PeerSpawned;
 
 struct PeerWorld
@@ -302,8 +303,8 @@ static void AddJoint(PeerWorld* peer, const SceneJoint* sj)
 
 // ---------------------------------------------------------------------------------------------
 // Spawn schedule (SceneSpawner), as SceneWorld_Step runs it for Tumble: before a step, spawner by
-// spawner, destroy the oldest instance when the ring is full (its joints, then its bodies, as
-// v3's rain destroys a human), then build the new one.
+// spawner, destroy the instance whose lifetime ends and the oldest when the ring is full (its
+// joints, then its bodies, as v3's rain destroys a human), then build the new one.
 
 static bool AllocateSpawned(PeerWorld* peer, const Scene* scene)
 {
@@ -317,9 +318,7 @@ static bool AllocateSpawned(PeerWorld* peer, const Scene* scene)
 	{
 		const SceneSpawner* spawner = scene->spawners + i;
 		PeerSpawned* ring = peer->spawned + i;
-		int capacity = spawner->keep > 0 ? spawner->keep : spawner->count;
-		capacity = spawner->count > 0 && spawner->count < capacity ? spawner->count : capacity;
-		ring->capacity = capacity > 0 ? capacity : 1;
+		ring->capacity = SceneSpawner_Capacity(spawner);
 		ring->bodiesPer = scene->templates[spawner->templateIndex].parts->bodyCount;
 		ring->bodies = calloc((size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1)), sizeof(b2BodyId));
 		if (ring->bodies == NULL)
@@ -357,12 +356,17 @@ static void RunSpawners(PeerWorld* peer)
 	for (int i = 0; i < peer->spawnerCount; ++i)
 	{
 		const SceneSpawner* spawner = scene->spawners + i;
+		PeerSpawned* ring = peer->spawned + i;
+		int expired = SceneSpawner_ExpiryAt(spawner, peer->stepIndex);
+		if (expired >= 0 && expired < ring->built && expired >= ring->built - ring->capacity)
+		{
+			DestroyInstance(ring->bodies + (expired % ring->capacity) * ring->bodiesPer, ring->bodiesPer);
+		}
 		int instance = SceneSpawner_InstanceAt(spawner, peer->stepIndex);
 		if (instance < 0)
 		{
 			continue;
 		}
-		PeerSpawned* ring = peer->spawned + i;
 		b2BodyId* bodies = ring->bodies + (instance % ring->capacity) * ring->bodiesPer;
 		if (instance >= ring->capacity)
 		{
@@ -379,6 +383,7 @@ static void RunSpawners(PeerWorld* peer)
 		{
 			AddJoint(peer, parts->joints + j);
 		}
+		ring->built = instance + 1;
 	}
 }
 

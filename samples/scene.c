@@ -2,6 +2,7 @@
 #include "scene.h"
 #include "task_system.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -315,6 +316,23 @@ int SceneSpawner_InstanceAt(const SceneSpawner* spawner, int step)
 	return spawner->count > 0 && instance >= spawner->count ? -1 : instance;
 }
 
+int SceneSpawner_ExpiryAt(const SceneSpawner* spawner, int step)
+{
+	return spawner->lifetime > 0 ? SceneSpawner_InstanceAt(spawner, step - spawner->lifetime) : -1;
+}
+
+int SceneSpawner_Capacity(const SceneSpawner* spawner)
+{
+	int capacity = spawner->keep > 0 ? spawner->keep : INT_MAX;
+	capacity = spawner->count > 0 && spawner->count < capacity ? spawner->count : capacity;
+	if (spawner->lifetime > 0 && spawner->interval > 0)
+	{
+		int byLifetime = (spawner->lifetime - 1) / spawner->interval + 1;
+		capacity = byLifetime < capacity ? byLifetime : capacity;
+	}
+	return capacity == INT_MAX ? 1 : capacity;
+}
+
 tbVec2 SceneSpawner_Offset(const SceneSpawner* spawner, int instance)
 {
 	int slot = spawner->slotCount > 1 ? instance % spawner->slotCount : 0;
@@ -339,8 +357,16 @@ void Scene_LiveCounts(const Scene* scene, int steps, int* bodyCount, int* jointC
 	for (int i = 0; i < scene->spawnerCount; ++i)
 	{
 		const SceneSpawner* spawner = scene->spawners + i;
-		int live = InstancesBuiltBefore(spawner, steps);
-		live = spawner->keep > 0 && live > spawner->keep ? spawner->keep : live;
+		int built = InstancesBuiltBefore(spawner, steps);
+		int oldest = spawner->keep > 0 && built > spawner->keep ? built - spawner->keep : 0;
+		if (spawner->lifetime > 0 && spawner->interval > 0)
+		{
+			// alive: built before step s ≥ steps − lifetime (destroyed before s + lifetime ≥ steps)
+			int first = steps - spawner->lifetime - spawner->firstStep;
+			int byLifetime = first > 0 ? (first - 1) / spawner->interval + 1 : 0;
+			oldest = byLifetime > oldest ? byLifetime : oldest;
+		}
+		int live = built > oldest ? built - oldest : 0;
 		const Scene* parts = scene->templates[spawner->templateIndex].parts;
 		*bodyCount += live * parts->bodyCount;
 		*jointCount += live * parts->jointCount;
@@ -584,9 +610,8 @@ static bool AllocateSpawned(SceneWorld* world, const Scene* scene)
 		const SceneSpawner* spawner = scene->spawners + i;
 		const Scene* parts = scene->templates[spawner->templateIndex].parts;
 		SpawnedInstances* ring = world->spawned + i;
-		int capacity = spawner->keep > 0 ? spawner->keep : spawner->count;
-		capacity = spawner->count > 0 && spawner->count < capacity ? spawner->count : capacity;
-		ring->capacity = capacity > 0 ? capacity : 1;
+		ring->schedule = *spawner;
+		ring->capacity = SceneSpawner_Capacity(spawner);
 		ring->bodiesPer = parts->bodyCount;
 		ring->jointsPer = parts->jointCount;
 		size_t bodySlots = (size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1));
@@ -639,18 +664,24 @@ static void BuildInstance(tbWorldId worldId, const Scene* parts, tbVec2 offset, 
 	}
 }
 
-// The spawns of the coming step, spawner by spawner: destroy the oldest when full, then build.
+// The spawns of the coming step, spawner by spawner: destroy the instance whose lifetime ends,
+// then the oldest when the ring is full (a no-op when it is already gone), then build.
 static void RunSpawners(SceneWorld* world, const Scene* scene)
 {
 	for (int i = 0; i < world->spawnerCount; ++i)
 	{
 		const SceneSpawner* spawner = scene->spawners + i;
+		SpawnedInstances* ring = world->spawned + i;
+		int expired = SceneSpawner_ExpiryAt(spawner, world->stepIndex);
+		if (expired >= 0 && expired < ring->built && expired >= ring->built - ring->capacity)
+		{
+			DestroyInstance(ring, expired % ring->capacity);
+		}
 		int instance = SceneSpawner_InstanceAt(spawner, world->stepIndex);
 		if (instance < 0)
 		{
 			continue;
 		}
-		SpawnedInstances* ring = world->spawned + i;
 		int slot = instance % ring->capacity;
 		if (instance >= ring->capacity)
 		{
@@ -672,6 +703,12 @@ const tbBodyId* SceneWorld_InstanceBodies(const SceneWorld* world, int spawner, 
 	if (instance < 0 || instance >= ring->built || instance < ring->built - ring->capacity)
 	{
 		return NULL;
+	}
+	const SceneSpawner* schedule = &ring->schedule;
+	int builtBefore = schedule->firstStep + instance * schedule->interval;
+	if (schedule->lifetime > 0 && builtBefore + schedule->lifetime < world->stepIndex)
+	{
+		return NULL; // destroyed before step builtBefore + lifetime, which has been taken
 	}
 	return ring->bodyIds + (instance % ring->capacity) * ring->bodiesPer;
 }

@@ -120,17 +120,19 @@ typedef struct SceneTemplate
 
 /// A spawn schedule: instance n (n = 0, 1, …) of template `templateIndex` is built before step
 /// firstStep + n·interval, its bodies translated by origin + (n mod slotCount)·slotStep, until
-/// `count` instances have been built (count 0: no end). With keep > 0 at most `keep` instances
-/// live at once: building instance n first destroys instance n − keep (its joints, then its
-/// bodies), so a new instance takes the slot of the oldest. Within a step, spawners act in
-/// order, each destroying before it builds; everything happens before the world steps.
+/// `count` instances have been built (count 0: no end). With lifetime L > 0 an instance built
+/// before step s is destroyed (its joints, then its bodies) before step s + L. With keep > 0 at
+/// most `keep` instances live at once: building instance n first destroys instance n − keep, so a
+/// new instance takes the slot of the oldest. Within a step, spawners act in order, each
+/// destroying before it builds; everything happens before the world steps.
 typedef struct SceneSpawner
 {
 	int templateIndex; ///< index in Scene::templates
 	int firstStep;	   ///< ≥ 0
 	int interval;	   ///< steps between two spawns, ≥ 1
-	int count;		   ///< ≥ 0, 0 = no end (then keep must be > 0)
-	int keep;		   ///< ≥ 0, 0 = instances are never destroyed
+	int count;		   ///< ≥ 0, 0 = no end (then keep or lifetime must be > 0)
+	int keep;		   ///< ≥ 0, 0 = no recycling
+	int lifetime;	   ///< steps, ≥ 0, 0 = an instance lives until recycled or the end
 	int slotCount;	   ///< ≥ 1 spawn points, used in turn
 	tbVec2 origin;	   ///< m, the first spawn point
 	tbVec2 slotStep;   ///< m, from one spawn point to the next
@@ -211,6 +213,13 @@ SceneSpawner* Scene_AddSpawner(Scene* scene, int templateIndex, int interval, tb
 /// Instance built before step `step` by the spawner, or −1 when it builds none then.
 int SceneSpawner_InstanceAt(const SceneSpawner* spawner, int step);
 
+/// Instance whose lifetime ends before step `step` (built before step − lifetime), or −1.
+int SceneSpawner_ExpiryAt(const SceneSpawner* spawner, int step);
+
+/// Most instances alive at once (keep, count, lifetime / interval rounded up: the least that
+/// applies); 1 when nothing bounds them (scene files refuse such a spawner).
+int SceneSpawner_Capacity(const SceneSpawner* spawner);
+
 /// Translation of instance n's bodies.
 tbVec2 SceneSpawner_Offset(const SceneSpawner* spawner, int instance);
 
@@ -250,8 +259,8 @@ typedef struct SceneOverrides
 /// World definition for the scene: defaults, then the scene's gravity, sleep and methods, then overrides.
 tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* overrides);
 
-/// The living instances of one spawner in a built world: a ring of `capacity` instances (keep,
-/// or count when nothing is recycled), each `bodiesPer` body ids and `jointsPer` joint ids.
+/// The living instances of one spawner in a built world: a ring of SceneSpawner_Capacity
+/// instances, each `bodiesPer` body ids and `jointsPer` joint ids.
 typedef struct SpawnedInstances
 {
 	tbBodyId* bodyIds;	 ///< capacity × bodiesPer
@@ -260,6 +269,7 @@ typedef struct SpawnedInstances
 	int jointsPer;
 	int capacity;
 	int built; ///< instances built so far (instance n sits in slot n mod capacity)
+	SceneSpawner schedule;
 } SpawnedInstances;
 
 /// A built world and the mapping from scene body index to body id.
@@ -289,7 +299,7 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def);
 bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize);
 
 /// Body ids of instance n of spawner s (bodiesPer of them, in template order), or NULL when the
-/// instance is not alive (not built yet, or destroyed to make room: copy the ids to keep them).
+/// instance is not alive (not built yet, recycled or past its lifetime: copy ids to keep them).
 const tbBodyId* SceneWorld_InstanceBodies(const SceneWorld* world, int spawner, int instance);
 
 /// Every living body of the world, the scene's first (scene order), then the spawned ones

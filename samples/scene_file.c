@@ -1146,7 +1146,7 @@ static bool ReadChains(Parser* parser, const cJSON* item, Scene* scene)
 // ---------------------------------------------------------------------------------------------
 // Spawn schedules: templates {"name", "bodies", "joints"} (bodies placed relative to the spawn
 // point, joints between the template's own bodies) and spawners {"template", "first_step",
-// "interval", "count", "keep", "slots", "origin", "slot_step"} (see SceneSpawner).
+// "interval", "count", "keep", "lifetime", "slots", "origin", "slot_step"} (see SceneSpawner).
 
 // Spawned bodies are not driven (SceneWorld_Step drives the scene's bodies only).
 static bool CheckTemplateBodies(Parser* parser, const char* path, const Scene* parts)
@@ -1240,14 +1240,13 @@ static bool ReadSpawnerTemplate(Parser* parser, const cJSON* item, const char* p
 // scene may hold.
 static bool CheckSpawnerBounds(Parser* parser, const char* path, const SceneSpawner* spawner, const Scene* parts)
 {
-	if (spawner->count == 0 && spawner->keep == 0)
+	if (spawner->count == 0 && spawner->keep == 0 && spawner->lifetime == 0)
 	{
 		char child[PATH_SIZE];
 		KeyPath(child, path, "keep");
-		return Fail(parser, child, "must be > 0 when count is 0 (else instances pile up without end)");
+		return Fail(parser, child, "must be > 0 when count and lifetime are 0 (else instances pile up without end)");
 	}
-	int live = spawner->keep > 0 && (spawner->count == 0 || spawner->keep < spawner->count) ? spawner->keep
-																							 : spawner->count;
+	int live = SceneSpawner_Capacity(spawner);
 	if ((double)live * (double)parts->bodyCount > (double)SCENE_MAX_BODIES)
 	{
 		return Fail(parser, path, "keeps up to %d instances of %d bodies alive: at most %d bodies", live,
@@ -1258,8 +1257,8 @@ static bool CheckSpawnerBounds(Parser* parser, const char* path, const SceneSpaw
 
 static bool ReadSpawner(Parser* parser, const cJSON* item, const char* path, Scene* scene)
 {
-	static const char* const keys[] = {"template", "first_step", "interval", "count",	  "keep",
-									   "slots",	   "origin",	 "slot_step", NULL};
+	static const char* const keys[] = {"template", "first_step", "interval",  "count",	"keep",
+									   "lifetime", "slots",		 "origin",	  "slot_step", NULL};
 	int templateIndex = -1;
 	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false ||
 		ReadSpawnerTemplate(parser, item, path, scene, &templateIndex) == false)
@@ -1275,6 +1274,7 @@ static bool ReadSpawner(Parser* parser, const cJSON* item, const char* path, Sce
 		   ReadInt(parser, item, path, "interval", 1, SCENE_MAX_STEPS, &spawner->interval) &&
 		   ReadInt(parser, item, path, "count", 0, SCENE_MAX_STEPS, &spawner->count) &&
 		   ReadInt(parser, item, path, "keep", 0, SCENE_MAX_STEPS, &spawner->keep) &&
+		   ReadInt(parser, item, path, "lifetime", 0, SCENE_MAX_STEPS, &spawner->lifetime) &&
 		   ReadInt(parser, item, path, "slots", 1, SCENE_MAX_STEPS, &spawner->slotCount) &&
 		   ReadVec2(parser, item, path, "origin", &spawner->origin, false) &&
 		   ReadVec2(parser, item, path, "slot_step", &spawner->slotStep, false) &&
@@ -1884,8 +1884,9 @@ static void AppendSpawners(TextBuffer* buffer, const Scene* scene)
 		snprintf(buffer->item, sizeof(buffer->item), "spawners[%d]", i);
 		Append(buffer, i > 0 ? ",\n    {\"template\": " : "\n    {\"template\": ");
 		AppendString(buffer, scene->templates[spawner->templateIndex].name);
-		Append(buffer, ", \"first_step\": %d, \"interval\": %d, \"count\": %d, \"keep\": %d, \"slots\": %d",
-			   spawner->firstStep, spawner->interval, spawner->count, spawner->keep, spawner->slotCount);
+		Append(buffer, ", \"first_step\": %d, \"interval\": %d, \"count\": %d, \"keep\": %d, \"lifetime\": %d",
+			   spawner->firstStep, spawner->interval, spawner->count, spawner->keep, spawner->lifetime);
+		Append(buffer, ", \"slots\": %d", spawner->slotCount);
 		Append(buffer, ", \"origin\": ");
 		AppendVec2(buffer, spawner->origin);
 		Append(buffer, ", \"slot_step\": ");

@@ -446,7 +446,9 @@ static const BadFile s_badFiles[] = {
 	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"interval\": 0, \"keep\": 1}]}",
 	 "spawners[0].interval: must be 1..1000000"},
 	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"interval\": 4}]}",
-	 "spawners[0].keep: must be > 0 when count is 0 (else instances pile up without end)"},
+	 "spawners[0].keep: must be > 0 when count and lifetime are 0 (else instances pile up without end)"},
+	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"interval\": 4, \"lifetime\": -3}]}",
+	 "spawners[0].lifetime: must be 0..1000000"},
 	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}, {}]}], \"spawners\": [{\"template\": \"t\", \"interval\": 1, "
 	 "\"keep\": 60000}]}",
 	 "spawners[0]: keeps up to 60000 instances of 2 bodies alive: at most 100000 bodies"},
@@ -779,4 +781,52 @@ Test(scene, exact_rain_spawns_and_recycles_as_scheduled)
 	cr_assert_eq(hashes[0], hashes[1], "two runs of the exact rain differ");
 	Scene_Destroy(scene);
 	cr_assert_eq(tbGetByteCount(), 0, "the rain's spawned bodies leak");
+}
+
+// Lifetimes: a body every 3 steps that lives 5 steps (so at most two at once), and beside it a
+// body every 2 steps kept one at a time with a lifetime of 10 (it is always recycled first, and
+// its expiry must not destroy the instance that took its place). Counted from the definition.
+Test(scene, spawn_lifetime_destroys_at_the_given_step)
+{
+	const char* text =
+		"{\"gravity\": [0, 0], \"templates\": [{\"name\": \"ball\", \"bodies\": [{\"type\": \"dynamic\","
+		"  \"shapes\": [{\"circle\": {\"radius\": 0.25}}]}]}],"
+		" \"spawners\": [{\"template\": \"ball\", \"interval\": 3, \"lifetime\": 5, \"slots\": 8,"
+		"   \"slot_step\": [1, 0]},"
+		"  {\"template\": \"ball\", \"first_step\": 1, \"interval\": 2, \"keep\": 1, \"lifetime\": 10,"
+		"   \"origin\": [0, 5]}]}";
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(scene, "%s", error);
+	cr_assert_eq(SceneSpawner_Capacity(scene->spawners + 0), 2);
+	cr_assert_eq(SceneSpawner_Capacity(scene->spawners + 1), 1);
+	Scene* again = RoundTrip(scene);
+	ExpectSameScene(scene, again, "lifetimes");
+	Scene_Destroy(again);
+	SceneWorld world = Scene_BuildWorld(scene, NULL);
+	tbBodyId first = TB_NULL_BODY_ID;
+	for (int steps = 0; steps <= 24; ++steps)
+	{
+		int alive = 0; // instances m built before step 3m < steps and not destroyed (3m + 5 >= steps)
+		for (int m = 0; 3 * m < steps; ++m)
+		{
+			alive += 3 * m + 5 >= steps ? 1 : 0;
+		}
+		alive += steps > 1 ? 1 : 0; // the second spawner's latest
+		int bodies = 0, joints = 0;
+		Scene_LiveCounts(scene, steps, &bodies, &joints);
+		cr_assert_eq(bodies, alive, "closed form after %d steps", steps);
+		cr_assert_eq(tbWorld_GetCounters(world.worldId).bodyCount, alive, "after %d steps", steps);
+		SceneWorld_Step(&world, scene, scene->subSteps);
+		if (steps == 0)
+		{
+			first = SceneWorld_InstanceBodies(&world, 0, 0)[0];
+		}
+		bool firstAlive = steps + 1 <= 5; // built before step 0, destroyed before step 5
+		cr_assert_eq(tbBody_IsValid(first), firstAlive, "after %d steps", steps + 1);
+		cr_assert_eq(SceneWorld_InstanceBodies(&world, 0, 0) != NULL, firstAlive, "after %d steps", steps + 1);
+	}
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+	cr_assert_eq(tbGetByteCount(), 0);
 }
