@@ -9,10 +9,23 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+// The living instances of one spawner (see SpawnedInstances in scene.h): a ring of `capacity`
+// instances of `bodiesPer` bodies. Their joints are found from the bodies when they go.
+typedef struct PeerSpawned
+{
+	b2BodyId* bodies; // capacity × bodiesPer
+	int bodiesPer;
+	int capacity;
+	int built; // instances built so far
+} PeerSpawned;
+
 struct PeerWorld
 {
 	b2WorldId world;
 	b2BodyId* bodies; // scene body index -> body
+	const b2BodyId* jointBodies; // what the next joint's body indices refer to: bodies, or a spawned instance's
+	PeerSpawned* spawned; // one per scene spawner
+	int spawnerCount;
 	int bodyCount;
 	int* driven; // scene indices of the bodies with a SceneDrive
 	int drivenCount;
@@ -98,11 +111,12 @@ static b2BodyType ToB2Type(tbBodyType type)
 	}
 }
 
-static b2BodyId MakeBody(b2WorldId world, const SceneBody* sb)
+static b2BodyId MakeBody(b2WorldId world, const SceneBody* sb, tbVec2 offset)
 {
 	b2BodyDef def = b2DefaultBodyDef();
 	def.type = ToB2Type(sb->type);
-	def.position = ToB2(sb->position);
+	def.position = (b2Vec2){sb->position.x + offset.x, sb->position.y + offset.y};
+	def.sleepThreshold = sb->sleepThreshold;
 	def.rotation = (b2Rot){cosf(sb->angle), sinf(sb->angle)}; // b2MakeRot approximates (~1e-3 rad)
 	def.linearDamping = sb->linearDamping;
 	def.angularDamping = sb->angularDamping;
@@ -138,8 +152,8 @@ static b2JointDef ToB2JointBase(const PeerWorld* peer, const SceneJoint* sj)
 {
 	const tbJointDef* d = &sj->def.base;
 	b2JointDef base = {0};
-	base.bodyIdA = peer->bodies[sj->bodyA];
-	base.bodyIdB = peer->bodies[sj->bodyB];
+	base.bodyIdA = peer->jointBodies[sj->bodyA];
+	base.bodyIdB = peer->jointBodies[sj->bodyB];
 	base.localFrameA = ToB2Transform(d->localFrameA);
 	base.localFrameB = ToB2Transform(d->localFrameB);
 	base.forceThreshold = d->forceThreshold;
@@ -316,6 +330,92 @@ static void AddJoint(PeerWorld* peer, const SceneJoint* sj)
 	}
 }
 
+// ---------------------------------------------------------------------------------------------
+// Spawn schedule (SceneSpawner), as SceneWorld_Step runs it for Tumble: before a step, spawner by
+// spawner, destroy the instance whose lifetime ends and the oldest when the ring is full (its
+// joints, then its bodies, as v3's rain destroys a human), then build the new one.
+
+static bool AllocateSpawned(PeerWorld* peer, const Scene* scene)
+{
+	peer->spawnerCount = scene->spawnerCount;
+	peer->spawned = calloc((size_t)(scene->spawnerCount > 0 ? scene->spawnerCount : 1), sizeof(PeerSpawned));
+	if (peer->spawned == NULL)
+	{
+		return false;
+	}
+	for (int i = 0; i < scene->spawnerCount; ++i)
+	{
+		const SceneSpawner* spawner = scene->spawners + i;
+		PeerSpawned* ring = peer->spawned + i;
+		ring->capacity = SceneSpawner_Capacity(spawner);
+		ring->bodiesPer = scene->templates[spawner->templateIndex].parts->bodyCount;
+		ring->bodies = calloc((size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1)), sizeof(b2BodyId));
+		if (ring->bodies == NULL)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+// A body with more than 16 joints loses the rest with itself (b2DestroyBody destroys them).
+static void DestroyInstance(const b2BodyId* bodies, int count)
+{
+	for (int b = 0; b < count; ++b)
+	{
+		b2JointId joints[16];
+		int jointCount = b2Body_IsValid(bodies[b]) ? b2Body_GetJoints(bodies[b], joints, 16) : 0;
+		for (int j = 0; j < jointCount; ++j)
+		{
+			b2DestroyJoint(joints[j]);
+		}
+	}
+	for (int b = 0; b < count; ++b)
+	{
+		if (b2Body_IsValid(bodies[b]))
+		{
+			b2DestroyBody(bodies[b]);
+		}
+	}
+}
+
+static void RunSpawners(PeerWorld* peer)
+{
+	const Scene* scene = peer->scene;
+	for (int i = 0; i < peer->spawnerCount; ++i)
+	{
+		const SceneSpawner* spawner = scene->spawners + i;
+		PeerSpawned* ring = peer->spawned + i;
+		int expired = SceneSpawner_ExpiryAt(spawner, peer->stepIndex);
+		if (expired >= 0 && expired < ring->built && expired >= ring->built - ring->capacity)
+		{
+			DestroyInstance(ring->bodies + (expired % ring->capacity) * ring->bodiesPer, ring->bodiesPer);
+		}
+		int instance = SceneSpawner_InstanceAt(spawner, peer->stepIndex);
+		if (instance < 0)
+		{
+			continue;
+		}
+		b2BodyId* bodies = ring->bodies + (instance % ring->capacity) * ring->bodiesPer;
+		if (instance >= ring->capacity)
+		{
+			DestroyInstance(bodies, ring->bodiesPer);
+		}
+		const Scene* parts = scene->templates[spawner->templateIndex].parts;
+		tbVec2 offset = SceneSpawner_Offset(spawner, instance);
+		for (int b = 0; b < ring->bodiesPer; ++b)
+		{
+			bodies[b] = MakeBody(peer->world, parts->bodies + b, offset);
+		}
+		peer->jointBodies = bodies;
+		for (int j = 0; j < parts->jointCount; ++j)
+		{
+			AddJoint(peer, parts->joints + j);
+		}
+		ring->built = instance + 1;
+	}
+}
+
 static int s_workerCount = 1;
 
 void PeerBox2D3_SetWorkerCount(int workerCount)
@@ -339,15 +439,21 @@ PeerWorld* PeerBox2D3_Create(const Scene* scene)
 	peer->driven = calloc(slots, sizeof(int));
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
-		peer->bodies[i] = MakeBody(peer->world, scene->bodies + i);
+		peer->bodies[i] = MakeBody(peer->world, scene->bodies + i, tb_vec2_zero);
 		if (scene->bodies[i].drive.enabled)
 		{
 			peer->driven[peer->drivenCount++] = i;
 		}
 	}
+	peer->jointBodies = peer->bodies;
 	for (int j = 0; j < scene->jointCount; ++j)
 	{
 		AddJoint(peer, scene->joints + j);
+	}
+	if (AllocateSpawned(peer, scene) == false)
+	{
+		PeerBox2D3_Destroy(peer);
+		return NULL;
 	}
 	return peer;
 }
@@ -355,6 +461,7 @@ PeerWorld* PeerBox2D3_Create(const Scene* scene)
 void PeerBox2D3_Step(PeerWorld* peer)
 {
 	const Scene* scene = peer->scene;
+	RunSpawners(peer);
 	for (int i = 0; i < peer->drivenCount; ++i)
 	{
 		tbTransform target;
@@ -384,6 +491,15 @@ PeerCounters PeerBox2D3_GetCounters(PeerWorld* peer)
 		b2BodyId body = peer->bodies[i];
 		result.awakeBodyCount += b2Body_GetType(body) != b2_staticBody && b2Body_IsAwake(body) ? 1 : 0;
 	}
+	for (int s = 0; s < peer->spawnerCount; ++s)
+	{
+		const PeerSpawned* ring = peer->spawned + s;
+		for (int i = 0; i < ring->capacity * ring->bodiesPer; ++i)
+		{
+			b2BodyId body = ring->bodies[i];
+			result.awakeBodyCount += b2Body_IsValid(body) && b2Body_IsAwake(body) ? 1 : 0;
+		}
+	}
 	return result;
 }
 
@@ -408,5 +524,10 @@ void PeerBox2D3_Destroy(PeerWorld* peer)
 	b2DestroyWorld(peer->world);
 	free(peer->bodies);
 	free(peer->driven);
+	for (int i = 0; i < peer->spawnerCount; ++i)
+	{
+		free(peer->spawned[i].bodies);
+	}
+	free(peer->spawned);
 	free(peer);
 }

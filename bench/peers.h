@@ -5,6 +5,11 @@
 // TUMBLE_HAVE_BOX2D / TUMBLE_HAVE_BOX2D3 / TUMBLE_HAVE_CHIPMUNK). Body indices are scene body
 // indices. Every adapter drives the scene's scripted bodies (SceneDrive) before each step with the
 // velocity that reaches the step's target, as SceneWorld_Step does for Tumble.
+//
+// Spawn schedules (SceneSpawner: Box2D v3's exact rain) are run by the Box2D v3 adapter as
+// SceneWorld_Step runs them, inside the timed step; Box2D 2.4.1 and Chipmunk refuse such a scene
+// with a message (the rain's humans need revolute springs, which neither maps). Body indices
+// (GetBody, poses) cover the scene's own bodies, not the spawned ones.
 #pragma once
 
 #include "scene.h"
@@ -61,8 +66,9 @@ void PeerBox2D_Destroy(PeerWorld* world);
 /// Box2D v3 (3.2, C): the settings of v3's own benchmark program: one worker and no task system
 /// (single-threaded), the scene's sub-steps (4 in every catalogue scene, as v3's benchmark) at the
 /// scene's 60 Hz, continuous collision on, its defaults otherwise (soft contacts, 0.005 m linear slop,
-/// sleep after 0.5 s below 0.05 m/s). Shapes map one to one (v3 has capsules and rounded polygons;
-/// polygons are copied as they are). Driven bodies use b2Body_SetTargetTransform.
+/// sleep after 0.5 s below the body's sleep threshold, 0.05 m/s by default). Shapes map one to
+/// one (v3 has capsules and rounded polygons; polygons are copied as they are). Driven bodies use
+/// b2Body_SetTargetTransform. Spawned instances are built and destroyed as Tumble's are.
 PeerWorld* PeerBox2D3_Create(const Scene* scene);
 /// Workers of the worlds created from now on (default 1; more use v3's own scheduler).
 void PeerBox2D3_SetWorkerCount(int workerCount);

@@ -471,8 +471,8 @@ static void WriteCsvRow(FILE* file, const RunResult* r, const Options* options, 
 }
 
 static const char* s_defaultScenes[] = {"large_pyramid", "many_pyramids", "tumbler",	"smash",
-										"spinner",		 "rain",		  "washer",		"junkyard",
-										"compounds",	 "joint_grid",	  "rain_ragdolls"};
+										"spinner",		 "rain_rigid",	  "washer",		"junkyard",
+										"compounds",	 "joint_grid",	  "rain_ragdolls", "rain"};
 
 static int RunScenes(const Options* options)
 {
@@ -1442,8 +1442,8 @@ static void PrintUsage(void)
 		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
 		   "       tumble-bench profile SCENE... [--steps N] [--csv FILE]   (stage by stage, Tumble and Box2D v3)\n"
 		   "       tumble-bench --list\n"
-		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain washer junkyard\n"
-		   "compounds joint_grid rain_ragdolls, each at its catalogue step count, 60 Hz, 4 sub-steps\n"
+		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain_rigid washer junkyard\n"
+		   "compounds joint_grid rain_ragdolls rain, each at its catalogue step count, 60 Hz, 4 sub-steps\n"
 		   "for the soft solver\n"
 		   "(1 for baumgarte/ngs). --peers adds Box2D 2.4.1, Box2D v3 and Chipmunk 7 where built,\n"
 		   "--peer NAME only the peers named; --repeat rounds interleave the engines run by run,\n"

@@ -414,9 +414,12 @@ tbAABB Render_MatchAspect(tbAABB view, int width, int height)
 static bool UnionBodies(const SceneWorld* world, bool moving, tbAABB* box)
 {
 	bool found = false;
-	for (int i = 0; i < world->bodyCount; ++i)
+	int capacity = SceneWorld_BodyCapacity(world);
+	tbBodyId* ids = malloc(sizeof(tbBodyId) * (size_t)capacity);
+	int count = ids != NULL ? SceneWorld_CollectBodies(world, ids, capacity) : 0;
+	for (int i = 0; i < count; ++i)
 	{
-		tbBodyId id = world->bodyIds[i];
+		tbBodyId id = ids[i];
 		if (tbBody_IsValid(id) == false || tbBody_GetShapeCount(id) == 0 ||
 			(tbBody_GetType(id) != tb_staticBody) != moving)
 		{
@@ -426,6 +429,7 @@ static bool UnionBodies(const SceneWorld* world, bool moving, tbAABB* box)
 		*box = found ? tbAABB_Union(*box, b) : b;
 		found = true;
 	}
+	free(ids);
 	return found;
 }
 

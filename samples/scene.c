@@ -2,6 +2,7 @@
 #include "scene.h"
 #include "task_system.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -62,6 +63,12 @@ void Scene_Destroy(Scene* scene)
 		free(scene->chains[i].points);
 	}
 	free(scene->chains);
+	for (int i = 0; i < scene->templateCount; ++i)
+	{
+		Scene_Destroy(scene->templates[i].parts);
+	}
+	free(scene->templates);
+	free(scene->spawners);
 	free(scene);
 }
 
@@ -75,6 +82,7 @@ int Scene_AddBody(Scene* scene, tbBodyType type, tbVec2 position, float angle)
 	body->angle = angle;
 	body->gravityScale = 1.0f;
 	body->isAwake = true;
+	body->sleepThreshold = TB_LINEAR_SLEEP_TOLERANCE;
 	return scene->bodyCount++;
 }
 
@@ -263,6 +271,114 @@ void Scene_SetJointAnchor(const Scene* scene, SceneJoint* joint, tbVec2 worldPoi
 	joint->def.base.localFrameB.p = LocalPoint(scene->bodies + joint->bodyB, worldPoint);
 }
 
+int Scene_AddTemplate(Scene* scene, const char* name)
+{
+	scene->templates =
+		GrowArray(scene->templates, &scene->templateCapacity, scene->templateCount + 1, sizeof(SceneTemplate));
+	SceneTemplate* entry = scene->templates + scene->templateCount;
+	memset(entry, 0, sizeof(*entry));
+	snprintf(entry->name, sizeof(entry->name), "%s", name != NULL ? name : "");
+	entry->parts = Scene_Create();
+	if (entry->parts == NULL)
+	{
+		fprintf(stderr, "scene: out of memory\n");
+		abort();
+	}
+	return scene->templateCount++;
+}
+
+int Scene_FindTemplate(const Scene* scene, const char* name)
+{
+	for (int i = 0; name != NULL && i < scene->templateCount; ++i)
+	{
+		if (strcmp(scene->templates[i].name, name) == 0)
+		{
+			return i;
+		}
+	}
+	return -1;
+}
+
+SceneSpawner* Scene_AddSpawner(Scene* scene, int templateIndex, int interval, tbVec2 origin)
+{
+	scene->spawners =
+		GrowArray(scene->spawners, &scene->spawnerCapacity, scene->spawnerCount + 1, sizeof(SceneSpawner));
+	SceneSpawner* spawner = scene->spawners + scene->spawnerCount++;
+	memset(spawner, 0, sizeof(*spawner));
+	spawner->templateIndex = templateIndex;
+	spawner->interval = interval;
+	spawner->slotCount = 1;
+	spawner->origin = origin;
+	return spawner;
+}
+
+int SceneSpawner_InstanceAt(const SceneSpawner* spawner, int step)
+{
+	if (step < spawner->firstStep || spawner->interval < 1 || (step - spawner->firstStep) % spawner->interval != 0)
+	{
+		return -1;
+	}
+	int instance = (step - spawner->firstStep) / spawner->interval;
+	return spawner->count > 0 && instance >= spawner->count ? -1 : instance;
+}
+
+int SceneSpawner_ExpiryAt(const SceneSpawner* spawner, int step)
+{
+	return spawner->lifetime > 0 ? SceneSpawner_InstanceAt(spawner, step - spawner->lifetime) : -1;
+}
+
+int SceneSpawner_Capacity(const SceneSpawner* spawner)
+{
+	int capacity = spawner->keep > 0 ? spawner->keep : INT_MAX;
+	capacity = spawner->count > 0 && spawner->count < capacity ? spawner->count : capacity;
+	if (spawner->lifetime > 0 && spawner->interval > 0)
+	{
+		int byLifetime = (spawner->lifetime - 1) / spawner->interval + 1;
+		capacity = byLifetime < capacity ? byLifetime : capacity;
+	}
+	return capacity == INT_MAX ? 1 : capacity;
+}
+
+tbVec2 SceneSpawner_Offset(const SceneSpawner* spawner, int instance)
+{
+	int slot = spawner->slotCount > 1 ? instance % spawner->slotCount : 0;
+	return tbAdd(spawner->origin, tbMulSV((float)slot, spawner->slotStep));
+}
+
+// Instances a spawner has built before step `steps` (that is, in steps 0 … steps − 1).
+static int InstancesBuiltBefore(const SceneSpawner* spawner, int steps)
+{
+	if (steps <= spawner->firstStep || spawner->interval < 1)
+	{
+		return 0;
+	}
+	int built = (steps - 1 - spawner->firstStep) / spawner->interval + 1;
+	return spawner->count > 0 && built > spawner->count ? spawner->count : built;
+}
+
+void Scene_LiveCounts(const Scene* scene, int steps, int* bodyCount, int* jointCount)
+{
+	*bodyCount = scene->bodyCount;
+	*jointCount = scene->jointCount;
+	for (int i = 0; i < scene->spawnerCount; ++i)
+	{
+		const SceneSpawner* spawner = scene->spawners + i;
+		int built = InstancesBuiltBefore(spawner, steps);
+		int oldest = spawner->keep > 0 && built > spawner->keep ? built - spawner->keep : 0;
+		if (spawner->lifetime > 0 && spawner->interval > 0)
+		{
+			// alive: built before step s ≥ steps − lifetime (destroyed before s + lifetime ≥ steps)
+			int first = steps - spawner->lifetime - spawner->firstStep;
+			int byLifetime = first > 0 ? (first - 1) / spawner->interval + 1 : 0;
+			oldest = byLifetime > oldest ? byLifetime : oldest;
+		}
+		int live = built > oldest ? built - oldest : 0;
+		const Scene* parts = scene->templates[spawner->templateIndex].parts;
+		*bodyCount += live * parts->bodyCount;
+		*jointCount += live * parts->jointCount;
+	}
+}
+
 int Scene_ShapeCount(const Scene* scene)
 {
 	int count = 0;
@@ -368,11 +484,12 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 
 // Create the body and its shapes. *refusedShape is the index of the first shape the library
 // refused, or stays as it was when every shape was created.
-static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const char* name, int* refusedShape)
+static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, tbVec2 offset, const char* name,
+							   int* refusedShape)
 {
 	tbBodyDef def = tbDefaultBodyDef();
 	def.type = body->type;
-	def.position = body->position;
+	def.position = tbAdd(body->position, offset);
 	def.rotation = tbMakeRot(body->angle);
 	def.linearVelocity = body->linearVelocity;
 	def.angularVelocity = body->angularVelocity;
@@ -382,6 +499,7 @@ static tbBodyId CreateSceneBody(tbWorldId worldId, const SceneBody* body, const 
 	def.isBullet = body->bullet;
 	def.fixedRotation = body->fixedRotation;
 	def.isAwake = body->isAwake;
+	def.sleepThreshold = body->sleepThreshold;
 	def.name = name[0] != '\0' ? name : NULL;
 	tbBodyId bodyId = tbCreateBody(worldId, &def);
 	if (TB_IS_NULL(bodyId))
@@ -419,7 +537,7 @@ bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize)
 	for (int i = 0; i < scene->bodyCount && refused == false; ++i)
 	{
 		int shapeIndex = -1;
-		tbBodyId bodyId = CreateSceneBody(worldId, scene->bodies + i, "", &shapeIndex);
+		tbBodyId bodyId = CreateSceneBody(worldId, scene->bodies + i, tb_vec2_zero, "", &shapeIndex);
 		bodyIds[i] = bodyId;
 		refused = TB_IS_NULL(bodyId) || shapeIndex >= 0;
 		if (TB_IS_NULL(bodyId))
@@ -447,15 +565,15 @@ bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize)
 	return refused;
 }
 
-static tbJointId CreateSceneJoint(tbWorldId worldId, const SceneWorld* world, const SceneJoint* joint)
+static tbJointId CreateSceneJoint(tbWorldId worldId, const tbBodyId* bodyIds, int bodyCount, const SceneJoint* joint)
 {
-	if (joint->bodyA < 0 || joint->bodyA >= world->bodyCount || joint->bodyB < 0 || joint->bodyB >= world->bodyCount)
+	if (joint->bodyA < 0 || joint->bodyA >= bodyCount || joint->bodyB < 0 || joint->bodyB >= bodyCount)
 	{
 		return TB_NULL_JOINT_ID;
 	}
 	SceneJoint copy = *joint;
-	copy.def.base.bodyIdA = world->bodyIds[joint->bodyA];
-	copy.def.base.bodyIdB = world->bodyIds[joint->bodyB];
+	copy.def.base.bodyIdA = bodyIds[joint->bodyA];
+	copy.def.base.bodyIdB = bodyIds[joint->bodyB];
 	switch (joint->type)
 	{
 		case tb_distanceJoint:
@@ -479,6 +597,161 @@ static tbJointId CreateSceneJoint(tbWorldId worldId, const SceneWorld* world, co
 		default:
 			return TB_NULL_JOINT_ID;
 	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// Spawned instances
+
+// One ring per spawner, as large as the instances that can live at once.
+static bool AllocateSpawned(SceneWorld* world, const Scene* scene)
+{
+	if (scene->spawnerCount == 0)
+	{
+		return true;
+	}
+	world->spawned = calloc((size_t)scene->spawnerCount, sizeof(SpawnedInstances));
+	if (world->spawned == NULL)
+	{
+		return false;
+	}
+	world->spawnerCount = scene->spawnerCount;
+	for (int i = 0; i < scene->spawnerCount; ++i)
+	{
+		const SceneSpawner* spawner = scene->spawners + i;
+		const Scene* parts = scene->templates[spawner->templateIndex].parts;
+		SpawnedInstances* ring = world->spawned + i;
+		ring->schedule = *spawner;
+		ring->capacity = SceneSpawner_Capacity(spawner);
+		ring->bodiesPer = parts->bodyCount;
+		ring->jointsPer = parts->jointCount;
+		size_t bodySlots = (size_t)(ring->capacity * (ring->bodiesPer > 0 ? ring->bodiesPer : 1));
+		size_t jointSlots = (size_t)(ring->capacity * (ring->jointsPer > 0 ? ring->jointsPer : 1));
+		ring->bodyIds = calloc(bodySlots, sizeof(tbBodyId));
+		ring->jointIds = calloc(jointSlots, sizeof(tbJointId));
+		if (ring->bodyIds == NULL || ring->jointIds == NULL)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+// Joints first, then bodies, as Box2D v3's rain destroys a human.
+static void DestroyInstance(SpawnedInstances* ring, int slot)
+{
+	tbJointId* joints = ring->jointIds + slot * ring->jointsPer;
+	for (int i = 0; i < ring->jointsPer; ++i)
+	{
+		if (tbJoint_IsValid(joints[i]))
+		{
+			tbDestroyJoint(joints[i]);
+		}
+	}
+	tbBodyId* bodies = ring->bodyIds + slot * ring->bodiesPer;
+	for (int i = 0; i < ring->bodiesPer; ++i)
+	{
+		if (tbBody_IsValid(bodies[i]))
+		{
+			tbDestroyBody(bodies[i]);
+		}
+	}
+}
+
+// The template's bodies (moved by offset) and joints into the ring's slot. Spawned bodies have
+// no name (the library does not copy names) and no drive.
+static void BuildInstance(tbWorldId worldId, const Scene* parts, tbVec2 offset, SpawnedInstances* ring, int slot)
+{
+	tbBodyId* bodies = ring->bodyIds + slot * ring->bodiesPer;
+	for (int i = 0; i < ring->bodiesPer; ++i)
+	{
+		int refusedShape = -1;
+		bodies[i] = CreateSceneBody(worldId, parts->bodies + i, offset, "", &refusedShape);
+	}
+	tbJointId* joints = ring->jointIds + slot * ring->jointsPer;
+	for (int i = 0; i < ring->jointsPer; ++i)
+	{
+		joints[i] = CreateSceneJoint(worldId, bodies, ring->bodiesPer, parts->joints + i);
+	}
+}
+
+// The spawns of the coming step, spawner by spawner: destroy the instance whose lifetime ends,
+// then the oldest when the ring is full (a no-op when it is already gone), then build.
+static void RunSpawners(SceneWorld* world, const Scene* scene)
+{
+	for (int i = 0; i < world->spawnerCount; ++i)
+	{
+		const SceneSpawner* spawner = scene->spawners + i;
+		SpawnedInstances* ring = world->spawned + i;
+		int expired = SceneSpawner_ExpiryAt(spawner, world->stepIndex);
+		if (expired >= 0 && expired < ring->built && expired >= ring->built - ring->capacity)
+		{
+			DestroyInstance(ring, expired % ring->capacity);
+		}
+		int instance = SceneSpawner_InstanceAt(spawner, world->stepIndex);
+		if (instance < 0)
+		{
+			continue;
+		}
+		int slot = instance % ring->capacity;
+		if (instance >= ring->capacity)
+		{
+			DestroyInstance(ring, slot);
+		}
+		const Scene* parts = scene->templates[spawner->templateIndex].parts;
+		BuildInstance(world->worldId, parts, SceneSpawner_Offset(spawner, instance), ring, slot);
+		ring->built = instance + 1;
+	}
+}
+
+const tbBodyId* SceneWorld_InstanceBodies(const SceneWorld* world, int spawner, int instance)
+{
+	if (spawner < 0 || spawner >= world->spawnerCount)
+	{
+		return NULL;
+	}
+	const SpawnedInstances* ring = world->spawned + spawner;
+	if (instance < 0 || instance >= ring->built || instance < ring->built - ring->capacity)
+	{
+		return NULL;
+	}
+	const SceneSpawner* schedule = &ring->schedule;
+	int builtBefore = schedule->firstStep + instance * schedule->interval;
+	if (schedule->lifetime > 0 && builtBefore + schedule->lifetime < world->stepIndex)
+	{
+		return NULL; // destroyed before step builtBefore + lifetime, which has been taken
+	}
+	return ring->bodyIds + (instance % ring->capacity) * ring->bodiesPer;
+}
+
+int SceneWorld_CollectBodies(const SceneWorld* world, tbBodyId* out, int capacity)
+{
+	int count = 0;
+	for (int i = 0; i < world->bodyCount && count < capacity; ++i)
+	{
+		out[count++] = world->bodyIds[i];
+	}
+	for (int s = 0; s < world->spawnerCount; ++s)
+	{
+		const SpawnedInstances* ring = world->spawned + s;
+		for (int i = 0; i < ring->capacity * ring->bodiesPer && count < capacity; ++i)
+		{
+			if (tbBody_IsValid(ring->bodyIds[i]))
+			{
+				out[count++] = ring->bodyIds[i];
+			}
+		}
+	}
+	return count;
+}
+
+int SceneWorld_BodyCapacity(const SceneWorld* world)
+{
+	int capacity = world->bodyCount;
+	for (int s = 0; s < world->spawnerCount; ++s)
+	{
+		capacity += world->spawned[s].capacity * world->spawned[s].bodiesPer;
+	}
+	return capacity > 0 ? capacity : 1;
 }
 
 SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
@@ -505,7 +778,8 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 		memcpy(world.names[i], scene->bodies[i].name, SCENE_NAME_SIZE);
 		world.names[i][SCENE_NAME_SIZE - 1] = '\0';
 		int refusedShape = -1; // scene files are checked when loaded (Scene_FindRefusedItem)
-		world.bodyIds[i] = CreateSceneBody(world.worldId, scene->bodies + i, world.names[i], &refusedShape);
+		world.bodyIds[i] =
+			CreateSceneBody(world.worldId, scene->bodies + i, tb_vec2_zero, world.names[i], &refusedShape);
 		if (scene->bodies[i].drive.enabled)
 		{
 			world.drivenBodies[world.drivenCount++] = i;
@@ -520,11 +794,15 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 	world.jointCount = scene->jointCount;
 	for (int i = 0; i < scene->jointCount; ++i)
 	{
-		world.jointIds[i] = CreateSceneJoint(world.worldId, &world, scene->joints + i);
+		world.jointIds[i] = CreateSceneJoint(world.worldId, world.bodyIds, world.bodyCount, scene->joints + i);
 	}
 	for (int i = 0; i < scene->chainCount; ++i)
 	{
 		CreateSceneChain(world.worldId, world.bodyIds, world.bodyCount, scene->chains + i);
+	}
+	if (AllocateSpawned(&world, scene) == false)
+	{
+		SceneWorld_Destroy(&world);
 	}
 	return world;
 }
@@ -537,6 +815,7 @@ SceneWorld Scene_BuildWorld(const Scene* scene, const SceneOverrides* overrides)
 
 bool SceneWorld_Step(SceneWorld* world, const Scene* scene, int subSteps)
 {
+	RunSpawners(world, scene);
 	for (int i = 0; i < world->drivenCount; ++i)
 	{
 		int index = world->drivenBodies[i];
@@ -560,6 +839,12 @@ void SceneWorld_Destroy(SceneWorld* world)
 	free(world->jointIds);
 	free(world->names);
 	free(world->drivenBodies);
+	for (int i = 0; i < world->spawnerCount; ++i)
+	{
+		free(world->spawned[i].bodyIds);
+		free(world->spawned[i].jointIds);
+	}
+	free(world->spawned);
 	memset(world, 0, sizeof(*world));
 }
 
@@ -569,9 +854,11 @@ void SceneWorld_Destroy(SceneWorld* world)
 float SceneWorld_KineticEnergy(const SceneWorld* world)
 {
 	double energy = 0.0;
-	for (int i = 0; i < world->bodyCount; ++i)
+	tbBodyId* ids = malloc(sizeof(tbBodyId) * (size_t)SceneWorld_BodyCapacity(world));
+	int count = ids != NULL ? SceneWorld_CollectBodies(world, ids, SceneWorld_BodyCapacity(world)) : 0;
+	for (int i = 0; i < count; ++i)
 	{
-		tbBodyId id = world->bodyIds[i];
+		tbBodyId id = ids[i];
 		if (tbBody_IsValid(id) == false || tbBody_GetType(id) != tb_dynamicBody)
 		{
 			continue;
@@ -581,20 +868,24 @@ float SceneWorld_KineticEnergy(const SceneWorld* world)
 		energy += 0.5 * tbBody_GetMass(id) * tbDot(v, v);
 		energy += 0.5 * tbBody_GetRotationalInertia(id) * w * w;
 	}
+	free(ids);
 	return (float)energy;
 }
 
 int SceneWorld_AwakeCount(const SceneWorld* world)
 {
 	int count = 0;
-	for (int i = 0; i < world->bodyCount; ++i)
+	tbBodyId* ids = malloc(sizeof(tbBodyId) * (size_t)SceneWorld_BodyCapacity(world));
+	int bodyCount = ids != NULL ? SceneWorld_CollectBodies(world, ids, SceneWorld_BodyCapacity(world)) : 0;
+	for (int i = 0; i < bodyCount; ++i)
 	{
-		tbBodyId id = world->bodyIds[i];
+		tbBodyId id = ids[i];
 		if (tbBody_IsValid(id) && tbBody_GetType(id) != tb_staticBody && tbBody_IsAwake(id))
 		{
 			count += 1;
 		}
 	}
+	free(ids);
 	return count;
 }
 
@@ -682,14 +973,17 @@ float SceneWorld_LargestPenetration(const SceneWorld* world)
 	PenetrationQuery query;
 	memset(&query, 0, sizeof(query));
 	query.deepest = 0.0f;
-	for (int i = 0; i < world->bodyCount; ++i)
+	tbBodyId* ids = malloc(sizeof(tbBodyId) * (size_t)SceneWorld_BodyCapacity(world));
+	int count = ids != NULL ? SceneWorld_CollectBodies(world, ids, SceneWorld_BodyCapacity(world)) : 0;
+	for (int i = 0; i < count; ++i)
 	{
-		tbBodyId id = world->bodyIds[i];
+		tbBodyId id = ids[i];
 		if (tbBody_IsValid(id) && tbBody_GetType(id) != tb_staticBody)
 		{
 			MeasureBodyPenetration(world->worldId, id, &query);
 		}
 	}
+	free(ids);
 	return -query.deepest;
 }
 

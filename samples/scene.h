@@ -67,6 +67,7 @@ typedef struct SceneBody
 	bool bullet;
 	bool fixedRotation; ///< default false (tbBodyDef::fixedRotation): a character that stays upright
 	bool isAwake; ///< default true
+	float sleepThreshold; ///< m/s, default TB_LINEAR_SLEEP_TOLERANCE (tbBodyDef::sleepThreshold)
 	SceneDrive drive;
 	SceneShape* shapes;
 	int shapeCount;
@@ -108,6 +109,37 @@ typedef struct SceneChain
 	float restitution; ///< default 0
 } SceneChain;
 
+struct Scene;
+
+/// A group of bodies and joints built again and again by a spawner (Box2D v3's rain drops its
+/// humans so): a scene of its own whose bodies and joints are placed relative to the spawn
+/// point; its gravity, steps and methods are unused, and it may not hold chains or templates.
+typedef struct SceneTemplate
+{
+	char name[SCENE_NAME_SIZE];
+	struct Scene* parts;
+} SceneTemplate;
+
+/// A spawn schedule: instance n (n = 0, 1, …) of template `templateIndex` is built before step
+/// firstStep + n·interval, its bodies translated by origin + (n mod slotCount)·slotStep, until
+/// `count` instances have been built (count 0: no end). With lifetime L > 0 an instance built
+/// before step s is destroyed (its joints, then its bodies) before step s + L. With keep > 0 at
+/// most `keep` instances live at once: building instance n first destroys instance n − keep, so a
+/// new instance takes the slot of the oldest. Within a step, spawners act in order, each
+/// destroying before it builds; everything happens before the world steps.
+typedef struct SceneSpawner
+{
+	int templateIndex; ///< index in Scene::templates
+	int firstStep;	   ///< ≥ 0
+	int interval;	   ///< steps between two spawns, ≥ 1
+	int count;		   ///< ≥ 0, 0 = no end (then keep or lifetime must be > 0)
+	int keep;		   ///< ≥ 0, 0 = no recycling
+	int lifetime;	   ///< steps, ≥ 0, 0 = an instance lives until recycled or the end
+	int slotCount;	   ///< ≥ 1 spawn points, used in turn
+	tbVec2 origin;	   ///< m, the first spawn point
+	tbVec2 slotStep;   ///< m, from one spawn point to the next
+} SceneSpawner;
+
 typedef struct Scene
 {
 	tbVec2 gravity;	  ///< default (0, −10)
@@ -125,6 +157,12 @@ typedef struct Scene
 	SceneChain* chains;
 	int chainCount;
 	int chainCapacity;
+	SceneTemplate* templates;
+	int templateCount;
+	int templateCapacity;
+	SceneSpawner* spawners;
+	int spawnerCount;
+	int spawnerCapacity;
 } Scene;
 
 /// Empty scene with the defaults above.
@@ -163,6 +201,34 @@ void Scene_DefaultJointDef(tbJointType type, SceneJoint* joint);
 /// the next chain is added).
 SceneChain* Scene_AddChain(Scene* scene, int bodyIndex, const tbVec2* points, int count, bool isLoop);
 
+/// Append an empty template (its parts a new scene to fill with Scene_AddBody, Scene_AddJoint…);
+/// returns its index.
+int Scene_AddTemplate(Scene* scene, const char* name);
+
+/// Index of the template called name, −1 when there is none.
+int Scene_FindTemplate(const Scene* scene, const char* name);
+
+/// Append a spawner of template templateIndex starting at step 0 every `interval` steps, one
+/// spawn point (origin), no end and no recycling; returns it (valid until the next is added).
+SceneSpawner* Scene_AddSpawner(Scene* scene, int templateIndex, int interval, tbVec2 origin);
+
+/// Instance built before step `step` by the spawner, or −1 when it builds none then.
+int SceneSpawner_InstanceAt(const SceneSpawner* spawner, int step);
+
+/// Instance whose lifetime ends before step `step` (built before step − lifetime), or −1.
+int SceneSpawner_ExpiryAt(const SceneSpawner* spawner, int step);
+
+/// Most instances alive at once (keep, count, lifetime / interval rounded up: the least that
+/// applies); 1 when nothing bounds them (scene files refuse such a spawner).
+int SceneSpawner_Capacity(const SceneSpawner* spawner);
+
+/// Translation of instance n's bodies.
+tbVec2 SceneSpawner_Offset(const SceneSpawner* spawner, int instance);
+
+/// Bodies and joints alive after `steps` steps (spawns before steps 0 … steps − 1 done), counted
+/// in closed form from the schedule: the scene's own plus every living instance's.
+void Scene_LiveCounts(const Scene* scene, int steps, int* bodyCount, int* jointCount);
+
 /// Total shape count over every body.
 int Scene_ShapeCount(const Scene* scene);
 
@@ -195,6 +261,19 @@ typedef struct SceneOverrides
 /// World definition for the scene: defaults, then the scene's gravity, sleep and methods, then overrides.
 tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* overrides);
 
+/// The living instances of one spawner in a built world: a ring of SceneSpawner_Capacity
+/// instances, each `bodiesPer` body ids and `jointsPer` joint ids.
+typedef struct SpawnedInstances
+{
+	tbBodyId* bodyIds;	 ///< capacity × bodiesPer
+	tbJointId* jointIds; ///< capacity × jointsPer
+	int bodiesPer;
+	int jointsPer;
+	int capacity;
+	int built; ///< instances built so far (instance n sits in slot n mod capacity)
+	SceneSpawner schedule;
+} SpawnedInstances;
+
 /// A built world and the mapping from scene body index to body id.
 typedef struct SceneWorld
 {
@@ -207,6 +286,8 @@ typedef struct SceneWorld
 	int* drivenBodies;				///< scene indices of the driven bodies (SceneDrive)
 	int drivenCount;
 	int stepIndex; ///< steps taken by SceneWorld_Step
+	SpawnedInstances* spawned; ///< one per scene spawner
+	int spawnerCount;
 } SceneWorld;
 
 /// Build a world from the scene. overrides may be NULL. worldId is null on failure.
@@ -219,7 +300,18 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def);
 /// path ("bodies[2].shapes[0]") in item. The library's error hook has then received the reason.
 bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize);
 
-/// One step of the scene: the driven bodies get their target for this step, then the world
+/// Body ids of instance n of spawner s (bodiesPer of them, in template order), or NULL when the
+/// instance is not alive (not built yet, recycled or past its lifetime: copy ids to keep them).
+const tbBodyId* SceneWorld_InstanceBodies(const SceneWorld* world, int spawner, int instance);
+
+/// Every living body of the world, the scene's first (scene order), then the spawned ones
+/// (spawner by spawner, slot by slot): writes at most capacity ids into out, returns how many.
+/// SceneWorld_BodyCapacity bounds the count.
+int SceneWorld_CollectBodies(const SceneWorld* world, tbBodyId* out, int capacity);
+int SceneWorld_BodyCapacity(const SceneWorld* world);
+
+/// One step of the scene: the spawners destroy and build their instances for this step (see
+/// SceneSpawner), the driven bodies get their target for this step, then the world
 /// steps by the scene's time step with subSteps sub-steps. Returns tbWorld_Step's answer.
 bool SceneWorld_Step(SceneWorld* world, const Scene* scene, int subSteps);
 

@@ -684,6 +684,8 @@ static bool ReadBodyFields(Parser* parser, const cJSON* item, const char* path, 
 		   ReadFloat(parser, item, path, "angular_damping", &body->angularDamping, false) &&
 		   CheckNonNegative(parser, path, "angular_damping", body->angularDamping) &&
 		   ReadFloat(parser, item, path, "gravity_scale", &body->gravityScale, false) &&
+		   ReadFloat(parser, item, path, "sleep_threshold", &body->sleepThreshold, false) &&
+		   CheckNonNegative(parser, path, "sleep_threshold", body->sleepThreshold) &&
 		   ReadBool(parser, item, path, "bullet", &body->bullet) &&
 		   ReadBool(parser, item, path, "fixed_rotation", &body->fixedRotation) &&
 		   ReadBool(parser, item, path, "awake", &body->isAwake) &&
@@ -695,7 +697,7 @@ static bool ReadBody(Parser* parser, const cJSON* item, const char* path, Scene*
 	static const char* const keys[] = {"type",			 "name",		   "position",		"angle",
 									   "linear_velocity", "angular_velocity", "linear_damping", "angular_damping",
 									   "gravity_scale",	 "bullet",		   "awake",			"drive", "fixed_rotation",
-									   "shapes",		 NULL};
+									   "sleep_threshold", "shapes",		 NULL};
 	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false)
 	{
 		return false;
@@ -710,7 +712,8 @@ static bool ReadBody(Parser* parser, const cJSON* item, const char* path, Scene*
 	return ReadShapes(parser, Find(item, "shapes"), child, scene, index);
 }
 
-static bool ReadBodies(Parser* parser, const cJSON* item, Scene* scene)
+// The bodies of the scene (path "bodies") or of a template ("templates[i].bodies").
+static bool ReadBodies(Parser* parser, const cJSON* item, const char* path, Scene* scene)
 {
 	if (item == NULL)
 	{
@@ -718,18 +721,18 @@ static bool ReadBodies(Parser* parser, const cJSON* item, Scene* scene)
 	}
 	if (cJSON_IsArray(item) == false)
 	{
-		return Fail(parser, "bodies", "must be an array of bodies");
+		return Fail(parser, path, "must be an array of bodies");
 	}
 	int count = cJSON_GetArraySize(item);
 	if (count > SCENE_MAX_BODIES)
 	{
-		return Fail(parser, "bodies", "at most %d bodies (has %d)", SCENE_MAX_BODIES, count);
+		return Fail(parser, path, "at most %d bodies (has %d)", SCENE_MAX_BODIES, count);
 	}
 	int i = 0;
 	for (const cJSON* body = item->child; body != NULL; body = body->next, ++i)
 	{
 		char child[PATH_SIZE];
-		IndexPath(child, "bodies", i);
+		IndexPath(child, path, i);
 		if (ReadBody(parser, body, child, scene) == false)
 		{
 			return false;
@@ -1069,7 +1072,8 @@ static bool ReadJoint(Parser* parser, const cJSON* item, const char* path, Scene
 	return CheckJointRanges(parser, path, joint);
 }
 
-static bool ReadJoints(Parser* parser, const cJSON* item, Scene* scene)
+// The joints of the scene (path "joints") or of a template ("templates[i].joints").
+static bool ReadJoints(Parser* parser, const cJSON* item, const char* path, Scene* scene)
 {
 	if (item == NULL)
 	{
@@ -1077,13 +1081,13 @@ static bool ReadJoints(Parser* parser, const cJSON* item, Scene* scene)
 	}
 	if (cJSON_IsArray(item) == false)
 	{
-		return Fail(parser, "joints", "must be an array of joints");
+		return Fail(parser, path, "must be an array of joints");
 	}
 	int i = 0;
 	for (const cJSON* joint = item->child; joint != NULL; joint = joint->next, ++i)
 	{
 		char child[PATH_SIZE];
-		IndexPath(child, "joints", i);
+		IndexPath(child, path, i);
 		if (ReadJoint(parser, joint, child, scene) == false)
 		{
 			return false;
@@ -1174,10 +1178,187 @@ static bool ReadChains(Parser* parser, const cJSON* item, Scene* scene)
 	return true;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Spawn schedules: templates {"name", "bodies", "joints"} (bodies placed relative to the spawn
+// point, joints between the template's own bodies) and spawners {"template", "first_step",
+// "interval", "count", "keep", "lifetime", "slots", "origin", "slot_step"} (see SceneSpawner).
+
+// Spawned bodies are not driven (SceneWorld_Step drives the scene's bodies only).
+static bool CheckTemplateBodies(Parser* parser, const char* path, const Scene* parts)
+{
+	for (int i = 0; i < parts->bodyCount; ++i)
+	{
+		if (parts->bodies[i].drive.enabled)
+		{
+			char child[PATH_SIZE], body[PATH_SIZE];
+			IndexPath(body, path, i);
+			KeyPath(child, body, "drive");
+			return Fail(parser, child, "not allowed in a template (spawned bodies are not driven)");
+		}
+	}
+	return true;
+}
+
+static bool ReadTemplate(Parser* parser, const cJSON* item, const char* path, Scene* scene)
+{
+	static const char* const keys[] = {"name", "bodies", "joints", NULL};
+	const char* name = NULL;
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false ||
+		ReadString(parser, item, path, "name", &name) == false)
+	{
+		return false;
+	}
+	char child[PATH_SIZE];
+	KeyPath(child, path, "name");
+	if (name == NULL)
+	{
+		return Missing(parser, path, "name");
+	}
+	if (name[0] == '\0' || strlen(name) >= SCENE_NAME_SIZE)
+	{
+		return Fail(parser, child, "must be 1..%d characters", SCENE_NAME_SIZE - 1);
+	}
+	if (Scene_FindTemplate(scene, name) >= 0)
+	{
+		return Fail(parser, child, "a template called \"%s\" comes earlier (names must differ)", name);
+	}
+	int index = Scene_AddTemplate(scene, name); // may move scene->templates
+	Scene* parts = scene->templates[index].parts;
+	char bodies[PATH_SIZE], joints[PATH_SIZE];
+	KeyPath(bodies, path, "bodies");
+	KeyPath(joints, path, "joints");
+	return ReadBodies(parser, Find(item, "bodies"), bodies, parts) && CheckTemplateBodies(parser, bodies, parts) &&
+		   ReadJoints(parser, Find(item, "joints"), joints, parts);
+}
+
+static bool ReadTemplates(Parser* parser, const cJSON* item, Scene* scene)
+{
+	if (item == NULL)
+	{
+		return true;
+	}
+	if (cJSON_IsArray(item) == false)
+	{
+		return Fail(parser, "templates", "must be an array of templates");
+	}
+	int i = 0;
+	for (const cJSON* entry = item->child; entry != NULL; entry = entry->next, ++i)
+	{
+		char child[PATH_SIZE];
+		IndexPath(child, "templates", i);
+		if (ReadTemplate(parser, entry, child, scene) == false)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+static bool ReadSpawnerTemplate(Parser* parser, const cJSON* item, const char* path, const Scene* scene, int* index)
+{
+	const char* name = NULL;
+	if (ReadString(parser, item, path, "template", &name) == false)
+	{
+		return false;
+	}
+	if (name == NULL)
+	{
+		return Missing(parser, path, "template");
+	}
+	*index = Scene_FindTemplate(scene, name);
+	char child[PATH_SIZE];
+	KeyPath(child, path, "template");
+	return *index >= 0 ? true : Fail(parser, child, "no template called \"%s\" (see \"templates\")", name);
+}
+
+// An untrusted file may not pile up instances without end, nor keep more bodies alive than a
+// scene may hold.
+static bool CheckSpawnerBounds(Parser* parser, const char* path, const SceneSpawner* spawner, const Scene* parts)
+{
+	if (spawner->count == 0 && spawner->keep == 0 && spawner->lifetime == 0)
+	{
+		char child[PATH_SIZE];
+		KeyPath(child, path, "keep");
+		return Fail(parser, child, "must be > 0 when count and lifetime are 0 (else instances pile up without end)");
+	}
+	int live = SceneSpawner_Capacity(spawner);
+	if ((double)live * (double)parts->bodyCount > (double)SCENE_MAX_BODIES)
+	{
+		return Fail(parser, path, "keeps up to %d instances of %d bodies alive: at most %d bodies", live,
+					parts->bodyCount, SCENE_MAX_BODIES);
+	}
+	return true;
+}
+
+static bool ReadSpawner(Parser* parser, const cJSON* item, const char* path, Scene* scene)
+{
+	static const char* const keys[] = {"template", "first_step", "interval",  "count",	"keep",
+									   "lifetime", "slots",		 "origin",	  "slot_step", NULL};
+	int templateIndex = -1;
+	if (RequireObject(parser, item, path) == false || CheckKeys(parser, item, path, keys) == false ||
+		ReadSpawnerTemplate(parser, item, path, scene, &templateIndex) == false)
+	{
+		return false;
+	}
+	if (Find(item, "interval") == NULL)
+	{
+		return Missing(parser, path, "interval");
+	}
+	SceneSpawner* spawner = Scene_AddSpawner(scene, templateIndex, 1, tb_vec2_zero);
+	return ReadInt(parser, item, path, "first_step", 0, SCENE_MAX_STEPS, &spawner->firstStep) &&
+		   ReadInt(parser, item, path, "interval", 1, SCENE_MAX_STEPS, &spawner->interval) &&
+		   ReadInt(parser, item, path, "count", 0, SCENE_MAX_STEPS, &spawner->count) &&
+		   ReadInt(parser, item, path, "keep", 0, SCENE_MAX_STEPS, &spawner->keep) &&
+		   ReadInt(parser, item, path, "lifetime", 0, SCENE_MAX_STEPS, &spawner->lifetime) &&
+		   ReadInt(parser, item, path, "slots", 1, SCENE_MAX_STEPS, &spawner->slotCount) &&
+		   ReadVec2(parser, item, path, "origin", &spawner->origin, false) &&
+		   ReadVec2(parser, item, path, "slot_step", &spawner->slotStep, false) &&
+		   CheckSpawnerBounds(parser, path, spawner, scene->templates[templateIndex].parts);
+}
+
+static bool ReadSpawners(Parser* parser, const cJSON* item, Scene* scene)
+{
+	if (item == NULL)
+	{
+		return true;
+	}
+	if (cJSON_IsArray(item) == false)
+	{
+		return Fail(parser, "spawners", "must be an array of spawners");
+	}
+	int i = 0;
+	for (const cJSON* entry = item->child; entry != NULL; entry = entry->next, ++i)
+	{
+		char child[PATH_SIZE];
+		IndexPath(child, "spawners", i);
+		if (ReadSpawner(parser, entry, child, scene) == false)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+// Each template's parts must build too; the message names the template's item.
+static bool CheckTemplatesBuild(Parser* parser, const Scene* scene)
+{
+	for (int i = 0; i < scene->templateCount; ++i)
+	{
+		char item[PATH_SIZE], path[PATH_SIZE + 32];
+		if (Scene_FindRefusedItem(scene->templates[i].parts, item, (int)sizeof(item)))
+		{
+			snprintf(path, sizeof(path), "templates[%d].%s", i, item);
+			return Fail(parser, path, "refused by the library (see its message above: size, thinness, density or "
+									  "position)");
+		}
+	}
+	return true;
+}
+
 static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
 {
-	static const char* const keys[] = {"gravity", "time_step", "sub_steps", "steps", "enable_sleep",
-									   "methods", "bodies",	   "joints",	"chains", NULL};
+	static const char* const keys[] = {"gravity", "time_step", "sub_steps", "steps",	 "enable_sleep", "methods",
+									   "bodies",  "joints",	   "chains",	"templates", "spawners",	 NULL};
 	if (cJSON_IsObject(root) == false)
 	{
 		return Fail(parser, "", "scene: must be a JSON object");
@@ -1191,8 +1372,11 @@ static bool ReadScene(Parser* parser, const cJSON* root, Scene* scene)
 		   ReadInt(parser, root, "", "steps", 0, SCENE_MAX_STEPS, &scene->steps) &&
 		   ReadBool(parser, root, "", "enable_sleep", &scene->enableSleep) &&
 		   (methods == NULL || ReadMethods(parser, methods, &scene->methods)) &&
-		   ReadBodies(parser, Find(root, "bodies"), scene) && ReadJoints(parser, Find(root, "joints"), scene) &&
-		   ReadChains(parser, Find(root, "chains"), scene) && CheckBuilds(parser, scene);
+		   ReadBodies(parser, Find(root, "bodies"), "bodies", scene) &&
+		   ReadJoints(parser, Find(root, "joints"), "joints", scene) &&
+		   ReadChains(parser, Find(root, "chains"), scene) && ReadTemplates(parser, Find(root, "templates"), scene) &&
+		   ReadSpawners(parser, Find(root, "spawners"), scene) && CheckBuilds(parser, scene) &&
+		   CheckTemplatesBuild(parser, scene);
 }
 
 // Line and column (from 1) of a position in text, for syntax errors.
@@ -1533,6 +1717,10 @@ static void AppendBodyExtras(TextBuffer* buffer, const SceneBody* body)
 	{
 		Append(buffer, ", \"gravity_scale\": %.9g", (double)body->gravityScale);
 	}
+	if (body->sleepThreshold != TB_LINEAR_SLEEP_TOLERANCE)
+	{
+		Append(buffer, ", \"sleep_threshold\": %.9g", (double)body->sleepThreshold);
+	}
 	if (body->bullet)
 	{
 		Append(buffer, ", \"bullet\": true");
@@ -1553,9 +1741,10 @@ static void AppendBodyExtras(TextBuffer* buffer, const SceneBody* body)
 	}
 }
 
-static void AppendBody(TextBuffer* buffer, const SceneBody* body, int index)
+// prefix: "" for the scene's bodies, "templates[i]." for a template's (for messages).
+static void AppendBody(TextBuffer* buffer, const char* prefix, const SceneBody* body, int index)
 {
-	snprintf(buffer->item, sizeof(buffer->item), "bodies[%d]", index);
+	snprintf(buffer->item, sizeof(buffer->item), "%sbodies[%d]", prefix, index);
 	Append(buffer, "    {\"type\": \"%s\"", Scene_BodyTypeName(body->type));
 	if (body->name[0] != '\0')
 	{
@@ -1571,7 +1760,7 @@ static void AppendBody(TextBuffer* buffer, const SceneBody* body, int index)
 	for (int i = 0; i < body->shapeCount; ++i)
 	{
 		Append(buffer, i > 0 ? ",\n        " : "\n        ");
-		snprintf(buffer->item, sizeof(buffer->item), "bodies[%d].shapes[%d]", index, i);
+		snprintf(buffer->item, sizeof(buffer->item), "%sbodies[%d].shapes[%d]", prefix, index, i);
 		AppendShape(buffer, body->shapes + i);
 	}
 	Append(buffer, body->shapeCount > 0 ? "\n      ]}" : "]}");
@@ -1676,6 +1865,73 @@ static void AppendJoint(TextBuffer* buffer, const SceneJoint* joint)
 	Append(buffer, "}");
 }
 
+// `"bodies": […]` is already open; writes the bodies, then `, "joints": […]` when there are any.
+static void AppendBodiesAndJoints(TextBuffer* buffer, const char* prefix, const Scene* scene)
+{
+	Append(buffer, "[");
+	for (int i = 0; i < scene->bodyCount; ++i)
+	{
+		Append(buffer, i > 0 ? ",\n" : "\n");
+		AppendBody(buffer, prefix, scene->bodies + i, i);
+	}
+	Append(buffer, scene->bodyCount > 0 ? "\n  ]" : "]");
+	if (scene->jointCount > 0)
+	{
+		Append(buffer, ",\n  \"joints\": [");
+		for (int i = 0; i < scene->jointCount; ++i)
+		{
+			Append(buffer, i > 0 ? ",\n" : "\n");
+			AppendJoint(buffer, scene->joints + i);
+		}
+		Append(buffer, "\n  ]");
+	}
+}
+
+static void AppendTemplates(TextBuffer* buffer, const Scene* scene)
+{
+	if (scene->templateCount == 0)
+	{
+		return;
+	}
+	Append(buffer, ",\n  \"templates\": [");
+	for (int i = 0; i < scene->templateCount; ++i)
+	{
+		char prefix[32];
+		snprintf(prefix, sizeof(prefix), "templates[%d].", i);
+		Append(buffer, i > 0 ? ",\n  {\"name\": " : "\n  {\"name\": ");
+		AppendString(buffer, scene->templates[i].name);
+		Append(buffer, ",\n  \"bodies\": ");
+		AppendBodiesAndJoints(buffer, prefix, scene->templates[i].parts);
+		Append(buffer, "}");
+	}
+	Append(buffer, "\n  ]");
+}
+
+static void AppendSpawners(TextBuffer* buffer, const Scene* scene)
+{
+	if (scene->spawnerCount == 0)
+	{
+		return;
+	}
+	Append(buffer, ",\n  \"spawners\": [");
+	for (int i = 0; i < scene->spawnerCount; ++i)
+	{
+		const SceneSpawner* spawner = scene->spawners + i;
+		snprintf(buffer->item, sizeof(buffer->item), "spawners[%d]", i);
+		Append(buffer, i > 0 ? ",\n    {\"template\": " : "\n    {\"template\": ");
+		AppendString(buffer, scene->templates[spawner->templateIndex].name);
+		Append(buffer, ", \"first_step\": %d, \"interval\": %d, \"count\": %d, \"keep\": %d, \"lifetime\": %d",
+			   spawner->firstStep, spawner->interval, spawner->count, spawner->keep, spawner->lifetime);
+		Append(buffer, ", \"slots\": %d", spawner->slotCount);
+		Append(buffer, ", \"origin\": ");
+		AppendVec2(buffer, spawner->origin);
+		Append(buffer, ", \"slot_step\": ");
+		AppendVec2(buffer, spawner->slotStep);
+		Append(buffer, "}");
+	}
+	Append(buffer, "\n  ]");
+}
+
 char* SceneFile_Export(const Scene* scene, char* error, int errorSize)
 {
 	TextBuffer buffer;
@@ -1686,23 +1942,8 @@ char* SceneFile_Export(const Scene* scene, char* error, int errorSize)
 	Append(&buffer, ",\n  \"time_step\": %.9g,\n  \"sub_steps\": %d,\n  \"steps\": %d,\n  \"enable_sleep\": %s,\n",
 		   (double)scene->timeStep, scene->subSteps, scene->steps, scene->enableSleep ? "true" : "false");
 	AppendMethods(&buffer, &scene->methods);
-	Append(&buffer, "  \"bodies\": [");
-	for (int i = 0; i < scene->bodyCount; ++i)
-	{
-		Append(&buffer, i > 0 ? ",\n" : "\n");
-		AppendBody(&buffer, scene->bodies + i, i);
-	}
-	Append(&buffer, scene->bodyCount > 0 ? "\n  ]" : "]");
-	if (scene->jointCount > 0)
-	{
-		Append(&buffer, ",\n  \"joints\": [");
-		for (int i = 0; i < scene->jointCount; ++i)
-		{
-			Append(&buffer, i > 0 ? ",\n" : "\n");
-			AppendJoint(&buffer, scene->joints + i);
-		}
-		Append(&buffer, "\n  ]");
-	}
+	Append(&buffer, "  \"bodies\": ");
+	AppendBodiesAndJoints(&buffer, "", scene);
 	if (scene->chainCount > 0)
 	{
 		Append(&buffer, ",\n  \"chains\": [");
@@ -1713,6 +1954,8 @@ char* SceneFile_Export(const Scene* scene, char* error, int errorSize)
 		}
 		Append(&buffer, "\n  ]");
 	}
+	AppendTemplates(&buffer, scene);
+	AppendSpawners(&buffer, scene);
 	Append(&buffer, "\n}\n");
 	if (buffer.failed)
 	{

@@ -45,6 +45,9 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 	echo "== jointed scenes (every peer builds the joints; 120 steps)"
 	"$BENCH" joint_grid rain_ragdolls --peers --interleave --repeat "$REPEAT" --steps 120 --csv "$RESULTS/joints.csv" \
 		| grep -v '^Initializing cpSpace\|^Compile with' | tee "$RESULTS/joints.txt"
+	echo "== exact rain (Box2D v3's rain benchmark: humans spawned every 8 steps; 2.4.1 and Chipmunk refuse it)"
+	"$BENCH" rain --peer box2d-3 --interleave --repeat "$REPEAT" --steps 600 --csv "$RESULTS/rain.csv" \
+		| tee "$RESULTS/rain.txt"
 	echo "== sleeping bodies"
 	"$BENCH" sleep --repeat "$REPEAT" --csv "$RESULTS/sleep.csv"
 	echo "== solver chart"

@@ -1,7 +1,7 @@
 // Determinism: the same scene gives bit-identical trajectories whatever the broad phase (every
 // method reports the same pairs in the same order), and stepping the same scene twice gives the
-// same bits. The scene is the shared catalogue's rain of mixed shapes, so contacts begin and end
-// throughout.
+// same bits. The scene is the shared catalogue's rain of mixed shapes (rain_rigid), so contacts
+// begin and end throughout.
 #include <criterion/criterion.h>
 
 #include "catalogue.h"
@@ -34,7 +34,7 @@ static uint64_t HashWorld(const SceneWorld* sw)
 
 static uint64_t RunRain(tbBroadPhaseMethod method, int steps, int* contacts)
 {
-	Scene* scene = Catalogue_Build("rain");
+	Scene* scene = Catalogue_Build("rain_rigid");
 	cr_assert_not_null(scene);
 	SceneOverrides overrides;
 	memset(&overrides, 0, sizeof(overrides));
@@ -170,12 +170,12 @@ static uint64_t RunOnWorkers(const char* name, int workers, int steps, int* even
 
 // The step on 1, 2, 4 and 8 workers gives the same bits: every unit of parallel work writes only
 // its own data (contacts, bodies, blocks of one colour), and everything appended or counted is
-// done afterwards in a fixed order. Scenes: rain (shapes of every kind, joints off), ragdolls
+// done afterwards in a fixed order. Scenes: rain_rigid (shapes of every kind, joints off), ragdolls
 // (small mechanisms: joint trees, whole mechanisms per unit), tumbler (a kinematic body in many
 // blocks of one colour), joint_grid (one mechanism of 19,800 joints, solved colour by colour).
 Test(determinism, identical_on_any_number_of_workers)
 {
-	const char* names[4] = {"rain", "ragdolls", "tumbler", "joint_grid"};
+	const char* names[4] = {"rain_rigid", "ragdolls", "tumbler", "joint_grid"};
 	for (int n = 0; n < 4; ++n)
 	{
 		int events1;

@@ -62,6 +62,7 @@ static void ExpectSameBody(const SceneBody* a, const SceneBody* b, const char* w
 			  where);
 	cr_assert(Near(a->linearDamping, b->linearDamping) && Near(a->angularDamping, b->angularDamping), "%s", where);
 	cr_assert(Near(a->gravityScale, b->gravityScale), "%s: gravity scale", where);
+	cr_assert(Near(a->sleepThreshold, b->sleepThreshold), "%s: sleep threshold", where);
 	cr_assert(a->bullet == b->bullet && a->isAwake == b->isAwake && a->fixedRotation == b->fixedRotation, "%s: flags", where);
 	cr_assert(a->drive.enabled == b->drive.enabled && NearVec(a->drive.amplitude, b->drive.amplitude) &&
 				  Near(a->drive.angularFrequency, b->drive.angularFrequency),
@@ -139,6 +140,18 @@ static void ExpectSameScene(const Scene* a, const Scene* b, const char* name)
 			cr_assert(NearVec(ca->points[k], cb->points[k]), "%s chain %d point %d", name, i, k);
 		}
 	}
+	cr_assert_eq(a->templateCount, b->templateCount, "%s: template count", name);
+	for (int i = 0; i < a->templateCount; ++i)
+	{
+		cr_assert_str_eq(a->templates[i].name, b->templates[i].name, "%s template %d", name, i);
+		snprintf(where, sizeof(where), "%s template %s", name, a->templates[i].name);
+		ExpectSameScene(a->templates[i].parts, b->templates[i].parts, where);
+	}
+	cr_assert_eq(a->spawnerCount, b->spawnerCount, "%s: spawner count", name);
+	for (int i = 0; i < a->spawnerCount; ++i)
+	{
+		cr_assert_eq(memcmp(a->spawners + i, b->spawners + i, sizeof(SceneSpawner)), 0, "%s spawner %d", name, i);
+	}
 }
 
 /// Shapes a scene body gets in a world: its own and its chains' segments.
@@ -170,6 +183,7 @@ Test(scene, catalogue_has_the_required_scenes)
 		"pyramid",		 "vertical_stack", "card_house",	"dominoes", "newtons_cradle", "ramp",
 		"mass_ratio",	 "bullets_wall",   "spinning_box",	"rain",		"confined",		  "large_pyramid",
 		"many_pyramids", "tumbler",		   "smash",			"spinner",	"washer",	"junkyard",
+		"rain_rigid",
 		"compounds",	"pendulum_chain", "rope_bridge",
 		"car",			 "ragdolls", "platformer"};
 	for (size_t i = 0; i < sizeof(required) / sizeof(required[0]); ++i)
@@ -263,7 +277,7 @@ static void ExpectSameWorld(const char* name)
 
 Test(scene, reloaded_scenes_build_the_same_world)
 {
-	const char* names[] = {"pyramid", "rain",		  "spinner",  "newtons_cradle", "ramp",
+	const char* names[] = {"pyramid", "rain",		  "rain_rigid", "spinner",  "newtons_cradle", "ramp",
 						   "confined", "bullets_wall", "dominoes", "junkyard",		 "compounds",
 						   "pendulum_chain", "rope_bridge", "car", "ragdolls", "platformer", "loop_the_loop"};
 	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); ++i)
@@ -468,6 +482,40 @@ static const BadFile s_badFiles[] = {
 	 "chains[0]: refused by the library (see its message above: size, thinness, density or position)"},
 	{"{\"bodies\": [{}], \"chains\": [{\"body\": 0, \"friction\": -1, \"points\": [[0, 0], [1, 0], [2, 0], [3, 0]]}]}",
 	 "chains[0].friction: must be >= 0"},
+	{"{\"bodies\": [{\"sleep_threshold\": -1}]}", "bodies[0].sleep_threshold: must be >= 0"},
+	// spawn schedules: each bad item is named
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}]}], \"spawners\": [{\"template\": \"t\", \"interval\": 8, "
+	 "\"first_step\": -1, \"keep\": 2}]}",
+	 "spawners[0].first_step: must be 0..1000000"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}]}], "
+	 "\"spawners\": [{\"template\": \"human\", \"interval\": 8}]}",
+	 "spawners[0].template: no template called \"human\" (see \"templates\")"},
+	{"{\"spawners\": [{\"interval\": 8}]}", "spawners[0].template: missing (required)"},
+	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"keep\": 1}]}",
+	 "spawners[0].interval: missing (required)"},
+	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"interval\": 0, \"keep\": 1}]}",
+	 "spawners[0].interval: must be 1..1000000"},
+	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"interval\": 4}]}",
+	 "spawners[0].keep: must be > 0 when count and lifetime are 0 (else instances pile up without end)"},
+	{"{\"templates\": [{\"name\": \"t\"}], \"spawners\": [{\"template\": \"t\", \"interval\": 4, \"lifetime\": -3}]}",
+	 "spawners[0].lifetime: must be 0..1000000"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}, {}]}], \"spawners\": [{\"template\": \"t\", \"interval\": 1, "
+	 "\"keep\": 60000}]}",
+	 "spawners[0]: keeps up to 60000 instances of 2 bodies alive: at most 100000 bodies"},
+	{"{\"templates\": [{\"name\": \"t\"}, {\"name\": \"t\"}]}",
+	 "templates[1].name: a template called \"t\" comes earlier (names must differ)"},
+	{"{\"templates\": [{\"bodies\": []}]}", "templates[0].name: missing (required)"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{}], \"joints\": [{\"type\": \"revolute\", \"body_a\": 0, "
+	 "\"body_b\": 1}]}]}",
+	 "templates[0].joints[0].body_b: must be the index of a body (there are 1)"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{\"drive\": {\"amplitude\": [1, 0], "
+	 "\"angular_frequency\": 1}}]}]}",
+	 "templates[0].bodies[0].drive: not allowed in a template (spawned bodies are not driven)"},
+	{"{\"templates\": [{\"name\": \"t\", \"bodies\": [{\"shapes\": [{\"box\": {\"half_width\": 1e30, "
+	 "\"half_height\": 1}}]}]}]}",
+	 "templates[0].bodies[0].shapes[0]: refused by the library (see its message above: size, thinness, density or "
+	 "position)"},
+	{"{\"templates\": [{\"name\": \"t\", \"chains\": []}]}", "templates[0].chains: unknown key"},
 	{"[1, 2]", "scene: must be a JSON object"},
 	{"{\"gravity\": [0, -10],\n \"bodies\": [}", "line 2, column 13: invalid JSON"},
 };
@@ -625,4 +673,210 @@ Test(scene, filter_bits_round_trip)
 	free(written);
 	Scene_Destroy(scene);
 	Scene_Destroy(again);
+}
+
+// Joints of the living bodies: each joint is seen from both of its bodies.
+static int LiveJointCount(const SceneWorld* world)
+{
+	int capacity = SceneWorld_BodyCapacity(world);
+	tbBodyId* ids = malloc(sizeof(tbBodyId) * (size_t)capacity);
+	int count = SceneWorld_CollectBodies(world, ids, capacity);
+	int ends = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		ends += tbBody_GetJointCount(ids[i]);
+	}
+	free(ids);
+	return ends / 2;
+}
+
+// A schedule from a file: a jointed pair every 3 steps from step 2 at two spawn points, three
+// alive at most, five in all. After each step the world holds the closed-form count.
+Test(scene, spawn_schedule_from_a_file_builds_and_recycles)
+{
+	const char* text =
+		"{\"bodies\": [{\"shapes\": [{\"box\": {\"half_width\": 50, \"half_height\": 1}}]}],"
+		" \"templates\": [{\"name\": \"pair\", \"bodies\": ["
+		"   {\"type\": \"dynamic\", \"position\": [0, 0], \"sleep_threshold\": 0.1,"
+		"    \"shapes\": [{\"circle\": {\"radius\": 0.5}}]},"
+		"   {\"type\": \"dynamic\", \"position\": [1, 0], \"shapes\": [{\"circle\": {\"radius\": 0.5}}]}],"
+		"  \"joints\": [{\"type\": \"revolute\", \"body_a\": 0, \"body_b\": 1, \"anchor_a\": [0.5, 0],"
+		"    \"anchor_b\": [-0.5, 0]}]}],"
+		" \"spawners\": [{\"template\": \"pair\", \"first_step\": 2, \"interval\": 3, \"count\": 5, \"keep\": 3,"
+		"   \"slots\": 2,"
+		"   \"origin\": [-5, 10], \"slot_step\": [10, 0]}]}";
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(scene, "%s", error);
+	cr_assert_eq(scene->templateCount, 1);
+	cr_assert_eq(scene->spawnerCount, 1);
+	cr_assert_float_eq(scene->templates[0].parts->bodies[0].sleepThreshold, 0.1f, 1e-9f);
+	Scene* again = RoundTrip(scene);
+	ExpectSameScene(scene, again, "schedule");
+	Scene_Destroy(again);
+
+	SceneWorld world = Scene_BuildWorld(scene, NULL);
+	// instances 0 … 4 are built before steps 2, 5, 8, 11, 14; from the fourth on the oldest goes
+	static const int expectedLive[17] = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3};
+	tbBodyId first[2] = {TB_NULL_BODY_ID, TB_NULL_BODY_ID};
+	for (int step = 0; step < 17; ++step)
+	{
+		int bodies = 0, joints = 0;
+		Scene_LiveCounts(scene, step, &bodies, &joints);
+		cr_assert_eq(bodies, 1 + 2 * expectedLive[step], "after %d steps", step);
+		cr_assert_eq(joints, expectedLive[step], "after %d steps", step);
+		cr_assert_eq(tbWorld_GetCounters(world.worldId).bodyCount, bodies, "after %d steps", step);
+		cr_assert_eq(LiveJointCount(&world), joints, "after %d steps", step);
+		SceneWorld_Step(&world, scene, scene->subSteps);
+		if (step == 2)
+		{
+			const tbBodyId* ids = SceneWorld_InstanceBodies(&world, 0, 0);
+			cr_assert_not_null(ids);
+			first[0] = ids[0];
+			first[1] = ids[1];
+		}
+	}
+	// instance 3 took instance 0's place: its ids are stale; instance 4 (4 mod 2 slots = 0) is at
+	// the first spawn point again, instance 3 at the second
+	cr_assert_null(SceneWorld_InstanceBodies(&world, 0, 0));
+	cr_assert_not(tbBody_IsValid(first[0]) || tbBody_IsValid(first[1]));
+	const tbBodyId* last = SceneWorld_InstanceBodies(&world, 0, 4);
+	cr_assert_not_null(last);
+	cr_assert_float_eq(tbBody_GetPosition(last[0]).x, -5.0f, 0.5f);
+	cr_assert_float_eq(tbBody_GetPosition(SceneWorld_InstanceBodies(&world, 0, 3)[0]).x, 5.0f, 0.5f);
+	cr_assert_null(SceneWorld_InstanceBodies(&world, 0, 5));
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+	cr_assert_eq(tbGetByteCount(), 0, "the spawned bodies leak: %d bytes", (int)tbGetByteCount());
+}
+
+// FNV-1a over every living body's pose and velocity, in SceneWorld_CollectBodies order.
+static uint64_t HashLiveBodies(const SceneWorld* world)
+{
+	int capacity = SceneWorld_BodyCapacity(world);
+	tbBodyId* ids = malloc(sizeof(tbBodyId) * (size_t)capacity);
+	int count = SceneWorld_CollectBodies(world, ids, capacity);
+	uint64_t hash = 14695981039346656037ull;
+	for (int i = 0; i < count; ++i)
+	{
+		tbTransform xf = tbBody_GetTransform(ids[i]);
+		tbVec2 v = tbBody_GetLinearVelocity(ids[i]);
+		float values[7] = {xf.p.x, xf.p.y, xf.q.c, xf.q.s, v.x, v.y, tbBody_GetAngularVelocity(ids[i])};
+		const unsigned char* bytes = (const unsigned char*)values;
+		for (size_t k = 0; k < sizeof(values); ++k)
+		{
+			hash = (hash ^ bytes[k]) * 1099511628211ull;
+		}
+	}
+	free(ids);
+	return hash;
+}
+
+// Box2D v3's rain: five floors, a group of five 11-body humans (10 joints each) per floor every 8
+// steps from step 0, at most 40 groups per floor, the oldest destroyed for the next. Checked after
+// 321 steps (spawns before steps 0, 8, …, 320: 41 per floor, so the first group is gone) against
+// the closed form, and the ids of the first groups are stale. Two runs give the same bits.
+Test(scene, exact_rain_spawns_and_recycles_as_scheduled)
+{
+	Scene* scene = Catalogue_Build("rain");
+	cr_assert_not_null(scene);
+	cr_assert_eq(scene->bodyCount, 1, "the floors are one static body");
+	cr_assert_eq(scene->templateCount, 1);
+	cr_assert_eq(scene->templates[0].parts->bodyCount, 5 * 11);
+	cr_assert_eq(scene->templates[0].parts->jointCount, 5 * 10);
+	cr_assert_eq(scene->spawnerCount, 5);
+	const int steps = 321, floors = 5, columns = 40, interval = 8;
+	uint64_t hashes[2];
+	for (int run = 0; run < 2; ++run)
+	{
+		SceneWorld world = Scene_BuildWorld(scene, NULL);
+		tbBodyId firstGroup[5];
+		for (int step = 0; step < steps; ++step)
+		{
+			SceneWorld_Step(&world, scene, scene->subSteps);
+			if (step == 0)
+			{
+				for (int floor = 0; floor < floors; ++floor)
+				{
+					firstGroup[floor] = SceneWorld_InstanceBodies(&world, floor, 0)[0];
+				}
+			}
+			if (step % 40 == 0 || step == steps - 1)
+			{
+				int spawned = step / interval + 1; // groups per floor so far
+				int live = spawned < columns ? spawned : columns;
+				int bodies = 1 + floors * live * 5 * 11;
+				int joints = floors * live * 5 * 10;
+				int expectedBodies = 0, expectedJoints = 0;
+				Scene_LiveCounts(scene, step + 1, &expectedBodies, &expectedJoints);
+				cr_assert_eq(expectedBodies, bodies, "closed form after %d steps", step + 1);
+				cr_assert_eq(expectedJoints, joints, "closed form after %d steps", step + 1);
+				cr_assert_eq(tbWorld_GetCounters(world.worldId).bodyCount, bodies, "after %d steps", step + 1);
+				cr_assert_eq(LiveJointCount(&world), joints, "after %d steps", step + 1);
+			}
+		}
+		for (int floor = 0; floor < floors; ++floor)
+		{
+			cr_assert_not(tbBody_IsValid(firstGroup[floor]), "floor %d: the recycled group's id is live", floor);
+			cr_assert_null(SceneWorld_InstanceBodies(&world, floor, 0));
+			cr_assert_not_null(SceneWorld_InstanceBodies(&world, floor, 1));
+			// the 41st group stands in the first column again, 40 m above its floor at the start
+			const tbBodyId* hip = SceneWorld_InstanceBodies(&world, floor, 40);
+			cr_assert_not_null(hip);
+			cr_assert_float_eq(tbBody_GetPosition(hip[0]).x, -121.875f, 0.5f);
+		}
+		hashes[run] = HashLiveBodies(&world);
+		SceneWorld_Destroy(&world);
+	}
+	cr_assert_eq(hashes[0], hashes[1], "two runs of the exact rain differ");
+	Scene_Destroy(scene);
+	cr_assert_eq(tbGetByteCount(), 0, "the rain's spawned bodies leak");
+}
+
+// Lifetimes: a body every 3 steps that lives 5 steps (so at most two at once), and beside it a
+// body every 2 steps kept one at a time with a lifetime of 10 (it is always recycled first, and
+// its expiry must not destroy the instance that took its place). Counted from the definition.
+Test(scene, spawn_lifetime_destroys_at_the_given_step)
+{
+	const char* text =
+		"{\"gravity\": [0, 0], \"templates\": [{\"name\": \"ball\", \"bodies\": [{\"type\": \"dynamic\","
+		"  \"shapes\": [{\"circle\": {\"radius\": 0.25}}]}]}],"
+		" \"spawners\": [{\"template\": \"ball\", \"interval\": 3, \"lifetime\": 5, \"slots\": 8,"
+		"   \"slot_step\": [1, 0]},"
+		"  {\"template\": \"ball\", \"first_step\": 1, \"interval\": 2, \"keep\": 1, \"lifetime\": 10,"
+		"   \"origin\": [0, 5]}]}";
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_not_null(scene, "%s", error);
+	cr_assert_eq(SceneSpawner_Capacity(scene->spawners + 0), 2);
+	cr_assert_eq(SceneSpawner_Capacity(scene->spawners + 1), 1);
+	Scene* again = RoundTrip(scene);
+	ExpectSameScene(scene, again, "lifetimes");
+	Scene_Destroy(again);
+	SceneWorld world = Scene_BuildWorld(scene, NULL);
+	tbBodyId first = TB_NULL_BODY_ID;
+	for (int steps = 0; steps <= 24; ++steps)
+	{
+		int alive = 0; // instances m built before step 3m < steps and not destroyed (3m + 5 >= steps)
+		for (int m = 0; 3 * m < steps; ++m)
+		{
+			alive += 3 * m + 5 >= steps ? 1 : 0;
+		}
+		alive += steps > 1 ? 1 : 0; // the second spawner's latest
+		int bodies = 0, joints = 0;
+		Scene_LiveCounts(scene, steps, &bodies, &joints);
+		cr_assert_eq(bodies, alive, "closed form after %d steps", steps);
+		cr_assert_eq(tbWorld_GetCounters(world.worldId).bodyCount, alive, "after %d steps", steps);
+		SceneWorld_Step(&world, scene, scene->subSteps);
+		if (steps == 0)
+		{
+			first = SceneWorld_InstanceBodies(&world, 0, 0)[0];
+		}
+		bool firstAlive = steps + 1 <= 5; // built before step 0, destroyed before step 5
+		cr_assert_eq(tbBody_IsValid(first), firstAlive, "after %d steps", steps + 1);
+		cr_assert_eq(SceneWorld_InstanceBodies(&world, 0, 0) != NULL, firstAlive, "after %d steps", steps + 1);
+	}
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+	cr_assert_eq(tbGetByteCount(), 0);
 }
