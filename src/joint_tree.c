@@ -44,12 +44,21 @@
 #include "joint.h"
 
 #include <float.h>
+#include <math.h>
 #include <string.h>
 
 #define TB_TREE_MAX_DIM 3 ///< a body's three velocity unknowns, or a joint's rows (at most 3)
 
+/// The factorization and solve run in double precision. Eliminating a heavy body into a light one
+/// subtracts nearly equal terms: for a 0.1 kg capsule pinned 60 m from the centre of an 8,171 kg
+/// disc (mass ratio 8e4, inertia ratio 5e9) the joint's impulse came out of single precision 29
+/// times too large, momentum was not conserved, and the warm start re-applied the error until the
+/// velocities were NaN (tests/test_joint.c). The blocks are at most 3 × 3, so doubles cost little;
+/// the rows (J, bias) and the velocities stay single precision.
+typedef double tbTreeReal;
+
 /// One node of a tree: a body (unknowns Δv, Δω) or a joint (the Δλ of its rows). Built once per
-/// step; the numbers live in the step's float pool at `values` (tbNodeValues).
+/// step; the numbers live in the step's tbTreeReal pool at `values` (tbNodeValues).
 typedef struct tbTreeNode
 {
 	int parent; ///< node index of the parent, −1 for the root
@@ -57,7 +66,7 @@ typedef struct tbTreeNode
 	int body;	///< solver body index (body node), −1 for a joint node
 	int joint;	///< joint id (joint node), −1 for a body node
 	int side;	///< joint node: side (0 = A, 1 = B) of its parent body; body node: its side in its parent joint
-	int values; ///< offset in the float pool
+	int values; ///< offset in the tbTreeReal pool
 	int rows;	///< joint node: its tbJointRows in the step's array; −1 for a body node
 } tbTreeNode;
 
@@ -70,13 +79,13 @@ typedef struct tbTree
 // --- small dense blocks (row-major, at most 3 × 3) ----------------------------------------------
 
 /// C (n × m) = Aᵀ·B with A k × n, B k × m.
-static void tbMulTN(const float* A, const float* B, float* C, int k, int n, int m)
+static void tbMulTN(const tbTreeReal* A, const tbTreeReal* B, tbTreeReal* C, int k, int n, int m)
 {
 	for (int i = 0; i < n; ++i)
 	{
 		for (int j = 0; j < m; ++j)
 		{
-			float sum = 0.0f;
+			tbTreeReal sum = 0.0f;
 			for (int r = 0; r < k; ++r)
 			{
 				sum += A[r * n + i] * B[r * m + j];
@@ -87,13 +96,13 @@ static void tbMulTN(const float* A, const float* B, float* C, int k, int n, int 
 }
 
 /// C (n × m) = A·B with A n × k, B k × m.
-static void tbMulNN(const float* A, const float* B, float* C, int n, int k, int m)
+static void tbMulNN(const tbTreeReal* A, const tbTreeReal* B, tbTreeReal* C, int n, int k, int m)
 {
 	for (int i = 0; i < n; ++i)
 	{
 		for (int j = 0; j < m; ++j)
 		{
-			float sum = 0.0f;
+			tbTreeReal sum = 0.0f;
 			for (int r = 0; r < k; ++r)
 			{
 				sum += A[i * k + r] * B[r * m + j];
@@ -103,9 +112,9 @@ static void tbMulNN(const float* A, const float* B, float* C, int n, int k, int 
 	}
 }
 
-/// Invert a definite block of up to 3 × 3 by cofactors. False when it is singular to float
+/// Invert a definite block of up to 3 × 3 by cofactors. False when it is singular to tbTreeReal
 /// precision: |det| ≤ 1e-6 of the product of the diagonal magnitudes (redundant rows).
-static bool tbInvertSmall(float* A, int n)
+static bool tbInvertSmall(tbTreeReal* A, int n)
 {
 	if (n == 1)
 	{
@@ -118,29 +127,29 @@ static bool tbInvertSmall(float* A, int n)
 	}
 	if (n == 2)
 	{
-		float a = A[0], b = A[1], c = A[2], d = A[3];
-		float det = a * d - b * c;
-		if (!(tbAbsFloat(det) > 1e-6f * tbAbsFloat(a * d)))
+		tbTreeReal a = A[0], b = A[1], c = A[2], d = A[3];
+		tbTreeReal det = a * d - b * c;
+		if (!(fabs(det) > 1e-6 * fabs(a * d)))
 		{
 			return false;
 		}
-		float inv = 1.0f / det;
+		tbTreeReal inv = 1.0f / det;
 		A[0] = d * inv;
 		A[1] = -b * inv;
 		A[2] = -c * inv;
 		A[3] = a * inv;
 		return true;
 	}
-	float c00 = A[4] * A[8] - A[5] * A[7];
-	float c01 = A[5] * A[6] - A[3] * A[8];
-	float c02 = A[3] * A[7] - A[4] * A[6];
-	float det = A[0] * c00 + A[1] * c01 + A[2] * c02;
-	if (!(tbAbsFloat(det) > 1e-6f * tbAbsFloat(A[0] * A[4] * A[8])))
+	tbTreeReal c00 = A[4] * A[8] - A[5] * A[7];
+	tbTreeReal c01 = A[5] * A[6] - A[3] * A[8];
+	tbTreeReal c02 = A[3] * A[7] - A[4] * A[6];
+	tbTreeReal det = A[0] * c00 + A[1] * c01 + A[2] * c02;
+	if (!(fabs(det) > 1e-6 * fabs(A[0] * A[4] * A[8])))
 	{
 		return false;
 	}
-	float inv = 1.0f / det;
-	float B[9] = {c00 * inv,
+	tbTreeReal inv = 1.0f / det;
+	tbTreeReal B[9] = {c00 * inv,
 				  (A[2] * A[7] - A[1] * A[8]) * inv,
 				  (A[1] * A[5] - A[2] * A[4]) * inv,
 				  c01 * inv,
@@ -335,7 +344,7 @@ void tbBuildJointTrees(tbStepContext* context)
 		trees[treeCount++] = (tbTree){start, n, false};
 	}
 
-	// The float pool and the rows (one per joint node), sized node by node.
+	// The tbTreeReal pool and the rows (one per joint node), sized node by node.
 	int floats = 0, rows = 0;
 	for (int i = 0; i < count; ++i)
 	{
@@ -352,7 +361,7 @@ void tbBuildJointTrees(tbStepContext* context)
 	world->jointTreeNodeCount = count;
 	world->jointTrees = trees;
 	world->jointTreeCount = treeCount;
-	world->jointTreeValues = tbArenaAlloc(arena, (int)sizeof(float) * floats);
+	world->jointTreeValues = tbArenaAlloc(arena, (int)sizeof(tbTreeReal) * floats);
 	world->jointTreeRows = tbArenaAlloc(arena, (int)sizeof(tbJointRows) * rows);
 }
 
@@ -364,17 +373,17 @@ void tbBuildJointTrees(tbStepContext* context)
 /// then solution).
 typedef struct tbNodeValues
 {
-	float* D;
-	float* H;
-	float* L;
-	float* x;
+	tbTreeReal* D;
+	tbTreeReal* H;
+	tbTreeReal* L;
+	tbTreeReal* x;
 } tbNodeValues;
 
 static tbNodeValues tbGetValues(const tbWorld* world, const tbTreeNode* node)
 {
 	int n = node->dim;
 	int r = node->body < 0 ? n : (node->parent >= 0 ? world->jointTreeNodes[node->parent].dim : 0);
-	float* base = world->jointTreeValues + node->values;
+	tbTreeReal* base = world->jointTreeValues + node->values;
 	tbNodeValues v = {base, base + n * n, base + n * n + 3 * r, base + n * n + 6 * r};
 	return v;
 }
@@ -386,7 +395,7 @@ static bool tbTurns(const tbBody* body)
 
 /// Row r of a joint's rows against one side: (x, y, angular), the angular part dropped for a body
 /// that cannot turn.
-static void tbRowAgainst(const tbJointRows* rows, int r, int side, bool turns, float out[3])
+static void tbRowAgainst(const tbJointRows* rows, int r, int side, bool turns, tbTreeReal out[3])
 {
 	const float* J = (side == 0 ? rows->JA : rows->JB) + 3 * r;
 	out[0] = J[0];
@@ -399,7 +408,7 @@ static void tbRowAgainst(const tbJointRows* rows, int r, int side, bool turns, f
 static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNodeValues v)
 {
 	int n = node->dim;
-	memset(v.D, 0, sizeof(float) * (size_t)(n * n));
+	memset(v.D, 0, sizeof(tbTreeReal) * (size_t)(n * n));
 	if (node->parent < 0)
 	{
 		return;
@@ -409,7 +418,7 @@ static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNode
 	const tbJointRows* rows = world->jointTreeRows + node->rows;
 	for (int r = 0; r < n; ++r)
 	{
-		float J[3];
+		tbTreeReal J[3];
 		tbRowAgainst(rows, r, node->side, turns, J);
 		v.H[3 * r + 0] = -J[0];
 		v.H[3 * r + 1] = -J[1];
@@ -422,7 +431,7 @@ static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeV
 {
 	const tbBody* body = world->bodies + world->awakeBodies[node->body];
 	bool turns = tbTurns(body);
-	memset(v.D, 0, sizeof(float) * 9);
+	memset(v.D, 0, sizeof(tbTreeReal) * 9);
 	v.D[0] = 1.0f / body->invMass;
 	v.D[4] = v.D[0];
 	v.D[8] = turns ? 1.0f / body->invInertia : 1.0f;
@@ -435,7 +444,7 @@ static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeV
 	int r = parent->dim;
 	for (int row = 0; row < r; ++row)
 	{
-		float J[3];
+		tbTreeReal J[3];
 		tbRowAgainst(rows, row, node->side, turns, J);
 		v.H[0 * r + row] = -J[0];
 		v.H[1 * r + row] = -J[1];
@@ -445,12 +454,12 @@ static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeV
 
 // L = D⁻¹·H and the parent's pivot update D(p) −= Hᵀ·L. A joint child touches only the 3 × 3
 // velocity block of its body, which is all a body has.
-static void tbEliminate(const tbTreeNode* node, tbNodeValues v, float* parentD, int m)
+static void tbEliminate(const tbTreeNode* node, tbNodeValues v, tbTreeReal* parentD, int m)
 {
 	int n = node->dim;
 	int k = node->body < 0 ? 3 : m; // columns of H and L
 	tbMulNN(v.D, v.H, v.L, n, n, k);
-	float update[9];
+	tbTreeReal update[9];
 	tbMulTN(v.H, v.L, update, n, k, k);
 	for (int i = 0; i < k * k; ++i)
 	{
@@ -531,7 +540,7 @@ void tbMarkTreeRows(tbStepContext* context, bool useBias)
 
 /// Right-hand side of a node: 0 for a body, J·v + bias for a joint's rows (the velocities of both
 /// its bodies, ground included).
-static void tbLoadResiduals(const tbStepContext* context, const tbTreeNode* node, float* x)
+static void tbLoadResiduals(const tbStepContext* context, const tbTreeNode* node, tbTreeReal* x)
 {
 	const tbWorld* world = context->world;
 	if (node->joint < 0)
@@ -553,7 +562,7 @@ static void tbLoadResiduals(const tbStepContext* context, const tbTreeNode* node
 }
 
 /// Apply a node's solution: a body's velocity change, or a joint's impulses.
-static void tbApplySolution(tbStepContext* context, const tbTreeNode* node, const float* x)
+static void tbApplySolution(tbStepContext* context, const tbTreeNode* node, const tbTreeReal* x)
 {
 	tbWorld* world = context->world;
 	if (node->joint >= 0)
@@ -592,9 +601,9 @@ static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 			continue;
 		}
 		tbNodeValues v = tbGetValues(world, node);
-		float* parentX = tbGetValues(world, nodes + node->parent).x;
+		tbTreeReal* parentX = tbGetValues(world, nodes + node->parent).x;
 		int m = nodes[node->parent].dim;
-		float update[3];
+		tbTreeReal update[3];
 		tbMulTN(v.L, v.x, update, node->dim, m, 1);
 		for (int k = 0; k < m; ++k)
 		{
@@ -606,18 +615,18 @@ static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 	{
 		const tbTreeNode* node = nodes + i;
 		tbNodeValues v = tbGetValues(world, node);
-		float y[3];
+		tbTreeReal y[3];
 		tbMulNN(v.D, v.x, y, node->dim, node->dim, 1);
 		if (node->parent >= 0)
 		{
-			float correction[3];
+			tbTreeReal correction[3];
 			tbMulNN(v.L, tbGetValues(world, nodes + node->parent).x, correction, node->dim, nodes[node->parent].dim, 1);
 			for (int k = 0; k < node->dim; ++k)
 			{
 				y[k] -= correction[k];
 			}
 		}
-		memcpy(v.x, y, sizeof(float) * (size_t)node->dim);
+		memcpy(v.x, y, sizeof(tbTreeReal) * (size_t)node->dim);
 		tbApplySolution(context, node, v.x);
 	}
 }

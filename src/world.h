@@ -279,7 +279,7 @@ typedef struct tbWorld
 	int jointTreeNodeCount;
 	struct tbTree* jointTrees;
 	int jointTreeCount;
-	float* jointTreeValues;
+	double* jointTreeValues; ///< joint_tree.c works in double precision
 	struct tbJointRows* jointTreeRows;
 	bool jointTreesStale; ///< the bodies moved since the trees were last factored
 

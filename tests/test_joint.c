@@ -665,6 +665,46 @@ Test(joint, a_body_put_to_sleep_by_hand_is_woken_by_its_awake_partner)
 	tbDestroyWorld(world);
 }
 
+// A joint tree (joint_tree.c) between bodies whose masses and lever arms spread over many orders
+// of magnitude: a 0.1 kg capsule pinned 60 m from the centre of an 8,171 kg disc of radius 51 m
+// (mass ratio 8e4, inertia ratio 5e9). Solved in single precision the tree's impulses lost to
+// cancellation what its velocities gained, the warm start re-applied them, and the velocity grew
+// 150-fold per sub-step to NaN in five steps (found by fuzz_scene). Falling freely, the pair must
+// fall freely: v = −g·t after n steps of 1/60 s (the sub-stepped integration is exact for constant
+// acceleration; the tolerance is float rounding of 60 steps).
+Test(joint, tree_of_very_different_bodies_falls_freely)
+{
+	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = tbMakeVec2(0.0f, 6.0f);
+	tbBodyId light = tbCreateBody(world, &bodyDef);
+	bodyDef.position = tbMakeVec2(0.0f, 66.5f);
+	tbBodyId heavy = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCapsule capsule = {{0.0f, -0.2f}, {0.0f, 0.2f}, 0.1f};
+	tbCreateCapsuleShape(light, &shapeDef, &capsule);
+	tbCircle disc = {{0.0f, 0.0f}, 51.0f};
+	tbCreateCircleShape(heavy, &shapeDef, &disc);
+	tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
+	def.base.bodyIdA = light;
+	def.base.bodyIdB = heavy;
+	def.base.localFrameA.p = tbMakeVec2(0.0f, 0.3f);
+	def.base.localFrameB.p = tbMakeVec2(0.0f, -60.2f);
+	tbCreateRevoluteJoint(world, &def);
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(world, DT, SUB_STEPS);
+	}
+	float expected = -10.0f * 60.0f * DT;
+	cr_expect(fabsf(tbBody_GetLinearVelocity(light).y - expected) < 1e-3f, "light body %g m/s, free fall %g",
+			  (double)tbBody_GetLinearVelocity(light).y, (double)expected);
+	cr_expect(fabsf(tbBody_GetLinearVelocity(heavy).y - expected) < 1e-3f, "heavy body %g m/s, free fall %g",
+			  (double)tbBody_GetLinearVelocity(heavy).y, (double)expected);
+	cr_expect(fabsf(tbBody_GetLinearVelocity(light).x) < 1e-3f);
+	tbDestroyWorld(world);
+}
+
 // collideConnected = false: two overlapping boxes joined by a revolute joint make no contact and
 // stay where they are; true: they collide and are pushed apart. Destroying the forbidding joint
 // lets the broad phase find the pair again.
