@@ -104,8 +104,35 @@ static bool tbCheckBodyDef(const tbBodyDef* def)
 		   tbCheckNonNegative(f, "def->sleepThreshold", def->sleepThreshold);
 }
 
+// The awake list keeps its order (the solver order must not depend on which body slept first), so
+// a removal leaves a hole (TB_NULL_INDEX) that the next step, or the next body to join, closes in
+// one pass over the list. Shifting the list at every removal cost O(awake bodies) per body: a game
+// destroying 100 of 20,000 awake bodies moved and re-indexed two million entries.
+void tbCompactAwakeSet(tbWorld* world)
+{
+	if (world->awakeHoles == 0)
+	{
+		return;
+	}
+	int kept = 0;
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		int id = world->awakeBodies[i];
+		if (id == TB_NULL_INDEX)
+		{
+			continue;
+		}
+		world->awakeBodies[kept] = id;
+		world->bodies[id].awakeIndex = kept;
+		kept += 1;
+	}
+	world->awakeBodyCount = kept;
+	world->awakeHoles = 0;
+}
+
 static void tbAddToAwakeSet(tbWorld* world, tbBody* body, int bodyId)
 {
+	tbCompactAwakeSet(world); // appended after the bodies still awake, as if removed eagerly
 	body->awakeIndex = world->awakeBodyCount;
 	TB_ARRAY_PUSH(world->awakeBodies, world->awakeBodyCount, world->awakeBodyCapacity, bodyId);
 	world->awakeSetVersion += 1;
@@ -114,15 +141,8 @@ static void tbAddToAwakeSet(tbWorld* world, tbBody* body, int bodyId)
 
 static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
 {
-	// Order-preserving removal keeps the solver order independent of which body slept first.
-	int index = body->awakeIndex;
-	for (int i = index + 1; i < world->awakeBodyCount; ++i)
-	{
-		int id = world->awakeBodies[i];
-		world->awakeBodies[i - 1] = id;
-		world->bodies[id].awakeIndex = i - 1;
-	}
-	world->awakeBodyCount -= 1;
+	world->awakeBodies[body->awakeIndex] = TB_NULL_INDEX;
+	world->awakeHoles += 1;
 	body->awakeIndex = TB_NULL_INDEX;
 	world->awakeSetVersion += 1;
 	world->awakeRemovals += 1;

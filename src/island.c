@@ -279,7 +279,7 @@ static int tbCollectIsland(tbWorld* world, int seed, uint32_t firstStamp, uint32
 }
 
 /// Remove the marked bodies from the awake set in one pass (order preserved).
-static void tbCompactAwakeSet(tbWorld* world)
+static void tbRemoveMarkedFromAwakeSet(tbWorld* world)
 {
 	int kept = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
@@ -358,6 +358,6 @@ void tbSleepStage(tbWorld* world, float timeStep)
 	world->counters.islandCount = islands;
 	if (anySleep)
 	{
-		tbCompactAwakeSet(world);
+		tbRemoveMarkedFromAwakeSet(world);
 	}
 }

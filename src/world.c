@@ -458,7 +458,7 @@ static void tbUpdateCounters(tbWorld* world)
 	c->bodyCount = world->bodyCount;
 	c->shapeCount = world->shapeCount;
 	c->contactCount = world->contactCount;
-	c->awakeBodyCount = world->awakeBodyCount;
+	c->awakeBodyCount = tbAwakeBodyCount(world);
 	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
 	c->byteCount = tbGetByteCount();
 	// touchingCount: set by the collide stage (contact.c), which reads every step contact's flags.
@@ -491,6 +491,7 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 		return false;
 	}
 	world->locked = true;
+	tbCompactAwakeSet(world); // every stage walks the awake list without holes
 	world->stepIndex += 1;
 	world->stepTime = timeStep;
 	tbClearEvents(world);
@@ -762,7 +763,7 @@ void tbWorld_SetUserData(tbWorldId worldId, void* userData)
 int tbWorld_GetAwakeBodyCount(tbWorldId worldId)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetAwakeBodyCount");
-	return world != NULL ? world->awakeBodyCount : 0;
+	return world != NULL ? tbAwakeBodyCount(world) : 0;
 }
 
 void tbWorld_EnableWarmStarting(tbWorldId worldId, bool flag)
@@ -929,7 +930,7 @@ tbCounters tbWorld_GetCounters(tbWorldId worldId)
 	world->counters.bodyCount = world->bodyCount;
 	world->counters.shapeCount = world->shapeCount;
 	world->counters.contactCount = world->contactCount;
-	world->counters.awakeBodyCount = world->awakeBodyCount;
+	world->counters.awakeBodyCount = tbAwakeBodyCount(world);
 	return world->counters;
 }
 

@@ -289,6 +289,7 @@ typedef struct tbWorld
 	/// Awake non-static bodies, in a deterministic order.
 	int* awakeBodies;
 	int awakeBodyCount, awakeBodyCapacity;
+	int awakeHoles; ///< removed bodies' slots (TB_NULL_INDEX) in awakeBodies, closed by tbCompactAwakeSet
 
 	/// Per-step scratch: contacts gathered for the narrow phase, touching contacts for the solver.
 	int* stepContacts;
@@ -393,6 +394,13 @@ void tbSetShapeEventFlag(tbWorld* world, tbShape* shape, tbShapeEventKind kind, 
 // body.c
 void tbUpdateBodyMass(tbWorld* world, tbBody* body);
 void tbWakeBody(tbWorld* world, tbBody* body);
+/// Close the holes bodies that left the awake set left in it (body.c); the step starts with it.
+void tbCompactAwakeSet(tbWorld* world);
+/// Bodies awake now (the awake list less its holes).
+static inline int tbAwakeBodyCount(const tbWorld* world)
+{
+	return world->awakeBodyCount - world->awakeHoles;
+}
 void tbSleepBody(tbWorld* world, tbBody* body);
 void tbDestroyBodyContacts(tbWorld* world, tbBody* body, bool wakeBodies);
 

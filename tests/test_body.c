@@ -149,3 +149,67 @@ Test(body, v3_accessors, .init = SetupErrors, .fini = TeardownErrors)
 	cr_assert(owner.index1 == world.index1 && owner.generation == world.generation);
 	tbDestroyWorld(world);
 }
+
+// Bodies leaving the awake set leave holes in the awake list that the next step (or the next body
+// to join) closes, keeping the order (body.c). Counts must be right in between, and the order of
+// removals must not matter: two worlds that destroy the same bodies in opposite orders step
+// bit-identically (the solver order follows the awake list).
+static tbWorldId MakeRowOfBoxes(tbBodyId* bodies, int count)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	worldDef.enableSleep = false; // only the removals below change the awake set
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon floor = tbMakeBox(50.0f, 0.5f);
+	tbCreatePolygonShape(ground, &shapeDef, &floor);
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	for (int i = 0; i < count; ++i)
+	{
+		tbBodyDef def = tbDefaultBodyDef();
+		def.type = tb_dynamicBody;
+		def.position = tbMakeVec2(-20.0f + 1.5f * (float)i, 1.0f + 0.3f * (float)(i % 3));
+		bodies[i] = tbCreateBody(world, &def);
+		tbCreatePolygonShape(bodies[i], &shapeDef, &box);
+	}
+	return world;
+}
+
+Test(body, awake_list_holes_keep_counts_and_order)
+{
+	tbBodyId a[10], b[10];
+	tbWorldId worldA = MakeRowOfBoxes(a, 10);
+	tbWorldId worldB = MakeRowOfBoxes(b, 10);
+	tbDestroyBody(a[2]);
+	tbDestroyBody(a[5]);
+	tbBody_SetAwake(a[7], false);
+	tbDestroyBody(b[5]);
+	tbBody_SetAwake(b[7], false);
+	tbDestroyBody(b[2]);
+	cr_expect_eq(tbWorld_GetAwakeBodyCount(worldA), 7);
+	cr_expect_eq(tbWorld_GetCounters(worldA).awakeBodyCount, 7);
+	tbBody_SetAwake(a[7], true); // joins after the holes are closed
+	tbBody_SetAwake(b[7], true);
+	cr_expect_eq(tbWorld_GetAwakeBodyCount(worldA), 8);
+	for (int step = 0; step < 30; ++step)
+	{
+		tbWorld_Step(worldA, 1.0f / 60.0f, 4);
+		tbWorld_Step(worldB, 1.0f / 60.0f, 4);
+	}
+	cr_expect_eq(tbWorld_GetAwakeBodyCount(worldA), 8);
+	for (int i = 0; i < 10; ++i)
+	{
+		if (i == 2 || i == 5)
+		{
+			cr_expect(tbBody_IsValid(a[i]) == false && tbBody_IsValid(b[i]) == false);
+			continue;
+		}
+		tbVec2 pa = tbBody_GetPosition(a[i]), pb = tbBody_GetPosition(b[i]);
+		cr_expect(pa.x == pb.x && pa.y == pb.y, "body %d: (%g, %g) and (%g, %g)", i, (double)pa.x, (double)pa.y,
+				  (double)pb.x, (double)pb.y);
+		cr_expect(tbBody_IsAwake(a[i]));
+	}
+	tbDestroyWorld(worldA);
+	tbDestroyWorld(worldB);
+}
