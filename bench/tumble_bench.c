@@ -282,8 +282,23 @@ static void Sim_Destroy(Sim* sim)
 	sim->peer = NULL;
 }
 
-/// Largest penetration (m, ≥ 0) over every pair of shapes on different bodies, measured the same
-/// way for every engine: the scene's own geometry at the engine's body poses, collided by
+/// A joint between scene bodies i and j without collideConnected: their shapes overlap on purpose.
+static bool JointKeepsApart(const Scene* scene, int i, int j)
+{
+	for (int k = 0; k < scene->jointCount; ++k)
+	{
+		const SceneJoint* joint = scene->joints + k;
+		bool pair = (joint->bodyA == i && joint->bodyB == j) || (joint->bodyA == j && joint->bodyB == i);
+		if (pair && joint->def.base.collideConnected == false)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+/// Largest penetration (m, ≥ 0) over every pair of shapes on different bodies that the scene lets
+/// collide (filters, joints), measured the same way for every engine: the scene's own geometry at the engine's body poses, collided by
 /// Tumble's manifold routines. Brute force over body pairs: for error measures on small scenes.
 /// Box2D's polygon skin is not part of the geometry, so its boxes rest 0.01 m apart here.
 static float LargestPenetration(const Sim* sim)
@@ -313,9 +328,13 @@ static float LargestPenetration(const Sim* sim)
 				for (int sb = 0; sb < b->shapeCount; ++sb)
 				{
 					tbAABB boxB = tbComputeShapeAABB(&b->shapes[sb].geometry, transforms[j]);
-					if (!tbAABB_Overlaps(boxA, boxB))
+					const SceneShape* shapeA = a->shapes + sa;
+					const SceneShape* shapeB = b->shapes + sb;
+					bool filtered = Scene_FiltersCollide(shapeA->groupIndex, shapeA->categoryBits, shapeA->maskBits,
+														 shapeB->groupIndex, shapeB->categoryBits, shapeB->maskBits) == false;
+					if (filtered || JointKeepsApart(scene, i, j) || !tbAABB_Overlaps(boxA, boxB))
 					{
-						continue;
+						continue; // kept apart on purpose by the scene (or not near)
 					}
 					tbManifold m = tbCollideShapes(&a->shapes[sa].geometry, transforms[i], &b->shapes[sb].geometry,
 												   transforms[j], tb_narrowPhaseAuto);

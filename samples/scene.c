@@ -918,13 +918,34 @@ static bool JoinedWithoutCollision(tbBodyId a, tbBodyId b)
 	return false;
 }
 
+// Whether two shapes' filters let them collide, by the library's rule (tbFilter): a shared
+// non-zero group decides (negative: never), otherwise each category must be in the other's mask.
+bool Scene_FiltersCollide(int groupA, uint64_t categoryA, uint64_t maskA, int groupB, uint64_t categoryB,
+						  uint64_t maskB)
+{
+	if (groupA == groupB && groupA != 0)
+	{
+		return groupA > 0;
+	}
+	return (categoryA & maskB) != 0 && (categoryB & maskA) != 0;
+}
+
+static bool ShapesCollide(tbShapeId a, tbShapeId b)
+{
+	tbFilter fa = tbShape_GetFilter(a), fb = tbShape_GetFilter(b);
+	return Scene_FiltersCollide(fa.groupIndex, fa.categoryBits, fa.maskBits, fb.groupIndex, fb.categoryBits,
+								fb.maskBits);
+}
+
 // Collide the query shape with one found shape. Each pair is visited from its lower shape id
-// when both are non-static, so no pair is measured twice.
+// when both are non-static, so no pair is measured twice. Pairs the engine is told not to collide
+// (filters, joints without collideConnected) overlap on purpose: a ragdoll's own bones.
 static bool PenetrationCallback(tbShapeId shapeId, void* context)
 {
 	PenetrationQuery* query = context;
 	tbBodyId bodyId = tbShape_GetBody(shapeId);
-	if (bodyId.index1 == query->bodyId.index1 || tbShape_IsSensor(shapeId) || JoinedWithoutCollision(query->bodyId, bodyId))
+	if (bodyId.index1 == query->bodyId.index1 || tbShape_IsSensor(shapeId) ||
+		ShapesCollide(query->shapeId, shapeId) == false || JoinedWithoutCollision(query->bodyId, bodyId))
 	{
 		return true;
 	}

@@ -327,6 +327,11 @@ int SceneWorld_AwakeCount(const SceneWorld* world);
 /// Largest penetration depth (m, ≥ 0) over all touching shape pairs, found by querying the
 /// world for shapes overlapping each non-static shape's box and colliding the pair. For summaries.
 float SceneWorld_LargestPenetration(const SceneWorld* world);
+/// Whether shapes with these filters collide, by tbFilter's rule (a shared non-zero group decides,
+/// negative never; otherwise each category in the other's mask). For measures that must skip the
+/// pairs a scene keeps apart on purpose.
+bool Scene_FiltersCollide(int groupA, uint64_t categoryA, uint64_t maskA, int groupB, uint64_t categoryB,
+						  uint64_t maskB);
 
 /// Method names as used by scene files and the command line. NULL for an unknown value.
 const char* Scene_BroadPhaseName(tbBroadPhaseMethod method);
