@@ -1072,6 +1072,22 @@ bool tbBody_IsAwake(tbBodyId bodyId)
 	return body != NULL && body->awakeIndex != TB_NULL_INDEX;
 }
 
+void tbBody_WakeTouching(tbBodyId bodyId)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_WakeTouching", &world, true);
+	if (body == NULL)
+	{
+		return;
+	}
+	for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+	{
+		const tbContact* contact = world->contacts + (key >> 1);
+		tbWakeBody(world, world->bodies + contact->edges[(key & 1) ^ 1].bodyId); // static bodies stay as they are
+		key = contact->edges[key & 1].nextKey;
+	}
+}
+
 void tbBody_SetAwake(tbBodyId bodyId, bool awake)
 {
 	tbWorld* world;

@@ -1001,6 +1001,29 @@ bool tbShape_TestPoint(tbShapeId shapeId, tbVec2 point)
 	return tbPointInShape(&shape->geometry, local);
 }
 
+tbVec2 tbShape_GetClosestPoint(tbShapeId shapeId, tbVec2 target)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetClosestPoint", &world, false);
+	if (shape == NULL || tbCheckCoordinate("tbShape_GetClosestPoint", "target", target) == false)
+	{
+		return tb_vec2_zero;
+	}
+	// Distance from the shape (A, in its body frame) to a point proxy (B) placed at the target:
+	// GJK's witness on A is the closest point (on the rounded surface with useRadii).
+	tbTransform transform = world->bodies[shape->bodyId].transform;
+	tbVec2 origin = tb_vec2_zero;
+	tbDistanceInput input;
+	input.proxyA = tbMakeShapeProxy(&shape->geometry);
+	input.proxyB = tbMakeProxy(&origin, 1, 0.0f);
+	input.transform = tbInvMulTransforms(transform, (tbTransform){target, tb_rot_identity});
+	input.useRadii = true;
+	tbSimplexCache cache;
+	memset(&cache, 0, sizeof(cache));
+	tbDistanceOutput output = tbShapeDistance(&input, &cache, NULL, 0);
+	return output.distance > 0.0f ? tbTransformPoint(transform, output.pointA) : target;
+}
+
 tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input)
 {
 	tbCastOutput output;

@@ -213,3 +213,44 @@ Test(body, awake_list_holes_keep_counts_and_order)
 	tbDestroyWorld(worldA);
 	tbDestroyWorld(worldB);
 }
+
+// tbBody_WakeTouching wakes the bodies this one has contacts with, not itself and not the rest of
+// the pile: a stack of three asleep on the ground; waking the middle box's neighbours wakes the
+// bottom and top boxes (its contacts), the middle one stays asleep until the next step's island
+// stage (which wakes what touches an awake body), and a box far away sleeps on.
+Test(body, wake_touching_wakes_the_contact_partners)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon floor = tbMakeBox(50.0f, 0.5f);
+	tbCreatePolygonShape(ground, &shapeDef, &floor);
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	tbBodyId stack[3], far;
+	for (int i = 0; i < 3; ++i)
+	{
+		tbBodyDef def = tbDefaultBodyDef();
+		def.type = tb_dynamicBody;
+		def.position = tbMakeVec2(0.0f, 1.0f + (float)i);
+		stack[i] = tbCreateBody(world, &def);
+		tbCreatePolygonShape(stack[i], &shapeDef, &box);
+	}
+	tbBodyDef farDef = tbDefaultBodyDef();
+	farDef.type = tb_dynamicBody;
+	farDef.position = tbMakeVec2(20.0f, 1.0f);
+	far = tbCreateBody(world, &farDef);
+	tbCreatePolygonShape(far, &shapeDef, &box);
+	for (int i = 0; i < 300 && (tbBody_IsAwake(stack[1]) || tbBody_IsAwake(far)); ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_assert(tbBody_IsAwake(stack[0]) == false && tbBody_IsAwake(stack[1]) == false && tbBody_IsAwake(far) == false,
+			  "the boxes fell asleep");
+	tbBody_WakeTouching(stack[1]);
+	cr_expect(tbBody_IsAwake(stack[0]) && tbBody_IsAwake(stack[2]), "its contact partners woke");
+	cr_expect(tbBody_IsAwake(stack[1]) == false, "not the body itself");
+	cr_expect(tbBody_IsAwake(far) == false, "nor a body it does not touch");
+	tbDestroyWorld(world);
+}

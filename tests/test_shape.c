@@ -111,3 +111,38 @@ Test(shape, event_flags_switch_at_run_time)
 	cr_assert(tbShape_AreSensorEventsEnabled(shape) == false);
 	tbDestroyWorld(world);
 }
+
+// tbShape_GetClosestPoint against closed forms: the closest point of an axis-aligned box to a point
+// beside it is the point clamped to the box; of a circle, the centre plus the radius towards the
+// point; a point inside is its own answer. GJK converges to float rounding here (1e-5 m).
+Test(shape, closest_point_matches_closed_forms, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.position = tbMakeVec2(1.0f, 2.0f);
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon box = tbMakeBox(0.5f, 0.25f);
+	tbShapeId boxId = tbCreatePolygonShape(body, &shapeDef, &box);
+	tbCircle circle = {{3.0f, 0.0f}, 1.0f}; // centred at (4, 2) in the world
+	tbShapeId circleId = tbCreateCircleShape(body, &shapeDef, &circle);
+
+	tbVec2 p = tbShape_GetClosestPoint(boxId, tbMakeVec2(-3.0f, 2.1f));
+	cr_expect(fabsf(p.x - 0.5f) < 1e-5f && fabsf(p.y - 2.1f) < 1e-5f, "box, beside: (%g, %g)", (double)p.x, (double)p.y);
+	p = tbShape_GetClosestPoint(boxId, tbMakeVec2(3.0f, 5.0f));
+	cr_expect(fabsf(p.x - 1.5f) < 1e-5f && fabsf(p.y - 2.25f) < 1e-5f, "box, corner: (%g, %g)", (double)p.x, (double)p.y);
+	p = tbShape_GetClosestPoint(boxId, tbMakeVec2(1.1f, 2.1f));
+	cr_expect(p.x == 1.1f && p.y == 2.1f, "inside: the target itself, (%g, %g)", (double)p.x, (double)p.y);
+	p = tbShape_GetClosestPoint(circleId, tbMakeVec2(4.0f, 7.0f));
+	cr_expect(fabsf(p.x - 4.0f) < 1e-5f && fabsf(p.y - 3.0f) < 1e-5f, "circle: (%g, %g)", (double)p.x, (double)p.y);
+
+	int before = s_errors;
+	p = tbShape_GetClosestPoint(boxId, tbMakeVec2(NAN, 0.0f));
+	ExpectError(before, "tbShape_GetClosestPoint", "target");
+	cr_expect(p.x == 0.0f && p.y == 0.0f);
+	tbDestroyWorld(world);
+	before = s_errors;
+	tbShape_GetClosestPoint(boxId, tbMakeVec2(0.0f, 0.0f));
+	cr_expect_eq(s_errors, before + 1, "a stale shape id is refused");
+}

@@ -220,6 +220,9 @@ TB_API bool tbBody_SetGravityScale(tbBodyId bodyId, float gravityScale);
 TB_API float tbBody_GetGravityScale(tbBodyId bodyId);
 TB_API bool tbBody_IsAwake(tbBodyId bodyId);
 TB_API void tbBody_SetAwake(tbBodyId bodyId, bool awake);
+/// Wake every body this body has a contact with (not the body itself), as Box2D v3.2's
+/// b2Body_WakeTouching: after moving a sleeping pile's support, for example.
+TB_API void tbBody_WakeTouching(tbBodyId bodyId);
 TB_API void tbBody_EnableSleep(tbBodyId bodyId, bool enableSleep);
 TB_API bool tbBody_IsSleepEnabled(tbBodyId bodyId);
 /// Speed (m/s) below which the body counts as resting (its fastest point: |v| + |ω|·extent).
@@ -314,6 +317,9 @@ TB_API void tbShape_SetUserData(tbShapeId shapeId, void* userData);
 TB_API void* tbShape_GetUserData(tbShapeId shapeId);
 TB_API tbAABB tbShape_GetAABB(tbShapeId shapeId);
 TB_API bool tbShape_TestPoint(tbShapeId shapeId, tbVec2 point);
+/// The point of the shape (radius included) closest to `target`, in world coordinates (GJK against
+/// a point); a target inside the shape is returned as it is.
+TB_API tbVec2 tbShape_GetClosestPoint(tbShapeId shapeId, tbVec2 target);
 TB_API tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input);
 TB_API tbMassData tbShape_GetMassData(tbShapeId shapeId);
 /// A chain segment's geometry with its ghost points (an error and zeros for another kind).
