@@ -128,38 +128,9 @@ static b2BodyType ToB2Type(tbBodyType type)
 	}
 }
 
-// A scene with a spawn schedule (templates built and destroyed over time, SceneSpawner) is not
-// built by this adapter: the one such scene, Box2D v3's exact rain, could not run here anyway,
-// since its humans' revolute joints carry springs (hertz, damping ratio), which Box2D 2.4.1's
-// revolute joint does not have (and a stiff spring or no spring would be another scene).
-// Returns true after saying why.
-static bool RefuseSpawnSchedule(const Scene* scene)
-{
-	if (scene->spawnerCount == 0)
-	{
-		return false;
-	}
-	bool springs = false;
-	for (int t = 0; t < scene->templateCount; ++t)
-	{
-		const Scene* parts = scene->templates[t].parts;
-		for (int j = 0; j < parts->jointCount; ++j)
-		{
-			const SceneJoint* joint = parts->joints + j;
-			springs = springs || (joint->type == tb_revoluteJoint && joint->def.revolute.enableSpring);
-		}
-	}
-	fprintf(stderr,
-			"box2d-2.4.1: the scene spawns and recycles bodies over time (template \"%s\"), which this "
-			"adapter does not build%s; scene not run\n",
-			scene->templates[scene->spawners[0].templateIndex].name,
-			springs ? ", and its revolute joints have springs, which Box2D 2.4.1's revolute joint lacks" : "");
-	return true;
-}
-
 PeerWorld* PeerBox2D_Create(const Scene* scene)
 {
-	if (RefuseSpawnSchedule(scene))
+	if (Peer_RefuseSpawnSchedule(scene, "box2d-2.4.1", "which Box2D 2.4.1's revolute joint lacks"))
 	{
 		return nullptr;
 	}

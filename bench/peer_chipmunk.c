@@ -166,39 +166,10 @@ static bool AddJoint(PeerWorld* peer, const SceneJoint* sj)
 	return true;
 }
 
-// A scene with a spawn schedule (templates built and destroyed over time, SceneSpawner) is not
-// built by this adapter: the one such scene, Box2D v3's exact rain, could not run here anyway,
-// since its humans' revolute joints carry springs (hertz, damping ratio), which this adapter
-// does not map to Chipmunk (it would take a cpDampedRotarySpring whose stiffness and damping
-// follow from the bodies' inertia; a stiff spring or no spring would be another scene).
-// Returns true after saying why.
-static bool RefuseSpawnSchedule(const Scene* scene)
-{
-	if (scene->spawnerCount == 0)
-	{
-		return false;
-	}
-	bool springs = false;
-	for (int t = 0; t < scene->templateCount; ++t)
-	{
-		const Scene* parts = scene->templates[t].parts;
-		for (int j = 0; j < parts->jointCount; ++j)
-		{
-			const SceneJoint* joint = parts->joints + j;
-			springs = springs || (joint->type == tb_revoluteJoint && joint->def.revolute.enableSpring);
-		}
-	}
-	fprintf(stderr,
-			"chipmunk-7: the scene spawns and recycles bodies over time (template \"%s\"), which this "
-			"adapter does not build%s; scene not run\n",
-			scene->templates[scene->spawners[0].templateIndex].name,
-			springs ? ", and its revolute joints have springs, which this adapter does not map to Chipmunk" : "");
-	return true;
-}
-
 PeerWorld* PeerChipmunk_Create(const Scene* scene, bool useTree)
 {
-	if (RefuseSpawnSchedule(scene))
+	// (a cpDampedRotarySpring would need its stiffness and damping from the bodies' inertia)
+	if (Peer_RefuseSpawnSchedule(scene, "chipmunk-7", "which this adapter does not map to Chipmunk"))
 	{
 		return NULL;
 	}

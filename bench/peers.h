@@ -14,11 +14,43 @@
 
 #include "scene.h"
 
+#include <stdbool.h>
+#include <stdio.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 typedef struct PeerWorld PeerWorld;
+
+/// For the adapters that do not run spawn schedules (Box2D 2.4.1, Chipmunk): false for a scene
+/// without one; else says on stderr, naming the engine, the template and whether its revolute
+/// joints carry springs (`springNote` says what the engine lacks), and returns true: the scene is
+/// not run. The one such scene, v3's exact rain, needs those springs (a stiff spring or none would
+/// be another scene).
+static inline bool Peer_RefuseSpawnSchedule(const Scene* scene, const char* engine, const char* springNote)
+{
+	if (scene->spawnerCount == 0)
+	{
+		return false;
+	}
+	bool springs = false;
+	for (int t = 0; t < scene->templateCount; ++t)
+	{
+		const Scene* parts = scene->templates[t].parts;
+		for (int j = 0; j < parts->jointCount; ++j)
+		{
+			const SceneJoint* joint = parts->joints + j;
+			springs = springs || (joint->type == tb_revoluteJoint && joint->def.revolute.enableSpring);
+		}
+	}
+	fprintf(stderr,
+			"%s: the scene spawns and recycles bodies over time (template \"%s\"), which this adapter does not "
+			"build%s%s; scene not run\n",
+			engine, scene->templates[scene->spawners[0].templateIndex].name,
+			springs ? ", and its revolute joints have springs, " : "", springs ? springNote : "");
+	return true;
+}
 
 /// Milliseconds of one step by stage, in Tumble's stage names (tumble-bench profile). Box2D v3's
 /// own profile maps as: setup = solverSetup; solve = constraints (prepare, sub-steps, restitution,

@@ -384,6 +384,22 @@ static void AddRainBody(Scene* scene, tbVec2 position, int kind)
 	Scene_AddGeometry(scene, body, &geometry, 1.0f, 0.6f);
 }
 
+// The floors of Box2D v3's rain benchmark: `rows` floors 45 m apart, each a row of gridCount + 1
+// static boxes of side gridSize on one static body (friction 0.6).
+static void AddRainFloors(Scene* scene, int rows, int gridCount, float gridSize)
+{
+	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	for (int i = 0; i < rows; ++i)
+	{
+		for (int j = 0; j <= gridCount; ++j)
+		{
+			tbVec2 center = V(-0.5f * (float)gridCount * gridSize + (float)j * gridSize, 45.0f * (float)i);
+			tbGeometry box = Scene_MakeBoxGeometry(0.5f * gridSize, 0.5f * gridSize, center, 0.0f);
+			Scene_AddGeometry(scene, ground, &box, 1.0f, 0.6f);
+		}
+	}
+}
+
 // Box2D v3's rain benchmark without joints: 5 floors (each 501 static 0.5 m boxes, 45 m apart);
 // above each floor 40 groups of 5 bodies, every body a rigid human or a circle, box or triangle.
 // Box2D drops jointed humans a column at a time (the exact scene is `rain`); here everything is
@@ -394,16 +410,7 @@ static Scene* BuildRainRigid(void)
 	scene->steps = 1000;
 	const int rowCount = 5, columnCount = 40, groupSize = 5, gridCount = 500;
 	const float gridSize = 0.5f;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
-	for (int i = 0; i < rowCount; ++i)
-	{
-		for (int j = 0; j <= gridCount; ++j)
-		{
-			tbVec2 center = V(-0.5f * (float)gridCount * gridSize + (float)j * gridSize, 45.0f * (float)i);
-			tbGeometry box = Scene_MakeBoxGeometry(0.5f * gridSize, 0.5f * gridSize, center, 0.0f);
-			Scene_AddGeometry(scene, ground, &box, 1.0f, 0.6f);
-		}
-	}
+	AddRainFloors(scene, rowCount, gridCount, gridSize);
 	float span = (float)gridCount * gridSize;
 	float groupDistance = span / (float)columnCount;
 	for (int row = 0; row < rowCount; ++row)
@@ -945,16 +952,7 @@ static Scene* BuildRainRagdolls(void)
 	scene->steps = 600;
 	const int rowCount = 5, columnCount = 40, groupSize = 5, gridCount = 500;
 	const float gridSize = 0.5f;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
-	for (int i = 0; i < rowCount; ++i)
-	{
-		for (int j = 0; j <= gridCount; ++j)
-		{
-			tbVec2 center = V(-0.5f * (float)gridCount * gridSize + (float)j * gridSize, 45.0f * (float)i);
-			tbGeometry box = Scene_MakeBoxGeometry(0.5f * gridSize, 0.5f * gridSize, center, 0.0f);
-			Scene_AddGeometry(scene, ground, &box, 1.0f, 0.6f);
-		}
-	}
+	AddRainFloors(scene, rowCount, gridCount, gridSize);
 	float span = (float)gridCount * gridSize;
 	float groupDistance = span / (float)columnCount;
 	int group = -1;
@@ -1366,16 +1364,7 @@ static Scene* BuildRain(void)
 	scene->steps = 1000;
 	const int rowCount = 5, columnCount = 40, groupSize = 5, gridCount = 500;
 	const float gridSize = 0.5f;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
-	for (int i = 0; i < rowCount; ++i)
-	{
-		for (int j = 0; j <= gridCount; ++j)
-		{
-			tbVec2 center = V(-0.5f * (float)gridCount * gridSize + (float)j * gridSize, 45.0f * (float)i);
-			tbGeometry box = Scene_MakeBoxGeometry(0.5f * gridSize, 0.5f * gridSize, center, 0.0f);
-			Scene_AddGeometry(scene, ground, &box, 1.0f, 0.6f);
-		}
-	}
+	AddRainFloors(scene, rowCount, gridCount, gridSize);
 	int group = Scene_AddTemplate(scene, "human_group");
 	HumanJoints joints = {0.05f, 5.0f, 0.5f};
 	for (int k = 0; k < groupSize; ++k)

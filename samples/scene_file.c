@@ -1165,7 +1165,11 @@ static bool ReadChain(Parser* parser, const cJSON* item, const char* path, Scene
 		   CheckNonNegative(parser, path, "restitution", chain->restitution);
 }
 
-static bool ReadChains(Parser* parser, const cJSON* item, Scene* scene)
+/// A top-level array whose items `read` takes one by one, each with its path ("chains[2]").
+typedef bool ReadItemFcn(Parser* parser, const cJSON* item, const char* path, Scene* scene);
+
+static bool ReadEach(Parser* parser, const cJSON* item, const char* key, const char* what, ReadItemFcn* read,
+					 Scene* scene)
 {
 	if (item == NULL)
 	{
@@ -1173,19 +1177,24 @@ static bool ReadChains(Parser* parser, const cJSON* item, Scene* scene)
 	}
 	if (cJSON_IsArray(item) == false)
 	{
-		return Fail(parser, "chains", "must be an array of chains");
+		return Fail(parser, key, "must be an array of %s", what);
 	}
 	int i = 0;
-	for (const cJSON* chain = item->child; chain != NULL; chain = chain->next, ++i)
+	for (const cJSON* entry = item->child; entry != NULL; entry = entry->next, ++i)
 	{
 		char child[PATH_SIZE];
-		IndexPath(child, "chains", i);
-		if (ReadChain(parser, chain, child, scene) == false)
+		IndexPath(child, key, i);
+		if (read(parser, entry, child, scene) == false)
 		{
 			return false;
 		}
 	}
 	return true;
+}
+
+static bool ReadChains(Parser* parser, const cJSON* item, Scene* scene)
+{
+	return ReadEach(parser, item, "chains", "chains", ReadChain, scene);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1243,25 +1252,7 @@ static bool ReadTemplate(Parser* parser, const cJSON* item, const char* path, Sc
 
 static bool ReadTemplates(Parser* parser, const cJSON* item, Scene* scene)
 {
-	if (item == NULL)
-	{
-		return true;
-	}
-	if (cJSON_IsArray(item) == false)
-	{
-		return Fail(parser, "templates", "must be an array of templates");
-	}
-	int i = 0;
-	for (const cJSON* entry = item->child; entry != NULL; entry = entry->next, ++i)
-	{
-		char child[PATH_SIZE];
-		IndexPath(child, "templates", i);
-		if (ReadTemplate(parser, entry, child, scene) == false)
-		{
-			return false;
-		}
-	}
-	return true;
+	return ReadEach(parser, item, "templates", "templates", ReadTemplate, scene);
 }
 
 static bool ReadSpawnerTemplate(Parser* parser, const cJSON* item, const char* path, const Scene* scene, int* index)
@@ -1328,25 +1319,7 @@ static bool ReadSpawner(Parser* parser, const cJSON* item, const char* path, Sce
 
 static bool ReadSpawners(Parser* parser, const cJSON* item, Scene* scene)
 {
-	if (item == NULL)
-	{
-		return true;
-	}
-	if (cJSON_IsArray(item) == false)
-	{
-		return Fail(parser, "spawners", "must be an array of spawners");
-	}
-	int i = 0;
-	for (const cJSON* entry = item->child; entry != NULL; entry = entry->next, ++i)
-	{
-		char child[PATH_SIZE];
-		IndexPath(child, "spawners", i);
-		if (ReadSpawner(parser, entry, child, scene) == false)
-		{
-			return false;
-		}
-	}
-	return true;
+	return ReadEach(parser, item, "spawners", "spawners", ReadSpawner, scene);
 }
 
 // Each template's parts must build too; the message names the template's item.

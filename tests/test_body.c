@@ -218,7 +218,7 @@ Test(body, awake_list_holes_keep_counts_and_order)
 // the pile: a stack of three asleep on the ground; waking the middle box's neighbours wakes the
 // bottom and top boxes (its contacts), the middle one stays asleep until the next step's island
 // stage (which wakes what touches an awake body), and a box far away sleeps on.
-Test(body, wake_touching_wakes_the_contact_partners)
+Test(body, wake_touching_wakes_the_contact_partners, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
@@ -252,5 +252,11 @@ Test(body, wake_touching_wakes_the_contact_partners)
 	cr_expect(tbBody_IsAwake(stack[0]) && tbBody_IsAwake(stack[2]), "its contact partners woke");
 	cr_expect(tbBody_IsAwake(stack[1]) == false, "not the body itself");
 	cr_expect(tbBody_IsAwake(far) == false, "nor a body it does not touch");
+	tbBodyId gone = stack[2];
+	tbDestroyBody(gone);
+	int before = s_errors;
+	tbBody_WakeTouching(gone);
+	cr_expect_eq(s_errors, before + 1, "a stale body id is refused with a message");
+	cr_expect(tbBody_IsAwake(far) == false, "and nothing else changes");
 	tbDestroyWorld(world);
 }
