@@ -89,8 +89,8 @@ static void benchPolygons(const PolygonPair* pairs, bool useGJK)
 		for (int i = 0; i < PAIR_COUNT; ++i)
 		{
 			const PolygonPair* p = &pairs[i];
-			tbManifold m = useGJK ? tbCollidePolygonsGJK(&p->a, p->xfA, &p->b, p->xfB)
-								  : tbCollidePolygons(&p->a, p->xfA, &p->b, p->xfB);
+			tbTransform xf = tbInvMulTransforms(p->xfA, p->xfB);
+			tbLocalManifold m = useGJK ? tbCollidePolygonsGJK(&p->a, &p->b, xf) : tbCollidePolygons(&p->a, &p->b, xf);
 			touching += m.pointCount > 0;
 		}
 	}
@@ -118,7 +118,8 @@ static void benchCirclePolygon(const CirclePolygonPair* pairs, bool useGJK)
 			}
 			else
 			{
-				tbManifold m = tbCollidePolygonAndCircle(&p->polygon, p->xfA, &p->circle, p->xfB);
+				tbLocalManifold m =
+					tbCollidePolygonAndCircle(&p->polygon, &p->circle, tbInvMulTransforms(p->xfA, p->xfB));
 				touching += m.pointCount > 0;
 			}
 		}

@@ -142,7 +142,14 @@ static void CollideEverything(const FuzzShape* a, tbTransform xfA, const FuzzSha
 	}
 	if (a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape)
 	{
-		tbManifold m = tbCollidePolygonsGJK(&a->geometry.polygon, xfA, &b->geometry.polygon, xfB);
+		tbLocalManifold local =
+			tbCollidePolygonsGJK(&a->geometry.polygon, &b->geometry.polygon, tbInvMulTransforms(xfA, xfB));
+		tbManifold m = {local.normal, 0.0f, {{0}}, local.pointCount};
+		for (int i = 0; i < local.pointCount && i < 2; ++i)
+		{
+			m.points[i].point = local.points[i].point;
+			m.points[i].separation = local.points[i].separation;
+		}
 		if (check)
 		{
 			CheckManifold(&m, "tbCollidePolygonsGJK");

@@ -189,14 +189,12 @@ static tbPolygon tbPolygonInFrame(const tbPolygon* polygon, tbTransform xf)
 // ---------------------------------------------------------------------------------------------
 // Circles and capsules: closed forms
 
-static tbManifold tbCollideCirclesMargin(const tbCircle* circleA, tbTransform xfA, const tbCircle* circleB, tbTransform xfB, float keep)
+static tbManifold tbCirclesFrameA(const tbCircle* circleA, const tbCircle* circleB, tbTransform xf, float keep)
 {
 	// Concentric circles push along A's x-axis: any unit vector is right, this one is defined.
-	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 centerB = tbTransformPoint(xf, circleB->center);
 	tbVec2 xAxis = {1.0f, 0.0f};
-	tbManifold m = tbPointManifold(circleA->center, circleA->radius, centerB, circleB->radius, xAxis, 0, keep);
-	return tbManifoldToWorld(m, xfA);
+	return tbPointManifold(circleA->center, circleA->radius, centerB, circleB->radius, xAxis, 0, keep);
 }
 
 // Capsule core a1–a2 against a point c with radius rB, in A's frame.
@@ -210,13 +208,11 @@ static tbManifold tbCapsuleAndPoint(tbVec2 a1, tbVec2 a2, float rA, tbVec2 c, fl
 	return tbPointManifold(q, rA, c, rB, fallback, 0, keep);
 }
 
-static tbManifold tbCollideCapsuleAndCircleMargin(const tbCapsule* capsuleA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB, float keep)
+static tbManifold tbCapsuleAndCircleFrameA(const tbCapsule* capsuleA, const tbCircle* circleB, tbTransform xf,
+											float keep)
 {
-	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 c = tbTransformPoint(xf, circleB->center);
-	tbManifold m = tbCapsuleAndPoint(capsuleA->center1, capsuleA->center2, capsuleA->radius, c, circleB->radius, keep);
-	return tbManifoldToWorld(m, xfA);
+	return tbCapsuleAndPoint(capsuleA->center1, capsuleA->center2, capsuleA->radius, c, circleB->radius, keep);
 }
 
 static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB, float keep);
@@ -277,13 +273,11 @@ static tbManifold tbCapsulesLocal(tbVec2 a1, tbVec2 a2, float rA, tbVec2 b1, tbV
 	return tbPointManifold(r.closest1, rA, r.closest2, rB, side, 0, keep);
 }
 
-static tbManifold tbCollideCapsulesMargin(const tbCapsule* capsuleA, tbTransform xfA, const tbCapsule* capsuleB, tbTransform xfB, float keep)
+static tbManifold tbCapsulesFrameA(const tbCapsule* capsuleA, const tbCapsule* capsuleB, tbTransform xf, float keep)
 {
-	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
 	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
-	tbManifold m = tbCapsulesLocal(capsuleA->center1, capsuleA->center2, capsuleA->radius, b1, b2, capsuleB->radius, keep);
-	return tbManifoldToWorld(m, xfA);
+	return tbCapsulesLocal(capsuleA->center1, capsuleA->center2, capsuleA->radius, b1, b2, capsuleB->radius, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -347,13 +341,11 @@ static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB
 	return tbPointManifold(bestPoint, rA, c, rB, faceNormal, 0, keep);
 }
 
-static tbManifold tbCollidePolygonAndCircleMargin(const tbPolygon* polygonA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB, float keep)
+static tbManifold tbPolygonAndCircleFrameA(const tbPolygon* polygonA, const tbCircle* circleB, tbTransform xf,
+											float keep)
 {
-	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 c = tbTransformPoint(xf, circleB->center);
-	tbManifold m = tbPolygonAndPoint(polygonA, c, circleB->radius, keep);
-	return tbManifoldToWorld(m, xfA);
+	return tbPolygonAndPoint(polygonA, c, circleB->radius, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -673,17 +665,15 @@ static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPoly
 	return tbClosestFeaturesManifold(polygonA, polygonB, edgeA, separationA, edgeB, separationB, keep);
 }
 
-static tbManifold tbCollidePolygonsMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB, tbTransform xfB, float keep)
+static tbManifold tbPolygonsFrameA(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf, float keep)
 {
-	tbPolygon localB = tbPolygonInFrame(polygonB, tbInvMulTransforms(xfA, xfB));
-	tbManifold m = tbCollidePolygonsLocal(polygonA, &localB, keep);
-	return tbManifoldToWorld(m, xfA);
+	tbPolygon localB = tbPolygonInFrame(polygonB, xf);
+	return tbCollidePolygonsLocal(polygonA, &localB, keep);
 }
 
-static tbManifold tbCollidePolygonAndCapsuleMargin(const tbPolygon* polygonA, tbTransform xfA, const tbCapsule* capsuleB,
-									  tbTransform xfB, float keep)
+static tbManifold tbPolygonAndCapsuleFrameA(const tbPolygon* polygonA, const tbCapsule* capsuleB, tbTransform xf,
+											 float keep)
 {
-	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
 	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
 	tbManifold m;
@@ -696,41 +686,39 @@ static tbManifold tbCollidePolygonAndCapsuleMargin(const tbPolygon* polygonA, tb
 		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
 		m = tbCollidePolygonsLocal(polygonA, &polygonB, keep);
 	}
-	return tbManifoldToWorld(m, xfA);
+	return m;
 }
 
 // ---------------------------------------------------------------------------------------------
 // Segments: a segment is a capsule of radius zero, i.e. a 2-vertex polygon without radius
 
-static tbManifold tbCollideSegmentAndCircleMargin(const tbSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB, float keep)
+static tbManifold tbSegmentAndCircleFrameA(const tbSegment* segmentA, const tbCircle* circleB, tbTransform xf,
+											float keep)
 {
 	tbCapsule capsuleA = {segmentA->point1, segmentA->point2, 0.0f};
-	return tbCollideCapsuleAndCircleMargin(&capsuleA, xfA, circleB, xfB, keep);
+	return tbCapsuleAndCircleFrameA(&capsuleA, circleB, xf, keep);
 }
 
-static tbManifold tbCollideSegmentAndCapsuleMargin(const tbSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
-									  tbTransform xfB, float keep)
+static tbManifold tbSegmentAndCapsuleFrameA(const tbSegment* segmentA, const tbCapsule* capsuleB, tbTransform xf,
+											 float keep)
 {
 	tbCapsule capsuleA = {segmentA->point1, segmentA->point2, 0.0f};
-	return tbCollideCapsulesMargin(&capsuleA, xfA, capsuleB, xfB, keep);
+	return tbCapsulesFrameA(&capsuleA, capsuleB, xf, keep);
 }
 
-static tbManifold tbCollideSegmentAndPolygonMargin(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
-									  tbTransform xfB, float keep)
+static tbManifold tbSegmentAndPolygonFrameA(const tbSegment* segmentA, const tbPolygon* polygonB, tbTransform xf,
+											 float keep)
 {
+	tbPolygon localB = tbPolygonInFrame(polygonB, xf);
 	if (tbIsDegenerateSegment(segmentA->point1, segmentA->point2))
 	{
 		// A point against B: collide B with it and turn the normal back to A → B.
-		tbCircle point = {tbLerp(segmentA->point1, segmentA->point2, 0.5f), 0.0f};
-		tbManifold m = tbCollidePolygonAndCircleMargin(polygonB, xfB, &point, xfA, keep);
+		tbManifold m = tbPolygonAndPoint(&localB, tbLerp(segmentA->point1, segmentA->point2, 0.5f), 0.0f, keep);
 		m.normal = tbNeg(m.normal);
 		return m;
 	}
 	tbPolygon polygonA = tbMakeSegmentPolygon(segmentA->point1, segmentA->point2, 0.0f);
-	tbPolygon localB = tbPolygonInFrame(polygonB, tbInvMulTransforms(xfA, xfB));
-	tbManifold m = tbCollidePolygonsLocal(&polygonA, &localB, keep);
-	return tbManifoldToWorld(m, xfA);
+	return tbCollidePolygonsLocal(&polygonA, &localB, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -863,17 +851,16 @@ static tbManifold tbChainAndPointLocal(const tbChainSegment* chain, tbVec2 c, fl
 	return tbPointManifold(corner, 0.0f, c, radius, f.n, id, keep);
 }
 
-static tbManifold tbCollideChainSegmentAndCircleMargin(const tbChainSegment* segmentA, tbTransform xfA,
-													   const tbCircle* circleB, tbTransform xfB, float keep)
+static tbManifold tbChainSegmentAndCircleFrameA(const tbChainSegment* segmentA, const tbCircle* circleB, tbTransform xf,
+												 float keep)
 {
-	tbVec2 c = tbTransformPoint(tbInvMulTransforms(xfA, xfB), circleB->center);
-	return tbManifoldToWorld(tbChainAndPointLocal(segmentA, c, circleB->radius, keep), xfA);
+	tbVec2 c = tbTransformPoint(xf, circleB->center);
+	return tbChainAndPointLocal(segmentA, c, circleB->radius, keep);
 }
 
-static tbManifold tbCollideChainSegmentAndCapsuleMargin(const tbChainSegment* segmentA, tbTransform xfA,
-														const tbCapsule* capsuleB, tbTransform xfB, float keep)
+static tbManifold tbChainSegmentAndCapsuleFrameA(const tbChainSegment* segmentA, const tbCapsule* capsuleB,
+												  tbTransform xf, float keep)
 {
-	tbTransform xf = tbInvMulTransforms(xfA, xfB);
 	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
 	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
 	tbManifold m;
@@ -886,14 +873,14 @@ static tbManifold tbCollideChainSegmentAndCapsuleMargin(const tbChainSegment* se
 		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
 		m = tbChainAndPolygonLocal(segmentA, &polygonB, keep);
 	}
-	return tbManifoldToWorld(m, xfA);
+	return m;
 }
 
-static tbManifold tbCollideChainSegmentAndPolygonMargin(const tbChainSegment* segmentA, tbTransform xfA,
-														const tbPolygon* polygonB, tbTransform xfB, float keep)
+static tbManifold tbChainSegmentAndPolygonFrameA(const tbChainSegment* segmentA, const tbPolygon* polygonB,
+												  tbTransform xf, float keep)
 {
-	tbPolygon localB = tbPolygonInFrame(polygonB, tbInvMulTransforms(xfA, xfB));
-	return tbManifoldToWorld(tbChainAndPolygonLocal(segmentA, &localB, keep), xfA);
+	tbPolygon localB = tbPolygonInFrame(polygonB, xf);
+	return tbChainAndPolygonLocal(segmentA, &localB, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -920,71 +907,87 @@ static int tbDispatchRank(tbShapeType type)
 	}
 }
 
-static tbManifold tbCollidePolygonPair(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-									   tbTransform xfB, tbNarrowPhaseMethod method, float keep)
+static tbManifold tbPolygonPairFrameA(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf,
+									  tbNarrowPhaseMethod method, float keep)
 {
 	if (method == tb_narrowPhaseGJK)
 	{
-		return tbCollidePolygonsGJKWithMargin(polygonA, xfA, polygonB, xfB, keep);
+		return tbPolygonsGJKFrameA(polygonA, polygonB, xf, keep);
 	}
-	return tbCollidePolygonsMargin(polygonA, xfA, polygonB, xfB, keep);
+	return tbPolygonsFrameA(polygonA, polygonB, xf, keep);
 }
 
-// Pair in routine order: rank(A) ≥ rank(B).
-static tbManifold tbCollideOrdered(const tbGeometry* a, tbTransform xfA, const tbGeometry* b, tbTransform xfB,
-								   tbNarrowPhaseMethod method, float keep)
+// Pair in routine order, rank(A) ≥ rank(B); B placed in A's frame by xf = A⁻¹·B; the manifold in
+// A's frame.
+tbManifold tbCollideOrderedFrameA(const tbGeometry* a, const tbGeometry* b, tbTransform xf, tbNarrowPhaseMethod method,
+								  float keep)
 {
 	switch (a->type)
 	{
 		case tb_circleShape:
-			return tbCollideCirclesMargin(&a->circle, xfA, &b->circle, xfB, keep);
+			return tbCirclesFrameA(&a->circle, &b->circle, xf, keep);
 		case tb_capsuleShape:
 			if (b->type == tb_circleShape)
 			{
-				return tbCollideCapsuleAndCircleMargin(&a->capsule, xfA, &b->circle, xfB, keep);
+				return tbCapsuleAndCircleFrameA(&a->capsule, &b->circle, xf, keep);
 			}
-			return tbCollideCapsulesMargin(&a->capsule, xfA, &b->capsule, xfB, keep);
+			return tbCapsulesFrameA(&a->capsule, &b->capsule, xf, keep);
 		case tb_polygonShape:
 			if (b->type == tb_circleShape)
 			{
-				return tbCollidePolygonAndCircleMargin(&a->polygon, xfA, &b->circle, xfB, keep);
+				return tbPolygonAndCircleFrameA(&a->polygon, &b->circle, xf, keep);
 			}
 			if (b->type == tb_capsuleShape)
 			{
-				return tbCollidePolygonAndCapsuleMargin(&a->polygon, xfA, &b->capsule, xfB, keep);
+				return tbPolygonAndCapsuleFrameA(&a->polygon, &b->capsule, xf, keep);
 			}
-			return tbCollidePolygonPair(&a->polygon, xfA, &b->polygon, xfB, method, keep);
+			return tbPolygonPairFrameA(&a->polygon, &b->polygon, xf, method, keep);
 		case tb_segmentShape:
 			if (b->type == tb_circleShape)
 			{
-				return tbCollideSegmentAndCircleMargin(&a->segment, xfA, &b->circle, xfB, keep);
+				return tbSegmentAndCircleFrameA(&a->segment, &b->circle, xf, keep);
 			}
 			if (b->type == tb_capsuleShape)
 			{
-				return tbCollideSegmentAndCapsuleMargin(&a->segment, xfA, &b->capsule, xfB, keep);
+				return tbSegmentAndCapsuleFrameA(&a->segment, &b->capsule, xf, keep);
 			}
 			if (b->type == tb_polygonShape)
 			{
-				return tbCollideSegmentAndPolygonMargin(&a->segment, xfA, &b->polygon, xfB, keep);
+				return tbSegmentAndPolygonFrameA(&a->segment, &b->polygon, xf, keep);
 			}
 			return tb_emptyManifold; // two segments have no area: no contact
 		case tb_chainSegmentShape:
 			if (b->type == tb_circleShape)
 			{
-				return tbCollideChainSegmentAndCircleMargin(&a->chainSegment, xfA, &b->circle, xfB, keep);
+				return tbChainSegmentAndCircleFrameA(&a->chainSegment, &b->circle, xf, keep);
 			}
 			if (b->type == tb_capsuleShape)
 			{
-				return tbCollideChainSegmentAndCapsuleMargin(&a->chainSegment, xfA, &b->capsule, xfB, keep);
+				return tbChainSegmentAndCapsuleFrameA(&a->chainSegment, &b->capsule, xf, keep);
 			}
 			if (b->type == tb_polygonShape)
 			{
-				return tbCollideChainSegmentAndPolygonMargin(&a->chainSegment, xfA, &b->polygon, xfB, keep);
+				return tbChainSegmentAndPolygonFrameA(&a->chainSegment, &b->polygon, xf, keep);
 			}
 			return tb_emptyManifold; // segments against segments: no area, no contact
 		default:
 			return tb_emptyManifold;
 	}
+}
+
+bool tbIsRoutineOrder(tbShapeType typeA, tbShapeType typeB)
+{
+	return tbDispatchRank(typeA) >= tbDispatchRank(typeB);
+}
+
+tbManifold tbSwapManifoldRoles(tbManifold m)
+{
+	m.normal = tbNeg(m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		m.points[i].id = tbSwapFeatureId(m.points[i].id);
+	}
+	return m;
 }
 
 tbManifold tbCollideShapesWithMargin(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB,
@@ -1008,18 +1011,14 @@ tbManifold tbCollideShapesWithMargin(const tbGeometry* shapeA, tbTransform xfA, 
 	float keep = speculativeDistance;
 	if (rankA >= rankB)
 	{
-		return tbCollideOrdered(shapeA, xfA, shapeB, xfB, method, keep);
+		tbManifold m = tbCollideOrderedFrameA(shapeA, shapeB, tbInvMulTransforms(xfA, xfB), method, keep);
+		return tbManifoldToWorld(m, xfA);
 	}
 
 	// B → A in routine order, then the normal turned to A → B and the feature bytes swapped so
 	// the first byte still names a feature of A. Points and separations do not depend on order.
-	tbManifold m = tbCollideOrdered(shapeB, xfB, shapeA, xfA, method, keep);
-	m.normal = tbNeg(m.normal);
-	for (int i = 0; i < m.pointCount; ++i)
-	{
-		m.points[i].id = tbSwapFeatureId(m.points[i].id);
-	}
-	return m;
+	tbManifold m = tbCollideOrderedFrameA(shapeB, shapeA, tbInvMulTransforms(xfB, xfA), method, keep);
+	return tbSwapManifoldRoles(tbManifoldToWorld(m, xfB));
 }
 
 tbManifold tbCollideShapes(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB, tbTransform xfB,
@@ -1038,73 +1037,97 @@ tbManifold tbCollideShapes(const tbGeometry* shapeA, tbTransform xfA, const tbGe
 }
 
 // ---------------------------------------------------------------------------------------------
-// Public pair routines: the fixed speculative distance TB_SPECULATIVE_DISTANCE.
+// Public pair routines, Box2D v3.2's local form: B placed in A's frame by xf = A⁻¹·B, the
+// manifold in A's frame, points kept while closer than TB_SPECULATIVE_DISTANCE.
 
-tbManifold tbCollideCircles(const tbCircle* circleA, tbTransform xfA, const tbCircle* circleB, tbTransform xfB)
+tbLocalManifold tbMakeLocalManifold(const tbManifold* m)
 {
-	return tbCollideCirclesMargin(circleA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+	tbLocalManifold local = {0};
+	local.normal = m->normal;
+	local.pointCount = m->pointCount;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		local.points[i].point = m->points[i].point;
+		local.points[i].separation = m->points[i].separation;
+		local.points[i].id = m->points[i].id;
+	}
+	return local;
 }
 
-tbManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB)
+tbLocalManifold tbCollideCircles(const tbCircle* circleA, const tbCircle* circleB, tbTransform xf)
 {
-	return tbCollideCapsuleAndCircleMargin(capsuleA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbCirclesFrameA(circleA, circleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollideCapsules(const tbCapsule* capsuleA, tbTransform xfA, const tbCapsule* capsuleB, tbTransform xfB)
+tbLocalManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, const tbCircle* circleB, tbTransform xf)
 {
-	return tbCollideCapsulesMargin(capsuleA, xfA, capsuleB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbCapsuleAndCircleFrameA(capsuleA, circleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB)
+tbLocalManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, const tbCircle* circleB, tbTransform xf)
 {
-	return tbCollidePolygonAndCircleMargin(polygonA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbSegmentAndCircleFrameA(segmentA, circleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollidePolygons(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB, tbTransform xfB)
+tbLocalManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, const tbCircle* circleB, tbTransform xf)
 {
-	return tbCollidePolygonsMargin(polygonA, xfA, polygonB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbPolygonAndCircleFrameA(polygonA, circleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, tbTransform xfA, const tbCapsule* capsuleB,
-									  tbTransform xfB)
+tbLocalManifold tbCollideCapsules(const tbCapsule* capsuleA, const tbCapsule* capsuleB, tbTransform xf)
 {
-	return tbCollidePolygonAndCapsuleMargin(polygonA, xfA, capsuleB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbCapsulesFrameA(capsuleA, capsuleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
-									 tbTransform xfB)
+tbLocalManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, const tbCapsule* capsuleB, tbTransform xf)
 {
-	return tbCollideSegmentAndCircleMargin(segmentA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbSegmentAndCapsuleFrameA(segmentA, capsuleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
-									  tbTransform xfB)
+tbLocalManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, const tbCapsule* capsuleB, tbTransform xf)
 {
-	return tbCollideSegmentAndCapsuleMargin(segmentA, xfA, capsuleB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbPolygonAndCapsuleFrameA(polygonA, capsuleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
-									  tbTransform xfB)
+tbLocalManifold tbCollidePolygons(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf)
 {
-	return tbCollideSegmentAndPolygonMargin(segmentA, xfA, polygonB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbPolygonsFrameA(polygonA, polygonB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollideChainSegmentAndCircle(const tbChainSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
-										  tbTransform xfB)
+tbLocalManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, const tbPolygon* polygonB, tbTransform xf)
 {
-	return tbCollideChainSegmentAndCircleMargin(segmentA, xfA, circleB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbSegmentAndPolygonFrameA(segmentA, polygonB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollideChainSegmentAndCapsule(const tbChainSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
-										   tbTransform xfB)
+tbLocalManifold tbCollideChainSegmentAndCircle(const tbChainSegment* segmentA, const tbCircle* circleB, tbTransform xf)
 {
-	return tbCollideChainSegmentAndCapsuleMargin(segmentA, xfA, capsuleB, xfB, TB_KEEP_DISTANCE);
+	tbManifold m = tbChainSegmentAndCircleFrameA(segmentA, circleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollideChainSegmentAndPolygon(const tbChainSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
-										   tbTransform xfB)
+// The simplex cache of Box2D v3's signature is accepted and left as it is: Tumble's chain
+// routines use the separating axis test, which has no simplex to carry between steps.
+tbLocalManifold tbCollideChainSegmentAndCapsule(const tbChainSegment* segmentA, const tbCapsule* capsuleB,
+												tbTransform xf, tbSimplexCache* cache)
 {
-	return tbCollideChainSegmentAndPolygonMargin(segmentA, xfA, polygonB, xfB, TB_KEEP_DISTANCE);
+	(void)cache;
+	tbManifold m = tbChainSegmentAndCapsuleFrameA(segmentA, capsuleB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
+}
+
+tbLocalManifold tbCollideChainSegmentAndPolygon(const tbChainSegment* segmentA, const tbPolygon* polygonB,
+												tbTransform xf, tbSimplexCache* cache)
+{
+	(void)cache;
+	tbManifold m = tbChainSegmentAndPolygonFrameA(segmentA, polygonB, xf, TB_KEEP_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }

@@ -22,15 +22,16 @@
 //    h − rA − rB, and its world point is midway between the surfaces:
 //        point = p + ½(rR − rI − h)·nR.
 //    Points are kept while the separation is below the keep distance: TB_SPECULATIVE_DISTANCE
-//    for tbCollidePolygonsGJK, the caller's margin for tbCollidePolygonsGJKWithMargin.
+//    for tbCollidePolygonsGJK, the caller's margin for tbPolygonsGJKFrameA.
 // Feature ids: the point at the reference face's first end is (first vertex of the face, the
 // incident vertex on that side) and likewise at the second end, whether or not it was clipped:
 // the same corners and edges touching keep the same ids. Bytes are (vertex of A, vertex of B),
 // the same pair whichever face is the reference, so a point keeps its id (and its warm start)
 // when two near-parallel faces swap roles; corner–corner points carry TB_GJK_FEATURE_CORNER on
 // both bytes, so they never share an id with a clipped point.
-// Everything is computed in A's frame and moved to world at the end (precision far from the
-// origin). anchorA and anchorB are left zero for the world to fill.
+// Everything is computed in A's frame, where the result stays (Box2D v3.2's local manifold);
+// callers move it to the world (precision far from the origin). anchorA and anchorB are left
+// zero for the world to fill.
 
 #include "core.h"
 #include "manifold_internal.h"
@@ -193,21 +194,20 @@ static tbManifold tbCornerManifold(const tbSeparationOutput* separation, const t
 	return m;
 }
 
-tbManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-								tbTransform xfB)
+tbLocalManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf)
 {
-	return tbCollidePolygonsGJKWithMargin(polygonA, xfA, polygonB, xfB, TB_SPECULATIVE_DISTANCE);
+	tbManifold m = tbPolygonsGJKFrameA(polygonA, polygonB, xf, TB_SPECULATIVE_DISTANCE);
+	return tbMakeLocalManifold(&m);
 }
 
-tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-										  tbTransform xfB, float keep)
+tbManifold tbPolygonsGJKFrameA(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf, float keep)
 {
 	tbManifold empty = {0};
 
 	tbDistanceInput input = {0};
 	input.proxyA = tbMakeProxy(polygonA->vertices, polygonA->count, polygonA->radius);
 	input.proxyB = tbMakeProxy(polygonB->vertices, polygonB->count, polygonB->radius);
-	input.transform = tbInvMulTransforms(xfA, xfB);
+	input.transform = xf;
 	input.useRadii = true;
 	tbSeparationOutput separation = tbShapeSeparation(&input, NULL); // in A's frame
 	if (separation.separation >= keep)
@@ -216,7 +216,7 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 	}
 
 	// B and the normal in A's frame
-	tbPolygon localB = tbTransformPolygon(tbInvMulTransforms(xfA, xfB), polygonB);
+	tbPolygon localB = tbTransformPolygon(xf, polygonB);
 	tbVec2 n = separation.normal;
 
 	int faceA = tbMostAlignedFace(polygonA, n);
@@ -227,7 +227,7 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 	float coreSeparation = separation.separation + polygonA->radius + polygonB->radius;
 	if (coreSeparation > tbMaxFloat(separationA, separationB) + TB_GJK_CORNER_TOLERANCE)
 	{
-		return tbManifoldToWorld(tbCornerManifold(&separation, polygonA, &localB, n), xfA);
+		return tbCornerManifold(&separation, polygonA, &localB, n);
 	}
 
 	tbManifold m;
@@ -244,7 +244,7 @@ tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform
 	{
 		// the incident edge is edge-on to the face or misses its slab (only within the
 		// tolerances above): the GJK/EPA witness pair is still a valid single contact
-		return tbManifoldToWorld(tbCornerManifold(&separation, polygonA, &localB, n), xfA);
+		return tbCornerManifold(&separation, polygonA, &localB, n);
 	}
-	return tbManifoldToWorld(m, xfA);
+	return m;
 }

@@ -17,7 +17,23 @@ static inline tbManifold tbManifoldToWorld(tbManifold m, tbTransform xfA)
 	return m;
 }
 
-/// tbCollidePolygonsGJK keeping points whose separation is below `keep` (manifold_gjk.c); the
-/// narrow phase calls it through manifold.c's dispatch with the contact's speculative margin.
-tbManifold tbCollidePolygonsGJKWithMargin(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-										  tbTransform xfB, float keep);
+/// Polygon pair by GJK/EPA with B placed in A's frame by xf = A⁻¹·B, keeping points whose
+/// separation is below `keep`; the manifold in A's frame (manifold_gjk.c).
+tbManifold tbPolygonsGJKFrameA(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf, float keep);
+
+/// Any pair in routine order (tbIsRoutineOrder(a->type, b->type)), B placed in A's frame by
+/// xf = A⁻¹·B, keeping points whose separation is below `keep`; the manifold in A's frame, its
+/// normal from A to B (manifold.c). The narrow phase calls it with the relative transform of
+/// the two bodies, taken in the precision of world positions.
+tbManifold tbCollideOrderedFrameA(const tbGeometry* a, const tbGeometry* b, tbTransform xf, tbNarrowPhaseMethod method,
+								  float keep);
+
+/// True when the pair routines take a shape of typeA first and one of typeB second.
+bool tbIsRoutineOrder(tbShapeType typeA, tbShapeType typeB);
+
+/// The manifold of (B, A) as one of (A, B): normal reversed, feature bytes swapped so that the
+/// first names a feature of A. Points and separations do not depend on the order.
+tbManifold tbSwapManifoldRoles(tbManifold m);
+
+/// The point, separation and id of each point of m, as Box2D v3.2's local manifold.
+tbLocalManifold tbMakeLocalManifold(const tbManifold* m);

@@ -82,9 +82,14 @@ bool tbShape_IsValid(tbShapeId id)
 		   world->shapes[index].generation == id.generation;
 }
 
-tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbTransform transform)
+tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbWorldTransform transform)
 {
 	return tbComputeShapeAABB(&shape->geometry, transform);
+}
+
+tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, float extra)
+{
+	return tbAABB_Fatten(tbComputeShapeAABB(&shape->geometry, transform), extra);
 }
 
 bool tbShouldShapesCollide(tbFilter a, tbFilter b)
@@ -109,7 +114,7 @@ void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body)
 	// largest margin (its body's extent may not include it yet); the first finalize that finds the
 	// box too small re-makes it from the body's motion.
 	float margin = body->type == tb_staticBody ? 0.0f : TB_AABB_MARGIN;
-	shape->fatAABB = tbAABB_Fatten(shape->aabb, margin);
+	shape->fatAABB = tbComputeFatShapeAABB(shape, body->transform, margin);
 	tbProxyType type = body->type == tb_staticBody ? tb_proxyStatic : tb_proxyMovable;
 	shape->proxyKey = tbBroadPhase_CreateProxy(&world->broadPhase, shape->fatAABB, shape->filter.categoryBits,
 											   (int)(shape - world->shapes), type);

@@ -6,6 +6,7 @@
 #include "arena.h"
 #include "broad_phase.h"
 #include "core.h"
+#include "shape.h"
 #include "table.h"
 
 #include "tumble/tumble.h"
@@ -69,35 +70,6 @@ typedef struct tbBody
 	bool isMarked;
 	bool isDisabled; ///< out of the simulation (tbBody_Disable): no proxies, no contacts, never awake
 } tbBody;
-
-// ---------------------------------------------------------------------------------------------
-// Shapes (shape.c)
-
-typedef struct tbShape
-{
-	// Hot in the collide stage, which visits every contact each step (most are only fat-box
-	// overlaps, rejected with these fields): first cache line.
-	tbAABB aabb; ///< tight world box, updated after each step
-	int bodyId;
-	int proxyKey;
-	bool isSensor;
-	bool proxyMoved; ///< finalize: the fat box changed, the proxy is to be moved (shape.c)
-
-	tbGeometry geometry; ///< in the body frame
-	void* userData;
-	tbAABB fatAABB; ///< the broad-phase box (aabb enlarged by TB_AABB_MARGIN)
-	tbFilter filter;
-	float density;
-	tbSurfaceMaterial material;
-	int nextShapeId;
-	uint16_t generation;
-	bool inUse;
-	bool enableSensorEvents;
-	bool enableContactEvents;
-	bool enableHitEvents;
-	bool enableCustomFiltering;
-	bool enablePreSolveEvents;
-} tbShape;
 
 // ---------------------------------------------------------------------------------------------
 // Contacts (contact.c)
@@ -404,8 +376,7 @@ static inline int tbAwakeBodyCount(const tbWorld* world)
 void tbSleepBody(tbWorld* world, tbBody* body);
 void tbDestroyBodyContacts(tbWorld* world, tbBody* body, bool wakeBodies);
 
-// shape.c
-tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbTransform transform);
+// shape.c (tbComputeShapeAABBInternal, tbComputeFatShapeAABB: shape.h)
 void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body);
 void tbDestroyShapeProxy(tbWorld* world, tbShape* shape);
 bool tbShouldShapesCollide(tbFilter a, tbFilter b);

@@ -377,7 +377,7 @@ Test(accessors, chain_segment_and_polygon_manifold)
 	tbChainSegment segment = {{2.0f, 0.0f}, {{1.0f, 0.0f}, {0.0f, 0.0f}}, {-1.0f, 0.0f}, -1};
 	tbPolygon box = tbMakeBox(0.25f, 0.25f);
 	tbTransform xf = {{0.5f, 0.25f}, tbMakeRot(0.0f)};
-	tbManifold m = tbCollideChainSegmentAndPolygon(&segment, tb_transform_identity, &box, xf);
+	tbLocalManifold m = tbCollideChainSegmentAndPolygon(&segment, &box, xf, NULL);
 	cr_assert_eq(m.pointCount, 2);
 	cr_assert_float_eq(m.normal.y, 1.0f, 1e-6f);
 	cr_assert_float_eq(m.points[0].separation, 0.0f, 1e-5f);

@@ -3,6 +3,7 @@
 // target transforms of sleeping bodies, null ids and the named colours. Box2D v3.2's own
 // public-API tests, renamed b2 → tb, run by hand outside this repository (docs/porting.md says how);
 // these tests keep the same behaviours checked here, with values worked out in each comment.
+#include "aabb.h"
 #include "tumble/tumble.h"
 
 #include <criterion/criterion.h>
@@ -256,4 +257,91 @@ Test(conformance, null_ids_and_named_values)
 	cr_expect_eq(tb_colorGreen, 0x008000);
 	cr_expect_eq(tb_colorRebeccaPurple, 0x663399);
 	cr_expect(tbVec2_zero.x == 0.0f && tbRot_identity.c == 1.0f && tbTransform_identity.q.s == 0.0f);
+}
+
+// v3.2's local manifold form: B placed in A's frame by xf = A⁻¹·B, the manifold in A's frame.
+// Two unit boxes whose centres are 0.9 m apart overlap by 0.1 m (closed form): two points on the
+// overlap's mid-plane x = 0.45 (surfaces at 0.5 and 0.4), at the shared corners y = ±0.5,
+// separation −0.1, normal +x. The same pair placed anywhere in the world, turned by any angle,
+// gives the same local manifold to float rounding of the relative transform (1e-5 m at 3 m from
+// the origin), while the world form turns its normal with A.
+Test(conformance, local_manifold_form)
+{
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	tbTransform offset = {{0.9f, 0.0f}, tbRot_identity};
+	tbLocalManifold m = tbCollidePolygons(&box, &box, offset);
+	cr_assert_eq(m.pointCount, 2);
+	cr_expect_float_eq(m.normal.x, 1.0f, 1e-6f);
+	cr_expect_float_eq(m.normal.y, 0.0f, 1e-6f);
+	for (int i = 0; i < 2; ++i)
+	{
+		cr_expect_float_eq(m.points[i].separation, -0.1f, 1e-6f);
+		cr_expect_float_eq(m.points[i].point.x, 0.45f, 1e-6f);
+		cr_expect_float_eq(fabsf(m.points[i].point.y), 0.5f, 1e-6f);
+	}
+	cr_expect_neq(m.points[0].id, m.points[1].id);
+
+	tbTransform xfA = {{3.0f, -2.0f}, tbMakeRot(0.7f)};
+	tbTransform xfB = tbMulTransforms(xfA, offset);
+	tbLocalManifold moved = tbCollidePolygons(&box, &box, tbInvMulTransforms(xfA, xfB));
+	cr_assert_eq(moved.pointCount, 2);
+	for (int i = 0; i < 2; ++i)
+	{
+		cr_expect_float_eq(moved.points[i].separation, m.points[i].separation, 1e-5f);
+		cr_expect_float_eq(moved.points[i].point.x, m.points[i].point.x, 1e-5f);
+		cr_expect_float_eq(moved.points[i].point.y, m.points[i].point.y, 1e-5f);
+		cr_expect_eq(moved.points[i].id, m.points[i].id);
+	}
+	tbGeometry a = {.type = tb_polygonShape, .polygon = box};
+	tbManifold world = tbCollideShapes(&a, xfA, &a, xfB, tb_narrowPhaseAuto);
+	tbVec2 turned = tbRotateVector(xfA.q, moved.normal);
+	cr_expect_float_eq(world.normal.x, turned.x, 1e-6f);
+	cr_expect_float_eq(world.normal.y, turned.y, 1e-6f);
+
+	// Circles of radii 0.5 and 0.25, centres 0.7 apart: separation 0.7 − 0.75 = −0.05, the point
+	// midway between the surfaces at 0.5 and 0.45. Beyond the speculative distance, no point.
+	tbCircle big = {{0.0f, 0.0f}, 0.5f};
+	tbCircle small = {{0.0f, 0.0f}, 0.25f};
+	tbLocalManifold c = tbCollideCircles(&big, &small, (tbTransform){{0.0f, 0.7f}, tbRot_identity});
+	cr_assert_eq(c.pointCount, 1);
+	cr_expect_float_eq(c.normal.y, 1.0f, 1e-6f);
+	cr_expect_float_eq(c.points[0].separation, -0.05f, 1e-6f);
+	cr_expect_float_eq(c.points[0].point.y, 0.475f, 1e-6f);
+	tbTransform apart = {{0.0f, 0.75f + TB_SPECULATIVE_DISTANCE + 0.001f}, tbRot_identity};
+	cr_expect_eq(tbCollideCircles(&big, &small, apart).pointCount, 0);
+
+	// The chain routines take v3.2's simplex cache and leave it as it was.
+	tbChainSegment floor = {{2.0f, 0.0f}, {{1.0f, 0.0f}, {-1.0f, 0.0f}}, {-2.0f, 0.0f}, -1}; // solid below
+	tbSimplexCache cache = {0};
+	tbTransform resting = {{0.0f, 0.49f}, tbRot_identity};
+	tbLocalManifold onFloor = tbCollideChainSegmentAndPolygon(&floor, &box, resting, &cache);
+	cr_expect_eq(onFloor.pointCount, 2);
+	cr_expect_float_eq(onFloor.points[0].separation, -0.01f, 1e-6f);
+	cr_expect_eq(cache.count, 0);
+}
+
+// The segment-into-box cast by slabs (aabb.h): entry fraction, the face's outward normal and the
+// point, all closed forms for the box [−1, 1]²; no hit when the segment starts inside, stops
+// short, or runs parallel outside; a segment along a face counts (the slab is closed).
+Test(conformance, aabb_ray_cast)
+{
+	tbAABB box = {{-1.0f, -1.0f}, {1.0f, 1.0f}};
+	tbCastOutput hit = tbAABB_RayCast(box, (tbVec2){-3.0f, 0.0f}, (tbVec2){3.0f, 0.0f});
+	cr_assert(hit.hit);
+	cr_expect_float_eq(hit.fraction, 1.0f / 3.0f, 1e-6f);
+	cr_expect(hit.normal.x == -1.0f && hit.normal.y == 0.0f);
+	cr_expect_float_eq(hit.point.x, -1.0f, 1e-6f);
+	hit = tbAABB_RayCast(box, (tbVec2){0.5f, 4.0f}, (tbVec2){0.5f, -4.0f});
+	cr_assert(hit.hit);
+	cr_expect_float_eq(hit.fraction, 3.0f / 8.0f, 1e-6f);
+	cr_expect(hit.normal.x == 0.0f && hit.normal.y == 1.0f);
+	cr_expect_float_eq(hit.point.x, 0.5f, 1e-6f);
+	cr_expect_float_eq(hit.point.y, 1.0f, 1e-6f);
+	hit = tbAABB_RayCast(box, (tbVec2){-2.0f, 1.0f}, (tbVec2){2.0f, 1.0f}); // along the top face
+	cr_expect(hit.hit && hit.normal.x == -1.0f);
+	cr_expect_float_eq(hit.fraction, 0.25f, 1e-6f);
+	cr_expect_not(tbAABB_RayCast(box, (tbVec2){0.0f, 0.0f}, (tbVec2){2.0f, 0.0f}).hit);	  // starts inside
+	cr_expect_not(tbAABB_RayCast(box, (tbVec2){-3.0f, 0.0f}, (tbVec2){-1.5f, 0.0f}).hit); // stops short
+	cr_expect_not(tbAABB_RayCast(box, (tbVec2){-3.0f, 1.5f}, (tbVec2){3.0f, 1.5f}).hit);  // parallel, outside
+	cr_expect_not(tbAABB_RayCast(box, (tbVec2){0.0f, 0.0f}, (tbVec2){0.0f, 0.0f}).hit);	  // a point
 }

@@ -3,6 +3,7 @@
 // undefined behaviour on input it does not refuse. Each test is named after the rule it guards.
 #include <criterion/criterion.h>
 
+#include "collide_world.h"
 #include "tumble/tumble.h"
 
 #include <float.h>
@@ -65,8 +66,8 @@ static tbSweep StillSweep(tbVec2 center)
 static void QueryPair(const tbPolygon* a, const tbPolygon* b, tbTransform xfB)
 {
 	tbTransform xfA = tb_transform_identity;
-	(void)tbCollidePolygons(a, xfA, b, xfB);
-	(void)tbCollidePolygonsGJK(a, xfA, b, xfB);
+	(void)WorldCollidePolygons(a, xfA, b, xfB);
+	(void)WorldCollidePolygonsGJK(a, xfA, b, xfB);
 
 	tbDistanceInput input;
 	memset(&input, 0, sizeof(input));
@@ -144,8 +145,8 @@ Test(collision_input, queries_never_assert_on_input_beyond_the_float_range, .ini
 	for (int angle = 0; angle <= 6; ++angle)
 	{
 		tbTransform xf = {{0.5f, 0.25f}, tbMakeRot((float)angle)};
-		(void)tbCollideSegmentAndPolygon(&endless, tb_transform_identity, &unit, xf);
-		(void)tbCollideSegmentAndCircle(&endless, tb_transform_identity, &circle, xf);
+		(void)WorldCollideSegmentAndPolygon(&endless, tb_transform_identity, &unit, xf);
+		(void)WorldCollideSegmentAndCircle(&endless, tb_transform_identity, &circle, xf);
 	}
 	cr_assert_eq(s_asserts, 0, "%d internal assertions fired", s_asserts);
 }
@@ -608,7 +609,7 @@ Test(world_limits, ngs_block_solver_keeps_bodies_of_1e22_kg_finite, .init = Setu
 		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 5));
 		ExpectFiniteBody(heavy, i);
 	}
-	tbManifold m = tbCollideCapsules(&capsule, tbBody_GetTransform(ground), &capsule, tbBody_GetTransform(heavy));
+	tbManifold m = WorldCollideCapsules(&capsule, tbBody_GetTransform(ground), &capsule, tbBody_GetTransform(heavy));
 	for (int i = 0; i < m.pointCount; ++i)
 	{
 		cr_assert(m.points[i].separation > -3.0f * TB_LINEAR_SLOP, "still overlapping by %g m",

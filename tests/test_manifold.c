@@ -6,6 +6,7 @@
 // the dozen operations of a manifold; scaled cases give their own, each with its reason.
 #include <criterion/criterion.h>
 
+#include "collide_world.h"
 #include "tumble/collision.h"
 
 #include <float.h>
@@ -111,7 +112,7 @@ Test(manifold, circles)
 	// Centres 1.5 apart, radii 1 and 1: overlap 0.5, surfaces at x = 1 (A) and 0.5 (B), midpoint 0.75.
 	tbCircle a = {{0.0f, 0.0f}, 1.0f};
 	tbCircle b = {{0.0f, 0.0f}, 1.0f};
-	tbManifold m = tbCollideCircles(&a, tbMakeTransform(0, 0, 0), &b, tbMakeTransform(1.5f, 0, 0));
+	tbManifold m = WorldCollideCircles(&a, tbMakeTransform(0, 0, 0), &b, tbMakeTransform(1.5f, 0, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 1.0f, 0.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.5f, TB_EPS);
@@ -122,10 +123,10 @@ Test(manifold, circles)
 	// B at (0, 3) radius 0.5: gap 3 − 1 − 1 − 0.5 = 0.5 → beyond the speculative distance.
 	tbCircle offset = {{1.0f, 0.0f}, 1.0f};
 	tbCircle small = {{0.0f, 0.0f}, 0.5f};
-	m = tbCollideCircles(&offset, tbMakeTransform(0, 0, 0.5f * TB_PI), &small, tbMakeTransform(0, 3.0f, 0));
+	m = WorldCollideCircles(&offset, tbMakeTransform(0, 0, 0.5f * TB_PI), &small, tbMakeTransform(0, 3.0f, 0));
 	cr_expect_eq(m.pointCount, 0);
 	// B at (0, 2.49): gap −0.01, normal +y, surfaces at y = 2 and 1.99, midpoint 1.995.
-	m = tbCollideCircles(&offset, tbMakeTransform(0, 0, 0.5f * TB_PI), &small, tbMakeTransform(0, 2.49f, 0));
+	m = WorldCollideCircles(&offset, tbMakeTransform(0, 0, 0.5f * TB_PI), &small, tbMakeTransform(0, 2.49f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -138,7 +139,7 @@ Test(manifold, concentric_circles_defined_normal)
 	tbCircle a = {{0.0f, 0.0f}, 0.5f};
 	tbCircle b = {{0.0f, 0.0f}, 0.25f};
 	tbTransform xf = tbMakeTransform(2.0f, -1.0f, 0.3f);
-	tbManifold m = tbCollideCircles(&a, xf, &b, xf);
+	tbManifold m = WorldCollideCircles(&a, xf, &b, xf);
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectSane(&m);
 	tbExpectVec(m.normal, cosf(0.3f), sinf(0.3f), TB_EPS);
@@ -152,24 +153,24 @@ Test(manifold, capsule_and_circle)
 
 	// Side region: circle (0.5, 0.5) r 0.2 → gap 0.5 − 0.45 = 0.05 > speculative: none.
 	tbCircle side = {{0.0f, 0.0f}, 0.2f};
-	tbManifold m = tbCollideCapsuleAndCircle(&capsule, identity, &side, tbMakeTransform(0.5f, 0.5f, 0));
+	tbManifold m = WorldCollideCapsuleAndCircle(&capsule, identity, &side, tbMakeTransform(0.5f, 0.5f, 0));
 	cr_expect_eq(m.pointCount, 0);
 	// At y = 0.44: gap −0.01, surfaces at 0.25 and 0.24, midpoint 0.245.
-	m = tbCollideCapsuleAndCircle(&capsule, identity, &side, tbMakeTransform(0.5f, 0.44f, 0));
+	m = WorldCollideCapsuleAndCircle(&capsule, identity, &side, tbMakeTransform(0.5f, 0.44f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
 	tbExpectVec(m.points[0].point, 0.5f, 0.245f, TB_EPS);
 
 	// End region: circle at (1.3, 0) r 0.2: distance 0.3 from the end cap centre, overlap 0.15.
-	m = tbCollideCapsuleAndCircle(&capsule, identity, &side, tbMakeTransform(1.3f, 0.0f, 0));
+	m = WorldCollideCapsuleAndCircle(&capsule, identity, &side, tbMakeTransform(1.3f, 0.0f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 1.0f, 0.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.15f, TB_EPS);
 	tbExpectVec(m.points[0].point, 1.175f, 0.0f, TB_EPS);
 
 	// Centre on the core: the capsule's side normal (+y), separation −(0.25 + 0.2).
-	m = tbCollideCapsuleAndCircle(&capsule, identity, &side, tbMakeTransform(0.3f, 0.0f, 0));
+	m = WorldCollideCapsuleAndCircle(&capsule, identity, &side, tbMakeTransform(0.3f, 0.0f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectSane(&m);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
@@ -183,7 +184,7 @@ Test(manifold, capsules_crossing_and_end_to_end)
 	tbTransform identity = tbMakeTransform(0, 0, 0);
 
 	// B standing on A: closest points (0, 0) and (0, 0.49): gap 0.49 − 0.5 = −0.01, one point.
-	tbManifold m = tbCollideCapsules(&a, identity, &b, tbMakeTransform(0, 0.49f, 0));
+	tbManifold m = WorldCollideCapsules(&a, identity, &b, tbMakeTransform(0, 0.49f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -191,7 +192,7 @@ Test(manifold, capsules_crossing_and_end_to_end)
 
 	// Crossing cores (an X): every SAT axis gives core separation −0.7 (B's lower half reaches
 	// 0.7 below A's axis), so the answer is an axis normal with separation −0.7 − 0.5 = −1.2.
-	m = tbCollideCapsules(&a, identity, &b, tbMakeTransform(0, -0.7f, 0));
+	m = WorldCollideCapsules(&a, identity, &b, tbMakeTransform(0, -0.7f, 0));
 	cr_assert_geq(m.pointCount, 1);
 	tbExpectSane(&m);
 	cr_expect_float_eq(fabsf(m.normal.x) + fabsf(m.normal.y), 1.0f, TB_EPS);
@@ -201,9 +202,9 @@ Test(manifold, capsules_crossing_and_end_to_end)
 	// 0.18 apart: gap −0.02 along +x.
 	tbCapsule thin = {{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.1f};
 	tbCapsule thinB = {{0.0f, 0.0f}, {1.4f, 0.0f}, 0.1f};
-	m = tbCollideCapsules(&thin, identity, &thinB, tbMakeTransform(1.3f, 0, 0));
+	m = WorldCollideCapsules(&thin, identity, &thinB, tbMakeTransform(1.3f, 0, 0));
 	cr_expect_eq(m.pointCount, 0);
-	m = tbCollideCapsules(&thin, identity, &thinB, tbMakeTransform(1.18f, 0, 0));
+	m = WorldCollideCapsules(&thin, identity, &thinB, tbMakeTransform(1.18f, 0, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 1.0f, 0.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.02f, TB_EPS);
@@ -217,7 +218,7 @@ Test(manifold, capsules_parallel_two_points)
 	// midpoint height (0.25 + 0.2)/2 = 0.225.
 	tbCapsule a = {{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f};
 	tbCapsule b = {{-0.5f, 0.0f}, {1.5f, 0.0f}, 0.25f};
-	tbManifold m = tbCollideCapsules(&a, tbMakeTransform(0, 0, 0), &b, tbMakeTransform(0, 0.45f, 0));
+	tbManifold m = WorldCollideCapsules(&a, tbMakeTransform(0, 0, 0), &b, tbMakeTransform(0, 0.45f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	const tbManifoldPoint* left = tbPointNearX(&m, -0.5f);
@@ -231,7 +232,7 @@ Test(manifold, capsules_parallel_two_points)
 
 	// B upside down (centres swapped) and below A: the normal follows, −y.
 	tbCapsule flipped = {{1.5f, 0.0f}, {-0.5f, 0.0f}, 0.25f};
-	m = tbCollideCapsules(&a, tbMakeTransform(0, 0, 0), &flipped, tbMakeTransform(0, -0.45f, 0));
+	m = WorldCollideCapsules(&a, tbMakeTransform(0, 0, 0), &flipped, tbMakeTransform(0, -0.45f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, -1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.05f, TB_EPS);
@@ -248,7 +249,7 @@ Test(manifold, polygon_and_circle_regions)
 
 	// Face region: circle (0, 0.89) r 0.4: gap 0.39 − 0.4 = −0.01, midpoint y = (0.5 + 0.49)/2.
 	tbCircle circle = {{0.0f, 0.0f}, 0.4f};
-	tbManifold m = tbCollidePolygonAndCircle(&box, identity, &circle, tbMakeTransform(0.2f, 0.89f, 0));
+	tbManifold m = WorldCollidePolygonAndCircle(&box, identity, &circle, tbMakeTransform(0.2f, 0.89f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -257,7 +258,7 @@ Test(manifold, polygon_and_circle_regions)
 	// Vertex region: circle at (0.8, 0.8) r 0.5: from corner (0.5, 0.5) the offset is (0.3, 0.3),
 	// distance 0.3·√2, separation 0.3·√2 − 0.5, normal (1, 1)/√2.
 	tbCircle big = {{0.0f, 0.0f}, 0.5f};
-	m = tbCollidePolygonAndCircle(&box, identity, &big, tbMakeTransform(0.8f, 0.8f, 0));
+	m = WorldCollidePolygonAndCircle(&box, identity, &big, tbMakeTransform(0.8f, 0.8f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	float d = 0.3f * sqrtf(2.0f);
 	tbExpectVec(m.normal, sqrtf(0.5f), sqrtf(0.5f), TB_EPS);
@@ -268,7 +269,7 @@ Test(manifold, polygon_and_circle_regions)
 
 	// Centre inside the box at (0, 0.3): the nearest face is the top, depth 0.2 + 0.1.
 	tbCircle inside = {{0.0f, 0.0f}, 0.1f};
-	m = tbCollidePolygonAndCircle(&box, identity, &inside, tbMakeTransform(0.0f, 0.3f, 0));
+	m = WorldCollidePolygonAndCircle(&box, identity, &inside, tbMakeTransform(0.0f, 0.3f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.3f, TB_EPS);
@@ -280,7 +281,7 @@ Test(manifold, polygon_and_circle_regions)
 	cr_assert_eq(hull.count, 3);
 	tbPolygon triangle = tbMakePolygon(&hull, 0.0f);
 	tbCircle apex = {{0.0f, 0.0f}, 0.21f};
-	m = tbCollidePolygonAndCircle(&triangle, identity, &apex, tbMakeTransform(0.0f, 1.2f, 0));
+	m = WorldCollidePolygonAndCircle(&triangle, identity, &apex, tbMakeTransform(0.0f, 1.2f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -293,7 +294,7 @@ Test(manifold, polygon_and_capsule)
 	tbPolygon box = tbMakeBox(1.0f, 0.5f);
 	tbCapsule capsule = {{-0.3f, 0.0f}, {0.3f, 0.0f}, 0.25f};
 	tbTransform identity = tbMakeTransform(0, 0, 0);
-	tbManifold m = tbCollidePolygonAndCapsule(&box, identity, &capsule, tbMakeTransform(0, 0.74f, 0));
+	tbManifold m = WorldCollidePolygonAndCapsule(&box, identity, &capsule, tbMakeTransform(0, 0.74f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	tbExpectVec(tbPointNearX(&m, -0.3f)->point, -0.3f, 0.495f, TB_EPS);
@@ -302,7 +303,7 @@ Test(manifold, polygon_and_capsule)
 	cr_expect_float_eq(m.points[1].separation, -0.01f, TB_EPS);
 
 	// Capsule standing upright on the box (turned 90°): one point under its lower cap.
-	m = tbCollidePolygonAndCapsule(&box, identity, &capsule, tbMakeTransform(0.1f, 1.04f, 0.5f * TB_PI));
+	m = WorldCollidePolygonAndCapsule(&box, identity, &capsule, tbMakeTransform(0.1f, 1.04f, 0.5f * TB_PI));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -315,7 +316,7 @@ Test(manifold, box_resting_on_box)
 	// midpoint y = (0.5 + 0.49)/2.
 	tbPolygon ground = tbMakeBox(5.0f, 0.5f);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbManifold m = tbCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0, 0.99f, 0));
+	tbManifold m = WorldCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0, 0.99f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	tbExpectVec(tbPointNearX(&m, -0.5f)->point, -0.5f, 0.495f, TB_EPS);
@@ -331,7 +332,7 @@ Test(manifold, box_resting_on_box)
 	// (0.5, −0.5) → (0.5c + 0.5s, 0.5s − 0.5c). Centre at y = 0.5 + 0.5c + 0.5s − 0.01 puts the
 	// lower-left corner 0.01 into the ground.
 	float cy = 0.5f + 0.5f * c + 0.5f * s - 0.01f;
-	m = tbCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0, cy, 0.1f));
+	m = WorldCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0, cy, 0.1f));
 	cr_assert_eq(m.pointCount, 1); // the other corner is 0.09 up: beyond the speculative distance
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -344,7 +345,7 @@ Test(manifold, rotated_box_vertex_on_box)
 	tbPolygon ground = tbMakeBox(5.0f, 0.5f);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
 	float cy = 0.5f + 0.5f * sqrtf(2.0f) - 0.01f;
-	tbManifold m = tbCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.3f, cy, 0.25f * TB_PI));
+	tbManifold m = WorldCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.3f, cy, 0.25f * TB_PI));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -352,7 +353,7 @@ Test(manifold, rotated_box_vertex_on_box)
 
 	// Same with the roles swapped (the small box is A): its face is never the reference, the
 	// ground's face is, so the normal is −y and the point the same.
-	m = tbCollidePolygons(&box, tbMakeTransform(0.3f, cy, 0.25f * TB_PI), &ground, tbMakeTransform(0, 0, 0));
+	m = WorldCollidePolygons(&box, tbMakeTransform(0.3f, cy, 0.25f * TB_PI), &ground, tbMakeTransform(0, 0, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, -1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -365,7 +366,7 @@ Test(manifold, rounded_boxes_corner_to_corner_gap)
 	// at (0.5, 0.5): gap 0.1·√2 − 0.2, normal along the diagonal, midpoint (0.55, 0.55).
 	tbPolygon a = tbMakeRoundedBox(0.5f, 0.5f, 0.1f);
 	tbPolygon b = tbMakeRoundedBox(0.5f, 0.5f, 0.1f);
-	tbManifold m = tbCollidePolygons(&a, tbMakeTransform(0, 0, 0), &b, tbMakeTransform(1.1f, 1.1f, 0));
+	tbManifold m = WorldCollidePolygons(&a, tbMakeTransform(0, 0, 0), &b, tbMakeTransform(1.1f, 1.1f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, sqrtf(0.5f), sqrtf(0.5f), TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, 0.1f * sqrtf(2.0f) - 0.2f, TB_EPS);
@@ -501,7 +502,7 @@ static tbReviewCase tbRunReviewCase(const float boxA[5], const float boxB[5])
 	tbReviewCase c;
 	c.pair = tbMakeExactPair(&a, xfA, &b, xfB);
 	c.exact = tbExactClosestFeatures(&c.pair);
-	c.manifold = tbCollidePolygons(&a, xfA, &b, xfB);
+	c.manifold = WorldCollidePolygons(&a, xfA, &b, xfB);
 	tbExpectSane(&c.manifold);
 	cr_assert_eq(c.manifold.pointCount, 1, "one point expected, got %d", c.manifold.pointCount);
 	return c;
@@ -614,7 +615,7 @@ Test(manifold, segment_pairs)
 
 	// Circle r 0.5 at (1, 0.49): gap −0.01 along +y, midpoint y = (0 + −0.01)/2.
 	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
-	tbManifold m = tbCollideSegmentAndCircle(&segment, identity, &circle, tbMakeTransform(1.0f, 0.49f, 0));
+	tbManifold m = WorldCollideSegmentAndCircle(&segment, identity, &circle, tbMakeTransform(1.0f, 0.49f, 0));
 	cr_assert_eq(m.pointCount, 1);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -622,7 +623,7 @@ Test(manifold, segment_pairs)
 
 	// Capsule lying on the segment below it: two points at the capsule's ends.
 	tbCapsule capsule = {{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.2f};
-	m = tbCollideSegmentAndCapsule(&segment, identity, &capsule, tbMakeTransform(0.0f, -0.19f, 0));
+	m = WorldCollideSegmentAndCapsule(&segment, identity, &capsule, tbMakeTransform(0.0f, -0.19f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, -1.0f, TB_EPS);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, TB_EPS);
@@ -631,7 +632,7 @@ Test(manifold, segment_pairs)
 
 	// Box resting on the segment: two points at the box's bottom corners.
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	m = tbCollideSegmentAndPolygon(&segment, identity, &box, tbMakeTransform(0.0f, 0.49f, 0));
+	m = WorldCollideSegmentAndPolygon(&segment, identity, &box, tbMakeTransform(0.0f, 0.49f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
 	tbExpectVec(tbPointNearX(&m, -0.5f)->point, -0.5f, -0.005f, TB_EPS);
@@ -684,7 +685,7 @@ Test(manifold, dispatch_order_swap_flips_normal)
 	}
 
 	// Dispatch reaches the named routine: polygon–circle gives the same as the direct call.
-	tbManifold direct = tbCollidePolygonAndCircle(&shapes[3].polygon, xfA, &shapes[0].circle, xfB);
+	tbManifold direct = WorldCollidePolygonAndCircle(&shapes[3].polygon, xfA, &shapes[0].circle, xfB);
 	tbManifold viaDispatch = tbCollideShapes(&shapes[0], xfB, &shapes[3], xfA, tb_narrowPhaseAuto);
 	cr_assert_eq(direct.pointCount, 1);
 	cr_assert_eq(viaDispatch.pointCount, 1);
@@ -692,11 +693,11 @@ Test(manifold, dispatch_order_swap_flips_normal)
 	cr_expect_float_eq(viaDispatch.points[0].separation, direct.points[0].separation, 0.0f);
 
 	// The method picks the polygon routine: GJK → tbCollidePolygonsGJK, auto → SAT (bit-exact).
-	tbManifold gjk = tbCollidePolygonsGJK(&shapes[3].polygon, xfA, &shapes[3].polygon, xfB);
+	tbManifold gjk = WorldCollidePolygonsGJK(&shapes[3].polygon, xfA, &shapes[3].polygon, xfB);
 	tbManifold gjkDispatch = tbCollideShapes(&shapes[3], xfA, &shapes[3], xfB, tb_narrowPhaseGJK);
 	cr_expect_eq(gjkDispatch.pointCount, gjk.pointCount);
 	tbExpectVec(gjkDispatch.normal, gjk.normal.x, gjk.normal.y, 0.0f);
-	tbManifold sat = tbCollidePolygons(&shapes[3].polygon, xfA, &shapes[3].polygon, xfB);
+	tbManifold sat = WorldCollidePolygons(&shapes[3].polygon, xfA, &shapes[3].polygon, xfB);
 	tbManifold autoDispatch = tbCollideShapes(&shapes[3], xfA, &shapes[3], xfB, tb_narrowPhaseAuto);
 	cr_expect_eq(autoDispatch.pointCount, sat.pointCount);
 	tbExpectVec(autoDispatch.normal, sat.normal.x, sat.normal.y, 0.0f);
@@ -709,13 +710,13 @@ Test(manifold, touching_shapes_zero_separation)
 {
 	// Exactly touching: separation 0 (to float rounding of the inputs, 1e-6 m).
 	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
-	tbManifold m = tbCollideCircles(&circle, tbMakeTransform(0, 0, 0), &circle, tbMakeTransform(1.0f, 0, 0));
+	tbManifold m = WorldCollideCircles(&circle, tbMakeTransform(0, 0, 0), &circle, tbMakeTransform(1.0f, 0, 0));
 	cr_assert_eq(m.pointCount, 1);
 	cr_expect_float_eq(m.points[0].separation, 0.0f, 1e-6f);
 	tbExpectVec(m.points[0].point, 0.5f, 0.0f, 1e-6f);
 
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	m = tbCollidePolygons(&box, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.25f, 1.0f, 0));
+	m = WorldCollidePolygons(&box, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.25f, 1.0f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, 1e-6f);
 	cr_expect_float_eq(m.points[0].separation, 0.0f, 1e-6f);
@@ -728,7 +729,7 @@ Test(manifold, deep_and_identical_shapes)
 
 	// Identical boxes, same place: a face normal, depth 2·0.5, two points, all finite.
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbManifold m = tbCollidePolygons(&box, xf, &box, xf);
+	tbManifold m = WorldCollidePolygons(&box, xf, &box, xf);
 	tbExpectSane(&m);
 	cr_assert_eq(m.pointCount, 2);
 	cr_expect_float_eq(m.points[0].separation, -1.0f, TB_EPS);
@@ -736,12 +737,12 @@ Test(manifold, deep_and_identical_shapes)
 
 	// Identical capsules, identical circles, identical segment polygons.
 	tbCapsule capsule = {{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.2f};
-	m = tbCollideCapsules(&capsule, xf, &capsule, xf);
+	m = WorldCollideCapsules(&capsule, xf, &capsule, xf);
 	tbExpectSane(&m);
 	cr_assert_geq(m.pointCount, 1);
 	cr_expect_float_eq(m.points[0].separation, -0.4f, TB_EPS);
 	tbCircle circle = {{0.0f, 0.0f}, 0.3f};
-	m = tbCollidePolygonAndCircle(&box, xf, &circle, xf);
+	m = WorldCollidePolygonAndCircle(&box, xf, &circle, xf);
 	tbExpectSane(&m);
 	cr_assert_eq(m.pointCount, 1);
 	cr_expect_float_eq(m.points[0].separation, -0.8f, TB_EPS);
@@ -749,7 +750,7 @@ Test(manifold, deep_and_identical_shapes)
 	// Deep: a small box 0.8 into a big one: depth along the shortest way out (the top face).
 	tbPolygon big = tbMakeBox(2.0f, 1.0f);
 	tbPolygon small = tbMakeBox(0.25f, 0.25f);
-	m = tbCollidePolygons(&big, tbMakeTransform(0, 0, 0), &small, tbMakeTransform(0.0f, 0.45f, 0));
+	m = WorldCollidePolygons(&big, tbMakeTransform(0, 0, 0), &small, tbMakeTransform(0.0f, 0.45f, 0));
 	tbExpectSane(&m);
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, TB_EPS);
@@ -760,7 +761,7 @@ Test(manifold, tiny_and_large_shapes)
 {
 	// 1 mm boxes, 0.1 mm overlap: tolerance 1e-8 m is ~100 ulps at 1e-3 m.
 	tbPolygon tiny = tbMakeBox(0.0005f, 0.0005f);
-	tbManifold m = tbCollidePolygons(&tiny, tbMakeTransform(0, 0, 0), &tiny, tbMakeTransform(0, 0.0009f, 0));
+	tbManifold m = WorldCollidePolygons(&tiny, tbMakeTransform(0, 0, 0), &tiny, tbMakeTransform(0, 0.0009f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, 1e-6f);
 	cr_expect_float_eq(m.points[0].separation, -0.0001f, 1e-8f);
@@ -768,7 +769,7 @@ Test(manifold, tiny_and_large_shapes)
 
 	// 100 m boxes, 1 cm overlap: ulp at 100 m is 7.6e-6 m, allow 5e-5 m.
 	tbPolygon large = tbMakeBox(50.0f, 50.0f);
-	m = tbCollidePolygons(&large, tbMakeTransform(0, 0, 0), &large, tbMakeTransform(10.0f, 99.99f, 0));
+	m = WorldCollidePolygons(&large, tbMakeTransform(0, 0, 0), &large, tbMakeTransform(10.0f, 99.99f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, 1e-6f);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, 5e-5f);
@@ -776,7 +777,7 @@ Test(manifold, tiny_and_large_shapes)
 
 	// 1 mm circles: 0.01 mm overlap.
 	tbCircle dot = {{0.0f, 0.0f}, 0.0005f};
-	m = tbCollideCircles(&dot, tbMakeTransform(0, 0, 0), &dot, tbMakeTransform(0.00099f, 0, 0));
+	m = WorldCollideCircles(&dot, tbMakeTransform(0, 0, 0), &dot, tbMakeTransform(0.00099f, 0, 0));
 	cr_assert_eq(m.pointCount, 1);
 	cr_expect_float_eq(m.points[0].separation, -0.00001f, 1e-9f);
 }
@@ -788,7 +789,7 @@ Test(manifold, far_from_origin)
 	float x = 1000.0f, y = 1000.0f;
 	tbPolygon ground = tbMakeBox(5.0f, 0.5f);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbManifold m = tbCollidePolygons(&ground, tbMakeTransform(x, y, 0), &box, tbMakeTransform(x + 1.0f, y + 0.99f, 0));
+	tbManifold m = WorldCollidePolygons(&ground, tbMakeTransform(x, y, 0), &box, tbMakeTransform(x + 1.0f, y + 0.99f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, 1e-5f);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, 1.5e-4f);
@@ -796,13 +797,13 @@ Test(manifold, far_from_origin)
 	tbExpectVec(tbPointNearX(&m, x + 0.5f)->point, x + 0.5f, y + 0.495f, 1.5e-4f);
 
 	tbCapsule capsule = {{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.25f};
-	m = tbCollideCapsules(&capsule, tbMakeTransform(x, y, 0), &capsule, tbMakeTransform(x + 0.5f, y + 0.49f, 0));
+	m = WorldCollideCapsules(&capsule, tbMakeTransform(x, y, 0), &capsule, tbMakeTransform(x + 0.5f, y + 0.49f, 0));
 	cr_assert_eq(m.pointCount, 2);
 	tbExpectVec(m.normal, 0.0f, 1.0f, 1e-5f);
 	cr_expect_float_eq(m.points[0].separation, -0.01f, 1.5e-4f);
 
 	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
-	m = tbCollidePolygonAndCircle(&box, tbMakeTransform(-x, y, 0.3f), &circle, tbMakeTransform(-x, y + 0.99f, 0));
+	m = WorldCollidePolygonAndCircle(&box, tbMakeTransform(-x, y, 0.3f), &circle, tbMakeTransform(-x, y + 0.99f, 0));
 	tbExpectSane(&m);
 	cr_assert_eq(m.pointCount, 1);
 }
@@ -814,13 +815,13 @@ Test(manifold, near_parallel_reference_face_is_stable)
 	// tolerance: the same features touch, so the feature ids must not change.
 	tbPolygon ground = tbMakeBox(0.5f, 0.5f);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbManifold base = tbCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.0f, 0.995f, 0));
+	tbManifold base = WorldCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.0f, 0.995f, 0));
 	cr_assert_eq(base.pointCount, 2);
 	float angles[4] = {1e-4f, -1e-4f, 5e-5f, -5e-5f};
 	for (int k = 0; k < 4; ++k)
 	{
 		tbManifold m =
-			tbCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.0f, 0.995f, angles[k]));
+			WorldCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.0f, 0.995f, angles[k]));
 		cr_assert_eq(m.pointCount, 2, "angle %g", (double)angles[k]);
 		tbExpectVec(m.normal, base.normal.x, base.normal.y, TB_EPS);
 		for (int i = 0; i < 2; ++i)
@@ -830,12 +831,12 @@ Test(manifold, near_parallel_reference_face_is_stable)
 	}
 
 	// Slightly offset (B overhangs by 0.1 on one side) with the same tiny rotations.
-	tbManifold shifted = tbCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.1f, 0.995f, 0));
+	tbManifold shifted = WorldCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.1f, 0.995f, 0));
 	cr_assert_eq(shifted.pointCount, 2);
 	for (int k = 0; k < 4; ++k)
 	{
 		tbManifold m =
-			tbCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.1f, 0.995f, angles[k]));
+			WorldCollidePolygons(&ground, tbMakeTransform(0, 0, 0), &box, tbMakeTransform(0.1f, 0.995f, angles[k]));
 		cr_assert_eq(m.pointCount, 2);
 		cr_expect_eq(m.points[0].id, shifted.points[0].id);
 		cr_expect_eq(m.points[1].id, shifted.points[1].id);
@@ -879,8 +880,8 @@ Test(manifold, reference_face_swap_keeps_ids)
 	// two faces' separations apart by more than the reference hysteresis: the reference face
 	// swaps between A's top and B's bottom. The points are the same corners on the same edges, so
 	// their ids, hence their warm starts, must not change. Both polygon paths (SAT, GJK/EPA).
-	int satSwaps = tbCountSwapsKeepingIds(tbCollidePolygons);
-	int gjkSwaps = tbCountSwapsKeepingIds(tbCollidePolygonsGJK);
+	int satSwaps = tbCountSwapsKeepingIds(WorldCollidePolygons);
+	int gjkSwaps = tbCountSwapsKeepingIds(WorldCollidePolygonsGJK);
 	cr_expect_gt(satSwaps, 0, "the sweep must swap the reference face (SAT)");
 	cr_expect_gt(gjkSwaps, 0, "the sweep must swap the reference face (GJK)");
 }
@@ -899,10 +900,10 @@ Test(manifold, speculative_margin)
 	{
 		tbTransform up = tbMakeTransform(0.0f, 1.0f + gaps[g], 0);
 		tbManifold m[4] = {
-			tbCollideCircles(&circle, identity, &circle, up),
-			tbCollidePolygons(&box, identity, &box, up),
-			tbCollidePolygonAndCircle(&box, identity, &circle, up),
-			tbCollideCapsules(&capsule, identity, &capsule, up),
+			WorldCollideCircles(&circle, identity, &circle, up),
+			WorldCollidePolygons(&box, identity, &box, up),
+			WorldCollidePolygonAndCircle(&box, identity, &circle, up),
+			WorldCollideCapsules(&capsule, identity, &capsule, up),
 		};
 		for (int k = 0; k < 4; ++k)
 		{

@@ -10,6 +10,7 @@
 
 #include <criterion/criterion.h>
 
+#include "collide_world.h"
 #include "tumble/collision.h"
 
 #include <math.h>
@@ -195,7 +196,7 @@ Test(manifold_gjk, box_on_box)
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
 	tbTransform xfA = {{0.0f, 0.0f}, tb_rot_identity};
 	tbTransform xfB = {{0.3f, 0.99f}, tb_rot_identity};
-	tbManifold m = tbCollidePolygonsGJK(&ground, xfA, &box, xfB);
+	tbManifold m = WorldCollidePolygonsGJK(&ground, xfA, &box, xfB);
 	cr_assert_eq(m.pointCount, 2);
 	cr_assert_float_eq(m.normal.x, 0.0f, 1e-6f);
 	cr_assert_float_eq(m.normal.y, 1.0f, 1e-6f);
@@ -210,16 +211,16 @@ Test(manifold_gjk, box_on_box)
 
 	// ids stay the same while the box slides and sinks a little
 	tbTransform moved = {{0.35f, 0.985f}, tbMakeRot(1e-4f)};
-	tbManifold m2 = tbCollidePolygonsGJK(&ground, xfA, &box, moved);
+	tbManifold m2 = WorldCollidePolygonsGJK(&ground, xfA, &box, moved);
 	cr_assert_eq(m2.pointCount, 2);
 	cr_assert_eq(m2.points[0].id, m.points[0].id);
 	cr_assert_eq(m2.points[1].id, m.points[1].id);
 
 	// far apart: no points; just within the speculative distance: points with positive separation
 	tbTransform apart = {{0.3f, 1.5f}, tb_rot_identity};
-	cr_assert_eq(tbCollidePolygonsGJK(&ground, xfA, &box, apart).pointCount, 0);
+	cr_assert_eq(WorldCollidePolygonsGJK(&ground, xfA, &box, apart).pointCount, 0);
 	tbTransform near = {{0.3f, 1.01f}, tb_rot_identity};
-	tbManifold m3 = tbCollidePolygonsGJK(&ground, xfA, &box, near);
+	tbManifold m3 = WorldCollidePolygonsGJK(&ground, xfA, &box, near);
 	cr_assert_eq(m3.pointCount, 2);
 	cr_assert_float_eq(m3.points[0].separation, 0.01f, 1e-6f);
 }
@@ -234,7 +235,7 @@ Test(manifold_gjk, rounded_and_flipped)
 	tbPolygon b = tbMakePolygon(&hullB, 0.05f);
 	tbTransform xfA = {{0.0f, 0.0f}, tbMakeRot(0.2f)}; // A tilted: only one corner reaches B
 	tbTransform xfB = {{0.0f, -0.8f}, tb_rot_identity};
-	tbManifold m = tbCollidePolygonsGJK(&a, xfA, &b, xfB);
+	tbManifold m = WorldCollidePolygonsGJK(&a, xfA, &b, xfB);
 	cr_assert(m.pointCount >= 1);
 	cr_assert_float_eq(m.normal.y, -1.0f, 1e-6f);
 	// A's lowest corner: rotate (±0.5, −0.5) by 0.2 rad, the lower one
@@ -281,8 +282,8 @@ Test(manifold_gjk, sat_agreement)
 		float touching = contactOffset(&a, xfA, &b, qB, u);
 		tbTransform xfB = placeB(&a, xfA, &b, qB, u, touching - overlap);
 
-		tbManifold sat = tbCollidePolygons(&a, xfA, &b, xfB);
-		tbManifold gjk = tbCollidePolygonsGJK(&a, xfA, &b, xfB);
+		tbManifold sat = WorldCollidePolygons(&a, xfA, &b, xfB);
+		tbManifold gjk = WorldCollidePolygonsGJK(&a, xfA, &b, xfB);
 		if (sat.pointCount == 0 || gjk.pointCount == 0)
 		{
 			// Both must agree on touching, except in a band of 0.25 × linear slop (1.25 mm) below the

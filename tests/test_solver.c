@@ -3,6 +3,7 @@
 // mass ratio, overlap recovery. 60 Hz, 4 sub-steps, g = 10 m/s², unless a test says otherwise.
 // Each scene runs with the default soft step; the rigid methods run where they are expected to
 // pass (failures of Baumgarte/NGS on the hard scenes are documented in docs/stability.md, not asserted).
+#include "collide_world.h"
 #include "tumble/tumble.h"
 
 #include <criterion/criterion.h>
@@ -89,7 +90,7 @@ static float MaxPenetration(const Scene* scene)
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
 		tbTransform xfA = tbBody_GetTransform(scene->bodies[i]);
-		tbManifold m = tbCollidePolygons(&scene->groundBox, groundXf, scene->boxes + i, xfA);
+		tbManifold m = WorldCollidePolygons(&scene->groundBox, groundXf, scene->boxes + i, xfA);
 		for (int k = 0; k < m.pointCount; ++k)
 		{
 			deepest = fmaxf(deepest, -m.points[k].separation);
@@ -97,7 +98,7 @@ static float MaxPenetration(const Scene* scene)
 		for (int j = i + 1; j < scene->bodyCount; ++j)
 		{
 			tbTransform xfB = tbBody_GetTransform(scene->bodies[j]);
-			m = tbCollidePolygons(scene->boxes + i, xfA, scene->boxes + j, xfB);
+			m = WorldCollidePolygons(scene->boxes + i, xfA, scene->boxes + j, xfB);
 			for (int k = 0; k < m.pointCount; ++k)
 			{
 				deepest = fmaxf(deepest, -m.points[k].separation);
@@ -645,7 +646,7 @@ Test(solver, heavy_on_light_soft_rests_at_the_spring_depth)
 	tbBodyId light = AddBox(&scene, tbMakeVec2(0.0f, 0.5f), 0.0f, 0.5f, 1.0f, 0.6f);
 	tbBodyId heavy = AddBox(&scene, tbMakeVec2(0.0f, 1.5f), 0.0f, 0.5f, 100.0f, 0.6f);
 	Step(&scene, 120);
-	tbManifold m = tbCollidePolygons(scene.boxes + 0, tbBody_GetTransform(light), scene.boxes + 1,
+	tbManifold m = WorldCollidePolygons(scene.boxes + 0, tbBody_GetTransform(light), scene.boxes + 1,
 									 tbBody_GetTransform(heavy));
 	cr_assert_eq(m.pointCount, 2);
 	float depth = -0.5f * (m.points[0].separation + m.points[1].separation);

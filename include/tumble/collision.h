@@ -377,40 +377,53 @@ typedef struct tbManifold
 	int pointCount;
 } tbManifold;
 
-/// Closed forms and SAT. Points are kept while separation < TB_SPECULATIVE_DISTANCE.
-/// The normal points from A to B. Shapes are in their bodies' local frames, placed by xfA, xfB.
-TB_API tbManifold tbCollideCircles(const tbCircle* circleA, tbTransform xfA, const tbCircle* circleB, tbTransform xfB);
-TB_API tbManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, tbTransform xfA, const tbCircle* circleB,
-											tbTransform xfB);
-TB_API tbManifold tbCollideCapsules(const tbCapsule* capsuleA, tbTransform xfA, const tbCapsule* capsuleB,
-									tbTransform xfB);
-TB_API tbManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, tbTransform xfA, const tbCircle* circleB,
-											tbTransform xfB);
-TB_API tbManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, tbTransform xfA, const tbCapsule* capsuleB,
-											 tbTransform xfB);
-TB_API tbManifold tbCollidePolygons(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-									tbTransform xfB);
-TB_API tbManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, tbTransform xfA, const tbCircle* circleB,
-											tbTransform xfB);
-TB_API tbManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, tbTransform xfA, const tbCapsule* capsuleB,
-											 tbTransform xfB);
-TB_API tbManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, tbTransform xfA, const tbPolygon* polygonB,
-											 tbTransform xfB);
+/// Contact point in the frame of shape A (Box2D v3.2's local manifold point).
+typedef struct tbLocalManifoldPoint
+{
+	tbVec2 point;	  ///< midway between the two surfaces, in A's frame
+	float separation; ///< > 0 speculative gap, < 0 penetration (m)
+	uint16_t id;	  ///< feature id, the same while the same features touch
+} tbLocalManifoldPoint;
+
+/// Contact manifold in the frame of shape A: a normal from A to B and up to two points.
+typedef struct tbLocalManifold
+{
+	tbVec2 normal;
+	tbLocalManifoldPoint points[2];
+	int pointCount;
+} tbLocalManifold;
+
+/// Pair routines in Box2D v3.2's form: shape A in its own frame, shape B placed in it by the
+/// relative transform xf = A⁻¹·B (tbInvMulTransforms(xfA, xfB), or tbInvMulWorldTransforms of
+/// two world transforms), the manifold in A's frame. Closed forms for round shapes, SAT and
+/// clipping for straight sides. Points are kept while separation < TB_SPECULATIVE_DISTANCE.
+/// The normal points from A to B. tbCollideShapes is the world-frame form for any pair.
+TB_API tbLocalManifold tbCollideCircles(const tbCircle* circleA, const tbCircle* circleB, tbTransform xf);
+TB_API tbLocalManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, const tbCircle* circleB, tbTransform xf);
+TB_API tbLocalManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, const tbCircle* circleB, tbTransform xf);
+TB_API tbLocalManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, const tbCircle* circleB, tbTransform xf);
+TB_API tbLocalManifold tbCollideCapsules(const tbCapsule* capsuleA, const tbCapsule* capsuleB, tbTransform xf);
+TB_API tbLocalManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, const tbCapsule* capsuleB, tbTransform xf);
+TB_API tbLocalManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, const tbCapsule* capsuleB, tbTransform xf);
+TB_API tbLocalManifold tbCollidePolygons(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf);
+TB_API tbLocalManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, const tbPolygon* polygonB, tbTransform xf);
 
 /// Chain segment against a shape: one-sided (nothing when B's centre is behind the segment) and
 /// smooth (normals at a joint to a straight or concave neighbour are the face normal; at a convex
 /// joint, each segment takes the normals up to the bisector of its and its neighbour's normals).
-TB_API tbManifold tbCollideChainSegmentAndCircle(const tbChainSegment* segmentA, tbTransform xfA,
-												 const tbCircle* circleB, tbTransform xfB);
-TB_API tbManifold tbCollideChainSegmentAndCapsule(const tbChainSegment* segmentA, tbTransform xfA,
-												  const tbCapsule* capsuleB, tbTransform xfB);
-TB_API tbManifold tbCollideChainSegmentAndPolygon(const tbChainSegment* segmentA, tbTransform xfA,
-												  const tbPolygon* polygonB, tbTransform xfB);
+/// The simplex cache of Box2D v3.2's signature may be NULL; it is not read or written (the
+/// chain routines use the SAT, which carries nothing between steps).
+TB_API tbLocalManifold tbCollideChainSegmentAndCircle(const tbChainSegment* segmentA, const tbCircle* circleB,
+													  tbTransform xf);
+TB_API tbLocalManifold tbCollideChainSegmentAndCapsule(const tbChainSegment* segmentA, const tbCapsule* capsuleB,
+													   tbTransform xf, tbSimplexCache* cache);
+TB_API tbLocalManifold tbCollideChainSegmentAndPolygon(const tbChainSegment* segmentA, const tbPolygon* polygonB,
+													   tbTransform xf, tbSimplexCache* cache);
 
-/// Polygon pair by GJK/EPA: normal and depth from tbShapeSeparation, points by clipping the
-/// incident edge against the reference face chosen along that normal.
-TB_API tbManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, tbTransform xfA, const tbPolygon* polygonB,
-									   tbTransform xfB);
+/// Polygon pair by GJK/EPA (Tumble's alternative to tbCollidePolygons, same form): normal and
+/// depth from tbShapeSeparation, points by clipping the incident edge against the reference face
+/// chosen along that normal.
+TB_API tbLocalManifold tbCollidePolygonsGJK(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf);
 
 /// Narrow-phase polygon method.
 typedef enum tbNarrowPhaseMethod

@@ -57,6 +57,7 @@
 //   target is a surface separation ≥ 0, so the Tumble proxies are given radius 0 (cores) and
 //   the target separation (tbTimeOfImpactToTarget) = Box2D's core target: both then solve the
 //   same equation.
+#include "../collide_world.h"
 #include "verify_common.h"
 
 #include "tumble/collision.h"
@@ -864,7 +865,7 @@ void CheckPolygons(const char* check, uint32_t seed, float skin)
 		b2CollidePolygons(&reference, &boxA, xfA, &boxB, xfB);
 		b2WorldManifold world;
 		world.Initialize(&reference, xfA, boxA.m_radius, xfB, boxB.m_radius);
-		tbManifold manifold = tbCollidePolygons(&a.polygon, TumbleTransform(poseA), &b.polygon, TumbleTransform(poseB));
+		tbManifold manifold = WorldCollidePolygons(&a.polygon, TumbleTransform(poseA), &b.polygon, TumbleTransform(poseB));
 		std::string input = VerifyFormat("seed %u case %d: A %s %s; B %s %s; radius %.3g", seed, index,
 										 DescribePolygon(specA).c_str(), DescribePose(poseA).c_str(),
 										 DescribePolygon(specB).c_str(), DescribePose(poseB).c_str(), (double)skin);
@@ -915,7 +916,7 @@ Test(box2d_collision, circles_manifold_matches_b2CollideCircles)
 		b2CollideCircles(&reference, &circleA, xfA, &circleB, xfB);
 		b2WorldManifold world;
 		world.Initialize(&reference, xfA, circleA.m_radius, xfB, circleB.m_radius);
-		tbManifold manifold = tbCollideCircles(&a.circle, TumbleTransform(poseA), &b.circle, TumbleTransform(poseB));
+		tbManifold manifold = WorldCollideCircles(&a.circle, TumbleTransform(poseA), &b.circle, TumbleTransform(poseB));
 		std::string input =
 			VerifyFormat("seed %u case %d: A circle c=(%.9g, %.9g) r=%.9g %s; B circle c=(%.9g, %.9g) r=%.9g %s", seed,
 						 index, (double)a.circle.center.x, (double)a.circle.center.y, (double)a.circle.radius,
@@ -963,7 +964,7 @@ Test(box2d_collision, polygon_circle_manifold_matches_b2CollidePolygonAndCircle)
 						 b2WorldManifold world;
 						 world.Initialize(&reference, xfA, polygon.m_radius, xfB, circle.m_radius);
 						 tbManifold manifold =
-							 tbCollidePolygonAndCircle(&a.polygon, TumbleTransform(poseA), &b.circle, TumbleTransform(poseB));
+							 WorldCollidePolygonAndCircle(&a.polygon, TumbleTransform(poseA), &b.circle, TumbleTransform(poseB));
 						 std::string input = VerifyFormat("seed %u case %d: A %s radius 0.01 %s; B circle r=%.9g %s", seed,
 														  index, DescribePolygon(spec).c_str(), DescribePose(poseA).c_str(),
 														  (double)b.circle.radius, DescribePose(poseB).c_str());

@@ -5,6 +5,7 @@
 // restitution threshold 1 m/s (both defaults).
 // Deterministic scenes: per-step positions within 0.01 m and velocities within 0.05 m/s.
 // Chaotic scenes (a pyramid, a stack): invariants only, and Tumble must stand at least as well.
+#include "../collide_world.h"
 #include "verify_common.h"
 
 #include "tumble/tumble.h"
@@ -273,7 +274,7 @@ float LargestPenetration(const std::vector<tbVec2>& positions, const std::vector
 			tbPolygon b = tbMakeRoundedBox(specs[j].shape.halfWidth, specs[j].shape.halfHeight, b2_polygonRadius);
 			tbTransform xa = {positions[i], {cosf(angles[i]), sinf(angles[i])}};
 			tbTransform xb = {positions[j], {cosf(angles[j]), sinf(angles[j])}};
-			tbManifold m = tbCollidePolygons(&a, xa, &b, xb);
+			tbManifold m = WorldCollidePolygons(&a, xa, &b, xb);
 			for (int k = 0; k < m.pointCount; ++k)
 			{
 				deepest = std::max(deepest, -m.points[k].separation);
