@@ -95,7 +95,7 @@ static bool tbCheckBodyDef(const tbBodyDef* def)
 					  (double)def->rotation.c, (double)def->rotation.s);
 		return false;
 	}
-	return tbCheckCoordinate(f, "def->position", def->position) &&
+	return tbCheckPosition(f, "def->position", def->position) &&
 		   tbCheckVec2(f, "def->linearVelocity", def->linearVelocity) &&
 		   tbCheckFloat(f, "def->angularVelocity", def->angularVelocity) &&
 		   tbCheckNonNegative(f, "def->linearDamping", def->linearDamping) &&
@@ -326,9 +326,9 @@ static void tbComputeExtents(tbWorld* world, tbBody* body)
 /// body->center: v_center = v_old + ω × (c_new − c_old). When that overflows float (3e38 rad/s
 /// times a shift of 1e6 m), it is redone in double and scaled down to a largest component of
 /// FLT_MAX, keeping the direction that the step's speed clamp then keeps too.
-static void tbKeepOriginVelocity(tbBody* body, tbVec2 oldCenter)
+static void tbKeepOriginVelocity(tbBody* body, tbPos oldCenter)
 {
-	tbVec2 v = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSub(body->center, oldCenter)));
+	tbVec2 v = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, tbSubPos(body->center, oldCenter)));
 	if (tbIsValidVec2(v) == false)
 	{
 		double w = body->angularVelocity;
@@ -359,7 +359,7 @@ static float tbSaturateToFloat(double value)
 // double, which cannot overflow for any number of float-sized terms, and saturate the mass and
 // the rotational inertia at FLT_MAX: the body then barely responds to impulses, as an enormous
 // mass should, and everything stays finite.
-static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbVec2 oldCenter)
+static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbPos oldCenter)
 {
 	double mass = 0.0, cx = 0.0, cy = 0.0, inertia = 0.0;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
@@ -381,7 +381,7 @@ static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbVec2 oldCenter)
 	{
 		tbSetBodyInertia(body, tbSaturateToFloat(inertia - mass * (cx * cx + cy * cy)));
 	}
-	body->center = tbTransformPoint(body->transform, body->localCenter);
+	body->center = tbTransformWorldPoint(body->transform, body->localCenter);
 	body->center0 = body->center;
 	tbKeepOriginVelocity(body, oldCenter);
 	tbComputeExtents(world, body);
@@ -407,7 +407,7 @@ static void tbRestartBodyContacts(tbWorld* world, const tbBody* body)
 void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 {
 	tbRestartBodyContacts(world, body);
-	tbVec2 oldCenter = body->center;
+	tbPos oldCenter = body->center;
 	body->mass = 0.0f;
 	body->invMass = 0.0f;
 	body->inertia = 0.0f;
@@ -415,7 +415,7 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 	body->localCenter = tb_vec2_zero;
 	if (body->type != tb_dynamicBody)
 	{
-		body->center = tbTransformPoint(body->transform, body->localCenter);
+		body->center = tbTransformWorldPoint(body->transform, body->localCenter);
 		tbKeepOriginVelocity(body, oldCenter);
 		tbComputeExtents(world, body);
 		return;
@@ -462,7 +462,7 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 		tbSetBodyInertia(body, rotationalInertia - body->mass * tbDot(localCenter, localCenter));
 	}
 	body->localCenter = localCenter;
-	body->center = tbTransformPoint(body->transform, localCenter);
+	body->center = tbTransformWorldPoint(body->transform, localCenter);
 	body->center0 = body->center;
 	tbKeepOriginVelocity(body, oldCenter);
 	tbComputeExtents(world, body);
@@ -565,10 +565,10 @@ bool tbBody_IsEnabled(tbBodyId bodyId)
 	return body != NULL && body->isDisabled == false;
 }
 
-tbVec2 tbBody_GetPosition(tbBodyId bodyId)
+tbPos tbBody_GetPosition(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetPosition", NULL, false);
-	return body != NULL ? body->transform.p : tb_vec2_zero;
+	return body != NULL ? body->transform.p : tbPos_zero;
 }
 
 tbRot tbBody_GetRotation(tbBodyId bodyId)
@@ -583,10 +583,10 @@ float tbBody_GetAngle(tbBodyId bodyId)
 	return body != NULL ? tbRot_GetAngle(body->transform.q) : 0.0f;
 }
 
-tbTransform tbBody_GetTransform(tbBodyId bodyId)
+tbWorldTransform tbBody_GetTransform(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetTransform", NULL, false);
-	return body != NULL ? body->transform : tb_transform_identity;
+	return body != NULL ? body->transform : tbWorldTransform_identity;
 }
 
 /// Wake the bodies touching this one. A teleport takes their support away, and a contact between
@@ -605,12 +605,12 @@ static void tbWakeTouchingBodies(tbWorld* world, const tbBody* body)
 	}
 }
 
-bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation)
+bool tbBody_SetTransform(tbBodyId bodyId, tbPos position, tbRot rotation)
 {
 	const char* f = "tbBody_SetTransform";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
-	if (body == NULL || tbCheckCoordinate(f, "position", position) == false)
+	if (body == NULL || tbCheckPosition(f, "position", position) == false)
 	{
 		return false;
 	}
@@ -626,7 +626,7 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation)
 	}
 	body->transform.p = position;
 	body->transform.q = tbNormalizeRot(rotation);
-	body->center = tbTransformPoint(body->transform, body->localCenter);
+	body->center = tbTransformWorldPoint(body->transform, body->localCenter);
 	body->center0 = body->center;
 	body->rotation0 = body->transform.q;
 	tbWakeBody(world, body);
@@ -635,16 +635,16 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation)
 	return true;
 }
 
-tbVec2 tbBody_GetLocalPoint(tbBodyId bodyId, tbVec2 worldPoint)
+tbVec2 tbBody_GetLocalPoint(tbBodyId bodyId, tbPos worldPoint)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalPoint", NULL, false);
-	return body != NULL ? tbInvTransformPoint(body->transform, worldPoint) : tb_vec2_zero;
+	return body != NULL ? tbInvTransformWorldPoint(body->transform, worldPoint) : tb_vec2_zero;
 }
 
-tbVec2 tbBody_GetWorldPoint(tbBodyId bodyId, tbVec2 localPoint)
+tbPos tbBody_GetWorldPoint(tbBodyId bodyId, tbVec2 localPoint)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldPoint", NULL, false);
-	return body != NULL ? tbTransformPoint(body->transform, localPoint) : tb_vec2_zero;
+	return body != NULL ? tbTransformWorldPoint(body->transform, localPoint) : tbPos_zero;
 }
 
 tbVec2 tbBody_GetLocalVector(tbBodyId bodyId, tbVec2 worldVector)
@@ -719,21 +719,21 @@ bool tbBody_SetAngularVelocity(tbBodyId bodyId, float w)
 /// first-order steps (tbIntegrateRotation): n sub-steps turn by n·atan(θ/n), short of θ by at most
 /// |θ|³/(3n²) (2.6e-6 rad for 0.05 rad a step with n = 4). The step's clamps still apply
 /// (|ω|·Δt ≤ TB_MAX_ROTATION, |v| ≤ maximumLinearSpeed): a farther target is not reached in one step.
-static bool tbTargetVelocity(const tbBody* body, tbTransform target, float timeStep, tbVec2* v, float* w)
+static bool tbTargetVelocity(const tbBody* body, tbWorldTransform target, float timeStep, tbVec2* v, float* w)
 {
-	tbVec2 targetCenter = tbTransformPoint(target, body->localCenter);
+	tbPos targetCenter = tbTransformWorldPoint(target, body->localCenter);
 	float invTimeStep = 1.0f / timeStep;
-	*v = tbMulSV(invTimeStep, tbSub(targetCenter, body->center));
+	*v = tbMulSV(invTimeStep, tbSubPos(targetCenter, body->center));
 	*w = invTimeStep * tbRelativeAngle(body->transform.q, target.q);
 	return tbIsValidVec2(*v) && tbIsValidFloat(*w);
 }
 
-bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeStep, bool wake)
+bool tbBody_SetTargetTransform(tbBodyId bodyId, tbWorldTransform target, float timeStep, bool wake)
 {
 	const char* f = "tbBody_SetTargetTransform";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
-	if (body == NULL || tbCheckVec2(f, "target.p", target.p) == false || tbCheckPositive(f, "timeStep", timeStep) == false)
+	if (body == NULL || tbCheckFinitePosition(f, "target.p", target.p) == false || tbCheckPositive(f, "timeStep", timeStep) == false)
 	{
 		return false;
 	}
@@ -788,10 +788,10 @@ static tbBody* tbGetDynamicForInput(tbBodyId bodyId, const char* f, bool wake, t
 	return body->awakeIndex != TB_NULL_INDEX ? body : NULL;
 }
 
-bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbVec2 point, bool wake)
+bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbPos point, bool wake)
 {
 	const char* f = "tbBody_ApplyForce";
-	if (tbCheckVec2(f, "force", force) == false || tbCheckVec2(f, "point", point) == false)
+	if (tbCheckVec2(f, "force", force) == false || tbCheckFinitePosition(f, "point", point) == false)
 	{
 		return false;
 	}
@@ -800,7 +800,7 @@ bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbVec2 point, bool wake)
 	if (body != NULL)
 	{
 		body->force = tbAdd(body->force, force);
-		body->torque += tbCross(tbSub(point, body->center), force);
+		body->torque += tbCross(tbSubPos(point, body->center), force);
 	}
 	return body != NULL;
 }
@@ -843,7 +843,7 @@ bool tbBody_ApplyTorque(tbBodyId bodyId, float torque, bool wake)
 // overflow (0 · ∞ = NaN). An impulse that
 // would leave a velocity that is not a finite float is refused before the body is woken: the step
 // clamps any finite speed, but no direction survives ∞ − ∞.
-static bool tbApplyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, const tbVec2* point, float angularImpulse,
+static bool tbApplyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, const tbPos* point, float angularImpulse,
 						   bool wake)
 {
 	tbWorld* world;
@@ -854,7 +854,7 @@ static bool tbApplyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, const
 	}
 	tbVec2 v = tbMulAdd(body->linearVelocity, body->invMass, impulse);
 	float w = body->angularVelocity;
-	float angular = point != NULL ? tbCross(tbSub(*point, body->center), impulse) : angularImpulse;
+	float angular = point != NULL ? tbCross(tbSubPos(*point, body->center), impulse) : angularImpulse;
 	if (body->invInertia > 0.0f && angular != 0.0f)
 	{
 		w += body->invInertia * angular;
@@ -879,10 +879,10 @@ static bool tbApplyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, const
 	return true;
 }
 
-bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbVec2 point, bool wake)
+bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbPos point, bool wake)
 {
 	const char* f = "tbBody_ApplyLinearImpulse";
-	if (tbCheckVec2(f, "impulse", impulse) == false || tbCheckVec2(f, "point", point) == false)
+	if (tbCheckVec2(f, "impulse", impulse) == false || tbCheckFinitePosition(f, "point", point) == false)
 	{
 		return false;
 	}
@@ -927,10 +927,10 @@ tbVec2 tbBody_GetLocalCenterOfMass(tbBodyId bodyId)
 	return body != NULL ? body->localCenter : tb_vec2_zero;
 }
 
-tbVec2 tbBody_GetWorldCenterOfMass(tbBodyId bodyId)
+tbPos tbBody_GetWorldCenterOfMass(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldCenterOfMass", NULL, false);
-	return body != NULL ? body->center : tb_vec2_zero;
+	return body != NULL ? body->center : tbPos_zero;
 }
 
 bool tbBody_SetMassData(tbBodyId bodyId, tbMassData massData)
@@ -950,12 +950,12 @@ bool tbBody_SetMassData(tbBodyId bodyId, tbMassData massData)
 	}
 	// Mass below FLT_MIN counts as none, as for shapes: the body then acts as 1 kg at its origin.
 	tbRestartBodyContacts(world, body);
-	tbVec2 oldCenter = body->center;
+	tbPos oldCenter = body->center;
 	body->mass = massData.mass >= FLT_MIN ? massData.mass : 1.0f;
 	body->invMass = 1.0f / body->mass;
 	tbSetBodyInertia(body, body->fixedRotation ? 0.0f : massData.rotationalInertia);
 	body->localCenter = massData.mass >= FLT_MIN ? massData.center : tb_vec2_zero;
-	body->center = tbTransformPoint(body->transform, body->localCenter);
+	body->center = tbTransformWorldPoint(body->transform, body->localCenter);
 	body->center0 = body->center;
 	tbKeepOriginVelocity(body, oldCenter);
 	tbComputeExtents(world, body);
@@ -1154,15 +1154,15 @@ void tbBody_ClearForces(tbBodyId bodyId)
 	}
 }
 
-tbVec2 tbBody_GetWorldPointVelocity(tbBodyId bodyId, tbVec2 worldPoint)
+tbVec2 tbBody_GetWorldPointVelocity(tbBodyId bodyId, tbPos worldPoint)
 {
 	const char* f = "tbBody_GetWorldPointVelocity";
 	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, false);
-	if (body == NULL || tbCheckVec2(f, "worldPoint", worldPoint) == false)
+	if (body == NULL || tbCheckFinitePosition(f, "worldPoint", worldPoint) == false)
 	{
 		return tb_vec2_zero;
 	}
-	tbVec2 r = tbSub(worldPoint, body->center);
+	tbVec2 r = tbSubPos(worldPoint, body->center);
 	return tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, r));
 }
 
@@ -1323,7 +1323,7 @@ tbAABB tbBody_ComputeAABB(tbBodyId bodyId)
 	{
 		if (body != NULL)
 		{
-			box.lowerBound = box.upperBound = body->transform.p;
+			box = tbOffsetAABB(box, body->transform.p); // a point box at the origin
 		}
 		return box;
 	}

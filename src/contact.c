@@ -5,6 +5,7 @@
 // tbSpeculativeMargin), or, for a touching pair that barely moved since, carries the last one
 // along (tbRecycleManifold), carries impulses over by feature id for warm starting, and reports
 // begin/end events when a point comes within the fixed TB_SPECULATIVE_DISTANCE.
+#include "manifold_internal.h"
 #include "task.h"
 #include "world.h"
 
@@ -436,17 +437,18 @@ static float tbSpeculativeMargin(const tbWorld* world, const tbBody* bodyA, cons
 /// frame and each point (midway between the surfaces, so the same world point for both bodies) in
 /// each body's origin frame. Origin frames, not centre-of-mass ones: a body's centre moves when a
 /// shape is added or its density changes, its origin does not.
-static void tbStoreManifoldBase(tbContact* contact, tbTransform xfA, tbTransform xfB, float margin)
+static void tbStoreManifoldBase(tbContact* contact, tbWorldTransform xfA, tbWorldTransform xfB, const tbPos points[2],
+								float margin)
 {
 	const tbManifold* m = &contact->manifold;
 	tbManifoldBase* base = &contact->base;
-	base->relative = tbInvMulTransforms(xfA, xfB);
+	base->relative = tbInvMulWorldTransforms(xfA, xfB);
 	base->normalA = tbInvRotateVector(xfA.q, m->normal);
 	base->normalB = tbInvRotateVector(xfB.q, m->normal);
 	for (int i = 0; i < m->pointCount; ++i)
 	{
-		base->pointA[i] = tbInvTransformPoint(xfA, m->points[i].point);
-		base->pointB[i] = tbInvTransformPoint(xfB, m->points[i].point);
+		base->pointA[i] = tbInvTransformWorldPoint(xfA, points[i]);
+		base->pointB[i] = tbInvTransformWorldPoint(xfB, points[i]);
 		base->separation[i] = m->points[i].separation;
 	}
 	base->margin = margin;
@@ -518,9 +520,9 @@ static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbB
 	{
 		return false;
 	}
-	tbTransform xfA = bodyA->transform;
-	tbTransform xfB = bodyB->transform;
-	tbTransform relative = tbInvMulTransforms(xfA, xfB);
+	tbWorldTransform xfA = bodyA->transform;
+	tbWorldTransform xfB = bodyB->transform;
+	tbTransform relative = tbInvMulWorldTransforms(xfA, xfB);
 	float tolerance = tbMinFloat(TB_RECYCLE_DISTANCE, base->margin - margin + TB_SPECULATIVE_DISTANCE);
 	// |turn| < TB_RECYCLE_ANGLE ⟺ cos(turn) > cos(TB_RECYCLE_ANGLE): the cosine is the dot product of
 	// the two unit rotations, with no atan2 (which cost 4 % of a pyramid step here).
@@ -534,7 +536,7 @@ static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbB
 	m->normal = tbNormalize(tbAdd(tbRotateVector(xfA.q, base->normalA), tbRotateVector(xfB.q, base->normalB)));
 	// xB − xA from the origin offset and the rotated local points: no large world coordinates are
 	// subtracted, so far from the origin the difference keeps its precision.
-	tbVec2 dp = tbSub(xfB.p, xfA.p);
+	tbVec2 dp = tbSubPos(xfB.p, xfA.p);
 	for (int i = 0; i < m->pointCount; ++i)
 	{
 		tbManifoldPoint* mp = m->points + i;
@@ -542,9 +544,10 @@ static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbB
 		tbVec2 rB = tbRotateVector(xfB.q, base->pointB[i]);
 		tbVec2 gap = tbAdd(dp, tbSub(rB, rA));
 		mp->separation = base->separation[i] + tbDot(gap, m->normal);
-		mp->point = tbAdd(tbAdd(xfA.p, rA), tbMulSV(0.5f, gap));
-		mp->anchorA = tbSub(tbAdd(xfA.p, rA), bodyA->center);
-		mp->anchorB = tbSub(tbAdd(xfB.p, rB), bodyB->center);
+		tbPos pointA = tbOffsetPos(xfA.p, rA);
+		mp->point = tbToVec2(tbOffsetPos(pointA, tbMulSV(0.5f, gap)));
+		mp->anchorA = tbSubPos(pointA, bodyA->center);
+		mp->anchorB = tbSubPos(tbOffsetPos(xfB.p, rB), bodyB->center);
 		mp->persisted = true;
 	}
 	return true;
@@ -577,8 +580,9 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 		contact->manifold.pointCount = 0;
 		return 0;
 	}
+	tbPos points[2];
 	contact->manifold =
-		tbCollideShapesWithMargin(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin);
+		tbCollideInWorld(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin, points);
 	uint32_t result = 0;
 	if (a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape)
 	{
@@ -587,8 +591,8 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 	tbManifold* m = &contact->manifold;
 	for (int i = 0; i < m->pointCount; ++i)
 	{
-		m->points[i].anchorA = tbSub(m->points[i].point, bodyA->center);
-		m->points[i].anchorB = tbSub(m->points[i].point, bodyB->center);
+		m->points[i].anchorA = tbSubPos(points[i], bodyA->center);
+		m->points[i].anchorB = tbSubPos(points[i], bodyB->center);
 	}
 	if (world->def.enableWarmStarting)
 	{
@@ -597,7 +601,7 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbHasMaterialFeatures(a) &&
 		tbHasMaterialFeatures(b))
 	{
-		tbStoreManifoldBase(contact, bodyA->transform, bodyB->transform, margin);
+		tbStoreManifoldBase(contact, bodyA->transform, bodyB->transform, points, margin);
 	}
 	return result;
 }
@@ -925,7 +929,7 @@ void tbReportHitEvents(tbWorld* world)
 			tbContactHitEvent event;
 			event.shapeIdA = tbMakeShapeId(world, contact->shapeIdA);
 			event.shapeIdB = tbMakeShapeId(world, contact->shapeIdB);
-			event.point = contact->hitPoint;
+			event.point = tbToPos(contact->hitPoint);
 			event.normal = contact->manifold.normal;
 			event.approachSpeed = contact->hitSpeed;
 			contact->hitSpeed = 0.0f;

@@ -30,6 +30,7 @@ typedef struct tbContinuousContext
 	tbToiCounters* counters;
 	tbBody* fastBody;
 	int fastBodyId;
+	tbPos base; ///< the frame's origin of every sweep and result (tbSweepBase)
 	tbSweep sweep;
 	const tbShape* fastShape;
 	tbShapeProxy fastProxy;
@@ -39,12 +40,26 @@ typedef struct tbContinuousContext
 	tbVec2 otherVelocity;
 } tbContinuousContext;
 
-static tbSweep tbMakeBodySweep(const tbBody* body)
+/// The origin the sweeps of one fast body are measured from. Sweeps and times of impact are float
+/// arithmetic; in the large-world build the fast body's start centre is the origin, so the
+/// positions they see are within a step's travel of it, and results are moved back by it. In the
+/// float build positions are floats already and the origin is the world's (no extra rounding).
+static tbPos tbSweepBase(const tbBody* fastBody)
+{
+#if defined(TUMBLE_DOUBLE_PRECISION)
+	return fastBody->center0;
+#else
+	(void)fastBody;
+	return tbPos_zero;
+#endif
+}
+
+static tbSweep tbMakeBodySweep(const tbBody* body, tbPos base)
 {
 	tbSweep sweep;
 	sweep.localCenter = body->localCenter;
-	sweep.c1 = body->center0;
-	sweep.c2 = body->center;
+	sweep.c1 = tbSubPos(body->center0, base);
+	sweep.c2 = tbSubPos(body->center, base);
 	sweep.q1 = body->rotation0;
 	sweep.q2 = body->transform.q;
 	return sweep;
@@ -54,7 +69,7 @@ static bool tbIsFast(const tbWorld* world, const tbBody* body, float* motion)
 {
 	// Largest displacement of any point of the body: translation of the centre plus the arc of
 	// the farthest point.
-	float translation = tbDistance(body->center, body->center0);
+	float translation = tbLength(tbSubPos(body->center, body->center0));
 	float reach = tbSpeculativeReach(body);
 	(void)world;
 	// Most bodies turn little: for a turn θ with cos θ ≥ 0, |θ| = asin|sin θ| ≤ (π/2)·|sin θ| < 1.6·|sin θ|,
@@ -144,15 +159,15 @@ static tbTOIOutput tbComputeCoreTOI(tbContinuousContext* c, const tbShape* other
 
 /// The user's pre-continuous callback, asked when either shape enables pre-solve events.
 static bool tbAllowedByPreContinuous(tbWorld* world, const tbShape* other, const tbShape* fastShape,
-									 const tbTOIOutput* output)
+									 const tbTOIOutput* output, tbPos base)
 {
 	if (world->preContinuousFcn == NULL || (other->enablePreSolveEvents == false && fastShape->enablePreSolveEvents == false))
 	{
 		return true;
 	}
 	return world->preContinuousFcn(tbMakeShapeId(world, (int)(other - world->shapes)),
-								   tbMakeShapeId(world, (int)(fastShape - world->shapes)), output->point, output->normal,
-								   world->preSolveContext);
+								   tbMakeShapeId(world, (int)(fastShape - world->shapes)), tbOffsetPos(base, output->point),
+								   output->normal, world->preSolveContext);
 }
 
 /// A point inside a shape (its centroid), in its body's frame.
@@ -187,8 +202,9 @@ static bool tbSkipChainSweep(const tbContinuousContext* c, const tbShape* other,
 	const tbSegment* segment = &other->geometry.chainSegment.segment;
 	tbVec2 e = tbNormalize(tbSub(segment->point2, segment->point1));
 	tbVec2 centroid = tbShapeCentroid(&c->fastShape->geometry);
-	tbVec2 c1 = tbInvTransformPoint(otherBody->transform, tbTransformPoint(tbGetSweepTransform(&c->sweep, 0.0f), centroid));
-	tbVec2 c2 = tbInvTransformPoint(otherBody->transform, tbTransformPoint(tbGetSweepTransform(&c->sweep, 1.0f), centroid));
+	tbTransform xfOther = tbToRelativeTransform(otherBody->transform, c->base);
+	tbVec2 c1 = tbInvTransformPoint(xfOther, tbTransformPoint(tbGetSweepTransform(&c->sweep, 0.0f), centroid));
+	tbVec2 c2 = tbInvTransformPoint(xfOther, tbTransformPoint(tbGetSweepTransform(&c->sweep, 1.0f), centroid));
 	float separation1 = tbCross(tbSub(c1, segment->point1), e); // > 0 in front (right of the direction)
 	float separation2 = tbCross(tbSub(c2, segment->point1), e);
 	float core = 0.5f * c->fastBody->minExtent;
@@ -225,7 +241,7 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	{
 		return true;
 	}
-	tbSweep otherSweep = tbMakeBodySweep(otherBody);
+	tbSweep otherSweep = tbMakeBodySweep(otherBody, c->base);
 	if (otherBody->awakeIndex == TB_NULL_INDEX)
 	{
 		otherSweep.c1 = otherSweep.c2;
@@ -241,7 +257,7 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	// A hit strictly inside the sweep moves the body back, unless the pre-continuous callback
 	// lets the body pass (a one-way platform).
 	if (output.state == tb_toiStateHit && output.fraction > 0.0f && output.fraction < c->fraction &&
-		tbAllowedByPreContinuous(world, other, c->fastShape, &output))
+		tbAllowedByPreContinuous(world, other, c->fastShape, &output, c->base))
 	{
 		c->fraction = output.fraction;
 		c->coreHit = core;
@@ -251,11 +267,13 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	return true;
 }
 
-static tbAABB tbSweptShapeBox(const tbShape* shape, const tbSweep* sweep)
+/// The world box of the shape over the sweep's two ends (the sweep measured from base).
+static tbAABB tbSweptShapeBox(const tbShape* shape, const tbSweep* sweep, tbPos base)
 {
 	tbTransform xf1 = tbGetSweepTransform(sweep, 0.0f);
 	tbTransform xf2 = tbGetSweepTransform(sweep, 1.0f);
-	return tbAABB_Union(tbComputeShapeAABB(&shape->geometry, xf1), tbComputeShapeAABB(&shape->geometry, xf2));
+	tbAABB box = tbAABB_Union(tbComputeShapeAABB(&shape->geometry, xf1), tbComputeShapeAABB(&shape->geometry, xf2));
+	return tbOffsetAABB(box, base);
 }
 
 /// The core hit while the body was already touching: the contact points the solver saw did not
@@ -280,7 +298,8 @@ static void tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters)
 	c.counters = counters;
 	c.fastBody = body;
 	c.fastBodyId = bodyId;
-	c.sweep = tbMakeBodySweep(body);
+	c.base = tbSweepBase(body);
+	c.sweep = tbMakeBodySweep(body, c.base);
 	c.fraction = 1.0f;
 	c.coreHit = false;
 	// Rotation can carry points outside both end boxes by at most the arc's sagitta,
@@ -296,7 +315,7 @@ static void tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters)
 		}
 		c.fastShape = shape;
 		c.fastProxy = tbMakeShapeProxy(&shape->geometry);
-		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, &c.sweep), pad + TB_LINEAR_SLOP);
+		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, &c.sweep, c.base), pad + TB_LINEAR_SLOP);
 		if (body->isBullet)
 		{
 			tbBroadPhase_Query(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
@@ -311,8 +330,9 @@ static void tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters)
 	if (c.fraction < 1.0f)
 	{
 		tbTransform xf = tbGetSweepTransform(&c.sweep, c.fraction);
-		body->transform = xf;
-		body->center = tbTransformPoint(xf, body->localCenter);
+		body->transform.p = tbOffsetPos(c.base, xf.p);
+		body->transform.q = xf.q;
+		body->center = tbTransformWorldPoint(body->transform, body->localCenter);
 		if (c.coreHit)
 		{
 			tbStopCoreApproach(body, c.normal, c.otherVelocity);

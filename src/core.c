@@ -51,6 +51,15 @@ tbVersion tbGetVersion(void)
 	return v;
 }
 
+bool tbIsDoublePrecision(void)
+{
+#if defined(TUMBLE_DOUBLE_PRECISION)
+	return true;
+#else
+	return false;
+#endif
+}
+
 void tbSetAllocator(tbAllocFcn* allocFcn, tbFreeFcn* freeFcn)
 {
 	s_allocFcn = allocFcn;
@@ -235,6 +244,49 @@ bool tbCheckCoordinate(const char* function, const char* name, tbVec2 value)
 	}
 	return true;
 }
+
+#if defined(TUMBLE_DOUBLE_PRECISION)
+bool tbIsPosition(tbPos p)
+{
+	return fabs(p.x) <= TB_MAX_POSITION && fabs(p.y) <= TB_MAX_POSITION; // false for NaN
+}
+
+bool tbCheckPosition(const char* function, const char* name, tbPos value)
+{
+	if (tbIsPosition(value) == false)
+	{
+		tbReportError(function, "%s is (%g, %g): not finite or beyond TB_MAX_POSITION (%g m)", name, value.x, value.y,
+					  TB_MAX_POSITION);
+		return false;
+	}
+	return true;
+}
+
+bool tbCheckFinitePosition(const char* function, const char* name, tbPos value)
+{
+	if (isfinite(value.x) == false || isfinite(value.y) == false)
+	{
+		tbReportError(function, "%s is (%g, %g); must be finite", name, value.x, value.y);
+		return false;
+	}
+	return true;
+}
+#else
+bool tbCheckFinitePosition(const char* function, const char* name, tbPos value)
+{
+	return tbCheckVec2(function, name, value);
+}
+
+bool tbIsPosition(tbPos p)
+{
+	return tbIsCoordinate(p);
+}
+
+bool tbCheckPosition(const char* function, const char* name, tbPos value)
+{
+	return tbCheckCoordinate(function, name, value);
+}
+#endif
 
 bool tbCheckLength(const char* function, const char* name, float value, bool positive)
 {

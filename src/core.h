@@ -50,8 +50,21 @@ bool tbCheckCoordinate(const char* function, const char* name, tbVec2 value);
 bool tbCheckLength(const char* function, const char* name, float value, bool positive);
 /// tbCheckCoordinate for each of count points, reported as name[i].
 bool tbCheckPoints(const char* function, const char* name, const tbVec2* points, int count);
+/// A world transform rounded to float (drawing; exact in the float build).
+static inline tbTransform tbRoundTransform(tbWorldTransform t)
+{
+	tbTransform r = {tbToVec2(t.p), t.q};
+	return r;
+}
+
 /// True when v is finite and each coordinate within ±TB_MAX_COORDINATE.
 bool tbIsCoordinate(tbVec2 v);
+/// A world position: finite and within ±TB_MAX_POSITION (tbCheckCoordinate in the float build).
+bool tbCheckPosition(const char* function, const char* name, tbPos value);
+/// True when p is finite and each coordinate within ±TB_MAX_POSITION.
+bool tbIsPosition(tbPos p);
+/// A world position: finite (tbCheckVec2 in the float build).
+bool tbCheckFinitePosition(const char* function, const char* name, tbPos value);
 
 /// Closest point to p on the segment a–b (Ericson, Real-Time Collision Detection, §5.1.2), with
 /// its fraction t along a → b; a degenerate segment (a = b) gives a and t = 0.

@@ -221,9 +221,9 @@ int tbDistanceJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointR
 
 static tbVec2 tbDistanceAxis(const tbWorld* world, const tbJoint* joint, float* length)
 {
-	tbVec2 pA = tbJointWorldFrameA(world, joint).p;
-	tbVec2 pB = tbJointWorldFrameB(world, joint).p;
-	return tbGetLengthAndNormalize(length, tbSub(pB, pA));
+	tbPos pA = tbJointWorldFrameA(world, joint).p;
+	tbPos pB = tbJointWorldFrameB(world, joint).p;
+	return tbGetLengthAndNormalize(length, tbSubPos(pB, pA));
 }
 
 void tbGetDistanceJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque)
@@ -237,8 +237,8 @@ void tbGetDistanceJointReaction(const tbWorld* world, const tbJoint* joint, floa
 
 void tbDrawDistanceJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint)
 {
-	tbVec2 pA = tbJointWorldFrameA(world, joint).p;
-	tbVec2 pB = tbJointWorldFrameB(world, joint).p;
+	tbVec2 pA = tbToVec2(tbJointWorldFrameA(world, joint).p);
+	tbVec2 pB = tbToVec2(tbJointWorldFrameB(world, joint).p);
 	draw->DrawSegment(pA, pB, tb_colorJoint, draw->context);
 	if (draw->DrawPoint != NULL)
 	{

@@ -134,7 +134,7 @@ void tbWorld_Draw(tbWorldId worldId, const tbDebugDraw* draw)
 		}
 		if (draw->drawShapes)
 		{
-			tbDrawShape(draw, shape, body->transform, tbBodyColor(body, shape));
+			tbDrawShape(draw, shape, tbRoundTransform(body->transform), tbBodyColor(body, shape));
 		}
 		if (draw->drawAABBs)
 		{

@@ -92,8 +92,8 @@ static bool tbExplosionCallback(int proxyKey, int shapeIndex, void* context)
 		return true;
 	}
 	// Work in the shape's frame: the distance stays precise far from the origin.
-	tbTransform xf = body->transform;
-	tbVec2 centre = tbInvTransformPoint(xf, c->def.position);
+	tbWorldTransform xf = body->transform;
+	tbVec2 centre = tbInvTransformWorldPoint(xf, c->def.position);
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = tbMakeProxy(&centre, 1, 0.0f);
@@ -116,7 +116,7 @@ static bool tbExplosionCallback(int proxyKey, int shapeIndex, void* context)
 	}
 	float magnitude = c->def.impulsePerLength * tbProjectedWidth(&shape->geometry, tbLeftPerp(direction)) * scale;
 	tbVec2 impulse = tbMulSV(magnitude, tbRotateVector(xf.q, direction));
-	tbVec2 point = tbTransformPoint(xf, struck);
+	tbPos point = tbTransformWorldPoint(xf, struck);
 	// The public entry checks the result is finite and wakes the body.
 	tbBody_ApplyLinearImpulse(tbMakeBodyId(world, shape->bodyId), impulse, point, true);
 	return true;
@@ -130,7 +130,7 @@ void tbWorld_Explode(tbWorldId worldId, const tbExplosionDef* def)
 	{
 		return;
 	}
-	if (tbCheckCoordinate(f, "def->position", def->position) == false ||
+	if (tbCheckPosition(f, "def->position", def->position) == false ||
 		tbCheckNonNegative(f, "def->radius", def->radius) == false ||
 		tbCheckNonNegative(f, "def->falloff", def->falloff) == false ||
 		tbCheckFloat(f, "def->impulsePerLength", def->impulsePerLength) == false)
@@ -150,7 +150,8 @@ void tbWorld_Explode(tbWorldId worldId, const tbExplosionDef* def)
 		return;
 	}
 	tbExplosionContext context = {world, *def};
-	tbAABB box = {{def->position.x - extent, def->position.y - extent}, {def->position.x + extent, def->position.y + extent}};
+	tbAABB reach = {{-extent, -extent}, {extent, extent}};
+	tbAABB box = tbOffsetAABB(reach, def->position);
 	world->queryDepth += 1; // the callback changes velocities only (see tbStructureLocked)
 	tbBroadPhase_Query(&world->broadPhase, box, def->maskBits, tbExplosionCallback, &context);
 	world->queryDepth -= 1;

@@ -827,14 +827,14 @@ tbJointEvents tbWorld_GetJointEvents(tbWorldId worldId)
 	return events;
 }
 
-tbTransform tbJointWorldFrameA(const tbWorld* world, const tbJoint* joint)
+tbWorldTransform tbJointWorldFrameA(const tbWorld* world, const tbJoint* joint)
 {
-	return tbMulTransforms(world->bodies[joint->edges[0].bodyId].transform, joint->localFrameA);
+	return tbMulWorldTransforms(world->bodies[joint->edges[0].bodyId].transform, joint->localFrameA);
 }
 
-tbTransform tbJointWorldFrameB(const tbWorld* world, const tbJoint* joint)
+tbWorldTransform tbJointWorldFrameB(const tbWorld* world, const tbJoint* joint)
 {
-	return tbMulTransforms(world->bodies[joint->edges[1].bodyId].transform, joint->localFrameB);
+	return tbMulWorldTransforms(world->bodies[joint->edges[1].bodyId].transform, joint->localFrameB);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -867,7 +867,7 @@ static void tbPrepareJointBase(tbJoint* joint, const tbStepContext* context)
 	joint->frameA.p = tbRotateVector(a->transform.q, tbSub(joint->localFrameA.p, a->localCenter));
 	joint->frameB.q = tbMulRot(b->transform.q, joint->localFrameB.q);
 	joint->frameB.p = tbRotateVector(b->transform.q, tbSub(joint->localFrameB.p, b->localCenter));
-	joint->deltaCenter = tbSub(b->center, a->center);
+	joint->deltaCenter = tbSubPos(b->center, a->center);
 
 	if (world->def.solver == tb_solverSoft)
 	{
@@ -1341,8 +1341,8 @@ void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw)
 			default:
 			{
 				// Filter joint: a thin link between the body origins.
-				tbVec2 pA = world->bodies[joint->edges[0].bodyId].transform.p;
-				tbVec2 pB = world->bodies[joint->edges[1].bodyId].transform.p;
+				tbVec2 pA = tbToVec2(world->bodies[joint->edges[0].bodyId].transform.p);
+				tbVec2 pB = tbToVec2(world->bodies[joint->edges[1].bodyId].transform.p);
 				draw->DrawSegment(pA, pB, tb_colorAABB, draw->context);
 				break;
 			}

@@ -295,8 +295,8 @@ void tbWakeJoint(tbWorld* world, const tbJoint* joint);
 /// Checks for defs: a float that must be finite and ≥ 0, a pair lower ≤ upper.
 bool tbCheckRange(const char* function, const char* lowerName, float lower, const char* upperName, float upper);
 /// Frames of the joint in world space now (frame origins and rotations).
-tbTransform tbJointWorldFrameA(const tbWorld* world, const tbJoint* joint);
-tbTransform tbJointWorldFrameB(const tbWorld* world, const tbJoint* joint);
+tbWorldTransform tbJointWorldFrameA(const tbWorld* world, const tbJoint* joint);
+tbWorldTransform tbJointWorldFrameB(const tbWorld* world, const tbJoint* joint);
 
 // prismatic_joint.c: the geometry of a joint that slides along frame A's x-axis (prismatic and
 // wheel joints) for one solve: anchors, d = anchor B − anchor A, the axis, its normal and the

@@ -990,6 +990,22 @@ tbManifold tbSwapManifoldRoles(tbManifold m)
 	return m;
 }
 
+tbManifold tbCollideInWorld(const tbGeometry* a, tbWorldTransform xfA, const tbGeometry* b, tbWorldTransform xfB,
+							tbNarrowPhaseMethod method, float keep, tbPos points[2])
+{
+	bool ordered = tbDispatchRank(a->type) >= tbDispatchRank(b->type);
+	tbWorldTransform frame = ordered ? xfA : xfB;
+	tbManifold m = ordered ? tbCollideOrderedFrameA(a, b, tbInvMulWorldTransforms(xfA, xfB), method, keep)
+						   : tbCollideOrderedFrameA(b, a, tbInvMulWorldTransforms(xfB, xfA), method, keep);
+	m.normal = tbRotateVector(frame.q, m.normal);
+	for (int i = 0; i < m.pointCount; ++i)
+	{
+		points[i] = tbTransformWorldPoint(frame, m.points[i].point);
+		m.points[i].point = tbToVec2(points[i]);
+	}
+	return ordered ? m : tbSwapManifoldRoles(m);
+}
+
 tbManifold tbCollideShapesWithMargin(const tbGeometry* shapeA, tbTransform xfA, const tbGeometry* shapeB,
 									 tbTransform xfB, tbNarrowPhaseMethod method, float speculativeDistance)
 {

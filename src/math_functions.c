@@ -58,7 +58,11 @@ bool tbIsValidPlane(tbPlane plane)
 
 bool tbIsValidPosition(tbPos p)
 {
+#if defined(TUMBLE_DOUBLE_PRECISION)
+	return isfinite(p.x) && isfinite(p.y);
+#else
 	return tbIsValidVec2(p);
+#endif
 }
 
 bool tbIsValidWorldTransform(tbWorldTransform t)

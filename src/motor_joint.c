@@ -182,8 +182,8 @@ void tbGetMotorJointReaction(const tbWorld* world, const tbJoint* joint, float i
 
 void tbDrawMotorJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint)
 {
-	tbTransform fA = tbJointWorldFrameA(world, joint);
-	tbTransform fB = tbJointWorldFrameB(world, joint);
+	tbTransform fA = tbRoundTransform(tbJointWorldFrameA(world, joint));
+	tbTransform fB = tbRoundTransform(tbJointWorldFrameB(world, joint));
 	float s = 0.25f * joint->drawScale;
 	draw->DrawSegment(fA.p, tbMulAdd(fA.p, s, tbRot_GetXAxis(fA.q)), tb_colorJoint, draw->context);
 	draw->DrawSegment(fB.p, tbMulAdd(fB.p, s, tbRot_GetXAxis(fB.q)), tb_colorNormal, draw->context);

@@ -130,8 +130,8 @@ void tbDrawMoverJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoi
 {
 	const tbBody* a = world->bodies + joint->edges[0].bodyId;
 	const tbBody* b = world->bodies + joint->edges[1].bodyId;
-	tbVec2 cA = tbTransformPoint(a->transform, a->localCenter);
-	tbVec2 cB = tbTransformPoint(b->transform, b->localCenter);
+	tbVec2 cA = tbToVec2(tbTransformWorldPoint(a->transform, a->localCenter));
+	tbVec2 cB = tbToVec2(tbTransformWorldPoint(b->transform, b->localCenter));
 	draw->DrawSegment(cA, cB, tb_colorTree, draw->context);
 	tbVec2 tip = tbMulAdd(cB, 0.1f * joint->drawScale, joint->mover.linearVelocity);
 	draw->DrawSegment(cB, tip, tb_colorJoint, draw->context);

@@ -160,8 +160,8 @@ void tbGetPogoJointReaction(const tbWorld* world, const tbJoint* joint, float in
 // normal at anchor A.
 void tbDrawPogoJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint)
 {
-	tbTransform fA = tbJointWorldFrameA(world, joint);
-	tbTransform fB = tbJointWorldFrameB(world, joint);
+	tbTransform fA = tbRoundTransform(tbJointWorldFrameA(world, joint));
+	tbTransform fB = tbRoundTransform(tbJointWorldFrameB(world, joint));
 	tbVec2 axis = tbRot_GetYAxis(fB.q);
 	tbVec2 rest = tbMulSub(fB.p, joint->pogo.restLength, axis);
 	draw->DrawSegment(fA.p, fB.p, tb_colorTree, draw->context);
@@ -240,9 +240,9 @@ float tbPogoJoint_GetLength(tbJointId jointId)
 	{
 		return 0.0f;
 	}
-	tbTransform fA = tbJointWorldFrameA(world, joint);
-	tbTransform fB = tbJointWorldFrameB(world, joint);
-	return tbDot(tbRot_GetYAxis(fB.q), tbSub(fB.p, fA.p));
+	tbWorldTransform fA = tbJointWorldFrameA(world, joint);
+	tbWorldTransform fB = tbJointWorldFrameB(world, joint);
+	return tbDot(tbRot_GetYAxis(fB.q), tbSubPos(fB.p, fA.p));
 }
 
 float tbPogoJoint_GetVelocity(tbJointId jointId)

@@ -248,8 +248,8 @@ void tbGetPrismaticJointReaction(const tbWorld* world, const tbJoint* joint, flo
 void tbDrawPrismaticJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint)
 {
 	const tbPrismaticJoint* p = &joint->prismatic;
-	tbTransform fA = tbJointWorldFrameA(world, joint);
-	tbVec2 pB = tbJointWorldFrameB(world, joint).p;
+	tbTransform fA = tbRoundTransform(tbJointWorldFrameA(world, joint));
+	tbVec2 pB = tbToVec2(tbJointWorldFrameB(world, joint).p);
 	tbVec2 axis = tbRot_GetXAxis(fA.q);
 	tbVec2 perp = tbMulSV(0.1f * joint->drawScale, tbLeftPerp(axis));
 	if (p->enableLimit)
@@ -467,9 +467,9 @@ float tbPrismaticJoint_GetTranslation(tbJointId jointId)
 	{
 		return 0.0f;
 	}
-	tbTransform fA = tbJointWorldFrameA(world, joint);
-	tbVec2 pB = tbJointWorldFrameB(world, joint).p;
-	return tbDot(tbSub(pB, fA.p), tbRot_GetXAxis(fA.q));
+	tbWorldTransform fA = tbJointWorldFrameA(world, joint);
+	tbPos pB = tbJointWorldFrameB(world, joint).p;
+	return tbDot(tbSubPos(pB, fA.p), tbRot_GetXAxis(fA.q));
 }
 
 float tbPrismaticJoint_GetSpeed(tbJointId jointId)
@@ -483,12 +483,12 @@ float tbPrismaticJoint_GetSpeed(tbJointId jointId)
 	// x = a·d with the axis a turning with body A: ẋ = (ωA × a)·d + a·(vB + ωB × rB − vA − ωA × rA).
 	const tbBody* a = world->bodies + joint->edges[0].bodyId;
 	const tbBody* b = world->bodies + joint->edges[1].bodyId;
-	tbTransform fA = tbJointWorldFrameA(world, joint);
-	tbVec2 pB = tbJointWorldFrameB(world, joint).p;
+	tbWorldTransform fA = tbJointWorldFrameA(world, joint);
+	tbPos pB = tbJointWorldFrameB(world, joint).p;
 	tbVec2 axis = tbRot_GetXAxis(fA.q);
-	tbVec2 rA = tbSub(fA.p, a->center);
-	tbVec2 rB = tbSub(pB, b->center);
-	tbVec2 d = tbSub(pB, fA.p);
+	tbVec2 rA = tbSubPos(fA.p, a->center);
+	tbVec2 rB = tbSubPos(pB, b->center);
+	tbVec2 d = tbSubPos(pB, fA.p);
 	tbVec2 vA = tbAdd(a->linearVelocity, tbCrossSV(a->angularVelocity, rA));
 	tbVec2 vB = tbAdd(b->linearVelocity, tbCrossSV(b->angularVelocity, rB));
 	return tbDot(d, tbCrossSV(a->angularVelocity, axis)) + tbDot(axis, tbSub(vB, vA));

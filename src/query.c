@@ -18,8 +18,9 @@ typedef struct tbQueryContext
 	tbQueryFilter filter;
 	tbOverlapResultFcn* fcn;
 	void* userContext;
-	// point and shape queries
-	tbVec2 point;
+	// point and shape queries; ray casts
+	tbPos point; ///< the point of a point query, the origin of a ray
+	tbPos base;	 ///< shape queries and casts: their frame's origin (tbQueryBase)
 	const tbGeometry* shape;
 	tbShapeProxy proxy;
 	tbTransform transform;
@@ -28,6 +29,19 @@ typedef struct tbQueryContext
 	tbVec2 translation;
 	float maxFraction;
 } tbQueryContext;
+
+/// Shape queries and shape casts work in float in a frame whose origin is the query shape's
+/// position in the large-world build (results moved back by it), and the world's origin in the
+/// float build, where positions are floats already and an offset would only add rounding.
+static tbPos tbQueryBase(tbTransform transform)
+{
+#if defined(TUMBLE_DOUBLE_PRECISION)
+	return tbToPos(transform.p);
+#else
+	(void)transform;
+	return tbPos_zero;
+#endif
+}
 
 static bool tbAABBQueryCallback(int proxyKey, int shapeIndex, void* context)
 {
@@ -118,7 +132,7 @@ static bool tbPointQueryCallback(int proxyKey, int shapeIndex, void* context)
 	{
 		return true;
 	}
-	tbVec2 local = tbInvTransformPoint(q->world->bodies[shape->bodyId].transform, q->point);
+	tbVec2 local = tbInvTransformWorldPoint(q->world->bodies[shape->bodyId].transform, q->point);
 	if (tbPointInShape(&shape->geometry, local) == false)
 	{
 		return true;
@@ -126,18 +140,18 @@ static bool tbPointQueryCallback(int proxyKey, int shapeIndex, void* context)
 	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
 }
 
-bool tbWorld_OverlapPoint(tbWorldId worldId, tbVec2 point, tbQueryFilter filter, tbOverlapResultFcn* fcn, void* context)
+bool tbWorld_OverlapPoint(tbWorldId worldId, tbPos point, tbQueryFilter filter, tbOverlapResultFcn* fcn, void* context)
 {
 	const char* f = "tbWorld_OverlapPoint";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
-	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckVec2(f, "point", point) == false)
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckFinitePosition(f, "point", point) == false)
 	{
 		return false;
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
 	q.point = point;
-	tbAABB box = {point, point};
+	tbAABB box = tbOffsetAABB((tbAABB){tb_vec2_zero, tb_vec2_zero}, point); // contains the point
 	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbPointQueryCallback, &q);
 	tbLeaveQuery(world);
@@ -156,7 +170,7 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = q->proxy;
-	input.transform = tbInvMulTransforms(q->world->bodies[shape->bodyId].transform, q->transform);
+	input.transform = tbInvMulWorldTransforms(q->world->bodies[shape->bodyId].transform, tbMakeWorldTransform(q->transform));
 	input.useRadii = true;
 	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL, 0);
 	if (output.distance > 0.0f)
@@ -201,16 +215,16 @@ static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int sh
 	{
 		return input->maxFraction;
 	}
-	tbTransform xf = q->world->bodies[shape->bodyId].transform;
+	tbWorldTransform xf = q->world->bodies[shape->bodyId].transform;
 	tbRayCastInput local = *input;
-	local.origin = tbInvTransformPoint(xf, input->origin);
+	local.origin = tbInvTransformWorldPoint(xf, q->point);
 	local.translation = tbInvRotateVector(xf.q, input->translation);
 	tbCastOutput output = tbRayCastShape(&shape->geometry, &local);
 	if (output.hit == false)
 	{
 		return input->maxFraction;
 	}
-	tbVec2 point = tbTransformPoint(xf, output.point);
+	tbPos point = tbTransformWorldPoint(xf, output.point);
 	tbVec2 normal = tbRotateVector(xf.q, output.normal);
 	float result = q->castFcn(tbMakeShapeId(q->world, shapeIndex), point, normal, output.fraction, q->userContext);
 	// −1 ignores this shape: keep the current clip.
@@ -219,12 +233,12 @@ static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int sh
 
 // The collision layer answers for shapes and placements within TB_MAX_COORDINATE: a ray origin
 // beyond it is refused. A translation may have any finite length.
-static bool tbCheckRay(const char* f, tbVec2 origin, tbVec2 translation)
+static bool tbCheckRay(const char* f, tbPos origin, tbVec2 translation)
 {
-	return tbCheckCoordinate(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
+	return tbCheckPosition(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
 }
 
-bool tbWorld_CastRay(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
+bool tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
 					 void* context)
 {
 	const char* f = "tbWorld_CastRay";
@@ -235,14 +249,15 @@ bool tbWorld_CastRay(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQue
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.castFcn = fcn;
-	tbRayCastInput input = {origin, translation, 1.0f};
+	q.point = origin; // each shape is hit from the exact origin; the broad phase walks a float one
+	tbRayCastInput input = {tbToVec2(origin), translation, 1.0f};
 	tbEnterQuery(world);
 	tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
 	tbLeaveQuery(world);
 	return true;
 }
 
-static float tbClosestCallback(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+static float tbClosestCallback(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
 {
 	tbRayResult* result = context;
 	result->shapeId = shapeId;
@@ -253,7 +268,7 @@ static float tbClosestCallback(tbShapeId shapeId, tbVec2 point, tbVec2 normal, f
 	return fraction;
 }
 
-tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQueryFilter filter)
+tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter)
 {
 	tbRayResult result;
 	memset(&result, 0, sizeof(result));
@@ -272,14 +287,15 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 		return true;
 	}
 	tbShapeProxy proxyA = tbMakeShapeProxy(&shape->geometry);
-	tbCastOutput output = tbShapeCastBetween(&proxyA, q->world->bodies[shape->bodyId].transform, &q->proxy,
-											 q->transform, q->translation, q->maxFraction, false);
+	tbTransform xfA = tbToRelativeTransform(q->world->bodies[shape->bodyId].transform, q->base);
+	tbTransform xfB = tbToRelativeTransform(tbMakeWorldTransform(q->transform), q->base);
+	tbCastOutput output = tbShapeCastBetween(&proxyA, xfA, &q->proxy, xfB, q->translation, q->maxFraction, false);
 	if (output.hit == false)
 	{
 		return true;
 	}
-	float result = q->castFcn(tbMakeShapeId(q->world, shapeIndex), output.point, output.normal, output.fraction,
-							  q->userContext);
+	float result = q->castFcn(tbMakeShapeId(q->world, shapeIndex), tbOffsetPos(q->base, output.point), output.normal,
+							  output.fraction, q->userContext);
 	if (result == 0.0f)
 	{
 		return false;
@@ -309,6 +325,7 @@ bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform t
 	q.castFcn = fcn;
 	q.proxy = tbMakeShapeProxy(shape);
 	q.transform = transform;
+	q.base = tbQueryBase(transform);
 	q.translation = translation;
 	q.maxFraction = 1.0f;
 	// Candidates: shapes whose boxes overlap the shape's box swept over the translation.
@@ -325,7 +342,7 @@ bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform t
 /// A mover's capsule: finite, radius above twice the linear slop (the plane solver's tolerance).
 static bool tbCheckMover(const char* f, tbPos origin, const tbCapsule* mover)
 {
-	if (tbCheckPointer(f, "mover", mover) == false || tbCheckCoordinate(f, "origin", origin) == false ||
+	if (tbCheckPointer(f, "mover", mover) == false || tbCheckPosition(f, "origin", origin) == false ||
 		tbCheckVec2(f, "mover->center1", mover->center1) == false ||
 		tbCheckVec2(f, "mover->center2", mover->center2) == false)
 	{
@@ -345,17 +362,13 @@ static tbAABB tbMoverBox(tbPos origin, const tbCapsule* mover)
 {
 	tbVec2 r = {mover->radius, mover->radius};
 	tbAABB box = {tbSub(tbMin(mover->center1, mover->center2), r), tbAdd(tbMax(mover->center1, mover->center2), r)};
-	box.lowerBound = tbAdd(box.lowerBound, origin);
-	box.upperBound = tbAdd(box.upperBound, origin);
-	return box;
+	return tbOffsetAABB(box, origin);
 }
 
 /// A shape's body transform relative to the query origin.
 static tbTransform tbRelativeTransform(const tbWorld* world, const tbShape* shape, tbPos origin)
 {
-	tbTransform transform = world->bodies[shape->bodyId].transform;
-	transform.p = tbSub(transform.p, origin);
-	return transform;
+	return tbToRelativeTransform(world->bodies[shape->bodyId].transform, origin);
 }
 
 typedef struct tbMoverQuery

@@ -240,7 +240,7 @@ void tbGetRevoluteJointReaction(const tbWorld* world, const tbJoint* joint, floa
 // A small circle at the pin and frame B's x-axis through it (shows the joint angle).
 void tbDrawRevoluteJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint)
 {
-	tbTransform fB = tbJointWorldFrameB(world, joint);
+	tbTransform fB = tbRoundTransform(tbJointWorldFrameB(world, joint));
 	float radius = 0.1f * joint->drawScale;
 	if (draw->DrawCircle != NULL)
 	{

@@ -82,6 +82,23 @@ bool tbShape_IsValid(tbShapeId id)
 		   world->shapes[index].generation == id.generation;
 }
 
+#if defined(TUMBLE_DOUBLE_PRECISION)
+// The box is found about the body's origin in float (the shape's extent, small), then moved to
+// the body's position in double and rounded outwards (tbOffsetAABB): far from the origin, where a
+// float's spacing can exceed the extent, the box still contains the shape. The margin is added
+// before the move, so a margin below that spacing is not lost.
+tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbWorldTransform transform)
+{
+	tbTransform turn = {tb_vec2_zero, transform.q};
+	return tbOffsetAABB(tbComputeShapeAABB(&shape->geometry, turn), transform.p);
+}
+
+tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, float extra)
+{
+	tbTransform turn = {tb_vec2_zero, transform.q};
+	return tbOffsetAABB(tbAABB_Fatten(tbComputeShapeAABB(&shape->geometry, turn), extra), transform.p);
+}
+#else
 tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbWorldTransform transform)
 {
 	return tbComputeShapeAABB(&shape->geometry, transform);
@@ -91,6 +108,7 @@ tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, f
 {
 	return tbAABB_Fatten(tbComputeShapeAABB(&shape->geometry, transform), extra);
 }
+#endif
 
 bool tbShouldShapesCollide(tbFilter a, tbFilter b)
 {
@@ -994,39 +1012,40 @@ tbAABB tbShape_GetAABB(tbShapeId shapeId)
 	return shape != NULL ? tbComputeShapeAABBInternal(shape, world->bodies[shape->bodyId].transform) : empty;
 }
 
-bool tbShape_TestPoint(tbShapeId shapeId, tbVec2 point)
+bool tbShape_TestPoint(tbShapeId shapeId, tbPos point)
 {
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_TestPoint", &world, false);
-	if (shape == NULL || tbCheckVec2("tbShape_TestPoint", "point", point) == false)
+	if (shape == NULL || tbCheckFinitePosition("tbShape_TestPoint", "point", point) == false)
 	{
 		return false;
 	}
-	tbVec2 local = tbInvTransformPoint(world->bodies[shape->bodyId].transform, point);
+	tbVec2 local = tbInvTransformWorldPoint(world->bodies[shape->bodyId].transform, point);
 	return tbPointInShape(&shape->geometry, local);
 }
 
-tbVec2 tbShape_GetClosestPoint(tbShapeId shapeId, tbVec2 target)
+tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target)
 {
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetClosestPoint", &world, false);
-	if (shape == NULL || tbCheckCoordinate("tbShape_GetClosestPoint", "target", target) == false)
+	if (shape == NULL || tbCheckPosition("tbShape_GetClosestPoint", "target", target) == false)
 	{
-		return tb_vec2_zero;
+		return tbPos_zero;
 	}
 	// Distance from the shape (A, in its body frame) to a point proxy (B) placed at the target:
 	// GJK's witness on A is the closest point (on the rounded surface with useRadii).
-	tbTransform transform = world->bodies[shape->bodyId].transform;
+	tbWorldTransform transform = world->bodies[shape->bodyId].transform;
+	tbWorldTransform at = {target, tb_rot_identity};
 	tbVec2 origin = tb_vec2_zero;
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = tbMakeProxy(&origin, 1, 0.0f);
-	input.transform = tbInvMulTransforms(transform, (tbTransform){target, tb_rot_identity});
+	input.transform = tbInvMulWorldTransforms(transform, at);
 	input.useRadii = true;
 	tbSimplexCache cache;
 	memset(&cache, 0, sizeof(cache));
 	tbDistanceOutput output = tbShapeDistance(&input, &cache, NULL, 0);
-	return output.distance > 0.0f ? tbTransformPoint(transform, output.pointA) : target;
+	return output.distance > 0.0f ? tbTransformWorldPoint(transform, output.pointA) : target;
 }
 
 tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input)
@@ -1042,14 +1061,16 @@ tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input)
 	{
 		return output;
 	}
-	tbTransform xf = world->bodies[shape->bodyId].transform;
+	// In the shape's frame (the origin's offset from the body taken in the precision of positions);
+	// the hit point comes back as a float vector, rounded in the large-world build.
+	tbWorldTransform xf = world->bodies[shape->bodyId].transform;
 	tbRayCastInput local = *input;
-	local.origin = tbInvTransformPoint(xf, input->origin);
+	local.origin = tbInvTransformWorldPoint(xf, tbToPos(input->origin));
 	local.translation = tbInvRotateVector(xf.q, input->translation);
 	output = tbRayCastShape(&shape->geometry, &local);
 	if (output.hit)
 	{
-		output.point = tbTransformPoint(xf, output.point);
+		output.point = tbToVec2(tbTransformWorldPoint(xf, output.point));
 		output.normal = tbRotateVector(xf.q, output.normal);
 	}
 	return output;

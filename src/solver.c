@@ -134,10 +134,10 @@ static void tbScatterBodiesTask(int start, int end, uint32_t workerIndex, void* 
 		}
 		body->linearVelocity = sb->linearVelocity;
 		body->angularVelocity = sb->angularVelocity;
-		body->center = tbAdd(body->center0, sb->deltaPosition);
+		body->center = tbOffsetPos(body->center0, sb->deltaPosition);
 		tbRot q = tbNormalizeRot(tbMulRot(sb->deltaRotation, body->rotation0));
 		body->transform.q = q;
-		body->transform.p = tbSub(body->center, tbRotateVector(q, body->localCenter));
+		body->transform.p = tbOffsetPos(body->center, tbNeg(tbRotateVector(q, body->localCenter)));
 		body->force = tb_vec2_zero;
 		body->torque = 0.0f;
 	}

@@ -157,8 +157,8 @@ void tbGetWeldJointReaction(const tbWorld* world, const tbJoint* joint, float in
 
 void tbDrawWeldJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint)
 {
-	tbTransform fA = tbJointWorldFrameA(world, joint);
-	tbTransform fB = tbJointWorldFrameB(world, joint);
+	tbTransform fA = tbRoundTransform(tbJointWorldFrameA(world, joint));
+	tbTransform fB = tbRoundTransform(tbJointWorldFrameB(world, joint));
 	float s = 0.25f * joint->drawScale;
 	draw->DrawSegment(tbMulSub(fA.p, s, tbRot_GetXAxis(fA.q)), tbMulAdd(fA.p, s, tbRot_GetXAxis(fA.q)), tb_colorJoint,
 					  draw->context);

@@ -165,8 +165,8 @@ void tbGetWheelJointReaction(const tbWorld* world, const tbJoint* joint, float i
 void tbDrawWheelJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoint* joint)
 {
 	const tbWheelJoint* w = &joint->wheel;
-	tbTransform fA = tbJointWorldFrameA(world, joint);
-	tbVec2 pB = tbJointWorldFrameB(world, joint).p;
+	tbTransform fA = tbRoundTransform(tbJointWorldFrameA(world, joint));
+	tbVec2 pB = tbToVec2(tbJointWorldFrameB(world, joint).p);
 	tbVec2 axis = tbRot_GetXAxis(fA.q);
 	float lower = w->enableLimit ? w->lowerTranslation : -0.5f * joint->drawScale;
 	float upper = w->enableLimit ? w->upperTranslation : 0.5f * joint->drawScale;

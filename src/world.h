@@ -20,8 +20,8 @@ typedef struct tbBody
 {
 	// Hot in the collide and island stages (speculative margin, anchors, contact-list walks):
 	// grouped at the front so a visit touches one or two cache lines.
-	tbTransform transform; ///< body origin and rotation
-	tbVec2 center;		   ///< world centre of mass
+	tbWorldTransform transform; ///< body origin and rotation
+	tbPos center;				///< world centre of mass
 	tbVec2 linearVelocity;
 	float angularVelocity;
 	float minExtent;	///< smallest distance from the centre of mass to the surface (continuous collision)
@@ -35,7 +35,7 @@ typedef struct tbBody
 	bool isFast;		///< moved far this step: swept by continuous collision (read per contact: first line)
 	bool enableContactRecycling; ///< read per contact by the narrow phase: first line
 
-	tbVec2 center0;		///< centre of mass at the start of the step (continuous collision)
+	tbPos center0;		///< centre of mass at the start of the step (continuous collision)
 	tbRot rotation0;	///< rotation at the start of the step
 	tbVec2 localCenter; ///< centre of mass in the body frame
 	tbVec2 force;

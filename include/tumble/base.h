@@ -46,6 +46,10 @@ typedef struct tbVersion
 
 TB_API tbVersion tbGetVersion(void);
 
+/// True when the library was built for large worlds (CMake option TUMBLE_DOUBLE_PRECISION: world
+/// positions in double precision).
+TB_API bool tbIsDoublePrecision(void);
+
 /// Allocation hook. Must return memory aligned to `alignment` bytes (a power of two, at most 64).
 typedef void* tbAllocFcn(unsigned int size, int alignment);
 

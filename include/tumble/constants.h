@@ -102,6 +102,15 @@
 /// lengths stay well below 1e9 m. See docs/limits.md.
 #define TB_MAX_COORDINATE 1.0e6f
 
+/// Largest world position the API accepts (a body's position, a query's origin): TB_MAX_COORDINATE,
+/// or 1e9 m in the large-world build (TUMBLE_DOUBLE_PRECISION), where a double's spacing there is
+/// 1.2e-7 m and shapes, measured from their bodies, stay within TB_MAX_COORDINATE of them.
+#if defined(TUMBLE_DOUBLE_PRECISION)
+#define TB_MAX_POSITION 1.0e9
+#else
+#define TB_MAX_POSITION TB_MAX_COORDINATE
+#endif
+
 /// Largest time step tbWorld_Step accepts, 1 s: a longer span is many frames and should be
 /// stepped as many calls; a single step of it would move bodies by maximumLinearSpeed × Δt.
 #define TB_MAX_TIME_STEP 1.0f

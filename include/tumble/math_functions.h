@@ -33,12 +33,31 @@ typedef struct tbTransform
 	tbRot q;
 } tbTransform;
 
-/// A world position (Box2D v3.2's b2Pos): a plain vector, as v3.2 outside its large-world build.
-/// Functions that take an origin (tbWorld_CastMover, tbWorld_CollideMover) measure their shapes
-/// from it.
+#if defined(TUMBLE_DOUBLE_PRECISION)
+/// A world position (Box2D v3.2's b2Pos). In the large-world build (CMake option
+/// TUMBLE_DOUBLE_PRECISION) its coordinates are doubles: a float holds a coordinate 10 km from the
+/// origin to 1 mm (2⁻¹⁰ m), a double to 2e-12 m. Everything measured between two positions
+/// (offsets from a body's centre, relative transforms, sweeps) is a float vector again, taken
+/// as a difference of doubles (tbSubPos), so the solver and the collision routines stay in float.
+typedef struct tbPos
+{
+	double x, y;
+} tbPos;
+
+/// A world transform: a double position and a float rotation (a rotation is the same anywhere).
+typedef struct tbWorldTransform
+{
+	tbPos p;
+	tbRot q;
+} tbWorldTransform;
+#else
+/// A world position (Box2D v3.2's b2Pos): a plain vector, as v3.2 outside its large-world build
+/// (the CMake option TUMBLE_DOUBLE_PRECISION makes it a pair of doubles). Functions that take an
+/// origin (tbWorld_CastMover, tbWorld_CollideMover) measure their shapes from it.
 typedef tbVec2 tbPos;
 /// A world transform (Box2D v3.2's b2WorldTransform): a plain transform.
 typedef tbTransform tbWorldTransform;
+#endif
 
 /// A line: the points x with dot(normal, x) = offset (normal of unit length).
 typedef struct tbPlane
@@ -624,6 +643,113 @@ TB_INLINE float tbSpringDamper(float hertz, float dampingRatio, float position, 
 	return (velocity - omega * omegaH * position) / (1.0f + 2.0f * dampingRatio * omegaH + omegaH * omegaH);
 }
 
+#if defined(TUMBLE_DOUBLE_PRECISION)
+// World positions in the large-world build. The rule that keeps precision: a position is only
+// ever added to or subtracted from another position (in double), and only the difference, a
+// small vector, meets float arithmetic. Rotations apply to float vectors only.
+
+/// The vector v as a position (exact).
+TB_INLINE tbPos tbToPos(tbVec2 v)
+{
+	tbPos p = {v.x, v.y};
+	return p;
+}
+
+/// The position p rounded to float (loses precision far from the origin; for drawing and for
+/// values near the origin).
+TB_INLINE tbVec2 tbToVec2(tbPos p)
+{
+	tbVec2 v = {(float)p.x, (float)p.y};
+	return v;
+}
+
+/// x rounded to a float at or below it: with tbRoundUpFloat, a float box that contains a double
+/// one. The float nearest x may lie on either side; one step of nextafterf (exact, the same on
+/// every IEEE machine) moves it below.
+TB_INLINE float tbRoundDownFloat(double x)
+{
+	float f = (float)x;
+	return (double)f > x ? nextafterf(f, -FLT_MAX) : f;
+}
+
+/// x rounded to a float at or above it.
+TB_INLINE float tbRoundUpFloat(double x)
+{
+	float f = (float)x;
+	return (double)f < x ? nextafterf(f, FLT_MAX) : f;
+}
+
+/// a − b, subtracted in double, then rounded to a float vector.
+TB_INLINE tbVec2 tbSubPos(tbPos a, tbPos b)
+{
+	tbVec2 d = {(float)(a.x - b.x), (float)(a.y - b.y)};
+	return d;
+}
+
+/// p + d.
+TB_INLINE tbPos tbOffsetPos(tbPos p, tbVec2 d)
+{
+	tbPos q = {p.x + (double)d.x, p.y + (double)d.y};
+	return q;
+}
+
+/// (1 − t)·a + t·b.
+TB_INLINE tbPos tbLerpPosition(tbPos a, tbPos b, float t)
+{
+	double u = (double)t;
+	tbPos p = {(1.0 - u) * a.x + u * b.x, (1.0 - u) * a.y + u * b.y};
+	return p;
+}
+
+/// The local point p placed by t: rotated in float, then offset from t's position in double.
+TB_INLINE tbPos tbTransformWorldPoint(tbWorldTransform t, tbVec2 p)
+{
+	return tbOffsetPos(t.p, tbRotateVector(t.q, p));
+}
+
+/// The position p in t's frame: the offset from t's position in double, then rotated back.
+TB_INLINE tbVec2 tbInvTransformWorldPoint(tbWorldTransform t, tbPos p)
+{
+	return tbInvRotateVector(t.q, tbSubPos(p, t.p));
+}
+
+/// Frame B seen from frame A: A⁻¹·B, its offset B.p − A.p taken in double.
+TB_INLINE tbTransform tbInvMulWorldTransforms(tbWorldTransform A, tbWorldTransform B)
+{
+	tbTransform C = {tbInvRotateVector(A.q, tbSubPos(B.p, A.p)), tbInvMulRot(A.q, B.q)};
+	return C;
+}
+
+/// A local transform B carried into the world by A.
+TB_INLINE tbWorldTransform tbMulWorldTransforms(tbWorldTransform A, tbTransform B)
+{
+	tbWorldTransform C = {tbOffsetPos(A.p, tbRotateVector(A.q, B.p)), tbMulRot(A.q, B.q)};
+	return C;
+}
+
+/// The transform with its position measured from base.
+TB_INLINE tbTransform tbToRelativeTransform(tbWorldTransform t, tbPos base)
+{
+	tbTransform r = {tbSubPos(t.p, base), t.q};
+	return r;
+}
+
+/// A float transform as a world transform (exact).
+TB_INLINE tbWorldTransform tbMakeWorldTransform(tbTransform t)
+{
+	tbWorldTransform w = {tbToPos(t.p), t.q};
+	return w;
+}
+
+/// The box b measured from base, as a world box that contains it: each bound offset in double
+/// and rounded outwards, so a shape stays inside its box however far from the origin.
+TB_INLINE tbAABB tbOffsetAABB(tbAABB b, tbPos base)
+{
+	tbAABB r = {{tbRoundDownFloat(base.x + b.lowerBound.x), tbRoundDownFloat(base.y + b.lowerBound.y)},
+				{tbRoundUpFloat(base.x + b.upperBound.x), tbRoundUpFloat(base.y + b.upperBound.y)}};
+	return r;
+}
+#else
 // World positions (tbPos) are plain vectors in Tumble (Box2D v3.2 outside its large-world build):
 // these conversions are exact and cost nothing; they let v3.2 code written for positions port.
 TB_INLINE tbPos tbToPos(tbVec2 v)
@@ -697,6 +823,14 @@ TB_INLINE tbWorldTransform tbMakeWorldTransform(tbTransform t)
 {
 	return t;
 }
+
+/// The box b measured from base, as a world box.
+TB_INLINE tbAABB tbOffsetAABB(tbAABB b, tbPos base)
+{
+	tbAABB r = {tbAdd(b.lowerBound, base), tbAdd(b.upperBound, base)};
+	return r;
+}
+#endif
 
 #ifdef __cplusplus
 }

@@ -18,6 +18,11 @@ extern "C" {
 
 /// Create a world. Returns a null id and reports an error on a bad definition or when
 /// TB_MAX_WORLDS exist.
+#if defined(TUMBLE_DOUBLE_PRECISION)
+// A program compiled for one precision and linked with a library built for the other would pass
+// tbPos values of the wrong size; under this name the mismatch is a link error instead.
+#define tbCreateWorld tbCreateWorldDoublePrecision
+#endif
 TB_API tbWorldId tbCreateWorld(const tbWorldDef* def);
 /// Workers the step may use from now on, clamped to [1, TB_MAX_WORKERS]; without task callbacks
 /// the step runs on the caller whatever the count. Not while the world steps or is queried.
@@ -92,7 +97,7 @@ typedef bool tbOverlapResultFcn(tbShapeId shapeId, void* context);
 
 /// Ray callback: return −1 to ignore this shape, 0 to stop, `fraction` to clip to this hit,
 /// 1 to continue without clipping.
-typedef float tbCastResultFcn(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context);
+typedef float tbCastResultFcn(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context);
 /// tbWorld_CollideMover's callback: one plane the mover touches (relative to the origin); return
 /// false to stop.
 typedef bool tbPlaneResultFcn(tbShapeId shapeId, const tbPlaneResult* plane, void* context);
@@ -100,7 +105,7 @@ typedef bool tbPlaneResultFcn(tbShapeId shapeId, const tbPlaneResult* plane, voi
 typedef struct tbRayResult
 {
 	tbShapeId shapeId;
-	tbVec2 point;
+	tbPos point;
 	tbVec2 normal;
 	float fraction;
 	bool hit;
@@ -129,16 +134,16 @@ TB_API bool tbContact_IsValid(tbContactId contactId);
 /// The contact's data; all zero (and an error) for a stale id.
 TB_API tbContactData tbContact_GetData(tbContactId contactId);
 /// Shapes containing the point.
-TB_API bool tbWorld_OverlapPoint(tbWorldId worldId, tbVec2 point, tbQueryFilter filter, tbOverlapResultFcn* fcn,
+TB_API bool tbWorld_OverlapPoint(tbWorldId worldId, tbPos point, tbQueryFilter filter, tbOverlapResultFcn* fcn,
 								 void* context);
 /// Shapes overlapping a given shape placed at transform.
 TB_API bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform,
 								 tbQueryFilter filter, tbOverlapResultFcn* fcn, void* context);
 /// Every shape hit by the ray origin → origin + translation, in no particular order, clipped by the callback.
-TB_API bool tbWorld_CastRay(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQueryFilter filter,
+TB_API bool tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter,
 							tbCastResultFcn* fcn, void* context);
 /// The closest hit.
-TB_API tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbVec2 origin, tbVec2 translation, tbQueryFilter filter);
+TB_API tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter);
 /// Every shape hit by a shape moving by translation (GJK shape cast).
 TB_API bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform, tbVec2 translation,
 							  tbQueryFilter filter, tbCastResultFcn* fcn, void* context);
@@ -163,14 +168,14 @@ TB_API bool tbBody_IsValid(tbBodyId bodyId);
 
 TB_API tbBodyType tbBody_GetType(tbBodyId bodyId);
 TB_API bool tbBody_SetType(tbBodyId bodyId, tbBodyType type);
-TB_API tbVec2 tbBody_GetPosition(tbBodyId bodyId);
+TB_API tbPos tbBody_GetPosition(tbBodyId bodyId);
 TB_API tbRot tbBody_GetRotation(tbBodyId bodyId);
 TB_API float tbBody_GetAngle(tbBodyId bodyId);
-TB_API tbTransform tbBody_GetTransform(tbBodyId bodyId);
+TB_API tbWorldTransform tbBody_GetTransform(tbBodyId bodyId);
 /// Teleport. Wakes the body.
-TB_API bool tbBody_SetTransform(tbBodyId bodyId, tbVec2 position, tbRot rotation);
-TB_API tbVec2 tbBody_GetLocalPoint(tbBodyId bodyId, tbVec2 worldPoint);
-TB_API tbVec2 tbBody_GetWorldPoint(tbBodyId bodyId, tbVec2 localPoint);
+TB_API bool tbBody_SetTransform(tbBodyId bodyId, tbPos position, tbRot rotation);
+TB_API tbVec2 tbBody_GetLocalPoint(tbBodyId bodyId, tbPos worldPoint);
+TB_API tbPos tbBody_GetWorldPoint(tbBodyId bodyId, tbVec2 localPoint);
 TB_API tbVec2 tbBody_GetLocalVector(tbBodyId bodyId, tbVec2 worldVector);
 TB_API tbVec2 tbBody_GetWorldVector(tbBodyId bodyId, tbVec2 localVector);
 
@@ -187,12 +192,12 @@ TB_API bool tbBody_SetAngularVelocity(tbBodyId bodyId, float angularVelocity);
 /// threshold (a target it would creep to leaves it asleep); with wake false it stays asleep and
 /// unchanged. Refused (false, error hook, nothing changed): stale id, locked world, static body,
 /// non-finite or non-unit target, timeStep not finite and > 0.
-TB_API bool tbBody_SetTargetTransform(tbBodyId bodyId, tbTransform target, float timeStep, bool wake);
+TB_API bool tbBody_SetTargetTransform(tbBodyId bodyId, tbWorldTransform target, float timeStep, bool wake);
 
-TB_API bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbVec2 point, bool wake);
+TB_API bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbPos point, bool wake);
 TB_API bool tbBody_ApplyForceToCenter(tbBodyId bodyId, tbVec2 force, bool wake);
 TB_API bool tbBody_ApplyTorque(tbBodyId bodyId, float torque, bool wake);
-TB_API bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbVec2 point, bool wake);
+TB_API bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbPos point, bool wake);
 TB_API bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wake);
 TB_API bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake);
 
@@ -200,7 +205,7 @@ TB_API float tbBody_GetMass(tbBodyId bodyId);
 /// Rotational inertia about the centre of mass (kg·m²).
 TB_API float tbBody_GetRotationalInertia(tbBodyId bodyId);
 TB_API tbVec2 tbBody_GetLocalCenterOfMass(tbBodyId bodyId);
-TB_API tbVec2 tbBody_GetWorldCenterOfMass(tbBodyId bodyId);
+TB_API tbPos tbBody_GetWorldCenterOfMass(tbBodyId bodyId);
 TB_API tbMassData tbBody_GetMassData(tbBodyId bodyId);
 /// Override the mass from the shapes (mass and inertia ≥ 0, centre local); a later shape change,
 /// tbBody_ApplyMassFromShapes or tbShape_SetDensity with updateBodyMass puts the shapes' back.
@@ -231,7 +236,7 @@ TB_API float tbBody_GetSleepThreshold(tbBodyId bodyId);
 /// Drop the force and torque accumulated since the last step.
 TB_API void tbBody_ClearForces(tbBodyId bodyId);
 /// Velocity of a point fixed to the body: v + ω × r, r from the centre of mass (world axes).
-TB_API tbVec2 tbBody_GetWorldPointVelocity(tbBodyId bodyId, tbVec2 worldPoint);
+TB_API tbVec2 tbBody_GetWorldPointVelocity(tbBodyId bodyId, tbPos worldPoint);
 TB_API tbVec2 tbBody_GetLocalPointVelocity(tbBodyId bodyId, tbVec2 localPoint);
 TB_API bool tbBody_IsBullet(tbBodyId bodyId);
 TB_API void tbBody_SetBullet(tbBodyId bodyId, bool flag);
@@ -316,10 +321,10 @@ TB_API bool tbShape_SetFilter(tbShapeId shapeId, tbFilter filter);
 TB_API void tbShape_SetUserData(tbShapeId shapeId, void* userData);
 TB_API void* tbShape_GetUserData(tbShapeId shapeId);
 TB_API tbAABB tbShape_GetAABB(tbShapeId shapeId);
-TB_API bool tbShape_TestPoint(tbShapeId shapeId, tbVec2 point);
+TB_API bool tbShape_TestPoint(tbShapeId shapeId, tbPos point);
 /// The point of the shape (radius included) closest to `target`, in world coordinates (GJK against
 /// a point); a target inside the shape is returned as it is.
-TB_API tbVec2 tbShape_GetClosestPoint(tbShapeId shapeId, tbVec2 target);
+TB_API tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target);
 TB_API tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input);
 TB_API tbMassData tbShape_GetMassData(tbShapeId shapeId);
 /// A chain segment's geometry with its ghost points (an error and zeros for another kind).

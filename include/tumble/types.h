@@ -69,7 +69,7 @@ typedef void tbPreSolveFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* m
 /// other shape; B, the fast body's) whose pair enables pre-solve events, with the point and normal
 /// (from A to B) at the time of impact; return false to let the body pass. Like pre-solve, it may
 /// run on several workers at once when the world has task callbacks.
-typedef bool tbPreContinuousFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbVec2 point, tbVec2 normal, void* context);
+typedef bool tbPreContinuousFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbPos point, tbVec2 normal, void* context);
 
 /// Tasks (Box2D v3.2's grammar): the game's task system runs parts of the step on its worker
 /// threads. A task covers items [startIndex, endIndex); workerIndex is in [0, workerCount) and no
@@ -166,7 +166,7 @@ typedef struct tbMotionLocks
 typedef struct tbBodyDef
 {
 	tbBodyType type;		///< default static
-	tbVec2 position;		///< world position of the body origin
+	tbPos position;			///< world position of the body origin
 	tbRot rotation;			///< default identity
 	tbVec2 linearVelocity;	///< of the centre of mass, m/s
 	float angularVelocity;	///< rad/s
@@ -216,7 +216,7 @@ TB_API tbQueryFilter tbDefaultQueryFilter(void);
 typedef struct tbExplosionDef
 {
 	uint64_t maskBits;		///< which shapes the blast reaches (default: all)
-	tbVec2 position;		///< centre (m)
+	tbPos position;			///< centre (m)
 	float radius;			///< m, ≥ 0: full strength within this distance of the surface
 	float falloff;			///< m, ≥ 0: beyond radius the strength falls to zero over this distance
 	float impulsePerLength; ///< N·s per metre of exposed width; negative pulls towards the centre
@@ -509,7 +509,7 @@ typedef struct tbContactHitEvent
 {
 	tbShapeId shapeIdA;
 	tbShapeId shapeIdB;
-	tbVec2 point;
+	tbPos point;
 	tbVec2 normal;
 	float approachSpeed; ///< m/s, > hitEventThreshold
 } tbContactHitEvent;
@@ -547,7 +547,7 @@ typedef struct tbSensorEvents
 /// A body that moved in the step (awake bodies), or fell asleep.
 typedef struct tbBodyMoveEvent
 {
-	tbTransform transform;
+	tbWorldTransform transform;
 	tbBodyId bodyId;
 	void* userData;
 	bool fellAsleep;
