@@ -13,6 +13,12 @@ box2d="${1:?usage: scripts/port-tests.sh /path/to/box2d [BUILD_DIR]}"
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${2:-$here/build}"
 cmake --build "$build" --target tumble -j2 >/dev/null
+# A large-world build of Tumble (TUMBLE_DOUBLE_PRECISION) runs the tests as Box2D's large-world
+# build does: the same option under Box2D's name turns on their double-precision checks.
+flags=()
+if grep -q "^TUMBLE_DOUBLE_PRECISION:BOOL=ON" "$build/CMakeCache.txt"; then
+	flags=(-DTUMBLE_DOUBLE_PRECISION -DBOX2D_DOUBLE_PRECISION)
+fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 rename() { sed -e 's/\bb2/tb/g; s/\bB2_/TB_/g; s#"box2d/box2d.h"#"tumble/tumble.h"#; s#box2d/#tumble/#g' "$1" >"$2"; }
@@ -45,7 +51,7 @@ int main(void)
 	return 0;
 }
 MAIN
-cc -std=c17 -O1 -I"$here/include" -I"$tmp" -c "$tmp/test_collision.c" -I"$here/src" -o "$tmp/test_collision.o"
+cc -std=c17 -O1 "${flags[@]}" -I"$here/include" -I"$tmp" -c "$tmp/test_collision.c" -I"$here/src" -o "$tmp/test_collision.o"
 rm "$tmp/test_collision.c"
-cc -std=c17 -O1 -I"$here/include" -I"$tmp" "$tmp"/*.c "$tmp/test_collision.o" "$build/libtumble.a" -lm -lpthread -o "$tmp/port-tests"
+cc -std=c17 -O1 "${flags[@]}" -I"$here/include" -I"$tmp" "$tmp"/*.c "$tmp/test_collision.o" "$build/libtumble.a" -lm -lpthread -o "$tmp/port-tests"
 "$tmp/port-tests"

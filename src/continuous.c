@@ -272,8 +272,9 @@ static tbAABB tbSweptShapeBox(const tbShape* shape, const tbSweep* sweep, tbPos 
 {
 	tbTransform xf1 = tbGetSweepTransform(sweep, 0.0f);
 	tbTransform xf2 = tbGetSweepTransform(sweep, 1.0f);
-	tbAABB box = tbAABB_Union(tbComputeShapeAABB(&shape->geometry, xf1), tbComputeShapeAABB(&shape->geometry, xf2));
-	return tbOffsetAABB(box, base);
+	tbWorldTransform start = {tbOffsetPos(base, xf1.p), xf1.q};
+	tbWorldTransform end = {tbOffsetPos(base, xf2.p), xf2.q};
+	return tbAABB_Union(tbComputeShapeAABB(&shape->geometry, start), tbComputeShapeAABB(&shape->geometry, end));
 }
 
 /// The core hit while the body was already touching: the contact points the solver saw did not

@@ -409,20 +409,20 @@ static tbAABB tbMakeInflatedAABB(tbVec2 lower, tbVec2 upper, float radius)
 	return box;
 }
 
-tbAABB tbComputeCircleAABB(const tbCircle* shape, tbTransform transform)
+static tbAABB tbCircleBox(const tbCircle* shape, tbTransform transform)
 {
 	tbVec2 p = tbTransformPoint(transform, shape->center);
 	return tbMakeInflatedAABB(p, p, shape->radius);
 }
 
-tbAABB tbComputeCapsuleAABB(const tbCapsule* shape, tbTransform transform)
+static tbAABB tbCapsuleBox(const tbCapsule* shape, tbTransform transform)
 {
 	tbVec2 p1 = tbTransformPoint(transform, shape->center1);
 	tbVec2 p2 = tbTransformPoint(transform, shape->center2);
 	return tbMakeInflatedAABB(tbMin(p1, p2), tbMax(p1, p2), shape->radius);
 }
 
-tbAABB tbComputePolygonAABB(const tbPolygon* shape, tbTransform transform)
+static tbAABB tbPolygonBox(const tbPolygon* shape, tbTransform transform)
 {
 	if (shape->count < 1)
 	{
@@ -439,31 +439,64 @@ tbAABB tbComputePolygonAABB(const tbPolygon* shape, tbTransform transform)
 	return tbMakeInflatedAABB(lower, upper, shape->radius);
 }
 
-tbAABB tbComputeSegmentAABB(const tbSegment* shape, tbTransform transform)
+static tbAABB tbSegmentBox(const tbSegment* shape, tbTransform transform)
 {
 	tbVec2 p1 = tbTransformPoint(transform, shape->point1);
 	tbVec2 p2 = tbTransformPoint(transform, shape->point2);
 	return tbMakeInflatedAABB(tbMin(p1, p2), tbMax(p1, p2), 0.0f);
 }
 
-tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbTransform transform)
+static tbAABB tbShapeBox(const tbGeometry* shape, tbTransform transform)
 {
 	switch (shape->type)
 	{
 		case tb_circleShape:
-			return tbComputeCircleAABB(&shape->circle, transform);
+			return tbCircleBox(&shape->circle, transform);
 		case tb_capsuleShape:
-			return tbComputeCapsuleAABB(&shape->capsule, transform);
+			return tbCapsuleBox(&shape->capsule, transform);
 		case tb_segmentShape:
-			return tbComputeSegmentAABB(&shape->segment, transform);
+			return tbSegmentBox(&shape->segment, transform);
 		case tb_chainSegmentShape:
-			return tbComputeSegmentAABB(&shape->chainSegment.segment, transform);
+			return tbSegmentBox(&shape->chainSegment.segment, transform);
 		case tb_polygonShape:
-			return tbComputePolygonAABB(&shape->polygon, transform);
+			return tbPolygonBox(&shape->polygon, transform);
 		default:
 			TB_ASSERT(false);
 			return tbMakeInflatedAABB(transform.p, transform.p, 0.0f);
 	}
+}
+
+#if defined(TUMBLE_DOUBLE_PRECISION)
+// Large-world build: the box is found about the shape's own position in float (its extent is
+// small) and moved out in double, rounded outwards, so it contains the shape at any distance.
+#define TB_WORLD_BOX(box, shape, transform) tbOffsetAABB(box(shape, (tbTransform){tb_vec2_zero, (transform).q}), (transform).p)
+#else
+#define TB_WORLD_BOX(box, shape, transform) box(shape, transform)
+#endif
+
+tbAABB tbComputeCircleAABB(const tbCircle* shape, tbWorldTransform transform)
+{
+	return TB_WORLD_BOX(tbCircleBox, shape, transform);
+}
+
+tbAABB tbComputeCapsuleAABB(const tbCapsule* shape, tbWorldTransform transform)
+{
+	return TB_WORLD_BOX(tbCapsuleBox, shape, transform);
+}
+
+tbAABB tbComputePolygonAABB(const tbPolygon* shape, tbWorldTransform transform)
+{
+	return TB_WORLD_BOX(tbPolygonBox, shape, transform);
+}
+
+tbAABB tbComputeSegmentAABB(const tbSegment* shape, tbWorldTransform transform)
+{
+	return TB_WORLD_BOX(tbSegmentBox, shape, transform);
+}
+
+tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbWorldTransform transform)
+{
+	return TB_WORLD_BOX(tbShapeBox, shape, transform);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -200,8 +200,8 @@ bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransfor
 	q.proxy = tbMakeShapeProxy(shape);
 	q.transform = transform;
 	tbEnterQuery(world);
-	tbBroadPhase_Query(&world->broadPhase, tbComputeShapeAABB(shape, transform), filter.maskBits, tbShapeQueryCallback,
-					   &q);
+	tbAABB box = tbComputeShapeAABB(shape, tbMakeWorldTransform(transform));
+	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbShapeQueryCallback, &q);
 	tbLeaveQuery(world);
 	return true;
 }
@@ -329,7 +329,7 @@ bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform t
 	q.translation = translation;
 	q.maxFraction = 1.0f;
 	// Candidates: shapes whose boxes overlap the shape's box swept over the translation.
-	tbAABB box = tbComputeShapeAABB(shape, transform);
+	tbAABB box = tbComputeShapeAABB(shape, tbMakeWorldTransform(transform));
 	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
 	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);

@@ -82,28 +82,22 @@ bool tbShape_IsValid(tbShapeId id)
 		   world->shapes[index].generation == id.generation;
 }
 
-#if defined(TUMBLE_DOUBLE_PRECISION)
-// The box is found about the body's origin in float (the shape's extent, small), then moved to
-// the body's position in double and rounded outwards (tbOffsetAABB): far from the origin, where a
-// float's spacing can exceed the extent, the box still contains the shape. The margin is added
-// before the move, so a margin below that spacing is not lost.
-tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbWorldTransform transform)
-{
-	tbTransform turn = {tb_vec2_zero, transform.q};
-	return tbOffsetAABB(tbComputeShapeAABB(&shape->geometry, turn), transform.p);
-}
-
-tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, float extra)
-{
-	tbTransform turn = {tb_vec2_zero, transform.q};
-	return tbOffsetAABB(tbAABB_Fatten(tbComputeShapeAABB(&shape->geometry, turn), extra), transform.p);
-}
-#else
 tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbWorldTransform transform)
 {
 	return tbComputeShapeAABB(&shape->geometry, transform);
 }
 
+#if defined(TUMBLE_DOUBLE_PRECISION)
+// The box is found about the body's origin in float (the shape's extent, small), then moved to
+// the body's position in double and rounded outwards (tbOffsetAABB): far from the origin, where a
+// float's spacing can exceed the extent, the box still contains the shape. The margin is added
+// before the move, so a margin below that spacing is not lost.
+tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, float extra)
+{
+	tbWorldTransform turn = {tbPos_zero, transform.q};
+	return tbOffsetAABB(tbAABB_Fatten(tbComputeShapeAABB(&shape->geometry, turn), extra), transform.p);
+}
+#else
 tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, float extra)
 {
 	return tbAABB_Fatten(tbComputeShapeAABB(&shape->geometry, transform), extra);

@@ -145,12 +145,14 @@ TB_API tbMassData tbComputeCircleMass(const tbCircle* shape, float density);
 TB_API tbMassData tbComputeCapsuleMass(const tbCapsule* shape, float density);
 TB_API tbMassData tbComputePolygonMass(const tbPolygon* shape, float density);
 
-/// World-space bounding boxes.
-TB_API tbAABB tbComputeCircleAABB(const tbCircle* shape, tbTransform transform);
-TB_API tbAABB tbComputeCapsuleAABB(const tbCapsule* shape, tbTransform transform);
-TB_API tbAABB tbComputePolygonAABB(const tbPolygon* shape, tbTransform transform);
-TB_API tbAABB tbComputeSegmentAABB(const tbSegment* shape, tbTransform transform);
-TB_API tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbTransform transform);
+/// World-space bounding boxes. In the large-world build (TUMBLE_DOUBLE_PRECISION) each box is
+/// found about the shape's position and moved out in double, rounded outwards: it contains the
+/// shape however far from the origin.
+TB_API tbAABB tbComputeCircleAABB(const tbCircle* shape, tbWorldTransform transform);
+TB_API tbAABB tbComputeCapsuleAABB(const tbCapsule* shape, tbWorldTransform transform);
+TB_API tbAABB tbComputePolygonAABB(const tbPolygon* shape, tbWorldTransform transform);
+TB_API tbAABB tbComputeSegmentAABB(const tbSegment* shape, tbWorldTransform transform);
+TB_API tbAABB tbComputeShapeAABB(const tbGeometry* shape, tbWorldTransform transform);
 
 /// Mass of any solid shape (segments have no mass).
 TB_API tbMassData tbComputeShapeMass(const tbGeometry* shape, float density);
