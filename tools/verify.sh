@@ -36,10 +36,11 @@ and that target (`tbTimeOfImpactToTarget`).
 **Jointed scenes.** Scenes are compared under Tumble's NGS method (8 velocity, 3 position
 iterations, one sub-step), the closest to Box2D 2.4.1. Box2D 2.4.1 corrects a joint's drift in its
 position pass; Tumble's NGS method corrects joints by a Baumgarte velocity bias and has no joint
-position pass. So trajectories agree while joints drift little (a pendulum's first quarter swing,
-a motor, a limit), and part later: over several swings Box2D 2.4.1 loses the pendulum's energy in
-its position pass (its period falls from 195 to 190 steps) while Tumble keeps the closed-form
-period (199.8 steps). A chain of many links is compared by its largest pin gap, under Tumble's NGS
+position pass. So trajectories agree while joints drift little (a pendulum's first quarter swing
+on a revolute or a rigid distance joint; revolute and prismatic motors and limits; a distance
+spring, a wheel suspension, a weld), and part later: over several swings Box2D 2.4.1 loses the
+pendulum's energy in its position pass (its period falls from 195 to 190 steps) while Tumble
+keeps the closed-form period (199.8 steps). A chain of many links is compared by its largest pin gap, under Tumble's NGS
 method (wider than Box2D's: no position pass) and under Tumble's defaults.
 
 **Polygon manifolds: raw and converted.** Tumble states polygon contacts as Box2D v3 does, and
