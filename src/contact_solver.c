@@ -64,11 +64,16 @@ static int tbGetSolverIndex(const tbWorld* world, int bodyId, int staticIndex)
 }
 
 // Inverse effective mass along direction u for anchors rA, rB.
-static float tbInverseEffectiveMass(const tbContactConstraint* c, tbVec2 rA, tbVec2 rB, tbVec2 u)
+static float tbInverseMassAlong(float invMassA, float invIA, float invMassB, float invIB, tbVec2 rA, tbVec2 rB, tbVec2 u)
 {
 	float rnA = tbCross(rA, u);
 	float rnB = tbCross(rB, u);
-	return c->invMassA + c->invMassB + c->invIA * rnA * rnA + c->invIB * rnB * rnB;
+	return invMassA + invMassB + invIA * rnA * rnA + invIB * rnB * rnB;
+}
+
+static float tbInverseEffectiveMass(const tbContactConstraint* c, tbVec2 rA, tbVec2 rB, tbVec2 u)
+{
+	return tbInverseMassAlong(c->invMassA, c->invIA, c->invMassB, c->invIB, rA, rB, u);
 }
 
 // Velocity of body `index` after the first velocity integration of the step (the stand-in: 0).
@@ -120,25 +125,44 @@ static void tbPrepareConstraintNGS(const tbStepContext* context, const tbManifol
 /// acceleration aₙ < 0 (towards each other), energy gives v_impact² = v² + 2·|aₙ|·s, so
 /// v_impact = −sqrt(v² − 2·aₙ·s). Without this the rebound of a body whose contact appears one
 /// step before impact is up to g·dt too slow (4 % low apex for a ball dropped 5 m at 60 Hz).
+// The relative normal acceleration gravity gives the pair (aₙ above).
+static float tbGravityApproach(const tbStepContext* context, int indexA, float invMassA, int indexB, float invMassB,
+							   tbVec2 normal)
+{
+	tbVec2 gravity = context->world->def.gravity;
+	tbVec2 gA = invMassA > 0.0f ? tbMulSV(context->masses[indexA].gravityScale, gravity) : tb_vec2_zero;
+	tbVec2 gB = invMassB > 0.0f ? tbMulSV(context->masses[indexB].gravityScale, gravity) : tb_vec2_zero;
+	return tbDot(tbSub(gB, gA), normal);
+}
+
+// A point's approach speed at impact, from its speed v and gap sep now (aₙ: tbGravityApproach).
+static float tbImpactVelocity(const tbStepContext* context, float an, float sep, float v)
+{
+	if (sep > 0.0f && v < 0.0f && an < 0.0f)
+	{
+		// no faster than two bodies at the speed clamp (gravity of 3e38 m/s² made this -∞)
+		float fastest = tbMinFloat(v, -2.0f * context->world->def.maximumLinearSpeed);
+		float impact = -sqrtf(v * v - 2.0f * an * sep);
+		return tbMaxFloat(impact, fastest);
+	}
+	return v;
+}
+
 static void tbEstimateImpactVelocity(const tbStepContext* context, const tbManifold* manifold,
 									 tbContactConstraint* c)
 {
-	tbVec2 gravity = context->world->def.gravity;
-	tbVec2 gA = c->invMassA > 0.0f ? tbMulSV(context->masses[c->indexA].gravityScale, gravity) : tb_vec2_zero;
-	tbVec2 gB = c->invMassB > 0.0f ? tbMulSV(context->masses[c->indexB].gravityScale, gravity) : tb_vec2_zero;
-	float an = tbDot(tbSub(gB, gA), c->normal);
+	float an = tbGravityApproach(context, c->indexA, c->invMassA, c->indexB, c->invMassB, c->normal);
 	for (int j = 0; j < c->pointCount; ++j)
 	{
-		float sep = manifold->points[j].separation;
 		tbContactConstraintPoint* cp = c->points + j;
-		if (sep > 0.0f && cp->relativeVelocity < 0.0f && an < 0.0f)
-		{
-			// no faster than two bodies at the speed clamp (gravity of 3e38 m/s² made this -∞)
-			float fastest = tbMinFloat(cp->relativeVelocity, -2.0f * context->world->def.maximumLinearSpeed);
-			float impact = -sqrtf(cp->relativeVelocity * cp->relativeVelocity - 2.0f * an * sep);
-			cp->relativeVelocity = tbMaxFloat(impact, fastest);
-		}
+		cp->relativeVelocity = tbImpactVelocity(context, an, manifold->points[j].separation, cp->relativeVelocity);
 	}
+}
+
+// A point's separation at the start of the step from its base and anchors (tbPrepareConstraint).
+static float tbStartSeparation(float baseSeparation, tbVec2 rA, tbVec2 rB, tbVec2 normal)
+{
+	return baseSeparation + tbDot(tbSub(rB, rA), normal);
 }
 
 // True when some point of c overlaps by more than deepOverlap at the start of the step.
@@ -147,8 +171,7 @@ static bool tbIsDeepOverlap(const tbContactConstraint* c, float deepOverlap)
 	for (int j = 0; j < c->pointCount; ++j)
 	{
 		const tbContactConstraintPoint* cp = c->points + j;
-		float s0 = cp->baseSeparation + tbDot(tbSub(cp->anchorB, cp->anchorA), c->normal);
-		if (s0 < -deepOverlap)
+		if (tbStartSeparation(cp->baseSeparation, cp->anchorA, cp->anchorB, c->normal) < -deepOverlap)
 		{
 			return true;
 		}
@@ -158,25 +181,36 @@ static bool tbIsDeepOverlap(const tbContactConstraint* c, float deepOverlap)
 
 // Soft step's settling (solver_soft.c): a dynamic pair touching for `age` steps that does not
 // overlap deeply stiffens from contactHertz to restHertz over the second settleSteps of touching.
-// Static pairs start at the resting stiffness, deep ones stay at contactHertz.
-static void tbSettleSoftness(const tbStepContext* context, tbContactConstraint* c, int age)
+// Static pairs start at the resting stiffness, deep ones stay at contactHertz. `softness` is the
+// pair's softness before settling; the caller has ruled out static and deep pairs.
+static tbSoftness tbSettledSoftness(const tbStepContext* context, tbSoftness softness, int age)
 {
-	bool dynamicPair = (c->invMassA > 0.0f || c->invIA > 0.0f) && (c->invMassB > 0.0f || c->invIB > 0.0f);
-	if (dynamicPair == false || tbIsDeepOverlap(c, context->deepOverlap))
-	{
-		return;
-	}
 	float settleSteps = context->settleSteps;
 	float ramp = tbClampFloat(((float)age - settleSteps) / settleSteps, 0.0f, 1.0f);
 	if (ramp >= 1.0f)
 	{
-		c->softness = context->settledSoftness;
+		return context->settledSoftness;
 	}
-	else if (ramp > 0.0f)
+	if (ramp > 0.0f)
 	{
 		float hertz = context->contactHertz + (context->settledHertz - context->contactHertz) * ramp;
-		c->softness = tbMakeSoftness(hertz, context->dampingRatio, context->h);
+		return tbMakeSoftness(hertz, context->dampingRatio, context->h);
 	}
+	return softness;
+}
+
+static bool tbMovesBoth(float invMassA, float invIA, float invMassB, float invIB)
+{
+	return (invMassA > 0.0f || invIA > 0.0f) && (invMassB > 0.0f || invIB > 0.0f);
+}
+
+static void tbSettleSoftness(const tbStepContext* context, tbContactConstraint* c, int age)
+{
+	if (tbMovesBoth(c->invMassA, c->invIA, c->invMassB, c->invIB) == false || tbIsDeepOverlap(c, context->deepOverlap))
+	{
+		return;
+	}
+	c->softness = tbSettledSoftness(context, c->softness, age);
 }
 
 // Which bodies of a contact the solve moves, and whether the wide blocks can carry it.
@@ -343,6 +377,101 @@ static bool tbMayRebound(const tbStepContext* context, const tbContactConstraint
 	return false;
 }
 
+// A contact that goes to a wide lane and cannot bounce, prepared straight into the lane: the same
+// numbers as tbPrepareConstraint (the same expressions in the same order, so bit for bit), without
+// the scalar constraint in between and without what the lanes do not carry (surface extras) or
+// what only bouncing contacts need (the scalar copy). Soft step and Baumgarte only: NGS at one
+// sub-step prepares differently (tbPrepareConstraintNGS) and takes tbPrepareConstraint.
+static void tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
+							  int lane, int slot)
+{
+	const tbSolverMass* massA = context->masses + key.indexA;
+	const tbSolverMass* massB = context->masses + key.indexB;
+	float invMassA = massA->invMass, invIA = massA->invI;
+	float invMassB = massB->invMass, invIB = massB->invI;
+	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
+	tbSoftness softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+
+	tbManifold* manifold = &contact->manifold;
+	tbVec2 normal = manifold->normal;
+	tbVec2 tangent = tbRightPerp(normal);
+	int pointCount = manifold->pointCount;
+	const tbSolverBody* sA = context->bodies + key.indexA;
+	const tbSolverBody* sB = context->bodies + key.indexB;
+	float warmScale = context->enableWarmStarting ? 1.0f : 0.0f;
+
+	block->indexA[lane] = key.indexA;
+	block->indexB[lane] = key.indexB;
+	block->constraintIndex[lane] = slot;
+	block->pointCount[lane] = pointCount;
+	tbSetLaneW(&block->normalX, lane, normal.x);
+	tbSetLaneW(&block->normalY, lane, normal.y);
+	tbSetLaneW(&block->friction, lane, contact->friction);
+	tbSetLaneW(&block->invMassA, lane, invMassA);
+	tbSetLaneW(&block->invIA, lane, invIA);
+	tbSetLaneW(&block->invMassB, lane, invMassB);
+	tbSetLaneW(&block->invIB, lane, invIB);
+
+	bool deep = false;
+	float relativeVelocity[2] = {0.0f, 0.0f};
+	for (int j = 0; j < 2; ++j)
+	{
+		tbWideContactPoint* wp = block->points + j;
+		if (j >= pointCount)
+		{
+			tbSetLaneW(&wp->anchorAX, lane, 0.0f);
+			tbSetLaneW(&wp->anchorAY, lane, 0.0f);
+			tbSetLaneW(&wp->anchorBX, lane, 0.0f);
+			tbSetLaneW(&wp->anchorBY, lane, 0.0f);
+			tbSetLaneW(&wp->baseSeparation, lane, 0.0f);
+			tbSetLaneW(&wp->normalImpulse, lane, 0.0f);
+			tbSetLaneW(&wp->tangentImpulse, lane, 0.0f);
+			tbSetLaneW(&wp->maxNormalImpulse, lane, 0.0f);
+			tbSetLaneW(&wp->normalMass, lane, 0.0f);
+			tbSetLaneW(&wp->tangentMass, lane, 0.0f);
+			tbSetLaneW(&wp->relaxBias, lane, 0.0f);
+			continue;
+		}
+		const tbManifoldPoint* mp = manifold->points + j;
+		tbVec2 rA = mp->anchorA;
+		tbVec2 rB = mp->anchorB;
+		float baseSeparation = mp->separation - tbDot(tbSub(rB, rA), normal);
+		float kNormal = tbInverseMassAlong(invMassA, invIA, invMassB, invIB, rA, rB, normal);
+		float kTangent = tbInverseMassAlong(invMassA, invIA, invMassB, invIB, rA, rB, tangent);
+		tbSetLaneW(&wp->anchorAX, lane, rA.x);
+		tbSetLaneW(&wp->anchorAY, lane, rA.y);
+		tbSetLaneW(&wp->anchorBX, lane, rB.x);
+		tbSetLaneW(&wp->anchorBY, lane, rB.y);
+		tbSetLaneW(&wp->baseSeparation, lane, baseSeparation);
+		tbSetLaneW(&wp->normalImpulse, lane, warmScale * mp->normalImpulse);
+		tbSetLaneW(&wp->tangentImpulse, lane, warmScale * mp->tangentImpulse);
+		tbSetLaneW(&wp->maxNormalImpulse, lane, 0.0f);
+		tbSetLaneW(&wp->normalMass, lane, kNormal > 0.0f ? 1.0f / kNormal : 0.0f);
+		tbSetLaneW(&wp->tangentMass, lane, kTangent > 0.0f ? 1.0f / kTangent : 0.0f);
+		tbSetLaneW(&wp->relaxBias, lane, 0.0f);
+		tbVec2 vA = tbAdd(sA->linearVelocity, tbCrossSV(sA->angularVelocity, rA));
+		tbVec2 vB = tbAdd(sB->linearVelocity, tbCrossSV(sB->angularVelocity, rB));
+		relativeVelocity[j] = tbDot(tbSub(vB, vA), normal);
+		deep = deep || tbStartSeparation(baseSeparation, rA, rB, normal) < -context->deepOverlap;
+	}
+
+	if (context->settleSteps > 0.0f && tbMovesBoth(invMassA, invIA, invMassB, invIB) && deep == false)
+	{
+		softness = tbSettledSoftness(context, softness, contact->touchingSteps);
+	}
+	tbSetLaneW(&block->biasRate, lane, softness.biasRate);
+	tbSetLaneW(&block->massScale, lane, softness.massScale);
+	tbSetLaneW(&block->impulseScale, lane, softness.impulseScale);
+
+	// The approach speed (tbPrepareConstraint's last lines): hit events and the next step read it.
+	float an = tbGravityApproach(context, key.indexA, invMassA, key.indexB, invMassB, normal);
+	for (int j = 0; j < pointCount; ++j)
+	{
+		tbManifoldPoint* mp = manifold->points + j;
+		mp->normalVelocity = tbImpactVelocity(context, an, mp->separation, relativeVelocity[j]);
+	}
+}
+
 typedef struct tbPrepareTaskContext
 {
 	tbStepContext* context;
@@ -361,6 +490,7 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 	const int* contactIds = world->solverContactsById;
 	const int* slots = world->solverSlots;
 	const int* wideLocation = context->wideLocation;
+	bool laneFastPath = (world->def.solver == tb_solverNGS && context->subStepCount == 1) == false;
 	int restitutionCount = 0;
 	for (int i = start; i < end; ++i)
 	{
@@ -386,8 +516,15 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 			continue;
 		}
 		// Key and lane by contact-id order: both stream (by slot they were scattered loads).
-		tbContactConstraint local;
 		tbContactKey key = context->keysById[i];
+		int location = context->locationById[i];
+		if (location >= 0 && (key.flags & tb_keyBounces) == 0u && laneFastPath)
+		{
+			tbPrepareWideLane(context, contact, key, context->wideConstraints + location / TB_SIMD_WIDTH,
+							  location % TB_SIMD_WIDTH, slot);
+			continue;
+		}
+		tbContactConstraint local;
 		tbPrepareConstraint(context, contact, key, &local);
 		if ((key.flags & tb_keyBounces) != 0u && tbMayRebound(context, &local) == false)
 		{
@@ -396,7 +533,6 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 			context->keys[slot].flags = key.flags;
 			context->keysById[i].flags = key.flags;
 		}
-		int location = context->locationById[i];
 		if (location >= 0)
 		{
 			tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH, &local, slot);
