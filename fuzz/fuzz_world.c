@@ -276,7 +276,7 @@ static bool CountOverlap(tbShapeId shapeId, void* context)
 	return true;
 }
 
-static float ClipCast(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+static float ClipCast(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
 {
 	(void)context;
 	FUZZ_CHECK(FuzzIsFinite2(point.x, point.y) && FuzzIsFinite2(normal.x, normal.y) && isfinite(fraction),
@@ -290,12 +290,12 @@ static void Query(FuzzInput* in, tbWorldId world)
 	tbVec2 a = FuzzVec2(in), b = FuzzVec2(in);
 	tbAABB box = {tbMin(a, b), tbMax(a, b)};
 	int found = 0;
-	tbWorld_OverlapAABB(world, box, tbDefaultQueryFilter(), CountOverlap, &found);
+	tbWorld_OverlapAABB(world, tbPos_zero, box, tbDefaultQueryFilter(), CountOverlap, &found);
 	tbWorld_CastRay(world, a, tbSub(b, a), tbDefaultQueryFilter(), ClipCast, NULL);
 	tbGeometry g = FuzzGeometry(in);
-	tbTransform xf = {a, tbMakeRot(FuzzFloat(in))};
-	tbWorld_CastShape(world, &g, xf, FuzzVec2(in), tbDefaultQueryFilter(), ClipCast, NULL);
-	tbWorld_OverlapShape(world, &g, xf, tbDefaultQueryFilter(), CountOverlap, &found);
+	tbShapeProxy proxy = tbMakeShapeProxy(&g);
+	tbWorld_CastShape(world, a, &proxy, FuzzVec2(in), tbDefaultQueryFilter(), ClipCast, NULL);
+	tbWorld_OverlapShape(world, a, &proxy, tbDefaultQueryFilter(), CountOverlap, &found);
 }
 
 static void CheckStep(const Ids* ids)

@@ -985,7 +985,8 @@ static void MeasureBodyPenetration(tbWorldId worldId, tbBodyId bodyId, Penetrati
 		}
 		query->shapeId = shapes[i];
 		query->geometry = tbShape_GetGeometry(shapes[i]);
-		tbWorld_OverlapAABB(worldId, tbShape_GetAABB(shapes[i]), tbDefaultQueryFilter(), PenetrationCallback, query);
+		tbWorld_OverlapAABB(worldId, tbPos_zero, tbShape_GetAABB(shapes[i]), tbDefaultQueryFilter(), PenetrationCallback,
+							query);
 	}
 }
 

@@ -20,28 +20,13 @@ typedef struct tbQueryContext
 	void* userContext;
 	// point and shape queries; ray casts
 	tbPos point; ///< the point of a point query, the origin of a ray
-	tbPos base;	 ///< shape queries and casts: their frame's origin (tbQueryBase)
-	const tbGeometry* shape;
-	tbShapeProxy proxy;
-	tbTransform transform;
+	tbPos base;	 ///< shape queries and casts: the origin their shape is measured from
+	tbShapeProxy proxy; ///< shape queries and casts: the query shape, its points measured from base
 	// casts
 	tbCastResultFcn* castFcn;
 	tbVec2 translation;
 	float maxFraction;
 } tbQueryContext;
-
-/// Shape queries and shape casts work in float in a frame whose origin is the query shape's
-/// position in the large-world build (results moved back by it), and the world's origin in the
-/// float build, where positions are floats already and an offset would only add rounding.
-static tbPos tbQueryBase(tbTransform transform)
-{
-#if defined(TUMBLE_DOUBLE_PRECISION)
-	return tbToPos(transform.p);
-#else
-	(void)transform;
-	return tbPos_zero;
-#endif
-}
 
 static bool tbAABBQueryCallback(int proxyKey, int shapeIndex, void* context)
 {
@@ -79,16 +64,29 @@ static bool tbCheckQueryWorld(tbWorld* world, const char* f, bool hasFcn)
 	return world != NULL && hasFcn;
 }
 
-// A query shape's placement: finite, a normalised rotation, a position within TB_MAX_COORDINATE
-// (the collision layer's answers are defined there).
-static bool tbCheckQueryTransform(const char* f, tbTransform transform)
+// A query shape (tbShapeProxy, measured from the query's origin): 1 to TB_MAX_POLYGON_VERTICES
+// points within TB_MAX_COORDINATE of the origin (the collision layer's answers are defined there)
+// and a radius in [0, TB_MAX_COORDINATE]; and the origin itself a valid position.
+static bool tbCheckQueryShape(const char* f, tbPos origin, const tbShapeProxy* proxy)
 {
-	if (tbIsValidTransform(transform) == false)
+	if (tbCheckPosition(f, "origin", origin) == false || tbCheckPointer(f, "proxy", proxy) == false)
 	{
-		tbReportError(f, "transform is not finite or its rotation is not normalised; build it with tbMakeRot");
 		return false;
 	}
-	return tbCheckCoordinate(f, "transform.p", transform.p);
+	if (proxy->count < 1 || proxy->count > TB_MAX_POLYGON_VERTICES)
+	{
+		tbReportError(f, "proxy->count is %d; a proxy has 1 to %d points (make it with tbMakeProxy)", proxy->count,
+					  TB_MAX_POLYGON_VERTICES);
+		return false;
+	}
+	return tbCheckPoints(f, "proxy->points", proxy->points, proxy->count) &&
+		   tbCheckLength(f, "proxy->radius", proxy->radius, false);
+}
+
+/// The proxy's box, grown by its radius and placed at the origin.
+static tbAABB tbProxyBox(tbPos origin, const tbShapeProxy* proxy)
+{
+	return tbOffsetAABB(tbMakeAABB(proxy->points, proxy->count, proxy->radius), origin);
 }
 
 static tbQueryContext tbMakeQueryContext(tbWorld* world, tbQueryFilter filter, void* userContext)
@@ -102,11 +100,12 @@ static tbQueryContext tbMakeQueryContext(tbWorld* world, tbQueryFilter filter, v
 	return q;
 }
 
-bool tbWorld_OverlapAABB(tbWorldId worldId, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn, void* context)
+bool tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn,
+						 void* context)
 {
 	const char* f = "tbWorld_OverlapAABB";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
-	if (tbCheckQueryWorld(world, f, fcn != NULL) == false)
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPosition(f, "origin", origin) == false)
 	{
 		return false;
 	}
@@ -118,7 +117,7 @@ bool tbWorld_OverlapAABB(tbWorldId worldId, tbAABB aabb, tbQueryFilter filter, t
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
 	tbEnterQuery(world);
-	tbBroadPhase_Query(&world->broadPhase, aabb, filter.maskBits, tbAABBQueryCallback, &q);
+	tbBroadPhase_Query(&world->broadPhase, tbOffsetAABB(aabb, origin), filter.maskBits, tbAABBQueryCallback, &q);
 	tbLeaveQuery(world);
 	return true;
 }
@@ -170,7 +169,8 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = q->proxy;
-	input.transform = tbInvMulWorldTransforms(q->world->bodies[shape->bodyId].transform, tbMakeWorldTransform(q->transform));
+	tbWorldTransform frame = {q->base, tb_rot_identity};
+	input.transform = tbInvMulWorldTransforms(q->world->bodies[shape->bodyId].transform, frame);
 	input.useRadii = true;
 	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL, 0);
 	if (output.distance > 0.0f)
@@ -180,28 +180,21 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
 }
 
-bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform, tbQueryFilter filter,
+bool tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
 						  tbOverlapResultFcn* fcn, void* context)
 {
 	const char* f = "tbWorld_OverlapShape";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
-	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPointer(f, "shape", shape) == false ||
-		tbCheckGeometry(f, shape) == false)
-	{
-		return false;
-	}
-	if (tbCheckQueryTransform(f, transform) == false)
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckQueryShape(f, origin, proxy) == false)
 	{
 		return false;
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
-	q.shape = shape;
-	q.proxy = tbMakeShapeProxy(shape);
-	q.transform = transform;
+	q.proxy = *proxy;
+	q.base = origin;
 	tbEnterQuery(world);
-	tbAABB box = tbComputeShapeAABB(shape, tbMakeWorldTransform(transform));
-	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbShapeQueryCallback, &q);
+	tbBroadPhase_Query(&world->broadPhase, tbProxyBox(origin, proxy), filter.maskBits, tbShapeQueryCallback, &q);
 	tbLeaveQuery(world);
 	return true;
 }
@@ -288,8 +281,8 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 	}
 	tbShapeProxy proxyA = tbMakeShapeProxy(&shape->geometry);
 	tbTransform xfA = tbToRelativeTransform(q->world->bodies[shape->bodyId].transform, q->base);
-	tbTransform xfB = tbToRelativeTransform(tbMakeWorldTransform(q->transform), q->base);
-	tbCastOutput output = tbShapeCastBetween(&proxyA, xfA, &q->proxy, xfB, q->translation, q->maxFraction, false);
+	tbCastOutput output =
+		tbShapeCastBetween(&proxyA, xfA, &q->proxy, tb_transform_identity, q->translation, q->maxFraction, false);
 	if (output.hit == false)
 	{
 		return true;
@@ -307,29 +300,24 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 	return true;
 }
 
-bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform, tbVec2 translation,
+bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbVec2 translation,
 					   tbQueryFilter filter, tbCastResultFcn* fcn, void* context)
 {
 	const char* f = "tbWorld_CastShape";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
-	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPointer(f, "shape", shape) == false ||
-		tbCheckGeometry(f, shape) == false || tbCheckVec2(f, "translation", translation) == false)
-	{
-		return false;
-	}
-	if (tbCheckQueryTransform(f, transform) == false)
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckQueryShape(f, origin, proxy) == false ||
+		tbCheckVec2(f, "translation", translation) == false)
 	{
 		return false;
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.castFcn = fcn;
-	q.proxy = tbMakeShapeProxy(shape);
-	q.transform = transform;
-	q.base = tbQueryBase(transform);
+	q.proxy = *proxy;
+	q.base = origin;
 	q.translation = translation;
 	q.maxFraction = 1.0f;
 	// Candidates: shapes whose boxes overlap the shape's box swept over the translation.
-	tbAABB box = tbComputeShapeAABB(shape, tbMakeWorldTransform(transform));
+	tbAABB box = tbProxyBox(origin, proxy);
 	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
 	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);

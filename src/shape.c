@@ -1042,30 +1042,32 @@ tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target)
 	return output.distance > 0.0f ? tbTransformWorldPoint(transform, output.pointA) : target;
 }
 
-tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input)
+tbWorldCastOutput tbShape_RayCast(tbShapeId shapeId, tbPos origin, tbVec2 translation)
 {
-	tbCastOutput output;
+	tbWorldCastOutput output;
 	memset(&output, 0, sizeof(output));
+	const char* f = "tbShape_RayCast";
 	tbWorld* world;
-	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_RayCast", &world, false);
-	if (shape == NULL || tbCheckPointer("tbShape_RayCast", "input", input) == false ||
-		tbCheckCoordinate("tbShape_RayCast", "input->origin", input->origin) == false ||
-		tbCheckVec2("tbShape_RayCast", "input->translation", input->translation) == false ||
-		tbCheckNonNegative("tbShape_RayCast", "input->maxFraction", input->maxFraction) == false)
+	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
+	if (shape == NULL || tbCheckPosition(f, "origin", origin) == false ||
+		tbCheckVec2(f, "translation", translation) == false)
 	{
 		return output;
 	}
-	// In the shape's frame (the origin's offset from the body taken in the precision of positions);
-	// the hit point comes back as a float vector, rounded in the large-world build.
+	// In the shape's frame: the origin's offset from the body taken in the precision of positions.
 	tbWorldTransform xf = world->bodies[shape->bodyId].transform;
-	tbRayCastInput local = *input;
-	local.origin = tbInvTransformWorldPoint(xf, tbToPos(input->origin));
-	local.translation = tbInvRotateVector(xf.q, input->translation);
-	output = tbRayCastShape(&shape->geometry, &local);
-	if (output.hit)
+	tbRayCastInput local;
+	local.origin = tbInvTransformWorldPoint(xf, origin);
+	local.translation = tbInvRotateVector(xf.q, translation);
+	local.maxFraction = 1.0f;
+	tbCastOutput hit = tbRayCastShape(&shape->geometry, &local);
+	if (hit.hit)
 	{
-		output.point = tbToVec2(tbTransformWorldPoint(xf, output.point));
-		output.normal = tbRotateVector(xf.q, output.normal);
+		output.point = tbTransformWorldPoint(xf, hit.point);
+		output.normal = tbRotateVector(xf.q, hit.normal);
+		output.fraction = hit.fraction;
+		output.iterations = hit.iterations;
+		output.hit = true;
 	}
 	return output;
 }

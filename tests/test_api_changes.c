@@ -168,7 +168,7 @@ Test(api_changes, query_callback_cannot_mutate, .init = SetupErrors, .fini = Tea
 	DestroyContext c = {0, 0};
 	tbAABB all = {{-60.0f, -5.0f}, {60.0f, 5.0f}};
 	int before = s_errors;
-	cr_assert(tbWorld_OverlapAABB(world, all, tbDefaultQueryFilter(), DestroyInCallback, &c));
+	cr_assert(tbWorld_OverlapAABB(world, tbPos_zero, all, tbDefaultQueryFilter(), DestroyInCallback, &c));
 	cr_assert_eq(c.calls, 21, "21 shapes (ground and 20 boxes) overlap the box, got %d", c.calls);
 	cr_assert_eq(c.invalidReported, 0, "a query must never report a destroyed shape");
 	cr_assert_eq(tbWorld_GetCounters(world).bodyCount, 21, "the destroys are refused; all 21 bodies remain");
@@ -190,7 +190,7 @@ static bool CountOverlap(tbShapeId shapeId, void* context)
 	return true;
 }
 
-static float CountCast(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+static float CountCast(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
 {
 	(void)shapeId;
 	(void)point;
@@ -207,22 +207,19 @@ Test(api_changes, shape_queries_check_geometry, .init = SetupErrors, .fini = Tea
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
 	MakeGround(world);
-	tbGeometry circle;
-	memset(&circle, 0, sizeof(circle));
-	circle.type = tb_circleShape;
-	circle.circle.radius = NAN;
-	tbGeometry polygon;
-	memset(&polygon, 0, sizeof(polygon));
-	polygon.type = tb_polygonShape;
-	polygon.polygon = tbMakeBox(1.0f, 1.0f);
-	polygon.polygon.count = 100;
+	tbVec2 zero = {0.0f, 0.0f};
+	tbShapeProxy circle = tbMakeProxy(&zero, 1, 0.5f);
+	circle.radius = NAN;
+	tbPolygon box = tbMakeBox(1.0f, 1.0f);
+	tbShapeProxy polygon = tbMakeProxy(box.vertices, box.count, 0.0f);
+	polygon.count = 100;
 	int count = 0;
 	int before = s_errors;
-	cr_assert(tbWorld_OverlapShape(world, &circle, tb_transform_identity, tbDefaultQueryFilter(), CountOverlap, &count) == false);
+	cr_assert(tbWorld_OverlapShape(world, tbPos_zero, &circle, tbDefaultQueryFilter(), CountOverlap, &count) == false);
 	cr_assert_eq(s_errors, before + 1);
 	cr_assert(strstr(s_lastError, "tbWorld_OverlapShape") != NULL && strstr(s_lastError, "radius") != NULL, "'%s'",
 			  s_lastError);
-	cr_assert(tbWorld_CastShape(world, &polygon, tb_transform_identity, tbMakeVec2(0.0f, -1.0f), tbDefaultQueryFilter(),
+	cr_assert(tbWorld_CastShape(world, tbPos_zero, &polygon, tbMakeVec2(0.0f, -1.0f), tbDefaultQueryFilter(),
 								CountCast, &count) == false);
 	cr_assert_eq(s_errors, before + 2);
 	cr_assert(strstr(s_lastError, "tbWorld_CastShape") != NULL && strstr(s_lastError, "count") != NULL, "'%s'",

@@ -79,7 +79,7 @@ typedef struct Hits
 	float returnValue; // what the callback returns: 1 continue, 0 stop, −1 ignore, fraction clip
 } Hits;
 
-static float CollectHit(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+static float CollectHit(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
 {
 	(void)shapeId;
 	(void)point;
@@ -132,12 +132,12 @@ Test(query, overlap_aabb_point_and_shape)
 	// A box around the ball only (fat boxes are 0.1 m larger than the ball's tight box [−3.5, −2.5]×[1.5, 2.5]).
 	int count = 0;
 	tbAABB box = {{-4.0f, 1.0f}, {-2.0f, 3.0f}};
-	tbWorld_OverlapAABB(s.world, box, tbDefaultQueryFilter(), CountOverlap, &count);
+	tbWorld_OverlapAABB(s.world, tbPos_zero, box, tbDefaultQueryFilter(), CountOverlap, &count);
 	cr_assert_eq(count, 1);
 	// A box covering everything finds all three shapes.
 	count = 0;
 	tbAABB all = {{-20.0f, -5.0f}, {20.0f, 5.0f}};
-	tbWorld_OverlapAABB(s.world, all, tbDefaultQueryFilter(), CountOverlap, &count);
+	tbWorld_OverlapAABB(s.world, tbPos_zero, all, tbDefaultQueryFilter(), CountOverlap, &count);
 	cr_assert_eq(count, 3);
 	// Point inside the box body (3, 0.5) and one just outside its corner (3.6, 1.1).
 	count = 0;
@@ -147,22 +147,22 @@ Test(query, overlap_aabb_point_and_shape)
 	tbWorld_OverlapPoint(s.world, tbMakeVec2(3.6f, 1.1f), tbDefaultQueryFilter(), CountOverlap, &count);
 	cr_assert_eq(count, 0);
 	// A circle of radius 0.3 at (−3, 2.7) overlaps the ball (centre distance 0.7 < 0.8); at (−3, 2.9) it does not (0.9 > 0.8).
-	tbGeometry probe;
-	memset(&probe, 0, sizeof(probe));
-	probe.type = tb_circleShape;
-	probe.circle.radius = 0.3f;
-	tbTransform xf = {{-3.0f, 2.7f}, {1.0f, 0.0f}};
+	// The probe is a proxy (one point, radius 0.3) measured from the query's origin: once in world
+	// points from the world's origin, once as a point at the origin placed by the origin.
+	tbVec2 centre = {-3.0f, 2.7f};
+	tbShapeProxy probe = tbMakeProxy(&centre, 1, 0.3f);
 	count = 0;
-	tbWorld_OverlapShape(s.world, &probe, xf, tbDefaultQueryFilter(), CountOverlap, &count);
+	tbWorld_OverlapShape(s.world, tbPos_zero, &probe, tbDefaultQueryFilter(), CountOverlap, &count);
 	cr_assert_eq(count, 1);
-	xf.p.y = 2.9f;
+	tbVec2 zero = {0.0f, 0.0f};
+	tbShapeProxy atOrigin = tbMakeProxy(&zero, 1, 0.3f);
 	count = 0;
-	tbWorld_OverlapShape(s.world, &probe, xf, tbDefaultQueryFilter(), CountOverlap, &count);
+	tbWorld_OverlapShape(s.world, (tbPos){-3.0f, 2.9f}, &atOrigin, tbDefaultQueryFilter(), CountOverlap, &count);
 	cr_assert_eq(count, 0);
 	tbDestroyWorld(s.world);
 }
 
-static float ClosestCast(tbShapeId shapeId, tbVec2 point, tbVec2 normal, float fraction, void* context)
+static float ClosestCast(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
 {
 	(void)point;
 	(void)normal;
@@ -178,17 +178,38 @@ Test(query, shape_cast_circle_onto_box)
 	// A circle of radius 0.25 at (0, 0.5) moving +10 m in x touches the box's left face x = 2.5
 	// when its centre reaches x = 2.25: fraction 0.225 (shape casts stop within a linear slop).
 	Scene s = MakeScene();
-	tbGeometry probe;
-	memset(&probe, 0, sizeof(probe));
-	probe.type = tb_circleShape;
-	probe.circle.radius = 0.25f;
-	tbTransform xf = {{0.0f, 0.5f}, {1.0f, 0.0f}};
+	tbVec2 zero = {0.0f, 0.0f};
+	tbShapeProxy probe = tbMakeProxy(&zero, 1, 0.25f);
 	tbRayResult r;
 	memset(&r, 0, sizeof(r));
 	tbQueryFilter onlyBox = {TB_DEFAULT_CATEGORY_BITS, 2};
-	tbWorld_CastShape(s.world, &probe, xf, tbMakeVec2(10.0f, 0.0f), onlyBox, ClosestCast, &r);
+	tbWorld_CastShape(s.world, (tbPos){0.0f, 0.5f}, &probe, tbMakeVec2(10.0f, 0.0f), onlyBox, ClosestCast, &r);
 	cr_assert(r.hit && TB_ID_EQUALS(r.shapeId, s.box));
 	cr_assert_float_eq(r.fraction, 0.225f, TB_LINEAR_SLOP / 10.0f);
+	tbDestroyWorld(s.world);
+}
+
+// v3.2's forms: tbShape_RayCast from an origin and a translation (the box's left face x = 2.5,
+// from (0, 0.5) by 10 m: fraction 0.25, point (2.5, 0.5), normal −x); tbWorld_OverlapAABB with a box
+// measured from an origin (the unit box at (3, 0.5): a 0.2 m box around it found, one 1 m off not).
+Test(query, ray_cast_one_shape_and_box_from_an_origin)
+{
+	Scene s = MakeScene();
+	tbWorldCastOutput hit = tbShape_RayCast(s.box, (tbPos){0.0f, 0.5f}, tbMakeVec2(10.0f, 0.0f));
+	cr_assert(hit.hit);
+	cr_expect_float_eq(hit.fraction, 0.25f, 1e-6f);
+	cr_expect_float_eq(hit.point.x, 2.5f, 1e-6f);
+	cr_expect_float_eq(hit.point.y, 0.5f, 1e-6f);
+	cr_expect_float_eq(hit.normal.x, -1.0f, 1e-6f);
+	cr_expect_not(tbShape_RayCast(s.box, (tbPos){0.0f, 3.0f}, tbMakeVec2(10.0f, 0.0f)).hit); // passes above
+	tbQueryFilter onlyBox = {TB_DEFAULT_CATEGORY_BITS, 2};
+	tbAABB small = {{-0.1f, -0.1f}, {0.1f, 0.1f}};
+	int count = 0;
+	tbWorld_OverlapAABB(s.world, (tbPos){3.0f, 0.5f}, small, onlyBox, CountOverlap, &count);
+	cr_expect_eq(count, 1);
+	count = 0;
+	tbWorld_OverlapAABB(s.world, (tbPos){5.0f, 0.5f}, small, onlyBox, CountOverlap, &count);
+	cr_expect_eq(count, 0);
 	tbDestroyWorld(s.world);
 }
 
@@ -200,7 +221,7 @@ Test(query, bad_query_input_rejected)
 	cr_assert_not(r.hit);
 	tbAABB bad = {{1.0f, 1.0f}, {0.0f, 0.0f}};
 	int count = 0;
-	cr_assert_not(tbWorld_OverlapAABB(s.world, bad, tbDefaultQueryFilter(), CountOverlap, &count));
+	cr_assert_not(tbWorld_OverlapAABB(s.world, tbPos_zero, bad, tbDefaultQueryFilter(), CountOverlap, &count));
 	cr_assert_not(tbWorld_OverlapPoint(s.world, tbMakeVec2(0.0f, 0.0f), tbDefaultQueryFilter(), NULL, NULL));
 	cr_assert_eq(tbGetErrorCount(), before + 3);
 	cr_assert_eq(count, 0);
@@ -250,7 +271,7 @@ Test(query, callback_may_apply_impulses_but_not_move_bodies, .init = SetupErrors
 	BlastContext c = {tbMakeVec2(0.0f, 0.0f), 2.0f, 0, 0};
 	tbAABB blast = {{-5.0f, -0.5f}, {5.0f, 5.0f}};
 	int before = s_errors;
-	cr_assert(tbWorld_OverlapAABB(s.world, blast, tbDefaultQueryFilter(), BlastCallback, &c));
+	cr_assert(tbWorld_OverlapAABB(s.world, tbPos_zero, blast, tbDefaultQueryFilter(), BlastCallback, &c));
 	cr_assert_eq(c.pushed, 2, "the box and the ball are in the blast");
 	cr_assert_eq(c.refusedMoves, 2);
 	cr_assert_eq(s_errors, before + 2);

@@ -181,6 +181,21 @@ typedef struct tbCastOutput
 	bool hit;
 } tbCastOutput;
 
+#if defined(TUMBLE_DOUBLE_PRECISION)
+/// A cast against the world's shapes (tbShape_RayCast): its hit point a world position.
+typedef struct tbWorldCastOutput
+{
+	tbVec2 normal;	///< surface normal at the hit point
+	tbPos point;	///< hit point, a world position
+	float fraction; ///< fraction of the translation at the hit
+	int iterations; ///< iterations used (GJK-based casts)
+	bool hit;
+} tbWorldCastOutput;
+#else
+/// A cast against the world's shapes (tbShape_RayCast): its hit point a world position.
+typedef tbCastOutput tbWorldCastOutput;
+#endif
+
 /// Ray casts in the shape's local frame. A ray starting inside a solid shape does not hit it.
 TB_API tbCastOutput tbRayCastCircle(const tbCircle* shape, const tbRayCastInput* input);
 TB_API tbCastOutput tbRayCastCapsule(const tbCapsule* shape, const tbRayCastInput* input);

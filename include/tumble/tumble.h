@@ -111,9 +111,10 @@ typedef struct tbRayResult
 	bool hit;
 } tbRayResult;
 
-/// Shapes whose fat boxes overlap aabb.
-TB_API bool tbWorld_OverlapAABB(tbWorldId worldId, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn,
-								void* context);
+/// Shapes whose fat boxes overlap aabb, the box measured from origin (Box2D v3.2's form: near the
+/// origin pass tbPos_zero and a world box).
+TB_API bool tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tbQueryFilter filter,
+								tbOverlapResultFcn* fcn, void* context);
 /// Apply an explosion's impulses (tbExplosionDef) to the dynamic bodies it reaches, waking them.
 /// Refused (error hook, nothing changed) during the step and for a NULL def, a non-finite or
 /// out-of-world position, a negative or non-finite radius or falloff, a non-finite impulse.
@@ -136,16 +137,18 @@ TB_API tbContactData tbContact_GetData(tbContactId contactId);
 /// Shapes containing the point.
 TB_API bool tbWorld_OverlapPoint(tbWorldId worldId, tbPos point, tbQueryFilter filter, tbOverlapResultFcn* fcn,
 								 void* context);
-/// Shapes overlapping a given shape placed at transform.
-TB_API bool tbWorld_OverlapShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform,
-								 tbQueryFilter filter, tbOverlapResultFcn* fcn, void* context);
+/// Shapes overlapping the shape proxy (tbMakeProxy, tbMakeOffsetProxy), its points measured from
+/// origin (near the origin pass tbPos_zero and world points).
+TB_API bool tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
+								 tbOverlapResultFcn* fcn, void* context);
 /// Every shape hit by the ray origin → origin + translation, in no particular order, clipped by the callback.
 TB_API bool tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter,
 							tbCastResultFcn* fcn, void* context);
 /// The closest hit.
 TB_API tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter);
-/// Every shape hit by a shape moving by translation (GJK shape cast).
-TB_API bool tbWorld_CastShape(tbWorldId worldId, const tbGeometry* shape, tbTransform transform, tbVec2 translation,
+/// Every shape hit by a shape proxy (points measured from origin) moving by translation (GJK shape
+/// cast); the callback's points are world positions.
+TB_API bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbVec2 translation,
 							  tbQueryFilter filter, tbCastResultFcn* fcn, void* context);
 /// Sweep a capsule mover (relative to origin) along translation; returns the fraction it can go
 /// (1: all the way). Shapes it already overlaps at the start are ignored, so a mover pressed into
@@ -325,7 +328,8 @@ TB_API bool tbShape_TestPoint(tbShapeId shapeId, tbPos point);
 /// The point of the shape (radius included) closest to `target`, in world coordinates (GJK against
 /// a point); a target inside the shape is returned as it is.
 TB_API tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target);
-TB_API tbCastOutput tbShape_RayCast(tbShapeId shapeId, const tbRayCastInput* input);
+/// The ray origin → origin + translation against one shape; the hit point a world position.
+TB_API tbWorldCastOutput tbShape_RayCast(tbShapeId shapeId, tbPos origin, tbVec2 translation);
 TB_API tbMassData tbShape_GetMassData(tbShapeId shapeId);
 /// A chain segment's geometry with its ghost points (an error and zeros for another kind).
 TB_API tbChainSegment tbShape_GetChainSegment(tbShapeId shapeId);
