@@ -14,8 +14,6 @@
 #define TB_PRINTF_FORMAT(a, b)
 #endif
 
-int tbInternalAssert(const char* condition, const char* fileName, int lineNumber);
-
 /// Internal invariant (never user input: that goes through tbReportError).
 #define TB_ASSERT(condition)                                                                                          \
 	do                                                                                                                \

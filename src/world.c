@@ -344,6 +344,8 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
 	tbBroadPhase_SetPairFilter(&world->broadPhase, tbContactPairFilter, world);
 	tbReserveCapacity(world, &def->capacity);
+	world->contactRecycleDistance = TB_RECYCLE_DISTANCE;
+	world->enableSpeculative = true;
 	s_worlds[slot] = world;
 	tbWorldId id = {(uint16_t)(slot + 1), world->generation};
 	return id;
@@ -464,6 +466,18 @@ static void tbUpdateCounters(tbWorld* world)
 	// touchingCount: set by the collide stage (contact.c), which reads every step contact's flags.
 }
 
+/// The counts tbWorldDef::capacity describes, kept at their largest (tbWorld_GetMaxCapacity).
+static void tbRecordMaxCapacity(tbWorld* world)
+{
+	tbCapacity* c = &world->maxCapacity;
+	int movableProxies = world->broadPhase.table.count - world->staticProxyCount;
+	c->staticShapeCount = tbMaxInt(c->staticShapeCount, world->staticProxyCount);
+	c->dynamicShapeCount = tbMaxInt(c->dynamicShapeCount, movableProxies);
+	c->staticBodyCount = tbMaxInt(c->staticBodyCount, world->staticBodyCount);
+	c->dynamicBodyCount = tbMaxInt(c->dynamicBodyCount, world->bodyCount - world->staticBodyCount);
+	c->contactCount = tbMaxInt(c->contactCount, world->contactCount);
+}
+
 /// The step: each stage is a function in the file of its concept, run top to bottom.
 bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 {
@@ -491,6 +505,7 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 		return false;
 	}
 	world->locked = true;
+	tbRecordMaxCapacity(world);
 	tbCompactAwakeSet(world); // every stage walks the awake list without holes
 	world->stepIndex += 1;
 	world->stepTime = timeStep;
@@ -675,6 +690,73 @@ bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio
 	world->def.contactDampingRatio = dampingRatio;
 	world->def.maxContactPushSpeed = pushSpeed;
 	return true;
+}
+
+bool tbWorld_SetContactRecycleDistance(tbWorldId worldId, float recycleDistance)
+{
+	const char* f = "tbWorld_SetContactRecycleDistance";
+	tbWorld* world = tbGetUnlockedWorld(worldId, f);
+	if (world == NULL || tbCheckLength(f, "recycleDistance", recycleDistance, false) == false)
+	{
+		return false;
+	}
+	world->contactRecycleDistance = recycleDistance;
+	return true;
+}
+
+float tbWorld_GetContactRecycleDistance(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetContactRecycleDistance");
+	return world != NULL ? world->contactRecycleDistance : 0.0f;
+}
+
+void tbWorld_EnableSpeculative(tbWorldId worldId, bool flag)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableSpeculative");
+	if (world != NULL)
+	{
+		world->enableSpeculative = flag;
+	}
+}
+
+tbAABB tbWorld_GetBounds(tbWorldId worldId)
+{
+	tbAABB bounds = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_GetBounds");
+	if (world == NULL)
+	{
+		return bounds;
+	}
+	// The union of the broad phase's boxes (fat for movable shapes, tight for static ones), as
+	// Box2D v3.2 takes its trees' root boxes; the same whatever the broad-phase method.
+	const tbProxyTable* table = &world->broadPhase.table;
+	bool any = false;
+	for (int key = 0; key < table->capacity; ++key)
+	{
+		const tbBroadProxy* p = table->proxies + key;
+		if (p->isFree == false)
+		{
+			bounds = any ? tbAABB_Union(bounds, p->aabb) : p->aabb;
+			any = true;
+		}
+	}
+	return bounds;
+}
+
+tbCapacity tbWorld_GetMaxCapacity(tbWorldId worldId)
+{
+	tbCapacity none = {0};
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetMaxCapacity");
+	return world != NULL ? world->maxCapacity : none;
+}
+
+void tbWorld_RebuildStaticTree(tbWorldId worldId)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_RebuildStaticTree");
+	if (world != NULL)
+	{
+		tbBroadPhase_RebuildStaticTree(&world->broadPhase);
+	}
 }
 
 bool tbWorld_SetRestitutionThreshold(tbWorldId worldId, float value)

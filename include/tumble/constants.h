@@ -40,7 +40,8 @@
 /// its manifold points (moved with the bodies, separations updated) while no point of one body can
 /// have moved farther than this relative to the other since the narrow phase computed them. A
 /// feature that was not in the manifold was then at least the speculative margin apart, so it
-/// cannot reach contact unseen (contact.c, tbRecycleManifold).
+/// cannot reach contact unseen (contact.c, tbRecycleManifold). The default of each world's
+/// distance (tbWorld_SetContactRecycleDistance).
 #define TB_RECYCLE_DISTANCE TB_SPECULATIVE_DISTANCE
 
 /// Manifold recycling angle, 2 degrees in radians (the angular slop): largest relative rotation of
@@ -81,6 +82,12 @@
 
 /// Iteration cap of conservative advancement and of the root finders (never loop forever).
 #define TB_TOI_MAX_ITERATIONS 30
+
+/// Colours of the contact solver's constraint graph (src/solver_types.h defines the same value for
+/// the solver; a different one there would not compile with -Werror). Contacts that find no colour
+/// go to an overflow, so tbGetGraphColor takes 0..TB_GRAPH_COLOR_COUNT, the last being the overflow
+/// (Box2D v3.2 counts its overflow among its 24).
+#define TB_GRAPH_COLOR_COUNT 24
 
 /// Largest number of worlds that may exist at once.
 #define TB_MAX_WORLDS 128
