@@ -131,9 +131,9 @@ tbSegmentDistanceResult tbSegmentDistance(tbVec2 p1, tbVec2 q1, tbVec2 p2, tbVec
 // ---------------------------------------------------------------------------------------------
 // Proxies
 
-tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
+// tbMakeProxy's work, reporting errors under the caller's name f.
+static tbShapeProxy tbMakeProxyNamed(const char* f, const tbVec2* points, int count, float radius)
 {
-	const char* f = "tbMakeProxy";
 	tbShapeProxy proxy = {0};
 	if (count < 1 || count > TB_MAX_POLYGON_VERTICES)
 	{
@@ -156,6 +156,11 @@ tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
 	return proxy;
 }
 
+tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
+{
+	return tbMakeProxyNamed("tbMakeProxy", points, count, radius);
+}
+
 tbShapeProxy tbMakeOffsetProxy(const tbVec2* points, int count, float radius, tbVec2 position, tbRot rotation)
 {
 	const char* f = "tbMakeOffsetProxy";
@@ -170,7 +175,7 @@ tbShapeProxy tbMakeOffsetProxy(const tbVec2* points, int count, float radius, tb
 					  (double)rotation.s);
 		return proxy;
 	}
-	proxy = tbMakeProxy(points, count, radius); // checks the points and the radius
+	proxy = tbMakeProxyNamed(f, points, count, radius); // checks the points and the radius
 	tbTransform transform = {position, rotation};
 	for (int i = 0; i < proxy.count; ++i)
 	{

@@ -6,8 +6,9 @@
 // structs, so padding and unused union members do not enter it; pools are walked in id order and
 // free slots are skipped, so it is the same for any worker count and for two worlds built the same
 // way whatever their allocation history beyond the ids. What it covers is what the next step reads:
-// - bodies: id, generation, type, awake, enabled, transform, centre of mass, velocities, the forces
-//   applied for the next step, sleep time;
+// - bodies: id, type, awake, enabled, transform, centre of mass, velocities, the forces applied for
+//   the next step, sleep time (not the id's generation: a world made in a slot an earlier world used
+//   starts its generations past that world's, and would hash differently for the same state);
 // - contacts: id, shapes, flags (touching, sensor), manifold normal, rolling impulse and per point
 //   feature id, separation, normal and tangent impulses (the warm start);
 // - joints: id, type, bodies, and the accumulated impulses of their kind (the warm start);
@@ -51,7 +52,6 @@ static uint64_t tbMixVec2(uint64_t hash, tbVec2 v)
 static uint64_t tbHashBody(uint64_t hash, int id, const tbBody* b)
 {
 	hash = tbMixInt(hash, id);
-	hash = tbMixInt(hash, b->generation);
 	hash = tbMixInt(hash, b->type);
 	hash = tbMixInt(hash, b->awakeIndex != TB_NULL_INDEX);
 	hash = tbMixInt(hash, b->isDisabled);

@@ -108,7 +108,7 @@ TB_API void tbWorld_RebuildStaticTree(tbWorldId worldId);
 
 /// A 64-bit hash of the simulation state for determinism checks (a desync between two runs, a
 /// rollback): two worlds that simulated the same way bit for bit have the same hash. What it covers
-/// (world_diagnostics.c): each live body in id order (id, generation, type, awake, enabled,
+/// (world_diagnostics.c): each live body in id order (id, type, awake, enabled,
 /// transform, centre of mass, velocities, forces, sleep time), each live contact in id order (its
 /// shapes, flags, and each manifold point's separation and impulses), each live joint in id order
 /// (type, bodies, accumulated impulses of its kind) and the pools' counts and high-water marks.
