@@ -97,16 +97,17 @@ bool tbShape_ApplyWind(tbShapeId shapeId, tbVec2 wind, float drag, float lift, b
 	}
 	tbShapeType type = shape->geometry.type;
 	tbBody* body = world->bodies + shape->bodyId;
+	// Ignored without an error, false as for tbBody_ApplyForce: nothing to push.
 	if ((type != tb_circleShape && type != tb_capsuleShape && type != tb_polygonShape) ||
 		body->type != tb_dynamicBody || body->isDisabled)
 	{
-		return true; // nothing to push: not refused
+		return false;
 	}
 	if (body->awakeIndex == TB_NULL_INDEX)
 	{
 		if (wake == false)
 		{
-			return true;
+			return false;
 		}
 		tbWakeBody(world, body);
 	}

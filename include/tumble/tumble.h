@@ -384,10 +384,10 @@ TB_API tbMassData tbShape_ComputeMassData(tbShapeId shapeId);
 /// force and torque for the next step. The pressure ½ρ|u|² acts on the width the shape shows the
 /// flow: 2r for a circle (at its centre); for a capsule 2r plus its axis' projection, for a polygon
 /// each face turned into the flow (the rounding radius ignored), each with a sideways part
-/// lift × (n × û)·perp(û) (n: the face's normal). Segments and chain segments catch no wind.
-/// Static and kinematic bodies are left alone; a sleeping body too unless wake. Refused (false,
-/// error hook, nothing changed): stale id, locked world, non-finite wind or lift, drag not finite
-/// and ≥ 0.
+/// lift × (n × û)·perp(û) (n: the face's normal). True when applied. Ignored (false, no error, as
+/// the tbBody_Apply* functions): segments and chain segments (they catch no wind), static,
+/// kinematic and disabled bodies, a sleeping body unless wake. Refused (false, error hook, nothing
+/// changed): stale id, locked world, non-finite wind or lift, drag not finite and ≥ 0.
 TB_API bool tbShape_ApplyWind(tbShapeId shapeId, tbVec2 wind, float drag, float lift, bool wake);
 /// A chain segment's geometry with its ghost points (an error and zeros for another kind).
 TB_API tbChainSegment tbShape_GetChainSegment(tbShapeId shapeId);
