@@ -48,6 +48,7 @@ static tbErrorFcn* s_errorFcn = NULL;
 static void* s_errorContext = NULL;
 static tbAssertFcn* s_assertFcn = NULL;
 static tbLogFcn* s_logFcn = NULL;
+float tb_lengthUnitsPerMeter = 1.0f; // constants.h reads it inside the library
 
 tbVersion tbGetVersion(void)
 {
@@ -111,6 +112,16 @@ void* tbGrowAlloc(void* oldMemory, int oldSize, int newSize)
 		tbFree(oldMemory, oldSize);
 	}
 	return p;
+}
+
+float tbGetLengthUnitsPerMeter(void)
+{
+	return tb_lengthUnitsPerMeter;
+}
+
+void tbSetLengthUnits(float lengthUnits)
+{
+	tb_lengthUnitsPerMeter = lengthUnits;
 }
 
 void tbSetLogFcn(tbLogFcn* logFcn)

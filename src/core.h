@@ -33,6 +33,9 @@ void tbFree(void* memory, int size);
 /// Grow (or shrink) an allocation, copying min(oldSize, newSize) bytes.
 void* tbGrowAlloc(void* oldMemory, int oldSize, int newSize);
 
+/// Store the length units (tbSetLengthUnitsPerMeter checks them and that no world exists).
+void tbSetLengthUnits(float lengthUnits);
+
 /// Report a rejected call: "function: message". Formats like printf.
 void tbReportError(const char* function, const char* format, ...) TB_PRINTF_FORMAT(2, 3);
 

@@ -61,7 +61,7 @@ static tbJointDef tbDefaultJointDef(void)
 	def.torqueThreshold = FLT_MAX;
 	def.constraintHertz = 60.0f;
 	def.constraintDampingRatio = 2.0f;
-	def.drawScale = 1.0f;
+	def.drawScale = 1.0f * tbGetLengthUnitsPerMeter(); // one metre, in length units
 	return def;
 }
 

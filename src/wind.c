@@ -21,8 +21,8 @@
 // Segments and chain segments are one-sided boundaries of no area: no wind.
 #include "world.h"
 
-/// Density of air at sea level and 15 °C (kg/m³, ISA); Tumble's lengths are metres.
-#define TB_AIR_DENSITY 1.225f
+/// Density of air at sea level and 15 °C (kg/m³, ISA), per cubed length unit (tbSetLengthUnitsPerMeter).
+#define TB_AIR_DENSITY (1.225f / (tbGetLengthUnitsPerMeter() * tbGetLengthUnitsPerMeter() * tbGetLengthUnitsPerMeter()))
 
 /// The force of flow û at pressure q on a face of width w and normal n, lift-weighted (see above).
 static tbVec2 tbFaceForce(float q, float width, tbVec2 direction, tbVec2 normal, float lift)

@@ -27,14 +27,16 @@ tbWorldDef tbDefaultWorldDef(void)
 	tbWorldDef def;
 	memset(&def, 0, sizeof(def));
 	def.gravity = tbMakeVec2(0.0f, -10.0f);
-	def.restitutionThreshold = 1.0f;
-	def.hitEventThreshold = 1.0f;
+	// Speeds in length units per second (tbSetLengthUnitsPerMeter; 1 by default).
+	float units = tbGetLengthUnitsPerMeter();
+	def.restitutionThreshold = 1.0f * units;
+	def.hitEventThreshold = 1.0f * units;
 	def.contactHertz = 30.0f;
 	def.contactDampingRatio = 10.0f;
 	def.settledHertzRatio = 1.75f;
 	def.contactHertzFollowsSubStep = false;
-	def.maxContactPushSpeed = 3.0f;
-	def.maximumLinearSpeed = 4000.0f;
+	def.maxContactPushSpeed = 3.0f * units;
+	def.maximumLinearSpeed = tbMinFloat(4000.0f * units, TB_MAX_LINEAR_SPEED);
 	def.enableSleep = true;
 	def.broadPhase = tb_broadPhaseAuto;
 	def.narrowPhase = tb_narrowPhaseAuto;
@@ -309,6 +311,28 @@ static void tbUpdateAutoBroadPhase(tbWorld* world)
 	world->autoWindowSteps = 0;
 	world->autoMovedProxies = 0;
 	world->autoFastBodies = 0;
+}
+
+bool tbSetLengthUnitsPerMeter(float lengthUnits)
+{
+	const char* f = "tbSetLengthUnitsPerMeter";
+	if (tbIsValidFloat(lengthUnits) == false || lengthUnits < 0.001f || lengthUnits > 1000.0f)
+	{
+		tbReportError(f, "lengthUnits is %g (must be finite, 0.001 to 1000); pass your length units per metre, "
+						 "e.g. 100 for centimetres", (double)lengthUnits);
+		return false;
+	}
+	for (int i = 0; i < TB_MAX_WORLDS; ++i)
+	{
+		if (s_worlds[i] != NULL)
+		{
+			tbReportError(f, "a world exists; set the length units before creating any world (its tolerances "
+							 "and definitions were made in the old units)");
+			return false;
+		}
+	}
+	tbSetLengthUnits(lengthUnits);
+	return true;
 }
 
 tbWorldId tbCreateWorld(const tbWorldDef* def)

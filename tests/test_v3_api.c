@@ -967,3 +967,85 @@ Test(v3_api, base_timer_yield_colors_assert, .init = SetupErrors, .fini = Teardo
 	cr_assert_eq(s_assertLine, 42);
 	tbSetAssertFcn(NULL);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Length units
+
+/// A unit box (1 m, or 100 cm) slid at 3 m/s along a ground box with friction 0.6 under g = 10 m/s²,
+/// in the given units: where it is after 2 s, in its units (it stops after v²/(2μg) = 0.75 m and
+/// rests into the ground by the contact's softness and slop), and the step it fell asleep at.
+static tbVec2 SlideBox(float units, int* sleepStep)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, -10.0f * units);
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyId ground = MakeBody(world, tb_staticBody, tbMakeVec2(0.0f, -0.5f * units));
+	tbShapeDef sd = tbDefaultShapeDef();
+	sd.material.friction = 0.6f;
+	tbPolygon groundBox = tbMakeBox(20.0f * units, 0.5f * units);
+	tbCreatePolygonShape(ground, &sd, &groundBox);
+	tbBodyDef bd = tbDefaultBodyDef();
+	bd.type = tb_dynamicBody;
+	bd.position = tbMakeVec2(0.0f, 0.5f * units);
+	bd.linearVelocity = tbMakeVec2(3.0f * units, 0.0f);
+	tbBodyId body = tbCreateBody(world, &bd);
+	sd.density = 1.0f / (units * units); // 1 kg whatever the units
+	tbPolygon box = tbMakeBox(0.5f * units, 0.5f * units);
+	tbCreatePolygonShape(body, &sd, &box);
+	*sleepStep = -1;
+	for (int i = 0; i < 120; ++i)
+	{
+		tbWorld_Step(world, DT, 4);
+		*sleepStep = *sleepStep < 0 && tbBody_IsAwake(body) == false ? i : *sleepStep;
+	}
+	tbVec2 p = tbBody_GetPosition(body);
+	tbDestroyWorld(world);
+	return p;
+}
+
+// The same scene in metres and in centimetres: every length the library compares against scales
+// with the units, so the centimetre run is the metre run × 100 up to float rounding (1e-4 of the
+// 0.75 m slide; the resting depth within 1 %), and the box falls asleep at the same step (it
+// does so 2 steps later when the centimetre scene runs with units 1: the sleep speed, 0.05 cm/s
+// instead of 5 cm/s, is the most sensitive of the scaled values here). The defaults made after the
+// change are in centimetres.
+Test(v3_api, length_units_scale_the_tolerances, .init = SetupErrors, .fini = TeardownErrors)
+{
+	cr_assert_float_eq(tbGetLengthUnitsPerMeter(), 1.0f, 0.0f);
+	cr_assert_float_eq(TB_LINEAR_SLOP, 0.005f, 0.0f);
+	int sleepMetres, sleepCentimetres;
+	tbVec2 metres = SlideBox(1.0f, &sleepMetres);
+	cr_assert_gt(sleepMetres, 0);
+	cr_assert(metres.x > 0.7f && metres.x < 0.8f, "slid %g m", (double)metres.x);
+
+	cr_assert(tbSetLengthUnitsPerMeter(100.0f));
+	cr_assert_float_eq(TB_LINEAR_SLOP, 0.5f, 0.0f);
+	cr_assert_float_eq(TB_SPECULATIVE_DISTANCE, 2.0f, 0.0f);
+	tbWorldDef def = tbDefaultWorldDef();
+	cr_assert_float_eq(def.maximumLinearSpeed, 400000.0f, 0.0f);
+	cr_assert_float_eq(def.hitEventThreshold, 100.0f, 0.0f);
+	cr_assert_float_eq(tbDefaultBodyDef().sleepThreshold, 5.0f, 0.0f);
+	cr_assert_float_eq(tbDefaultRevoluteJointDef().base.drawScale, 100.0f, 0.0f);
+	tbVec2 centimetres = SlideBox(100.0f, &sleepCentimetres);
+	cr_assert_eq(sleepCentimetres, sleepMetres);
+	cr_assert_float_eq(centimetres.x / 100.0f, metres.x, 1e-4f);
+	float depthMetres = 0.5f - metres.y, depthCentimetres = 50.0f - centimetres.y;
+	cr_assert(depthMetres > 0.0f);
+	cr_assert_float_eq(depthCentimetres / 100.0f, depthMetres, 0.01f * depthMetres);
+
+	// Refused while a world exists, and out of range; the units stay.
+	tbWorldId world = MakeWorld(tb_vec2_zero);
+	int before = s_errors;
+	cr_assert_not(tbSetLengthUnitsPerMeter(32.0f));
+	ExpectError(before, "tbSetLengthUnitsPerMeter", "world exists");
+	tbDestroyWorld(world);
+	float bad[4] = {0.0f, -1.0f, NAN, 2000.0f};
+	for (int i = 0; i < 4; ++i)
+	{
+		before = s_errors;
+		cr_assert_not(tbSetLengthUnitsPerMeter(bad[i]));
+		ExpectError(before, "tbSetLengthUnitsPerMeter", "lengthUnits");
+	}
+	cr_assert_float_eq(tbGetLengthUnitsPerMeter(), 100.0f, 0.0f);
+	cr_assert(tbSetLengthUnitsPerMeter(1.0f));
+}

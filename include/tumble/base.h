@@ -89,6 +89,16 @@ TB_API void tbSetAssertFcn(tbAssertFcn* assertFcn);
 /// debugger); without a hook it prints the condition and location to stderr and aborts.
 TB_API int tbInternalAssert(const char* condition, const char* fileName, int lineNumber);
 
+/// Length units per metre (Box2D v3.2's): 1 by default (metres). A game in pixels (say 32 per
+/// metre) or centimetres (100) passes that number before it creates any world, and then gives every
+/// length in its units; Tumble scales its length tolerances with it (constants.h: linear slop,
+/// speculative distances, broad-phase margins, sleep speed, default thresholds and speed caps, and
+/// the air density of tbShape_ApplyWind). Mass, gravity and forces are the game's to choose in the
+/// same units. Refused (false, error hook, nothing changed): not finite or outside [0.001, 1000],
+/// or a world exists.
+TB_API bool tbSetLengthUnitsPerMeter(float lengthUnits);
+TB_API float tbGetLengthUnitsPerMeter(void);
+
 /// Milliseconds and ticks for profiling. Not used by the simulation itself.
 TB_API uint64_t tbGetTicks(void);
 TB_API float tbGetMilliseconds(uint64_t ticks);
