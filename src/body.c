@@ -223,6 +223,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->gravityScale = def->gravityScale;
 	body->sleepThreshold = def->sleepThreshold;
 	body->safetyFactor = def->safetyFactor;
+	body->speculativeReach = tbMaxFloat(TB_SPECULATIVE_REACH, 0.0f); // no shape yet: minExtent 0
 	body->enableSleep = def->enableSleep;
 	body->fixedRotation = def->fixedRotation || def->motionLocks.angularZ;
 	body->lockLinearX = def->motionLocks.linearX;
@@ -297,6 +298,14 @@ void tbDestroyBody(tbBodyId bodyId)
 	TB_ARRAY_PUSH(world->bodyFree, world->bodyFreeCount, world->bodyFreeCapacity, bodyId.index1 - 1);
 }
 
+/// The reach of a body's speculative contacts, max(TB_SPECULATIVE_REACH, safetyFactor × minExtent)
+/// (safetyFactor is TB_CONTINUOUS_FRACTION unless the game set another): cached in the body's first
+/// cache line, where the narrow phase reads it per contact; refreshed whenever an input changes.
+static void tbUpdateSpeculativeReach(tbBody* body)
+{
+	body->speculativeReach = tbMaxFloat(TB_SPECULATIVE_REACH, body->safetyFactor * body->minExtent);
+}
+
 /// Extents used by continuous collision: the smallest distance from the centre of mass to the
 /// surface (a conservative "thickness") and the largest distance to any point of any shape.
 static void tbComputeExtents(tbWorld* world, tbBody* body)
@@ -325,6 +334,7 @@ static void tbComputeExtents(tbWorld* world, tbBody* body)
 	}
 	body->minExtent = minExtent < TB_HUGE ? minExtent : 0.0f;
 	body->maxExtent = maxExtent;
+	tbUpdateSpeculativeReach(body);
 }
 
 /// Keep the velocity of the body origin when the centre of mass moves from oldCenter to
@@ -1170,9 +1180,10 @@ bool tbBody_SetSafetyFactor(tbBodyId bodyId, float safetyFactor)
 	{
 		return false;
 	}
-	// Read by tbSpeculativeReach from the next step on (broad-phase boxes, speculative margins and
-	// the continuous stage's test of fast bodies all take the new reach).
+	// Read through tbSpeculativeReach from the next step on (broad-phase boxes, speculative margins
+	// and the continuous stage's test of fast bodies all take the new reach).
 	body->safetyFactor = safetyFactor;
+	tbUpdateSpeculativeReach(body);
 	return true;
 }
 

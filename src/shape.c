@@ -135,8 +135,7 @@ static tbAABB tbSweepBox(tbAABB box, tbVec2 d, float pad)
 
 float tbSpeculativeReach(const tbBody* body)
 {
-	// safetyFactor is TB_CONTINUOUS_FRACTION unless the game changed it (tbBody_SetSafetyFactor).
-	return tbMaxFloat(TB_SPECULATIVE_REACH, body->safetyFactor * body->minExtent);
+	return body->speculativeReach; // body.c, tbUpdateSpeculativeReach
 }
 
 /// Broad-phase boxes must contain where a body's shapes can go during the next step, so that every

@@ -23,8 +23,9 @@ typedef struct tbBody
 	tbVec2 center;		   ///< world centre of mass
 	tbVec2 linearVelocity;
 	float angularVelocity;
-	float minExtent;	///< smallest distance from the centre of mass to the surface (continuous collision)
-	float safetyFactor; ///< continuous collision: fast beyond max(TB_SPECULATIVE_REACH, safetyFactor·minExtent)
+	/// Displacement per step its speculative contacts cover (tbSpeculativeReach, read per contact):
+	/// max(TB_SPECULATIVE_REACH, safetyFactor × minExtent), kept current by body.c.
+	float speculativeReach;
 	float maxExtent;	///< largest distance from the centre of mass to any shape point
 	float gravityScale;
 	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
@@ -44,6 +45,8 @@ typedef struct tbBody
 	float mass, invMass;
 	float inertia, invInertia; ///< about the centre of mass
 
+	float minExtent;	///< smallest distance from the centre of mass to the surface (continuous collision)
+	float safetyFactor; ///< continuous collision safety factor (tbBody_SetSafetyFactor), default 0.5
 	float linearDamping;
 	float angularDamping;
 	float sleepThreshold;
