@@ -745,10 +745,17 @@ void tbWorld_EnableSpeculative(tbWorldId worldId, bool flag)
 
 tbAABB tbWorld_GetBounds(tbWorldId worldId)
 {
+	const char* f = "tbWorld_GetBounds";
 	tbAABB bounds = {{0.0f, 0.0f}, {0.0f, 0.0f}};
-	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_GetBounds");
+	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (world == NULL)
 	{
+		return bounds;
+	}
+	if (world->locked)
+	{
+		// During the step the proxies are being moved (Box2D v3.2 refuses it too); a query callback may.
+		tbReportError(f, "the world is locked (stepping); read the bounds between steps");
 		return bounds;
 	}
 	// The union of the broad phase's boxes (fat for movable shapes, tight for static ones), as
@@ -776,8 +783,9 @@ tbCapacity tbWorld_GetMaxCapacity(tbWorldId worldId)
 
 void tbWorld_RebuildStaticTree(tbWorldId worldId)
 {
-	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_RebuildStaticTree");
-	if (world != NULL)
+	const char* f = "tbWorld_RebuildStaticTree";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (world != NULL && tbStructureLocked(world, f, "rebuild the static tree") == false)
 	{
 		tbBroadPhase_RebuildStaticTree(&world->broadPhase);
 	}

@@ -1049,3 +1049,65 @@ Test(v3_api, length_units_scale_the_tolerances, .init = SetupErrors, .fini = Tea
 	cr_assert_float_eq(tbGetLengthUnitsPerMeter(), 100.0f, 0.0f);
 	cr_assert(tbSetLengthUnitsPerMeter(1.0f));
 }
+
+typedef struct LockProbe
+{
+	tbWorldId world;
+	int errorsBefore;
+	int errorsAfter;
+	tbAABB bounds;
+} LockProbe;
+
+static bool ProbeInQuery(tbShapeId shape, void* context)
+{
+	(void)shape;
+	LockProbe* probe = context;
+	probe->errorsBefore = s_errors;
+	probe->bounds = tbWorld_GetBounds(probe->world); // allowed: reading
+	tbWorld_RebuildStaticTree(probe->world);		  // refused: the tree is being walked
+	probe->errorsAfter = s_errors;
+	return false;
+}
+
+static void ProbeInPreSolve(tbShapeId a, tbShapeId b, tbManifold* manifold, void* context)
+{
+	(void)a;
+	(void)b;
+	(void)manifold;
+	LockProbe* probe = context;
+	if (probe->errorsBefore < 0)
+	{
+		probe->errorsBefore = s_errors;
+		probe->bounds = tbWorld_GetBounds(probe->world); // refused: the step is moving proxies
+		probe->errorsAfter = s_errors;
+	}
+}
+
+// Inside a query callback the bounds may be read but the static tree not rebuilt; during the step
+// (a pre-solve callback) the bounds are refused.
+Test(v3_api, world_bounds_and_rebuild_while_locked, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = MakeBody(world, tb_staticBody, tbMakeVec2(0.0f, -0.5f));
+	AddBox(ground, 5.0f, 0.5f);
+	tbBodyId body = MakeBody(world, tb_dynamicBody, tbMakeVec2(0.0f, 0.5f));
+	tbShapeDef sd = tbDefaultShapeDef();
+	sd.enablePreSolveEvents = true;
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	tbCreatePolygonShape(body, &sd, &box);
+
+	LockProbe probe = {world, 0, 0, {{0.0f, 0.0f}, {0.0f, 0.0f}}};
+	tbAABB all = {{-10.0f, -10.0f}, {10.0f, 10.0f}};
+	tbWorld_OverlapAABB(world, all, tbDefaultQueryFilter(), ProbeInQuery, &probe);
+	cr_assert_eq(probe.errorsAfter, probe.errorsBefore + 1, "only the rebuild is refused");
+	cr_assert(strstr(s_lastError, "tbWorld_RebuildStaticTree") != NULL, "%s", s_lastError);
+	ExpectVec2(probe.bounds.lowerBound, -5.0f, -1.0f, 1e-6f, "bounds read in a query");
+
+	probe.errorsBefore = -1;
+	tbWorld_SetPreSolveCallback(world, ProbeInPreSolve, NULL, &probe);
+	tbWorld_Step(world, DT, 4);
+	cr_assert_eq(probe.errorsAfter, probe.errorsBefore + 1);
+	cr_assert(strstr(s_lastError, "tbWorld_GetBounds") != NULL, "%s", s_lastError);
+	ExpectVec2(probe.bounds.upperBound, 0.0f, 0.0f, 0.0f, "a refused read gives the zero box");
+	tbDestroyWorld(world);
+}

@@ -94,7 +94,8 @@ TB_API float tbWorld_GetContactRecycleDistance(tbWorldId worldId);
 TB_API void tbWorld_EnableSpeculative(tbWorldId worldId, bool flag);
 
 /// The union of every shape's broad-phase box (fat for movable shapes, tight for static ones);
-/// all zero for a world without shapes in the broad phase. Refused inside a step.
+/// all zero for a world without shapes in the broad phase. Refused (error hook, zero box) during the
+/// step, e.g. from a pre-solve callback; allowed in a query callback.
 TB_API tbAABB tbWorld_GetBounds(tbWorldId worldId);
 
 /// The largest counts (static and dynamic-or-kinematic shapes in the broad phase and bodies, and
@@ -104,6 +105,7 @@ TB_API tbCapacity tbWorld_GetMaxCapacity(tbWorldId worldId);
 
 /// Rebuild the static shapes' tree now (binned SAH; tree broad phase only, otherwise nothing). The
 /// tree is rebuilt on its own after bulk static insertions; trajectories do not depend on its shape.
+/// Refused (error hook) during the step and inside query callbacks (the tree may be being walked).
 TB_API void tbWorld_RebuildStaticTree(tbWorldId worldId);
 
 /// A 64-bit hash of the simulation state for determinism checks (a desync between two runs, a
