@@ -31,57 +31,87 @@ static tbVec2 tbFaceForce(float q, float width, tbVec2 direction, tbVec2 normal,
 	return tbMulSV(q * width, tbMulAdd(direction, lift, across));
 }
 
-/// The wind's force and torque (about the centre of mass) on one shape whose body is `body`.
-static void tbWindOnShape(const tbShape* shape, const tbBody* body, tbVec2 wind, float drag, float lift, tbVec2* force,
-						  float* torque)
+/// The flow a shape meets: its direction û, the dynamic pressure q = ½ρ|u|² (0: no flow), and the
+/// lever from the body's centre of mass to the shape's centroid (world axes).
+typedef struct tbFlow
 {
-	tbTransform xf = body->transform;
+	tbVec2 direction;
+	float pressure;
+	tbVec2 lever;
+} tbFlow;
+
+static tbFlow tbFlowAt(const tbShape* shape, const tbBody* body, tbVec2 wind, float drag)
+{
 	const tbGeometry* g = &shape->geometry;
 	tbVec2 localCentroid = g->type == tb_circleShape	? g->circle.center
 						   : g->type == tb_capsuleShape ? tbLerp(g->capsule.center1, g->capsule.center2, 0.5f)
 														: g->polygon.centroid;
-	tbVec2 lever = tbSub(tbTransformPoint(xf, localCentroid), body->center);
-	tbVec2 v = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, lever));
+	tbFlow flow;
+	flow.lever = tbSub(tbTransformPoint(body->transform, localCentroid), body->center);
+	tbVec2 v = tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, flow.lever));
 	float speed;
-	tbVec2 u = tbGetLengthAndNormalize(&speed, tbMulSub(wind, drag, v));
-	float q = 0.5f * TB_AIR_DENSITY * speed * speed;
-	*force = tb_vec2_zero;
-	*torque = 0.0f;
-	if (speed == 0.0f)
-	{
-		return;
-	}
-	if (g->type == tb_circleShape)
-	{
-		*force = tbMulSV(q * 2.0f * g->circle.radius, u);
-		*torque = tbCross(lever, *force);
-		return;
-	}
-	if (g->type == tb_capsuleShape)
-	{
-		tbVec2 d = tbRotateVector(xf.q, tbSub(g->capsule.center2, g->capsule.center1));
-		tbVec2 n = tbLeftPerp(tbNormalize(d));
-		n = tbDot(n, u) > 0.0f ? tbNeg(n) : n; // the flat side the flow meets
-		float width = 2.0f * g->capsule.radius + tbAbsFloat(tbCross(d, u));
-		*force = tbFaceForce(q, width, u, n, lift);
-		*torque = tbCross(tbMulAdd(lever, g->capsule.radius, n), *force);
-		return;
-	}
-	const tbPolygon* p = &g->polygon;
+	flow.direction = tbGetLengthAndNormalize(&speed, tbMulSub(wind, drag, v));
+	flow.pressure = 0.5f * TB_AIR_DENSITY * speed * speed;
+	return flow;
+}
+
+/// Capsule: one face, the flat side the flow meets, of width 2r + |d × û|, pushed r off the centroid.
+static void tbWindOnCapsule(const tbCapsule* c, tbRot q, const tbFlow* flow, float lift, tbVec2* force, float* torque)
+{
+	tbVec2 d = tbRotateVector(q, tbSub(c->center2, c->center1));
+	tbVec2 n = tbLeftPerp(tbNormalize(d));
+	n = tbDot(n, flow->direction) > 0.0f ? tbNeg(n) : n;
+	float width = 2.0f * c->radius + tbAbsFloat(tbCross(d, flow->direction));
+	*force = tbFaceForce(flow->pressure, width, flow->direction, n, lift);
+	*torque = tbCross(tbMulAdd(flow->lever, c->radius, n), *force);
+}
+
+/// Polygon: each edge facing the flow (width e × û > 0), pushed at its midpoint.
+static void tbWindOnPolygon(const tbPolygon* p, const tbBody* body, const tbFlow* flow, float lift, tbVec2* force,
+							float* torque)
+{
+	tbTransform xf = body->transform;
 	for (int i = 0; i < p->count; ++i)
 	{
 		tbVec2 a = p->vertices[i];
 		tbVec2 b = p->vertices[i + 1 < p->count ? i + 1 : 0];
 		tbVec2 e = tbRotateVector(xf.q, tbSub(b, a));
-		float width = tbCross(e, u);
+		float width = tbCross(e, flow->direction);
 		if (width <= 0.0f)
 		{
 			continue; // faces away from the flow (or edge-on)
 		}
-		tbVec2 f = tbFaceForce(q, width, u, tbRightPerp(tbNormalize(e)), lift);
+		tbVec2 f = tbFaceForce(flow->pressure, width, flow->direction, tbRightPerp(tbNormalize(e)), lift);
 		tbVec2 arm = tbSub(tbTransformPoint(xf, tbLerp(a, b, 0.5f)), body->center);
 		*force = tbAdd(*force, f);
 		*torque += tbCross(arm, f);
+	}
+}
+
+/// The wind's force and torque (about the centre of mass) on one shape whose body is `body`.
+static void tbWindOnShape(const tbShape* shape, const tbBody* body, tbVec2 wind, float drag, float lift, tbVec2* force,
+						  float* torque)
+{
+	const tbGeometry* g = &shape->geometry;
+	tbFlow flow = tbFlowAt(shape, body, wind, drag);
+	*force = tb_vec2_zero;
+	*torque = 0.0f;
+	if (flow.pressure == 0.0f)
+	{
+		return;
+	}
+	if (g->type == tb_circleShape)
+	{
+		*force = tbMulSV(flow.pressure * 2.0f * g->circle.radius, flow.direction); // width 2r, at the centre
+		*torque = tbCross(flow.lever, *force);
+	}
+	else if (g->type == tb_capsuleShape)
+	{
+		tbWindOnCapsule(&g->capsule, body->transform.q, &flow, lift, force, torque);
+	}
+	else
+	{
+		tbWindOnPolygon(&g->polygon, body, &flow, lift, force, torque);
 	}
 }
 
