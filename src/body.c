@@ -19,6 +19,7 @@ tbBodyDef tbDefaultBodyDef(void)
 	def.rotation = tb_rot_identity;
 	def.gravityScale = 1.0f;
 	def.sleepThreshold = TB_LINEAR_SLEEP_TOLERANCE;
+	def.safetyFactor = TB_CONTINUOUS_FRACTION;
 	def.enableSleep = true;
 	def.enableContactRecycling = true;
 	def.isAwake = true;
@@ -101,7 +102,8 @@ static bool tbCheckBodyDef(const tbBodyDef* def)
 		   tbCheckNonNegative(f, "def->linearDamping", def->linearDamping) &&
 		   tbCheckNonNegative(f, "def->angularDamping", def->angularDamping) &&
 		   tbCheckFloat(f, "def->gravityScale", def->gravityScale) &&
-		   tbCheckNonNegative(f, "def->sleepThreshold", def->sleepThreshold);
+		   tbCheckNonNegative(f, "def->sleepThreshold", def->sleepThreshold) &&
+		   tbCheckNonNegative(f, "def->safetyFactor", def->safetyFactor);
 }
 
 // The awake list keeps its order (the solver order must not depend on which body slept first), so
@@ -208,6 +210,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->userData = def->userData;
 	body->type = (uint8_t)def->type;
 	world->kinematicBodyCount += def->type == tb_kinematicBody ? 1 : 0;
+	world->staticBodyCount += def->type == tb_staticBody ? 1 : 0;
 	body->transform.p = def->position;
 	body->transform.q = tbNormalizeRot(def->rotation);
 	body->center = def->position;
@@ -219,6 +222,8 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->angularDamping = def->angularDamping;
 	body->gravityScale = def->gravityScale;
 	body->sleepThreshold = def->sleepThreshold;
+	body->safetyFactor = def->safetyFactor;
+	body->speculativeReach = tbMaxFloat(TB_SPECULATIVE_REACH, 0.0f); // no shape yet: minExtent 0
 	body->enableSleep = def->enableSleep;
 	body->fixedRotation = def->fixedRotation || def->motionLocks.angularZ;
 	body->lockLinearX = def->motionLocks.linearX;
@@ -288,8 +293,17 @@ void tbDestroyBody(tbBodyId bodyId)
 	body->generation += 1;
 	world->bodyCount -= 1;
 	world->kinematicBodyCount -= body->type == tb_kinematicBody ? 1 : 0;
+	world->staticBodyCount -= body->type == tb_staticBody ? 1 : 0;
 	world->linearLockCount -= body->lockLinearX || body->lockLinearY ? 1 : 0;
 	TB_ARRAY_PUSH(world->bodyFree, world->bodyFreeCount, world->bodyFreeCapacity, bodyId.index1 - 1);
+}
+
+/// The reach of a body's speculative contacts, max(TB_SPECULATIVE_REACH, safetyFactor × minExtent)
+/// (safetyFactor is TB_CONTINUOUS_FRACTION unless the game set another): cached in the body's first
+/// cache line, where the narrow phase reads it per contact; refreshed whenever an input changes.
+static void tbUpdateSpeculativeReach(tbBody* body)
+{
+	body->speculativeReach = tbMaxFloat(TB_SPECULATIVE_REACH, body->safetyFactor * body->minExtent);
 }
 
 /// Extents used by continuous collision: the smallest distance from the centre of mass to the
@@ -320,6 +334,7 @@ static void tbComputeExtents(tbWorld* world, tbBody* body)
 	}
 	body->minExtent = minExtent < TB_HUGE ? minExtent : 0.0f;
 	body->maxExtent = maxExtent;
+	tbUpdateSpeculativeReach(body);
 }
 
 /// Keep the velocity of the body origin when the centre of mass moves from oldCenter to
@@ -503,6 +518,7 @@ bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
 		tbRemoveFromAwakeSet(world, body);
 	}
 	world->kinematicBodyCount += (type == tb_kinematicBody ? 1 : 0) - (body->type == tb_kinematicBody ? 1 : 0);
+	world->staticBodyCount += (type == tb_staticBody ? 1 : 0) - (body->type == tb_staticBody ? 1 : 0);
 	body->type = (uint8_t)type;
 	if (type == tb_staticBody)
 	{
@@ -933,6 +949,18 @@ tbPos tbBody_GetWorldCenterOfMass(tbBodyId bodyId)
 	return body != NULL ? body->center : tbPos_zero;
 }
 
+tbVec2 tbBody_GetLocalCenter(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalCenter", NULL, false);
+	return body != NULL ? body->localCenter : tb_vec2_zero;
+}
+
+tbPos tbBody_GetWorldCenter(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldCenter", NULL, false);
+	return body != NULL ? body->center : tbPos_zero;
+}
+
 bool tbBody_SetMassData(tbBodyId bodyId, tbMassData massData)
 {
 	const char* f = "tbBody_SetMassData";
@@ -1142,6 +1170,27 @@ float tbBody_GetSleepThreshold(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetSleepThreshold", NULL, false);
 	return body != NULL ? body->sleepThreshold : 0.0f;
+}
+
+bool tbBody_SetSafetyFactor(tbBodyId bodyId, float safetyFactor)
+{
+	const char* f = "tbBody_SetSafetyFactor";
+	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, true);
+	if (body == NULL || tbCheckNonNegative(f, "safetyFactor", safetyFactor) == false)
+	{
+		return false;
+	}
+	// Read through tbSpeculativeReach from the next step on (broad-phase boxes, speculative margins
+	// and the continuous stage's test of fast bodies all take the new reach).
+	body->safetyFactor = safetyFactor;
+	tbUpdateSpeculativeReach(body);
+	return true;
+}
+
+float tbBody_GetSafetyFactor(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetSafetyFactor", NULL, false);
+	return body != NULL ? body->safetyFactor : 0.0f;
 }
 
 void tbBody_ClearForces(tbBodyId bodyId)

@@ -646,6 +646,16 @@ void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, u
 	}
 }
 
+void tbBroadPhase_RebuildStaticTree(tbBroadPhase* bp)
+{
+	// Pairs are reported sorted, so the tree's shape changes no trajectory, only query speed.
+	if (bp->method == tb_broadPhaseTree)
+	{
+		tbDynamicTree_Rebuild(&bp->staticTree, true);
+		bp->staticInsertCount = 0;
+	}
+}
+
 int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp)
 {
 	return bp->method == tb_broadPhaseTree ? tbDynamicTree_GetHeight(&bp->movableTree) : 0;

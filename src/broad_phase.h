@@ -105,6 +105,9 @@ void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, u
 
 /// Height of the movable tree, or 0 for other methods.
 int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp);
+/// Rebuild the static tree from scratch (binned SAH) now; the tree method only (the others keep
+/// no static tree).
+void tbBroadPhase_RebuildStaticTree(tbBroadPhase* bp);
 
 /// Debug drawing of the tree nodes (tree method only).
 void tbBroadPhase_VisitTreeNodes(const tbBroadPhase* bp, tbTreeNodeFcn* fcn, void* context);

@@ -498,7 +498,7 @@ static float tbRelativeMotion(tbTransform relative0, tbTransform relative, const
 /// When to recycle: a feature pair not in the manifold was at least margin0 (the speculative margin
 /// then) apart and has closed by at most the relative motion δ since (tbRelativeMotion); in this
 /// step it closes by at most margin − TB_SPECULATIVE_DISTANCE more. So while
-///     δ < min(TB_RECYCLE_DISTANCE, margin0 − margin + TB_SPECULATIVE_DISTANCE)
+///     δ < min(recycleDistance, margin0 − margin + TB_SPECULATIVE_DISTANCE)
 /// no feature the narrow phase would add can reach contact during the step (a faster approach than
 /// when the manifold was made shrinks the allowance to nothing), and the relative turn must stay
 /// below TB_RECYCLE_ANGLE so that the normal stays within a degree. What is lost: a speculative
@@ -512,7 +512,9 @@ static float tbRelativeMotion(tbTransform relative0, tbTransform relative, const
 // cos(TB_RECYCLE_ANGLE) = cos(2°), rounded to float.
 #define TB_RECYCLE_COS_ANGLE 0.99939083f
 
-static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin)
+/// recycleDistance is the world's (TB_RECYCLE_DISTANCE by default, tbWorld_SetContactRecycleDistance).
+static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin,
+							  float recycleDistance)
 {
 	const tbManifoldBase* base = &contact->base;
 	if ((contact->flags & tb_contactRecyclable) == 0 || bodyA->isFast || bodyB->isFast ||
@@ -523,7 +525,7 @@ static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbB
 	tbWorldTransform xfA = bodyA->transform;
 	tbWorldTransform xfB = bodyB->transform;
 	tbTransform relative = tbInvMulWorldTransforms(xfA, xfB);
-	float tolerance = tbMinFloat(TB_RECYCLE_DISTANCE, base->margin - margin + TB_SPECULATIVE_DISTANCE);
+	float tolerance = tbMinFloat(recycleDistance, base->margin - margin + TB_SPECULATIVE_DISTANCE);
 	// |turn| < TB_RECYCLE_ANGLE ⟺ cos(turn) > cos(TB_RECYCLE_ANGLE): the cosine is the dot product of
 	// the two unit rotations, with no atan2 (which cost 4 % of a pyramid step here).
 	float cosTurn = base->relative.q.c * relative.q.c + base->relative.q.s * relative.q.s;
@@ -636,6 +638,27 @@ static void tbCallPreSolve(tbWorld* world, tbContact* contact)
 	}
 }
 
+/// For tests (tbWorld_EnableSpeculative(false), Box2D v3.2's switch): of two manifold points, one
+/// more than 1.5 × TB_LINEAR_SLOP apart is dropped, so the solver sees no speculative second point.
+/// The manifold then no longer matches its recycling base, which is forgotten.
+static void tbDropSpeculativePoint(tbContact* contact)
+{
+	tbManifold* m = &contact->manifold;
+	if (m->pointCount != 2)
+	{
+		return;
+	}
+	float apart = 1.5f * TB_LINEAR_SLOP;
+	int drop = m->points[0].separation > apart ? 0 : (m->points[1].separation > apart ? 1 : -1);
+	if (drop < 0)
+	{
+		return;
+	}
+	m->points[0] = m->points[1 - drop];
+	m->pointCount = 1;
+	contact->flags &= ~(uint32_t)tb_contactRecyclable;
+}
+
 /// The narrow phase of one contact, writing only the contact (safe on any worker): returns
 /// tbCollideResult flags for the caller to act on in contact order.
 static uint32_t tbCollideContact(tbWorld* world, tbContact* contact)
@@ -648,7 +671,8 @@ static uint32_t tbCollideContact(tbWorld* world, tbContact* contact)
 	// Sensors only ask whether the shapes overlap: the fixed distance is plenty.
 	float margin = isSensor ? TB_SPECULATIVE_DISTANCE : tbSpeculativeMargin(world, bodyA, bodyB);
 	uint32_t result = 0;
-	if (world->def.enableManifoldRecycling && tbRecycleManifold(contact, bodyA, bodyB, margin))
+	if (world->def.enableManifoldRecycling && world->contactRecycleDistance > 0.0f &&
+		tbRecycleManifold(contact, bodyA, bodyB, margin, world->contactRecycleDistance))
 	{
 		result |= tb_collideRecycled;
 	}
@@ -660,6 +684,10 @@ static uint32_t tbCollideContact(tbWorld* world, tbContact* contact)
 		contact->manifold.pointCount > 0 && (bodyA->type == tb_dynamicBody || bodyB->type == tb_dynamicBody))
 	{
 		tbCallPreSolve(world, contact);
+	}
+	if (world->enableSpeculative == false && isSensor == false)
+	{
+		tbDropSpeculativePoint(contact);
 	}
 	const tbManifold* m = &contact->manifold;
 	bool touching = isSensor ? tbIsSensorOverlap(m) : m->pointCount > 0;
@@ -1127,9 +1155,10 @@ static void tbRefreshContactEventFlags(tbWorld* world, tbContact* contact)
 	const tbShape* a = world->shapes + contact->shapeIdA;
 	const tbShape* b = world->shapes + contact->shapeIdB;
 	world->hitContactCount -= (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
-	contact->flags &= ~(uint32_t)(tb_contactEnableEvents | tb_contactEnableHits);
+	contact->flags &= ~(uint32_t)(tb_contactEnableEvents | tb_contactEnableHits | tb_contactEnablePreSolve);
 	contact->flags |= a->enableContactEvents && b->enableContactEvents ? (uint32_t)tb_contactEnableEvents : 0u;
 	contact->flags |= a->enableHitEvents || b->enableHitEvents ? (uint32_t)tb_contactEnableHits : 0u;
+	contact->flags |= a->enablePreSolveEvents || b->enablePreSolveEvents ? (uint32_t)tb_contactEnablePreSolve : 0u;
 	world->hitContactCount += (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
 }
 
@@ -1142,6 +1171,9 @@ void tbSetShapeEventFlag(tbWorld* world, tbShape* shape, tbShapeEventKind kind, 
 			break;
 		case tb_shapeEventHits:
 			shape->enableHitEvents = flag;
+			break;
+		case tb_shapeEventPreSolve:
+			shape->enablePreSolveEvents = flag;
 			break;
 		default:
 			shape->enableSensorEvents = flag; // read when events are made: no contact holds it

@@ -1,8 +1,9 @@
 // The continuous stage: time of impact for bodies fast enough to tunnel.
 //
 // After the solve, a dynamic body whose motion in the step exceeds what speculative contacts cover,
-// max(TB_SPECULATIVE_REACH, TB_CONTINUOUS_FRACTION × its thickness) (minExtent: the smallest distance
-// from its centre of mass to its surface), or any bullet, is swept from its start transform (center0, rotation0) to its end transform against
+// max(TB_SPECULATIVE_REACH, safetyFactor × its thickness) (minExtent: the smallest distance
+// from its centre of mass to its surface; the body's safety factor, Box2D v3.2's, is
+// TB_CONTINUOUS_FRACTION = 0.5 unless the game set another), or any bullet, is swept from its start transform (center0, rotation0) to its end transform against
 // static shapes (bullets also against non-bullet dynamic bodies, which are swept along their own
 // motion). The body is moved back to the earliest time of impact; its velocity is kept, and the
 // contact that the next step finds stops it (Box2D's approach: no energy is invented, some time

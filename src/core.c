@@ -10,6 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#if !defined(_WIN32)
+#include <sched.h>
+#endif
 
 // The two calls the C standard does not give portably: aligned allocation (MSVC's C runtime has no
 // aligned_alloc) and a monotonic clock (clock_gettime is POSIX). Everything else here is C17.
@@ -44,6 +47,8 @@ static _Atomic int s_errorCount = 0;
 static tbErrorFcn* s_errorFcn = NULL;
 static void* s_errorContext = NULL;
 static tbAssertFcn* s_assertFcn = NULL;
+static tbLogFcn* s_logFcn = NULL;
+float tb_lengthUnitsPerMeter = 1.0f; // constants.h reads it inside the library
 
 tbVersion tbGetVersion(void)
 {
@@ -118,9 +123,33 @@ void* tbGrowAlloc(void* oldMemory, int oldSize, int newSize)
 	return p;
 }
 
+float tbGetLengthUnitsPerMeter(void)
+{
+	return tb_lengthUnitsPerMeter;
+}
+
+void tbSetLengthUnits(float lengthUnits)
+{
+	tb_lengthUnitsPerMeter = lengthUnits;
+}
+
+void tbSetLogFcn(tbLogFcn* logFcn)
+{
+	s_logFcn = logFcn;
+}
+
+/// Without an error hook a refusal is logged: through the log hook when one is set (v3 programs
+/// set only that), else on stderr.
 static void tbDefaultErrorFcn(const char* message, void* context)
 {
 	(void)context;
+	if (s_logFcn != NULL)
+	{
+		char line[540];
+		snprintf(line, sizeof(line), "tumble error: %s", message);
+		s_logFcn(line);
+		return;
+	}
 	fprintf(stderr, "tumble error: %s\n", message);
 }
 
@@ -221,6 +250,45 @@ uint64_t tbGetTicks(void)
 float tbGetMilliseconds(uint64_t ticks)
 {
 	return (float)((double)(tbGetTicks() - ticks) * 1e-6);
+}
+
+float tbGetMillisecondsAndReset(uint64_t* ticks)
+{
+	if (tbCheckPointer("tbGetMillisecondsAndReset", "ticks", ticks) == false)
+	{
+		return 0.0f;
+	}
+	uint64_t now = tbGetTicks();
+	float ms = (float)((double)(now - *ticks) * 1e-6);
+	*ticks = now;
+	return ms;
+}
+
+void tbYield(void)
+{
+#if defined(_WIN32)
+	SwitchToThread();
+#else
+	sched_yield();
+#endif
+}
+
+uint32_t tbHash(uint32_t hash, const uint8_t* data, int count)
+{
+	if (count < 0)
+	{
+		tbReportError("tbHash", "count is %d; pass the number of bytes (>= 0)", count);
+		return hash;
+	}
+	if (count > 0 && tbCheckPointer("tbHash", "data", data) == false)
+	{
+		return hash;
+	}
+	for (int i = 0; i < count; ++i)
+	{
+		hash = (hash << 5) + hash + data[i]; // 33·hash + byte, wrapping at 2^32
+	}
+	return hash;
 }
 
 bool tbIsCoordinate(tbVec2 v)

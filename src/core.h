@@ -14,8 +14,6 @@
 #define TB_PRINTF_FORMAT(a, b)
 #endif
 
-int tbInternalAssert(const char* condition, const char* fileName, int lineNumber);
-
 /// Internal invariant (never user input: that goes through tbReportError).
 #define TB_ASSERT(condition)                                                                                          \
 	do                                                                                                                \
@@ -34,6 +32,9 @@ void tbFree(void* memory, int size);
 
 /// Grow (or shrink) an allocation, copying min(oldSize, newSize) bytes.
 void* tbGrowAlloc(void* oldMemory, int oldSize, int newSize);
+
+/// Store the length units (tbSetLengthUnitsPerMeter checks them and that no world exists).
+void tbSetLengthUnits(float lengthUnits);
 
 /// Report a rejected call: "function: message". Formats like printf.
 void tbReportError(const char* function, const char* format, ...) TB_PRINTF_FORMAT(2, 3);

@@ -131,9 +131,9 @@ tbSegmentDistanceResult tbSegmentDistance(tbVec2 p1, tbVec2 q1, tbVec2 p2, tbVec
 // ---------------------------------------------------------------------------------------------
 // Proxies
 
-tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
+// tbMakeProxy's work, reporting errors under the caller's name f.
+static tbShapeProxy tbMakeProxyNamed(const char* f, const tbVec2* points, int count, float radius)
 {
-	const char* f = "tbMakeProxy";
 	tbShapeProxy proxy = {0};
 	if (count < 1 || count > TB_MAX_POLYGON_VERTICES)
 	{
@@ -153,6 +153,39 @@ tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
 	}
 	proxy.count = count;
 	proxy.radius = radius;
+	return proxy;
+}
+
+tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
+{
+	return tbMakeProxyNamed("tbMakeProxy", points, count, radius);
+}
+
+tbShapeProxy tbMakeOffsetProxy(const tbVec2* points, int count, float radius, tbVec2 position, tbRot rotation)
+{
+	const char* f = "tbMakeOffsetProxy";
+	tbShapeProxy proxy = {0};
+	if (tbCheckCoordinate(f, "position", position) == false)
+	{
+		return proxy;
+	}
+	if (tbIsValidRot(rotation) == false)
+	{
+		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot", (double)rotation.c,
+					  (double)rotation.s);
+		return proxy;
+	}
+	proxy = tbMakeProxyNamed(f, points, count, radius); // checks the points and the radius
+	tbTransform transform = {position, rotation};
+	for (int i = 0; i < proxy.count; ++i)
+	{
+		proxy.points[i] = tbTransformPoint(transform, proxy.points[i]);
+	}
+	if (tbCheckPoints(f, "moved points", proxy.points, proxy.count) == false)
+	{
+		tbShapeProxy empty = {0};
+		return empty;
+	}
 	return proxy;
 }
 
@@ -806,6 +839,111 @@ tbCastOutput tbShapeCast(const tbShapeCastPairInput* input)
 	// Iteration cap: report no hit rather than a guess (only pathological inputs get here).
 	output.iterations = TB_TOI_MAX_ITERATIONS;
 	return output;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shape casts against one shape (Box2D v3.2's b2ShapeCastCircle and kin): the shape is proxy A at
+// the identity, the input's proxy is B moving by the translation, so tbShapeCast answers in the
+// shape's frame.
+
+// The cast of input->proxy against proxyA, after the input's own checks (naming f).
+static tbCastOutput tbShapeCastAgainst(const char* f, const tbShapeProxy* proxyA, const tbShapeCastInput* input)
+{
+	tbCastOutput output = {0};
+	if (tbCheckVec2(f, "input->translation", input->translation) == false ||
+		tbCheckNonNegative(f, "input->maxFraction", input->maxFraction) == false)
+	{
+		return output;
+	}
+	tbShapeCastPairInput pair;
+	pair.proxyA = *proxyA;
+	pair.proxyB = input->proxy;
+	pair.transform = tb_transform_identity;
+	pair.translationB = input->translation;
+	pair.maxFraction = input->maxFraction;
+	pair.canEncroach = input->canEncroach;
+	if (tbCheckProxyPair(f, &pair.proxyA, &pair.proxyB) == false)
+	{
+		return output;
+	}
+	return tbShapeCast(&pair);
+}
+
+// The proxy of count shape points and a radius when they are usable (reported naming f), else an
+// empty proxy (count 0).
+static tbShapeProxy tbCheckedShapeProxy(const char* f, const tbVec2* points, int count, float radius)
+{
+	tbShapeProxy proxy = {0};
+	if (tbCheckPoints(f, "shape points", points, count) == false ||
+		tbCheckLength(f, "shape->radius", radius, false) == false)
+	{
+		return proxy;
+	}
+	for (int i = 0; i < count; ++i)
+	{
+		proxy.points[i] = points[i];
+	}
+	proxy.count = count;
+	proxy.radius = radius;
+	return proxy;
+}
+
+// The checks and the cast shared by the four: pointers, the shape's proxy, then the sweep.
+static tbCastOutput tbShapeCastShape(const char* f, const void* shape, const tbVec2* points, int count, float radius,
+									 const tbShapeCastInput* input)
+{
+	tbCastOutput output = {0};
+	if (tbCheckPointer(f, "shape", shape) == false || tbCheckPointer(f, "input", input) == false)
+	{
+		return output;
+	}
+	tbShapeProxy proxyA = tbCheckedShapeProxy(f, points, count, radius);
+	return proxyA.count > 0 ? tbShapeCastAgainst(f, &proxyA, input) : output;
+}
+
+tbCastOutput tbShapeCastCircle(const tbCircle* shape, const tbShapeCastInput* input)
+{
+	const char* f = "tbShapeCastCircle";
+	return tbShapeCastShape(f, shape, shape != NULL ? &shape->center : NULL, 1, shape != NULL ? shape->radius : 0.0f,
+							input);
+}
+
+tbCastOutput tbShapeCastCapsule(const tbCapsule* shape, const tbShapeCastInput* input)
+{
+	const char* f = "tbShapeCastCapsule";
+	tbVec2 points[2] = {tb_vec2_zero, tb_vec2_zero};
+	if (shape != NULL)
+	{
+		points[0] = shape->center1;
+		points[1] = shape->center2;
+	}
+	return tbShapeCastShape(f, shape, points, 2, shape != NULL ? shape->radius : 0.0f, input);
+}
+
+tbCastOutput tbShapeCastSegment(const tbSegment* shape, const tbShapeCastInput* input)
+{
+	const char* f = "tbShapeCastSegment";
+	tbVec2 points[2] = {tb_vec2_zero, tb_vec2_zero};
+	if (shape != NULL)
+	{
+		points[0] = shape->point1;
+		points[1] = shape->point2;
+	}
+	return tbShapeCastShape(f, shape, points, 2, 0.0f, input);
+}
+
+tbCastOutput tbShapeCastPolygon(const tbPolygon* shape, const tbShapeCastInput* input)
+{
+	const char* f = "tbShapeCastPolygon";
+	if (shape != NULL && (shape->count < 3 || shape->count > TB_MAX_POLYGON_VERTICES))
+	{
+		tbReportError(f, "shape->count is %d (must be 3..%d); build polygons with tbMakePolygon(tbComputeHull(...))",
+					  shape->count, TB_MAX_POLYGON_VERTICES);
+		tbCastOutput output = {0};
+		return output;
+	}
+	return tbShapeCastShape(f, shape, shape != NULL ? shape->vertices : NULL, shape != NULL ? shape->count : 0,
+							shape != NULL ? shape->radius : 0.0f, input);
 }
 
 tbCastOutput tbShapeCastBetween(const tbShapeProxy* proxyA, tbTransform transformA, const tbShapeProxy* proxyB,

@@ -482,3 +482,20 @@ float tbDistanceJoint_GetMotorForce(tbJointId jointId)
 	tbJoint* joint = tbGetDistance(jointId, "tbDistanceJoint_GetMotorForce", &world, false);
 	return joint != NULL ? world->jointInvH * joint->distance.motorImpulse : 0.0f;
 }
+
+/// Rigid (no spring): |ℓ − length|. With a spring the length may vary, so only a limit violated
+/// counts: min − ℓ below the range, ℓ − max above it.
+float tbDistanceJointLinearSeparation(const tbWorld* world, const tbJoint* joint)
+{
+	const tbDistanceJoint* d = &joint->distance;
+	float length = tbLength(tbSubPos(tbJointWorldFrameB(world, joint).p, tbJointWorldFrameA(world, joint).p));
+	if (d->enableSpring == false)
+	{
+		return tbAbsFloat(length - d->length);
+	}
+	if (d->enableLimit == false)
+	{
+		return 0.0f;
+	}
+	return length < d->minLength ? d->minLength - length : (length > d->maxLength ? length - d->maxLength : 0.0f);
+}

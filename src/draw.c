@@ -2,6 +2,27 @@
 // The headless PNG renderer in samples/ is one implementation of those callbacks.
 #include "world.h"
 
+// Graph colours for debug views: a walk round the hue circle in 24 steps (neighbouring colours
+// differ, so contacts of adjacent colours stand apart), and grey for the overflow.
+static const tbHexColor s_graphColors[TB_GRAPH_COLOR_COUNT + 1] = {
+	tb_colorRed,		  tb_colorOrangeRed,	  tb_colorDarkOrange,  tb_colorOrange,		 tb_colorGold,
+	tb_colorYellow,		  tb_colorGreenYellow,	  tb_colorLawnGreen,   tb_colorLimeGreen,	 tb_colorSpringGreen,
+	tb_colorMediumSeaGreen, tb_colorLightSeaGreen, tb_colorTurquoise,  tb_colorDarkTurquoise, tb_colorDeepSkyBlue,
+	tb_colorDodgerBlue,	  tb_colorRoyalBlue,	  tb_colorBlue,		   tb_colorSlateBlue,	 tb_colorBlueViolet,
+	tb_colorDarkViolet,	  tb_colorMagenta,		  tb_colorDeepPink,	   tb_colorCrimson,		 tb_colorGray,
+};
+
+tbHexColor tbGetGraphColor(int index)
+{
+	if (index < 0 || index > TB_GRAPH_COLOR_COUNT)
+	{
+		tbReportError("tbGetGraphColor", "index is %d (must be 0..%d; %d is the overflow)", index,
+					  TB_GRAPH_COLOR_COUNT, TB_GRAPH_COLOR_COUNT);
+		return tb_colorBlack;
+	}
+	return s_graphColors[index];
+}
+
 static uint32_t tbBodyColor(const tbBody* body, const tbShape* shape)
 {
 	if (shape->material.customColor != 0u)

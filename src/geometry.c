@@ -102,22 +102,45 @@ tbPolygon tbMakePolygon(const tbHull* hull, float radius)
 	return polygon;
 }
 
-tbPolygon tbMakeOffsetPolygon(const tbHull* hull, tbVec2 position, tbRot rotation)
+// A local transform a caller passed: finite position, unit rotation (reported naming f).
+static bool tbCheckOffset(const char* f, const char* positionName, tbVec2 position, tbRot rotation)
 {
-	if (tbCheckVec2("tbMakeOffsetPolygon", "position", position) == false)
+	if (tbCheckVec2(f, positionName, position) == false)
 	{
-		return tbEmptyPolygon();
+		return false;
 	}
 	if (tbIsValidRot(rotation) == false)
 	{
-		tbReportError("tbMakeOffsetPolygon", "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot",
-					  (double)rotation.c, (double)rotation.s);
+		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot", (double)rotation.c,
+					  (double)rotation.s);
+		return false;
+	}
+	return true;
+}
+
+// The polygon of a hull with a radius, moved by (position, rotation); f names the caller.
+static tbPolygon tbMakeOffsetPolygonNamed(const char* f, const tbHull* hull, tbVec2 position, tbRot rotation,
+										  float radius)
+{
+	if (tbCheckOffset(f, "position", position, rotation) == false ||
+		tbCheckLength(f, "radius", radius, false) == false)
+	{
 		return tbEmptyPolygon();
 	}
-	tbPolygon polygon = tbMakePolygon(hull, 0.0f);
+	tbPolygon polygon = tbMakePolygon(hull, radius);
 	tbTransform transform = {position, rotation};
 	polygon = tbTransformPolygon(transform, &polygon);
-	return tbCheckPoints("tbMakeOffsetPolygon", "vertices", polygon.vertices, polygon.count) ? polygon : tbEmptyPolygon();
+	return tbCheckPoints(f, "vertices", polygon.vertices, polygon.count) ? polygon : tbEmptyPolygon();
+}
+
+tbPolygon tbMakeOffsetPolygon(const tbHull* hull, tbVec2 position, tbRot rotation)
+{
+	return tbMakeOffsetPolygonNamed("tbMakeOffsetPolygon", hull, position, rotation, 0.0f);
+}
+
+tbPolygon tbMakeOffsetRoundedPolygon(const tbHull* hull, tbVec2 position, tbRot rotation, float radius)
+{
+	return tbMakeOffsetPolygonNamed("tbMakeOffsetRoundedPolygon", hull, position, rotation, radius);
 }
 
 tbPolygon tbMakeSquare(float halfWidth)
@@ -167,23 +190,28 @@ tbPolygon tbMakeRoundedBox(float halfWidth, float halfHeight, float radius)
 	return tbMakeAlignedBox(halfWidth, halfHeight, radius);
 }
 
-tbPolygon tbMakeOffsetBox(float halfWidth, float halfHeight, tbVec2 center, tbRot rotation)
+// A box of core half-widths (hx, hy) and a radius, moved by (center, rotation); f names the caller.
+static tbPolygon tbMakeOffsetBoxNamed(const char* f, float hx, float hy, tbVec2 center, tbRot rotation, float radius)
 {
-	if (tbCheckBoxSize("tbMakeOffsetBox", halfWidth, halfHeight) == false ||
-		tbCheckVec2("tbMakeOffsetBox", "center", center) == false)
+	if (tbCheckBoxSize(f, hx, hy) == false || tbCheckLength(f, "radius", radius, false) == false ||
+		tbCheckOffset(f, "center", center, rotation) == false)
 	{
 		return tbEmptyPolygon();
 	}
-	if (tbIsValidRot(rotation) == false)
-	{
-		tbReportError("tbMakeOffsetBox", "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot",
-					  (double)rotation.c, (double)rotation.s);
-		return tbEmptyPolygon();
-	}
-	tbPolygon box = tbMakeAlignedBox(halfWidth, halfHeight, 0.0f);
+	tbPolygon box = tbMakeAlignedBox(hx, hy, radius);
 	tbTransform transform = {center, rotation};
 	box = tbTransformPolygon(transform, &box);
-	return tbCheckPoints("tbMakeOffsetBox", "vertices", box.vertices, box.count) ? box : tbEmptyPolygon();
+	return tbCheckPoints(f, "vertices", box.vertices, box.count) ? box : tbEmptyPolygon();
+}
+
+tbPolygon tbMakeOffsetBox(float halfWidth, float halfHeight, tbVec2 center, tbRot rotation)
+{
+	return tbMakeOffsetBoxNamed("tbMakeOffsetBox", halfWidth, halfHeight, center, rotation, 0.0f);
+}
+
+tbPolygon tbMakeOffsetRoundedBox(float halfWidth, float halfHeight, tbVec2 center, tbRot rotation, float radius)
+{
+	return tbMakeOffsetBoxNamed("tbMakeOffsetRoundedBox", halfWidth, halfHeight, center, rotation, radius);
 }
 
 tbPolygon tbTransformPolygon(tbTransform transform, const tbPolygon* polygon)
@@ -592,6 +620,17 @@ static tbCastOutput tbMakeHit(tbVec2 point, tbVec2 normal, float fraction)
 	output.fraction = fraction;
 	output.hit = true;
 	return output;
+}
+
+bool tbIsValidRay(const tbRayCastInput* input)
+{
+	if (tbCheckPointer("tbIsValidRay", "input", input) == false)
+	{
+		return false;
+	}
+	// NaN fails every comparison, so the fraction test also refuses a NaN maxFraction.
+	return tbIsValidVec2(input->origin) && tbIsValidVec2(input->translation) && 0.0f <= input->maxFraction &&
+		   input->maxFraction < TB_HUGE;
 }
 
 // Report non-finite ray input; a zero-length ray is valid and simply hits nothing.

@@ -61,7 +61,7 @@ static tbJointDef tbDefaultJointDef(void)
 	def.torqueThreshold = FLT_MAX;
 	def.constraintHertz = 60.0f;
 	def.constraintDampingRatio = 2.0f;
-	def.drawScale = 1.0f;
+	def.drawScale = 1.0f * tbGetLengthUnitsPerMeter(); // one metre, in length units
 	return def;
 }
 
@@ -706,6 +706,57 @@ float tbJoint_GetConstraintTorque(tbJointId jointId)
 		tbGetJointReaction(world, joint, world->jointInvH, &force, &torque);
 	}
 	return torque;
+}
+
+// Motor, mover and pogo joints are user forces (velocity targets and a spring) with nothing rigid
+// to violate, the filter joint has no rows, and the wheel joint turns freely: all read 0 where
+// their kind has no entry below.
+float tbJoint_GetLinearSeparation(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetLinearSeparation", &world, -1, false);
+	if (joint == NULL)
+	{
+		return 0.0f;
+	}
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			return tbDistanceJointLinearSeparation(world, joint);
+		case tb_prismaticJoint:
+			return tbAxisJointLinearSeparation(world, joint, joint->prismatic.enableLimit,
+											   joint->prismatic.lowerTranslation, joint->prismatic.upperTranslation);
+		case tb_revoluteJoint:
+			return tbRevoluteJointLinearSeparation(world, joint);
+		case tb_weldJoint:
+			return tbWeldJointLinearSeparation(world, joint);
+		case tb_wheelJoint:
+			return tbAxisJointLinearSeparation(world, joint, joint->wheel.enableLimit, joint->wheel.lowerTranslation,
+											   joint->wheel.upperTranslation);
+		default:
+			return 0.0f;
+	}
+}
+
+float tbJoint_GetAngularSeparation(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetAngularSeparation", &world, -1, false);
+	if (joint == NULL)
+	{
+		return 0.0f;
+	}
+	switch (joint->type)
+	{
+		case tb_prismaticJoint:
+			return tbPrismaticJointAngularSeparation(world, joint);
+		case tb_revoluteJoint:
+			return tbRevoluteJointAngularSeparation(world, joint);
+		case tb_weldJoint:
+			return tbWeldJointAngularSeparation(world, joint);
+		default:
+			return 0.0f;
+	}
 }
 
 bool tbJoint_SetConstraintTuning(tbJointId jointId, float hertz, float dampingRatio)

@@ -321,6 +321,19 @@ float tbAxialMassOf(const tbJoint* joint, const tbAxisFrame* g);
 void tbSolveAxisLimit(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axialMass, float C, float sign,
 					  float* accumulated, const tbStepContext* context, bool useBias);
 
+// Separation of a joint's frames (tbJoint_GetLinearSeparation, tbJoint_GetAngularSeparation): how far
+// the joint's rigid rows and active limits are from holding now, from the bodies' transforms (m and
+// rad; springs, motors and the admissible range of a limit count as no error). In the kind files.
+float tbDistanceJointLinearSeparation(const tbWorld* world, const tbJoint* joint);
+/// Prismatic and wheel joints: the anchor offset across the axis and beyond the limits, combined.
+float tbAxisJointLinearSeparation(const tbWorld* world, const tbJoint* joint, bool enableLimit, float lower,
+								  float upper);
+float tbPrismaticJointAngularSeparation(const tbWorld* world, const tbJoint* joint);
+float tbRevoluteJointLinearSeparation(const tbWorld* world, const tbJoint* joint);
+float tbRevoluteJointAngularSeparation(const tbWorld* world, const tbJoint* joint);
+float tbWeldJointLinearSeparation(const tbWorld* world, const tbJoint* joint);
+float tbWeldJointAngularSeparation(const tbWorld* world, const tbJoint* joint);
+
 // One file per kind, the same functions in the same order: prepare (once per step), warm start
 // and solve (each sub-step), the constraint force and torque (impulses/h), drawing.
 void tbPrepareDistanceJoint(tbJoint* joint, const tbStepContext* context);

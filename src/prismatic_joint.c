@@ -493,3 +493,27 @@ float tbPrismaticJoint_GetSpeed(tbJointId jointId)
 	tbVec2 vB = tbAdd(b->linearVelocity, tbCrossSV(b->angularVelocity, rB));
 	return tbDot(d, tbCrossSV(a->angularVelocity, axis)) + tbDot(axis, tbSub(vB, vA));
 }
+
+/// With a the axis (frame A's x-axis) and p = anchor B − anchor A: the offset across the axis
+/// |perp(a)·p| must be zero, and the translation a·p must lie in [lower, upper] when the limit is
+/// on; the two errors are orthogonal, so they combine as √(across² + beyond²).
+float tbAxisJointLinearSeparation(const tbWorld* world, const tbJoint* joint, bool enableLimit, float lower, float upper)
+{
+	tbWorldTransform fA = tbJointWorldFrameA(world, joint);
+	tbVec2 p = tbSubPos(tbJointWorldFrameB(world, joint).p, fA.p);
+	tbVec2 axis = tbRot_GetXAxis(fA.q);
+	float across = tbDot(tbLeftPerp(axis), p);
+	float beyond = 0.0f;
+	if (enableLimit)
+	{
+		float translation = tbDot(axis, p);
+		beyond = translation < lower ? lower - translation : (translation > upper ? translation - upper : 0.0f);
+	}
+	return sqrtf(across * across + beyond * beyond);
+}
+
+/// The frames may not turn relative to each other: their relative angle (signed, as Box2D v3.2).
+float tbPrismaticJointAngularSeparation(const tbWorld* world, const tbJoint* joint)
+{
+	return tbRelativeAngle(tbJointWorldFrameA(world, joint).q, tbJointWorldFrameB(world, joint).q);
+}

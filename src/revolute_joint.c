@@ -450,3 +450,21 @@ float tbRevoluteJoint_GetMaxMotorTorque(tbJointId jointId)
 	tbJoint* joint = tbGetRevolute(jointId, "tbRevoluteJoint_GetMaxMotorTorque", NULL, false);
 	return joint != NULL ? joint->revolute.maxMotorTorque : 0.0f;
 }
+
+/// The anchors must coincide: their distance.
+float tbRevoluteJointLinearSeparation(const tbWorld* world, const tbJoint* joint)
+{
+	return tbLength(tbSubPos(tbJointWorldFrameB(world, joint).p, tbJointWorldFrameA(world, joint).p));
+}
+
+/// Free to turn except past an enabled limit: how far the joint angle is outside [lower, upper].
+float tbRevoluteJointAngularSeparation(const tbWorld* world, const tbJoint* joint)
+{
+	const tbRevoluteJoint* r = &joint->revolute;
+	if (r->enableLimit == false)
+	{
+		return 0.0f;
+	}
+	float angle = tbRelativeAngle(tbJointWorldFrameA(world, joint).q, tbJointWorldFrameB(world, joint).q);
+	return angle < r->lowerAngle ? r->lowerAngle - angle : (angle > r->upperAngle ? angle - r->upperAngle : 0.0f);
+}

@@ -130,12 +130,14 @@ void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body)
 	tbProxyType type = body->type == tb_staticBody ? tb_proxyStatic : tb_proxyMovable;
 	shape->proxyKey = tbBroadPhase_CreateProxy(&world->broadPhase, shape->fatAABB, shape->filter.categoryBits,
 											   (int)(shape - world->shapes), type);
+	world->staticProxyCount += type == tb_proxyStatic ? 1 : 0;
 }
 
 void tbDestroyShapeProxy(tbWorld* world, tbShape* shape)
 {
 	if (shape->proxyKey != TB_NULL_INDEX)
 	{
+		world->staticProxyCount -= world->broadPhase.table.proxies[shape->proxyKey].type == tb_proxyStatic ? 1 : 0;
 		tbBroadPhase_DestroyProxy(&world->broadPhase, shape->proxyKey);
 		shape->proxyKey = TB_NULL_INDEX;
 	}
@@ -150,7 +152,7 @@ static tbAABB tbSweepBox(tbAABB box, tbVec2 d, float pad)
 
 float tbSpeculativeReach(const tbBody* body)
 {
-	return tbMaxFloat(TB_SPECULATIVE_REACH, TB_CONTINUOUS_FRACTION * body->minExtent);
+	return body->speculativeReach; // body.c, tbUpdateSpeculativeReach
 }
 
 /// Broad-phase boxes must contain where a body's shapes can go during the next step, so that every
@@ -838,6 +840,17 @@ bool tbShape_AreSensorEventsEnabled(tbShapeId shapeId)
 	return shape != NULL && shape->enableSensorEvents;
 }
 
+void tbShape_EnablePreSolveEvents(tbShapeId shapeId, bool flag)
+{
+	tbEnableShapeEvents(shapeId, "tbShape_EnablePreSolveEvents", tb_shapeEventPreSolve, flag);
+}
+
+bool tbShape_ArePreSolveEventsEnabled(tbShapeId shapeId)
+{
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_ArePreSolveEventsEnabled", NULL, false);
+	return shape != NULL && shape->enablePreSolveEvents;
+}
+
 bool tbShape_IsSensor(tbShapeId shapeId)
 {
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_IsSensor", NULL, false);
@@ -1076,5 +1089,12 @@ tbMassData tbShape_GetMassData(tbShapeId shapeId)
 {
 	tbMassData md = {0};
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetMassData", NULL, false);
+	return shape != NULL ? tbComputeShapeMass(&shape->geometry, shape->density) : md;
+}
+
+tbMassData tbShape_ComputeMassData(tbShapeId shapeId)
+{
+	tbMassData md = {0};
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_ComputeMassData", NULL, false);
 	return shape != NULL ? tbComputeShapeMass(&shape->geometry, shape->density) : md;
 }

@@ -228,3 +228,23 @@ float tbWeldJoint_GetAngularDampingRatio(tbJointId jointId)
 {
 	return tbGetWeldValue(jointId, "tbWeldJoint_GetAngularDampingRatio", offsetof(tbWeldJoint, angularDampingRatio));
 }
+
+/// Rigid in translation (linearHertz 0): the anchors' distance; a soft weld allows any.
+float tbWeldJointLinearSeparation(const tbWorld* world, const tbJoint* joint)
+{
+	if (joint->weld.linearHertz > 0.0f)
+	{
+		return 0.0f;
+	}
+	return tbLength(tbSubPos(tbJointWorldFrameB(world, joint).p, tbJointWorldFrameA(world, joint).p));
+}
+
+/// Rigid in rotation (angularHertz 0): the frames' relative angle (signed, as Box2D v3.2).
+float tbWeldJointAngularSeparation(const tbWorld* world, const tbJoint* joint)
+{
+	if (joint->weld.angularHertz > 0.0f)
+	{
+		return 0.0f;
+	}
+	return tbRelativeAngle(tbJointWorldFrameA(world, joint).q, tbJointWorldFrameB(world, joint).q);
+}

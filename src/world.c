@@ -27,14 +27,16 @@ tbWorldDef tbDefaultWorldDef(void)
 	tbWorldDef def;
 	memset(&def, 0, sizeof(def));
 	def.gravity = tbMakeVec2(0.0f, -10.0f);
-	def.restitutionThreshold = 1.0f;
-	def.hitEventThreshold = 1.0f;
+	// Speeds in length units per second (tbSetLengthUnitsPerMeter; 1 by default).
+	float units = tbGetLengthUnitsPerMeter();
+	def.restitutionThreshold = 1.0f * units;
+	def.hitEventThreshold = 1.0f * units;
 	def.contactHertz = 30.0f;
 	def.contactDampingRatio = 10.0f;
 	def.settledHertzRatio = 1.75f;
 	def.contactHertzFollowsSubStep = false;
-	def.maxContactPushSpeed = 3.0f;
-	def.maximumLinearSpeed = 4000.0f;
+	def.maxContactPushSpeed = 3.0f * units;
+	def.maximumLinearSpeed = tbMinFloat(4000.0f * units, TB_MAX_LINEAR_SPEED);
 	def.enableSleep = true;
 	def.broadPhase = tb_broadPhaseAuto;
 	def.narrowPhase = tb_narrowPhaseAuto;
@@ -311,6 +313,28 @@ static void tbUpdateAutoBroadPhase(tbWorld* world)
 	world->autoFastBodies = 0;
 }
 
+bool tbSetLengthUnitsPerMeter(float lengthUnits)
+{
+	const char* f = "tbSetLengthUnitsPerMeter";
+	if (tbIsValidFloat(lengthUnits) == false || lengthUnits < 0.001f || lengthUnits > 1000.0f)
+	{
+		tbReportError(f, "lengthUnits is %g (must be finite, 0.001 to 1000); pass your length units per metre, "
+						 "e.g. 100 for centimetres", (double)lengthUnits);
+		return false;
+	}
+	for (int i = 0; i < TB_MAX_WORLDS; ++i)
+	{
+		if (s_worlds[i] != NULL)
+		{
+			tbReportError(f, "a world exists; set the length units before creating any world (its tolerances "
+							 "and definitions were made in the old units)");
+			return false;
+		}
+	}
+	tbSetLengthUnits(lengthUnits);
+	return true;
+}
+
 tbWorldId tbCreateWorld(const tbWorldDef* def)
 {
 	if (tbCheckWorldDef(def) == false)
@@ -344,6 +368,8 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
 	tbBroadPhase_SetPairFilter(&world->broadPhase, tbContactPairFilter, world);
 	tbReserveCapacity(world, &def->capacity);
+	world->contactRecycleDistance = TB_RECYCLE_DISTANCE;
+	world->enableSpeculative = true;
 	s_worlds[slot] = world;
 	tbWorldId id = {(uint16_t)(slot + 1), world->generation};
 	return id;
@@ -464,6 +490,18 @@ static void tbUpdateCounters(tbWorld* world)
 	// touchingCount: set by the collide stage (contact.c), which reads every step contact's flags.
 }
 
+/// The counts tbWorldDef::capacity describes, kept at their largest (tbWorld_GetMaxCapacity).
+static void tbRecordMaxCapacity(tbWorld* world)
+{
+	tbCapacity* c = &world->maxCapacity;
+	int movableProxies = world->broadPhase.table.count - world->staticProxyCount;
+	c->staticShapeCount = tbMaxInt(c->staticShapeCount, world->staticProxyCount);
+	c->dynamicShapeCount = tbMaxInt(c->dynamicShapeCount, movableProxies);
+	c->staticBodyCount = tbMaxInt(c->staticBodyCount, world->staticBodyCount);
+	c->dynamicBodyCount = tbMaxInt(c->dynamicBodyCount, world->bodyCount - world->staticBodyCount);
+	c->contactCount = tbMaxInt(c->contactCount, world->contactCount);
+}
+
 /// The step: each stage is a function in the file of its concept, run top to bottom.
 bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 {
@@ -491,6 +529,7 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 		return false;
 	}
 	world->locked = true;
+	tbRecordMaxCapacity(world);
 	tbCompactAwakeSet(world); // every stage walks the awake list without holes
 	world->stepIndex += 1;
 	world->stepTime = timeStep;
@@ -675,6 +714,81 @@ bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio
 	world->def.contactDampingRatio = dampingRatio;
 	world->def.maxContactPushSpeed = pushSpeed;
 	return true;
+}
+
+bool tbWorld_SetContactRecycleDistance(tbWorldId worldId, float recycleDistance)
+{
+	const char* f = "tbWorld_SetContactRecycleDistance";
+	tbWorld* world = tbGetUnlockedWorld(worldId, f);
+	if (world == NULL || tbCheckLength(f, "recycleDistance", recycleDistance, false) == false)
+	{
+		return false;
+	}
+	world->contactRecycleDistance = recycleDistance;
+	return true;
+}
+
+float tbWorld_GetContactRecycleDistance(tbWorldId worldId)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetContactRecycleDistance");
+	return world != NULL ? world->contactRecycleDistance : 0.0f;
+}
+
+void tbWorld_EnableSpeculative(tbWorldId worldId, bool flag)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableSpeculative");
+	if (world != NULL)
+	{
+		world->enableSpeculative = flag;
+	}
+}
+
+tbAABB tbWorld_GetBounds(tbWorldId worldId)
+{
+	const char* f = "tbWorld_GetBounds";
+	tbAABB bounds = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (world == NULL)
+	{
+		return bounds;
+	}
+	if (world->locked)
+	{
+		// During the step the proxies are being moved (Box2D v3.2 refuses it too); a query callback may.
+		tbReportError(f, "the world is locked (stepping); read the bounds between steps");
+		return bounds;
+	}
+	// The union of the broad phase's boxes (fat for movable shapes, tight for static ones), as
+	// Box2D v3.2 takes its trees' root boxes; the same whatever the broad-phase method.
+	const tbProxyTable* table = &world->broadPhase.table;
+	bool any = false;
+	for (int key = 0; key < table->capacity; ++key)
+	{
+		const tbBroadProxy* p = table->proxies + key;
+		if (p->isFree == false)
+		{
+			bounds = any ? tbAABB_Union(bounds, p->aabb) : p->aabb;
+			any = true;
+		}
+	}
+	return bounds;
+}
+
+tbCapacity tbWorld_GetMaxCapacity(tbWorldId worldId)
+{
+	tbCapacity none = {0};
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetMaxCapacity");
+	return world != NULL ? world->maxCapacity : none;
+}
+
+void tbWorld_RebuildStaticTree(tbWorldId worldId)
+{
+	const char* f = "tbWorld_RebuildStaticTree";
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (world != NULL && tbStructureLocked(world, f, "rebuild the static tree") == false)
+	{
+		tbBroadPhase_RebuildStaticTree(&world->broadPhase);
+	}
 }
 
 bool tbWorld_SetRestitutionThreshold(tbWorldId worldId, float value)

@@ -24,7 +24,9 @@ typedef struct tbBody
 	tbPos center;				///< world centre of mass
 	tbVec2 linearVelocity;
 	float angularVelocity;
-	float minExtent;	///< smallest distance from the centre of mass to the surface (continuous collision)
+	/// Displacement per step its speculative contacts cover (tbSpeculativeReach, read per contact):
+	/// max(TB_SPECULATIVE_REACH, safetyFactor × minExtent), kept current by body.c.
+	float speculativeReach;
 	float maxExtent;	///< largest distance from the centre of mass to any shape point
 	float gravityScale;
 	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
@@ -44,6 +46,8 @@ typedef struct tbBody
 	float mass, invMass;
 	float inertia, invInertia; ///< about the centre of mass
 
+	float minExtent;	///< smallest distance from the centre of mass to the surface (continuous collision)
+	float safetyFactor; ///< continuous collision safety factor (tbBody_SetSafetyFactor), default 0.5
 	float linearDamping;
 	float angularDamping;
 	float sleepThreshold;
@@ -296,6 +300,17 @@ typedef struct tbWorld
 	bool jointWakeDirty;
 	struct tbJointOrderCache* jointOrderCache; ///< the joints' solve order of the last step (constraint_graph.c)
 	int kinematicBodyCount; ///< kinematic bodies in the world (a moving one wakes its joined bodies)
+	int staticBodyCount;	///< static bodies in the world (tbWorld_GetMaxCapacity)
+	int staticProxyCount;	///< broad-phase proxies of static shapes (the rest are movable)
+	/// Largest counts seen at the start of any step (tbWorld_GetMaxCapacity: a tbWorldDef::capacity
+	/// that makes a rerun allocate nothing more).
+	tbCapacity maxCapacity;
+	/// Manifold recycling's distance allowance (m): TB_RECYCLE_DISTANCE unless the game set another
+	/// (tbWorld_SetContactRecycleDistance); 0 recomputes every manifold (contact.c).
+	float contactRecycleDistance;
+	/// False only for tests (tbWorld_EnableSpeculative): a two-point manifold drops a point more
+	/// than 1.5 × TB_LINEAR_SLOP apart, so the solver sees no speculative second point (contact.c).
+	bool enableSpeculative;
 	uint32_t gatheredRemovals; ///< awakeRemovals when the collide stage gathered its contacts
 	int gatheredAwakeCount;	  ///< awakeBodyCount then: bodies woken since are appended after it
 	int* islandStack;
@@ -358,6 +373,7 @@ typedef enum tbShapeEventKind
 	tb_shapeEventContacts,
 	tb_shapeEventHits,
 	tb_shapeEventSensors,
+	tb_shapeEventPreSolve,
 } tbShapeEventKind;
 
 /// Turn one of a shape's event flags on or off and refresh the flags its contacts hold (contact.c).
@@ -383,7 +399,8 @@ bool tbShouldShapesCollide(tbFilter a, tbFilter b);
 /// Check user geometry (finite, positive radii, valid polygon); reports an error naming `f`.
 bool tbCheckGeometry(const char* f, const tbGeometry* geometry);
 /// Displacement per step that a body's speculative contacts cover (m): max(TB_SPECULATIVE_REACH,
-/// TB_CONTINUOUS_FRACTION × minExtent). Beyond it the body is swept by continuous collision.
+/// safetyFactor × minExtent), the body's safety factor TB_CONTINUOUS_FRACTION by default. Beyond it
+/// the body is swept by continuous collision.
 float tbSpeculativeReach(const tbBody* body);
 /// Refresh the shape boxes of a body and move broad-phase proxies that left their fat boxes.
 void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);

@@ -9,6 +9,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "error_recorder.h"
+
 #define WALL_X 5.0f
 #define WALL_HALF_THICKNESS 0.05f // the 0.1 m thick wall of the issue
 
@@ -268,5 +270,55 @@ Test(continuous, resting_scene_does_no_continuous_work)
 	}
 	cr_assert_eq(calls, 0);
 	cr_assert_eq(fast, 0);
+	tbDestroyWorld(world);
+}
+
+// The safety factor (Box2D v3.2's) scales the thickness part of the reach: a disc of radius 1
+// (thickness 1) moving 0.4 m per step is within its default reach max(0.1, 0.5·1) = 0.5 m, so the
+// speculative contacts stop it and nothing is swept; with safety factor 0.2 its reach is 0.2 m and
+// it is swept (fastBodies counts it). Either way it stops at the wall.
+Test(continuous, safety_factor_sets_which_bodies_are_swept, .init = SetupErrors, .fini = TeardownErrors)
+{
+	cr_assert_float_eq(tbDefaultBodyDef().safetyFactor, TB_CONTINUOUS_FRACTION, 0.0f);
+	for (int pass = 0; pass < 2; ++pass)
+	{
+		tbWorldId world = MakeWallWorld(tb_continuousDefault);
+		tbGeometry disc = Circle(1.0f);
+		tbBodyId body = Launch(world, &disc, 24.0f, 0.0f, tb_rot_identity, false);
+		cr_assert_float_eq(tbBody_GetSafetyFactor(body), 0.5f, 0.0f);
+		if (pass == 1)
+		{
+			cr_assert(tbBody_SetSafetyFactor(body, 0.2f));
+			cr_assert_float_eq(tbBody_GetSafetyFactor(body), 0.2f, 0.0f);
+		}
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+		cr_assert_eq(tbWorld_GetCounters(world).fastBodies, pass, "pass %d", pass);
+		cr_assert_not(PassesThrough(world, body));
+		tbDestroyWorld(world);
+	}
+
+	tbWorldId world = MakeWallWorld(tb_continuousDefault);
+	tbGeometry disc = Circle(1.0f);
+	tbBodyId body = Launch(world, &disc, 24.0f, 0.0f, tb_rot_identity, false);
+	int before = s_errors;
+	cr_assert_not(tbBody_SetSafetyFactor(body, -0.1f));
+	ExpectError(before, "tbBody_SetSafetyFactor", "safetyFactor");
+	before = s_errors;
+	cr_assert_not(tbBody_SetSafetyFactor(body, NAN));
+	ExpectError(before, "tbBody_SetSafetyFactor", "safetyFactor");
+	cr_assert_float_eq(tbBody_GetSafetyFactor(body), 0.5f, 0.0f, "unchanged");
+	tbBodyDef def = tbDefaultBodyDef();
+	def.safetyFactor = INFINITY;
+	before = s_errors;
+	cr_assert(tbBody_IsValid(tbCreateBody(world, &def)) == false);
+	ExpectError(before, "tbCreateBody", "safetyFactor");
+	tbDestroyBody(body);
+	before = s_errors;
+	cr_assert_not(tbBody_SetSafetyFactor(body, 0.1f));
+	ExpectError(before, "tbBody_SetSafetyFactor", "");
+	before = s_errors;
+	float stale = tbBody_GetSafetyFactor(body);
+	ExpectError(before, "tbBody_GetSafetyFactor", "");
+	cr_assert_float_eq(stale, 0.0f, 0.0f);
 	tbDestroyWorld(world);
 }

@@ -74,14 +74,52 @@ TB_API void tbSetErrorCallback(tbErrorFcn* errorFcn, void* context);
 /// Number of errors reported since the program started (a convenience for tests and tools).
 TB_API int tbGetErrorCount(void);
 
+/// Log hook (Box2D v3.2's b2LogFcn): receives what Tumble has to say outside a return value, one
+/// line without its newline. While no error hook is set (tbSetErrorCallback), refusals reach it
+/// too, as "tumble error: <message>", so a program ported from v3 that only sets a log function
+/// sees them in its log; an error hook, when set, takes them instead.
+typedef void tbLogFcn(const char* message);
+
+/// Replace the log hook. NULL restores the default, which prints to stderr.
+TB_API void tbSetLogFcn(tbLogFcn* logFcn);
+
 /// Assertion hook for internal invariants (not for user errors, which go to the error hook).
 /// Return non-zero to break into the debugger.
 typedef int tbAssertFcn(const char* condition, const char* fileName, int lineNumber);
 TB_API void tbSetAssertFcn(tbAssertFcn* assertFcn);
 
+/// Report a failed internal invariant (what TB_ASSERT calls, Box2D v3.2's b2InternalAssert): the
+/// assert hook decides (its return value is returned: non-zero asks the caller to break into the
+/// debugger); without a hook it prints the condition and location to stderr and aborts.
+TB_API int tbInternalAssert(const char* condition, const char* fileName, int lineNumber);
+
+/// Length units per metre (Box2D v3.2's): 1 by default (metres). A game in pixels (say 32 per
+/// metre) or centimetres (100) passes that number before it creates any world, and then gives every
+/// length in its units; Tumble scales its length tolerances with it (constants.h: linear slop,
+/// speculative distances, broad-phase margins, sleep speed, default thresholds and speed caps, and
+/// the air density of tbShape_ApplyWind). Mass, gravity and forces are the game's to choose in the
+/// same units. Refused (false, error hook, nothing changed): not finite or outside [0.001, 1000],
+/// or a world exists.
+TB_API bool tbSetLengthUnitsPerMeter(float lengthUnits);
+TB_API float tbGetLengthUnitsPerMeter(void);
+
 /// Milliseconds and ticks for profiling. Not used by the simulation itself.
 TB_API uint64_t tbGetTicks(void);
 TB_API float tbGetMilliseconds(uint64_t ticks);
+
+/// Milliseconds since *ticks (tbGetTicks), and *ticks set to now: the lap time of a loop.
+TB_API float tbGetMillisecondsAndReset(uint64_t* ticks);
+
+/// Give up the rest of this thread's time slice (sched_yield, SwitchToThread): for a task system's
+/// busy wait.
+TB_API void tbYield(void);
+
+/// Start value of tbHash (djb2's).
+#define TB_HASH_INIT 5381
+
+/// djb2 hash (Bernstein): for i in 0..count−1, hash = 33·hash + data[i], modulo 2^32. Chain calls
+/// to hash several buffers; start from TB_HASH_INIT. For determinism checks, not for security.
+TB_API uint32_t tbHash(uint32_t hash, const uint8_t* data, int count);
 
 #ifdef __cplusplus
 }

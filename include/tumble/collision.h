@@ -125,6 +125,10 @@ TB_API int tbDecomposePolygon(const tbVec2* points, int count, tbPolygon* pieces
 /// Polygon from a hull, offset by a local transform.
 TB_API tbPolygon tbMakeOffsetPolygon(const tbHull* hull, tbVec2 position, tbRot rotation);
 
+/// Rounded polygon (radius ≥ 0) from a hull, offset by a local transform: the hull's points moved
+/// by (position, rotation), then inflated by radius.
+TB_API tbPolygon tbMakeOffsetRoundedPolygon(const tbHull* hull, tbVec2 position, tbRot rotation, float radius);
+
 /// Square with half-width h.
 TB_API tbPolygon tbMakeSquare(float halfWidth);
 
@@ -136,6 +140,9 @@ TB_API tbPolygon tbMakeRoundedBox(float halfWidth, float halfHeight, float radiu
 
 /// Box offset by a local position and rotation.
 TB_API tbPolygon tbMakeOffsetBox(float halfWidth, float halfHeight, tbVec2 center, tbRot rotation);
+
+/// Rounded box (core half-widths plus radius ≥ 0) offset by a local position and rotation.
+TB_API tbPolygon tbMakeOffsetRoundedBox(float halfWidth, float halfHeight, tbVec2 center, tbRot rotation, float radius);
 
 /// Polygon transformed by a rigid transform.
 TB_API tbPolygon tbTransformPolygon(tbTransform transform, const tbPolygon* polygon);
@@ -170,6 +177,11 @@ typedef struct tbRayCastInput
 	tbVec2 translation;
 	float maxFraction;
 } tbRayCastInput;
+
+/// True when a ray cast would take the input: origin and translation finite, maxFraction finite
+/// with 0 ≤ maxFraction < TB_HUGE. A predicate: reports nothing (a NULL input is refused through
+/// the error hook and is not valid).
+TB_API bool tbIsValidRay(const tbRayCastInput* input);
 
 /// Result of a ray or shape cast.
 typedef struct tbCastOutput
@@ -221,6 +233,11 @@ TB_API tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius);
 
 /// Proxy of any shape (circle: 1 point; capsule and segment: 2; polygon: its vertices).
 TB_API tbShapeProxy tbMakeShapeProxy(const tbGeometry* shape);
+
+/// Proxy of count points moved by a rigid transform (position, rotation), with a radius: the same
+/// checks as tbMakeProxy on the points, the radius and the transform (finite position, unit
+/// rotation); a refused input gives an empty proxy.
+TB_API tbShapeProxy tbMakeOffsetProxy(const tbVec2* points, int count, float radius, tbVec2 position, tbRot rotation);
 
 /// Warm-start cache for GJK: the support indices of the last simplex. Zero-initialise for a cold start.
 typedef struct tbSimplexCache
@@ -321,6 +338,26 @@ typedef struct tbShapeCastPairInput
 /// shapes that never close in (zero translation included) report no hit. A proxy with no points
 /// is refused through the error hook (no hit).
 TB_API tbCastOutput tbShapeCast(const tbShapeCastPairInput* input);
+
+/// Input of a shape cast against one shape (Box2D v3.2's b2ShapeCastInput): a proxy moving by
+/// translation, in the shape's frame.
+typedef struct tbShapeCastInput
+{
+	tbShapeProxy proxy;	  ///< the moving shape, in the fixed shape's frame
+	tbVec2 translation;	  ///< its motion
+	float maxFraction;	  ///< of the translation, typically 1
+	bool canEncroach;	  ///< allow the final separation to be less than the radii (as tbShapeCastPairInput)
+} tbShapeCastInput;
+
+/// A proxy swept against one shape in that shape's frame: tbShapeCast with the shape as proxy A at
+/// the identity, so the output point and normal are in the shape's frame. Refused through the error
+/// hook (no hit): a NULL pointer, a shape point that is not finite or beyond TB_MAX_COORDINATE, a
+/// negative radius, a polygon count outside 3..TB_MAX_POLYGON_VERTICES, an empty proxy, a
+/// non-finite translation, a maxFraction that is not finite and ≥ 0.
+TB_API tbCastOutput tbShapeCastCircle(const tbCircle* shape, const tbShapeCastInput* input);
+TB_API tbCastOutput tbShapeCastCapsule(const tbCapsule* shape, const tbShapeCastInput* input);
+TB_API tbCastOutput tbShapeCastSegment(const tbSegment* shape, const tbShapeCastInput* input);
+TB_API tbCastOutput tbShapeCastPolygon(const tbPolygon* shape, const tbShapeCastInput* input);
 
 // ---------------------------------------------------------------------------------------------
 // Character movers (mover.c), Box2D v3.2's kit for characters moved by the game, not by forces:

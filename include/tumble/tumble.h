@@ -86,6 +86,48 @@ TB_API tbWorldDef tbWorld_GetDef(tbWorldId worldId);
 TB_API tbProfile tbWorld_GetProfile(tbWorldId worldId);
 TB_API tbCounters tbWorld_GetCounters(tbWorldId worldId);
 
+/// Manifold recycling's distance (m, Box2D v3.2's contact recycle distance): a touching polygon or
+/// segment pair keeps its manifold while neither body moved more than this relative to the other
+/// (and less than TB_RECYCLE_ANGLE, and less than the pair's margin allows, contact.c) since it was
+/// computed. Default TB_RECYCLE_DISTANCE (0.02 m); 0 recomputes every manifold. Refused (false,
+/// error hook): stale id, locked world, not finite and within 0..TB_MAX_COORDINATE.
+TB_API bool tbWorld_SetContactRecycleDistance(tbWorldId worldId, float recycleDistance);
+TB_API float tbWorld_GetContactRecycleDistance(tbWorldId worldId);
+
+/// For tests (Box2D v3.2's switch): false drops, of a two-point manifold, a point more than
+/// 1.5 × TB_LINEAR_SLOP apart, so the solver sees no speculative second point. Default true.
+TB_API void tbWorld_EnableSpeculative(tbWorldId worldId, bool flag);
+
+/// The union of every shape's broad-phase box (fat for movable shapes, tight for static ones);
+/// all zero for a world without shapes in the broad phase. Refused (error hook, zero box) during the
+/// step, e.g. from a pre-solve callback; allowed in a query callback.
+TB_API tbAABB tbWorld_GetBounds(tbWorldId worldId);
+
+/// The largest counts (static and dynamic-or-kinematic shapes in the broad phase and bodies, and
+/// contacts) seen at the start of any step so far: a tbWorldDef::capacity with which the same run
+/// allocates no more for these arrays.
+TB_API tbCapacity tbWorld_GetMaxCapacity(tbWorldId worldId);
+
+/// Rebuild the static shapes' tree now (binned SAH; tree broad phase only, otherwise nothing). The
+/// tree is rebuilt on its own after bulk static insertions; trajectories do not depend on its shape.
+/// Refused (error hook) during the step and inside query callbacks (the tree may be being walked).
+TB_API void tbWorld_RebuildStaticTree(tbWorldId worldId);
+
+/// A 64-bit hash of the simulation state for determinism checks (a desync between two runs, a
+/// rollback): two worlds that simulated the same way bit for bit have the same hash. What it covers
+/// (world_diagnostics.c): each live body in id order (id, type, awake, enabled,
+/// transform, centre of mass, velocities, forces, sleep time), each live contact in id order (its
+/// shapes, flags, and each manifold point's separation and impulses), each live joint in id order
+/// (type, bodies, accumulated impulses of its kind) and the pools' counts and high-water marks.
+/// Not user data, names, callbacks, settings, the broad phase's layout or free slots. FNV-1a
+/// over the values' bytes. 0 for a refused id.
+TB_API uint64_t tbWorld_GetStateHash(tbWorldId worldId);
+
+/// Write the bytes each of the world's arrays holds, and their total, to tumble_memory.txt in
+/// the current directory (Box2D v3.2 writes box2d_memory.txt). Refused (error hook): stale id;
+/// a file that cannot be opened is reported too.
+TB_API void tbWorld_DumpMemoryStats(tbWorldId worldId);
+
 // Queries -------------------------------------------------------------------------------------
 
 /// Overlap callback: return false to stop the query. Inside any query callback the world may be
@@ -209,6 +251,9 @@ TB_API float tbBody_GetMass(tbBodyId bodyId);
 TB_API float tbBody_GetRotationalInertia(tbBodyId bodyId);
 TB_API tbVec2 tbBody_GetLocalCenterOfMass(tbBodyId bodyId);
 TB_API tbPos tbBody_GetWorldCenterOfMass(tbBodyId bodyId);
+/// Box2D v3.2's names for the two above: the centre of mass in the body frame and in world space.
+TB_API tbVec2 tbBody_GetLocalCenter(tbBodyId bodyId);
+TB_API tbPos tbBody_GetWorldCenter(tbBodyId bodyId);
 TB_API tbMassData tbBody_GetMassData(tbBodyId bodyId);
 /// Override the mass from the shapes (mass and inertia ≥ 0, centre local); a later shape change,
 /// tbBody_ApplyMassFromShapes or tbShape_SetDensity with updateBodyMass puts the shapes' back.
@@ -236,6 +281,11 @@ TB_API bool tbBody_IsSleepEnabled(tbBodyId bodyId);
 /// Speed (m/s) below which the body counts as resting (its fastest point: |v| + |ω|·extent).
 TB_API bool tbBody_SetSleepThreshold(tbBodyId bodyId, float sleepThreshold);
 TB_API float tbBody_GetSleepThreshold(tbBodyId bodyId);
+/// Continuous collision safety factor (tbBodyDef::safetyFactor): finite and ≥ 0, non-dimensional.
+/// The body is swept when it moves more than max(TB_SPECULATIVE_REACH, safetyFactor × its
+/// thickness) in a step; smaller is safer, 0.01–0.5 typical, default 0.5.
+TB_API bool tbBody_SetSafetyFactor(tbBodyId bodyId, float safetyFactor);
+TB_API float tbBody_GetSafetyFactor(tbBodyId bodyId);
 /// Drop the force and torque accumulated since the last step.
 TB_API void tbBody_ClearForces(tbBodyId bodyId);
 /// Velocity of a point fixed to the body: v + ω × r, r from the centre of mass (world axes).
@@ -307,6 +357,11 @@ TB_API void tbShape_EnableHitEvents(tbShapeId shapeId, bool flag);
 TB_API bool tbShape_AreHitEventsEnabled(tbShapeId shapeId);
 TB_API void tbShape_EnableSensorEvents(tbShapeId shapeId, bool flag);
 TB_API bool tbShape_AreSensorEventsEnabled(tbShapeId shapeId);
+/// Pre-solve events (tbShapeDef::enablePreSolveEvents): the world's pre-solve callback sees the
+/// contacts of this shape (either shape enabling them suffices); existing contacts follow from the
+/// next step. Refused (error hook): stale id, locked world.
+TB_API void tbShape_EnablePreSolveEvents(tbShapeId shapeId, bool flag);
+TB_API bool tbShape_ArePreSolveEventsEnabled(tbShapeId shapeId);
 TB_API bool tbShape_IsSensor(tbShapeId shapeId);
 TB_API bool tbShape_SetDensity(tbShapeId shapeId, float density, bool updateBodyMass);
 TB_API float tbShape_GetDensity(tbShapeId shapeId);
@@ -331,6 +386,20 @@ TB_API tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target);
 /// The ray origin → origin + translation against one shape; the hit point a world position.
 TB_API tbWorldCastOutput tbShape_RayCast(tbShapeId shapeId, tbPos origin, tbVec2 translation);
 TB_API tbMassData tbShape_GetMassData(tbShapeId shapeId);
+/// Box2D v3.2's name for tbShape_GetMassData: the shape's mass, centre (body frame) and rotational
+/// inertia about that centre, from its geometry and density.
+TB_API tbMassData tbShape_ComputeMassData(tbShapeId shapeId);
+/// Wind on a shape (Box2D v3.2's b2Shape_ApplyWind): a force from the air (1.225 kg/m³, unit depth)
+/// flowing at u = wind − drag·v past the shape (v: the velocity of the shape's centroid; drag 0
+/// ignores the shape's own motion, 1 makes u the true relative air velocity), added to the body's
+/// force and torque for the next step. The pressure ½ρ|u|² acts on the width the shape shows the
+/// flow: 2r for a circle (at its centre); for a capsule 2r plus its axis' projection, for a polygon
+/// each face turned into the flow (the rounding radius ignored), each with a sideways part
+/// lift × (n × û)·perp(û) (n: the face's normal). True when applied. Ignored (false, no error, as
+/// the tbBody_Apply* functions): segments and chain segments (they catch no wind), static,
+/// kinematic and disabled bodies, a sleeping body unless wake. Refused (false, error hook, nothing
+/// changed): stale id, locked world, non-finite wind or lift, drag not finite and ≥ 0.
+TB_API bool tbShape_ApplyWind(tbShapeId shapeId, tbVec2 wind, float drag, float lift, bool wake);
 /// A chain segment's geometry with its ghost points (an error and zeros for another kind).
 TB_API tbChainSegment tbShape_GetChainSegment(tbShapeId shapeId);
 /// The chain a segment belongs to (null for any other shape).
@@ -383,6 +452,16 @@ TB_API void tbJoint_WakeBodies(tbJointId jointId);
 TB_API tbVec2 tbJoint_GetConstraintForce(tbJointId jointId);
 /// Torque the joint applies to body B (N·m) besides the moment of its force.
 TB_API float tbJoint_GetConstraintTorque(tbJointId jointId);
+/// How far the joint is from holding now, from the bodies' transforms, not counting admissible
+/// motion (Box2D v3.2's): linear in m, angular in rad. Distance: |length − rest length| when rigid,
+/// else how far past an enabled limit. Prismatic and wheel: √(offset across the axis² + distance past
+/// an enabled limit²). Revolute: the anchors' distance. Weld: the anchors' distance when linearHertz
+/// is 0. Angular: prismatic, and weld when angularHertz is 0, the frames' relative angle (signed,
+/// as v3); revolute, how far past an enabled limit. Every other case (motor, mover, pogo, filter
+/// joints; wheel's angle) is 0. Frames include their local rotations (v3 reads the bodies'
+/// rotations; the same for identity frames). 0 and the error hook for a stale id.
+TB_API float tbJoint_GetLinearSeparation(tbJointId jointId);
+TB_API float tbJoint_GetAngularSeparation(tbJointId jointId);
 TB_API bool tbJoint_SetConstraintTuning(tbJointId jointId, float hertz, float dampingRatio);
 TB_API void tbJoint_GetConstraintTuning(tbJointId jointId, float* hertz, float* dampingRatio);
 TB_API bool tbJoint_SetForceThreshold(tbJointId jointId, float threshold);

@@ -174,6 +174,11 @@ typedef struct tbBodyDef
 	float angularDamping;	///< 1/s, ≥ 0
 	float gravityScale;		///< default 1
 	float sleepThreshold;	///< m/s, default TB_LINEAR_SLEEP_TOLERANCE
+	/// Continuous collision safety factor (Box2D v3.2's), default TB_CONTINUOUS_FRACTION = 0.5,
+	/// finite and ≥ 0: the body is swept by continuous collision when it moves more than
+	/// max(TB_SPECULATIVE_REACH, safetyFactor × its thickness) in a step. Smaller is safer and costs
+	/// more sweeps (and the hitches of moving back to the time of impact); typical 0.01–0.5.
+	float safetyFactor;
 	void* userData;
 	const char* name;		///< optional, not copied
 	bool enableSleep;		///< default true
@@ -770,6 +775,11 @@ typedef enum tbHexColor
 	tb_colorYellow = 0xFFFF00,
 	tb_colorYellowGreen = 0x9ACD32,
 } tbHexColor;
+
+/// The colour a debug view gives graph colour `index` of the contact solver (Box2D v3.2's
+/// b2GetGraphColor): 0..TB_GRAPH_COLOR_COUNT − 1 the colours, TB_GRAPH_COLOR_COUNT the overflow
+/// (contacts solved one at a time). Another index is refused through the error hook (black).
+TB_API tbHexColor tbGetGraphColor(int index);
 
 typedef struct tbDebugDraw
 {
