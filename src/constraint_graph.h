@@ -11,5 +11,6 @@ void tbColorConstraints(tbStepContext* context);
 void tbColorJoints(tbStepContext* context);
 /// Release the joint order kept from the last step (world destruction).
 void tbDestroyJointOrderCache(tbWorld* world);
+void tbDestroyContactColorCache(tbWorld* world);
 /// Forget the blocks (their memory is the step arena's).
 void tbReleaseColors(tbStepContext* context);

@@ -409,6 +409,7 @@ static void tbFreeWorldArrays(tbWorld* w)
 	TB_ARRAY_FREE(w->collideKeys, w->collideKeyCapacity);
 	TB_ARRAY_FREE(w->contactBodies, w->contactBodyCapacity);
 	tbDestroyJointOrderCache(w);
+	tbDestroyContactColorCache(w);
 	TB_ARRAY_FREE(w->islandStack, w->islandStackCapacity);
 	TB_ARRAY_FREE(w->islandBodies, w->islandBodyCapacity);
 	TB_ARRAY_FREE(w->beginEvents, w->beginCapacity);

@@ -299,6 +299,7 @@ typedef struct tbWorld
 	/// way such a joint appears.
 	bool jointWakeDirty;
 	struct tbJointOrderCache* jointOrderCache; ///< the joints' solve order of the last step (constraint_graph.c)
+	struct tbContactColorCache* contactColorCache; ///< the contacts' colours of the last step (constraint_graph.c)
 	int kinematicBodyCount; ///< kinematic bodies in the world (a moving one wakes its joined bodies)
 	int staticBodyCount;	///< static bodies in the world (tbWorld_GetMaxCapacity)
 	int staticProxyCount;	///< broad-phase proxies of static shapes (the rest are movable)
