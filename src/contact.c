@@ -469,16 +469,24 @@ static float tbOriginExtent(const tbBody* body)
 /// (q as the vector (cos, sin)). The same holds in B's frame with A's extent; both bound the change
 /// of every distance between a point of A and a point of B, so the smaller one is taken (a box on a
 /// kinematic drum: the drum's 14 m extent does not count, the box's 0.18 m does).
-static float tbRelativeMotion(tbTransform relative0, tbTransform relative, const tbBody* bodyA, const tbBody* bodyB)
+/// True when the smaller bound is below tolerance; B's frame is looked at only when A's bound is not
+/// (most resting pairs pass on it). False for a non-finite pose: then A's bound is NaN, and B's,
+/// made of the same numbers, too.
+static bool tbMovedLessThan(tbTransform relative0, tbTransform relative, const tbBody* bodyA, const tbBody* bodyB,
+							float tolerance)
 {
 	float chord = sqrtf((relative.q.c - relative0.q.c) * (relative.q.c - relative0.q.c) +
 						(relative.q.s - relative0.q.s) * (relative.q.s - relative0.q.s));
 	float inA = tbDistance(relative.p, relative0.p) + chord * tbOriginExtent(bodyB);
+	if (inA < tolerance)
+	{
+		return true;
+	}
 	// B's pose in A's frame inverted: A's origin in B's frame is −qᵀ·p.
 	tbVec2 pB = tbNeg(tbInvRotateVector(relative.q, relative.p));
 	tbVec2 pB0 = tbNeg(tbInvRotateVector(relative0.q, relative0.p));
 	float inB = tbDistance(pB, pB0) + chord * tbOriginExtent(bodyA);
-	return tbMinFloat(inA, inB);
+	return inB < tolerance;
 }
 
 /// Manifold recycling (Box2D v3's contact recycling; the persistent manifolds of Coumans'
@@ -496,7 +504,7 @@ static float tbRelativeMotion(tbTransform relative0, tbTransform relative, const
 ///   two frame normals), off by at most half the relative turn;
 /// - the anchors are the material points xA − cA and xB − cB, as the solver would rotate them.
 /// When to recycle: a feature pair not in the manifold was at least margin0 (the speculative margin
-/// then) apart and has closed by at most the relative motion δ since (tbRelativeMotion); in this
+/// then) apart and has closed by at most the relative motion δ since (tbMovedLessThan); in this
 /// step it closes by at most margin − TB_SPECULATIVE_DISTANCE more. So while
 ///     δ < min(recycleDistance, margin0 − margin + TB_SPECULATIVE_DISTANCE)
 /// no feature the narrow phase would add can reach contact during the step (a faster approach than
@@ -530,7 +538,7 @@ static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbB
 	// the two unit rotations, with no atan2 (which cost 4 % of a pyramid step here).
 	float cosTurn = base->relative.q.c * relative.q.c + base->relative.q.s * relative.q.s;
 	// Written so that NaN fails: a non-finite pose always gets a new manifold.
-	if (!(tbRelativeMotion(base->relative, relative, bodyA, bodyB) < tolerance && cosTurn > TB_RECYCLE_COS_ANGLE))
+	if (!(cosTurn > TB_RECYCLE_COS_ANGLE && tbMovedLessThan(base->relative, relative, bodyA, bodyB, tolerance)))
 	{
 		return false;
 	}
