@@ -336,6 +336,6 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	}
 	RayCastEverything(&a, xfB.p, translation, a.valid && validB);
 	TreeEverything(&in);
-	FUZZ_CHECK(tbGetByteCount() == 0, "%d bytes left", tbGetByteCount());
+	FUZZ_CHECK(tbGetByteCount() == 0, "%lld bytes left", (long long)tbGetByteCount());
 	return 0;
 }

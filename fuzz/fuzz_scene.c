@@ -56,6 +56,6 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 	Scene_Destroy(reloaded);
 	free(exported);
 	Scene_Destroy(scene);
-	FUZZ_CHECK(tbGetByteCount() == 0, "%d bytes left", tbGetByteCount());
+	FUZZ_CHECK(tbGetByteCount() == 0, "%lld bytes left", (long long)tbGetByteCount());
 	return 0;
 }

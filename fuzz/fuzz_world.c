@@ -431,6 +431,6 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 			tbDestroyWorld(ids.worlds[i]);
 		}
 	}
-	FUZZ_CHECK(tbGetByteCount() == 0, "%d bytes left after destroying every world", tbGetByteCount());
+	FUZZ_CHECK(tbGetByteCount() == 0, "%lld bytes left after destroying every world", (long long)tbGetByteCount());
 	return 0;
 }

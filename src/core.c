@@ -42,7 +42,7 @@ static void tbSystemAlignedFree(void* memory)
 
 static tbAllocFcn* s_allocFcn = NULL;
 static tbFreeFcn* s_freeFcn = NULL;
-static _Atomic int s_byteCount = 0;
+static _Atomic int64_t s_byteCount = 0;
 static _Atomic int s_errorCount = 0;
 static tbErrorFcn* s_errorFcn = NULL;
 static void* s_errorContext = NULL;
@@ -71,7 +71,7 @@ void tbSetAllocator(tbAllocFcn* allocFcn, tbFreeFcn* freeFcn)
 	s_freeFcn = freeFcn;
 }
 
-int tbGetByteCount(void)
+int64_t tbGetByteCount(void)
 {
 	return atomic_load(&s_byteCount);
 }

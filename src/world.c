@@ -487,7 +487,7 @@ static void tbUpdateCounters(tbWorld* world)
 	c->contactCount = world->contactCount;
 	c->awakeBodyCount = tbAwakeBodyCount(world);
 	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
-	c->byteCount = tbGetByteCount();
+	c->byteCount = (int)tbGetByteCount(); // tbCounters keeps v3.2's int
 	// touchingCount: set by the collide stage (contact.c), which reads every step contact's flags.
 }
 

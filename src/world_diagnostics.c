@@ -225,6 +225,6 @@ void tbWorld_DumpMemoryStats(tbWorldId worldId)
 	tbDumpArray(file, "body move", (long long)world->moveCapacity * (long long)sizeof(tbBodyMoveEvent), &total);
 	tbDumpArray(file, "joint", (long long)world->jointEventCapacity * (long long)sizeof(tbJointEvent), &total);
 	fprintf(file, "\ntotal of the above: %lld\n", total);
-	fprintf(file, "bytes allocated by Tumble (all worlds, tbGetByteCount): %d\n", tbGetByteCount());
+	fprintf(file, "bytes allocated by Tumble (all worlds, tbGetByteCount): %lld\n", (long long)tbGetByteCount());
 	fclose(file);
 }

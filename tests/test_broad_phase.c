@@ -196,7 +196,7 @@ Test(broad_phase, identical_pairs_2000_moving_boxes_200_steps)
 	cr_assert_gt(total, 0);
 	cr_log_info("pairs reported over 200 steps: %ld; tree height %d", total, tbBroadPhase_GetTreeHeight(&scene->bp[0]));
 	DestroyScene(scene);
-	cr_assert_eq(tbGetByteCount(), startBytes, "bytes left: %d", tbGetByteCount() - startBytes);
+	cr_assert_eq(tbGetByteCount(), startBytes, "bytes left: %d", (int)(tbGetByteCount() - startBytes));
 }
 
 Test(broad_phase, static_static_never_reported)

@@ -465,7 +465,7 @@ Test(dynamic_tree, visit_nodes_and_no_bytes_left)
 	cr_assert_eq(counts[0], 499);
 	cr_assert_gt(tbGetByteCount(), startBytes);
 	tbDynamicTree_Destroy(&tree);
-	cr_assert_eq(tbGetByteCount(), startBytes, "bytes left after destroy: %d", tbGetByteCount() - startBytes);
+	cr_assert_eq(tbGetByteCount(), startBytes, "bytes left after destroy: %d", (int)(tbGetByteCount() - startBytes));
 }
 
 typedef struct BoxCastHits

@@ -709,7 +709,7 @@ Test(memory, no_bytes_left_after_destroy)
 	}
 	cr_assert_gt(tbGetByteCount(), start);
 	tbDestroyWorld(world);
-	cr_assert_eq(tbGetByteCount(), start, "%d bytes leaked", tbGetByteCount() - start);
+	cr_assert_eq(tbGetByteCount(), start, "%d bytes leaked", (int)(tbGetByteCount() - start));
 }
 
 // --- material mixing ----------------------------------------------------------------------------

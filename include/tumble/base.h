@@ -61,7 +61,7 @@ typedef void tbFreeFcn(void* memory);
 TB_API void tbSetAllocator(tbAllocFcn* allocFcn, tbFreeFcn* freeFcn);
 
 /// Bytes currently allocated by Tumble across all worlds. Zero once every world is destroyed.
-TB_API int tbGetByteCount(void);
+TB_API int64_t tbGetByteCount(void);
 
 /// Error hook: receives one message per rejected call. The message names the function,
 /// the bad argument and what to do, e.g.
