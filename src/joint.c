@@ -269,6 +269,14 @@ static bool tbCheckFrame(const char* f, const char* name, tbTransform frame)
 					  (double)frame.p.y);
 		return false;
 	}
+	if (tbIsCoordinate(frame.p) == false)
+	{
+		// An anchor is a point of the body, as a shape's vertex is: the same bound, beyond which the
+		// solver's products of lengths overflow (an anchor at 9e17 m gave NaN velocities).
+		tbReportError(f, "%s.p is (%g, %g), beyond TB_MAX_COORDINATE (%g m) from the body origin; put the anchor on "
+						 "the body", name, (double)frame.p.x, (double)frame.p.y, (double)TB_MAX_COORDINATE);
+		return false;
+	}
 	if (tbIsValidRot(frame.q) == false)
 	{
 		tbReportError(f, "%s.q is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", name,

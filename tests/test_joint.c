@@ -466,7 +466,7 @@ Test(joint, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Te
 	{
 		const char* argument;
 		tbRevoluteJointDef def;
-	} cases[10];
+	} cases[11];
 	int n = 0;
 	cases[n].argument = "same body";
 	cases[n].def = def;
@@ -483,6 +483,11 @@ Test(joint, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Te
 	cases[n].argument = "def->base.localFrameB.p";
 	cases[n].def = def;
 	cases[n++].def.base.localFrameB.p = (tbVec2){NAN, 0.0f};
+	// An anchor beyond TB_MAX_COORDINATE (1e6 m) from its body: the fuzzer's 8.9e17 m anchor made
+	// NaN velocities before it was refused.
+	cases[n].argument = "def->base.localFrameA.p";
+	cases[n].def = def;
+	cases[n++].def.base.localFrameA.p = (tbVec2){8.9e17f, -2.2f};
 	cases[n].argument = "def->hertz";
 	cases[n].def = def;
 	cases[n++].def.hertz = -1.0f;
