@@ -2,23 +2,25 @@
 // separating axis test (SAT) with face clipping for polygons.
 //
 // Conventions (the solver relies on them):
-// - the normal n is a world unit vector from A to B;
+// - the normal n is a unit vector from A to B, in A's frame (the pair routines, Box2D v3.2's
+//   local form) or in the world (tbCollideShapes, and the narrow phase's tbCollideInWorld);
 // - a point's separation is the signed surface gap, radii included (< 0 is penetration);
-// - the point is the world point midway between the two surfaces: if qA, qB are the closest
+// - the point is the point midway between the two surfaces: if qA, qB are the closest
 //   points of the cores (the shapes without their radii) then
 //       surfaceA = qA + rA·n,  surfaceB = qB − rB·n,  point = ½(surfaceA + surfaceB),
 //       separation = (qB − qA)·n − rA − rB;
 // - points are kept while separation < keep (speculative contact), so the solver can stop an
 //   approach before it turns into an overlap. keep is TB_SPECULATIVE_DISTANCE for the public
 //   pair routines and tbCollideShapes, and the caller's margin for tbCollideShapesWithMargin
-//   (the world passes a velocity-dependent one, contact.c); every internal routine takes it
-//   as its last argument;
+//   and tbCollideInWorld (the world passes a velocity-dependent one, contact.c); every
+//   internal routine takes it as its last argument;
 // - feature ids are TB_MAKE_FEATURE_ID(featureOnA, featureOnB) and stay the same while the
 //   same features touch (warm starting). Pairs with a circle have one point and id 0.
 //
 // Every routine works in the frame of A (B is brought into it by the relative transform
-// A⁻¹·B) and moves the result to world space at the end: the arithmetic then sees small
-// coordinates even when the bodies sit kilometres from the origin.
+// A⁻¹·B, which the narrow phase takes in the precision of world positions); the world forms
+// move the result to world space at the end. The arithmetic then sees small coordinates even
+// when the bodies sit kilometres from the origin.
 //
 // Polygons (Gregorius, "The Separating Axis Test between convex polyhedra", GDC 2013, in 2D):
 // the cores of two convex polygons are separated along some face normal of either, or they
