@@ -131,6 +131,19 @@ tbSegmentDistanceResult tbSegmentDistance(tbVec2 p1, tbVec2 q1, tbVec2 p2, tbVec
 // ---------------------------------------------------------------------------------------------
 // Proxies
 
+// The proxy of count (1..TB_MAX_POLYGON_VERTICES) checked points and a radius.
+static tbShapeProxy tbCopyProxy(const tbVec2* points, int count, float radius)
+{
+	tbShapeProxy proxy = {0};
+	for (int i = 0; i < count; ++i)
+	{
+		proxy.points[i] = points[i];
+	}
+	proxy.count = count;
+	proxy.radius = radius;
+	return proxy;
+}
+
 // tbMakeProxy's work, reporting errors under the caller's name f.
 static tbShapeProxy tbMakeProxyNamed(const char* f, const tbVec2* points, int count, float radius)
 {
@@ -147,13 +160,7 @@ static tbShapeProxy tbMakeProxyNamed(const char* f, const tbVec2* points, int co
 	{
 		return proxy;
 	}
-	for (int i = 0; i < count; ++i)
-	{
-		proxy.points[i] = points[i];
-	}
-	proxy.count = count;
-	proxy.radius = radius;
-	return proxy;
+	return tbCopyProxy(points, count, radius);
 }
 
 tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
@@ -873,19 +880,13 @@ static tbCastOutput tbShapeCastAgainst(const char* f, const tbShapeProxy* proxyA
 // empty proxy (count 0).
 static tbShapeProxy tbCheckedShapeProxy(const char* f, const tbVec2* points, int count, float radius)
 {
-	tbShapeProxy proxy = {0};
+	tbShapeProxy empty = {0};
 	if (tbCheckPoints(f, "shape points", points, count) == false ||
 		tbCheckLength(f, "shape->radius", radius, false) == false)
 	{
-		return proxy;
+		return empty;
 	}
-	for (int i = 0; i < count; ++i)
-	{
-		proxy.points[i] = points[i];
-	}
-	proxy.count = count;
-	proxy.radius = radius;
-	return proxy;
+	return tbCopyProxy(points, count, radius);
 }
 
 // The checks and the cast shared by the four: pointers, the shape's proxy, then the sweep.

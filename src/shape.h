@@ -5,6 +5,8 @@
 #include "tumble/math_functions.h"
 #include "tumble/types.h"
 
+#include <stddef.h>
+
 typedef struct tbShape
 {
 	// Hot in the collide stage, which visits every contact each step (most are only fat-box
@@ -47,6 +49,15 @@ typedef struct tbShape
 	bool enableCustomFiltering;
 	bool enablePreSolveEvents;
 } tbShape;
+
+// The two views of a shape's geometry must be the same bytes: tbGeometry's fields, mirrored above.
+_Static_assert(offsetof(tbShape, type) == offsetof(tbShape, geometry) + offsetof(tbGeometry, type),
+			   "tbShape.type aliases tbShape.geometry.type");
+_Static_assert(offsetof(tbShape, polygon) == offsetof(tbShape, geometry) + offsetof(tbGeometry, polygon),
+			   "tbShape's geometry fields alias tbShape.geometry's");
+_Static_assert(sizeof(((tbShape*)0)->chainSegment) == sizeof(((tbGeometry*)0)->chainSegment) &&
+				   offsetof(tbShape, chainSegment) == offsetof(tbShape, geometry) + offsetof(tbGeometry, chainSegment),
+			   "tbShape's geometry fields alias tbShape.geometry's");
 
 /// Tight world box of the shape placed by `transform`.
 tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbWorldTransform transform);
