@@ -35,6 +35,7 @@ typedef struct tbContinuousContext
 	tbSweep sweep;
 	const tbShape* fastShape;
 	tbShapeProxy fastProxy;
+	bool fastProxyMade; ///< fastProxy holds fastShape's proxy (tbFastProxy)
 	float fraction; ///< earliest time of impact so far
 	bool coreHit;	///< the earliest impact came from the core sweep
 	tbVec2 normal;	///< its normal, from the other shape to the fast body
@@ -82,6 +83,13 @@ static bool tbIsFast(const tbWorld* world, const tbBody* body, float* motion)
 		*motion = translation;
 		return false;
 	}
+	// Moving beyond its reach is fast whatever the turn: no angle needed (smash: most of its 5,000
+	// fast bodies a step fly straight).
+	if (body->isBullet == false && translation > reach)
+	{
+		*motion = translation;
+		return true;
+	}
 	float rotation = tbAbsFloat(tbRelativeAngle(body->rotation0, body->transform.q));
 	*motion = translation + rotation * body->maxExtent;
 	// Speculative contacts cover a closing distance of up to the body's reach per step (contact.c,
@@ -101,6 +109,16 @@ static bool tbIsLinearCircle(const tbShape* shape, const tbSweep* sweep)
 	return centred || noRotation;
 }
 
+static const tbShapeProxy* tbFastProxy(tbContinuousContext* c)
+{
+	if (c->fastProxyMade == false)
+	{
+		c->fastProxy = tbMakeShapeProxy(&c->fastShape->geometry);
+		c->fastProxyMade = true;
+	}
+	return &c->fastProxy;
+}
+
 static tbTOIOutput tbComputeTOI(tbContinuousContext* c, const tbShape* other, const tbSweep* otherSweep)
 {
 	tbWorld* world = c->world;
@@ -114,7 +132,7 @@ static tbTOIOutput tbComputeTOI(tbContinuousContext* c, const tbShape* other, co
 	}
 	tbTOIInput input;
 	input.proxyA = tbMakeShapeProxy(&other->geometry);
-	input.proxyB = c->fastProxy;
+	input.proxyB = *tbFastProxy(c);
 	input.sweepA = *otherSweep;
 	input.sweepB = c->sweep;
 	input.maxFraction = c->fraction;
@@ -305,9 +323,12 @@ static void tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters)
 	c.fraction = 1.0f;
 	c.coreHit = false;
 	// Rotation can carry points outside both end boxes by at most the arc's sagitta,
-	// maxExtent·(1 − cos(Δθ/2)) ≤ maxExtent·Δθ²/8 (capped at maxExtent).
-	float dTheta = tbAbsFloat(tbRelativeAngle(c.sweep.q1, c.sweep.q2));
-	float pad = body->maxExtent * tbMinFloat(1.0f, dTheta * dTheta * 0.125f);
+	// maxExtent·(1 − cos(Δθ/2)) (shape.c), for a turn of at most half a turn. From cos Δθ = q1·q2
+	// and cos(Δθ/2) = √((1 + cos Δθ)/2): 1 − cos(Δθ/2) = (1 − cos Δθ)/(2·(1 + cos(Δθ/2))), with no
+	// angle computed (an atan2 per fast body was 1.7 % of the smash step).
+	float cosTurn = tbClampFloat(c.sweep.q1.c * c.sweep.q2.c + c.sweep.q1.s * c.sweep.q2.s, -1.0f, 1.0f);
+	float cosHalf = sqrtf(0.5f * (1.0f + cosTurn));
+	float pad = body->maxExtent * (1.0f - cosTurn) / (2.0f * (1.0f + cosHalf));
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
 		const tbShape* shape = world->shapes + id;
@@ -316,7 +337,7 @@ static void tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters)
 			continue;
 		}
 		c.fastShape = shape;
-		c.fastProxy = tbMakeShapeProxy(&shape->geometry);
+		c.fastProxyMade = false; // made for the first candidate (most fast bodies meet none)
 		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, &c.sweep, c.base), pad + TB_LINEAR_SLOP);
 		if (body->isBullet)
 		{
