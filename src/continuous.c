@@ -407,6 +407,10 @@ void tbContinuousStage(tbWorld* world)
 		}
 	}
 	world->counters.fastBodies += fastCount + bulletCount;
+	if (world->staticProxyCount == 0)
+	{
+		fastCount = 0; // non-bullets stop only at static shapes, and there are none (smash)
+	}
 	tbContinuousTaskContext* task = tbArenaAlloc(&world->stepArena, (int)sizeof(tbContinuousTaskContext));
 	memset(task, 0, sizeof(*task));
 	task->world = world;
