@@ -290,10 +290,6 @@ void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, void*
 	bp->pairList.filterContext = context;
 }
 
-bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)
-{
-	return tbAABB_Overlaps(bp->table.proxies[proxyKeyA].aabb, bp->table.proxies[proxyKeyB].aabb);
-}
 
 // --------------------------------------------------------------------------------------------
 // Pairs

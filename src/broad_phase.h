@@ -86,7 +86,11 @@ void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, 
 									   int workerCount);
 
 tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey);
-bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB);
+static inline bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)
+{
+	// Inline: the narrow phase asks this for every contact every step.
+	return tbAABB_Overlaps(bp->table.proxies[proxyKeyA].aabb, bp->table.proxies[proxyKeyB].aabb);
+}
 
 /// Visit proxies overlapping aabb whose category bits share a bit with maskBits (callback gets
 /// proxy key and shape index; return false to stop).

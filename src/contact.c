@@ -424,7 +424,7 @@ static float tbSpeculativeMargin(const tbWorld* world, const tbBody* bodyA, cons
 	tbVec2 dv = tbSub(bodyA->linearVelocity, bodyB->linearVelocity);
 	float speed = tbLength(dv) + tbAbsFloat(bodyA->angularVelocity) * bodyA->maxExtent +
 				  tbAbsFloat(bodyB->angularVelocity) * bodyB->maxExtent;
-	float gravity = tbLength(world->def.gravity) *
+	float gravity = world->gravityLength *
 					tbAbsFloat(tbEffectiveGravityScale(bodyA) - tbEffectiveGravityScale(bodyB));
 	float closing = dt * (speed + dt * gravity);
 	// NaN-safe: a non-finite velocity gets the cap rather than poisoning the comparison.
@@ -884,8 +884,11 @@ void tbCollideStage(tbWorld* world)
 	}
 	tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
 	int kept = 0;
-	int reported = 0;
-	world->touchingContactCount = 0;
+	int reported = 0, recycled = 0, gjk = 0, sat = 0;
+	// Every kept contact may touch: room for all of them, so the walk appends without checks.
+	TB_ARRAY_RESERVE(world->touchingContacts, world->touchingContactCapacity, world->stepContactCount);
+	int* touching = world->touchingContacts;
+	int touchingCount = 0;
 	for (int i = 0; i < world->stepContactCount; ++i)
 	{
 		int contactId = world->stepContacts[i];
@@ -896,13 +899,15 @@ void tbCollideStage(tbWorld* world)
 			continue;
 		}
 		world->stepContacts[kept++] = contactId;
-		tbCountCollideResult(world, result);
+		// The counters tbCountCollideResult keeps, summed here and added once.
 		reported += (result & tb_collideReported) != 0 ? 1 : 0;
+		recycled += (result & tb_collideRecycled) != 0 ? 1 : 0;
+		gjk += (result & tb_collideGJK) != 0 ? 1 : 0;
+		sat += (result & tb_collideSAT) != 0 ? 1 : 0;
 		if (result & tb_collideSolver)
 		{
 			// The sign says "ready" (tb_collideReady): the island stage takes it as it is.
-			int entry = (result & tb_collideReady) != 0 ? contactId : -1 - contactId;
-			TB_ARRAY_PUSH(world->touchingContacts, world->touchingContactCount, world->touchingContactCapacity, entry);
+			touching[touchingCount++] = (result & tb_collideReady) != 0 ? contactId : -1 - contactId;
 		}
 		if ((result & (tb_collideBegan | tb_collideBeginEvent | tb_collideEndEvent)) == 0)
 		{
@@ -926,6 +931,10 @@ void tbCollideStage(tbWorld* world)
 		}
 	}
 	world->stepContactCount = kept;
+	world->touchingContactCount = touchingCount;
+	world->counters.recycledManifolds += recycled;
+	world->counters.gjkManifolds += gjk;
+	world->counters.satManifolds += sat;
 	world->counters.touchingCount = reported; // counted here, where each flag is in cache anyway
 }
 

@@ -358,6 +358,7 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	tbWorld* world = tbAlloc((int)sizeof(tbWorld));
 	memset(world, 0, sizeof(tbWorld));
 	world->def = *def;
+	world->gravityLength = tbLength(def->gravity);
 	world->worldId = (uint16_t)slot;
 	world->generation = (uint16_t)(s_worldGenerations[slot] + 1);
 	s_worldGenerations[slot] = world->generation;
@@ -534,6 +535,7 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	tbCompactAwakeSet(world); // every stage walks the awake list without holes
 	world->stepIndex += 1;
 	world->stepTime = timeStep;
+	world->gravityLength = tbLength(world->def.gravity);
 	tbClearEvents(world);
 	memset(&world->profile, 0, sizeof(world->profile));
 	int byteCount = world->counters.byteCount;
@@ -657,6 +659,7 @@ bool tbWorld_SetGravity(tbWorldId worldId, tbVec2 gravity)
 		return false;
 	}
 	world->def.gravity = gravity;
+	world->gravityLength = tbLength(gravity);
 	return true;
 }
 

@@ -349,6 +349,7 @@ typedef struct tbWorld
 	uint32_t stepIndex; ///< steps taken (unsigned: wraps after 2^32 steps without overflow)
 	uint32_t islandSearchStamp; ///< last stamp given to an island search (island.c; unsigned: wraps)
 	float stepTime;		///< time step of the current (or last) tbWorld_Step (s); 0 before the first
+	float gravityLength; ///< |def.gravity| for the current step (read per contact by the narrow phase)
 	tbProfile profile;
 	tbCounters counters;
 	int hitContactCount; ///< contacts with tb_contactEnableHits (hit events are gathered only when > 0)
