@@ -382,7 +382,9 @@ static bool tbMayRebound(const tbStepContext* context, const tbContactConstraint
 // the scalar constraint in between and without what the lanes do not carry (surface extras) or
 // what only bouncing contacts need (the scalar copy). Soft step and Baumgarte only: NGS at one
 // sub-step prepares differently (tbPrepareConstraintNGS) and takes tbPrepareConstraint.
-static void tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
+// Returns whether some point approaches at the restitution threshold or faster (tbMayRebound's test,
+// on the same approach speeds, without impact propagation).
+static bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
 							  int lane, int slot)
 {
 	const tbSolverMass* massA = context->masses + key.indexA;
@@ -465,11 +467,15 @@ static void tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbCont
 
 	// The approach speed (tbPrepareConstraint's last lines): hit events and the next step read it.
 	float an = tbGravityApproach(context, key.indexA, invMassA, key.indexB, invMassB, normal);
+	float threshold = context->world->def.restitutionThreshold;
+	bool rebound = false;
 	for (int j = 0; j < pointCount; ++j)
 	{
 		tbManifoldPoint* mp = manifold->points + j;
 		mp->normalVelocity = tbImpactVelocity(context, an, mp->separation, relativeVelocity[j]);
+		rebound = rebound || mp->normalVelocity <= -threshold;
 	}
+	return rebound;
 }
 
 typedef struct tbPrepareTaskContext
@@ -491,6 +497,7 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 	const int* slots = world->solverSlots;
 	const int* wideLocation = context->wideLocation;
 	bool laneFastPath = (world->def.solver == tb_solverNGS && context->subStepCount == 1) == false;
+	bool impactPropagation = world->def.enableImpactPropagation;
 	int restitutionCount = 0;
 	for (int i = start; i < end; ++i)
 	{
@@ -518,11 +525,26 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 		// Key and lane by contact-id order: both stream (by slot they were scattered loads).
 		tbContactKey key = context->keysById[i];
 		int location = context->locationById[i];
-		if (location >= 0 && (key.flags & tb_keyBounces) == 0u && laneFastPath)
+		bool bounces = (key.flags & tb_keyBounces) != 0u;
+		if (location >= 0 && laneFastPath && (bounces == false || impactPropagation == false))
 		{
-			tbPrepareWideLane(context, contact, key, context->wideConstraints + location / TB_SIMD_WIDTH,
-							  location % TB_SIMD_WIDTH, slot);
-			continue;
+			bool rebound = tbPrepareWideLane(context, contact, key, context->wideConstraints + location / TB_SIMD_WIDTH,
+											 location % TB_SIMD_WIDTH, slot);
+			if (bounces == false)
+			{
+				continue;
+			}
+			if (rebound == false)
+			{
+				// A bouncing contact that will not rebound (tbMayRebound): solved and stored from its
+				// lane like any other, with no scalar copy (spinner: every shape has restitution 0.1,
+				// and most of its contacts rest or creep).
+				key.flags &= ~(uint32_t)tb_keyBounces;
+				context->keys[slot].flags = key.flags;
+				context->keysById[i].flags = key.flags;
+				continue;
+			}
+			// It may rebound: restitution needs the scalar copy, prepared below (the lane again).
 		}
 		tbContactConstraint local;
 		tbPrepareConstraint(context, contact, key, &local);
