@@ -1408,24 +1408,26 @@ static void tbUpdateSleepTime(const tbWorld* world, tbBody* body, float timeStep
 	}
 }
 
-static void tbPushMoveEvent(tbWorld* world, tbBody* body, int bodyId)
+static tbBodyMoveEvent tbMakeMoveEvent(const tbWorld* world, const tbBody* body, int bodyId)
 {
 	tbBodyMoveEvent event;
 	event.transform = body->transform;
 	event.bodyId = tbMakeBodyId(world, bodyId);
 	event.userData = body->userData;
 	event.fellAsleep = false;
-	TB_ARRAY_PUSH(world->moveEvents, world->moveCount, world->moveCapacity, event);
+	return event;
 }
 
 typedef struct tbFinalizeTaskContext
 {
 	tbWorld* world;
 	float timeStep;
+	tbBodyMoveEvent* events; ///< one per awake body, in awake order
+	uint8_t* moved;			 ///< per awake body: 1 when a proxy of its is to be moved
 } tbFinalizeTaskContext;
 
-/// Sleep timers and shape boxes of awake bodies [start, end): each writes only its own body and
-/// shapes.
+/// Sleep timers, shape boxes and move events of awake bodies [start, end): each writes only its own
+/// body, shapes, event slot and flag.
 static void tbFinalizeTask(int start, int end, uint32_t workerIndex, void* context)
 {
 	(void)workerIndex;
@@ -1433,33 +1435,45 @@ static void tbFinalizeTask(int start, int end, uint32_t workerIndex, void* conte
 	tbWorld* world = task->world;
 	for (int i = start; i < end; ++i)
 	{
-		tbBody* body = world->bodies + world->awakeBodies[i];
+		int bodyId = world->awakeBodies[i];
+		tbBody* body = world->bodies + bodyId;
 		tbUpdateSleepTime(world, body, task->timeStep);
-		tbComputeBodyShapeBoxes(world, body, false);
+		task->moved[i] = tbComputeBodyShapeBoxes(world, body, false) ? 1u : 0u;
+		task->events[i] = tbMakeMoveEvent(world, body, bodyId);
 	}
 }
 
 void tbFinalizeStage(tbWorld* world, float timeStep)
 {
-	bool split = tbWorkerCount(world) > 1;
-	if (split)
+	int n = world->awakeBodyCount;
+	if (tbWorkerCount(world) > 1)
 	{
-		tbFinalizeTaskContext task = {world, timeStep};
-		tbParallelFor(world, tbFinalizeTask, world->awakeBodyCount, 256, &task);
+		// On workers: everything per body, each move event written to its slot (awake order, as the
+		// one-worker walk appends them); then, serially and in body order, only the bodies with a
+		// re-made box move their proxies (the broad phase's move buffer keeps that order).
+		TB_ARRAY_RESERVE(world->moveEvents, world->moveCapacity, world->moveCount + n);
+		tbFinalizeTaskContext task = {world, timeStep, world->moveEvents + world->moveCount,
+									  tbArenaAlloc(&world->stepArena, tbMaxInt(n, 1))};
+		tbParallelFor(world, tbFinalizeTask, n, 256, &task);
+		world->moveCount += n;
+		for (int i = 0; i < n; ++i)
+		{
+			if (task.moved[i] != 0u)
+			{
+				tbMoveFlaggedProxies(world, world->bodies + world->awakeBodies[i]);
+			}
+		}
+		return;
 	}
-	// In body order: the broad phase's move buffer and the move events keep the serial order. On one
-	// worker the boxes are computed here too, in the same pass (a second walk over the bodies would
-	// only cost memory traffic).
-	for (int i = 0; i < world->awakeBodyCount; ++i)
+	// One worker: one pass over the bodies (a second walk would only cost memory traffic).
+	for (int i = 0; i < n; ++i)
 	{
 		int bodyId = world->awakeBodies[i];
 		tbBody* body = world->bodies + bodyId;
-		if (split == false)
-		{
-			tbUpdateSleepTime(world, body, timeStep);
-			tbComputeBodyShapeBoxes(world, body, false);
-		}
+		tbUpdateSleepTime(world, body, timeStep);
+		tbComputeBodyShapeBoxes(world, body, false);
 		tbMoveFlaggedProxies(world, body);
-		tbPushMoveEvent(world, body, bodyId);
+		tbBodyMoveEvent event = tbMakeMoveEvent(world, body, bodyId);
+		TB_ARRAY_PUSH(world->moveEvents, world->moveCount, world->moveCapacity, event);
 	}
 }

@@ -379,6 +379,23 @@ static void tbContinuousTask(int start, int end, uint32_t workerIndex, void* con
 	}
 }
 
+static void tbMarkFast(const tbWorld* world, tbBody* body)
+{
+	float motion;
+	body->isFast = body->type == tb_dynamicBody && tbIsFast(world, body, &motion);
+}
+
+/// isFast of awake bodies [start, end) (each writes its own body).
+static void tbMarkFastTask(int start, int end, uint32_t workerIndex, void* context)
+{
+	(void)workerIndex;
+	tbWorld* world = context;
+	for (int i = start; i < end; ++i)
+	{
+		tbMarkFast(world, world->bodies + world->awakeBodies[i]);
+	}
+}
+
 /// Fast bodies that are not bullets stop only at static shapes, which do not move: each depends on
 /// nothing the others change, so they run on the workers. Bullets also stop at moving bodies (at
 /// their positions after the others were stopped) and run after, one at a time in body order.
@@ -391,12 +408,19 @@ void tbContinuousStage(tbWorld* world)
 	int bytes = world->awakeBodyCount * (int)sizeof(int);
 	int* fast = tbArenaAlloc(&world->stepArena, bytes > 0 ? bytes : (int)sizeof(int));
 	int fastCount = 0, bulletCount = 0;
+	bool onWorkers = tbWorkerCount(world) > 1;
+	if (onWorkers)
+	{
+		tbParallelFor(world, tbMarkFastTask, world->awakeBodyCount, 512, world); // then listed below
+	}
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		int bodyId = world->awakeBodies[i];
 		tbBody* body = world->bodies + bodyId;
-		float motion;
-		body->isFast = body->type == tb_dynamicBody && tbIsFast(world, body, &motion);
+		if (onWorkers == false)
+		{
+			tbMarkFast(world, body);
+		}
 		if (body->isFast && body->isBullet)
 		{
 			fast[world->awakeBodyCount - 1 - bulletCount++] = bodyId; // bullets from the back, reversed

@@ -208,8 +208,9 @@ static float tbTurnPad(float maxExtent, float turn)
 	return maxExtent * (sagitta + tbAbsFloat(turn) * t2 / 3.0f);
 }
 
-void tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
+bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
 {
+	bool moved = false;
 	float margin = body->type == tb_staticBody ? 0.0f
 											  : tbMinFloat(TB_AABB_MARGIN, TB_AABB_MARGIN_FRACTION * body->maxExtent);
 	tbVec2 d = tb_vec2_zero;
@@ -252,8 +253,10 @@ void tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
 		{
 			shape->fatAABB = tbAABB_Fatten(sweep, margin);
 			shape->proxyMoved = true;
+			moved = true;
 		}
 	}
+	return moved;
 }
 
 /// Move the flagged proxies of a body in the broad phase (serial: the broad phase changes).

@@ -408,7 +408,8 @@ float tbSpeculativeReach(const tbBody* body);
 void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);
 /// The two halves of tbUpdateBodyShapeBoxes: boxes computed and proxies flagged (per body, on
 /// any worker), then the flagged proxies moved (in body order, on the caller).
-void tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove);
+/// True when the fat box of some shape was re-made (flagged for tbMoveFlaggedProxies).
+bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove);
 void tbMoveFlaggedProxies(tbWorld* world, const tbBody* body);
 
 // contact.c
