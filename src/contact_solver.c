@@ -183,9 +183,15 @@ static bool tbIsDeepOverlap(const tbContactConstraint* c, float deepOverlap)
 // overlap deeply stiffens from contactHertz to restHertz over the second settleSteps of touching.
 // Static pairs start at the resting stiffness, deep ones stay at contactHertz. `softness` is the
 // pair's softness before settling; the caller has ruled out static and deep pairs.
-static tbSoftness tbSettledSoftness(const tbStepContext* context, tbSoftness softness, int age)
+static inline tbSoftness tbSettledSoftness(const tbStepContext* context, tbSoftness softness, int age)
 {
 	float settleSteps = context->settleSteps;
+	// Settled for good (most resting contacts): when age − s ≥ s the rounded quotient below is ≥ 1
+	// and the ramp clamps to 1, so the same result without the division.
+	if ((float)age - settleSteps >= settleSteps)
+	{
+		return context->settledSoftness;
+	}
 	float ramp = tbClampFloat(((float)age - settleSteps) / settleSteps, 0.0f, 1.0f);
 	if (ramp >= 1.0f)
 	{

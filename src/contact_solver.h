@@ -76,6 +76,20 @@ void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, in
 void tbWarmStartOverflow(tbStepContext* context);
 void tbSolveOverflow(tbStepContext* context, tbBiasPolicy policy);
 /// Copy the impulses of the lane at `location` into manifold points.
-void tbLoadWideImpulses(const tbStepContext* context, int location, int pointCount, tbManifoldPoint* points);
+/// (Inline: the store runs it for every contact.) A lane's location is block·TB_SIMD_WIDTH + lane
+/// (tbStepContext::wideLocation).
+static inline void tbLoadWideImpulses(const tbStepContext* context, int location, int pointCount,
+									  tbManifoldPoint* points)
+{
+	const tbWideContactConstraint* block = context->wideConstraints + location / TB_SIMD_WIDTH;
+	int lane = location % TB_SIMD_WIDTH;
+	for (int j = 0; j < pointCount; ++j)
+	{
+		const tbWideContactPoint* wp = block->points + j;
+		points[j].normalImpulse = tbGetLaneW(&wp->normalImpulse, lane);
+		points[j].tangentImpulse = tbGetLaneW(&wp->tangentImpulse, lane);
+		points[j].maxNormalImpulse = tbGetLaneW(&wp->maxNormalImpulse, lane);
+	}
+}
 /// Copy a constraint's impulses from its lane to the scalar constraint, which holds them from then on.
 void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex);

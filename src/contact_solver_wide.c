@@ -34,20 +34,6 @@ void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex)
 	}
 }
 
-// A lane's location is block·TB_SIMD_WIDTH + lane (tbStepContext::wideLocation).
-void tbLoadWideImpulses(const tbStepContext* context, int location, int pointCount, tbManifoldPoint* points)
-{
-	const tbWideContactConstraint* block = context->wideConstraints + location / TB_SIMD_WIDTH;
-	int lane = location % TB_SIMD_WIDTH;
-	for (int j = 0; j < pointCount; ++j)
-	{
-		const tbWideContactPoint* wp = block->points + j;
-		points[j].normalImpulse = tbGetLaneW(&wp->normalImpulse, lane);
-		points[j].tangentImpulse = tbGetLaneW(&wp->tangentImpulse, lane);
-		points[j].maxNormalImpulse = tbGetLaneW(&wp->maxNormalImpulse, lane);
-	}
-}
-
 void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex)
 {
 	int location = context->wideLocation[constraintIndex];
