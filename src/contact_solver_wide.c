@@ -50,6 +50,17 @@ void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex)
 	context->wideLocation[constraintIndex] = -1;
 }
 
+// Forced inline: each pass (TB_SOLVE_WIDE_LOOP) then gets its own copy with the policy and the
+// `shared` choice folded away. Left to itself the compiler kept one out-of-line copy (680
+// instructions) taking both at run time.
+#if defined(__GNUC__) || defined(__clang__)
+#define TB_FORCE_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define TB_FORCE_INLINE __forceinline
+#else
+#define TB_FORCE_INLINE inline
+#endif
+
 // The velocities (v.x, v.y, ω) of four bodies and their step deltas (Δp.x, Δp.y, Δq.c, Δq.s).
 typedef struct tbWideBody
 {
@@ -73,7 +84,7 @@ static inline void* tbDeltaRow(tbSolverBody* bodies, int index)
 	return (char*)(bodies + index) + offsetof(tbSolverBody, deltaPosition);
 }
 
-static inline void tbGatherVelocities(tbSolverBody* bodies, const int index[4], tbWideBody* out)
+static TB_FORCE_INLINE void tbGatherVelocities(tbSolverBody* bodies, const int index[4], tbWideBody* out)
 {
 	tbFloatW rows[4];
 	tbLoadTransposeW(tbVelocityRow(bodies, index[0]), tbVelocityRow(bodies, index[1]),
@@ -81,7 +92,7 @@ static inline void tbGatherVelocities(tbSolverBody* bodies, const int index[4], 
 	out->vx = rows[0], out->vy = rows[1], out->w = rows[2], out->padding = rows[3];
 }
 
-static inline void tbGatherDeltas(tbSolverBody* bodies, const int index[4], tbWideBody* out)
+static TB_FORCE_INLINE void tbGatherDeltas(tbSolverBody* bodies, const int index[4], tbWideBody* out)
 {
 	tbFloatW rows[4];
 	tbLoadTransposeW(tbDeltaRow(bodies, index[0]), tbDeltaRow(bodies, index[1]), tbDeltaRow(bodies, index[2]),
@@ -91,7 +102,7 @@ static inline void tbGatherDeltas(tbSolverBody* bodies, const int index[4], tbWi
 
 // Written lane 0 to 3. Only a body that does not move (static stand-in, kinematic) can appear in
 // two lanes, and it is written with the velocity it was read with.
-static inline void tbScatterVelocities(tbSolverBody* bodies, const int index[4], const tbWideBody* in)
+static TB_FORCE_INLINE void tbScatterVelocities(tbSolverBody* bodies, const int index[4], const tbWideBody* in)
 {
 	tbFloatW rows[4] = {in->vx, in->vy, in->w, in->padding};
 	tbTransposeStoreW(tbVelocityRow(bodies, index[0]), tbVelocityRow(bodies, index[1]),
@@ -101,7 +112,7 @@ static inline void tbScatterVelocities(tbSolverBody* bodies, const int index[4],
 // The same, for a solve spread over workers: lanes of bodies that do not move (inverse mass and
 // inertia zero: the static stand-in, kinematic bodies) are not written, since several blocks of one
 // colour may hold them. The values skipped are the ones read, so the result is the same.
-static inline void tbScatterMovingVelocities(tbSolverBody* bodies, const int index[4], const tbWideBody* in,
+static TB_FORCE_INLINE void tbScatterMovingVelocities(tbSolverBody* bodies, const int index[4], const tbWideBody* in,
 											 tbFloatW invMass, tbFloatW invI)
 {
 	int mask = tbNonZeroMaskW(invMass, invI);
@@ -110,7 +121,7 @@ static inline void tbScatterMovingVelocities(tbSolverBody* bodies, const int ind
 							tbVelocityRow(bodies, index[2]), tbVelocityRow(bodies, index[3]), rows, mask);
 }
 
-static inline void tbScatterPair(tbSolverBody* bodies, const tbWideContactConstraint* c, const tbWideBody* a,
+static TB_FORCE_INLINE void tbScatterPair(tbSolverBody* bodies, const tbWideContactConstraint* c, const tbWideBody* a,
 								 const tbWideBody* b, bool shared)
 {
 	if (shared)
@@ -126,7 +137,7 @@ static inline void tbScatterPair(tbSolverBody* bodies, const tbWideContactConstr
 }
 
 // Apply the impulse (px, py) at anchors rA, rB: A receives −P, B receives +P.
-static inline void tbApplyImpulseW(tbWideBody* a, tbWideBody* b, const tbWideContactConstraint* c, tbFloatW rAx,
+static TB_FORCE_INLINE void tbApplyImpulseW(tbWideBody* a, tbWideBody* b, const tbWideContactConstraint* c, tbFloatW rAx,
 								   tbFloatW rAy, tbFloatW rBx, tbFloatW rBy, tbFloatW px, tbFloatW py)
 {
 	a->vx = tbSubW(a->vx, tbMulW(c->invMassA, px));
@@ -194,7 +205,7 @@ typedef struct tbWidePass
 
 // Linearised current separation of point cp (see contact_solver.c): s0 + dot(Δp_B + Δq_B·rB − Δp_A −
 // Δq_A·rA, n) with s0 folded into baseSeparation.
-static inline tbFloatW tbSeparationW(const tbWideContactPoint* cp, const tbWideContactConstraint* c,
+static TB_FORCE_INLINE tbFloatW tbSeparationW(const tbWideContactPoint* cp, const tbWideContactConstraint* c,
 									 const tbWideBody* a, const tbWideBody* b)
 {
 	tbFloatW prAx = tbSubW(tbMulW(a->qc, cp->anchorAX), tbMulW(a->qs, cp->anchorAY));
@@ -207,7 +218,7 @@ static inline tbFloatW tbSeparationW(const tbWideContactPoint* cp, const tbWideC
 }
 
 // Relative velocity of the anchors, vB + ωB × rB − vA − ωA × rA, along (ux, uy).
-static inline tbFloatW tbRelativeVelocityW(const tbWideContactPoint* cp, const tbWideBody* a, const tbWideBody* b,
+static TB_FORCE_INLINE tbFloatW tbRelativeVelocityW(const tbWideContactPoint* cp, const tbWideBody* a, const tbWideBody* b,
 										   tbFloatW ux, tbFloatW uy)
 {
 	tbFloatW dvx = tbSubW(tbSubW(b->vx, tbMulW(b->w, cp->anchorBY)), tbSubW(a->vx, tbMulW(a->w, cp->anchorAY)));
@@ -215,7 +226,7 @@ static inline tbFloatW tbRelativeVelocityW(const tbWideContactPoint* cp, const t
 	return tbMulAddPairW(dvx, ux, dvy, uy);
 }
 
-static inline void tbSolveNormalW(tbWideContactPoint* cp, const tbWideContactConstraint* c, tbWideBody* a,
+static TB_FORCE_INLINE void tbSolveNormalW(tbWideContactPoint* cp, const tbWideContactConstraint* c, tbWideBody* a,
 								  tbWideBody* b, const tbWidePass* pass, tbBiasPolicy policy)
 {
 	tbFloatW zero = tbZeroW();
@@ -267,7 +278,7 @@ static inline void tbSolveNormalW(tbWideContactPoint* cp, const tbWideContactCon
 					tbMulW(impulse, c->normalY));
 }
 
-static inline void tbSolveFrictionW(tbWideContactPoint* cp, const tbWideContactConstraint* c, tbWideBody* a,
+static TB_FORCE_INLINE void tbSolveFrictionW(tbWideContactPoint* cp, const tbWideContactConstraint* c, tbWideBody* a,
 									tbWideBody* b, tbFloatW tx, tbFloatW ty)
 {
 	tbFloatW vt = tbRelativeVelocityW(cp, a, b, tx, ty);
@@ -283,7 +294,7 @@ static inline void tbSolveFrictionW(tbWideContactPoint* cp, const tbWideContactC
 }
 
 // Normal impulses first, then friction against the fresh normal impulses (as the scalar solver).
-static inline void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bodies, const tbWidePass* pass,
+static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bodies, const tbWidePass* pass,
 									tbBiasPolicy policy, bool shared)
 {
 	tbWideBody a = {0}, b = {0};
@@ -306,9 +317,19 @@ static inline void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bo
 }
 
 #define TB_SOLVE_WIDE_LOOP(POLICY)                                                                                     \
-	for (int i = start; i < end; ++i)                                                                                  \
+	if (shared)                                                                                                        \
 	{                                                                                                                  \
-		tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY, shared);                         \
+		for (int i = start; i < end; ++i)                                                                              \
+		{                                                                                                              \
+			tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY, true);                       \
+		}                                                                                                              \
+	}                                                                                                                  \
+	else                                                                                                               \
+	{                                                                                                                  \
+		for (int i = start; i < end; ++i)                                                                              \
+		{                                                                                                              \
+			tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY, false);                      \
+		}                                                                                                              \
 	}
 
 void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, int end, bool shared)
