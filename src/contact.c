@@ -669,7 +669,7 @@ static void tbDropSpeculativePoint(tbContact* contact)
 
 /// The narrow phase of one contact, writing only the contact (safe on any worker): returns
 /// tbCollideResult flags for the caller to act on in contact order.
-static uint32_t tbCollideContact(tbWorld* world, tbContact* contact)
+static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* contact)
 {
 	const tbShape* a = world->shapes + contact->shapeIdA;
 	const tbShape* b = world->shapes + contact->shapeIdB;

@@ -50,16 +50,9 @@ void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex)
 	context->wideLocation[constraintIndex] = -1;
 }
 
-// Forced inline: each pass (TB_SOLVE_WIDE_LOOP) then gets its own copy with the policy and the
-// `shared` choice folded away. Left to itself the compiler kept one out-of-line copy (680
-// instructions) taking both at run time.
-#if defined(__GNUC__) || defined(__clang__)
-#define TB_FORCE_INLINE inline __attribute__((always_inline))
-#elif defined(_MSC_VER)
-#define TB_FORCE_INLINE __forceinline
-#else
-#define TB_FORCE_INLINE inline
-#endif
+// The block solve and its helpers are forced inline (TB_FORCE_INLINE, core.h): each pass
+// (TB_SOLVE_WIDE_LOOP) then gets its own copy with the policy and the `shared` choice folded away.
+// Left to itself the compiler kept one out-of-line copy (680 instructions) taking both at run time.
 
 // The velocities (v.x, v.y, ω) of four bodies and their step deltas (Δp.x, Δp.y, Δq.c, Δq.s).
 typedef struct tbWideBody

@@ -88,6 +88,16 @@ static inline void tbPrefetch(const void* p, int bytes)
 
 /// How many items ahead a walk by index list prefetches (tbPrefetch): far enough to hide a miss to
 /// memory behind the work of the items in between.
+/// Inline whatever the compiler's size heuristics say, for the few hot helpers whose callers
+/// gain from constants folded into them (contact_solver_wide.c, contact.c).
+#if defined(__GNUC__) || defined(__clang__)
+#define TB_FORCE_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define TB_FORCE_INLINE __forceinline
+#else
+#define TB_FORCE_INLINE inline
+#endif
+
 #define TB_PREFETCH_AHEAD 8
 
 static inline tbVec2 tbClosestPointOnSegment(float* t, tbVec2 p, tbVec2 a, tbVec2 b)
