@@ -1006,7 +1006,8 @@ static inline void tbPrefetchJointAhead(const tbWorld* world, int i, int end)
 {
 	if (i + TB_PREFETCH_AHEAD < end)
 	{
-		tbPrefetch(world->joints + world->solverJoints[i + TB_PREFETCH_AHEAD], (int)sizeof(tbJoint));
+		// The solve's part only: the edges, ids and API fields after the kind's data stay behind.
+		tbPrefetch(world->joints + world->solverJoints[i + TB_PREFETCH_AHEAD], (int)offsetof(tbJoint, edges));
 	}
 }
 
