@@ -418,7 +418,7 @@ static float tbEffectiveGravityScale(const tbBody* body)
 /// (shape.c), so a pair that can touch during the step has its contact. Resting bodies get
 /// TB_SPECULATIVE_DISTANCE + g·dt² (0.0228 m at 60 Hz) against the ground and exactly
 /// TB_SPECULATIVE_DISTANCE against each other.
-static float tbSpeculativeMargin(const tbWorld* world, const tbBody* bodyA, const tbBody* bodyB)
+static TB_FORCE_INLINE float tbSpeculativeMargin(const tbWorld* world, const tbBody* bodyA, const tbBody* bodyB)
 {
 	float dt = world->stepTime;
 	tbVec2 dv = tbSub(bodyA->linearVelocity, bodyB->linearVelocity);
@@ -472,7 +472,7 @@ static float tbOriginExtent(const tbBody* body)
 /// True when the smaller bound is below tolerance; B's frame is looked at only when A's bound is not
 /// (most resting pairs pass on it). False for a non-finite pose: then A's bound is NaN, and B's,
 /// made of the same numbers, too.
-static bool tbMovedLessThan(tbTransform relative0, tbTransform relative, const tbBody* bodyA, const tbBody* bodyB,
+static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform relative, const tbBody* bodyA, const tbBody* bodyB,
 							float tolerance)
 {
 	float chord = sqrtf((relative.q.c - relative0.q.c) * (relative.q.c - relative0.q.c) +
@@ -521,7 +521,7 @@ static bool tbMovedLessThan(tbTransform relative0, tbTransform relative, const t
 #define TB_RECYCLE_COS_ANGLE 0.99939083f
 
 /// recycleDistance is the world's (TB_RECYCLE_DISTANCE by default, tbWorld_SetContactRecycleDistance).
-static bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin,
+static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin,
 							  float recycleDistance)
 {
 	const tbManifoldBase* base = &contact->base;
