@@ -154,26 +154,39 @@ static void tbZeroWideImpulses(tbStepContext* context)
 	}
 }
 
+static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* c, tbSolverBody* bodies, bool shared)
+{
+	tbWideBody a, b;
+	tbGatherVelocities(bodies, c->indexA, &a);
+	tbGatherVelocities(bodies, c->indexB, &b);
+	// tangent = rightPerp(normal) = (n.y, −n.x)
+	tbFloatW tx = c->normalY;
+	tbFloatW ty = tbSubW(tbZeroW(), c->normalX);
+	for (int j = 0; j < 2; ++j)
+	{
+		const tbWideContactPoint* cp = c->points + j;
+		tbFloatW px = tbMulAddPairW(cp->normalImpulse, c->normalX, cp->tangentImpulse, tx);
+		tbFloatW py = tbMulAddPairW(cp->normalImpulse, c->normalY, cp->tangentImpulse, ty);
+		tbApplyImpulseW(&a, &b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, px, py);
+	}
+	tbScatterPair(bodies, c, &a, &b, shared);
+}
+
+// One loop per scatter kind, so that neither tests `shared` block by block.
 void tbWarmStartWideRange(tbStepContext* context, int start, int end, bool shared)
 {
 	tbSolverBody* bodies = context->bodies;
+	if (shared)
+	{
+		for (int i = start; i < end; ++i)
+		{
+			tbWarmStartWideBlock(context->wideConstraints + i, bodies, true);
+		}
+		return;
+	}
 	for (int i = start; i < end; ++i)
 	{
-		const tbWideContactConstraint* c = context->wideConstraints + i;
-		tbWideBody a, b;
-		tbGatherVelocities(bodies, c->indexA, &a);
-		tbGatherVelocities(bodies, c->indexB, &b);
-		// tangent = rightPerp(normal) = (n.y, −n.x)
-		tbFloatW tx = c->normalY;
-		tbFloatW ty = tbSubW(tbZeroW(), c->normalX);
-		for (int j = 0; j < 2; ++j)
-		{
-			const tbWideContactPoint* cp = c->points + j;
-			tbFloatW px = tbMulAddPairW(cp->normalImpulse, c->normalX, cp->tangentImpulse, tx);
-			tbFloatW py = tbMulAddPairW(cp->normalImpulse, c->normalY, cp->tangentImpulse, ty);
-			tbApplyImpulseW(&a, &b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, px, py);
-		}
-		tbScatterPair(bodies, c, &a, &b, shared);
+		tbWarmStartWideBlock(context->wideConstraints + i, bodies, false);
 	}
 }
 
