@@ -43,7 +43,8 @@ typedef struct tbCellEntry
 {
 	int64_t cell;
 	int key;
-	int next; ///< next entry in the bucket, or −1
+	int next;	///< next entry in the bucket, or −1
+	int x0, y0; ///< the proxy's lowest cell (tbCellsOf), for the pair query's lower-corner test
 } tbCellEntry;
 
 /// Cells hashed into a power-of-two number of buckets, each a chain of entries.
@@ -162,7 +163,7 @@ static void tbGrid_AddLarge(tbGrid* grid, int key)
 	tbPushKey(&grid->large, &grid->largeCount, &grid->largeCapacity, key);
 }
 
-static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key)
+static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, int x0, int y0)
 {
 	if (grid->entryCount == grid->entryCapacity)
 	{
@@ -172,7 +173,7 @@ static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key)
 		grid->entryCapacity = m;
 	}
 	int bucket = tbBucketOf(grid, cell);
-	grid->entries[grid->entryCount] = (tbCellEntry){cell, key, grid->heads[bucket]};
+	grid->entries[grid->entryCount] = (tbCellEntry){cell, key, grid->heads[bucket], x0, y0};
 	grid->heads[bucket] = grid->entryCount++;
 }
 
@@ -198,7 +199,7 @@ static void tbGrid_Build(tbGrid* grid, const tbSpatialHash* hash, const tbProxyT
 		{
 			for (int y = r.y0; y <= r.y1; ++y)
 			{
-				tbGrid_AddEntry(grid, tbCellKey(x, y), key);
+				tbGrid_AddEntry(grid, tbCellKey(x, y), key, r.x0, r.y0);
 			}
 		}
 	}
@@ -313,7 +314,7 @@ typedef struct tbPairQuery
 } tbPairQuery;
 
 /// Report (query, other) unless it is not a pair, or the other query reports it.
-static void tbConsider(const tbPairQuery* q, int otherKey)
+static TB_FORCE_INLINE void tbConsider(const tbPairQuery* q, int otherKey)
 {
 	if (otherKey == q->key)
 	{
@@ -335,22 +336,17 @@ static void tbConsider(const tbPairQuery* q, int otherKey)
 }
 
 /// The entries of one cell: each pair is reported only from the cell holding its overlap's lower
-/// corner.
-static void tbConsiderCell(const tbPairQuery* q, const tbGrid* grid, int x, int y)
+/// corner, max(lowerA, lowerB). Its cell is max(cell(lowerA), cell(lowerB)) coordinate by
+/// coordinate, since the cell coordinate (a product by a positive factor, floored and clamped) never
+/// decreases as the value grows: so the test compares the two proxies' lowest cells, (x0, y0) of the
+/// query and of the entry, without converting a coordinate per entry.
+static void tbConsiderCell(const tbPairQuery* q, const tbGrid* grid, int x, int y, int x0, int y0)
 {
 	int64_t cell = tbCellKey(x, y);
 	for (int e = grid->heads[tbBucketOf(grid, cell)]; e >= 0; e = grid->entries[e].next)
 	{
 		const tbCellEntry* entry = grid->entries + e;
-		if (entry->cell != cell)
-		{
-			continue;
-		}
-		const tbAABB* a = &q->proxy->aabb;
-		const tbAABB* b = &q->table->proxies[entry->key].aabb;
-		int rx = tbCellCoordinate(tbMaxFloat(a->lowerBound.x, b->lowerBound.x), q->hash->invCellSize);
-		int ry = tbCellCoordinate(tbMaxFloat(a->lowerBound.y, b->lowerBound.y), q->hash->invCellSize);
-		if (rx == x && ry == y)
+		if (entry->cell == cell && tbMaxInt(x0, entry->x0) == x && tbMaxInt(y0, entry->y0) == y)
 		{
 			tbConsider(q, entry->key);
 		}
@@ -387,10 +383,10 @@ static void tbQueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, t
 	{
 		for (int y = r.y0; y <= r.y1; ++y)
 		{
-			tbConsiderCell(&q, &hash->movableGrid, x, y);
+			tbConsiderCell(&q, &hash->movableGrid, x, y, r.x0, r.y0);
 			if (isStatic == false)
 			{
-				tbConsiderCell(&q, &hash->staticGrid, x, y);
+				tbConsiderCell(&q, &hash->staticGrid, x, y, r.x0, r.y0);
 			}
 		}
 	}
@@ -474,9 +470,9 @@ static bool tbQueryStaticGrid(const tbBoxQuery* q)
 			for (int e = grid->heads[tbBucketOf(grid, cell)]; e >= 0; e = grid->entries[e].next)
 			{
 				const tbCellEntry* entry = grid->entries + e;
-				const tbAABB* b = &q->table->proxies[entry->key].aabb;
-				int rx = tbCellCoordinate(tbMaxFloat(q->aabb.lowerBound.x, b->lowerBound.x), q->hash->invCellSize);
-				int ry = tbCellCoordinate(tbMaxFloat(q->aabb.lowerBound.y, b->lowerBound.y), q->hash->invCellSize);
+				// The overlap's lower corner cell, as in tbConsiderCell.
+				int rx = tbMaxInt(r.x0, entry->x0);
+				int ry = tbMaxInt(r.y0, entry->y0);
 				if (entry->cell == cell && rx == x && ry == y && tbVisit(q, entry->key) == false)
 				{
 					return false;
