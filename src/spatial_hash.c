@@ -451,7 +451,8 @@ static bool tbVisit(const tbBoxQuery* q, int key)
 }
 
 /// Static proxies through the static grid (current): each once, from its overlap's lower corner.
-static bool tbQueryStaticGrid(const tbBoxQuery* q)
+/// r: the query box's cells.
+static bool tbQueryStaticGrid(const tbBoxQuery* q, tbCellRange r)
 {
 	const tbGrid* grid = &q->hash->staticGrid;
 	for (int i = 0; i < grid->largeCount; ++i)
@@ -461,7 +462,6 @@ static bool tbQueryStaticGrid(const tbBoxQuery* q)
 			return false;
 		}
 	}
-	tbCellRange r = tbCellsOf(q->hash, q->aabb);
 	for (int x = r.x0; x <= r.x1; ++x)
 	{
 		for (int y = r.y0; y <= r.y1; ++y)
@@ -490,9 +490,10 @@ void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, t
 	// Static proxies: through the grid when it is current (its cells for a box covering few of
 	// them, else its list of static proxies); by a scan of the table when it is not.
 	bool gridCurrent = hash->staticDirty == false && hash->cellSize > 0.0f;
-	if (gridCurrent && tbIsLargeRange(tbCellsOf(hash, aabb)) == false)
+	tbCellRange cells = gridCurrent ? tbCellsOf(hash, aabb) : (tbCellRange){0, 0, 0, 0};
+	if (gridCurrent && tbIsLargeRange(cells) == false)
 	{
-		if (tbQueryStaticGrid(&q) == false)
+		if (tbQueryStaticGrid(&q, cells) == false)
 		{
 			return;
 		}
