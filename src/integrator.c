@@ -37,10 +37,9 @@ static tbVec2 tbClampHugeSpeed(tbVec2 v, float maxSpeed)
 	return tbMulSV(speed / length, scaled);
 }
 
-void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
+// Speeds limited to maxLinearSpeed and maxAngularSpeed (NaN spin: none).
+static void tbClampSpeedsTo(tbSolverBody* sb, float maxLinearSpeed, float maxAngularSpeed)
 {
-	float maxLinearSpeed = context->maxLinearSpeed;
-	float maxAngularSpeed = context->maxAngularSpeed;
 	tbVec2 v = sb->linearVelocity;
 	float w = sb->angularVelocity;
 	float speedSquared = tbDot(v, v);
@@ -55,6 +54,32 @@ void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
 	w = w == w ? tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed) : 0.0f; // NaN (0 · ∞ torque): no direction
 	sb->linearVelocity = v;
 	sb->angularVelocity = w;
+}
+
+void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
+{
+	tbClampSpeedsTo(sb, context->maxLinearSpeed, context->maxAngularSpeed);
+}
+
+// The solve may leave a body far faster than the limits the integration of velocities keeps: a
+// joint whose anchors start far apart asks for their gap divided by the spring time (a fuzzed
+// anchor 290 km from its body gave 7e7 m/s and 8e17 rad/s, then non-finite positions). Positions
+// are integrated with speeds at most TB_SPEED_GUARD times the limits. The factor leaves every
+// scene that stays near its limits as it was (the solve of a sub-step overshoots them only
+// briefly, by a few times at most), and bounds the motion of the rest.
+#define TB_SPEED_GUARD 16.0f
+
+static inline void tbGuardSpeeds(const tbStepContext* context, tbSolverBody* sb)
+{
+	float maxLinearSpeed = TB_SPEED_GUARD * context->maxLinearSpeed;
+	float maxAngularSpeed = TB_SPEED_GUARD * context->maxAngularSpeed;
+	float w = sb->angularVelocity;
+	float speedSquared = tbDot(sb->linearVelocity, sb->linearVelocity);
+	// Written so that NaN and infinities take the clamping path.
+	if (!(speedSquared <= maxLinearSpeed * maxLinearSpeed && tbAbsFloat(w) <= maxAngularSpeed))
+	{
+		tbClampSpeedsTo(sb, maxLinearSpeed, maxAngularSpeed);
+	}
 }
 
 void tbIntegrateVelocities(tbStepContext* context)
@@ -91,6 +116,7 @@ void tbIntegratePositionsRange(tbStepContext* context, int start, int end)
 			// never moves along a locked axis; the contacts solved before saw it free along it.
 			tbApplyLinearLocks(context->linearLocks[i], &sb->linearVelocity);
 		}
+		tbGuardSpeeds(context, sb);
 		sb->deltaPosition = tbMulAdd(sb->deltaPosition, h, sb->linearVelocity);
 		sb->deltaRotation = tbIntegrateRotation(sb->deltaRotation, h * sb->angularVelocity);
 	}

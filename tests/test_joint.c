@@ -544,6 +544,40 @@ Test(joint, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Te
 	tbDestroyWorld(world);
 }
 
+// A revolute joint whose anchors start 290 km apart (the fuzzer's scene: its anchor on body B lies
+// 291,522 m from the body, within TB_MAX_COORDINATE, so it is accepted). The soft joint asks for the
+// gap over its spring time, 7e7 m/s and 8e17 rad/s, which used to reach non-finite positions by
+// step 5. The positions are integrated with speeds at most 16 times the world's limits
+// (integrator.c, tbGuardSpeeds), so every step moves the body by at most 16·maxLinearSpeed·dt plus
+// its turn, and everything stays finite.
+Test(joint, anchors_far_apart_keep_positions_finite)
+{
+	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 6.0f), 0.1f, 0.1f);
+	tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
+	def.base.bodyIdA = ground;
+	def.base.bodyIdB = body;
+	def.base.localFrameA.p = tbMakeVec2(4.0f, 0.3f);
+	def.base.localFrameB.p = tbMakeVec2(291521.89f, -2.2f);
+	tbJointId joint = tbCreateRevoluteJoint(world, &def);
+	cr_assert(tbJoint_IsValid(joint));
+	float dt = 1.0f / 60.0f;
+	float maxStep = 16.0f * tbWorld_GetMaximumLinearSpeed(world) * dt;
+	tbVec2 previous = tbBody_GetWorldCenterOfMass(body);
+	for (int i = 0; i < 20; ++i)
+	{
+		tbWorld_Step(world, dt, 4);
+		tbVec2 c = tbBody_GetWorldCenterOfMass(body);
+		cr_assert(tbIsValidVec2(c) && tbIsValidFloat(tbBody_GetAngularVelocity(body)),
+				  "step %d: centre (%g, %g), spin %g", i, c.x, c.y, tbBody_GetAngularVelocity(body));
+		cr_expect(tbDistance(c, previous) <= maxStep * 1.001f, "step %d moved %g m (bound %g m)", i,
+				  tbDistance(c, previous), maxStep);
+		previous = c;
+	}
+	tbDestroyWorld(world);
+}
+
 Test(joint, destroying_a_body_makes_its_joint_ids_stale, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
