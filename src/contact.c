@@ -849,8 +849,11 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 	if (i + TB_PREFETCH_AHEAD < endIndex)
 	{
 		const tbContact* ahead = world->contacts + ids[i + TB_PREFETCH_AHEAD];
-		tbPrefetch(world->shapes + ahead->shapeIdA, 32);
-		tbPrefetch(world->shapes + ahead->shapeIdB, 32);
+		// A contact that may be recycled reads its shapes' first line only (box, body, proxy); one
+		// that will be computed anew reads their geometry too.
+		int shapeBytes = (ahead->flags & tb_contactRecyclable) != 0 ? 32 : (int)sizeof(tbShape);
+		tbPrefetch(world->shapes + ahead->shapeIdA, shapeBytes);
+		tbPrefetch(world->shapes + ahead->shapeIdB, shapeBytes);
 		tbPrefetch(world->bodies + ahead->edges[0].bodyId, (int)sizeof(tbBody));
 		tbPrefetch(world->bodies + ahead->edges[1].bodyId, (int)sizeof(tbBody));
 	}
