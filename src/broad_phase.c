@@ -284,9 +284,10 @@ tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey)
 	return bp->table.proxies[proxyKey].aabb;
 }
 
-void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, void* context)
+void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, tbPairPrefetchFcn* prefetch, void* context)
 {
 	bp->pairList.filter = filter;
+	bp->pairList.prefetch = prefetch;
 	bp->pairList.filterContext = context;
 }
 
@@ -434,9 +435,12 @@ static void tbFindPairsTask(int start, int end, uint32_t workerIndex, void* cont
 				tbSpatialHash_QueryMoved(bp->hash, &bp->table, bp->workerPairs + workerIndex, key);
 			}
 		}
-		return;
 	}
-	tbQueryMovedProxies(bp, bp->workerPairs + workerIndex, start, end);
+	else
+	{
+		tbQueryMovedProxies(bp, bp->workerPairs + workerIndex, start, end);
+	}
+	tbPairList_Flush(bp->workerPairs + workerIndex);
 }
 
 void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext, int workerCount)
@@ -460,7 +464,9 @@ void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, 
 	{
 		bp->workerPairs[w].count = 0;
 		bp->workerPairs[w].filter = bp->pairList.filter;
+		bp->workerPairs[w].prefetch = bp->pairList.prefetch;
 		bp->workerPairs[w].filterContext = bp->pairList.filterContext;
+		bp->workerPairs[w].pendingCount = 0;
 	}
 	run(tbFindPairsTask, bp->moveCount, 64, bp, runnerContext);
 	for (int w = 0; w < workerCount; ++w)
@@ -493,6 +499,7 @@ void tbBroadPhase_UpdatePairs(tbBroadPhase* bp)
 			tbBruteForce_FindPairs(bp->brute, &bp->table, &bp->pairList);
 			break;
 	}
+	tbPairList_Flush(&bp->pairList);
 	tbSortUniquePairs(bp);
 	tbClearMoveBuffer(bp);
 }

@@ -56,7 +56,7 @@ typedef struct tbBroadPhase
 /// Install a pair filter. The world drops pairs that already have a contact or may not collide
 /// (a moving pile re-finds mostly existing pairs: filtering first keeps the sort small). The
 /// filter must depend only on the two shapes, so the sorted result is the same as filtering after.
-void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, void* context);
+void tbBroadPhase_SetPairFilter(tbBroadPhase* bp, tbPairFilterFcn* filter, tbPairPrefetchFcn* prefetch, void* context);
 
 /// Create with a method (auto resolves to the tree).
 void tbBroadPhase_Create(tbBroadPhase* bp, tbBroadPhaseMethod method);

@@ -321,6 +321,12 @@ bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* context)
 	return tbShouldCreateContact(world, shapeIdA, shapeIdB);
 }
 
+void tbContactPairPrefetch(int shapeIdA, int shapeIdB, void* context)
+{
+	const tbWorld* world = context;
+	tbHashSet_Prefetch(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB));
+}
+
 static void tbRunOnWorkers(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* world)
 {
 	tbParallelFor(world, task, itemCount, minRange, taskContext);

@@ -7,11 +7,33 @@ void tbPairList_Add(tbPairList* list, const tbProxyTable* table, int proxyKeyA, 
 {
 	int a = table->proxies[proxyKeyA].shapeIndex;
 	int b = table->proxies[proxyKeyB].shapeIndex;
-	if (list->filter != NULL && list->filter(a, b, list->filterContext) == false)
+	if (list->filter == NULL)
 	{
+		tbPairList_Append(list, a < b ? (tbShapePair){a, b} : (tbShapePair){b, a});
 		return;
 	}
-	tbPairList_Append(list, a < b ? (tbShapePair){a, b} : (tbShapePair){b, a});
+	if (list->prefetch != NULL)
+	{
+		list->prefetch(a, b, list->filterContext);
+	}
+	list->pending[list->pendingCount++] = (tbShapePair){a, b};
+	if (list->pendingCount == TB_PAIR_BATCH)
+	{
+		tbPairList_Flush(list);
+	}
+}
+
+void tbPairList_Flush(tbPairList* list)
+{
+	for (int i = 0; i < list->pendingCount; ++i)
+	{
+		int a = list->pending[i].a, b = list->pending[i].b;
+		if (list->filter(a, b, list->filterContext))
+		{
+			tbPairList_Append(list, a < b ? (tbShapePair){a, b} : (tbShapePair){b, a});
+		}
+	}
+	list->pendingCount = 0;
 }
 
 void tbPairList_Append(tbPairList* list, tbShapePair pair)

@@ -41,6 +41,15 @@ typedef struct tbBroadProxy
 /// Pair filter: return false to drop the pair of two shapes (shape indices).
 typedef bool tbPairFilterFcn(int shapeIndexA, int shapeIndexB, void* context);
 
+/// Optional companion of a pair filter: asks the memory system for what the filter will read of
+/// the pair (a hint only; tbPairList calls it TB_PAIR_BATCH pairs before the filter).
+typedef void tbPairPrefetchFcn(int shapeIndexA, int shapeIndexB, void* context);
+
+/// Pairs a list holds back before filtering them: the filter's loads (a hash probe into the set of
+/// pairs that have a contact, the shapes) miss the cache one by one, and asked for this many pairs
+/// ahead they arrive together.
+#define TB_PAIR_BATCH 16
+
 /// The proxy slots, indexed by proxy key (free slots have isFree set).
 typedef struct tbProxyTable
 {
@@ -56,12 +65,19 @@ typedef struct tbPairList
 	tbShapePair* pairs;
 	int count;
 	int capacity;
-	tbPairFilterFcn* filter; ///< NULL keeps every pair
+	tbPairFilterFcn* filter;	 ///< NULL keeps every pair
+	tbPairPrefetchFcn* prefetch; ///< NULL: no hint
 	void* filterContext;
+	tbShapePair pending[TB_PAIR_BATCH]; ///< found, not yet filtered (shape indices in query order)
+	int pendingCount;
 } tbPairList;
 
-/// Append the pair of two proxies unless the filter drops it.
+/// Append the pair of two proxies unless the filter drops it. With a filter the pair may wait in
+/// `pending` (tbPairList_Flush): the pairs come out in the order they went in.
 void tbPairList_Add(tbPairList* list, const tbProxyTable* table, int proxyKeyA, int proxyKeyB);
+
+/// Filter and append the pairs still pending. Whoever fills a list calls this before reading it.
+void tbPairList_Flush(tbPairList* list);
 
 /// Append a pair as it is (no filter).
 void tbPairList_Append(tbPairList* list, tbShapePair pair);

@@ -87,6 +87,16 @@ bool tbHashSet_Contains(const tbHashSet* set, uint64_t key)
 	return set->keys[tbFindSlot(set, key)] == key;
 }
 
+void tbHashSet_Prefetch(const tbHashSet* set, uint64_t key)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	__builtin_prefetch(set->keys + (tbHashKey(key) & ((uint32_t)set->capacity - 1)));
+#else
+	(void)set;
+	(void)key;
+#endif
+}
+
 bool tbHashSet_Remove(tbHashSet* set, uint64_t key)
 {
 	int i = tbFindSlot(set, key);

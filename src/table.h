@@ -18,6 +18,8 @@ bool tbHashSet_Add(tbHashSet* set, uint64_t key);
 /// Returns true if the key was present.
 bool tbHashSet_Remove(tbHashSet* set, uint64_t key);
 bool tbHashSet_Contains(const tbHashSet* set, uint64_t key);
+/// Ask for the slot where a lookup of key starts (a hint; nothing changes).
+void tbHashSet_Prefetch(const tbHashSet* set, uint64_t key);
 
 /// Pair key of two shape ids, order-independent and never zero.
 static inline uint64_t tbShapePairKey(int a, int b)

@@ -367,7 +367,7 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	world->userData = def->userData;
 	tbHashSet_Create(&world->pairSet, 64);
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
-	tbBroadPhase_SetPairFilter(&world->broadPhase, tbContactPairFilter, world);
+	tbBroadPhase_SetPairFilter(&world->broadPhase, tbContactPairFilter, tbContactPairPrefetch, world);
 	tbReserveCapacity(world, &def->capacity);
 	world->contactRecycleDistance = TB_RECYCLE_DISTANCE;
 	world->enableSpeculative = true;

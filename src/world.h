@@ -457,6 +457,7 @@ void tbFreeChains(tbWorld* world);
 
 // Stages of the step, in order (world.c drives them; each lives in the file of its concept).
 bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* world); // contact.c: broad-phase pair filter
+void tbContactPairPrefetch(int shapeIdA, int shapeIdB, void* world); // contact.c: its prefetch hint
 void tbUpdatePairsStage(tbWorld* world);		// contact.c: broad-phase pairs → new contacts
 void tbCollideStage(tbWorld* world);			// contact.c: narrow phase, begin/end events
 void tbIslandStage(tbWorld* world);				// island.c: wake touching neighbours, gather solver contacts
