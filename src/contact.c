@@ -856,8 +856,11 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 	{
 		const tbContact* ahead = world->contacts + ids[i + TB_PREFETCH_AHEAD];
 		// A contact that may be recycled reads its shapes' first line only (box, body, proxy); one
-		// that will be computed anew reads their geometry too.
-		int shapeBytes = (ahead->flags & tb_contactRecyclable) != 0 ? 32 : (int)sizeof(tbShape);
+		// that will be computed anew reads their geometry too, and nothing after it (the whole
+		// 280-byte shape: spinner's narrow phase 4 % slower). Prefetching the geometry for every
+		// contact: compounds 8 % faster (touching pairs that moved too far to be recycled), the
+		// pyramids 3–4 % slower (every pair recycled).
+		int shapeBytes = (ahead->flags & tb_contactRecyclable) != 0 ? 32 : (int)(offsetof(tbShape, geometry) + sizeof(tbGeometry));
 		tbPrefetch(world->shapes + ahead->shapeIdA, shapeBytes);
 		tbPrefetch(world->shapes + ahead->shapeIdB, shapeBytes);
 		tbPrefetch(world->bodies + ahead->edges[0].bodyId, (int)sizeof(tbBody));
