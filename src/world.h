@@ -101,6 +101,9 @@ enum tbContactFlags
 	/// contact): manifold recycling may move those points instead of recomputing (contact.c).
 	tb_contactRecyclable = 0x20,
 	tb_contactEnablePreSolve = 0x40, ///< either shape enables pre-solve events
+	/// The last narrow phase recycled the manifold: a hint for the collide walk's prefetch (a pair
+	/// recycled once is most often recycled again, one recomputed most often recomputed).
+	tb_contactRecycled = 0x80,
 };
 
 /// Where a contact's manifold was last computed by the narrow phase (manifold recycling,
