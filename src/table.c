@@ -89,12 +89,7 @@ bool tbHashSet_Contains(const tbHashSet* set, uint64_t key)
 
 void tbHashSet_Prefetch(const tbHashSet* set, uint64_t key)
 {
-#if defined(__GNUC__) || defined(__clang__)
-	__builtin_prefetch(set->keys + (tbHashKey(key) & ((uint32_t)set->capacity - 1)));
-#else
-	(void)set;
-	(void)key;
-#endif
+	tbPrefetch(set->keys + (tbHashKey(key) & ((uint32_t)set->capacity - 1)), (int)sizeof(uint64_t));
 }
 
 bool tbHashSet_Remove(tbHashSet* set, uint64_t key)
