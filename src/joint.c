@@ -1319,25 +1319,6 @@ void tbWakeJointPartners(tbWorld* world)
 	}
 }
 
-int tbPushJointedBodies(tbWorld* world, const tbBody* body, uint32_t stamp, int top)
-{
-	for (int key = body->headJointKey; key != TB_NULL_INDEX;)
-	{
-		const tbJoint* joint = world->joints + (key >> 1);
-		int otherId = joint->edges[(key & 1) ^ 1].bodyId;
-		tbBody* other = world->bodies + otherId;
-		if (joint->type != tb_filterJoint && other->type != tb_staticBody && other->islandStamp != stamp &&
-			other->awakeIndex != TB_NULL_INDEX)
-		{
-			other->islandStamp = stamp;
-			TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, top + 1);
-			world->islandStack[top++] = otherId;
-		}
-		key = joint->edges[key & 1].nextKey;
-	}
-	return top;
-}
-
 bool tbJointBlocksCollision(const tbWorld* world, int bodyIdA, int bodyIdB)
 {
 	const tbBody* a = world->bodies + bodyIdA;

@@ -412,7 +412,6 @@ static void tbFreeWorldArrays(tbWorld* w)
 	tbDestroyJointOrderCache(w);
 	tbDestroyContactColorCache(w);
 	TB_ARRAY_FREE(w->islandStack, w->islandStackCapacity);
-	TB_ARRAY_FREE(w->islandBodies, w->islandBodyCapacity);
 	TB_ARRAY_FREE(w->beginEvents, w->beginCapacity);
 	TB_ARRAY_FREE(w->endEvents, w->endCapacity);
 	TB_ARRAY_FREE(w->hitEvents, w->hitCapacity);

@@ -59,8 +59,6 @@ typedef struct tbBody
 	int headJointKey; ///< doubly linked joint edges (joint.h); key = (jointId << 1) | edge
 	int jointCount;
 
-	uint32_t islandStamp; ///< step stamp used by the island search (unsigned: wraps without overflow)
-
 	const char* name;
 	void* userData;
 
@@ -320,8 +318,6 @@ typedef struct tbWorld
 	int* islandStack;
 	int islandStackCapacity;
 	tbArena stepArena; ///< temporaries of the step (solver arrays, colours), reset when it ends
-	int* islandBodies;
-	int islandBodyCapacity;
 
 	// Events of the last step.
 	tbContactBeginTouchEvent* beginEvents;
@@ -350,7 +346,6 @@ typedef struct tbWorld
 	int autoVotes; ///< consecutive windows that voted for a change
 
 	uint32_t stepIndex; ///< steps taken (unsigned: wraps after 2^32 steps without overflow)
-	uint32_t islandSearchStamp; ///< last stamp given to an island search (island.c; unsigned: wraps)
 	float stepTime;		///< time step of the current (or last) tbWorld_Step (s); 0 before the first
 	float gravityLength; ///< |def.gravity| for the current step (read per contact by the narrow phase)
 	tbProfile profile;
@@ -435,8 +430,6 @@ int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching);
 void tbWakeJointedBodies(tbWorld* world, tbBody* body);
 /// Island stage, first thing: a joint with one side awake wakes the other (the rule contacts use).
 void tbWakeJointPartners(tbWorld* world);
-/// Sleep stage: push the awake, unstamped bodies joined to this one onto world->islandStack.
-int tbPushJointedBodies(tbWorld* world, const tbBody* body, uint32_t stamp, int top);
 /// Pair filter: true when a joint between the two bodies forbids their collision.
 bool tbJointBlocksCollision(const tbWorld* world, int bodyIdA, int bodyIdB);
 /// Destroy every joint of a body (tbDestroyBody); the other bodies are woken.

@@ -390,10 +390,8 @@ Test(events, fell_asleep_event_after_time_to_sleep)
 
 // A row of six unit boxes touching side by side on the ground is one island; one of them may not
 // sleep (tbBody_EnableSleep false), so none of the six may, while a lone box beside the row falls
-// asleep as usual. The sleep search starts only from rested bodies and gives up at the first body
-// that has not rested; with the non-sleeper first in the row, the second search of the step must
-// also give up when it reaches the bodies the first search left (or it would put the rest of the
-// row to sleep). Checked for the non-sleeper at each place in the row, for 2 s (4 × the sleep time).
+// asleep as usual. Checked for the non-sleeper at each place in the row (the islands must not
+// depend on which body the sleep stage looks at first), for 2 s (4 × the sleep time).
 Test(events, one_body_that_may_not_sleep_keeps_its_island_awake)
 {
 	for (int keeper = 0; keeper < 6; ++keeper)
@@ -418,6 +416,79 @@ Test(events, one_body_that_may_not_sleep_keeps_its_island_awake)
 		}
 		tbDestroyWorld(world);
 	}
+}
+
+/// A kinematic body: a box of half size (hx, hy) at position moving at velocity.
+static tbBodyId CreateKinematicBox(tbWorldId world, tbVec2 position, float hx, float hy, tbVec2 velocity)
+{
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_kinematicBody;
+	bodyDef.position = position;
+	bodyDef.linearVelocity = velocity;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef def = tbDefaultShapeDef();
+	def.material.friction = 0.0f;
+	tbPolygon box = tbMakeBox(hx, hy);
+	tbCreatePolygonShape(body, &def, &box);
+	return body;
+}
+
+// A frictionless kinematic platform 40 m long slides sideways at 1 m/s under two boxes 4 m apart:
+// the boxes rest on it (friction mixes to 0, so it does not carry them), but a moving kinematic
+// body keeps what it touches awake, so both stay awake at every step from 1 s to 2 s (sleep would
+// come at 0.5 s). The boxes are separate islands touching the same platform: neither may sleep
+// however the sleep stage orders them.
+Test(events, moving_kinematic_body_keeps_every_island_it_touches_awake)
+{
+	tbWorldId world = CreateWorld();
+	CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 20.0f, 0.25f, (tbVec2){1.0f, 0.0f});
+	tbBodyId left = CreateBox(world, (tbVec2){-2.0f, 1.75f}, 0.5f);
+	tbBodyId right = CreateBox(world, (tbVec2){2.0f, 1.75f}, 0.5f);
+	for (int step = 1; step <= 120; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		if (step >= 60)
+		{
+			cr_assert(tbBody_IsAwake(left), "step %d: the left box fell asleep on the moving platform", step);
+			cr_assert(tbBody_IsAwake(right), "step %d: the right box fell asleep on the moving platform", step);
+		}
+	}
+	tbVec2 v = tbBody_GetLinearVelocity(right);
+	cr_assert(fabsf(v.x) < 0.01f && fabsf(v.y) < 0.01f, "the platform moved the box: v = (%g, %g)", (double)v.x,
+			  (double)v.y);
+	tbDestroyWorld(world);
+}
+
+// A kinematic platform at rest (created first) carries two boxes 4 m apart, one of which may not
+// sleep. The other box's island sleeps after 0.5 s; the platform, rested but touching an island that
+// stays awake, stays awake at every step from 1 s to 2 s. Once the second box may sleep, everything
+// sleeps within 1 s (0.5 s of sleep time, counted from when the box is allowed to sleep).
+Test(events, rested_kinematic_body_sleeps_with_the_last_island_it_touches)
+{
+	tbWorldId world = CreateWorld();
+	tbBodyId platform = CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 4.0f, 0.25f, tb_vec2_zero);
+	tbBodyId sleeper = CreateBox(world, (tbVec2){-2.0f, 1.75f}, 0.5f);
+	tbBodyId keeper = CreateBox(world, (tbVec2){2.0f, 1.75f}, 0.5f);
+	tbBody_EnableSleep(keeper, false);
+	for (int step = 1; step <= 120; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		if (step >= 60)
+		{
+			cr_assert(tbBody_IsAwake(platform), "step %d: the platform fell asleep under an awake box", step);
+			cr_assert(tbBody_IsAwake(keeper), "step %d: the box that may not sleep fell asleep", step);
+			cr_assert_not(tbBody_IsAwake(sleeper), "step %d: the resting box is awake", step);
+		}
+	}
+	tbBody_EnableSleep(keeper, true);
+	for (int step = 1; step <= 60; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+	}
+	cr_assert_not(tbBody_IsAwake(keeper), "the second box did not fall asleep once allowed");
+	cr_assert_not(tbBody_IsAwake(platform), "the platform did not fall asleep with the last island on it");
+	cr_assert_not(tbBody_IsAwake(sleeper));
+	tbDestroyWorld(world);
 }
 
 // --- waking -----------------------------------------------------------------------------------
