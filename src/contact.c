@@ -597,8 +597,8 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 		return 0;
 	}
 	tbPos points[2];
-	contact->manifold =
-		tbCollideInWorld(&a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin, points);
+	tbCollideInWorld(&contact->manifold, &a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin,
+					 points);
 	uint32_t result = 0;
 	if (a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape)
 	{

@@ -27,13 +27,17 @@ tbManifold tbPolygonsGJKFrameA(const tbPolygon* polygonA, const tbPolygon* polyg
 /// the two bodies, taken in the precision of world positions.
 tbManifold tbCollideOrderedFrameA(const tbGeometry* a, const tbGeometry* b, tbTransform xf, tbNarrowPhaseMethod method,
 								  float keep);
+/// The same, written into *m (every field).
+void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* b, tbTransform xf,
+						  tbNarrowPhaseMethod method, float keep);
 
 /// The manifold of two shapes placed by world transforms (the narrow phase): the pair collided in
 /// the frame of the shape the routine takes first, with the relative transform taken in the
 /// precision of positions, then moved to the world. Each point's world position also in `points`
-/// (the manifold's own point is a float vector: rounded in the large-world build).
-tbManifold tbCollideInWorld(const tbGeometry* a, tbWorldTransform xfA, const tbGeometry* b, tbWorldTransform xfB,
-							tbNarrowPhaseMethod method, float keep, tbPos points[2]);
+/// (the manifold's own point is a float vector: rounded in the large-world build). Written into *m
+/// (every field), which may be the contact's own manifold: nothing reads it before it is written.
+void tbCollideInWorld(tbManifold* m, const tbGeometry* a, tbWorldTransform xfA, const tbGeometry* b,
+					  tbWorldTransform xfB, tbNarrowPhaseMethod method, float keep, tbPos points[2]);
 
 /// True when the pair routines take a shape of typeA first and one of typeB second.
 bool tbIsRoutineOrder(tbShapeType typeA, tbShapeType typeB);
