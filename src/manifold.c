@@ -118,40 +118,40 @@ static tbManifoldPoint tbMakeManifoldPoint(tbVec2 qA, tbVec2 qB, tbVec2 n, float
 // One point between two core points (circle centres, closest points of segments), in A's frame.
 // The normal is along qB − qA; when the cores touch (|qB − qA| < FLT_EPSILON) it is `fallback`,
 // so coincident shapes still get a unit normal and never a NaN.
-static tbManifold tbPointManifold(tbVec2 qA, float rA, tbVec2 qB, float rB, tbVec2 fallback, uint16_t id, float keep)
+static void tbPointManifold(tbManifold* m, tbVec2 qA, float rA, tbVec2 qB, float rB, tbVec2 fallback, uint16_t id,
+							float keep)
 {
-	tbManifold m = {0};
+	*m = tb_emptyManifold;
 	float distance;
 	tbVec2 n = tbGetLengthAndNormalize(&distance, tbSub(qB, qA));
 	if (distance - rA - rB >= keep)
 	{
-		return m;
+		return;
 	}
 	if (distance < FLT_EPSILON)
 	{
 		n = fallback;
 	}
-	m.normal = n;
-	m.points[0] = tbMakeManifoldPoint(qA, qB, n, rA, rB, id);
-	m.pointCount = 1;
-	return m;
+	m->normal = n;
+	m->points[0] = tbMakeManifoldPoint(qA, qB, n, rA, rB, id);
+	m->pointCount = 1;
 }
 
 // One point between a core point q on a face with unit normal n and a core point c of B, in
 // A's frame. Unlike tbPointManifold the normal is the face's own, exact even when c is behind
 // the face (then (c − q)·n < 0 and the separation says how deep).
-static tbManifold tbFacePointManifold(tbVec2 q, float rA, tbVec2 c, float rB, tbVec2 n, uint16_t id, float keep)
+static void tbFacePointManifold(tbManifold* m, tbVec2 q, float rA, tbVec2 c, float rB, tbVec2 n, uint16_t id,
+								float keep)
 {
-	tbManifold m = {0};
+	*m = tb_emptyManifold;
 	tbManifoldPoint mp = tbMakeManifoldPoint(q, c, n, rA, rB, id);
 	if (mp.separation >= keep)
 	{
-		return m;
+		return;
 	}
-	m.normal = n;
-	m.points[0] = mp;
-	m.pointCount = 1;
-	return m;
+	m->normal = n;
+	m->points[0] = mp;
+	m->pointCount = 1;
 }
 
 // A capsule core or a segment as a 2-vertex polygon: edge 0 runs p1 → p2 with outward normal
@@ -195,33 +195,33 @@ static void tbPlacePolygon(tbPolygon* out, const tbPolygon* polygon, tbTransform
 // ---------------------------------------------------------------------------------------------
 // Circles and capsules: closed forms
 
-static tbManifold tbCirclesFrameA(const tbCircle* circleA, const tbCircle* circleB, tbTransform xf, float keep)
+static void tbCirclesFrameA(tbManifold* m, const tbCircle* circleA, const tbCircle* circleB, tbTransform xf, float keep)
 {
 	// Concentric circles push along A's x-axis: any unit vector is right, this one is defined.
 	tbVec2 centerB = tbTransformPoint(xf, circleB->center);
 	tbVec2 xAxis = {1.0f, 0.0f};
-	return tbPointManifold(circleA->center, circleA->radius, centerB, circleB->radius, xAxis, 0, keep);
+	tbPointManifold(m, circleA->center, circleA->radius, centerB, circleB->radius, xAxis, 0, keep);
 }
 
 // Capsule core a1–a2 against a point c with radius rB, in A's frame.
-static tbManifold tbCapsuleAndPoint(tbVec2 a1, tbVec2 a2, float rA, tbVec2 c, float rB, float keep)
+static void tbCapsuleAndPoint(tbManifold* m, tbVec2 a1, tbVec2 a2, float rA, tbVec2 c, float rB, float keep)
 {
 	// A centre on the core pushes out along the capsule's side normal (x-axis if no axis).
 	tbVec2 side = tbNormalize(tbLeftPerp(tbSub(a2, a1)));
 	tbVec2 fallback = tbIsDegenerateSegment(a1, a2) ? tbMakeVec2(1.0f, 0.0f) : side;
 	float t;
 	tbVec2 q = tbClosestPointOnSegment(&t, c, a1, a2);
-	return tbPointManifold(q, rA, c, rB, fallback, 0, keep);
+	tbPointManifold(m, q, rA, c, rB, fallback, 0, keep);
 }
 
-static tbManifold tbCapsuleAndCircleFrameA(const tbCapsule* capsuleA, const tbCircle* circleB, tbTransform xf,
-											float keep)
+static void tbCapsuleAndCircleFrameA(tbManifold* m, const tbCapsule* capsuleA, const tbCircle* circleB, tbTransform xf,
+									 float keep)
 {
 	tbVec2 c = tbTransformPoint(xf, circleB->center);
-	return tbCapsuleAndPoint(capsuleA->center1, capsuleA->center2, capsuleA->radius, c, circleB->radius, keep);
+	tbCapsuleAndPoint(m, capsuleA->center1, capsuleA->center2, capsuleA->radius, c, circleB->radius, keep);
 }
 
-static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB, float keep);
+static void tbCollidePolygonsInto(tbManifold* m, const tbPolygon* polygonA, const tbPolygon* polygonB, float keep);
 
 // True when the capsule axes are parallel (|sin θ| < TB_PARALLEL_SINE) and B's axis projected on
 // A's overlaps A's by more than the linear slop: then the contact is a side against a side.
@@ -245,26 +245,27 @@ static bool tbAxesOverlapInParallel(tbVec2 a1, tbVec2 a2, tbVec2 b1, tbVec2 b2)
 // the SAT on 2-vertex polygons instead: parallel sides overlapping along the axes (the clip
 // gives two points, so a capsule lying on a capsule does not rock on one point), and crossing
 // cores, whose closest points coincide and define no normal.
-static tbManifold tbCapsulesLocal(tbVec2 a1, tbVec2 a2, float rA, tbVec2 b1, tbVec2 b2, float rB, float keep)
+static void tbCapsulesLocal(tbManifold* m, tbVec2 a1, tbVec2 a2, float rA, tbVec2 b1, tbVec2 b2, float rB, float keep)
 {
 	if (tbIsDegenerateSegment(b1, b2))
 	{
-		tbManifold m = tbCapsuleAndPoint(a1, a2, rA, tbLerp(b1, b2, 0.5f), rB, keep);
-		return m;
+		tbCapsuleAndPoint(m, a1, a2, rA, tbLerp(b1, b2, 0.5f), rB, keep);
+		return;
 	}
 	if (tbIsDegenerateSegment(a1, a2))
 	{
 		// B against the point A: collide B with A and flip the normal back to A → B.
-		tbManifold m = tbCapsuleAndPoint(b1, b2, rB, tbLerp(a1, a2, 0.5f), rA, keep);
-		m.normal = tbNeg(m.normal);
-		return m;
+		tbCapsuleAndPoint(m, b1, b2, rB, tbLerp(a1, a2, 0.5f), rA, keep);
+		m->normal = tbNeg(m->normal);
+		return;
 	}
 
 	tbSegmentDistanceResult r = tbSegmentDistance(a1, a2, b1, b2);
 	float reach = rA + rB + keep;
 	if (r.distanceSquared >= reach * reach)
 	{
-		return tb_emptyManifold;
+		*m = tb_emptyManifold;
+		return;
 	}
 
 	bool crossing = r.distanceSquared < TB_GAP_TOLERANCE * TB_GAP_TOLERANCE;
@@ -272,18 +273,20 @@ static tbManifold tbCapsulesLocal(tbVec2 a1, tbVec2 a2, float rA, tbVec2 b1, tbV
 	{
 		tbPolygon polygonA = tbMakeSegmentPolygon(a1, a2, rA);
 		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, rB);
-		return tbCollidePolygonsLocal(&polygonA, &polygonB, keep);
+		tbCollidePolygonsInto(m, &polygonA, &polygonB, keep);
+		return;
 	}
 
 	tbVec2 side = tbNormalize(tbLeftPerp(tbSub(a2, a1)));
-	return tbPointManifold(r.closest1, rA, r.closest2, rB, side, 0, keep);
+	tbPointManifold(m, r.closest1, rA, r.closest2, rB, side, 0, keep);
 }
 
-static tbManifold tbCapsulesFrameA(const tbCapsule* capsuleA, const tbCapsule* capsuleB, tbTransform xf, float keep)
+static void tbCapsulesFrameA(tbManifold* m, const tbCapsule* capsuleA, const tbCapsule* capsuleB, tbTransform xf,
+							 float keep)
 {
 	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
 	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
-	return tbCapsulesLocal(capsuleA->center1, capsuleA->center2, capsuleA->radius, b1, b2, capsuleB->radius, keep);
+	tbCapsulesLocal(m, capsuleA->center1, capsuleA->center2, capsuleA->radius, b1, b2, capsuleB->radius, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -294,7 +297,7 @@ static tbManifold tbCapsulesFrameA(const tbCapsule* capsuleA, const tbCapsule* c
 // point of the boundary is found over all edges (at most 8): on an edge interior the normal is
 // that edge's normal, exactly; at a vertex it is along c − vertex (Ericson §5.1.2 and the
 // Voronoi regions of §5.2.7, without relying on the largest face being the closest).
-static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB, float keep)
+static void tbPolygonAndPoint(tbManifold* m, const tbPolygon* polygon, tbVec2 c, float rB, float keep)
 {
 	int bestFace = 0;
 	float maxSeparation = -FLT_MAX;
@@ -311,12 +314,14 @@ static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB
 	tbVec2 faceNormal = polygon->normals[bestFace];
 	if (maxSeparation - rA - rB >= keep)
 	{
-		return tb_emptyManifold;
+		*m = tb_emptyManifold;
+		return;
 	}
 	if (maxSeparation <= 0.0f)
 	{
 		tbVec2 q = tbMulSub(c, maxSeparation, faceNormal);
-		return tbFacePointManifold(q, rA, c, rB, faceNormal, 0, keep);
+		tbFacePointManifold(m, q, rA, c, rB, faceNormal, 0, keep);
+		return;
 	}
 
 	float bestDistanceSquared = FLT_MAX;
@@ -342,16 +347,17 @@ static tbManifold tbPolygonAndPoint(const tbPolygon* polygon, tbVec2 c, float rB
 		// Edge interior: project along the face normal, no normalisation noise.
 		float h = tbDot(faceNormal, tbSub(c, bestPoint));
 		tbVec2 q = tbMulSub(c, h, faceNormal);
-		return tbFacePointManifold(q, rA, c, rB, faceNormal, 0, keep);
+		tbFacePointManifold(m, q, rA, c, rB, faceNormal, 0, keep);
+		return;
 	}
-	return tbPointManifold(bestPoint, rA, c, rB, faceNormal, 0, keep);
+	tbPointManifold(m, bestPoint, rA, c, rB, faceNormal, 0, keep);
 }
 
-static tbManifold tbPolygonAndCircleFrameA(const tbPolygon* polygonA, const tbCircle* circleB, tbTransform xf,
-											float keep)
+static void tbPolygonAndCircleFrameA(tbManifold* m, const tbPolygon* polygonA, const tbCircle* circleB, tbTransform xf,
+									 float keep)
 {
 	tbVec2 c = tbTransformPoint(xf, circleB->center);
-	return tbPolygonAndPoint(polygonA, c, circleB->radius, keep);
+	tbPolygonAndPoint(m, polygonA, c, circleB->radius, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -569,15 +575,10 @@ static void tbFlipManifoldInPlace(tbManifold* m)
 	}
 }
 
-static tbManifold tbFlipManifold(tbManifold m)
-{
-	tbFlipManifoldInPlace(&m);
-	return m;
-}
 
 // One point on ref's face refEdge (normal n from ref to inc) at inc's deepest vertex p along −n:
 // h = n·(p − v11), core point on the face p − h·n, id as an unclipped vertex of the clip.
-static tbManifold tbDeepestVertexManifold(const tbPolygon* ref, const tbPolygon* inc, int refEdge, float keep)
+static void tbDeepestVertexManifold(tbManifold* m, const tbPolygon* ref, const tbPolygon* inc, int refEdge, float keep)
 {
 	tbVec2 n = ref->normals[refEdge];
 	tbVec2 v11 = ref->vertices[refEdge];
@@ -594,7 +595,7 @@ static tbManifold tbDeepestVertexManifold(const tbPolygon* ref, const tbPolygon*
 	}
 	tbVec2 p = inc->vertices[deepest];
 	uint16_t id = TB_MAKE_FEATURE_ID(TB_FEATURE_EDGE | refEdge, deepest);
-	return tbFacePointManifold(tbMulSub(p, h, n), ref->radius, p, inc->radius, n, id, keep);
+	tbFacePointManifold(m, tbMulSub(p, h, n), ref->radius, p, inc->radius, n, id, keep);
 }
 
 // One point between the closest features of the cores, for a pair that is no face contact: a
@@ -620,8 +621,8 @@ static tbManifold tbDeepestVertexManifold(const tbPolygon* ref, const tbPolygon*
 // Ids: TB_FEATURE_VERTEX on both bytes, each naming its polygon's vertex of largest barycentric
 // weight in GJK's final simplex (the nearest vertex), the same on both sides of the
 // TB_GAP_TOLERANCE boundary so that warm starting carries over.
-static tbManifold tbClosestFeaturesManifold(const tbPolygon* polygonA, const tbPolygon* polygonB, int edgeA,
-											float separationA, int edgeB, float separationB, float keep)
+static void tbClosestFeaturesManifold(tbManifold* m, const tbPolygon* polygonA, const tbPolygon* polygonB, int edgeA,
+									  float separationA, int edgeB, float separationB, float keep)
 {
 	bool faceOfB = separationB > separationA;
 	tbShapeProxy proxyA = tbMakeProxy(polygonA->vertices, polygonA->count, 0.0f);
@@ -631,8 +632,14 @@ static tbManifold tbClosestFeaturesManifold(const tbPolygon* polygonA, const tbP
 
 	if (closest.simplexCount == 3)
 	{
-		return faceOfB ? tbFlipManifold(tbDeepestVertexManifold(polygonB, polygonA, edgeB, keep))
-					   : tbDeepestVertexManifold(polygonA, polygonB, edgeA, keep);
+		if (faceOfB)
+		{
+			tbDeepestVertexManifold(m, polygonB, polygonA, edgeB, keep);
+			tbFlipManifoldInPlace(m);
+			return;
+		}
+		tbDeepestVertexManifold(m, polygonA, polygonB, edgeA, keep);
+		return;
 	}
 
 	const tbSimplexVertex* nearest = &simplex.v1;
@@ -643,7 +650,7 @@ static tbManifold tbClosestFeaturesManifold(const tbPolygon* polygonA, const tbP
 	uint16_t id = TB_MAKE_FEATURE_ID(TB_FEATURE_VERTEX | nearest->indexA, TB_FEATURE_VERTEX | nearest->indexB);
 	tbVec2 n = faceOfB ? tbNeg(polygonB->normals[edgeB]) : polygonA->normals[edgeA];
 	tbVec2 normal = closest.distance >= TB_GAP_TOLERANCE ? closest.normal : n;
-	return tbFacePointManifold(closest.pointA, polygonA->radius, closest.pointB, polygonB->radius, normal, id, keep);
+	tbFacePointManifold(m, closest.pointA, polygonA->radius, closest.pointB, polygonB->radius, normal, id, keep);
 }
 
 // SAT of two polygons, both in A's frame, into *m. The reference face is A's unless B's separation
@@ -676,14 +683,7 @@ static void tbCollidePolygonsInto(tbManifold* m, const tbPolygon* polygonA, cons
 		tbFlipManifoldInPlace(m);
 		return;
 	}
-	*m = tbClosestFeaturesManifold(polygonA, polygonB, edgeA, separationA, edgeB, separationB, keep);
-}
-
-static tbManifold tbCollidePolygonsLocal(const tbPolygon* polygonA, const tbPolygon* polygonB, float keep)
-{
-	tbManifold m;
-	tbCollidePolygonsInto(&m, polygonA, polygonB, keep);
-	return m;
+	tbClosestFeaturesManifold(m, polygonA, polygonB, edgeA, separationA, edgeB, separationB, keep);
 }
 
 static void tbPolygonsInto(tbManifold* m, const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf,
@@ -694,62 +694,51 @@ static void tbPolygonsInto(tbManifold* m, const tbPolygon* polygonA, const tbPol
 	tbCollidePolygonsInto(m, polygonA, &localB, keep);
 }
 
-static tbManifold tbPolygonsFrameA(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf, float keep)
-{
-	tbManifold m;
-	tbPolygonsInto(&m, polygonA, polygonB, xf, keep);
-	return m;
-}
-
-static tbManifold tbPolygonAndCapsuleFrameA(const tbPolygon* polygonA, const tbCapsule* capsuleB, tbTransform xf,
-											 float keep)
+static void tbPolygonAndCapsuleFrameA(tbManifold* m, const tbPolygon* polygonA, const tbCapsule* capsuleB,
+									  tbTransform xf, float keep)
 {
 	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
 	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
-	tbManifold m;
 	if (tbIsDegenerateSegment(b1, b2))
 	{
-		m = tbPolygonAndPoint(polygonA, tbLerp(b1, b2, 0.5f), capsuleB->radius, keep);
+		tbPolygonAndPoint(m, polygonA, tbLerp(b1, b2, 0.5f), capsuleB->radius, keep);
+		return;
 	}
-	else
-	{
-		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
-		m = tbCollidePolygonsLocal(polygonA, &polygonB, keep);
-	}
-	return m;
+	tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
+	tbCollidePolygonsInto(m, polygonA, &polygonB, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
 // Segments: a segment is a capsule of radius zero, i.e. a 2-vertex polygon without radius
 
-static tbManifold tbSegmentAndCircleFrameA(const tbSegment* segmentA, const tbCircle* circleB, tbTransform xf,
-											float keep)
+static void tbSegmentAndCircleFrameA(tbManifold* m, const tbSegment* segmentA, const tbCircle* circleB, tbTransform xf,
+									 float keep)
 {
 	tbCapsule capsuleA = {segmentA->point1, segmentA->point2, 0.0f};
-	return tbCapsuleAndCircleFrameA(&capsuleA, circleB, xf, keep);
+	tbCapsuleAndCircleFrameA(m, &capsuleA, circleB, xf, keep);
 }
 
-static tbManifold tbSegmentAndCapsuleFrameA(const tbSegment* segmentA, const tbCapsule* capsuleB, tbTransform xf,
-											 float keep)
+static void tbSegmentAndCapsuleFrameA(tbManifold* m, const tbSegment* segmentA, const tbCapsule* capsuleB,
+									  tbTransform xf, float keep)
 {
 	tbCapsule capsuleA = {segmentA->point1, segmentA->point2, 0.0f};
-	return tbCapsulesFrameA(&capsuleA, capsuleB, xf, keep);
+	tbCapsulesFrameA(m, &capsuleA, capsuleB, xf, keep);
 }
 
-static tbManifold tbSegmentAndPolygonFrameA(const tbSegment* segmentA, const tbPolygon* polygonB, tbTransform xf,
-											 float keep)
+static void tbSegmentAndPolygonFrameA(tbManifold* m, const tbSegment* segmentA, const tbPolygon* polygonB,
+									  tbTransform xf, float keep)
 {
 	tbPolygon localB;
 	tbPlacePolygon(&localB, polygonB, xf);
 	if (tbIsDegenerateSegment(segmentA->point1, segmentA->point2))
 	{
 		// A point against B: collide B with it and turn the normal back to A → B.
-		tbManifold m = tbPolygonAndPoint(&localB, tbLerp(segmentA->point1, segmentA->point2, 0.5f), 0.0f, keep);
-		m.normal = tbNeg(m.normal);
-		return m;
+		tbPolygonAndPoint(m, &localB, tbLerp(segmentA->point1, segmentA->point2, 0.5f), 0.0f, keep);
+		m->normal = tbNeg(m->normal);
+		return;
 	}
 	tbPolygon polygonA = tbMakeSegmentPolygon(segmentA->point1, segmentA->point2, 0.0f);
-	return tbCollidePolygonsLocal(&polygonA, &localB, keep);
+	tbCollidePolygonsInto(m, &polygonA, &localB, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -824,95 +813,93 @@ static tbChainRegion tbClassifyChainNormal(const tbChainFrame* f, tbVec2 normal)
 }
 
 /// Face contact of the segment (reference) with polygon B (incident), points clipped to the span.
-static tbManifold tbChainFaceManifold(const tbPolygon* segment, const tbPolygon* localB, float keep)
+static void tbChainFaceManifold(tbManifold* m, const tbPolygon* segment, const tbPolygon* localB, float keep)
 {
-	tbManifold m = tb_emptyManifold;
+	*m = tb_emptyManifold;
 	int incEdge = tbFindIncidentEdge(localB, segment->normals[0]);
-	if (tbClipIncidentEdge(&m, segment, localB, 0, incEdge, keep) == false)
-	{
-		return tb_emptyManifold;
-	}
-	return m;
+	tbClipIncidentEdge(m, segment, localB, 0, incEdge, keep); // leaves m empty when it fails
 }
 
-static tbManifold tbChainAndPolygonLocal(const tbChainSegment* chain, const tbPolygon* localB, float keep)
+static void tbChainAndPolygonLocal(tbManifold* m, const tbChainSegment* chain, const tbPolygon* localB, float keep)
 {
 	tbChainFrame f = tbMakeChainFrame(chain);
 	if (tbDot(tbSub(localB->centroid, f.v1), f.n) < 0.0f)
 	{
-		return tb_emptyManifold;
+		*m = tb_emptyManifold;
+		return;
 	}
 	tbPolygon segment = tbMakeSegmentPolygon(f.v1, f.v2, 0.0f);
-	tbManifold m = tbCollidePolygonsLocal(&segment, localB, keep);
-	if (m.pointCount == 0)
+	tbCollidePolygonsInto(m, &segment, localB, keep);
+	if (m->pointCount == 0)
 	{
-		return m;
+		return;
 	}
-	switch (tbClassifyChainNormal(&f, m.normal))
+	switch (tbClassifyChainNormal(&f, m->normal))
 	{
 		case tb_chainFace:
-			return m;
+			return;
 		case tb_chainFlatten:
-			return tbChainFaceManifold(&segment, localB, keep);
+			tbChainFaceManifold(m, &segment, localB, keep);
+			return;
 		default:
-			return tb_emptyManifold;
+			*m = tb_emptyManifold;
+			return;
 	}
 }
 
-static tbManifold tbChainAndPointLocal(const tbChainSegment* chain, tbVec2 c, float radius, float keep)
+static void tbChainAndPointLocal(tbManifold* m, const tbChainSegment* chain, tbVec2 c, float radius, float keep)
 {
 	tbChainFrame f = tbMakeChainFrame(chain);
 	if (tbDot(tbSub(c, f.v1), f.n) < 0.0f)
 	{
-		return tb_emptyManifold;
+		*m = tb_emptyManifold;
+		return;
 	}
 	float t = tbDot(tbSub(c, f.v1), f.e);
 	float length = tbDot(tbSub(f.v2, f.v1), f.e);
 	if (0.0f <= t && t <= length)
 	{
-		return tbFacePointManifold(tbMulAdd(f.v1, t, f.e), 0.0f, c, radius, f.n, TB_MAKE_FEATURE_ID(0, 0), keep);
+		tbFacePointManifold(m, tbMulAdd(f.v1, t, f.e), 0.0f, c, radius, f.n, TB_MAKE_FEATURE_ID(0, 0), keep);
+		return;
 	}
 	tbVec2 corner = t < 0.0f ? f.v1 : f.v2;
 	tbVec2 normal = tbNormalize(tbSub(c, corner));
 	if (tbClassifyChainNormal(&f, normal) != tb_chainFace)
 	{
-		return tb_emptyManifold; // past a straight or concave joint, or a convex one's bisector
+		*m = tb_emptyManifold; // past a straight or concave joint, or a convex one's bisector
+		return;
 	}
 	uint16_t id = TB_MAKE_FEATURE_ID(TB_FEATURE_VERTEX | (t < 0.0f ? 0 : 1), 0);
-	return tbPointManifold(corner, 0.0f, c, radius, f.n, id, keep);
+	tbPointManifold(m, corner, 0.0f, c, radius, f.n, id, keep);
 }
 
-static tbManifold tbChainSegmentAndCircleFrameA(const tbChainSegment* segmentA, const tbCircle* circleB, tbTransform xf,
-												 float keep)
+static void tbChainSegmentAndCircleFrameA(tbManifold* m, const tbChainSegment* segmentA, const tbCircle* circleB,
+										  tbTransform xf, float keep)
 {
 	tbVec2 c = tbTransformPoint(xf, circleB->center);
-	return tbChainAndPointLocal(segmentA, c, circleB->radius, keep);
+	tbChainAndPointLocal(m, segmentA, c, circleB->radius, keep);
 }
 
-static tbManifold tbChainSegmentAndCapsuleFrameA(const tbChainSegment* segmentA, const tbCapsule* capsuleB,
-												  tbTransform xf, float keep)
+static void tbChainSegmentAndCapsuleFrameA(tbManifold* m, const tbChainSegment* segmentA, const tbCapsule* capsuleB,
+										   tbTransform xf, float keep)
 {
 	tbVec2 b1 = tbTransformPoint(xf, capsuleB->center1);
 	tbVec2 b2 = tbTransformPoint(xf, capsuleB->center2);
-	tbManifold m;
 	if (tbIsDegenerateSegment(b1, b2))
 	{
-		m = tbChainAndPointLocal(segmentA, tbLerp(b1, b2, 0.5f), capsuleB->radius, keep);
+		tbChainAndPointLocal(m, segmentA, tbLerp(b1, b2, 0.5f), capsuleB->radius, keep);
+		return;
 	}
-	else
-	{
-		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
-		m = tbChainAndPolygonLocal(segmentA, &polygonB, keep);
-	}
-	return m;
+	tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
+	tbChainAndPolygonLocal(m, segmentA, &polygonB, keep);
 }
 
-static tbManifold tbChainSegmentAndPolygonFrameA(const tbChainSegment* segmentA, const tbPolygon* polygonB,
-												  tbTransform xf, float keep)
+static void tbChainSegmentAndPolygonFrameA(tbManifold* m, const tbChainSegment* segmentA, const tbPolygon* polygonB,
+										   tbTransform xf, float keep)
 {
 	tbPolygon localB;
 	tbPlacePolygon(&localB, polygonB, xf);
-	return tbChainAndPolygonLocal(segmentA, &localB, keep);
+	tbChainAndPolygonLocal(m, segmentA, &localB, keep);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -940,28 +927,33 @@ static int tbDispatchRank(tbShapeType type)
 }
 
 // Pair in routine order, rank(A) ≥ rank(B); B placed in A's frame by xf = A⁻¹·B; the manifold in
-// A's frame, into *m. The polygon pair (most pairs in a pile) is written in place; the closed forms
-// return their small manifolds by value.
+// A's frame, into *m. Every routine writes through the pointer (see tbCollidePolygonsInto for why).
 void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* b, tbTransform xf,
 						  tbNarrowPhaseMethod method, float keep)
 {
 	switch (a->type)
 	{
 		case tb_circleShape:
-			*m = tbCirclesFrameA(&a->circle, &b->circle, xf, keep);
+			tbCirclesFrameA(m, &a->circle, &b->circle, xf, keep);
 			return;
 		case tb_capsuleShape:
-			*m = b->type == tb_circleShape ? tbCapsuleAndCircleFrameA(&a->capsule, &b->circle, xf, keep)
-										   : tbCapsulesFrameA(&a->capsule, &b->capsule, xf, keep);
+			if (b->type == tb_circleShape)
+			{
+				tbCapsuleAndCircleFrameA(m, &a->capsule, &b->circle, xf, keep);
+			}
+			else
+			{
+				tbCapsulesFrameA(m, &a->capsule, &b->capsule, xf, keep);
+			}
 			return;
 		case tb_polygonShape:
 			if (b->type == tb_circleShape)
 			{
-				*m = tbPolygonAndCircleFrameA(&a->polygon, &b->circle, xf, keep);
+				tbPolygonAndCircleFrameA(m, &a->polygon, &b->circle, xf, keep);
 			}
 			else if (b->type == tb_capsuleShape)
 			{
-				*m = tbPolygonAndCapsuleFrameA(&a->polygon, &b->capsule, xf, keep);
+				tbPolygonAndCapsuleFrameA(m, &a->polygon, &b->capsule, xf, keep);
 			}
 			else if (method == tb_narrowPhaseGJK)
 			{
@@ -975,15 +967,15 @@ void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* 
 		case tb_segmentShape:
 			if (b->type == tb_circleShape)
 			{
-				*m = tbSegmentAndCircleFrameA(&a->segment, &b->circle, xf, keep);
+				tbSegmentAndCircleFrameA(m, &a->segment, &b->circle, xf, keep);
 			}
 			else if (b->type == tb_capsuleShape)
 			{
-				*m = tbSegmentAndCapsuleFrameA(&a->segment, &b->capsule, xf, keep);
+				tbSegmentAndCapsuleFrameA(m, &a->segment, &b->capsule, xf, keep);
 			}
 			else if (b->type == tb_polygonShape)
 			{
-				*m = tbSegmentAndPolygonFrameA(&a->segment, &b->polygon, xf, keep);
+				tbSegmentAndPolygonFrameA(m, &a->segment, &b->polygon, xf, keep);
 			}
 			else
 			{
@@ -993,15 +985,15 @@ void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* 
 		case tb_chainSegmentShape:
 			if (b->type == tb_circleShape)
 			{
-				*m = tbChainSegmentAndCircleFrameA(&a->chainSegment, &b->circle, xf, keep);
+				tbChainSegmentAndCircleFrameA(m, &a->chainSegment, &b->circle, xf, keep);
 			}
 			else if (b->type == tb_capsuleShape)
 			{
-				*m = tbChainSegmentAndCapsuleFrameA(&a->chainSegment, &b->capsule, xf, keep);
+				tbChainSegmentAndCapsuleFrameA(m, &a->chainSegment, &b->capsule, xf, keep);
 			}
 			else if (b->type == tb_polygonShape)
 			{
-				*m = tbChainSegmentAndPolygonFrameA(&a->chainSegment, &b->polygon, xf, keep);
+				tbChainSegmentAndPolygonFrameA(m, &a->chainSegment, &b->polygon, xf, keep);
 			}
 			else
 			{
@@ -1012,14 +1004,6 @@ void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* 
 			*m = tb_emptyManifold;
 			return;
 	}
-}
-
-tbManifold tbCollideOrderedFrameA(const tbGeometry* a, const tbGeometry* b, tbTransform xf, tbNarrowPhaseMethod method,
-								  float keep)
-{
-	tbManifold m;
-	tbCollideOrderedInto(&m, a, b, xf, method, keep);
-	return m;
 }
 
 bool tbIsRoutineOrder(tbShapeType typeA, tbShapeType typeB)
@@ -1083,13 +1067,15 @@ tbManifold tbCollideShapesWithMargin(const tbGeometry* shapeA, tbTransform xfA, 
 	float keep = speculativeDistance;
 	if (rankA >= rankB)
 	{
-		tbManifold m = tbCollideOrderedFrameA(shapeA, shapeB, tbInvMulTransforms(xfA, xfB), method, keep);
+		tbManifold m;
+	tbCollideOrderedInto(&m, shapeA, shapeB, tbInvMulTransforms(xfA, xfB), method, keep);
 		return tbManifoldToWorld(m, xfA);
 	}
 
 	// B → A in routine order, then the normal turned to A → B and the feature bytes swapped so
 	// the first byte still names a feature of A. Points and separations do not depend on order.
-	tbManifold m = tbCollideOrderedFrameA(shapeB, shapeA, tbInvMulTransforms(xfB, xfA), method, keep);
+	tbManifold m;
+	tbCollideOrderedInto(&m, shapeB, shapeA, tbInvMulTransforms(xfB, xfA), method, keep);
 	return tbSwapManifoldRoles(tbManifoldToWorld(m, xfB));
 }
 
@@ -1128,61 +1114,71 @@ tbLocalManifold tbMakeLocalManifold(const tbManifold* m)
 
 tbLocalManifold tbCollideCircles(const tbCircle* circleA, const tbCircle* circleB, tbTransform xf)
 {
-	tbManifold m = tbCirclesFrameA(circleA, circleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbCirclesFrameA(&m, circleA, circleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollideCapsuleAndCircle(const tbCapsule* capsuleA, const tbCircle* circleB, tbTransform xf)
 {
-	tbManifold m = tbCapsuleAndCircleFrameA(capsuleA, circleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbCapsuleAndCircleFrameA(&m, capsuleA, circleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollideSegmentAndCircle(const tbSegment* segmentA, const tbCircle* circleB, tbTransform xf)
 {
-	tbManifold m = tbSegmentAndCircleFrameA(segmentA, circleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbSegmentAndCircleFrameA(&m, segmentA, circleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollidePolygonAndCircle(const tbPolygon* polygonA, const tbCircle* circleB, tbTransform xf)
 {
-	tbManifold m = tbPolygonAndCircleFrameA(polygonA, circleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbPolygonAndCircleFrameA(&m, polygonA, circleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollideCapsules(const tbCapsule* capsuleA, const tbCapsule* capsuleB, tbTransform xf)
 {
-	tbManifold m = tbCapsulesFrameA(capsuleA, capsuleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbCapsulesFrameA(&m, capsuleA, capsuleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollideSegmentAndCapsule(const tbSegment* segmentA, const tbCapsule* capsuleB, tbTransform xf)
 {
-	tbManifold m = tbSegmentAndCapsuleFrameA(segmentA, capsuleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbSegmentAndCapsuleFrameA(&m, segmentA, capsuleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollidePolygonAndCapsule(const tbPolygon* polygonA, const tbCapsule* capsuleB, tbTransform xf)
 {
-	tbManifold m = tbPolygonAndCapsuleFrameA(polygonA, capsuleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbPolygonAndCapsuleFrameA(&m, polygonA, capsuleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollidePolygons(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf)
 {
-	tbManifold m = tbPolygonsFrameA(polygonA, polygonB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbPolygonsInto(&m, polygonA, polygonB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollideSegmentAndPolygon(const tbSegment* segmentA, const tbPolygon* polygonB, tbTransform xf)
 {
-	tbManifold m = tbSegmentAndPolygonFrameA(segmentA, polygonB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbSegmentAndPolygonFrameA(&m, segmentA, polygonB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
 tbLocalManifold tbCollideChainSegmentAndCircle(const tbChainSegment* segmentA, const tbCircle* circleB, tbTransform xf)
 {
-	tbManifold m = tbChainSegmentAndCircleFrameA(segmentA, circleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbChainSegmentAndCircleFrameA(&m, segmentA, circleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
@@ -1192,7 +1188,8 @@ tbLocalManifold tbCollideChainSegmentAndCapsule(const tbChainSegment* segmentA, 
 												tbTransform xf, tbSimplexCache* cache)
 {
 	(void)cache;
-	tbManifold m = tbChainSegmentAndCapsuleFrameA(segmentA, capsuleB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbChainSegmentAndCapsuleFrameA(&m, segmentA, capsuleB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }
 
@@ -1200,6 +1197,7 @@ tbLocalManifold tbCollideChainSegmentAndPolygon(const tbChainSegment* segmentA, 
 												tbTransform xf, tbSimplexCache* cache)
 {
 	(void)cache;
-	tbManifold m = tbChainSegmentAndPolygonFrameA(segmentA, polygonB, xf, TB_KEEP_DISTANCE);
+	tbManifold m;
+	tbChainSegmentAndPolygonFrameA(&m, segmentA, polygonB, xf, TB_KEEP_DISTANCE);
 	return tbMakeLocalManifold(&m);
 }

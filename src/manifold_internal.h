@@ -24,10 +24,7 @@ tbManifold tbPolygonsGJKFrameA(const tbPolygon* polygonA, const tbPolygon* polyg
 /// Any pair in routine order (tbIsRoutineOrder(a->type, b->type)), B placed in A's frame by
 /// xf = A⁻¹·B, keeping points whose separation is below `keep`; the manifold in A's frame, its
 /// normal from A to B (manifold.c). The narrow phase calls it with the relative transform of
-/// the two bodies, taken in the precision of world positions.
-tbManifold tbCollideOrderedFrameA(const tbGeometry* a, const tbGeometry* b, tbTransform xf, tbNarrowPhaseMethod method,
-								  float keep);
-/// The same, written into *m (every field).
+/// the two bodies, taken in the precision of world positions. Written into *m (every field).
 void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* b, tbTransform xf,
 						  tbNarrowPhaseMethod method, float keep);
 
