@@ -1647,15 +1647,17 @@ int main(int argc, char** argv)
 		fprintf(stderr, "tumble-bench: --repeat must be >= 1 and --steps >= 0\n");
 		return 2;
 	}
+	if (options.workers > 1)
+	{
+		// The scene runs and the stage profile step worlds with the options' configuration: both
+		// engines on N workers (the charts and the sleep benchmark build their own worlds, on one).
+		options.config.overrides.tasks = TaskSystem_Create(options.workers);
+#ifdef TUMBLE_HAVE_BOX2D3
+		PeerBox2D3_SetWorkerCount(options.workers);
+#endif
+	}
 	if (command == NULL)
 	{
-		if (options.workers > 1)
-		{
-			options.config.overrides.tasks = TaskSystem_Create(options.workers);
-#ifdef TUMBLE_HAVE_BOX2D3
-			PeerBox2D3_SetWorkerCount(options.workers);
-#endif
-		}
 		int status = RunScenes(&options);
 		TaskSystem_Destroy(options.config.overrides.tasks);
 		return status;
@@ -1663,6 +1665,7 @@ int main(int argc, char** argv)
 	FILE* out = OpenOutput(options.csvPath);
 	if (out == NULL)
 	{
+		TaskSystem_Destroy(options.config.overrides.tasks);
 		return 1;
 	}
 	int status = 2;
@@ -1702,5 +1705,6 @@ int main(int argc, char** argv)
 	{
 		fclose(out);
 	}
+	TaskSystem_Destroy(options.config.overrides.tasks);
 	return status;
 }
