@@ -54,7 +54,8 @@ void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex)
 // (TB_SOLVE_WIDE_LOOP) then gets its own copy with the policy and the `shared` choice folded away.
 // Left to itself the compiler kept one out-of-line copy (680 instructions) taking both at run time.
 
-// The velocities (v.x, v.y, ω) of four bodies and their step deltas (Δp.x, Δp.y, Δq.c, Δq.s).
+// The velocities (v.x, v.y, ω) of a block side's bodies (one per lane) and their step deltas
+// (Δp.x, Δp.y, Δq.c, Δq.s).
 typedef struct tbWideBody
 {
 	tbFloatW vx, vy, w;
@@ -77,41 +78,58 @@ static inline void* tbDeltaRow(tbSolverBody* bodies, int index)
 	return (char*)(bodies + index) + offsetof(tbSolverBody, deltaPosition);
 }
 
-static TB_FORCE_INLINE void tbGatherVelocities(tbSolverBody* bodies, const int index[4], tbWideBody* out)
+// The rows of the bodies of one side of a block, one per lane.
+static TB_FORCE_INLINE void tbVelocityRows(tbSolverBody* bodies, const int index[TB_SIMD_WIDTH],
+										   void* rows[TB_SIMD_WIDTH])
 {
+	for (int i = 0; i < TB_SIMD_WIDTH; ++i)
+	{
+		rows[i] = tbVelocityRow(bodies, index[i]);
+	}
+}
+
+static TB_FORCE_INLINE void tbGatherVelocities(tbSolverBody* bodies, const int index[TB_SIMD_WIDTH], tbWideBody* out)
+{
+	void* rowPointers[TB_SIMD_WIDTH];
+	tbVelocityRows(bodies, index, rowPointers);
 	tbFloatW rows[4];
-	tbLoadTransposeW(tbVelocityRow(bodies, index[0]), tbVelocityRow(bodies, index[1]),
-					 tbVelocityRow(bodies, index[2]), tbVelocityRow(bodies, index[3]), rows);
+	tbLoadTransposeRowsW((const void* const*)rowPointers, rows);
 	out->vx = rows[0], out->vy = rows[1], out->w = rows[2], out->padding = rows[3];
 }
 
-static TB_FORCE_INLINE void tbGatherDeltas(tbSolverBody* bodies, const int index[4], tbWideBody* out)
+static TB_FORCE_INLINE void tbGatherDeltas(tbSolverBody* bodies, const int index[TB_SIMD_WIDTH], tbWideBody* out)
 {
+	void* rowPointers[TB_SIMD_WIDTH];
+	for (int i = 0; i < TB_SIMD_WIDTH; ++i)
+	{
+		rowPointers[i] = tbDeltaRow(bodies, index[i]);
+	}
 	tbFloatW rows[4];
-	tbLoadTransposeW(tbDeltaRow(bodies, index[0]), tbDeltaRow(bodies, index[1]), tbDeltaRow(bodies, index[2]),
-					 tbDeltaRow(bodies, index[3]), rows);
+	tbLoadTransposeRowsW((const void* const*)rowPointers, rows);
 	out->dpx = rows[0], out->dpy = rows[1], out->qc = rows[2], out->qs = rows[3];
 }
 
-// Written lane 0 to 3. Only a body that does not move (static stand-in, kinematic) can appear in
-// two lanes, and it is written with the velocity it was read with.
-static TB_FORCE_INLINE void tbScatterVelocities(tbSolverBody* bodies, const int index[4], const tbWideBody* in)
+// Written lane 0 to the last. Only a body that does not move (static stand-in, kinematic) can appear
+// in two lanes, and it is written with the velocity it was read with.
+static TB_FORCE_INLINE void tbScatterVelocities(tbSolverBody* bodies, const int index[TB_SIMD_WIDTH],
+												const tbWideBody* in)
 {
+	void* rowPointers[TB_SIMD_WIDTH];
+	tbVelocityRows(bodies, index, rowPointers);
 	tbFloatW rows[4] = {in->vx, in->vy, in->w, in->padding};
-	tbTransposeStoreW(tbVelocityRow(bodies, index[0]), tbVelocityRow(bodies, index[1]),
-					  tbVelocityRow(bodies, index[2]), tbVelocityRow(bodies, index[3]), rows);
+	tbTransposeStoreRowsW(rowPointers, rows, TB_ALL_LANES);
 }
 
 // The same, for a solve spread over workers: lanes of bodies that do not move (inverse mass and
 // inertia zero: the static stand-in, kinematic bodies) are not written, since several blocks of one
 // colour may hold them. The values skipped are the ones read, so the result is the same.
-static TB_FORCE_INLINE void tbScatterMovingVelocities(tbSolverBody* bodies, const int index[4], const tbWideBody* in,
-											 tbFloatW invMass, tbFloatW invI)
+static TB_FORCE_INLINE void tbScatterMovingVelocities(tbSolverBody* bodies, const int index[TB_SIMD_WIDTH],
+													  const tbWideBody* in, tbFloatW invMass, tbFloatW invI)
 {
-	int mask = tbNonZeroMaskW(invMass, invI);
+	void* rowPointers[TB_SIMD_WIDTH];
+	tbVelocityRows(bodies, index, rowPointers);
 	tbFloatW rows[4] = {in->vx, in->vy, in->w, in->padding};
-	tbTransposeStoreMaskedW(tbVelocityRow(bodies, index[0]), tbVelocityRow(bodies, index[1]),
-							tbVelocityRow(bodies, index[2]), tbVelocityRow(bodies, index[3]), rows, mask);
+	tbTransposeStoreRowsW(rowPointers, rows, tbNonZeroMaskW(invMass, invI));
 }
 
 static TB_FORCE_INLINE void tbScatterPair(tbSolverBody* bodies, const tbWideContactConstraint* c, const tbWideBody* a,

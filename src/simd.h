@@ -1,10 +1,13 @@
-// Internal: the wide float, four lanes, and the few operations the wide contact solver needs
-// (contact_solver_wide.c). This is the one place with SIMD intrinsics: SSE2 where the compiler
-// targets it (every x86-64 compiler does), otherwise four plain floats. Each lane of every
-// operation is the IEEE single-precision result of the scalar expression written beside it, so
-// the two implementations give bit-identical results: max and min keep the scalar rule
-// `a > b ? a : b` (MAXPS returns its second operand when the comparison is false, NaN included),
-// and there is no fused multiply-add, reciprocal estimate or other approximation.
+// Internal: the wide float and the few operations the wide contact solver needs
+// (contact_solver_wide.c). This is the one place with SIMD intrinsics: eight lanes of AVX2 when the
+// build asks for it (CMake option TUMBLE_AVX2, which defines TB_SIMD_AVX2 and compiles with
+// -mavx2), else four lanes of SSE2 where the compiler targets it (every x86-64 compiler does),
+// otherwise four plain floats. Each lane of every operation is the IEEE single-precision result of
+// the scalar expression written beside it, so the implementations give bit-identical results: max
+// and min keep the scalar rule `a > b ? a : b` (MAXPS returns its second operand when the
+// comparison is false, NaN included), and there is no fused multiply-add, reciprocal estimate or
+// other approximation. The width does not change results either: the lanes of a block are
+// contacts of one colour, which share no moving body, so how they are grouped is invisible.
 #pragma once
 
 #include <stdint.h>
@@ -16,9 +19,110 @@
 #include <emmintrin.h>
 #endif
 
+#if defined(TB_SIMD_AVX2) && !defined(TB_SIMD_NONE)
+#if !defined(__AVX2__)
+#error "TB_SIMD_AVX2 needs a compiler targeting AVX2 (-mavx2)"
+#endif
+#include <immintrin.h>
+#define TB_SIMD_WIDTH 8
+#else
+#undef TB_SIMD_AVX2
 #define TB_SIMD_WIDTH 4
+#endif
 
-#if defined(TB_SIMD_SSE2)
+#if defined(TB_SIMD_AVX2)
+
+typedef __m256 tbFloatW;
+
+static inline tbFloatW tbZeroW(void)
+{
+	return _mm256_setzero_ps();
+}
+
+static inline tbFloatW tbSplatW(float a)
+{
+	return _mm256_set1_ps(a);
+}
+
+static inline tbFloatW tbAddW(tbFloatW a, tbFloatW b)
+{
+	return _mm256_add_ps(a, b);
+}
+
+static inline tbFloatW tbSubW(tbFloatW a, tbFloatW b)
+{
+	return _mm256_sub_ps(a, b);
+}
+
+static inline tbFloatW tbMulW(tbFloatW a, tbFloatW b)
+{
+	return _mm256_mul_ps(a, b);
+}
+
+/// a > b ? a : b per lane (VMAXPS returns its second operand when the comparison is false)
+static inline tbFloatW tbMaxW(tbFloatW a, tbFloatW b)
+{
+	return _mm256_max_ps(a, b);
+}
+
+/// a < b ? a : b per lane
+static inline tbFloatW tbMinW(tbFloatW a, tbFloatW b)
+{
+	return _mm256_min_ps(a, b);
+}
+
+/// a > b ? ifTrue : ifFalse per lane (ordered comparison: false for NaN, as the scalar `>`)
+static inline tbFloatW tbSelectGreaterW(tbFloatW a, tbFloatW b, tbFloatW ifTrue, tbFloatW ifFalse)
+{
+	__m256 mask = _mm256_cmp_ps(a, b, _CMP_GT_OQ);
+	return _mm256_blendv_ps(ifFalse, ifTrue, mask);
+}
+
+/// Loads eight rows of four floats (16 bytes each, any alignment) and transposes: out[k] lane i =
+/// float k of row i. Two 4×4 transposes, rows 0–3 into the low halves and rows 4–7 into the high.
+static inline void tbLoadTransposeRowsW(const void* const rows[TB_SIMD_WIDTH], tbFloatW out[4])
+{
+	__m128 a0 = _mm_loadu_ps((const float*)rows[0]), a1 = _mm_loadu_ps((const float*)rows[1]);
+	__m128 a2 = _mm_loadu_ps((const float*)rows[2]), a3 = _mm_loadu_ps((const float*)rows[3]);
+	__m128 b0 = _mm_loadu_ps((const float*)rows[4]), b1 = _mm_loadu_ps((const float*)rows[5]);
+	__m128 b2 = _mm_loadu_ps((const float*)rows[6]), b3 = _mm_loadu_ps((const float*)rows[7]);
+	_MM_TRANSPOSE4_PS(a0, a1, a2, a3);
+	_MM_TRANSPOSE4_PS(b0, b1, b2, b3);
+	out[0] = _mm256_set_m128(b0, a0);
+	out[1] = _mm256_set_m128(b1, a1);
+	out[2] = _mm256_set_m128(b2, a2);
+	out[3] = _mm256_set_m128(b3, a3);
+}
+
+/// The inverse of tbLoadTransposeRowsW: row i, float k = in[k] lane i, for the rows whose bit is
+/// set in `mask` (rows 0 to 7 in order; a row left out is a body that does not move).
+static inline void tbTransposeStoreRowsW(void* const rows[TB_SIMD_WIDTH], const tbFloatW in[4], int mask)
+{
+	__m128 a0 = _mm256_castps256_ps128(in[0]), a1 = _mm256_castps256_ps128(in[1]);
+	__m128 a2 = _mm256_castps256_ps128(in[2]), a3 = _mm256_castps256_ps128(in[3]);
+	__m128 b0 = _mm256_extractf128_ps(in[0], 1), b1 = _mm256_extractf128_ps(in[1], 1);
+	__m128 b2 = _mm256_extractf128_ps(in[2], 1), b3 = _mm256_extractf128_ps(in[3], 1);
+	_MM_TRANSPOSE4_PS(a0, a1, a2, a3);
+	_MM_TRANSPOSE4_PS(b0, b1, b2, b3);
+	__m128 r[8] = {a0, a1, a2, a3, b0, b1, b2, b3};
+	for (int i = 0; i < 8; ++i)
+	{
+		if (mask & (1 << i))
+		{
+			_mm_storeu_ps((float*)rows[i], r[i]);
+		}
+	}
+}
+
+/// Bit k set where lane k of a or of b is not zero.
+static inline int tbNonZeroMaskW(tbFloatW a, tbFloatW b)
+{
+	__m256 zero = _mm256_setzero_ps();
+	__m256 nonZero = _mm256_or_ps(_mm256_cmp_ps(a, zero, _CMP_NEQ_UQ), _mm256_cmp_ps(b, zero, _CMP_NEQ_UQ));
+	return _mm256_movemask_ps(nonZero);
+}
+
+#elif defined(TB_SIMD_SSE2)
 
 typedef __m128 tbFloatW;
 
@@ -118,6 +222,21 @@ static inline int tbNonZeroMaskW(tbFloatW a, tbFloatW b)
 {
 	__m128 zero = _mm_setzero_ps();
 	return _mm_movemask_ps(_mm_or_ps(_mm_cmpneq_ps(a, zero), _mm_cmpneq_ps(b, zero)));
+}
+
+static inline void tbLoadTransposeRowsW(const void* const rows[TB_SIMD_WIDTH], tbFloatW out[4])
+{
+	tbLoadTransposeW(rows[0], rows[1], rows[2], rows[3], out);
+}
+
+static inline void tbTransposeStoreRowsW(void* const rows[TB_SIMD_WIDTH], const tbFloatW in[4], int mask)
+{
+	if (mask == 15)
+	{
+		tbTransposeStoreW(rows[0], rows[1], rows[2], rows[3], in);
+		return;
+	}
+	tbTransposeStoreMaskedW(rows[0], rows[1], rows[2], rows[3], in, mask);
 }
 
 #else // four plain floats: the portable reference, same results lane by lane
@@ -228,7 +347,20 @@ static inline int tbNonZeroMaskW(tbFloatW a, tbFloatW b)
 	return mask;
 }
 
+static inline void tbLoadTransposeRowsW(const void* const rows[TB_SIMD_WIDTH], tbFloatW out[4])
+{
+	tbLoadTransposeW(rows[0], rows[1], rows[2], rows[3], out);
+}
+
+static inline void tbTransposeStoreRowsW(void* const rows[TB_SIMD_WIDTH], const tbFloatW in[4], int mask)
+{
+	tbTransposeStoreMaskedW(rows[0], rows[1], rows[2], rows[3], in, mask);
+}
+
 #endif
+
+/// Every lane: the mask tbTransposeStoreRowsW takes to store all rows.
+#define TB_ALL_LANES ((1 << TB_SIMD_WIDTH) - 1)
 
 /// clamp(a, lower, upper) per lane with the scalar rule a < lower ? lower : (a > upper ? upper : a):
 /// a NaN bound lets a through unchanged, as tbClampFloat does (min/max would return the bound).

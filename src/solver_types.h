@@ -161,7 +161,8 @@ typedef struct tbWideContactPoint
 	tbFloatW relaxBias; ///< m/s, max(s, 0)/h from the sub-step's first relaxing pass (s fixed until the next)
 } tbWideContactPoint;
 
-/// Four contacts of one graph colour, solved together (contact_solver_wide.c): 576 bytes.
+/// TB_SIMD_WIDTH contacts of one graph colour, solved together (contact_solver_wide.c): 576 bytes
+/// with four lanes (SSE2), 1,152 with eight (AVX2).
 /// Padding lanes have both bodies at the static stand-in and every number 0.
 typedef struct tbWideContactConstraint
 {
@@ -176,7 +177,8 @@ typedef struct tbWideContactConstraint
 	tbWideContactPoint points[2];
 } tbWideContactConstraint;
 
-_Static_assert(sizeof(tbWideContactConstraint) == 576, "tbWideContactConstraint is meant to be 576 bytes");
+_Static_assert(sizeof(tbWideContactConstraint) == 144 * TB_SIMD_WIDTH,
+			   "tbWideContactConstraint is meant to be 144 bytes a lane (576 with four lanes)");
 
 /// Everything the pieces of one step share. Lives on the stack of tbSolveStage.
 typedef struct tbStepContext
