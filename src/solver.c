@@ -24,6 +24,7 @@
 
 #include "tumble/constants.h"
 
+#include <stdatomic.h>
 #include <string.h>
 
 /// Bodies per task range when the step runs on workers (a range must pay for its hand-over).
@@ -117,12 +118,22 @@ static void tbGatherBodies(tbStepContext* context)
 }
 
 
-/// The solved state back into bodies [start, end) (a task).
+typedef struct tbScatterTaskContext
+{
+	tbStepContext* context;
+	bool markFast;		  ///< continuous collision is on: mark the fast bodies (tbMarkFastBody)
+	atomic_int fastCount; ///< bodies marked fast (an integer sum, in any order)
+} tbScatterTaskContext;
+
+/// The solved state back into bodies [start, end) (a task), each body then marked fast or not for
+/// the continuous stage while it is in cache.
 static void tbScatterBodiesTask(int start, int end, uint32_t workerIndex, void* taskContext)
 {
 	(void)workerIndex;
-	tbStepContext* context = taskContext;
+	tbScatterTaskContext* task = taskContext;
+	tbStepContext* context = task->context;
 	tbWorld* world = context->world;
+	int fastCount = 0;
 	for (int i = start; i < end; ++i)
 	{
 		tbBody* body = world->bodies + world->awakeBodies[i];
@@ -140,12 +151,27 @@ static void tbScatterBodiesTask(int start, int end, uint32_t workerIndex, void* 
 		body->transform.p = tbOffsetPos(body->center, tbNeg(tbRotateVector(q, body->localCenter)));
 		body->force = tb_vec2_zero;
 		body->torque = 0.0f;
+		if (task->markFast)
+		{
+			fastCount += tbMarkFastBody(world, body) ? 1 : 0; // continuous.c
+		}
 	}
+	atomic_fetch_add_explicit(&task->fastCount, fastCount, memory_order_relaxed);
 }
 
 static void tbScatterBodies(tbStepContext* context)
 {
-	tbParallelFor(context->world, tbScatterBodiesTask, context->bodyCount, TB_BODIES_PER_TASK, context);
+	tbWorld* world = context->world;
+	tbScatterTaskContext task;
+	task.context = context;
+	task.markFast = world->def.continuous != tb_continuousOff;
+	atomic_init(&task.fastCount, 0);
+	tbParallelFor(world, tbScatterBodiesTask, context->bodyCount, TB_BODIES_PER_TASK, &task);
+	if (task.markFast)
+	{
+		world->fastMarkedStep = world->stepIndex;
+		world->fastMarkedCount = atomic_load_explicit(&task.fastCount, memory_order_relaxed);
+	}
 }
 
 static void tbPrepareMethod(tbStepContext* context)

@@ -346,6 +346,8 @@ typedef struct tbWorld
 	int autoVotes; ///< consecutive windows that voted for a change
 
 	uint32_t stepIndex; ///< steps taken (unsigned: wraps after 2^32 steps without overflow)
+	uint32_t fastMarkedStep; ///< step whose solve marked its fast bodies (tbMarkFastBody in the scatter)
+	int fastMarkedCount;	 ///< bodies it marked fast
 	float stepTime;		///< time step of the current (or last) tbWorld_Step (s); 0 before the first
 	float gravityLength; ///< |def.gravity| for the current step (read per contact by the narrow phase)
 	tbProfile profile;
@@ -460,6 +462,7 @@ void tbIslandStage(tbWorld* world);				// island.c: wake touching neighbours, ga
 void tbSolveStage(tbWorld* world, float timeStep, int subStepCount); // solver.c: integrate and solve
 void tbFinalizeStage(tbWorld* world, float timeStep);	// body.c: boxes, proxies, sleep timers, move events
 void tbContinuousStage(tbWorld* world);					// continuous.c: time of impact for fast bodies
+bool tbMarkFastBody(const tbWorld* world, tbBody* body); // continuous.c: sets and returns body->isFast
 void tbSleepStage(tbWorld* world, float timeStep);		// island.c: islands that stayed slow fall asleep
 void tbReportHitEvents(tbWorld* world); // contact.c: after the solve
 
