@@ -270,7 +270,8 @@ static int tbFindIsland(int* parent, int i)
 	return i;
 }
 
-// The smaller index becomes the root: the forest does not depend on the order of the links.
+// The smaller root stays the root: each island's root is its smallest awake index, whatever the
+// order of the links.
 static void tbLinkIslands(int* parent, int a, int b)
 {
 	a = tbFindIsland(parent, a);
