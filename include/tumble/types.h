@@ -603,7 +603,7 @@ typedef struct tbCounters
 	int contactCount;		 ///< contacts whose fat boxes overlap
 	int touchingCount;		 ///< contacts with manifold points among awake bodies (sleeping islands are not visited)
 	int awakeBodyCount;
-	int islandCount;		 ///< island searches of the sleep stage (one per island holding a rested body)
+	int islandCount;		 ///< islands holding a rested body, found by the sleep stage (0 when no body has rested)
 	int treeHeight;			 ///< dynamic-tree height (0 when another broad phase runs)
 	int pairCandidates;		 ///< new pairs found by the broad phase this step
 	int proxyMoves;			 ///< proxies whose fat box was updated this step
