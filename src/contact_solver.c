@@ -41,6 +41,7 @@
 
 #include <stdatomic.h>
 #include <stddef.h>
+#include <string.h>
 
 /// Contacts per task range when the step runs on workers.
 #define TB_CONTACTS_PER_TASK 256
@@ -484,6 +485,235 @@ static bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbCont
 	return rebound;
 }
 
+/// Contacts prepared TB_SIMD_WIDTH at a time (tbPrepareWideLanes): each one's place.
+typedef struct tbLaneBatch
+{
+	int count;
+	tbContact* contacts[TB_SIMD_WIDTH];
+	tbContactKey keys[TB_SIMD_WIDTH];
+	int locations[TB_SIMD_WIDTH]; ///< block·TB_SIMD_WIDTH + lane
+	int slots[TB_SIMD_WIDTH];
+} tbLaneBatch;
+
+/// a > b ? ifTrue : 0 per lane
+static inline tbFloatW tbKeepGreaterW(tbFloatW a, tbFloatW b, tbFloatW ifTrue)
+{
+	return tbSelectGreaterW(a, b, ifTrue, tbZeroW());
+}
+
+/// The point numbers of one manifold point j for the lanes of a batch (tbPrepareWideLanes).
+typedef struct tbWidePointInput
+{
+	tbFloatW anchorAX, anchorAY, anchorBX, anchorBY;
+	tbFloatW separation, normalImpulse, tangentImpulse;
+} tbWidePointInput;
+
+/// What tbPrepareWideLanes computes for point j, one float per lane (stored for the lane writes).
+typedef struct tbWidePointOutput
+{
+	float anchorAX[TB_SIMD_WIDTH], anchorAY[TB_SIMD_WIDTH], anchorBX[TB_SIMD_WIDTH], anchorBY[TB_SIMD_WIDTH];
+	float baseSeparation[TB_SIMD_WIDTH], normalImpulse[TB_SIMD_WIDTH], tangentImpulse[TB_SIMD_WIDTH];
+	float normalMass[TB_SIMD_WIDTH], tangentMass[TB_SIMD_WIDTH], normalVelocity[TB_SIMD_WIDTH];
+	int deep; ///< bit per lane: the point overlaps by more than the deep-overlap depth
+} tbWidePointOutput;
+
+static inline void tbStoreLanesW(float* out, tbFloatW a)
+{
+	memcpy(out, &a, sizeof(a));
+}
+
+/// rᵀ·u cross terms and the inverse mass along u (tbInverseMassAlong, lane by lane, same order).
+static inline tbFloatW tbInverseMassAlongW(tbFloatW mass[2][4], tbFloatW rAX, tbFloatW rAY, tbFloatW rBX,
+										   tbFloatW rBY, tbFloatW uX, tbFloatW uY)
+{
+	tbFloatW rnA = tbSubW(tbMulW(rAX, uY), tbMulW(rAY, uX));
+	tbFloatW rnB = tbSubW(tbMulW(rBX, uY), tbMulW(rBY, uX));
+	tbFloatW k = tbAddW(tbAddW(mass[0][0], mass[1][0]), tbMulW(tbMulW(mass[0][1], rnA), rnA));
+	return tbAddW(k, tbMulW(tbMulW(mass[1][1], rnB), rnB));
+}
+
+/// Point j of every lane: tbPrepareWideLane's per-point expressions, the branches as selects. The
+/// lanes whose contact has no point j get zeros (their numbers are whatever the manifold holds there,
+/// masked out). `an`: tbGravityApproach per lane; `velocity`: each side's (vx, vy, ω) rows.
+static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput* in, tbFloatW present,
+							tbFloatW mass[2][4], tbFloatW velocity[2][4], tbFloatW nX, tbFloatW nY,
+							tbFloatW an, tbWidePointOutput* out)
+{
+	tbFloatW zero = tbZeroW(), one = tbSplatW(1.0f), minusOne = tbSplatW(-1.0f);
+	tbFloatW dX = tbSubW(in->anchorBX, in->anchorAX), dY = tbSubW(in->anchorBY, in->anchorAY);
+	tbFloatW dn = tbAddW(tbMulW(dX, nX), tbMulW(dY, nY));
+	tbFloatW baseSeparation = tbSubW(in->separation, dn);
+	tbFloatW tX = nY, tY = tbMulW(minusOne, nX); // tbRightPerp: (n.y, −n.x)
+	tbFloatW kNormal = tbInverseMassAlongW(mass, in->anchorAX, in->anchorAY, in->anchorBX, in->anchorBY, nX, nY);
+	tbFloatW kTangent = tbInverseMassAlongW(mass, in->anchorAX, in->anchorAY, in->anchorBX, in->anchorBY, tX, tY);
+	tbFloatW normalMass = tbKeepGreaterW(kNormal, zero, tbDivW(one, kNormal));
+	tbFloatW tangentMass = tbKeepGreaterW(kTangent, zero, tbDivW(one, kTangent));
+
+	// v + ω × r on each side (tbCrossSV: (−ω·r.y, ω·r.x)), then the normal part of vB − vA
+	tbFloatW vAX = tbAddW(velocity[0][0], tbMulW(tbMulW(minusOne, velocity[0][2]), in->anchorAY));
+	tbFloatW vAY = tbAddW(velocity[0][1], tbMulW(velocity[0][2], in->anchorAX));
+	tbFloatW vBX = tbAddW(velocity[1][0], tbMulW(tbMulW(minusOne, velocity[1][2]), in->anchorBY));
+	tbFloatW vBY = tbAddW(velocity[1][1], tbMulW(velocity[1][2], in->anchorBX));
+	tbFloatW v = tbAddW(tbMulW(tbSubW(vBX, vAX), nX), tbMulW(tbSubW(vBY, vAY), nY));
+
+	// tbImpactVelocity: sep > 0, v < 0 and aₙ < 0 give max(−sqrt(v² − 2·aₙ·sep), min(v, −2·vmax))
+	tbFloatW fastest = tbMinW(v, tbSplatW(-2.0f * context->world->def.maximumLinearSpeed));
+	tbFloatW radicand = tbSubW(tbMulW(v, v), tbMulW(tbMulW(tbSplatW(2.0f), an), in->separation));
+	tbFloatW impact = tbMaxW(tbMulW(minusOne, tbSqrtW(radicand)), fastest);
+	tbFloatW approaching = tbSelectGreaterW(zero, an, tbSelectGreaterW(zero, v, impact, v), v);
+	tbFloatW normalVelocity = tbSelectGreaterW(in->separation, zero, approaching, v);
+
+	tbFloatW startSeparation = tbAddW(baseSeparation, dn); // tbStartSeparation
+	out->deep = tbGreaterMaskW(tbSplatW(-context->deepOverlap), startSeparation) & tbGreaterMaskW(present, zero);
+
+	float warmScale = context->enableWarmStarting ? 1.0f : 0.0f;
+	tbStoreLanesW(out->anchorAX, tbKeepGreaterW(present, zero, in->anchorAX));
+	tbStoreLanesW(out->anchorAY, tbKeepGreaterW(present, zero, in->anchorAY));
+	tbStoreLanesW(out->anchorBX, tbKeepGreaterW(present, zero, in->anchorBX));
+	tbStoreLanesW(out->anchorBY, tbKeepGreaterW(present, zero, in->anchorBY));
+	tbStoreLanesW(out->baseSeparation, tbKeepGreaterW(present, zero, baseSeparation));
+	tbStoreLanesW(out->normalImpulse, tbKeepGreaterW(present, zero, tbMulW(tbSplatW(warmScale), in->normalImpulse)));
+	tbStoreLanesW(out->tangentImpulse, tbKeepGreaterW(present, zero, tbMulW(tbSplatW(warmScale), in->tangentImpulse)));
+	tbStoreLanesW(out->normalMass, tbKeepGreaterW(present, zero, normalMass));
+	tbStoreLanesW(out->tangentMass, tbKeepGreaterW(present, zero, tangentMass));
+	tbStoreLanesW(out->normalVelocity, normalVelocity);
+}
+
+/// tbPrepareWideLane for a full batch of contacts that do not bounce, one per lane of wide floats:
+/// the same expressions in the same order, so bit for bit the same lanes; the arithmetic is done
+/// TB_SIMD_WIDTH contacts at a time and only the stores into the blocks stay lane by lane (each
+/// contact's lane is in a different block). The inputs are read as rows of four floats and
+/// transposed: the two bodies' masses and velocities, the manifold's normal, each point's anchors
+/// and each point's separation and impulses.
+static void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
+{
+	const void* rows[TB_SIMD_WIDTH];
+	tbFloatW mass[2][4], velocity[2][4], head[4], anchors[2][4], numbers[2][4];
+	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+	{
+		rows[l] = context->masses + batch->keys[l].indexA; // invMass, invI, gravityScale
+	}
+	tbLoadTransposeRowsW(rows, mass[0]);
+	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+	{
+		rows[l] = context->masses + batch->keys[l].indexB;
+	}
+	tbLoadTransposeRowsW(rows, mass[1]);
+	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+	{
+		rows[l] = context->bodies + batch->keys[l].indexA; // linear velocity, angular velocity
+	}
+	tbLoadTransposeRowsW(rows, velocity[0]);
+	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+	{
+		rows[l] = context->bodies + batch->keys[l].indexB;
+	}
+	tbLoadTransposeRowsW(rows, velocity[1]);
+	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+	{
+		rows[l] = &batch->contacts[l]->manifold.normal; // normal, then two floats not used
+	}
+	tbLoadTransposeRowsW(rows, head);
+	for (int j = 0; j < 2; ++j)
+	{
+		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+		{
+			rows[l] = &batch->contacts[l]->manifold.points[j].anchorA; // anchorA, anchorB
+		}
+		tbLoadTransposeRowsW(rows, anchors[j]);
+		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+		{
+			rows[l] = &batch->contacts[l]->manifold.points[j].separation; // and the two impulses
+		}
+		tbLoadTransposeRowsW(rows, numbers[j]);
+	}
+	float pointCounts[TB_SIMD_WIDTH];
+	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+	{
+		pointCounts[l] = (float)batch->contacts[l]->manifold.pointCount;
+	}
+	tbFloatW pointCount;
+	memcpy(&pointCount, pointCounts, sizeof(pointCount));
+
+	// tbGravityApproach: gB − gA along the normal, each side's g·gravityScale when it has mass
+	tbFloatW zero = tbZeroW();
+	tbVec2 gravity = context->world->def.gravity;
+	tbFloatW gX = tbSplatW(gravity.x), gY = tbSplatW(gravity.y);
+	tbFloatW gAX = tbKeepGreaterW(mass[0][0], zero, tbMulW(mass[0][2], gX));
+	tbFloatW gAY = tbKeepGreaterW(mass[0][0], zero, tbMulW(mass[0][2], gY));
+	tbFloatW gBX = tbKeepGreaterW(mass[1][0], zero, tbMulW(mass[1][2], gX));
+	tbFloatW gBY = tbKeepGreaterW(mass[1][0], zero, tbMulW(mass[1][2], gY));
+	tbFloatW an = tbAddW(tbMulW(tbSubW(gBX, gAX), head[0]), tbMulW(tbSubW(gBY, gAY), head[1]));
+
+	tbWidePointOutput points[2];
+	for (int j = 0; j < 2; ++j)
+	{
+		tbWidePointInput in = {anchors[j][0],	  anchors[j][1], anchors[j][2], anchors[j][3],
+							   numbers[j][0], numbers[j][1], numbers[j][2]};
+		tbFloatW present = tbSubW(pointCount, tbSplatW((float)j)); // > 0 where the contact has point j
+		tbPreparePointW(context, &in, present, mass, velocity, head[0], head[1], an, points + j);
+	}
+	float invMass[2][2][TB_SIMD_WIDTH], normal[2][TB_SIMD_WIDTH];
+	tbStoreLanesW(invMass[0][0], mass[0][0]);
+	tbStoreLanesW(invMass[0][1], mass[0][1]);
+	tbStoreLanesW(invMass[1][0], mass[1][0]);
+	tbStoreLanesW(invMass[1][1], mass[1][1]);
+	tbStoreLanesW(normal[0], head[0]);
+	tbStoreLanesW(normal[1], head[1]);
+	int deep = points[0].deep | points[1].deep;
+
+	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+	{
+		tbContact* contact = batch->contacts[l];
+		tbContactKey key = batch->keys[l];
+		tbWideContactConstraint* block = context->wideConstraints + batch->locations[l] / TB_SIMD_WIDTH;
+		int lane = batch->locations[l] % TB_SIMD_WIDTH;
+		int count = contact->manifold.pointCount;
+		block->indexA[lane] = key.indexA;
+		block->indexB[lane] = key.indexB;
+		block->constraintIndex[lane] = batch->slots[l];
+		block->pointCount[lane] = count;
+		tbSetLaneW(&block->normalX, lane, normal[0][l]);
+		tbSetLaneW(&block->normalY, lane, normal[1][l]);
+		tbSetLaneW(&block->friction, lane, contact->friction);
+		tbSetLaneW(&block->invMassA, lane, invMass[0][0][l]);
+		tbSetLaneW(&block->invIA, lane, invMass[0][1][l]);
+		tbSetLaneW(&block->invMassB, lane, invMass[1][0][l]);
+		tbSetLaneW(&block->invIB, lane, invMass[1][1][l]);
+		for (int j = 0; j < 2; ++j)
+		{
+			const tbWidePointOutput* p = points + j;
+			tbWideContactPoint* wp = block->points + j;
+			tbSetLaneW(&wp->anchorAX, lane, p->anchorAX[l]);
+			tbSetLaneW(&wp->anchorAY, lane, p->anchorAY[l]);
+			tbSetLaneW(&wp->anchorBX, lane, p->anchorBX[l]);
+			tbSetLaneW(&wp->anchorBY, lane, p->anchorBY[l]);
+			tbSetLaneW(&wp->baseSeparation, lane, p->baseSeparation[l]);
+			tbSetLaneW(&wp->normalImpulse, lane, p->normalImpulse[l]);
+			tbSetLaneW(&wp->tangentImpulse, lane, p->tangentImpulse[l]);
+			tbSetLaneW(&wp->maxNormalImpulse, lane, 0.0f);
+			tbSetLaneW(&wp->normalMass, lane, p->normalMass[l]);
+			tbSetLaneW(&wp->tangentMass, lane, p->tangentMass[l]);
+			tbSetLaneW(&wp->relaxBias, lane, 0.0f);
+			if (j < count)
+			{
+				contact->manifold.points[j].normalVelocity = p->normalVelocity[l];
+			}
+		}
+
+		bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
+		tbSoftness softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+		bool movesBoth = tbMovesBoth(invMass[0][0][l], invMass[0][1][l], invMass[1][0][l], invMass[1][1][l]);
+		if (context->settleSteps > 0.0f && movesBoth && (deep & (1 << l)) == 0)
+		{
+			softness = tbSettledSoftness(context, softness, contact->touchingSteps);
+		}
+		tbSetLaneW(&block->biasRate, lane, softness.biasRate);
+		tbSetLaneW(&block->massScale, lane, softness.massScale);
+		tbSetLaneW(&block->impulseScale, lane, softness.impulseScale);
+	}
+}
+
 typedef struct tbPrepareTaskContext
 {
 	tbStepContext* context;
@@ -505,6 +735,8 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 	bool laneFastPath = (world->def.solver == tb_solverNGS && context->subStepCount == 1) == false;
 	bool impactPropagation = world->def.enableImpactPropagation;
 	int restitutionCount = 0;
+	tbLaneBatch batch;
+	batch.count = 0;
 	for (int i = start; i < end; ++i)
 	{
 		int slot = slots[i];
@@ -534,6 +766,20 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 		tbContactKey key = context->keysById[i];
 		int location = context->locationById[i];
 		bool bounces = (key.flags & tb_keyBounces) != 0u;
+		if (location >= 0 && laneFastPath && bounces == false)
+		{
+			// Gathered until a batch is full, then prepared together (tbPrepareWideLanes).
+			batch.contacts[batch.count] = contact;
+			batch.keys[batch.count] = key;
+			batch.locations[batch.count] = location;
+			batch.slots[batch.count] = slot;
+			if (++batch.count == TB_SIMD_WIDTH)
+			{
+				tbPrepareWideLanes(context, &batch);
+				batch.count = 0;
+			}
+			continue;
+		}
 		if (location >= 0 && laneFastPath && (bounces == false || impactPropagation == false))
 		{
 			bool rebound = tbPrepareWideLane(context, contact, key, context->wideConstraints + location / TB_SIMD_WIDTH,
@@ -572,6 +818,12 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 			*c = local;
 		}
 		restitutionCount += (key.flags & tb_keyBounces) != 0u ? 1 : 0;
+	}
+	for (int l = 0; l < batch.count; ++l)
+	{
+		tbPrepareWideLane(context, batch.contacts[l], batch.keys[l],
+						  context->wideConstraints + batch.locations[l] / TB_SIMD_WIDTH,
+						  batch.locations[l] % TB_SIMD_WIDTH, batch.slots[l]);
 	}
 	atomic_fetch_add_explicit(&task->restitutionCount, restitutionCount, memory_order_relaxed);
 }

@@ -10,6 +10,7 @@
 // contacts of one colour, which share no moving body, so how they are grouped is invisible.
 #pragma once
 
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -57,6 +58,22 @@ static inline tbFloatW tbSubW(tbFloatW a, tbFloatW b)
 static inline tbFloatW tbMulW(tbFloatW a, tbFloatW b)
 {
 	return _mm256_mul_ps(a, b);
+}
+
+static inline tbFloatW tbDivW(tbFloatW a, tbFloatW b)
+{
+	return _mm256_div_ps(a, b);
+}
+
+static inline tbFloatW tbSqrtW(tbFloatW a)
+{
+	return _mm256_sqrt_ps(a);
+}
+
+/// Bit k set where lane k of a > lane k of b (false for NaN, as the scalar `>`).
+static inline int tbGreaterMaskW(tbFloatW a, tbFloatW b)
+{
+	return _mm256_movemask_ps(_mm256_cmp_ps(a, b, _CMP_GT_OQ));
 }
 
 /// a > b ? a : b per lane (VMAXPS returns its second operand when the comparison is false)
@@ -149,6 +166,21 @@ static inline tbFloatW tbSubW(tbFloatW a, tbFloatW b)
 static inline tbFloatW tbMulW(tbFloatW a, tbFloatW b)
 {
 	return _mm_mul_ps(a, b);
+}
+
+static inline tbFloatW tbDivW(tbFloatW a, tbFloatW b)
+{
+	return _mm_div_ps(a, b);
+}
+
+static inline tbFloatW tbSqrtW(tbFloatW a)
+{
+	return _mm_sqrt_ps(a);
+}
+
+static inline int tbGreaterMaskW(tbFloatW a, tbFloatW b)
+{
+	return _mm_movemask_ps(_mm_cmpgt_ps(a, b));
 }
 
 /// a > b ? a : b per lane
@@ -279,6 +311,26 @@ static inline tbFloatW tbSubW(tbFloatW a, tbFloatW b)
 static inline tbFloatW tbMulW(tbFloatW a, tbFloatW b)
 {
 	TB_LANEWISE(a.v[i] * b.v[i]);
+}
+
+static inline tbFloatW tbDivW(tbFloatW a, tbFloatW b)
+{
+	TB_LANEWISE(a.v[i] / b.v[i]);
+}
+
+static inline tbFloatW tbSqrtW(tbFloatW a)
+{
+	TB_LANEWISE(sqrtf(a.v[i]));
+}
+
+static inline int tbGreaterMaskW(tbFloatW a, tbFloatW b)
+{
+	int mask = 0;
+	for (int i = 0; i < 4; ++i)
+	{
+		mask |= a.v[i] > b.v[i] ? 1 << i : 0;
+	}
+	return mask;
 }
 
 static inline tbFloatW tbMaxW(tbFloatW a, tbFloatW b)
