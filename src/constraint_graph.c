@@ -95,19 +95,21 @@ static void tbAssignColors(const tbStepContext* context, uint32_t* bodyMasks, ui
 	}
 }
 
-// The colouring of the last step, kept with its inputs: the keys in solve order and each contact's
-// place in that order (world->solverSlots). The colours are a function of exactly those (and of the
-// body count, the static stand-in's index), so when this step's inputs are equal byte for byte the
-// last step's lanes are this step's: a settled pile, whose touching contacts and awake bodies stay
-// the same from step to step, copies them instead of colouring (large_pyramid: every step after
-// the first few). Any difference recolours; nothing else decides.
+// The colouring of the last step, kept with its inputs: the keys in contact-id order and each
+// contact's place in the solve order (world->solverSlots), which together are the keys in solve
+// order. The colours are a function of exactly those (and of the body count, the static
+// stand-in's index), so when this step's inputs are equal byte for byte the last step's lanes are
+// this step's: a settled pile, whose touching contacts and awake bodies stay the same from step to
+// step, reuses them instead of colouring (large_pyramid: every step after the first few). Any
+// difference recolours; nothing else decides.
 typedef struct tbContactColorCache
 {
 	int count;	  ///< constraints coloured; 0: nothing kept
 	int capacity; ///< of the arrays
 	int bodyCount;
-	tbContactKey* keys; ///< context->keys as coloured
-	int* slots;			///< world->solverSlots
+	int bounceCount;		///< keys with tb_keyBounces among them
+	tbContactKey* keysById; ///< context->keysById as coloured
+	int* slots;				///< world->solverSlots
 	int* wideLocation;	///< the colouring's outputs: lane by solve slot,
 	int* locationById;	///< and by contact-id order
 	int counts[TB_GRAPH_COLOR_COUNT + 1];
@@ -122,7 +124,7 @@ void tbDestroyContactColorCache(tbWorld* world)
 	}
 	if (cache->capacity > 0)
 	{
-		tbFree(cache->keys, (int)sizeof(tbContactKey) * cache->capacity);
+		tbFree(cache->keysById, (int)sizeof(tbContactKey) * cache->capacity);
 		tbFree(cache->slots, (int)sizeof(int) * cache->capacity);
 		tbFree(cache->wideLocation, (int)sizeof(int) * cache->capacity);
 		tbFree(cache->locationById, (int)sizeof(int) * cache->capacity);
@@ -136,11 +138,11 @@ static bool tbSameColorInputs(const tbStepContext* context)
 	const tbContactColorCache* cache = context->world->contactColorCache;
 	int n = context->constraintCount;
 	return cache != NULL && cache->count == n && n > 0 && cache->bodyCount == context->bodyCount &&
-		   memcmp(cache->keys, context->keys, sizeof(tbContactKey) * (size_t)n) == 0 &&
+		   memcmp(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n) == 0 &&
 		   memcmp(cache->slots, context->world->solverSlots, sizeof(int) * (size_t)n) == 0;
 }
 
-static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1])
+static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1], int bounceCount)
 {
 	tbWorld* world = context->world;
 	int n = context->constraintCount;
@@ -151,7 +153,7 @@ static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH
 		memset(fresh, 0, sizeof(*fresh));
 		int capacity = n + n / 4 + 16; // room for a pile that grows a little
 		fresh->capacity = capacity;
-		fresh->keys = tbAlloc((int)sizeof(tbContactKey) * capacity);
+		fresh->keysById = tbAlloc((int)sizeof(tbContactKey) * capacity);
 		fresh->slots = tbAlloc((int)sizeof(int) * capacity);
 		fresh->wideLocation = tbAlloc((int)sizeof(int) * capacity);
 		fresh->locationById = tbAlloc((int)sizeof(int) * capacity);
@@ -160,16 +162,32 @@ static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH
 	tbContactColorCache* cache = world->contactColorCache;
 	cache->count = n;
 	cache->bodyCount = context->bodyCount;
-	memcpy(cache->keys, context->keys, sizeof(tbContactKey) * (size_t)n);
+	cache->bounceCount = bounceCount;
+	memcpy(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n);
 	memcpy(cache->slots, world->solverSlots, sizeof(int) * (size_t)n);
 	memcpy(cache->wideLocation, context->wideLocation, sizeof(int) * (size_t)n);
 	memcpy(cache->locationById, context->locationById, sizeof(int) * (size_t)n);
 	memcpy(cache->counts, counts, sizeof(cache->counts));
 }
 
-// The blocks, padding and overflow list for the per-colour counts; wideLocation and locationById
-// allocated (filled by the caller).
+// The blocks, padding and overflow list for the per-colour counts; wideLocation allocated (filled
+// by the caller, as is locationById).
 static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1]);
+
+/// The keys in solve order (context->keys) from the keys in contact-id order; returns how many
+/// bounce.
+static int tbScatterKeys(const tbStepContext* context)
+{
+	const int* slots = context->world->solverSlots;
+	int bounceCount = 0;
+	for (int i = 0; i < context->constraintCount; ++i)
+	{
+		tbContactKey key = context->keysById[i];
+		context->keys[slots[i]] = key;
+		bounceCount += (key.flags & tb_keyBounces) != 0u ? 1 : 0;
+	}
+	return bounceCount;
+}
 
 void tbColorConstraints(tbStepContext* context)
 {
@@ -181,16 +199,21 @@ void tbColorConstraints(tbStepContext* context)
 		const tbContactColorCache* cache = context->world->contactColorCache;
 		tbLayOutColors(context, cache->counts);
 		memcpy(context->wideLocation, cache->wideLocation, sizeof(int) * (size_t)n);
-		memcpy(context->locationById, cache->locationById, sizeof(int) * (size_t)n);
-		for (int i = 0; i < n; ++i)
+		context->locationById = cache->locationById; // read only until the next colouring
+		for (int i = 0; i < n && context->overflowCount < cache->counts[TB_GRAPH_COLOR_COUNT]; ++i)
 		{
 			if (context->wideLocation[i] < 0)
 			{
 				context->overflowConstraints[context->overflowCount++] = i; // in solve order
 			}
 		}
+		if (cache->bounceCount > 0)
+		{
+			tbScatterKeys(context); // restitution reads them (tbConstraintBounces)
+		}
 		return;
 	}
+	int bounceCount = tbScatterKeys(context);
 
 	int maskBytes = (int)sizeof(uint32_t) * (bodyCount + 1);
 	int colorBytes = n;
@@ -201,6 +224,7 @@ void tbColorConstraints(tbStepContext* context)
 	memset(bodyMasks, 0, (size_t)maskBytes);
 	tbAssignColors(context, bodyMasks, colors, counts);
 	tbLayOutColors(context, counts);
+	context->locationById = tbArenaAlloc(&context->world->stepArena, (int)sizeof(int) * tbMaxInt(n, 1));
 	int* blockStart = context->colorBlockStart;
 	int filled[TB_GRAPH_COLOR_COUNT] = {0};
 	// The overflow is solved one constraint at a time, in the solve order.
@@ -233,7 +257,7 @@ void tbColorConstraints(tbStepContext* context)
 	}
 	if (n > 0)
 	{
-		tbKeepColors(context, counts);
+		tbKeepColors(context, counts, bounceCount);
 	}
 }
 
@@ -279,7 +303,6 @@ static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COL
 			tbInitWideConstraint(context->wideConstraints + blockStart[k + 1] - 1, bodyCount);
 		}
 	}
-	context->locationById = tbArenaAlloc(&context->world->stepArena, (int)sizeof(int) * tbMaxInt(n, 1));
 }
 
 void tbReleaseColors(tbStepContext* context)

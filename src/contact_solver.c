@@ -318,16 +318,16 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 	}
 }
 
-// Contacts are read in contact-id order (memory order) and each constraint is written to its
-// place in the solve order: the loads stream and only the stores scatter (island.c keeps both
-// orders). Walking the solve order instead waited on a cache miss per contact.
+// Contacts are read and keyed in contact-id order (memory order): the loads and the stores
+// stream. The keys in solve order, which only the colouring and restitution read, are scattered
+// from these when needed (tbColorConstraints); walking the solve order instead waited on a cache
+// miss per contact.
 static void tbKeyContactsTask(int start, int end, uint32_t workerIndex, void* taskContext)
 {
 	(void)workerIndex;
 	tbStepContext* context = taskContext;
 	const tbWorld* world = context->world;
 	const int* contactIds = world->solverContactsById;
-	const int* slots = world->solverSlots;
 	const tbCollideKey* collideKeys = world->collideKeys;
 	// The narrow phase's keys hold when no body has left the awake set since (only then are its
 	// awake indices this step's solver indices); a contact it did not key (one side was asleep
@@ -350,7 +350,6 @@ static void tbKeyContactsTask(int start, int end, uint32_t workerIndex, void* ta
 		{
 			key = tbMakeContactKey(context, world->contacts + contactId);
 		}
-		context->keys[slots[i]] = key;
 		context->keysById[i] = key;
 	}
 }

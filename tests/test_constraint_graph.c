@@ -78,26 +78,31 @@ static bool Moves(int index)
 	return index != STATIC_INDEX && index != KINEMATIC_BODY;
 }
 
-// What the step does around the colouring (solver.c): keys from the constraints (contact_solver.c
-// computes them from the contacts), the colouring, then each constraint packed into the lane the
+// What the step does around the colouring (solver.c): keys in contact-id order from the
+// constraints (contact_solver.c computes them from the contacts), the colouring, then each constraint packed into the lane the
 // colouring gave it (the preparation writes it there). `slots[i]` is the solve-order index of the
 // i-th contact in contact-id order (island.c); NULL for the identity.
 static void ColorAndPack(tbStepContext* context, tbWorld* world, const int* slots)
 {
 	int n = context->constraintCount;
-	static tbContactKey keys[64];
+	static tbContactKey keys[64], keysById[64];
 	static int identity[64];
 	for (int i = 0; i < n; ++i)
 	{
-		const tbContactConstraint* c = context->constraints + i;
-		keys[i].indexA = c->indexA;
-		keys[i].indexB = c->indexB;
-		keys[i].flags = (c->invMassA > 0.0f || c->invIA > 0.0f ? (uint32_t)tb_keyMovesA : 0u) |
-						(c->invMassB > 0.0f || c->invIB > 0.0f ? (uint32_t)tb_keyMovesB : 0u);
 		identity[i] = i;
 	}
-	context->keys = keys;
-	world->solverSlots = (int*)(slots != NULL ? slots : identity);
+	const int* order = slots != NULL ? slots : identity;
+	for (int i = 0; i < n; ++i)
+	{
+		const tbContactConstraint* c = context->constraints + order[i]; // the i-th in contact-id order
+		keysById[i].indexA = c->indexA;
+		keysById[i].indexB = c->indexB;
+		keysById[i].flags = (c->invMassA > 0.0f || c->invIA > 0.0f ? (uint32_t)tb_keyMovesA : 0u) |
+							(c->invMassB > 0.0f || c->invIB > 0.0f ? (uint32_t)tb_keyMovesB : 0u);
+	}
+	context->keys = keys; // filled in solve order by the colouring
+	context->keysById = keysById;
+	world->solverSlots = (int*)order;
 	tbColorConstraints(context);
 	for (int i = 0; i < n; ++i)
 	{
