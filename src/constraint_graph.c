@@ -28,7 +28,7 @@
 // The colours are computed before the contacts are prepared, from a small key per contact
 // (tbContactKey: its two solver bodies and whether each moves); each contact is then prepared
 // straight into its lane (contact_solver.c). They are recomputed from scratch whenever the keys
-// or the solve order differ from the last step's in any byte, and copied from the last step
+// or the solve order differ from the last step's in any byte, and reused from the last step
 // otherwise (tbContactColorCache): nothing has to be kept consistent when contacts begin and end
 // (Box2D v3 keeps its colours persistent and updates them instead). Measured against
 // colouring after preparing (a 160-byte scalar constraint per contact written, then read back to
