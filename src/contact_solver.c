@@ -390,8 +390,8 @@ static bool tbMayRebound(const tbStepContext* context, const tbContactConstraint
 // sub-step prepares differently (tbPrepareConstraintNGS) and takes tbPrepareConstraint.
 // Returns whether some point approaches at the restitution threshold or faster (tbMayRebound's test,
 // on the same approach speeds, without impact propagation).
-static bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
-							  int lane, int slot)
+bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
+					   int lane, int slot)
 {
 	const tbSolverMass* massA = context->masses + key.indexA;
 	const tbSolverMass* massB = context->masses + key.indexB;
@@ -484,16 +484,6 @@ static bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbCont
 	return rebound;
 }
 
-/// Contacts prepared TB_SIMD_WIDTH at a time (tbPrepareWideLanes): each one's place.
-typedef struct tbLaneBatch
-{
-	int count;
-	tbContact* contacts[TB_SIMD_WIDTH];
-	tbContactKey keys[TB_SIMD_WIDTH];
-	int locations[TB_SIMD_WIDTH]; ///< block·TB_SIMD_WIDTH + lane
-	int slots[TB_SIMD_WIDTH];
-} tbLaneBatch;
-
 /// a > b ? ifTrue : 0 per lane
 static inline tbFloatW tbKeepGreaterW(tbFloatW a, tbFloatW b, tbFloatW ifTrue)
 {
@@ -584,7 +574,7 @@ static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput
 /// contact's lane is in a different block). The inputs are read as rows of four floats and
 /// transposed: the two bodies' masses and velocities, the manifold's normal, each point's anchors
 /// and each point's separation and impulses.
-static void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
+void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 {
 	const void* rows[TB_SIMD_WIDTH];
 	tbFloatW mass[2][4], velocity[2][4], head[4], anchors[2][4], numbers[2][4];

@@ -24,6 +24,23 @@ void tbApplyRestitution(tbStepContext* context);
 /// Impact propagation before the solve (tbWorldDef::enableImpactPropagation; contact_solver.c).
 void tbPropagateImpacts(tbStepContext* context);
 void tbStoreImpulses(tbStepContext* context);
+/// One coloured contact that takes the lane path, prepared into lane `lane` of `block` (the scalar
+/// constraint's numbers, written field by field); returns whether a point approaches at the
+/// restitution threshold or faster. Declared here for the test of the wide preparation.
+bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
+					   int lane, int slot);
+/// TB_SIMD_WIDTH contacts for tbPrepareWideLanes, each with its place.
+typedef struct tbLaneBatch
+{
+	int count;
+	tbContact* contacts[TB_SIMD_WIDTH];
+	tbContactKey keys[TB_SIMD_WIDTH];
+	int locations[TB_SIMD_WIDTH]; ///< block·TB_SIMD_WIDTH + lane
+	int slots[TB_SIMD_WIDTH];
+} tbLaneBatch;
+/// tbPrepareWideLane for a full batch of contacts that do not bounce, computed in wide floats: bit
+/// for bit the same lanes and approach speeds (tests/test_contact_solver.c checks it).
+void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch);
 
 // contact_solver_wide.c
 // Inline so that a contact prepared on the stack goes to its lane without a round trip through

@@ -199,3 +199,132 @@ Test(contact_solver, forces_cleared_and_transform_written)
 	cr_expect(fabsf(p.x - m.bodies[1].center.x) < 1e-6f && fabsf(p.y - m.bodies[1].center.y) < 1e-6f);
 	cr_expect(fabsf(tbRot_GetAngle(m.bodies[1].transform.q) - 1.0f / 60.0f) < 1e-5f);
 }
+
+// The wide preparation (tbPrepareWideLanes: TB_SIMD_WIDTH contacts at once in wide floats) against
+// the one-lane path (tbPrepareWideLane) on the same inputs: every byte of the blocks and every
+// approach speed must be equal (tolerance 0: the lanes run the scalar expressions in the same
+// order, simd.h). The inputs cover each branch: one- and two-point manifolds (the absent second
+// point holds NaN, which must be masked out), a static side (no mass, no gravity), overlaps past
+// the deep-overlap depth (stay soft), speculative points approaching under gravity (the impact
+// speed estimate), separating ones, and contacts young, settling and settled (the stiffness ramp).
+#define PREP_BODIES 6
+
+static float Hash01(uint32_t x)
+{
+	x ^= x >> 16;
+	x *= 0x7feb352dU;
+	x ^= x >> 15;
+	x *= 0x846ca68bU;
+	x ^= x >> 16;
+	return (float)(x & 0xffffu) / 65535.0f;
+}
+
+static void MakePrepContact(tbContact* contact, uint32_t seed)
+{
+	memset(contact, 0, sizeof(*contact));
+	float angle = 6.2831853f * Hash01(seed);
+	contact->manifold.normal = tbMakeVec2(cosf(angle), sinf(angle));
+	contact->manifold.pointCount = 1 + (int)(seed % 2u);
+	contact->friction = 0.6f * Hash01(seed + 1u);
+	static const float separations[] = {-0.3f, -0.01f, 0.004f, 0.02f};
+	static const uint16_t ages[] = {0, 5, 20, 25, 40};
+	contact->touchingSteps = ages[seed % 5u];
+	for (int j = 0; j < 2; ++j)
+	{
+		tbManifoldPoint* mp = contact->manifold.points + j;
+		uint32_t s = seed * 7u + (uint32_t)j;
+		mp->anchorA = tbMakeVec2(Hash01(s + 2u) - 0.5f, Hash01(s + 3u) - 0.5f);
+		mp->anchorB = tbMakeVec2(Hash01(s + 4u) - 0.5f, Hash01(s + 5u) - 0.5f);
+		mp->separation = separations[(seed / 2u + (uint32_t)j) % 4u];
+		mp->normalImpulse = 3.0f * Hash01(s + 6u);
+		mp->tangentImpulse = Hash01(s + 7u) - 0.5f;
+		if (j >= contact->manifold.pointCount)
+		{
+			mp->anchorA = tbMakeVec2(NAN, NAN); // whatever an absent point holds must not leak
+			mp->separation = NAN;
+			mp->normalImpulse = INFINITY;
+		}
+	}
+}
+
+Test(contact_solver, wide_preparation_matches_one_lane_at_a_time)
+{
+	tbWorld world;
+	memset(&world, 0, sizeof(world));
+	world.def = tbDefaultWorldDef();
+	tbStepContext context;
+	memset(&context, 0, sizeof(context));
+	context.world = &world;
+	context.timeStep = 1.0f / 60.0f;
+	context.subStepCount = 4;
+	context.h = context.timeStep / 4.0f;
+	context.inv_h = 1.0f / context.h;
+	context.enableWarmStarting = true;
+	tbSoftPrepare(&context);
+	cr_assert(context.settleSteps > 0.0f, "the stiffness ramp is on by default");
+
+	// Bodies 0..4 dynamic (body 4 without rotation), the static stand-in last.
+	tbSolverBody bodies[PREP_BODIES];
+	tbSolverMass masses[PREP_BODIES];
+	memset(bodies, 0, sizeof(bodies));
+	memset(masses, 0, sizeof(masses));
+	for (int i = 0; i < PREP_BODIES - 1; ++i)
+	{
+		bodies[i].linearVelocity = tbMakeVec2(Hash01(100u + (uint32_t)i) - 0.5f, -3.0f * Hash01(200u + (uint32_t)i));
+		bodies[i].angularVelocity = 2.0f * Hash01(300u + (uint32_t)i) - 1.0f;
+		masses[i].invMass = 0.5f + (float)i;
+		masses[i].invI = i == 4 ? 0.0f : 2.0f + (float)i;
+		masses[i].gravityScale = i == 3 ? 0.0f : 1.0f;
+	}
+	context.bodies = bodies;
+	context.masses = masses;
+	context.bodyCount = PREP_BODIES - 1;
+
+	tbWideContactConstraint wide[2], single[2];
+	for (uint32_t round = 0; round < 40; ++round)
+	{
+		tbContact contacts[TB_SIMD_WIDTH], copies[TB_SIMD_WIDTH];
+		tbLaneBatch batch;
+		batch.count = TB_SIMD_WIDTH;
+		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+		{
+			uint32_t seed = round * 31u + (uint32_t)l;
+			MakePrepContact(contacts + l, seed);
+			copies[l] = contacts[l];
+			int indexA = (int)(seed % (uint32_t)PREP_BODIES); // the static stand-in among them
+			int indexB = (indexA + 1 + (int)(seed / 3u % 4u)) % (PREP_BODIES - 1);
+			tbContactKey key;
+			key.indexA = indexA;
+			key.indexB = indexB;
+			bool staticA = indexA == context.bodyCount;
+			key.flags = (staticA ? 0u : (uint32_t)(tb_keyMovesA | tb_keyDynamicA)) |
+						(uint32_t)(tb_keyMovesB | tb_keyDynamicB);
+			batch.contacts[l] = contacts + l;
+			batch.keys[l] = key;
+			batch.locations[l] = (l % 2) * TB_SIMD_WIDTH + (TB_SIMD_WIDTH - 1 - l / 2); // lanes of two blocks
+			batch.slots[l] = 10 * (int)round + l;
+		}
+		memset(wide, 0xab, sizeof(wide)); // the lanes not written stay so in both
+		memset(single, 0xab, sizeof(single));
+		context.wideConstraints = wide;
+		tbPrepareWideLanes(&context, &batch);
+		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+		{
+			int location = batch.locations[l];
+			(void)tbPrepareWideLane(&context, copies + l, batch.keys[l], single + location / TB_SIMD_WIDTH,
+									location % TB_SIMD_WIDTH, batch.slots[l]);
+		}
+		cr_assert(memcmp(wide, single, sizeof(wide)) == 0, "round %u: the wide lanes differ from the one-lane path",
+				  round);
+		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+		{
+			for (int j = 0; j < contacts[l].manifold.pointCount; ++j)
+			{
+				float a = contacts[l].manifold.points[j].normalVelocity;
+				float b = copies[l].manifold.points[j].normalVelocity;
+				cr_assert(memcmp(&a, &b, sizeof(a)) == 0, "round %u, lane %d, point %d: approach %g against %g",
+						  round, l, j, (double)a, (double)b);
+			}
+		}
+	}
+}
