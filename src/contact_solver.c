@@ -570,8 +570,9 @@ static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput
 
 /// tbPrepareWideLane for a full batch of contacts that do not bounce, one per lane of wide floats:
 /// the same expressions in the same order, so bit for bit the same lanes; the arithmetic is done
-/// TB_SIMD_WIDTH contacts at a time and only the stores into the blocks stay lane by lane (each
-/// contact's lane is in a different block). The inputs are read as rows of four floats and
+/// TB_SIMD_WIDTH contacts at a time and only the stores into the blocks stay lane by lane (the
+/// contacts of a batch are consecutive in id order, so their lanes are spread over the colours'
+/// blocks). The inputs are read as rows of four floats and
 /// transposed: the two bodies' masses and velocities, the manifold's normal, each point's anchors
 /// and each point's separation and impulses.
 void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
