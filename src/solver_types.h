@@ -197,8 +197,11 @@ typedef struct tbStepContext
 
 	tbContactConstraint* constraints; ///< in the order of world->solverContacts; with the wide
 									  ///< solver only the overflow's and the bouncing ones are written
-	tbContactKey* keys;				  ///< per constraint, wide solver only (NULL for the scalar one)
-	tbContactKey* keysById;			  ///< the same in contact-id order (world->solverContactsById)
+	/// Wide solver only (NULL for the scalar one): each contact's key in contact-id order
+	/// (world->solverContactsById), written by the key pass, and the same keys in solve order, filled
+	/// only when the colouring runs or some contact bounces (constraint_graph.c, tbScatterKeys).
+	tbContactKey* keys;
+	tbContactKey* keysById;
 	int constraintCount;
 	int restitutionCount; ///< constraints with restitution > 0 (tbApplyRestitution skips when 0)
 
