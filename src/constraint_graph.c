@@ -277,13 +277,15 @@ static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COL
 	blockStart[TB_GRAPH_COLOR_COUNT] = blockCount;
 	int overflowCount = counts[TB_GRAPH_COLOR_COUNT];
 
-	// One piece of the step arena: wide blocks, then the overflow list. The arena hands out
-	// 32-byte aligned memory, enough for the 16-byte wide floats.
+	// One piece of the step arena: wide blocks, then the overflow list. The arena hands out 32-byte
+	// aligned memory; the blocks start on a 64-byte line so that each block's impulses fill whole
+	// lines (solver_types.h).
 	int wideBytes = (int)sizeof(tbWideContactConstraint) * blockCount;
 	int overflowBytes = (int)sizeof(int) * overflowCount;
 	context->wideLocation = tbArenaAlloc(&context->world->stepArena, (int)sizeof(int) * n);
 	context->wideMemoryBytes = tbMaxInt(wideBytes + overflowBytes, 1);
-	context->wideMemory = tbArenaAlloc(&context->world->stepArena, context->wideMemoryBytes);
+	context->wideMemory = tbArenaAlloc(&context->world->stepArena, context->wideMemoryBytes + 32);
+	context->wideMemory = (void*)(((uintptr_t)context->wideMemory + 63) & ~(uintptr_t)63);
 	context->wideConstraints = (tbWideContactConstraint*)context->wideMemory;
 	context->wideCount = blockCount;
 	context->overflowConstraints = (int*)((char*)context->wideMemory + wideBytes);

@@ -432,9 +432,9 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 			tbSetLaneW(&wp->anchorBX, lane, 0.0f);
 			tbSetLaneW(&wp->anchorBY, lane, 0.0f);
 			tbSetLaneW(&wp->baseSeparation, lane, 0.0f);
-			tbSetLaneW(&wp->normalImpulse, lane, 0.0f);
-			tbSetLaneW(&wp->tangentImpulse, lane, 0.0f);
-			tbSetLaneW(&wp->maxNormalImpulse, lane, 0.0f);
+			tbSetLaneW(&block->impulses[j].normalImpulse, lane, 0.0f);
+			tbSetLaneW(&block->impulses[j].tangentImpulse, lane, 0.0f);
+			tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
 			tbSetLaneW(&wp->normalMass, lane, 0.0f);
 			tbSetLaneW(&wp->tangentMass, lane, 0.0f);
 			tbSetLaneW(&wp->relaxBias, lane, 0.0f);
@@ -451,9 +451,9 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 		tbSetLaneW(&wp->anchorBX, lane, rB.x);
 		tbSetLaneW(&wp->anchorBY, lane, rB.y);
 		tbSetLaneW(&wp->baseSeparation, lane, baseSeparation);
-		tbSetLaneW(&wp->normalImpulse, lane, warmScale * mp->normalImpulse);
-		tbSetLaneW(&wp->tangentImpulse, lane, warmScale * mp->tangentImpulse);
-		tbSetLaneW(&wp->maxNormalImpulse, lane, 0.0f);
+		tbSetLaneW(&block->impulses[j].normalImpulse, lane, warmScale * mp->normalImpulse);
+		tbSetLaneW(&block->impulses[j].tangentImpulse, lane, warmScale * mp->tangentImpulse);
+		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
 		tbSetLaneW(&wp->normalMass, lane, kNormal > 0.0f ? 1.0f / kNormal : 0.0f);
 		tbSetLaneW(&wp->tangentMass, lane, kTangent > 0.0f ? 1.0f / kTangent : 0.0f);
 		tbSetLaneW(&wp->relaxBias, lane, 0.0f);
@@ -679,9 +679,9 @@ void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 			tbSetLaneW(&wp->anchorBX, lane, p->anchorBX[l]);
 			tbSetLaneW(&wp->anchorBY, lane, p->anchorBY[l]);
 			tbSetLaneW(&wp->baseSeparation, lane, p->baseSeparation[l]);
-			tbSetLaneW(&wp->normalImpulse, lane, p->normalImpulse[l]);
-			tbSetLaneW(&wp->tangentImpulse, lane, p->tangentImpulse[l]);
-			tbSetLaneW(&wp->maxNormalImpulse, lane, 0.0f);
+			tbSetLaneW(&block->impulses[j].normalImpulse, lane, p->normalImpulse[l]);
+			tbSetLaneW(&block->impulses[j].tangentImpulse, lane, p->tangentImpulse[l]);
+			tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
 			tbSetLaneW(&wp->normalMass, lane, p->normalMass[l]);
 			tbSetLaneW(&wp->tangentMass, lane, p->tangentMass[l]);
 			tbSetLaneW(&wp->relaxBias, lane, 0.0f);
@@ -1215,8 +1215,7 @@ static inline void tbPrefetchLaneImpulses(const tbStepContext* context, int i)
 	}
 	int location = context->locationById[i];
 	const tbWideContactConstraint* block = context->wideConstraints + location / TB_SIMD_WIDTH;
-	tbPrefetch(&block->points[0].normalImpulse, 3 * (int)sizeof(tbFloatW));
-	tbPrefetch(&block->points[1].normalImpulse, 3 * (int)sizeof(tbFloatW));
+	tbPrefetch(block->impulses, (int)sizeof(block->impulses));
 }
 
 static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* taskContext)

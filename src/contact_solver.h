@@ -72,9 +72,9 @@ static inline void tbPackWideLane(tbWideContactConstraint* block, int lane, cons
 		tbSetLaneW(&wp->anchorBX, lane, cp->anchorB.x);
 		tbSetLaneW(&wp->anchorBY, lane, cp->anchorB.y);
 		tbSetLaneW(&wp->baseSeparation, lane, cp->baseSeparation);
-		tbSetLaneW(&wp->normalImpulse, lane, cp->normalImpulse);
-		tbSetLaneW(&wp->tangentImpulse, lane, cp->tangentImpulse);
-		tbSetLaneW(&wp->maxNormalImpulse, lane, cp->maxNormalImpulse);
+		tbSetLaneW(&block->impulses[j].normalImpulse, lane, cp->normalImpulse);
+		tbSetLaneW(&block->impulses[j].tangentImpulse, lane, cp->tangentImpulse);
+		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, cp->maxNormalImpulse);
 		tbSetLaneW(&wp->normalMass, lane, cp->normalMass);
 		tbSetLaneW(&wp->tangentMass, lane, cp->tangentMass);
 		tbSetLaneW(&wp->relaxBias, lane, 0.0f);
@@ -102,10 +102,10 @@ static inline void tbLoadWideImpulses(const tbStepContext* context, int location
 	int lane = location % TB_SIMD_WIDTH;
 	for (int j = 0; j < pointCount; ++j)
 	{
-		const tbWideContactPoint* wp = block->points + j;
-		points[j].normalImpulse = tbGetLaneW(&wp->normalImpulse, lane);
-		points[j].tangentImpulse = tbGetLaneW(&wp->tangentImpulse, lane);
-		points[j].maxNormalImpulse = tbGetLaneW(&wp->maxNormalImpulse, lane);
+		const tbWideImpulses* ip = block->impulses + j;
+		points[j].normalImpulse = tbGetLaneW(&ip->normalImpulse, lane);
+		points[j].tangentImpulse = tbGetLaneW(&ip->tangentImpulse, lane);
+		points[j].maxNormalImpulse = tbGetLaneW(&ip->maxNormalImpulse, lane);
 	}
 }
 /// Copy a constraint's impulses from its lane to the scalar constraint, which holds them from then on.

@@ -42,10 +42,10 @@ void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex)
 	tbContactConstraint* c = context->constraints + constraintIndex;
 	for (int j = 0; j < c->pointCount; ++j)
 	{
-		const tbWideContactPoint* wp = block->points + j;
-		c->points[j].normalImpulse = tbGetLaneW(&wp->normalImpulse, lane);
-		c->points[j].tangentImpulse = tbGetLaneW(&wp->tangentImpulse, lane);
-		c->points[j].maxNormalImpulse = tbGetLaneW(&wp->maxNormalImpulse, lane);
+		const tbWideImpulses* ip = block->impulses + j;
+		c->points[j].normalImpulse = tbGetLaneW(&ip->normalImpulse, lane);
+		c->points[j].tangentImpulse = tbGetLaneW(&ip->tangentImpulse, lane);
+		c->points[j].maxNormalImpulse = tbGetLaneW(&ip->maxNormalImpulse, lane);
 	}
 	context->wideLocation[constraintIndex] = -1;
 }
@@ -166,8 +166,8 @@ static void tbZeroWideImpulses(tbStepContext* context)
 		tbWideContactConstraint* c = context->wideConstraints + i;
 		for (int j = 0; j < 2; ++j)
 		{
-			c->points[j].normalImpulse = tbZeroW();
-			c->points[j].tangentImpulse = tbZeroW();
+			c->impulses[j].normalImpulse = tbZeroW();
+			c->impulses[j].tangentImpulse = tbZeroW();
 		}
 	}
 }
@@ -183,8 +183,9 @@ static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* 
 	for (int j = 0; j < 2; ++j)
 	{
 		const tbWideContactPoint* cp = c->points + j;
-		tbFloatW px = tbMulAddPairW(cp->normalImpulse, c->normalX, cp->tangentImpulse, tx);
-		tbFloatW py = tbMulAddPairW(cp->normalImpulse, c->normalY, cp->tangentImpulse, ty);
+		const tbWideImpulses* ip = c->impulses + j;
+		tbFloatW px = tbMulAddPairW(ip->normalImpulse, c->normalX, ip->tangentImpulse, tx);
+		tbFloatW py = tbMulAddPairW(ip->normalImpulse, c->normalY, ip->tangentImpulse, ty);
 		tbApplyImpulseW(&a, &b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, px, py);
 	}
 	tbScatterPair(bodies, c, &a, &b, shared);
@@ -250,7 +251,7 @@ static TB_FORCE_INLINE tbFloatW tbRelativeVelocityW(const tbWideContactPoint* cp
 	return tbMulAddPairW(dvx, ux, dvy, uy);
 }
 
-static TB_FORCE_INLINE void tbSolveNormalW(tbWideContactPoint* cp, const tbWideContactConstraint* c, tbWideBody* a,
+static TB_FORCE_INLINE void tbSolveNormalW(tbWideContactPoint* cp, tbWideImpulses* ip, const tbWideContactConstraint* c, tbWideBody* a,
 								  tbWideBody* b, const tbWidePass* pass, tbBiasPolicy policy)
 {
 	tbFloatW zero = tbZeroW();
@@ -292,27 +293,27 @@ static TB_FORCE_INLINE void tbSolveNormalW(tbWideContactPoint* cp, const tbWideC
 
 	tbFloatW vn = tbRelativeVelocityW(cp, a, b, c->normalX, c->normalY);
 	tbFloatW impulse = tbSubW(tbSubW(zero, tbMulW(tbMulW(cp->normalMass, massScale), tbAddW(vn, bias))),
-							  tbMulW(impulseScale, cp->normalImpulse));
-	tbFloatW newImpulse = tbMaxW(tbAddW(cp->normalImpulse, impulse), zero);
-	impulse = tbSubW(newImpulse, cp->normalImpulse);
-	cp->normalImpulse = newImpulse;
-	cp->maxNormalImpulse = tbMaxW(cp->maxNormalImpulse, newImpulse);
+							  tbMulW(impulseScale, ip->normalImpulse));
+	tbFloatW newImpulse = tbMaxW(tbAddW(ip->normalImpulse, impulse), zero);
+	impulse = tbSubW(newImpulse, ip->normalImpulse);
+	ip->normalImpulse = newImpulse;
+	ip->maxNormalImpulse = tbMaxW(ip->maxNormalImpulse, newImpulse);
 
 	tbApplyImpulseW(a, b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, tbMulW(impulse, c->normalX),
 					tbMulW(impulse, c->normalY));
 }
 
-static TB_FORCE_INLINE void tbSolveFrictionW(tbWideContactPoint* cp, const tbWideContactConstraint* c, tbWideBody* a,
+static TB_FORCE_INLINE void tbSolveFrictionW(const tbWideContactPoint* cp, tbWideImpulses* ip, const tbWideContactConstraint* c, tbWideBody* a,
 									tbWideBody* b, tbFloatW tx, tbFloatW ty)
 {
 	tbFloatW vt = tbRelativeVelocityW(cp, a, b, tx, ty);
 	tbFloatW impulse = tbSubW(tbZeroW(), tbMulW(cp->tangentMass, vt));
-	tbFloatW maxFriction = tbMulW(c->friction, cp->normalImpulse);
+	tbFloatW maxFriction = tbMulW(c->friction, ip->normalImpulse);
 	tbFloatW minFriction = tbSubW(tbZeroW(), maxFriction);
 	// clamp(λt + Δλ, −μλn, μλn) with the scalar clamp's rule for NaN bounds (μ = ∞ and λn = 0).
-	tbFloatW newImpulse = tbClampW(tbAddW(cp->tangentImpulse, impulse), minFriction, maxFriction);
-	impulse = tbSubW(newImpulse, cp->tangentImpulse);
-	cp->tangentImpulse = newImpulse;
+	tbFloatW newImpulse = tbClampW(tbAddW(ip->tangentImpulse, impulse), minFriction, maxFriction);
+	impulse = tbSubW(newImpulse, ip->tangentImpulse);
+	ip->tangentImpulse = newImpulse;
 	tbApplyImpulseW(a, b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, tbMulW(impulse, tx),
 					tbMulW(impulse, ty));
 }
@@ -330,12 +331,12 @@ static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbSolve
 		tbGatherDeltas(bodies, c->indexB, &b);
 	}
 
-	tbSolveNormalW(c->points + 0, c, &a, &b, pass, policy);
-	tbSolveNormalW(c->points + 1, c, &a, &b, pass, policy);
+	tbSolveNormalW(c->points + 0, c->impulses + 0, c, &a, &b, pass, policy);
+	tbSolveNormalW(c->points + 1, c->impulses + 1, c, &a, &b, pass, policy);
 	tbFloatW tx = c->normalY;
 	tbFloatW ty = tbSubW(tbZeroW(), c->normalX);
-	tbSolveFrictionW(c->points + 0, c, &a, &b, tx, ty);
-	tbSolveFrictionW(c->points + 1, c, &a, &b, tx, ty);
+	tbSolveFrictionW(c->points + 0, c->impulses + 0, c, &a, &b, tx, ty);
+	tbSolveFrictionW(c->points + 1, c->impulses + 1, c, &a, &b, tx, ty);
 
 	tbScatterPair(bodies, c, &a, &b, shared);
 }

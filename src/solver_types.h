@@ -147,25 +147,34 @@ typedef enum tbBiasPolicy
 /// room for crowded bodies.
 #define TB_GRAPH_COLOR_COUNT 24
 
-/// One manifold point of four contacts, lane by lane (structure of arrays): 176 bytes.
+/// The accumulated impulses of one manifold point of four contacts, lane by lane (N·s): 48 bytes.
+typedef struct tbWideImpulses
+{
+	tbFloatW normalImpulse;
+	tbFloatW tangentImpulse;
+	tbFloatW maxNormalImpulse; ///< the largest normal impulse of the step (hit events)
+} tbWideImpulses;
+
+/// The rest of one manifold point of four contacts, lane by lane (structure of arrays): 128 bytes.
 typedef struct tbWideContactPoint
 {
 	tbFloatW anchorAX, anchorAY; ///< m, as tbContactConstraintPoint
 	tbFloatW anchorBX, anchorBY;
 	tbFloatW baseSeparation;
-	tbFloatW normalImpulse;
-	tbFloatW tangentImpulse;
-	tbFloatW maxNormalImpulse;
 	tbFloatW normalMass; ///< 0 in a lane whose contact has fewer points: its impulses stay 0
 	tbFloatW tangentMass;
 	tbFloatW relaxBias; ///< m/s, max(s, 0)/h from the sub-step's first relaxing pass (s fixed until the next)
 } tbWideContactPoint;
 
 /// TB_SIMD_WIDTH contacts of one graph colour, solved together (contact_solver_wide.c): 576 bytes
-/// with four lanes (SSE2), 1,152 with eight (AVX2).
+/// with four lanes (SSE2), 1,152 with eight (AVX2), 64-byte aligned (constraint_graph.c).
 /// Padding lanes have both bodies at the static stand-in and every number 0.
+/// The impulses of both points come first, in the block's first 96 bytes (four lanes): the store
+/// after the solve, which reads only them, lane by lane in contact-id order and so from blocks long
+/// gone from the cache, then reads two lines per contact instead of four.
 typedef struct tbWideContactConstraint
 {
+	tbWideImpulses impulses[2]; ///< point 0, point 1
 	int indexA[TB_SIMD_WIDTH];			///< solver body indices, as tbContactConstraint
 	int indexB[TB_SIMD_WIDTH];
 	int constraintIndex[TB_SIMD_WIDTH]; ///< index in tbStepContext::constraints, −1 for padding

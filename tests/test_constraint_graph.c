@@ -166,7 +166,7 @@ Test(constraint_graph, colours_are_independent_sets_in_input_order)
 				cr_expect_eq(block->indexA[lane], c->indexA);
 				cr_expect_eq(block->indexB[lane], c->indexB);
 				cr_expect_eq(tbGetLaneW(&block->normalY, lane), c->normal.y);
-				cr_expect_eq(tbGetLaneW(&block->points[0].normalImpulse, lane), c->points[0].normalImpulse);
+				cr_expect_eq(tbGetLaneW(&block->impulses[0].normalImpulse, lane), c->points[0].normalImpulse);
 				if (Moves(c->indexA))
 				{
 					uses[c->indexA] += 1;
