@@ -391,7 +391,7 @@ static bool tbMayRebound(const tbStepContext* context, const tbContactConstraint
 // Returns whether some point approaches at the restitution threshold or faster (tbMayRebound's test,
 // on the same approach speeds, without impact propagation).
 bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
-					   int lane, int slot)
+					   int lane)
 {
 	const tbSolverMass* massA = context->masses + key.indexA;
 	const tbSolverMass* massB = context->masses + key.indexB;
@@ -410,8 +410,6 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 
 	block->indexA[lane] = key.indexA;
 	block->indexB[lane] = key.indexB;
-	block->constraintIndex[lane] = slot;
-	block->pointCount[lane] = pointCount;
 	tbSetLaneW(&block->normalX, lane, normal.x);
 	tbSetLaneW(&block->normalY, lane, normal.y);
 	tbSetLaneW(&block->friction, lane, contact->friction);
@@ -437,7 +435,6 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 			tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
 			tbSetLaneW(&wp->normalMass, lane, 0.0f);
 			tbSetLaneW(&wp->tangentMass, lane, 0.0f);
-			tbSetLaneW(&wp->relaxBias, lane, 0.0f);
 			continue;
 		}
 		const tbManifoldPoint* mp = manifold->points + j;
@@ -456,7 +453,6 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
 		tbSetLaneW(&wp->normalMass, lane, kNormal > 0.0f ? 1.0f / kNormal : 0.0f);
 		tbSetLaneW(&wp->tangentMass, lane, kTangent > 0.0f ? 1.0f / kTangent : 0.0f);
-		tbSetLaneW(&wp->relaxBias, lane, 0.0f);
 		tbVec2 vA = tbAdd(sA->linearVelocity, tbCrossSV(sA->angularVelocity, rA));
 		tbVec2 vB = tbAdd(sB->linearVelocity, tbCrossSV(sB->angularVelocity, rB));
 		relativeVelocity[j] = tbDot(tbSub(vB, vA), normal);
@@ -575,7 +571,7 @@ static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput
 /// blocks). The inputs are read as rows of four floats and
 /// transposed: the two bodies' masses and velocities, the manifold's normal, each point's anchors
 /// and each point's separation and impulses.
-void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
+int tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 {
 	const void* rows[TB_SIMD_WIDTH];
 	tbFloatW mass[2][4], velocity[2][4], head[4], anchors[2][4], numbers[2][4];
@@ -651,6 +647,8 @@ void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 	tbStoreLanesW(normal[0], head[0]);
 	tbStoreLanesW(normal[1], head[1]);
 	int deep = points[0].deep | points[1].deep;
+	float threshold = context->world->def.restitutionThreshold;
+	int rebound = 0;
 
 	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
 	{
@@ -661,8 +659,6 @@ void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 		int count = contact->manifold.pointCount;
 		block->indexA[lane] = key.indexA;
 		block->indexB[lane] = key.indexB;
-		block->constraintIndex[lane] = batch->slots[l];
-		block->pointCount[lane] = count;
 		tbSetLaneW(&block->normalX, lane, normal[0][l]);
 		tbSetLaneW(&block->normalY, lane, normal[1][l]);
 		tbSetLaneW(&block->friction, lane, contact->friction);
@@ -684,10 +680,10 @@ void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 			tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
 			tbSetLaneW(&wp->normalMass, lane, p->normalMass[l]);
 			tbSetLaneW(&wp->tangentMass, lane, p->tangentMass[l]);
-			tbSetLaneW(&wp->relaxBias, lane, 0.0f);
 			if (j < count)
 			{
 				contact->manifold.points[j].normalVelocity = p->normalVelocity[l];
+				rebound |= p->normalVelocity[l] <= -threshold ? 1 << l : 0;
 			}
 		}
 
@@ -702,6 +698,7 @@ void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 		tbSetLaneW(&block->massScale, lane, softness.massScale);
 		tbSetLaneW(&block->impulseScale, lane, softness.impulseScale);
 	}
+	return rebound;
 }
 
 typedef struct tbPrepareTaskContext
@@ -709,6 +706,61 @@ typedef struct tbPrepareTaskContext
 	tbStepContext* context;
 	atomic_int restitutionCount;
 } tbPrepareTaskContext;
+
+/// The contact at place i (contact-id order) will not rebound: solved and stored from its lane like
+/// any other, with no scalar copy.
+static void tbDropBounce(tbStepContext* context, int i, int slot, tbContactKey* key)
+{
+	key->flags &= ~(uint32_t)tb_keyBounces;
+	context->keys[slot].flags = key->flags;
+	context->keysById[i].flags = key->flags;
+}
+
+/// A coloured contact with restitution whose lane is prepared and which may rebound (a point
+/// approaches at the restitution threshold or faster): restitution needs its scalar constraint,
+/// prepared here (and its lane again from it, the same numbers). Returns 1 if it still bounces.
+static int tbPrepareBounce(tbStepContext* context, tbContact* contact, int i, int slot, int location)
+{
+	tbContactKey key = context->keysById[i];
+	tbContactConstraint local;
+	tbPrepareConstraint(context, contact, key, &local);
+	if (tbMayRebound(context, &local) == false)
+	{
+		tbDropBounce(context, i, slot, &key);
+	}
+	tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH, &local);
+	if ((key.flags & tb_keyBounces) == 0u)
+	{
+		return 0;
+	}
+	context->constraints[slot] = local;
+	return 1;
+}
+
+/// After a batch's lanes are prepared: its contacts with restitution either drop the bounce (no
+/// point approaches fast enough: most of the spinner's, where every shape has restitution 0.1 and
+/// most contacts rest or creep) or get their scalar copy. `rebound`: a bit per lane
+/// (tbPrepareWideLanes). Returns how many still bounce.
+static int tbFinishLaneBatch(tbStepContext* context, const tbLaneBatch* batch, int rebound)
+{
+	int bounceCount = 0;
+	for (int l = 0; l < batch->count; ++l)
+	{
+		tbContactKey key = batch->keys[l];
+		if ((key.flags & tb_keyBounces) == 0u)
+		{
+			continue;
+		}
+		if ((rebound & (1 << l)) == 0)
+		{
+			tbDropBounce(context, batch->indices[l], batch->slots[l], &key);
+			continue;
+		}
+		bounceCount += tbPrepareBounce(context, batch->contacts[l], batch->indices[l], batch->slots[l],
+									   batch->locations[l]);
+	}
+	return bounceCount;
+}
 
 // With the wide solver the colours are known (constraint_graph.c), and a coloured contact is
 // prepared on the stack and written straight into its lane: the scalar constraint is written only
@@ -756,40 +808,24 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 		tbContactKey key = context->keysById[i];
 		int location = context->locationById[i];
 		bool bounces = (key.flags & tb_keyBounces) != 0u;
-		if (location >= 0 && laneFastPath && bounces == false)
+		if (location >= 0 && laneFastPath && (bounces == false || impactPropagation == false))
 		{
-			// Gathered until a batch is full, then prepared together (tbPrepareWideLanes).
+			// Gathered until a batch is full, then prepared together (tbPrepareWideLanes); those
+			// with restitution then drop the bounce or get their scalar copy (tbFinishLaneBatch).
 			batch.contacts[batch.count] = contact;
 			batch.keys[batch.count] = key;
 			batch.locations[batch.count] = location;
 			batch.slots[batch.count] = slot;
+			batch.indices[batch.count] = i;
 			if (++batch.count == TB_SIMD_WIDTH)
 			{
-				tbPrepareWideLanes(context, &batch);
+				restitutionCount += tbFinishLaneBatch(context, &batch, tbPrepareWideLanes(context, &batch));
 				batch.count = 0;
 			}
 			continue;
 		}
-		if (location >= 0 && laneFastPath && (bounces == false || impactPropagation == false))
-		{
-			bool rebound = tbPrepareWideLane(context, contact, key, context->wideConstraints + location / TB_SIMD_WIDTH,
-											 location % TB_SIMD_WIDTH, slot);
-			if (bounces == false)
-			{
-				continue;
-			}
-			if (rebound == false)
-			{
-				// A bouncing contact that will not rebound (tbMayRebound): solved and stored from its
-				// lane like any other, with no scalar copy (spinner: every shape has restitution 0.1,
-				// and most of its contacts rest or creep).
-				key.flags &= ~(uint32_t)tb_keyBounces;
-				context->keys[slot].flags = key.flags;
-				context->keysById[i].flags = key.flags;
-				continue;
-			}
-			// It may rebound: restitution needs the scalar copy, prepared below (the lane again).
-		}
+		// The overflow, the scalar-only prepare (NGS at one sub-step), and with impact propagation the
+		// bouncing contacts (it reads every bouncing contact's scalar copy).
 		tbContactConstraint local;
 		tbPrepareConstraint(context, contact, key, &local);
 		if ((key.flags & tb_keyBounces) != 0u && tbMayRebound(context, &local) == false)
@@ -801,7 +837,7 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 		}
 		if (location >= 0)
 		{
-			tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH, &local, slot);
+			tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH, &local);
 		}
 		if (location < 0 || (key.flags & tb_keyBounces) != 0u)
 		{
@@ -809,12 +845,15 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 		}
 		restitutionCount += (key.flags & tb_keyBounces) != 0u ? 1 : 0;
 	}
+	int rebound = 0;
 	for (int l = 0; l < batch.count; ++l)
 	{
-		tbPrepareWideLane(context, batch.contacts[l], batch.keys[l],
-						  context->wideConstraints + batch.locations[l] / TB_SIMD_WIDTH,
-						  batch.locations[l] % TB_SIMD_WIDTH, batch.slots[l]);
+		bool approaching = tbPrepareWideLane(context, batch.contacts[l], batch.keys[l],
+											 context->wideConstraints + batch.locations[l] / TB_SIMD_WIDTH,
+											 batch.locations[l] % TB_SIMD_WIDTH);
+		rebound |= approaching ? 1 << l : 0;
 	}
+	restitutionCount += tbFinishLaneBatch(context, &batch, rebound);
 	atomic_fetch_add_explicit(&task->restitutionCount, restitutionCount, memory_order_relaxed);
 }
 

@@ -28,7 +28,7 @@ void tbStoreImpulses(tbStepContext* context);
 /// constraint's numbers, written field by field); returns whether a point approaches at the
 /// restitution threshold or faster. Declared here for the test of the wide preparation.
 bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
-					   int lane, int slot);
+					   int lane);
 /// TB_SIMD_WIDTH contacts for tbPrepareWideLanes, each with its place.
 typedef struct tbLaneBatch
 {
@@ -37,21 +37,23 @@ typedef struct tbLaneBatch
 	tbContactKey keys[TB_SIMD_WIDTH];
 	int locations[TB_SIMD_WIDTH]; ///< block·TB_SIMD_WIDTH + lane
 	int slots[TB_SIMD_WIDTH];
+	int indices[TB_SIMD_WIDTH]; ///< place in contact-id order (world->solverContactsById)
 } tbLaneBatch;
-/// tbPrepareWideLane for a full batch of contacts that do not bounce, computed in wide floats: bit
-/// for bit the same lanes and approach speeds (tests/test_contact_solver.c checks it).
-void tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch);
+/// tbPrepareWideLane for a full batch of contacts, computed in wide floats: bit for bit the same
+/// lanes and approach speeds (tests/test_contact_solver.c checks it). Returns a bit per lane: set
+/// where tbPrepareWideLane would return true (some point approaches at the restitution threshold
+/// or faster).
+int tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch);
 
 // contact_solver_wide.c
 // Inline so that a contact prepared on the stack goes to its lane without a round trip through
-// memory (contact_solver.c). Every field of the lane is written (a second point the contact does not have as zeros), so the
-// block needs no clearing first.
-static inline void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactConstraint* c, int constraintIndex)
+// memory (contact_solver.c). Every field of the lane is written (a second point the contact does not
+// have as zeros) but the relaxing bias, which the first relaxing pass writes before any pass reads
+// it; so the block needs no clearing first.
+static inline void tbPackWideLane(tbWideContactConstraint* block, int lane, const tbContactConstraint* c)
 {
 	block->indexA[lane] = c->indexA;
 	block->indexB[lane] = c->indexB;
-	block->constraintIndex[lane] = constraintIndex;
-	block->pointCount[lane] = c->pointCount;
 	tbSetLaneW(&block->normalX, lane, c->normal.x);
 	tbSetLaneW(&block->normalY, lane, c->normal.y);
 	tbSetLaneW(&block->friction, lane, c->friction);
@@ -77,7 +79,6 @@ static inline void tbPackWideLane(tbWideContactConstraint* block, int lane, cons
 		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, cp->maxNormalImpulse);
 		tbSetLaneW(&wp->normalMass, lane, cp->normalMass);
 		tbSetLaneW(&wp->tangentMass, lane, cp->tangentMass);
-		tbSetLaneW(&wp->relaxBias, lane, 0.0f);
 	}
 }
 

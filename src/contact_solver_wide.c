@@ -30,7 +30,6 @@ void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex)
 	{
 		block->indexA[i] = staticIndex;
 		block->indexB[i] = staticIndex;
-		block->constraintIndex[i] = -1;
 	}
 }
 

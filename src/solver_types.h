@@ -163,22 +163,23 @@ typedef struct tbWideContactPoint
 	tbFloatW baseSeparation;
 	tbFloatW normalMass; ///< 0 in a lane whose contact has fewer points: its impulses stay 0
 	tbFloatW tangentMass;
-	tbFloatW relaxBias; ///< m/s, max(s, 0)/h from the sub-step's first relaxing pass (s fixed until the next)
+	/// m/s, max(s, 0)/h from the sub-step's first relaxing pass (s fixed until the next); written by
+	/// that pass before any pass reads it, so the preparation leaves it alone
+	tbFloatW relaxBias;
 } tbWideContactPoint;
 
-/// TB_SIMD_WIDTH contacts of one graph colour, solved together (contact_solver_wide.c): 576 bytes
-/// with four lanes (SSE2), 1,152 with eight (AVX2), 64-byte aligned (constraint_graph.c).
-/// Padding lanes have both bodies at the static stand-in and every number 0.
+/// TB_SIMD_WIDTH contacts of one graph colour, solved together (contact_solver_wide.c): 544 bytes
+/// with four lanes (SSE2), 1,088 with eight (AVX2); the array starts on a 64-byte line
+/// (constraint_graph.c). Padding lanes have both bodies at the static stand-in and every number 0.
 /// The impulses of both points come first, in the block's first 96 bytes (four lanes): the store
 /// after the solve, which reads only them, lane by lane in contact-id order and so from blocks long
-/// gone from the cache, then reads two lines per contact instead of four.
+/// gone from the cache, then reads two lines per contact instead of four. Which constraint a lane
+/// holds is tbStepContext::wideLocation's inverse; the blocks do not repeat it.
 typedef struct tbWideContactConstraint
 {
 	tbWideImpulses impulses[2]; ///< point 0, point 1
 	int indexA[TB_SIMD_WIDTH];			///< solver body indices, as tbContactConstraint
 	int indexB[TB_SIMD_WIDTH];
-	int constraintIndex[TB_SIMD_WIDTH]; ///< index in tbStepContext::constraints, −1 for padding
-	int pointCount[TB_SIMD_WIDTH];
 	tbFloatW normalX, normalY;
 	tbFloatW friction;
 	tbFloatW invMassA, invIA, invMassB, invIB;
@@ -186,8 +187,8 @@ typedef struct tbWideContactConstraint
 	tbWideContactPoint points[2];
 } tbWideContactConstraint;
 
-_Static_assert(sizeof(tbWideContactConstraint) == 144 * TB_SIMD_WIDTH,
-			   "tbWideContactConstraint is meant to be 144 bytes a lane (576 with four lanes)");
+_Static_assert(sizeof(tbWideContactConstraint) == 136 * TB_SIMD_WIDTH,
+			   "tbWideContactConstraint is meant to be 136 bytes a lane (544 with four lanes)");
 
 /// Everything the pieces of one step share. Lives on the stack of tbSolveStage.
 typedef struct tbStepContext
