@@ -516,6 +516,16 @@ StageProfile PeerBox2D3_GetProfile(PeerWorld* peer)
 	result.events = p.hitEvents + p.jointEvents + p.sensorHits + p.sensors;
 	result.sleep = p.splitIslands + p.sleepIslands;
 	result.step = p.step;
+	result.solverSetup = NAN;
+	result.prepareConstraints = p.prepareConstraints;
+	result.integrateVelocities = p.integrateVelocities;
+	result.warmStart = p.warmStart;
+	result.solveImpulses = p.solveImpulses;
+	result.integratePositions = p.integratePositions;
+	result.relaxImpulses = p.relaxImpulses;
+	result.applyRestitution = p.applyRestitution;
+	result.storeImpulses = p.storeImpulses;
+	result.scatterBodies = NAN;
 	return result;
 }
 

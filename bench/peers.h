@@ -56,10 +56,14 @@ static inline bool Peer_RefuseSpawnSchedule(const Scene* scene, const char* engi
 /// own profile maps as: setup = solverSetup; solve = constraints (prepare, sub-steps, restitution,
 /// store); finalize = transforms + refit; continuous = bullets (v3 sweeps non-bullet fast bodies
 /// inside its transforms); events = hitEvents + jointEvents + sensorHits + sensors; sleep =
-/// splitIslands + sleepIslands.
+/// splitIslands + sleepIslands. The parts of the solve are each engine's own, by the same names
+/// (tbProfile took v3's); a part an engine does not have is NaN (v3 gathers and scatters no
+/// solver bodies: its set-up is the set-up row, its transforms are in finalize).
 typedef struct StageProfile
 {
 	float pairs, collide, setup, solve, finalize, continuous, events, sleep, step;
+	float solverSetup, prepareConstraints, integrateVelocities, warmStart, solveImpulses, integratePositions,
+		relaxImpulses, applyRestitution, storeImpulses, scatterBodies;
 } StageProfile;
 
 /// State of one body read back from a peer: origin position, rotation, velocity of the centre of mass.

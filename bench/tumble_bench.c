@@ -1365,8 +1365,25 @@ static StageProfile Sim_GetProfile(const Sim* sim)
 	if (sim->engine == engineTumble)
 	{
 		tbProfile p = tbWorld_GetProfile(sim->tumble.worldId);
-		StageProfile t = {p.pairs, p.collide,	 p.islands, p.solve, p.finalize,
-						  p.continuous, p.events, p.sleep,	 p.step};
+		StageProfile t = {p.pairs,
+						  p.collide,
+						  p.islands,
+						  p.solve,
+						  p.finalize,
+						  p.continuous,
+						  p.events,
+						  p.sleep,
+						  p.step,
+						  p.solverSetup,
+						  p.prepareConstraints,
+						  p.integrateVelocities,
+						  p.warmStart,
+						  p.solveImpulses,
+						  p.integratePositions,
+						  p.relaxImpulses,
+						  p.applyRestitution,
+						  p.storeImpulses,
+						  p.scatterBodies};
 		result = t;
 	}
 #ifdef TUMBLE_HAVE_BOX2D3
@@ -1378,12 +1395,29 @@ static StageProfile Sim_GetProfile(const Sim* sim)
 	return result;
 }
 
-#define STAGE_COUNT 9
+#define STAGE_COUNT 19
 
 static void AddProfile(double sums[STAGE_COUNT], StageProfile p)
 {
-	const float values[STAGE_COUNT] = {p.pairs,		 p.collide, p.setup, p.solve, p.finalize,
-									   p.continuous, p.events,	p.sleep, p.step};
+	const float values[STAGE_COUNT] = {p.pairs,
+									   p.collide,
+									   p.setup,
+									   p.solve,
+									   p.finalize,
+									   p.continuous,
+									   p.events,
+									   p.sleep,
+									   p.step,
+									   p.solverSetup,
+									   p.prepareConstraints,
+									   p.integrateVelocities,
+									   p.warmStart,
+									   p.solveImpulses,
+									   p.integratePositions,
+									   p.relaxImpulses,
+									   p.applyRestitution,
+									   p.storeImpulses,
+									   p.scatterBodies};
 	for (int k = 0; k < STAGE_COUNT; ++k)
 	{
 		sums[k] += values[k];
@@ -1392,8 +1426,25 @@ static void AddProfile(double sums[STAGE_COUNT], StageProfile p)
 
 static int StageProfileTable(FILE* out, const Options* options)
 {
-	static const char* stageNames[STAGE_COUNT] = {"pairs",		"collide", "set-up", "solve", "finalize",
-												  "continuous", "events",  "sleep",	 "step"};
+	static const char* stageNames[STAGE_COUNT] = {"pairs",
+												  "collide",
+												  "set-up",
+												  "solve",
+												  "finalize",
+												  "continuous",
+												  "events",
+												  "sleep",
+												  "step",
+												  "solve: solver set-up",
+												  "solve: prepare constraints",
+												  "solve: integrate velocities",
+												  "solve: warm start",
+												  "solve: solve impulses",
+												  "solve: integrate positions",
+												  "solve: relax impulses",
+												  "solve: restitution",
+												  "solve: store impulses",
+												  "solve: scatter bodies"};
 	fprintf(out, "scene,stage,tumble_ms,box2d3_ms\n");
 	for (int s = 0; s < options->sceneCount; ++s)
 	{

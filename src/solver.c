@@ -227,6 +227,8 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	context.maxLinearSpeed = world->def.maximumLinearSpeed;
 	context.maxAngularSpeed = TB_MAX_ROTATION / timeStep;
 	context.enableWarmStarting = world->def.enableWarmStarting;
+	context.lapTicks = tbGetTicks();
+	tbProfile* profile = &world->profile; // the solve stage's parts (tbProfileLap)
 
 	tbAllocateStep(&context, world->awakeBodyCount, world->solverContactCount);
 	tbGatherBodies(&context);
@@ -236,30 +238,38 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 		tbKeyContacts(&context);	  // contact_solver.c: the bodies each contact moves
 		tbColorConstraints(&context); // NGS has its own solver loops (solver_ngs.c): scalar only
 	}
+	tbProfileLap(&profile->solverSetup, &context.lapTicks);
 	tbPrepareContacts(&context); // coloured contacts straight into their wide lanes
 	tbPropagateImpacts(&context);
 	tbPrepareJoints(&context); // joint.c
 	tbColorJoints(&context);   // constraint_graph.c: the joints' solve order, mechanism by mechanism or by colour
 	tbBuildJointTrees(&context); // joint_tree.c: exact solves of the mechanisms that are mostly trees
+	tbProfileLap(&profile->prepareConstraints, &context.lapTicks);
 
-	if (tbSolveSubStepsOnWorkers(&context) == false)
+	if (tbSolveSubStepsOnWorkers(&context) == false) // solver_workers.c laps its own stages
 	{
 		for (int i = 0; i < subStepCount; ++i)
 		{
 			context.subStepIndex = i;
 			tbIntegrateVelocities(&context);
+			tbProfileLap(&profile->integrateVelocities, &context.lapTicks);
 			tbWarmStartJoints(&context);
 			tbWarmStartContacts(&context);
-			tbMethodSubStep(&context);
+			tbProfileLap(&profile->warmStart, &context.lapTicks);
+			tbMethodSubStep(&context); // the soft step laps its passes (solver_soft.c)
+			tbProfileLap(&profile->solveImpulses, &context.lapTicks);
 		}
 	}
 
 	tbApplyRestitution(&context);
+	tbProfileLap(&profile->applyRestitution, &context.lapTicks);
 	tbStoreImpulses(&context);
 	tbFinishJoints(&context); // joint events; joints keep their own impulses
 	if (context.wideConstraints != NULL)
 	{
 		tbReleaseColors(&context);
 	}
+	tbProfileLap(&profile->storeImpulses, &context.lapTicks);
 	tbScatterBodies(&context);
+	tbProfileLap(&profile->scatterBodies, &context.lapTicks);
 }

@@ -130,9 +130,12 @@ int tbSoftRelaxIterations(const tbStepContext* context, int subStepIndex)
 
 void tbSoftSubStep(tbStepContext* context)
 {
+	tbProfile* profile = &context->world->profile;
 	tbSolveJoints(context, true); // joint.c: soft positional correction
 	tbSolveContacts(context, tb_biasSoft);
+	tbProfileLap(&profile->solveImpulses, &context->lapTicks);
 	tbIntegratePositions(context);
+	tbProfileLap(&profile->integratePositions, &context->lapTicks);
 	int relaxIterations = tbSoftRelaxIterations(context, context->subStepIndex);
 	for (int i = 0; i < relaxIterations; ++i)
 	{
@@ -142,4 +145,5 @@ void tbSoftSubStep(tbStepContext* context)
 		}
 		tbSolveContacts(context, i == 0 ? tb_biasRelax : tb_biasRelaxRepeat);
 	}
+	tbProfileLap(&profile->relaxImpulses, &context->lapTicks);
 }

@@ -257,5 +257,14 @@ typedef struct tbStepContext
 	float maxLinearSpeed;		///< m/s
 	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step
 	bool enableWarmStarting;
+	uint64_t lapTicks; ///< when the solve stage's current part began (tbProfileLap)
 } tbStepContext;
+
+/// Adds the milliseconds since *ticks to a part of the step's profile and starts the next part.
+static inline void tbProfileLap(float* part, uint64_t* ticks)
+{
+	uint64_t now = tbGetTicks();
+	*part += (float)((double)(now - *ticks) * 1e-6);
+	*ticks = now;
+}
 

@@ -235,8 +235,33 @@ static void tbWorkOnStage(tbStageProgram* p, tbStage* s, int slot)
 	}
 }
 
+/// The part of the step's profile a stage's time goes to (tbProfile).
+static float* tbStageProfilePart(tbProfile* profile, const tbStage* s)
+{
+	switch ((tbStageKind)s->kind)
+	{
+		case tb_stageIntegrateVelocities:
+			return &profile->integrateVelocities;
+		case tb_stageIntegratePositions:
+			return &profile->integratePositions;
+		case tb_stageWarmStartMechanisms:
+		case tb_stageWarmStartJoints:
+		case tb_stageWarmStartColor:
+		case tb_stageWarmStartOverflow:
+			return &profile->warmStart;
+		case tb_stageSolveColor:
+		case tb_stageSolveOverflow:
+			return s->policy == tb_biasSoft ? &profile->solveImpulses : &profile->relaxImpulses;
+		default: // the joint passes
+			return s->useBias ? &profile->solveImpulses : &profile->relaxImpulses;
+	}
+}
+
+/// Opens the stages one after another; the time of each, from opening to done, goes to its part
+/// of the profile (only the orchestrator writes it, and the caller reads it after the program).
 static void tbOrchestrate(tbStageProgram* p, int slot)
 {
+	tbProfile* profile = &p->context->world->profile;
 	for (int k = 0; k < p->stageCount; ++k)
 	{
 		tbStage* s = p->stages + k;
@@ -247,6 +272,7 @@ static void tbOrchestrate(tbStageProgram* p, int slot)
 		{
 			tbSpinPause(&rounds); // the last units of the stage are running on other workers
 		}
+		tbProfileLap(tbStageProfilePart(profile, s), &p->context->lapTicks);
 	}
 	atomic_store_explicit(&p->openStage, p->stageCount, memory_order_release);
 }

@@ -193,6 +193,19 @@ Test(accessors, world_switches_and_callbacks)
 				  profile.finalize + profile.events + profile.sleep;
 	cr_assert(profile.solve > 0.0f && parts <= profile.step * 1.0001f + 1e-6f, "stages %g ms of a %g ms step",
 			  (double)parts, (double)profile.step);
+	// And the solve's parts are parts of the solve (each timed from the end of the one before).
+	const float solveParts[10] = {profile.solverSetup,	 profile.prepareConstraints, profile.integrateVelocities,
+								  profile.warmStart,	 profile.solveImpulses,		 profile.integratePositions,
+								  profile.relaxImpulses, profile.applyRestitution,	 profile.storeImpulses,
+								  profile.scatterBodies};
+	float solveSum = 0.0f;
+	for (int i = 0; i < 10; ++i)
+	{
+		cr_assert(solveParts[i] >= 0.0f, "solve part %d: %g ms", i, (double)solveParts[i]);
+		solveSum += solveParts[i];
+	}
+	cr_assert(solveSum <= profile.solve * 1.0001f + 1e-6f, "solve parts %g ms of a %g ms solve", (double)solveSum,
+			  (double)profile.solve);
 	tbVersion version = tbGetVersion(); // 0.1.0, as CHANGELOG.md's heading
 	cr_assert(version.major == 0 && version.minor == 1 && version.revision == 0);
 	uint64_t first = tbGetTicks(), second = tbGetTicks();

@@ -593,6 +593,20 @@ typedef struct tbProfile
 	float finalize;	  ///< sleep timers, bounding boxes, proxies moved, move events
 	float events;	  ///< hit events gathered (0 when no contact enables them)
 	float sleep;	  ///< islands put to sleep
+
+	// The parts of `solve`, named as Box2D v3.2's profile names them so that the two compare part
+	// by part; the sub-step parts are summed over the sub-steps. With workers the sub-step parts
+	// are timed by the thread that leads the stages, from opening a stage until it is done.
+	float solverSetup;		   ///< solver bodies gathered, contact keys, graph colours
+	float prepareConstraints;  ///< contacts and joints prepared (and joint trees built)
+	float integrateVelocities; ///< gravity, forces and damping into the velocities
+	float warmStart;		   ///< the last step's impulses applied again
+	float solveImpulses;	   ///< the biased passes (the whole sub-step for Baumgarte and NGS)
+	float integratePositions;  ///< velocities into the position deltas
+	float relaxImpulses;	   ///< the relaxing passes, the last sub-step's extra ones included
+	float applyRestitution;	   ///< restitution after the sub-steps
+	float storeImpulses;	   ///< impulses back to the contacts for the next warm start, joint events
+	float scatterBodies;	   ///< velocities and transforms back to the bodies, fast bodies marked
 } tbProfile;
 
 /// Counts from the last step.
