@@ -383,10 +383,10 @@ static bool tbMayRebound(const tbStepContext* context, const tbContactConstraint
 	return false;
 }
 
-// A contact that goes to a wide lane and cannot bounce, prepared straight into the lane: the same
-// numbers as tbPrepareConstraint (the same expressions in the same order, so bit for bit), without
-// the scalar constraint in between and without what the lanes do not carry (surface extras) or
-// what only bouncing contacts need (the scalar copy). Soft step and Baumgarte only: NGS at one
+// A contact that goes to a wide lane, prepared straight into the lane: the same numbers as
+// tbPrepareConstraint (the same expressions in the same order, so bit for bit), without the scalar
+// constraint in between and without what the lanes do not carry (surface extras) or what only
+// contacts that may rebound need (the scalar copy, tbFinishLaneBatch). Soft step and Baumgarte only: NGS at one
 // sub-step prepares differently (tbPrepareConstraintNGS) and takes tbPrepareConstraint.
 // Returns whether some point approaches at the restitution threshold or faster (tbMayRebound's test,
 // on the same approach speeds, without impact propagation).
@@ -564,13 +564,13 @@ static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput
 	tbStoreLanesW(out->normalVelocity, normalVelocity);
 }
 
-/// tbPrepareWideLane for a full batch of contacts that do not bounce, one per lane of wide floats:
-/// the same expressions in the same order, so bit for bit the same lanes; the arithmetic is done
-/// TB_SIMD_WIDTH contacts at a time and only the stores into the blocks stay lane by lane (the
-/// contacts of a batch are consecutive in id order, so their lanes are spread over the colours'
-/// blocks). The inputs are read as rows of four floats and
-/// transposed: the two bodies' masses and velocities, the manifold's normal, each point's anchors
-/// and each point's separation and impulses.
+/// tbPrepareWideLane for a full batch of contacts, one per lane of wide floats: the same expressions
+/// in the same order, so bit for bit the same lanes; the arithmetic is done TB_SIMD_WIDTH contacts
+/// at a time and only the stores into the blocks stay lane by lane (the contacts of a batch are
+/// consecutive in id order, so their lanes are spread over the colours' blocks). The inputs are
+/// read as rows of four floats and transposed: the two bodies' masses and velocities, the
+/// manifold's normal, each point's anchors and each point's separation and impulses. Returns a bit
+/// per lane, set where a point approaches at the restitution threshold or faster.
 int tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 {
 	const void* rows[TB_SIMD_WIDTH];
