@@ -23,6 +23,7 @@
 #include "task_system.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1365,25 +1366,25 @@ static StageProfile Sim_GetProfile(const Sim* sim)
 	if (sim->engine == engineTumble)
 	{
 		tbProfile p = tbWorld_GetProfile(sim->tumble.worldId);
-		StageProfile t = {p.pairs,
-						  p.collide,
-						  p.islands,
-						  p.solve,
-						  p.finalize,
-						  p.continuous,
-						  p.events,
-						  p.sleep,
-						  p.step,
-						  p.solverSetup,
-						  p.prepareConstraints,
-						  p.integrateVelocities,
-						  p.warmStart,
-						  p.solveImpulses,
-						  p.integratePositions,
-						  p.relaxImpulses,
-						  p.applyRestitution,
-						  p.storeImpulses,
-						  p.scatterBodies};
+		StageProfile t = {.pairs = p.pairs,
+						  .collide = p.collide,
+						  .setup = p.islands,
+						  .solve = p.solve,
+						  .finalize = p.finalize,
+						  .continuous = p.continuous,
+						  .events = p.events,
+						  .sleep = p.sleep,
+						  .step = p.step,
+						  .solverSetup = p.solverSetup,
+						  .prepareConstraints = p.prepareConstraints,
+						  .integrateVelocities = p.integrateVelocities,
+						  .warmStart = p.warmStart,
+						  .solveImpulses = p.solveImpulses,
+						  .integratePositions = p.integratePositions,
+						  .relaxImpulses = p.relaxImpulses,
+						  .applyRestitution = p.applyRestitution,
+						  .storeImpulses = p.storeImpulses,
+						  .scatterBodies = p.scatterBodies};
 		result = t;
 	}
 #ifdef TUMBLE_HAVE_BOX2D3
@@ -1395,56 +1396,48 @@ static StageProfile Sim_GetProfile(const Sim* sim)
 	return result;
 }
 
-#define STAGE_COUNT 19
+/// The rows of the profile table: a name and where its milliseconds sit in a StageProfile.
+typedef struct StageRow
+{
+	const char* name;
+	size_t offset;
+} StageRow;
+
+static const StageRow s_stageRows[] = {
+	{"pairs", offsetof(StageProfile, pairs)},
+	{"collide", offsetof(StageProfile, collide)},
+	{"set-up", offsetof(StageProfile, setup)},
+	{"solve", offsetof(StageProfile, solve)},
+	{"finalize", offsetof(StageProfile, finalize)},
+	{"continuous", offsetof(StageProfile, continuous)},
+	{"events", offsetof(StageProfile, events)},
+	{"sleep", offsetof(StageProfile, sleep)},
+	{"step", offsetof(StageProfile, step)},
+	{"solve: solver set-up", offsetof(StageProfile, solverSetup)},
+	{"solve: prepare constraints", offsetof(StageProfile, prepareConstraints)},
+	{"solve: integrate velocities", offsetof(StageProfile, integrateVelocities)},
+	{"solve: warm start", offsetof(StageProfile, warmStart)},
+	{"solve: solve impulses", offsetof(StageProfile, solveImpulses)},
+	{"solve: integrate positions", offsetof(StageProfile, integratePositions)},
+	{"solve: relax impulses", offsetof(StageProfile, relaxImpulses)},
+	{"solve: restitution", offsetof(StageProfile, applyRestitution)},
+	{"solve: store impulses", offsetof(StageProfile, storeImpulses)},
+	{"solve: scatter bodies", offsetof(StageProfile, scatterBodies)},
+};
+#define STAGE_COUNT ((int)(sizeof(s_stageRows) / sizeof(s_stageRows[0])))
 
 static void AddProfile(double sums[STAGE_COUNT], StageProfile p)
 {
-	const float values[STAGE_COUNT] = {p.pairs,
-									   p.collide,
-									   p.setup,
-									   p.solve,
-									   p.finalize,
-									   p.continuous,
-									   p.events,
-									   p.sleep,
-									   p.step,
-									   p.solverSetup,
-									   p.prepareConstraints,
-									   p.integrateVelocities,
-									   p.warmStart,
-									   p.solveImpulses,
-									   p.integratePositions,
-									   p.relaxImpulses,
-									   p.applyRestitution,
-									   p.storeImpulses,
-									   p.scatterBodies};
 	for (int k = 0; k < STAGE_COUNT; ++k)
 	{
-		sums[k] += values[k];
+		float value;
+		memcpy(&value, (const char*)&p + s_stageRows[k].offset, sizeof(value));
+		sums[k] += value;
 	}
 }
 
 static int StageProfileTable(FILE* out, const Options* options)
 {
-	static const char* stageNames[STAGE_COUNT] = {"pairs",
-												  "collide",
-												  "set-up",
-												  "solve",
-												  "finalize",
-												  "continuous",
-												  "events",
-												  "sleep",
-												  "step",
-												  "solve: solver set-up",
-												  "solve: prepare constraints",
-												  "solve: integrate velocities",
-												  "solve: warm start",
-												  "solve: solve impulses",
-												  "solve: integrate positions",
-												  "solve: relax impulses",
-												  "solve: restitution",
-												  "solve: store impulses",
-												  "solve: scatter bodies"};
 	fprintf(out, "scene,stage,tumble_ms,box2d3_ms\n");
 	for (int s = 0; s < options->sceneCount; ++s)
 	{
@@ -1481,8 +1474,8 @@ static int StageProfileTable(FILE* out, const Options* options)
 		{
 			double t = sums[0][k] / n;
 			double v = made[1] ? sums[1][k] / n : NAN;
-			printf("| %s | %.3f | %.3f | %.2f |\n", stageNames[k], t, v, v > 0.0 ? t / v : NAN);
-			fprintf(out, "%s,%s,%.4f,%.4f\n", options->scenes[s], stageNames[k], t, v);
+			printf("| %s | %.3f | %.3f | %.2f |\n", s_stageRows[k].name, t, v, v > 0.0 ? t / v : NAN);
+			fprintf(out, "%s,%s,%.4f,%.4f\n", options->scenes[s], s_stageRows[k].name, t, v);
 		}
 		for (int e = 0; e < 2; ++e)
 		{

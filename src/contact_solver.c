@@ -386,8 +386,9 @@ static bool tbMayRebound(const tbStepContext* context, const tbContactConstraint
 // A contact that goes to a wide lane, prepared straight into the lane: the same numbers as
 // tbPrepareConstraint (the same expressions in the same order, so bit for bit), without the scalar
 // constraint in between and without what the lanes do not carry (surface extras) or what only
-// contacts that may rebound need (the scalar copy, tbFinishLaneBatch). Soft step and Baumgarte only: NGS at one
-// sub-step prepares differently (tbPrepareConstraintNGS) and takes tbPrepareConstraint.
+// contacts that may rebound need (the scalar copy, tbFinishLaneBatch). Soft step and Baumgarte
+// only: NGS at one sub-step prepares differently (tbPrepareConstraintNGS) and takes
+// tbPrepareConstraint.
 // Returns whether some point approaches at the restitution threshold or faster (tbMayRebound's test,
 // on the same approach speeds, without impact propagation).
 bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey key, tbWideContactConstraint* block,
@@ -718,8 +719,9 @@ static void tbDropBounce(tbStepContext* context, int i, int slot, tbContactKey* 
 
 /// A coloured contact with restitution whose lane is prepared and which may rebound (a point
 /// approaches at the restitution threshold or faster): restitution needs its scalar constraint,
-/// prepared here (and its lane again from it, the same numbers). Returns 1 if it still bounces.
-static int tbPrepareBounce(tbStepContext* context, tbContact* contact, int i, int slot, int location)
+/// prepared here. Its lane already holds the same numbers (tbPrepareWideLane's expressions are the
+/// scalar ones), so it is not written again. Returns 1 if it still bounces.
+static int tbPrepareBounce(tbStepContext* context, tbContact* contact, int i, int slot)
 {
 	tbContactKey key = context->keysById[i];
 	tbContactConstraint local;
@@ -727,10 +729,6 @@ static int tbPrepareBounce(tbStepContext* context, tbContact* contact, int i, in
 	if (tbMayRebound(context, &local) == false)
 	{
 		tbDropBounce(context, i, slot, &key);
-	}
-	tbPackWideLane(context->wideConstraints + location / TB_SIMD_WIDTH, location % TB_SIMD_WIDTH, &local);
-	if ((key.flags & tb_keyBounces) == 0u)
-	{
 		return 0;
 	}
 	context->constraints[slot] = local;
@@ -756,8 +754,7 @@ static int tbFinishLaneBatch(tbStepContext* context, const tbLaneBatch* batch, i
 			tbDropBounce(context, batch->indices[l], batch->slots[l], &key);
 			continue;
 		}
-		bounceCount += tbPrepareBounce(context, batch->contacts[l], batch->indices[l], batch->slots[l],
-									   batch->locations[l]);
+		bounceCount += tbPrepareBounce(context, batch->contacts[l], batch->indices[l], batch->slots[l]);
 	}
 	return bounceCount;
 }
@@ -830,10 +827,7 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 		tbPrepareConstraint(context, contact, key, &local);
 		if ((key.flags & tb_keyBounces) != 0u && tbMayRebound(context, &local) == false)
 		{
-			// Restitution will not touch it: solved and stored from its lane like any other.
-			key.flags &= ~(uint32_t)tb_keyBounces;
-			context->keys[slot].flags = key.flags;
-			context->keysById[i].flags = key.flags;
+			tbDropBounce(context, i, slot, &key); // restitution will not touch it
 		}
 		if (location >= 0)
 		{
