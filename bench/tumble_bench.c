@@ -364,6 +364,7 @@ typedef struct Options
 	bool peers;					 ///< time peers too (--peers: all built ones; --peer NAME: those named)
 	int workers;				 ///< --workers N: Tumble on a task system of N workers, Box2D v3 with N workers
 	bool skipTumble;			 ///< --skip-tumble: time the peers only (to time engines in separate processes)
+	bool skipPeers;				 ///< --skip-peers: profile Tumble alone (its workers undisturbed by v3's)
 	bool peerNamed[engineCount]; ///< --peer NAME given for this engine
 	bool interleaveSteps;		 ///< --interleave: the engines' worlds side by side, stepped in turn
 	TumbleConfig config;
@@ -1449,8 +1450,10 @@ static int StageProfileTable(FILE* out, const Options* options)
 		}
 		int steps = options->steps > 0 ? options->steps : scene->steps;
 		Sim sims[2];
-		bool made[2] = {Sim_Create(sims + 0, scene, engineTumble, &options->config), false};
-		made[1] = EngineAvailable(engineBox2D3) && Sim_Create(sims + 1, scene, engineBox2D3, &options->config);
+		bool made[2] = {false, false};
+		made[0] = options->skipTumble == false && Sim_Create(sims + 0, scene, engineTumble, &options->config);
+		made[1] = options->skipPeers == false && EngineAvailable(engineBox2D3) &&
+				  Sim_Create(sims + 1, scene, engineBox2D3, &options->config);
 		double sums[2][STAGE_COUNT] = {{0}};
 		for (int i = 0; i < steps; ++i)
 		{
@@ -1472,7 +1475,7 @@ static int StageProfileTable(FILE* out, const Options* options)
 			   options->scenes[s], steps);
 		for (int k = 0; k < STAGE_COUNT; ++k)
 		{
-			double t = sums[0][k] / n;
+			double t = made[0] ? sums[0][k] / n : NAN;
 			double v = made[1] ? sums[1][k] / n : NAN;
 			printf("| %s | %.3f | %.3f | %.2f |\n", s_stageRows[k].name, t, v, v > 0.0 ? t / v : NAN);
 			fprintf(out, "%s,%s,%.4f,%.4f\n", options->scenes[s], s_stageRows[k].name, t, v);
@@ -1503,7 +1506,8 @@ static void PrintUsage(void)
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
 		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
-		   "       tumble-bench profile SCENE... [--steps N] [--csv FILE]   (stage by stage, Tumble and Box2D v3)\n"
+		   "       tumble-bench profile SCENE... [--steps N] [--csv FILE] [--skip-tumble | --skip-peers]\n"
+		   "                    (stage by stage, Tumble and Box2D v3, or either alone)\n"
 		   "       tumble-bench --list\n"
 		   "Default scenes: large_pyramid many_pyramids tumbler smash spinner rain_rigid washer junkyard\n"
 		   "compounds joint_grid rain_ragdolls rain, each at its catalogue step count, 60 Hz, 4 sub-steps\n"
@@ -1612,6 +1616,10 @@ int main(int argc, char** argv)
 		else if (strcmp(arg, "--skip-tumble") == 0)
 		{
 			options.skipTumble = true;
+		}
+		else if (strcmp(arg, "--skip-peers") == 0)
+		{
+			options.skipPeers = true;
 		}
 		else if (strcmp(arg, "--workers") == 0 && hasValue)
 		{
