@@ -2,10 +2,11 @@
 // (soft step, Baumgarte, NGS) at 1, 2, 4 and 8 sub-steps or iterations, judged by each scene's
 // pass criterion. Writes a CSV of the measurements and the markdown page docs/stability.md.
 //
-//   tumble-stability [--csv FILE] [--markdown FILE] [--no-recycle]
+//   tumble-stability [--csv FILE] [--markdown FILE] [--no-recycle] [--point-friction]
 //
-// --no-recycle recomputes every manifold (tbWorldDef::enableManifoldRecycling off), for measuring
-// what recycling costs in accuracy.
+// --no-recycle recomputes every manifold (tbWorldDef::enableManifoldRecycling off), and
+// --point-friction solves a friction row per manifold point (tbWorldDef::enableCentralFriction
+// off), for measuring what each default costs in accuracy.
 //
 // Rows: soft × n sub-steps; Baumgarte and NGS × n velocity iterations per step with one
 // sub-step (Box2D 2.4's style), NGS with 3 position iterations. Sleep is off in every scene so
@@ -77,12 +78,15 @@ static Config MakeConfig(tbSolverMethod solver, int count)
 
 /// --no-recycle: every manifold recomputed.
 static bool s_noRecycle = false;
+/// --point-friction: a friction row per manifold point.
+static bool s_pointFriction = false;
 
 /// Build the scene's world with sleep off and the configuration's solver.
 static SceneWorld BuildWorld(const Scene* scene, const Config* config)
 {
 	tbWorldDef def = Scene_MakeWorldDef(scene, NULL);
 	def.enableManifoldRecycling = def.enableManifoldRecycling && s_noRecycle == false;
+	def.enableCentralFriction = def.enableCentralFriction && s_pointFriction == false;
 	def.enableSleep = false;
 	def.solver = config->solver;
 	def.velocityIterations = config->velocityIterations;
@@ -606,6 +610,11 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 	{
 		fprintf(f, "Manifold recycling is off in this table (`--no-recycle`): every manifold is recomputed.\n\n");
 	}
+	if (s_pointFriction)
+	{
+		fprintf(f, "Friction is solved per manifold point in this table (`--point-friction`), not at each contact's\n"
+				   "centre of pressure.\n\n");
+	}
 
 	fprintf(f, "| method |");
 	for (int s = 0; s < SCENE_COUNT; ++s)
@@ -746,6 +755,10 @@ int main(int argc, char** argv)
 		else if (strcmp(argv[i], "--no-recycle") == 0)
 		{
 			s_noRecycle = true;
+		}
+		else if (strcmp(argv[i], "--point-friction") == 0)
+		{
+			s_pointFriction = true;
 		}
 		else
 		{

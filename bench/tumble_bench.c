@@ -1502,7 +1502,8 @@ static void PrintUsage(void)
 		   "                    [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                    [--toi off|quadratic|ca] [--solver soft|baumgarte|ngs]\n"
 		   "                    [--substeps N] [--iterations N] [--relax N] [--final-relax N]\n"
-		   "                    [--settled-ratio X] [--scalar-solver] [--chipmunk-tree] [--workers N]\n"
+		   "                    [--settled-ratio X] [--scalar-solver] [--point-friction] [--chipmunk-tree]\n"
+		   "                    [--workers N]\n"
 		   "       tumble-bench solver-chart|narrowphase-chart|toi-chart|tunnel-chart [--csv FILE]\n"
 		   "       tumble-bench sleep [--steps N] [--repeat R] [--csv FILE]\n"
 		   "       tumble-bench poses SCENE... [--steps N] [--peers | --peer NAME...] [--csv FILE]\n"
@@ -1612,6 +1613,10 @@ int main(int argc, char** argv)
 		else if (strcmp(arg, "--scalar-solver") == 0)
 		{
 			options.config.overrides.scalarSolver = true;
+		}
+		else if (strcmp(arg, "--point-friction") == 0)
+		{
+			options.config.overrides.pointFriction = true;
 		}
 		else if (strcmp(arg, "--skip-tumble") == 0)
 		{

@@ -58,7 +58,8 @@ static void PrintUsage(void)
 		   "                   [--view x0,y0,x1,y1] [--broadphase tree|sap|hash|brute|auto] [--narrowphase sat|gjk|auto]\n"
 		   "                   [--toi off|quadratic|ca] [--solver baumgarte|ngs|soft] [--substeps N]\n"
 		   "                   [--iterations N] [--relax N] [--final-relax N] [--settled-ratio X]\n"
-		   "                   [--scalar-solver] [--no-recycle] [--impact-propagation] [--workers N]\n"
+		   "                   [--scalar-solver] [--no-recycle] [--point-friction] [--impact-propagation]\n"
+		   "                   [--workers N]\n"
 		   "                   [--sheet FILE.png] [--frames N] [--contacts]\n"
 		   "                   [--aabbs] [--tree]\n"
 		   "  tumble export SCENE\n"
@@ -248,6 +249,10 @@ static bool ParseFlagOption(Options* options, const char* flag)
 	if (strcmp(flag, "--no-recycle") == 0)
 	{
 		return (options->overrides.noRecycle = true);
+	}
+	if (strcmp(flag, "--point-friction") == 0)
+	{
+		return (options->overrides.pointFriction = true);
 	}
 	if (strcmp(flag, "--impact-propagation") == 0)
 	{

@@ -467,6 +467,10 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 		{
 			def.enableManifoldRecycling = false;
 		}
+		if (overrides->pointFriction)
+		{
+			def.enableCentralFriction = false;
+		}
 		if (overrides->impactPropagation)
 		{
 			def.enableImpactPropagation = true;

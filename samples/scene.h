@@ -254,6 +254,7 @@ typedef struct SceneOverrides
 	float settledHertzRatio; ///< > 0 replaces tbWorldDef::settledHertzRatio
 	bool scalarSolver;		///< true: the scalar reference contact solver (tbWorldDef::enableWideSolver off)
 	bool noRecycle;			///< true: every manifold recomputed (tbWorldDef::enableManifoldRecycling off)
+	bool pointFriction;		///< true: a friction row per manifold point (tbWorldDef::enableCentralFriction off)
 	bool impactPropagation; ///< true: tbWorldDef::enableImpactPropagation (Newton's cradle)
 	struct TaskSystem* tasks; ///< non-null: the world runs on its workers (task_system.h)
 } SceneOverrides;

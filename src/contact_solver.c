@@ -77,6 +77,68 @@ static float tbInverseEffectiveMass(const tbContactConstraint* c, tbVec2 rA, tbV
 	return tbInverseMassAlong(c->invMassA, c->invIA, c->invMassB, c->invIB, rA, rB, u);
 }
 
+// Central friction (tbWorldDef::enableCentralFriction). The friction row of manifold point i is
+// J_i = [−t, −(rA_i × t), t, rB_i × t], where rA_i and rB_i reach the same world point p_i from the
+// two centres of mass. With t = rightPerp(n), r × t = −(r · n): two points' rows differ only in
+// their angular terms, by (p_1 − p_2) · n, which is 0 when both points lie on one face (a box on a
+// box, a box on the ground) and the difference of their depths otherwise. A force along the face
+// then has the same torque wherever on the face it acts, and one row at the points' centre of
+// pressure, r = w·r_1 + (1 − w)·r_2 with w point 1's share of the normal impulse, bounded by
+// μ·(λn_1 + λn_2), applies the friction the two rows apply (Coulomb's law summed over the face: a
+// sliding face's friction acts at its centre of pressure) with half the friction rows per pass.
+// The shares are the warm start's normal impulses (the last step's), a half each for a new contact
+// (tbPressureWeight); a tilted box resting on one corner then has its friction at that corner, as
+// per-point rows would. The row's mass and impulse sit in point 0's tangentMass and tangentImpulse;
+// the store splits the impulse back over the points by their normal impulses (tbSplitFriction).
+typedef struct tbFrictionRow
+{
+	tbVec2 anchorA, anchorB;
+	float mass;	   ///< kg, 1/K along the tangent at the anchors
+	float impulse; ///< N·s, the warm start's: the points' friction impulses summed
+} tbFrictionRow;
+
+/// The central friction row of a manifold with pointCount points at anchors rA[j], rB[j] carrying
+/// the (warm start) impulses normalImpulse[j] and tangentImpulse[j]; one point's row is its own.
+static tbFrictionRow tbCentralFrictionRow(float invMassA, float invIA, float invMassB, float invIB, tbVec2 tangent,
+										  int pointCount, const tbVec2 rA[2], const tbVec2 rB[2],
+										  const float normalImpulse[2], const float tangentImpulse[2])
+{
+	tbFrictionRow row;
+	row.anchorA = rA[0];
+	row.anchorB = rB[0];
+	row.impulse = tangentImpulse[0];
+	if (pointCount == 2)
+	{
+		float w0 = tbPressureWeight(normalImpulse[0], normalImpulse[1]);
+		float w1 = 1.0f - w0;
+		row.anchorA = tbAdd(tbMulSV(w0, rA[0]), tbMulSV(w1, rA[1]));
+		row.anchorB = tbAdd(tbMulSV(w0, rB[0]), tbMulSV(w1, rB[1]));
+		row.impulse = tangentImpulse[0] + tangentImpulse[1];
+	}
+	float k = tbInverseMassAlong(invMassA, invIA, invMassB, invIB, row.anchorA, row.anchorB, tangent);
+	row.mass = k > 0.0f ? 1.0f / k : 0.0f;
+	return row;
+}
+
+/// A prepared scalar constraint's friction as one central row (c's points hold the warm start).
+static void tbSetCentralFriction(tbContactConstraint* c, tbVec2 tangent)
+{
+	const tbContactConstraintPoint* p0 = c->points;
+	const tbContactConstraintPoint* p1 = c->points + (c->pointCount > 1 ? 1 : 0); // read only with two points
+	tbVec2 rA[2] = {p0->anchorA, p1->anchorA};
+	tbVec2 rB[2] = {p0->anchorB, p1->anchorB};
+	float normalImpulse[2] = {p0->normalImpulse, p1->normalImpulse};
+	float tangentImpulse[2] = {p0->tangentImpulse, p1->tangentImpulse};
+	tbFrictionRow row = tbCentralFrictionRow(c->invMassA, c->invIA, c->invMassB, c->invIB, tangent, c->pointCount, rA,
+											 rB, normalImpulse, tangentImpulse);
+	c->frictionAnchorA = row.anchorA;
+	c->frictionAnchorB = row.anchorB;
+	c->points[0].tangentMass = row.mass;
+	c->points[0].tangentImpulse = row.impulse;
+	c->points[1].tangentMass = 0.0f;
+	c->points[1].tangentImpulse = 0.0f;
+}
+
 // Velocity of body `index` after the first velocity integration of the step (the stand-in: 0).
 static void tbIntegratedVelocity(const tbStepContext* context, int index, tbVec2* v, float* w)
 {
@@ -299,6 +361,12 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 		tbVec2 vB = tbAdd(sB->linearVelocity, tbCrossSV(sB->angularVelocity, rB));
 		cp->relativeVelocity = tbDot(tbSub(vB, vA), normal);
 	}
+	c->frictionAnchorA = c->points[0].anchorA;
+	c->frictionAnchorB = c->points[0].anchorB;
+	if (context->centralFriction && c->pointCount > 0)
+	{
+		tbSetCentralFriction(c, tangent);
+	}
 
 	if (context->settleSteps > 0.0f)
 	{
@@ -421,6 +489,8 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 
 	bool deep = false;
 	float relativeVelocity[2] = {0.0f, 0.0f};
+	tbVec2 anchorA[2] = {tb_vec2_zero, tb_vec2_zero}, anchorB[2] = {tb_vec2_zero, tb_vec2_zero};
+	float normalImpulse[2] = {0.0f, 0.0f}, tangentImpulse[2] = {0.0f, 0.0f};
 	for (int j = 0; j < 2; ++j)
 	{
 		tbWideContactPoint* wp = block->points + j;
@@ -458,6 +528,23 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 		tbVec2 vB = tbAdd(sB->linearVelocity, tbCrossSV(sB->angularVelocity, rB));
 		relativeVelocity[j] = tbDot(tbSub(vB, vA), normal);
 		deep = deep || tbStartSeparation(baseSeparation, rA, rB, normal) < -context->deepOverlap;
+		anchorA[j] = rA;
+		anchorB[j] = rB;
+		normalImpulse[j] = warmScale * mp->normalImpulse;
+		tangentImpulse[j] = warmScale * mp->tangentImpulse;
+	}
+	if (context->centralFriction && pointCount > 0)
+	{
+		tbFrictionRow row = tbCentralFrictionRow(invMassA, invIA, invMassB, invIB, tangent, pointCount, anchorA, anchorB,
+												 normalImpulse, tangentImpulse);
+		tbSetLaneW(&block->points[0].tangentMass, lane, row.mass);
+		tbSetLaneW(&block->impulses[0].tangentImpulse, lane, row.impulse);
+		tbSetLaneW(&block->points[1].tangentMass, lane, 0.0f);
+		tbSetLaneW(&block->impulses[1].tangentImpulse, lane, 0.0f);
+		tbSetLaneW(&block->frictionAnchorAX, lane, row.anchorA.x);
+		tbSetLaneW(&block->frictionAnchorAY, lane, row.anchorA.y);
+		tbSetLaneW(&block->frictionAnchorBX, lane, row.anchorB.x);
+		tbSetLaneW(&block->frictionAnchorBY, lane, row.anchorB.y);
 	}
 
 	if (context->settleSteps > 0.0f && tbMovesBoth(invMassA, invIA, invMassB, invIB) && deep == false)
@@ -501,6 +588,8 @@ typedef struct tbWidePointOutput
 	float baseSeparation[TB_SIMD_WIDTH], normalImpulse[TB_SIMD_WIDTH], tangentImpulse[TB_SIMD_WIDTH];
 	float normalMass[TB_SIMD_WIDTH], tangentMass[TB_SIMD_WIDTH], normalVelocity[TB_SIMD_WIDTH];
 	int deep; ///< bit per lane: the point overlaps by more than the deep-overlap depth
+	/// central friction's anchors (A.x, A.y, B.x, B.y), in the second point's output only
+	float centralAnchor[4][TB_SIMD_WIDTH];
 } tbWidePointOutput;
 
 static inline void tbStoreLanesW(float* out, tbFloatW a)
@@ -563,6 +652,38 @@ static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput
 	tbStoreLanesW(out->normalMass, tbKeepGreaterW(present, zero, normalMass));
 	tbStoreLanesW(out->tangentMass, tbKeepGreaterW(present, zero, tangentMass));
 	tbStoreLanesW(out->normalVelocity, normalVelocity);
+}
+
+/// Central friction for every lane of a batch (tbCentralFrictionRow, lane by lane, the same
+/// expressions): point 0's tangent mass and impulse become the central row's, point 1's zeros, and
+/// the row's anchors go to centralAnchor (A.x, A.y, B.x, B.y). `numbers[j]`: point j's separation,
+/// normal and tangent impulses as read from the manifolds.
+static void tbPrepareCentralFrictionW(const tbStepContext* context, tbFloatW mass[2][4], tbFloatW anchors[2][4],
+									  tbFloatW numbers[2][4], tbFloatW pointCount, tbFloatW nX, tbFloatW nY,
+									  tbWidePointOutput points[2])
+{
+	tbFloatW zero = tbZeroW(), one = tbSplatW(1.0f);
+	tbFloatW warmScale = tbSplatW(context->enableWarmStarting ? 1.0f : 0.0f);
+	tbFloatW n0 = tbMulW(warmScale, numbers[0][1]), n1 = tbMulW(warmScale, numbers[1][1]);
+	tbFloatW t0 = tbMulW(warmScale, numbers[0][2]), t1 = tbMulW(warmScale, numbers[1][2]);
+	tbFloatW total = tbAddW(n0, n1);
+	tbFloatW w0 = tbSelectGreaterW(total, zero, tbDivW(n0, total), tbSplatW(0.5f)); // tbPressureWeight
+	tbFloatW w1 = tbSubW(one, w0);
+	tbFloatW two = tbSubW(pointCount, one); // > 0 where the contact has two points
+	tbFloatW row[4];
+	for (int k = 0; k < 4; ++k)
+	{
+		tbFloatW blend = tbAddW(tbMulW(w0, anchors[0][k]), tbMulW(w1, anchors[1][k]));
+		row[k] = tbSelectGreaterW(two, zero, blend, anchors[0][k]);
+		tbStoreLanesW(points[1].centralAnchor[k], row[k]);
+	}
+	tbFloatW impulse = tbSelectGreaterW(two, zero, tbAddW(t0, t1), t0);
+	tbFloatW tX = nY, tY = tbMulW(tbSplatW(-1.0f), nX);
+	tbFloatW k = tbInverseMassAlongW(mass, row[0], row[1], row[2], row[3], tX, tY);
+	tbStoreLanesW(points[0].tangentMass, tbKeepGreaterW(k, zero, tbDivW(one, k)));
+	tbStoreLanesW(points[0].tangentImpulse, impulse);
+	tbStoreLanesW(points[1].tangentMass, zero);
+	tbStoreLanesW(points[1].tangentImpulse, zero);
 }
 
 /// tbPrepareWideLane for a full batch of contacts, one per lane of wide floats: the same expressions
@@ -640,6 +761,10 @@ int tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 		tbFloatW present = tbSubW(pointCount, tbSplatW((float)j)); // > 0 where the contact has point j
 		tbPreparePointW(context, &in, present, mass, velocity, head[0], head[1], an, points + j);
 	}
+	if (context->centralFriction)
+	{
+		tbPrepareCentralFrictionW(context, mass, anchors, numbers, pointCount, head[0], head[1], points);
+	}
 	float invMass[2][2][TB_SIMD_WIDTH], normal[2][TB_SIMD_WIDTH];
 	tbStoreLanesW(invMass[0][0], mass[0][0]);
 	tbStoreLanesW(invMass[0][1], mass[0][1]);
@@ -686,6 +811,15 @@ int tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 				contact->manifold.points[j].normalVelocity = p->normalVelocity[l];
 				rebound |= p->normalVelocity[l] <= -threshold ? 1 << l : 0;
 			}
+		}
+
+		if (context->centralFriction)
+		{
+			float(*anchor)[TB_SIMD_WIDTH] = points[1].centralAnchor;
+			tbSetLaneW(&block->frictionAnchorAX, lane, anchor[0][l]);
+			tbSetLaneW(&block->frictionAnchorAY, lane, anchor[1][l]);
+			tbSetLaneW(&block->frictionAnchorBX, lane, anchor[2][l]);
+			tbSetLaneW(&block->frictionAnchorBY, lane, anchor[3][l]);
 		}
 
 		bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
@@ -883,17 +1017,30 @@ static inline void tbApplyImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbCo
 	sB->angularVelocity += c->invIB * tbCross(rB, P);
 }
 
-static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstraint* c)
+static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstraint* c, bool centralFriction)
 {
 	tbSolverBody* sA = bodies + c->indexA;
 	tbSolverBody* sB = bodies + c->indexB;
 	tbVec2 normal = c->normal;
 	tbVec2 tangent = tbRightPerp(normal);
-	for (int j = 0; j < c->pointCount; ++j)
+	if (centralFriction)
 	{
-		const tbContactConstraintPoint* cp = c->points + j;
-		tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
-		tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
+		// normal impulses at the points, the friction impulse at the centre of pressure
+		for (int j = 0; j < c->pointCount; ++j)
+		{
+			const tbContactConstraintPoint* cp = c->points + j;
+			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(cp->normalImpulse, normal));
+		}
+		tbApplyImpulse(sA, sB, c, c->frictionAnchorA, c->frictionAnchorB, tbMulSV(c->points[0].tangentImpulse, tangent));
+	}
+	else
+	{
+		for (int j = 0; j < c->pointCount; ++j)
+		{
+			const tbContactConstraintPoint* cp = c->points + j;
+			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
+			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
+		}
 	}
 	sA->angularVelocity -= c->invIA * c->rollingImpulse;
 	sB->angularVelocity += c->invIB * c->rollingImpulse;
@@ -918,7 +1065,7 @@ void tbWarmStartOverflow(tbStepContext* context)
 		tbContactConstraint* c = context->constraints + context->overflowConstraints[i];
 		if (context->enableWarmStarting)
 		{
-			tbWarmStartConstraint(context->bodies, c);
+			tbWarmStartConstraint(context->bodies, c, context->centralFriction);
 		}
 		else
 		{
@@ -940,7 +1087,7 @@ void tbWarmStartContacts(tbStepContext* context)
 		tbContactConstraint* c = context->constraints + i;
 		if (context->enableWarmStarting)
 		{
-			tbWarmStartConstraint(context->bodies, c);
+			tbWarmStartConstraint(context->bodies, c, context->centralFriction);
 		}
 		else
 		{
@@ -1045,17 +1192,26 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 		wB += iB * impulse;
 	}
 
-	// Friction drives the relative tangential speed to the surfaces' tangent speed (0 but on belts).
+	// Friction drives the relative tangential speed to the surfaces' tangent speed (0 but on belts):
+	// a row per point, or one row at the centre of pressure bounded by the points' normal impulses
+	// together (central friction, its mass and impulse in point 0).
 	float friction = c->friction;
-	for (int j = 0; j < pointCount; ++j)
+	bool central = context->centralFriction;
+	int rowCount = central ? 1 : pointCount;
+	for (int j = 0; j < rowCount; ++j)
 	{
 		tbContactConstraintPoint* cp = c->points + j;
-		tbVec2 rA = cp->anchorA;
-		tbVec2 rB = cp->anchorB;
+		tbVec2 rA = central ? c->frictionAnchorA : cp->anchorA;
+		tbVec2 rB = central ? c->frictionAnchorB : cp->anchorB;
+		float normalImpulse = cp->normalImpulse;
+		if (central && pointCount > 1)
+		{
+			normalImpulse = c->points[0].normalImpulse + c->points[1].normalImpulse;
+		}
 		tbVec2 dv = tbSub(tbAdd(vB, tbCrossSV(wB, rB)), tbAdd(vA, tbCrossSV(wA, rA)));
 		float vt = tbDot(dv, tangent) - c->tangentSpeed;
 		float impulse = -cp->tangentMass * vt;
-		float maxFriction = friction * cp->normalImpulse;
+		float maxFriction = friction * normalImpulse;
 		float newImpulse = tbClampFloat(cp->tangentImpulse + impulse, -maxFriction, maxFriction);
 		impulse = newImpulse - cp->tangentImpulse;
 		cp->tangentImpulse = newImpulse;
@@ -1291,6 +1447,17 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 			mp->normalImpulse = cp->normalImpulse;
 			mp->tangentImpulse = cp->tangentImpulse;
 			mp->maxNormalImpulse = cp->maxNormalImpulse;
+		}
+		if (context->centralFriction && c->pointCount > 0)
+		{
+			float n1 = c->pointCount > 1 ? c->points[1].normalImpulse : 0.0f;
+			float t1 = 0.0f;
+			tbSplitFriction(c->points[0].tangentImpulse, c->pointCount, c->points[0].normalImpulse, n1,
+							&manifold->points[0].tangentImpulse, &t1);
+			if (c->pointCount > 1)
+			{
+				manifold->points[1].tangentImpulse = t1;
+			}
 		}
 		manifold->rollingImpulse = c->rollingImpulse;
 	}

@@ -13,6 +13,30 @@ static inline float tbReboundSpeed(float restitution, float approach, float maxL
 	return tbMinFloat(-restitution * approach, tbMaxFloat(-approach, 2.0f * maxLinearSpeed));
 }
 
+/// Central friction (tbWorldDef::enableCentralFriction, contact_solver.c): the share of point 0 in
+/// the centre of pressure of a two-point manifold whose points carry normal impulses n0 and n1; a
+/// half when neither carries any. Point 1's share is 1 − this.
+static inline float tbPressureWeight(float n0, float n1)
+{
+	float total = n0 + n1;
+	return total > 0.0f ? n0 / total : 0.5f;
+}
+
+/// The central friction impulse λt back over the manifold's points for the next step's warm start,
+/// in proportion to their normal impulses: the next step's row takes the sum, t0 + t1 = λt, and a
+/// point that leaves the manifold takes its share with it, as its own friction would have.
+static inline void tbSplitFriction(float tangentImpulse, int pointCount, float n0, float n1, float* t0, float* t1)
+{
+	if (pointCount < 2)
+	{
+		*t0 = tangentImpulse;
+		*t1 = 0.0f;
+		return;
+	}
+	*t0 = tbPressureWeight(n0, n1) * tangentImpulse;
+	*t1 = tangentImpulse - *t0;
+}
+
 // contact_solver.c
 /// The wide solver's keys (tbContactKey), before colouring: read in contact-id order.
 void tbKeyContacts(tbStepContext* context);
@@ -80,6 +104,10 @@ static inline void tbPackWideLane(tbWideContactConstraint* block, int lane, cons
 		tbSetLaneW(&wp->normalMass, lane, cp->normalMass);
 		tbSetLaneW(&wp->tangentMass, lane, cp->tangentMass);
 	}
+	tbSetLaneW(&block->frictionAnchorAX, lane, c->frictionAnchorA.x);
+	tbSetLaneW(&block->frictionAnchorAY, lane, c->frictionAnchorA.y);
+	tbSetLaneW(&block->frictionAnchorBX, lane, c->frictionAnchorB.x);
+	tbSetLaneW(&block->frictionAnchorBY, lane, c->frictionAnchorB.y);
 }
 
 void tbInitWideConstraint(tbWideContactConstraint* block, int staticIndex);
@@ -93,7 +121,8 @@ void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, in
 /// The wide solver's overflow (constraints that found no colour), one at a time after the colours.
 void tbWarmStartOverflow(tbStepContext* context);
 void tbSolveOverflow(tbStepContext* context, tbBiasPolicy policy);
-/// Copy the impulses of the lane at `location` into manifold points.
+/// Copy the impulses of the lane at `location` into manifold points (central friction's impulse
+/// split over them, tbSplitFriction).
 /// (Inline: the store runs it for every contact.) A lane's location is block·TB_SIMD_WIDTH + lane
 /// (tbStepContext::wideLocation).
 static inline void tbLoadWideImpulses(const tbStepContext* context, int location, int pointCount,
@@ -107,6 +136,16 @@ static inline void tbLoadWideImpulses(const tbStepContext* context, int location
 		points[j].normalImpulse = tbGetLaneW(&ip->normalImpulse, lane);
 		points[j].tangentImpulse = tbGetLaneW(&ip->tangentImpulse, lane);
 		points[j].maxNormalImpulse = tbGetLaneW(&ip->maxNormalImpulse, lane);
+	}
+	if (context->centralFriction && pointCount > 0)
+	{
+		float n1 = pointCount > 1 ? points[1].normalImpulse : 0.0f;
+		float t1 = 0.0f;
+		tbSplitFriction(points[0].tangentImpulse, pointCount, points[0].normalImpulse, n1, &points[0].tangentImpulse, &t1);
+		if (pointCount > 1)
+		{
+			points[1].tangentImpulse = t1;
+		}
 	}
 }
 /// Copy a constraint's impulses from its lane to the scalar constraint, which holds them from then on.

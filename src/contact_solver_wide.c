@@ -171,7 +171,10 @@ static void tbZeroWideImpulses(tbStepContext* context)
 	}
 }
 
-static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* c, tbSolverBody* bodies, bool shared)
+// `central`: the friction impulse is one, at the block's friction anchors (central friction,
+// contact_solver.c), applied after the points' normal impulses as the scalar warm start does.
+static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* c, tbSolverBody* bodies, bool shared,
+												 bool central)
 {
 	tbWideBody a, b;
 	tbGatherVelocities(bodies, c->indexA, &a);
@@ -183,30 +186,57 @@ static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* 
 	{
 		const tbWideContactPoint* cp = c->points + j;
 		const tbWideImpulses* ip = c->impulses + j;
-		tbFloatW px = tbMulAddPairW(ip->normalImpulse, c->normalX, ip->tangentImpulse, tx);
-		tbFloatW py = tbMulAddPairW(ip->normalImpulse, c->normalY, ip->tangentImpulse, ty);
+		tbFloatW px, py;
+		if (central)
+		{
+			px = tbMulW(ip->normalImpulse, c->normalX);
+			py = tbMulW(ip->normalImpulse, c->normalY);
+		}
+		else
+		{
+			px = tbMulAddPairW(ip->normalImpulse, c->normalX, ip->tangentImpulse, tx);
+			py = tbMulAddPairW(ip->normalImpulse, c->normalY, ip->tangentImpulse, ty);
+		}
 		tbApplyImpulseW(&a, &b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, px, py);
+	}
+	if (central)
+	{
+		tbFloatW impulse = c->impulses[0].tangentImpulse;
+		tbApplyImpulseW(&a, &b, c, c->frictionAnchorAX, c->frictionAnchorAY, c->frictionAnchorBX, c->frictionAnchorBY,
+						tbMulW(impulse, tx), tbMulW(impulse, ty));
 	}
 	tbScatterPair(bodies, c, &a, &b, shared);
 }
 
-// One loop per scatter kind, so that neither tests `shared` block by block.
+#define TB_WARM_START_WIDE_LOOP(SHARED, CENTRAL)                                                                       \
+	for (int i = start; i < end; ++i)                                                                                  \
+	{                                                                                                                  \
+		tbWarmStartWideBlock(context->wideConstraints + i, bodies, SHARED, CENTRAL);                                   \
+	}
+
+// One loop per scatter kind and friction kind, so that no block tests them.
 void tbWarmStartWideRange(tbStepContext* context, int start, int end, bool shared)
 {
 	tbSolverBody* bodies = context->bodies;
-	if (shared)
+	if (context->centralFriction)
 	{
-		for (int i = start; i < end; ++i)
+		if (shared)
 		{
-			tbWarmStartWideBlock(context->wideConstraints + i, bodies, true);
+			TB_WARM_START_WIDE_LOOP(true, true)
+			return;
 		}
+		TB_WARM_START_WIDE_LOOP(false, true)
 		return;
 	}
-	for (int i = start; i < end; ++i)
+	if (shared)
 	{
-		tbWarmStartWideBlock(context->wideConstraints + i, bodies, false);
+		TB_WARM_START_WIDE_LOOP(true, false)
+		return;
 	}
+	TB_WARM_START_WIDE_LOOP(false, false)
 }
+
+#undef TB_WARM_START_WIDE_LOOP
 
 void tbWarmStartContactsWide(tbStepContext* context)
 {
@@ -302,24 +332,45 @@ static TB_FORCE_INLINE void tbSolveNormalW(tbWideContactPoint* cp, tbWideImpulse
 					tbMulW(impulse, c->normalY));
 }
 
-static TB_FORCE_INLINE void tbSolveFrictionW(const tbWideContactPoint* cp, tbWideImpulses* ip, const tbWideContactConstraint* c, tbWideBody* a,
-									tbWideBody* b, tbFloatW tx, tbFloatW ty)
+/// A friction row at anchors (rAx, rAy), (rBx, rBy) with mass `tangentMass`, its impulse in
+/// ip->tangentImpulse, bounded by μ·normalImpulse.
+static TB_FORCE_INLINE void tbSolveFrictionRowW(tbFloatW rAx, tbFloatW rAy, tbFloatW rBx, tbFloatW rBy, tbFloatW tangentMass,
+									   tbFloatW normalImpulse, tbWideImpulses* ip, const tbWideContactConstraint* c,
+									   tbWideBody* a, tbWideBody* b, tbFloatW tx, tbFloatW ty)
 {
-	tbFloatW vt = tbRelativeVelocityW(cp, a, b, tx, ty);
-	tbFloatW impulse = tbSubW(tbZeroW(), tbMulW(cp->tangentMass, vt));
-	tbFloatW maxFriction = tbMulW(c->friction, ip->normalImpulse);
+	tbFloatW dvx = tbSubW(tbSubW(b->vx, tbMulW(b->w, rBy)), tbSubW(a->vx, tbMulW(a->w, rAy)));
+	tbFloatW dvy = tbSubW(tbAddW(b->vy, tbMulW(b->w, rBx)), tbAddW(a->vy, tbMulW(a->w, rAx)));
+	tbFloatW vt = tbMulAddPairW(dvx, tx, dvy, ty);
+	tbFloatW impulse = tbSubW(tbZeroW(), tbMulW(tangentMass, vt));
+	tbFloatW maxFriction = tbMulW(c->friction, normalImpulse);
 	tbFloatW minFriction = tbSubW(tbZeroW(), maxFriction);
 	// clamp(λt + Δλ, −μλn, μλn) with the scalar clamp's rule for NaN bounds (μ = ∞ and λn = 0).
 	tbFloatW newImpulse = tbClampW(tbAddW(ip->tangentImpulse, impulse), minFriction, maxFriction);
 	impulse = tbSubW(newImpulse, ip->tangentImpulse);
 	ip->tangentImpulse = newImpulse;
-	tbApplyImpulseW(a, b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, tbMulW(impulse, tx),
-					tbMulW(impulse, ty));
+	tbApplyImpulseW(a, b, c, rAx, rAy, rBx, rBy, tbMulW(impulse, tx), tbMulW(impulse, ty));
+}
+
+static TB_FORCE_INLINE void tbSolveFrictionW(const tbWideContactPoint* cp, tbWideImpulses* ip, const tbWideContactConstraint* c, tbWideBody* a,
+									tbWideBody* b, tbFloatW tx, tbFloatW ty)
+{
+	tbSolveFrictionRowW(cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, cp->tangentMass, ip->normalImpulse, ip, c,
+						a, b, tx, ty);
+}
+
+/// Central friction: one row at the block's friction anchors, bounded by both points' normal
+/// impulses (a lane with one point has 0 in the second), its mass and impulse in point 0's.
+static TB_FORCE_INLINE void tbSolveCentralFrictionW(tbWideContactConstraint* c, tbWideBody* a, tbWideBody* b, tbFloatW tx,
+										   tbFloatW ty)
+{
+	tbFloatW normalImpulse = tbAddW(c->impulses[0].normalImpulse, c->impulses[1].normalImpulse);
+	tbSolveFrictionRowW(c->frictionAnchorAX, c->frictionAnchorAY, c->frictionAnchorBX, c->frictionAnchorBY,
+						c->points[0].tangentMass, normalImpulse, c->impulses + 0, c, a, b, tx, ty);
 }
 
 // Normal impulses first, then friction against the fresh normal impulses (as the scalar solver).
 static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bodies, const tbWidePass* pass,
-									tbBiasPolicy policy, bool shared)
+									tbBiasPolicy policy, bool shared, bool central)
 {
 	tbWideBody a = {0}, b = {0};
 	tbGatherVelocities(bodies, c->indexA, &a);
@@ -334,26 +385,45 @@ static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbSolve
 	tbSolveNormalW(c->points + 1, c->impulses + 1, c, &a, &b, pass, policy);
 	tbFloatW tx = c->normalY;
 	tbFloatW ty = tbSubW(tbZeroW(), c->normalX);
-	tbSolveFrictionW(c->points + 0, c->impulses + 0, c, &a, &b, tx, ty);
-	tbSolveFrictionW(c->points + 1, c->impulses + 1, c, &a, &b, tx, ty);
+	if (central)
+	{
+		tbSolveCentralFrictionW(c, &a, &b, tx, ty);
+	}
+	else
+	{
+		tbSolveFrictionW(c->points + 0, c->impulses + 0, c, &a, &b, tx, ty);
+		tbSolveFrictionW(c->points + 1, c->impulses + 1, c, &a, &b, tx, ty);
+	}
 
 	tbScatterPair(bodies, c, &a, &b, shared);
 }
 
-#define TB_SOLVE_WIDE_LOOP(POLICY)                                                                                     \
-	if (shared)                                                                                                        \
+#define TB_SOLVE_WIDE_BLOCKS(POLICY, SHARED, CENTRAL)                                                                  \
+	for (int i = start; i < end; ++i)                                                                                  \
 	{                                                                                                                  \
-		for (int i = start; i < end; ++i)                                                                              \
+		tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY, SHARED, CENTRAL);               \
+	}
+
+// A loop per policy, scatter kind and friction kind: none of them is tested block by block.
+#define TB_SOLVE_WIDE_LOOP(POLICY)                                                                                     \
+	if (central)                                                                                                       \
+	{                                                                                                                  \
+		if (shared)                                                                                                    \
 		{                                                                                                              \
-			tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY, true);                       \
+			TB_SOLVE_WIDE_BLOCKS(POLICY, true, true)                                                                   \
 		}                                                                                                              \
+		else                                                                                                           \
+		{                                                                                                              \
+			TB_SOLVE_WIDE_BLOCKS(POLICY, false, true)                                                                  \
+		}                                                                                                              \
+	}                                                                                                                  \
+	else if (shared)                                                                                                   \
+	{                                                                                                                  \
+		TB_SOLVE_WIDE_BLOCKS(POLICY, true, false)                                                                      \
 	}                                                                                                                  \
 	else                                                                                                               \
 	{                                                                                                                  \
-		for (int i = start; i < end; ++i)                                                                              \
-		{                                                                                                              \
-			tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY, false);                      \
-		}                                                                                                              \
+		TB_SOLVE_WIDE_BLOCKS(POLICY, false, false)                                                                     \
 	}
 
 void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, int end, bool shared)
@@ -363,6 +433,7 @@ void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, in
 	pass.minPushBias = tbSplatW(-context->maxContactPushSpeed);
 	pass.baumgarteRate = tbSplatW(TB_BAUMGARTE * context->inv_h);
 	pass.slop = tbSplatW(TB_LINEAR_SLOP);
+	bool central = context->centralFriction;
 	switch (policy)
 	{
 		case tb_biasSoft:
@@ -389,3 +460,4 @@ void tbSolveContactsWide(tbStepContext* context, tbBiasPolicy policy)
 }
 
 #undef TB_SOLVE_WIDE_LOOP
+#undef TB_SOLVE_WIDE_BLOCKS

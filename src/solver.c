@@ -227,6 +227,7 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	context.maxLinearSpeed = world->def.maximumLinearSpeed;
 	context.maxAngularSpeed = TB_MAX_ROTATION / timeStep;
 	context.enableWarmStarting = world->def.enableWarmStarting;
+	context.centralFriction = world->def.enableCentralFriction && world->def.solver != tb_solverNGS;
 	context.lapTicks = tbGetTicks();
 	tbProfile* profile = &world->profile; // the solve stage's parts (tbProfileLap)
 

@@ -98,7 +98,7 @@ typedef struct tbContactConstraintPoint
 
 _Static_assert(sizeof(tbContactConstraintPoint) == 44, "tbContactConstraintPoint is meant to be 44 bytes");
 
-/// One contact as the solver sees it: 160 bytes.
+/// One contact as the solver sees it: 176 bytes.
 typedef struct tbContactConstraint
 {
 	int indexA;				///< solver body index of A (bodyCount for the static stand-in)
@@ -117,9 +117,13 @@ typedef struct tbContactConstraint
 	float rollingResistance; ///< m: the resisting torque's bound per unit normal impulse
 	float rollingMass;		 ///< kg·m², 1/(IA⁻¹ + IB⁻¹)
 	float rollingImpulse;	 ///< N·m·s, accumulated over the sub-step
+	/// Central friction (tbStepContext::centralFriction): the one friction row's anchors, at the
+	/// manifold's centre of pressure; its mass and impulse are points[0]'s tangentMass and
+	/// tangentImpulse, and points[1]'s stay 0 (contact_solver.c).
+	tbVec2 frictionAnchorA, frictionAnchorB;
 } tbContactConstraint;
 
-_Static_assert(sizeof(tbContactConstraint) == 160, "tbContactConstraint is meant to be 160 bytes");
+_Static_assert(sizeof(tbContactConstraint) == 176, "tbContactConstraint is meant to be 176 bytes");
 
 /// What colouring needs of a contact, known before the contact is prepared (contact_solver.c): the
 /// wide solver colours first and then prepares each contact straight into its lane.
@@ -168,8 +172,8 @@ typedef struct tbWideContactPoint
 	tbFloatW relaxBias;
 } tbWideContactPoint;
 
-/// TB_SIMD_WIDTH contacts of one graph colour, solved together (contact_solver_wide.c): 544 bytes
-/// with four lanes (SSE2), 1,088 with eight (AVX2); the array starts on a 64-byte line
+/// TB_SIMD_WIDTH contacts of one graph colour, solved together (contact_solver_wide.c): 608 bytes
+/// with four lanes (SSE2), 1,216 with eight (AVX2); the array starts on a 64-byte line
 /// (constraint_graph.c). Padding lanes have both bodies at the static stand-in and every number 0.
 /// The impulses of both points come first, in the block's first 96 bytes (four lanes): the store
 /// after the solve, which reads only them, lane by lane in contact-id order and so from blocks long
@@ -185,10 +189,14 @@ typedef struct tbWideContactConstraint
 	tbFloatW invMassA, invIA, invMassB, invIB;
 	tbFloatW biasRate, massScale, impulseScale; ///< tbSoftness, lane by lane
 	tbWideContactPoint points[2];
+	/// Central friction: the friction row's anchors (tbContactConstraint::frictionAnchorA/B); its
+	/// mass is points[0].tangentMass, its impulse impulses[0].tangentImpulse (impulses[1]'s stays 0).
+	tbFloatW frictionAnchorAX, frictionAnchorAY;
+	tbFloatW frictionAnchorBX, frictionAnchorBY;
 } tbWideContactConstraint;
 
-_Static_assert(sizeof(tbWideContactConstraint) == 136 * TB_SIMD_WIDTH,
-			   "tbWideContactConstraint is meant to be 136 bytes a lane (544 with four lanes)");
+_Static_assert(sizeof(tbWideContactConstraint) == 152 * TB_SIMD_WIDTH,
+			   "tbWideContactConstraint is meant to be 152 bytes a lane (608 with four lanes)");
 
 /// Everything the pieces of one step share. Lives on the stack of tbSolveStage.
 typedef struct tbStepContext
@@ -257,6 +265,7 @@ typedef struct tbStepContext
 	float maxLinearSpeed;		///< m/s
 	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step
 	bool enableWarmStarting;
+	bool centralFriction; ///< one friction row per contact (tbWorldDef::enableCentralFriction; not NGS)
 	uint64_t lapTicks; ///< when the solve stage's current part began (tbProfileLap)
 } tbStepContext;
 

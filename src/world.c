@@ -50,6 +50,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.enableJointTrees = true;
 	def.enableWarmStarting = true;
 	def.enableManifoldRecycling = true;
+	def.enableCentralFriction = true;
 	def.workerCount = 1;
 	def.internalValue = TB_WORLD_DEF_MAGIC;
 	return def;

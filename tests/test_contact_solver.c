@@ -123,6 +123,54 @@ Test(contact_solver, friction_is_clamped_to_the_cone)
 	cr_expect(fabsf(fabsf(m.contact.manifold.points[0].tangentImpulse) - 0.1f) < 1e-6f);
 }
 
+// A unit box (1 m × 1 m, 1 kg, I = 1/6 kg·m²) sliding at 5 m/s on the ground with a two-point
+// manifold at its bottom corners, pressed with 1 N·s (it arrives at 1 m/s), μ = 0.1, one Baumgarte
+// sub-step of 8 iterations. Closed form for the converged step: both points end at vn = 0, so
+// λn₁ + λn₂ = 1 (the vertical momentum) and ω = 0; friction at its bound, λt = −μ·Σλn = −0.1,
+// leaves vx = 4.9; its torque about the centre, −0.5·0.1, is balanced by the normal impulses,
+// 0.5·(λn₊ − λn₋) = 0.05, so λn₊ = 0.55 at the leading corner and 0.45 at the trailing one, and
+// each point's stored friction is −μ·λn (per point each row sits at its own bound; central
+// friction splits its −0.1 by the normal impulses, tbSplitFriction). Both friction kinds must give
+// these numbers. Tolerance 1e-3: eight Gauss–Seidel iterations leave the torque balance
+// converged to about that.
+Test(contact_solver, central_friction_matches_point_friction_on_a_face)
+{
+	cr_expect(tbDefaultWorldDef().enableCentralFriction, "central friction is the default");
+	for (int central = 0; central < 2; ++central)
+	{
+		MiniWorld m;
+		InitMini(&m, tb_solverBaumgarte, tbMakeVec2(5.0f, -1.0f), 0.0f);
+		m.world.def.enableCentralFriction = central != 0;
+		m.bodies[1].invInertia = 6.0f;
+		m.contact.manifold.pointCount = 2;
+		for (int j = 0; j < 2; ++j)
+		{
+			float x = j == 0 ? 0.5f : -0.5f; // leading corner first
+			tbManifoldPoint* mp = m.contact.manifold.points + j;
+			mp->point = tbMakeVec2(x, 0.0f);
+			mp->anchorA = tbMakeVec2(x, 0.0f);
+			mp->anchorB = tbMakeVec2(x, -0.5f);
+			mp->separation = 0.0f;
+			mp->id = (uint16_t)j;
+		}
+		SolveStage(&m, 1.0f / 60.0f, 1);
+		const tbBody* box = m.bodies + 1;
+		const tbManifoldPoint* p = m.contact.manifold.points;
+		cr_expect(fabsf(box->linearVelocity.x - 4.9f) < 1e-3f, "central %d: vx %f", central, box->linearVelocity.x);
+		cr_expect(fabsf(box->linearVelocity.y) < 1e-3f, "central %d: vy %f", central, box->linearVelocity.y);
+		cr_expect(fabsf(box->angularVelocity) < 1e-3f, "central %d: ω %f", central, box->angularVelocity);
+		cr_expect(fabsf(p[0].normalImpulse - 0.55f) < 1e-3f && fabsf(p[1].normalImpulse - 0.45f) < 1e-3f,
+				  "central %d: normal impulses %f, %f", central, p[0].normalImpulse, p[1].normalImpulse);
+		for (int j = 0; j < 2; ++j)
+		{
+			cr_expect(fabsf(p[j].tangentImpulse + 0.1f * p[j].normalImpulse) < 1e-3f,
+					  "central %d, point %d: friction %f, normal %f", central, j, p[j].tangentImpulse, p[j].normalImpulse);
+		}
+		cr_expect(fabsf(p[0].tangentImpulse + p[1].tangentImpulse + 0.1f) < 1e-5f, "central %d: friction sum %f",
+				  central, p[0].tangentImpulse + p[1].tangentImpulse);
+	}
+}
+
 // Restitution: arriving at 4 m/s (above the 1 m/s threshold) with e = 0.5 leaves at 2 m/s.
 Test(contact_solver, restitution_reverses_normal_velocity)
 {
@@ -247,7 +295,7 @@ static void MakePrepContact(tbContact* contact, uint32_t seed)
 	}
 }
 
-Test(contact_solver, wide_preparation_matches_one_lane_at_a_time)
+static void CheckWidePreparation(bool centralFriction)
 {
 	tbWorld world;
 	memset(&world, 0, sizeof(world));
@@ -260,6 +308,7 @@ Test(contact_solver, wide_preparation_matches_one_lane_at_a_time)
 	context.h = context.timeStep / 4.0f;
 	context.inv_h = 1.0f / context.h;
 	context.enableWarmStarting = true;
+	context.centralFriction = centralFriction;
 	tbSoftPrepare(&context);
 	cr_assert(context.settleSteps > 0.0f, "the stiffness ramp is on by default");
 
@@ -335,4 +384,85 @@ Test(contact_solver, wide_preparation_matches_one_lane_at_a_time)
 	// tested both ways.
 	cr_expect(reboundCount > 0 && reboundCount < 40 * TB_SIMD_WIDTH, "%d of %d lanes may rebound", reboundCount,
 			  40 * TB_SIMD_WIDTH);
+}
+
+Test(contact_solver, wide_preparation_matches_one_lane_at_a_time)
+{
+	CheckWidePreparation(false); // a friction row per point
+	CheckWidePreparation(true);	 // central friction (the absent second point's NaN and ∞ masked out too)
+}
+
+// Central friction's row sits at the centre of pressure of the warm start's normal impulses
+// (tbPressureWeight): 3 and 1 N·s put it a quarter of the way from point 0 to point 1, none at
+// point 1 puts it on point 0 (a box resting on one corner), none at all at the middle. Its
+// impulse is the points' friction summed, and point 1 keeps no row of its own. Tolerance 1e-6 m:
+// a weighted mean of anchors within 1 m, in float.
+Test(contact_solver, central_friction_acts_at_the_centre_of_pressure)
+{
+	tbWorld world;
+	memset(&world, 0, sizeof(world));
+	world.def = tbDefaultWorldDef();
+	tbStepContext context;
+	memset(&context, 0, sizeof(context));
+	context.world = &world;
+	context.timeStep = 1.0f / 60.0f;
+	context.subStepCount = 4;
+	context.h = context.timeStep / 4.0f;
+	context.inv_h = 1.0f / context.h;
+	context.enableWarmStarting = true;
+	context.centralFriction = true;
+	tbSoftPrepare(&context);
+	tbSolverBody bodies[2];
+	tbSolverMass masses[2];
+	memset(bodies, 0, sizeof(bodies));
+	memset(masses, 0, sizeof(masses));
+	masses[0].invMass = 1.0f;
+	masses[0].invI = 6.0f;
+	context.bodies = bodies;
+	context.masses = masses;
+	context.bodyCount = 1; // body 0 dynamic, body 1 the static stand-in
+
+	static const float normal0[] = {3.0f, 2.0f, 0.0f};
+	static const float normal1[] = {1.0f, 0.0f, 0.0f};
+	static const float share0[] = {0.75f, 1.0f, 0.5f};
+	for (int c = 0; c < 3; ++c)
+	{
+		tbContact contact;
+		memset(&contact, 0, sizeof(contact));
+		contact.friction = 0.6f;
+		contact.manifold.normal = tbMakeVec2(0.0f, -1.0f); // from the box (A) down to the ground (B)
+		contact.manifold.pointCount = 2;
+		tbVec2 anchorA[2] = {tbMakeVec2(0.5f, -0.5f), tbMakeVec2(-0.5f, -0.5f)};
+		tbVec2 anchorB[2] = {tbMakeVec2(2.5f, 0.0f), tbMakeVec2(1.5f, 0.0f)};
+		float friction[2] = {0.25f, -0.125f};
+		for (int j = 0; j < 2; ++j)
+		{
+			contact.manifold.points[j].anchorA = anchorA[j];
+			contact.manifold.points[j].anchorB = anchorB[j];
+			contact.manifold.points[j].normalImpulse = j == 0 ? normal0[c] : normal1[c];
+			contact.manifold.points[j].tangentImpulse = friction[j];
+		}
+		tbContactKey key = {0, 1, (uint32_t)(tb_keyMovesA | tb_keyDynamicA)};
+		tbWideContactConstraint block;
+		tbInitWideConstraint(&block, 1);
+		tbPrepareWideLane(&context, &contact, key, &block, 2);
+		float w = share0[c];
+		tbVec2 expectA = tbAdd(tbMulSV(w, anchorA[0]), tbMulSV(1.0f - w, anchorA[1]));
+		tbVec2 expectB = tbAdd(tbMulSV(w, anchorB[0]), tbMulSV(1.0f - w, anchorB[1]));
+		cr_expect(fabsf(tbGetLaneW(&block.frictionAnchorAX, 2) - expectA.x) < 1e-6f &&
+					  fabsf(tbGetLaneW(&block.frictionAnchorAY, 2) - expectA.y) < 1e-6f,
+				  "case %d: anchor on A (%f, %f), expected (%f, %f)", c, tbGetLaneW(&block.frictionAnchorAX, 2),
+				  tbGetLaneW(&block.frictionAnchorAY, 2), expectA.x, expectA.y);
+		cr_expect(fabsf(tbGetLaneW(&block.frictionAnchorBX, 2) - expectB.x) < 1e-6f &&
+					  fabsf(tbGetLaneW(&block.frictionAnchorBY, 2) - expectB.y) < 1e-6f,
+				  "case %d: anchor on B", c);
+		cr_expect(tbGetLaneW(&block.impulses[0].tangentImpulse, 2) == 0.125f, "case %d: the friction impulses summed",
+				  c);
+		cr_expect(tbGetLaneW(&block.impulses[1].tangentImpulse, 2) == 0.0f &&
+					  tbGetLaneW(&block.points[1].tangentMass, 2) == 0.0f,
+				  "case %d: point 1 has no friction row", c);
+		// The row's mass: 1/(1/m + (r × t)²/I) with t = (−1, 0) and r on A at height −0.5: 1/(1 + 6·0.25).
+		cr_expect(fabsf(tbGetLaneW(&block.points[0].tangentMass, 2) - 0.4f) < 1e-6f, "case %d: mass %f", c,
+				  tbGetLaneW(&block.points[0].tangentMass, 2));
+	}
 }

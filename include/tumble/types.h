@@ -126,6 +126,10 @@ typedef struct tbWorldDef
 									///< time (SIMD); false: the scalar reference in hashed order. Default true
 	bool enableJointTrees;			///< the equality rows of joints solved exactly over each tree of joined
 									///< bodies (joint_tree.c); false: row by row (Gauss–Seidel). Default true
+	bool enableCentralFriction;		///< soft and Baumgarte: one friction row per contact, at the manifold's
+									///< centre of pressure (docs/methods.md); false: one row per manifold
+									///< point. Same forces on a face, half the friction rows. NGS always
+									///< solves per point. Default true
 	bool enableManifoldRecycling;	///< touching pairs that barely moved since their manifold was computed keep
 									///< its points and only update separations (contact.c). Default true
 	bool enableImpactPropagation;	///< bouncing contacts (restitution > 0) take their impacts one pair at a
