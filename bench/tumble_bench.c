@@ -705,7 +705,7 @@ static float SolverError(const SolverPoint* p, int measure)
 
 static int SolverChart(FILE* out)
 {
-	SolverPoint points[16];
+	SolverPoint points[20]; // 12 configurations, 2 variants of the default, up to 3 peers
 	int count = 0;
 	const tbSolverMethod methods[3] = {tb_solverSoft, tb_solverBaumgarte, tb_solverNGS};
 	const int ns[4] = {1, 2, 4, 8};
@@ -744,6 +744,18 @@ static int SolverChart(FILE* out)
 		p->method = "soft-scalar";
 		p->n = 4;
 		snprintf(p->label, sizeof(p->label), "soft-scalar-4");
+		MeasureSolver(p, engineTumble, &config);
+	}
+	{
+		// The default again with a friction row per manifold point: what central friction saves.
+		TumbleConfig config;
+		memset(&config, 0, sizeof(config));
+		config.subSteps = 4;
+		config.overrides.pointFriction = true;
+		SolverPoint* p = points + count++;
+		p->method = "soft-point-friction";
+		p->n = 4;
+		snprintf(p->label, sizeof(p->label), "soft-point-friction-4");
 		MeasureSolver(p, engineTumble, &config);
 	}
 	int tumbleCount = count;

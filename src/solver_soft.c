@@ -71,7 +71,11 @@
 // 10–15 % faster on the pyramids but made slopes creep 0.44 mm instead of 0.04 mm and left
 // large_pyramid's fastest box at 0.039 m/s after 9 s (0.002 m/s now); friction in the biased and
 // first relaxing passes only (5 % faster) left it at 0.69 m/s, in the biased and last only at
-// 0.34 m/s. The repeated passes settle the pile only when they also hold it by friction.
+// 0.34 m/s. The repeated passes settle the pile only when they also hold it by friction. (Measured
+// again with one relaxing pass per sub-step, 2026-11-27: without friction in the biased passes the
+// fastest box was at 0.094 m/s after 9 s, against 0.006; friction only in the last sub-step's
+// relaxing passes, 0.17 m/s.) What does make friction cheaper is one row per contact instead of one
+// per point (central friction, contact_solver.c): the same friction on a face, in every pass.
 // Rejected: rigid contacts with position projection after each sub-step (fast, but it flings
 // deeply overlapping bodies apart: see the overlap recovery scene in docs/stability.md).
 #include "solver_methods.h"

@@ -16,6 +16,7 @@ do for [col in "5 6 7"] {
 	set ylabel (c == 5 ? "drift (m)" : (c == 6 ? "penetration (m)" : "|apex − e²h| / e²h"))
 	plot DATA every ::1 using ($4):((strcol(2) eq "soft") ? column(c) + 1e-6 : 1/0) with points pt 7 ps 1.2 title "soft (1,2,4,8 sub-steps)", \
 	     DATA every ::1 using ($4):((strcol(2) eq "soft-scalar") ? column(c) + 1e-6 : 1/0) with points pt 4 ps 1.6 lc rgb "#1f77b4" title "soft, 4 sub-steps, scalar reference solver", \
+	     DATA every ::1 using ($4):((strcol(2) eq "soft-point-friction") ? column(c) + 1e-6 : 1/0) with points pt 8 ps 1.6 lc rgb "#9467bd" title "soft, 4 sub-steps, a friction row per point", \
 	     DATA every ::1 using ($4):((strcol(2) eq "baumgarte") ? column(c) + 1e-6 : 1/0) with points pt 5 ps 1.2 title "baumgarte (1,2,4,8 it.)", \
 	     DATA every ::1 using ($4):((strcol(2) eq "ngs") ? column(c) + 1e-6 : 1/0) with points pt 9 ps 1.4 title "ngs (1,2,4,8 it.)", \
 	     DATA every ::1 using ($4):((strcol(2) eq "box2d-2.4.1") ? column(c) + 1e-6 : 1/0) with points pt 13 ps 2 lc rgb "black" title "Box2D 2.4.1 (8/3)", \
