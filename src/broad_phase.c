@@ -22,6 +22,7 @@
 
 #include "brute_force.h"
 #include "core.h"
+#include "array.h"
 #include "sort_and_sweep.h"
 #include "spatial_hash.h"
 
@@ -107,6 +108,7 @@ static void tbCreateMethodState(tbBroadPhase* bp)
 
 static void tbDestroyMethodState(tbBroadPhase* bp)
 {
+	bp->refreshPending = false; // a refresh of a tree that is gone
 	tbDynamicTree_Destroy(&bp->staticTree);
 	tbDynamicTree_Destroy(&bp->movableTree);
 	if (bp->sweep != NULL)
@@ -156,6 +158,7 @@ void tbBroadPhase_Destroy(tbBroadPhase* bp)
 	{
 		tbPairList_Destroy(bp->workerPairs + i);
 	}
+	tbFree(bp->refreshKeys, bp->refreshKeyCapacity * (int)sizeof(int));
 	memset(bp, 0, sizeof(*bp));
 	bp->freeProxy = -1;
 }
@@ -383,6 +386,51 @@ static void tbRefreshMovableTree(tbBroadPhase* bp)
 	bp->enlargedCount = 0;
 }
 
+/// tbRefreshMovableTree's choice made now and its work left for tbBroadPhase_FinishRefresh: the
+/// keys to re-insert are copied, since the move buffer is cleared before the refresh runs.
+static void tbDeferMovableRefresh(tbBroadPhase* bp)
+{
+	if (bp->enlargedCount == 0)
+	{
+		return;
+	}
+	bp->refreshPending = true;
+	bp->refreshRebuild = 16 * bp->enlargedCount > bp->movableTree.proxyCount;
+	bp->refreshKeyCount = 0;
+	if (bp->refreshRebuild == false)
+	{
+		TB_ARRAY_RESERVE(bp->refreshKeys, bp->refreshKeyCapacity, bp->moveCount);
+		for (int i = 0; i < bp->moveCount; ++i)
+		{
+			int key = bp->moveBuffer[i];
+			if (key >= 0 && bp->table.proxies[key].type != tb_proxyStatic)
+			{
+				bp->refreshKeys[bp->refreshKeyCount++] = key;
+			}
+		}
+	}
+	bp->enlargedCount = 0;
+}
+
+void tbBroadPhase_FinishRefresh(tbBroadPhase* bp)
+{
+	if (bp->refreshPending == false)
+	{
+		return;
+	}
+	bp->refreshPending = false;
+	if (bp->refreshRebuild)
+	{
+		tbDynamicTree_Rebuild(&bp->movableTree, false);
+		return;
+	}
+	for (int i = 0; i < bp->refreshKeyCount; ++i)
+	{
+		const tbBroadProxy* p = bp->table.proxies + bp->refreshKeys[i];
+		tbDynamicTree_MoveProxy(&bp->movableTree, p->handle, p->aabb);
+	}
+}
+
 /// The pairs of moved proxies [start, end) of the move buffer, appended to `list` (read-only on
 /// the trees and the table: several ranges may run at once).
 static void tbQueryMovedProxies(tbBroadPhase* bp, tbPairList* list, int start, int end)
@@ -404,10 +452,19 @@ static void tbQueryMovedProxies(tbBroadPhase* bp, tbPairList* list, int start, i
 	}
 }
 
-/// The trees brought up to date before they are queried (serial: they change).
-static void tbPrepareTrees(tbBroadPhase* bp)
+/// The trees brought up to date before they are queried (serial: they change); the movable
+/// tree's refresh may be deferred until after the queries (tbBroadPhase_FinishRefresh).
+static void tbPrepareTrees(tbBroadPhase* bp, bool deferRefresh)
 {
-	tbRefreshMovableTree(bp);
+	tbBroadPhase_FinishRefresh(bp); // one left from an earlier call, if the caller never ran it
+	if (deferRefresh)
+	{
+		tbDeferMovableRefresh(bp);
+	}
+	else
+	{
+		tbRefreshMovableTree(bp);
+	}
 	int staticCount = bp->staticTree.proxyCount;
 	if (bp->staticInsertCount >= TB_STATIC_REBUILD_MIN && 2 * bp->staticInsertCount >= staticCount)
 	{
@@ -418,7 +475,7 @@ static void tbPrepareTrees(tbBroadPhase* bp)
 
 static void tbTreeFindPairs(tbBroadPhase* bp)
 {
-	tbPrepareTrees(bp);
+	tbPrepareTrees(bp, false);
 	tbQueryMovedProxies(bp, &bp->pairList, 0, bp->moveCount);
 }
 
@@ -443,7 +500,8 @@ static void tbFindPairsTask(int start, int end, uint32_t workerIndex, void* cont
 	tbPairList_Flush(bp->workerPairs + workerIndex);
 }
 
-void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext, int workerCount)
+void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext, int workerCount,
+									   bool deferRefresh)
 {
 	bool tree = bp->method == tb_broadPhaseTree;
 	if ((tree == false && bp->method != tb_broadPhaseSpatialHash) || workerCount <= 1)
@@ -454,7 +512,7 @@ void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, 
 	bp->pairList.count = 0;
 	if (tree)
 	{
-		tbPrepareTrees(bp);
+		tbPrepareTrees(bp, deferRefresh);
 	}
 	else
 	{

@@ -51,6 +51,14 @@ typedef struct tbBroadPhase
 	// of them triggers a binned SAH rebuild on the next UpdatePairs.
 	int staticInsertCount;
 	int enlargedCount; ///< movable tree leaves enlarged in place since the last UpdatePairs
+
+	// The movable tree's refresh left for after the queries (tbBroadPhase_UpdatePairsOnWorkers with
+	// deferRefresh; tbBroadPhase_FinishRefresh): a rebuild, or the re-insertion of these proxies.
+	bool refreshPending;
+	bool refreshRebuild;
+	int* refreshKeys;
+	int refreshKeyCount;
+	int refreshKeyCapacity;
 } tbBroadPhase;
 
 /// Install a pair filter. The world drops pairs that already have a contact or may not collide
@@ -82,8 +90,21 @@ typedef void tbRangeRunnerFcn(tbTaskCallback* task, int itemCount, int minRange,
 
 /// The same, the queries of moved proxies (tree and spatial hash) spread over workers (each worker
 /// keeps its own pairs; the merged list is sorted, so the result does not depend on the split).
+/// deferRefresh (tree method): the movable tree is queried as the moves left it (each moved leaf
+/// already holds its new box and its ancestors were grown to contain it, so every query finds what
+/// it would after the refresh) and its refresh, a serial rebuild or re-insertion, is left to
+/// tbBroadPhase_FinishRefresh, which the caller runs while the workers do other work (the narrow
+/// phase). The refreshed tree is the same either way: nothing it depends on changes in between.
 void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext,
-									   int workerCount);
+									   int workerCount, bool deferRefresh);
+/// Whether a deferred refresh is waiting (tbBroadPhase_FinishRefresh).
+static inline bool tbBroadPhase_RefreshPending(const tbBroadPhase* bp)
+{
+	return bp->refreshPending;
+}
+/// Runs the refresh UpdatePairsOnWorkers deferred, if any. Touches the movable tree only: the proxy
+/// table (and so tbBroadPhase_TestOverlap) may be read meanwhile.
+void tbBroadPhase_FinishRefresh(tbBroadPhase* bp);
 
 tbAABB tbBroadPhase_GetFatAABB(const tbBroadPhase* bp, int proxyKey);
 static inline bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKeyA, int proxyKeyB)

@@ -335,7 +335,13 @@ static void tbRunOnWorkers(tbTaskCallback* task, int itemCount, int minRange, vo
 void tbUpdatePairsStage(tbWorld* world)
 {
 	tbBroadPhase* bp = &world->broadPhase;
-	tbBroadPhase_UpdatePairsOnWorkers(bp, tbRunOnWorkers, world, tbWorkerCount(world));
+	// On workers the movable tree's refresh waits for the collide stage, where the caller runs it
+	// while the workers start the narrow phase (tbCollideStage), as Box2D v3 rebuilds its tree
+	// beside the narrow phase. Not with a pre-solve callback: it runs in the narrow phase and may
+	// query the world.
+	int workers = tbWorkerCount(world);
+	bool deferRefresh = workers > 1 && world->preSolveFcn == NULL;
+	tbBroadPhase_UpdatePairsOnWorkers(bp, tbRunOnWorkers, world, workers, deferRefresh);
 	world->counters.pairCandidates = bp->pairList.count;
 	// Every pair passed tbContactPairFilter as it was found, and the pairs are unique: each
 	// becomes a contact.
@@ -909,6 +915,13 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 	}
 }
 
+/// The broad phase's deferred tree refresh (tbUpdatePairsStage), beside the narrow phase: it
+/// touches only the movable tree, which the narrow phase does not read.
+static void tbFinishTreeRefresh(void* broadPhase)
+{
+	tbBroadPhase_FinishRefresh(broadPhase);
+}
+
 /// The narrow phase over every awake contact, on the workers; then, on the caller and in contact
 /// order, what changes the world: contacts whose fat boxes parted are destroyed, touching ones
 /// listed, bodies woken, events appended. The result is the same for any number of workers.
@@ -923,7 +936,15 @@ void tbCollideStage(tbWorld* world)
 	{
 		world->collideKeys[world->collideKeyCount].step = world->stepIndex - 1u;
 	}
-	tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
+	if (tbBroadPhase_RefreshPending(&world->broadPhase))
+	{
+		tbParallelForAlongside(world, tbCollideTask, world->stepContactCount, 64, world, tbFinishTreeRefresh,
+							   &world->broadPhase);
+	}
+	else
+	{
+		tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
+	}
 	int kept = 0;
 	int reported = 0, recycled = 0, gjk = 0, sat = 0;
 	// Every kept contact may touch: room for all of them, so the walk appends without checks.

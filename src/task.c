@@ -47,6 +47,24 @@ void tbParallelFor(tbWorld* world, tbTaskCallback* task, int itemCount, int minR
 	}
 }
 
+void tbParallelForAlongside(tbWorld* world, tbTaskCallback* task, int itemCount, int minRange, void* context,
+							void (*alongside)(void*), void* alongsideContext)
+{
+	int workers = tbWorkerCount(world);
+	if (workers <= 1 || itemCount <= minRange)
+	{
+		alongside(alongsideContext);
+		tbParallelFor(world, task, itemCount, minRange, context);
+		return;
+	}
+	void* handle = world->def.enqueueTask(task, itemCount, minRange, context, world->def.userTaskContext);
+	alongside(alongsideContext);
+	if (handle != NULL)
+	{
+		world->def.finishTask(handle, world->def.userTaskContext);
+	}
+}
+
 void tbSpinPause(int* rounds)
 {
 	*rounds += 1;

@@ -13,6 +13,12 @@ int tbWorkerCount(const struct tbWorld* world);
 /// items to split) it runs on the caller as task(0, itemCount, 0, context).
 void tbParallelFor(struct tbWorld* world, tbTaskCallback* task, int itemCount, int minRange, void* context);
 
+/// tbParallelFor, with `alongside(alongsideContext)` run on the caller while the workers start on
+/// the items (between enqueueing the task and finishing it), for serial work that shares no data
+/// with the task. Without workers it runs first, then the task.
+void tbParallelForAlongside(struct tbWorld* world, tbTaskCallback* task, int itemCount, int minRange, void* context,
+							void (*alongside)(void*), void* alongsideContext);
+
 /// One round of a spin-wait: a pause hint to the processor, and after many rounds a yield of the
 /// thread, so that waiting workers on an oversubscribed machine let the others run.
 void tbSpinPause(int* rounds);

@@ -168,6 +168,52 @@ static uint64_t RunOnWorkers(const char* name, int workers, int steps, int* even
 	return hash;
 }
 
+/// The order in which a query over the whole world visits the shapes (FNV-1a over their ids): the
+/// order follows the broad phase's tree, so two trees built differently visit differently.
+static bool HashVisit(tbShapeId shapeId, void* context)
+{
+	uint64_t* hash = context;
+	*hash = (*hash ^ (uint64_t)(uint32_t)shapeId.index1) * 1099511628211ull;
+	return true;
+}
+
+// On workers the movable tree is queried before its refresh, which runs beside the narrow phase
+// (broad_phase.h, tbBroadPhase_UpdatePairsOnWorkers); on one worker it is refreshed first. The
+// pairs, and so the trajectory, must be the same, and so must the refreshed tree: a query after
+// every step visits the shapes in the tree's order, and that order is hashed step by step. The
+// tumbler (tree broad phase forced) moves hundreds of proxies a step: both the re-insertion and
+// the partial rebuild run.
+Test(determinism, tree_refreshed_beside_the_narrow_phase_is_the_same_tree)
+{
+	uint64_t bodies[2] = {0, 0}, visits[2] = {0, 0};
+	for (int run = 0; run < 2; ++run)
+	{
+		Scene* scene = Catalogue_Build("tumbler");
+		cr_assert_not_null(scene);
+		SceneOverrides overrides;
+		memset(&overrides, 0, sizeof(overrides));
+		overrides.methods.broadPhase = tb_broadPhaseTree;
+		overrides.methods.hasBroadPhase = true;
+		overrides.tasks = run == 1 ? TaskSystem_Create(2) : NULL;
+		SceneWorld sw = Scene_BuildWorld(scene, &overrides);
+		cr_assert(tbWorld_IsValid(sw.worldId));
+		uint64_t visit = 1469598103934665603ull;
+		for (int i = 0; i < 90; ++i)
+		{
+			tbWorld_Step(sw.worldId, scene->timeStep, scene->subSteps);
+			tbWorld_OverlapAABB(sw.worldId, tbPos_zero, tbWorld_GetBounds(sw.worldId), tbDefaultQueryFilter(), HashVisit,
+								&visit);
+		}
+		bodies[run] = HashWorld(&sw);
+		visits[run] = visit;
+		SceneWorld_Destroy(&sw);
+		TaskSystem_Destroy(overrides.tasks);
+		Scene_Destroy(scene);
+	}
+	cr_expect_eq(bodies[1], bodies[0], "2 workers: other trajectories than 1");
+	cr_expect_eq(visits[1], visits[0], "2 workers: the tree visits the shapes in another order than 1's");
+}
+
 // On workers the sub-step parts of the profile are timed by whichever thread leads the stages
 // (solver_workers.c): each part is still part of the solve, and the passes of a pile are there.
 Test(determinism, solve_profile_parts_on_workers)
