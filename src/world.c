@@ -705,6 +705,15 @@ void tbWorld_EnableManifoldRecycling(tbWorldId worldId, bool flag)
 	}
 }
 
+void tbWorld_EnableCentralFriction(tbWorldId worldId, bool flag)
+{
+	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableCentralFriction");
+	if (world != NULL)
+	{
+		world->def.enableCentralFriction = flag;
+	}
+}
+
 bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio, float pushSpeed)
 {
 	const char* f = "tbWorld_SetContactTuning";

@@ -809,7 +809,8 @@ Test(world, friction_mixing_default_and_callback)
 	cr_assert_float_eq(minimum, 6.25f, 0.03f * 6.25f, "min callback slid %.4f m", (double)minimum);
 }
 
-// World settings in Box2D v3's grammar: user data, awake count, warm starting, continuous on/off
+// World settings in Box2D v3's grammar: user data, awake count, warm starting, central friction
+// (Tumble's), continuous on/off
 // (restoring the method in force), the speed clamp (refused beyond TB_MAX_LINEAR_SPEED), and ids
 // stored as integers and loaded back.
 Test(world, settings_and_stored_ids)
@@ -831,6 +832,11 @@ Test(world, settings_and_stored_ids)
 	cr_assert(tbWorld_IsWarmStartingEnabled(world) == false);
 	tbWorld_EnableWarmStarting(world, true);
 	cr_assert(tbWorld_IsWarmStartingEnabled(world));
+	cr_assert(tbWorld_GetDef(world).enableCentralFriction, "central friction is the default");
+	tbWorld_EnableCentralFriction(world, false);
+	cr_assert(tbWorld_GetDef(world).enableCentralFriction == false);
+	tbWorld_EnableCentralFriction(world, true);
+	cr_assert(tbWorld_GetDef(world).enableCentralFriction);
 	tbWorld_EnableContinuous(world, false);
 	cr_assert(tbWorld_IsContinuousEnabled(world) == false);
 	tbWorld_EnableContinuous(world, true);

@@ -80,6 +80,9 @@ TB_API bool tbWorld_SetSolverMethod(tbWorldId worldId, tbSolverMethod method, in
 									int positionIterations);
 /// Manifold recycling on or off (tbWorldDef::enableManifoldRecycling).
 TB_API void tbWorld_EnableManifoldRecycling(tbWorldId worldId, bool flag);
+/// Central friction on or off (tbWorldDef::enableCentralFriction): one friction row per contact at
+/// its centre of pressure, or one per manifold point. Refused during the step.
+TB_API void tbWorld_EnableCentralFriction(tbWorldId worldId, bool flag);
 /// The methods in force (after `auto` resolution).
 TB_API tbWorldDef tbWorld_GetDef(tbWorldId worldId);
 
