@@ -415,7 +415,9 @@ typedef struct tbManifoldPoint
 	tbVec2 anchorB;			///< point relative to body B's centre of mass (filled by the world)
 	float separation;		///< > 0 speculative gap, < 0 penetration (m)
 	float normalImpulse;	///< normal impulse (N·s) accumulated over the last sub-step, carried across steps
-	float tangentImpulse;	///< accumulated friction impulse (N·s)
+	float tangentImpulse;	///< accumulated friction impulse (N·s); with central friction (the default) the
+							///< contact's one friction impulse, shared by the points in proportion to
+							///< their normal impulses
 	float maxNormalImpulse; ///< largest normal impulse of the last step (for hit events)
 	float normalVelocity;	///< relative normal velocity before the solve (m/s, < 0 approaching)
 	uint16_t id;			///< feature id
