@@ -734,28 +734,19 @@ static int SolverChart(FILE* out)
 			fprintf(stderr, "solver %s done\n", p->label);
 		}
 	}
+	// The default again with the scalar reference contact solver (what the wide solver saves) and
+	// with a friction row per manifold point (what central friction saves).
+	for (int variant = 0; variant < 2; ++variant)
 	{
-		// The default again with the scalar reference contact solver: what the wide solver saves.
 		TumbleConfig config;
 		memset(&config, 0, sizeof(config));
 		config.subSteps = 4;
-		config.overrides.scalarSolver = true;
+		config.overrides.scalarSolver = variant == 0;
+		config.overrides.pointFriction = variant == 1;
 		SolverPoint* p = points + count++;
-		p->method = "soft-scalar";
+		p->method = variant == 0 ? "soft-scalar" : "soft-point-friction";
 		p->n = 4;
-		snprintf(p->label, sizeof(p->label), "soft-scalar-4");
-		MeasureSolver(p, engineTumble, &config);
-	}
-	{
-		// The default again with a friction row per manifold point: what central friction saves.
-		TumbleConfig config;
-		memset(&config, 0, sizeof(config));
-		config.subSteps = 4;
-		config.overrides.pointFriction = true;
-		SolverPoint* p = points + count++;
-		p->method = "soft-point-friction";
-		p->n = 4;
-		snprintf(p->label, sizeof(p->label), "soft-point-friction-4");
+		snprintf(p->label, sizeof(p->label), "%s-4", p->method);
 		MeasureSolver(p, engineTumble, &config);
 	}
 	int tumbleCount = count;

@@ -295,21 +295,28 @@ static void MakePrepContact(tbContact* contact, uint32_t seed)
 	}
 }
 
+/// A step context for preparing contacts by hand: the default world, 60 Hz, 4 sub-steps, warm
+/// starting, the soft step's stiffness (bodies and masses are the caller's).
+static void InitPrepContext(tbWorld* world, tbStepContext* context, bool centralFriction)
+{
+	memset(world, 0, sizeof(*world));
+	world->def = tbDefaultWorldDef();
+	memset(context, 0, sizeof(*context));
+	context->world = world;
+	context->timeStep = 1.0f / 60.0f;
+	context->subStepCount = 4;
+	context->h = context->timeStep / 4.0f;
+	context->inv_h = 1.0f / context->h;
+	context->enableWarmStarting = true;
+	context->centralFriction = centralFriction;
+	tbSoftPrepare(context);
+}
+
 static void CheckWidePreparation(bool centralFriction)
 {
 	tbWorld world;
-	memset(&world, 0, sizeof(world));
-	world.def = tbDefaultWorldDef();
 	tbStepContext context;
-	memset(&context, 0, sizeof(context));
-	context.world = &world;
-	context.timeStep = 1.0f / 60.0f;
-	context.subStepCount = 4;
-	context.h = context.timeStep / 4.0f;
-	context.inv_h = 1.0f / context.h;
-	context.enableWarmStarting = true;
-	context.centralFriction = centralFriction;
-	tbSoftPrepare(&context);
+	InitPrepContext(&world, &context, centralFriction);
 	cr_assert(context.settleSteps > 0.0f, "the stiffness ramp is on by default");
 
 	// Bodies 0..4 dynamic (body 4 without rotation), the static stand-in last.
@@ -400,18 +407,8 @@ Test(contact_solver, wide_preparation_matches_one_lane_at_a_time)
 Test(contact_solver, central_friction_acts_at_the_centre_of_pressure)
 {
 	tbWorld world;
-	memset(&world, 0, sizeof(world));
-	world.def = tbDefaultWorldDef();
 	tbStepContext context;
-	memset(&context, 0, sizeof(context));
-	context.world = &world;
-	context.timeStep = 1.0f / 60.0f;
-	context.subStepCount = 4;
-	context.h = context.timeStep / 4.0f;
-	context.inv_h = 1.0f / context.h;
-	context.enableWarmStarting = true;
-	context.centralFriction = true;
-	tbSoftPrepare(&context);
+	InitPrepContext(&world, &context, true);
 	tbSolverBody bodies[2];
 	tbSolverMass masses[2];
 	memset(bodies, 0, sizeof(bodies));
