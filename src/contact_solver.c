@@ -1031,7 +1031,11 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 			const tbContactConstraintPoint* cp = c->points + j;
 			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(cp->normalImpulse, normal));
 		}
-		tbApplyImpulse(sA, sB, c, c->frictionAnchorA, c->frictionAnchorB, tbMulSV(c->points[0].tangentImpulse, tangent));
+		if (c->pointCount > 0)
+		{
+			tbApplyImpulse(sA, sB, c, c->frictionAnchorA, c->frictionAnchorB,
+						   tbMulSV(c->points[0].tangentImpulse, tangent));
+		}
 	}
 	else
 	{
@@ -1197,7 +1201,7 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 	// together (central friction, its mass and impulse in point 0).
 	float friction = c->friction;
 	bool central = context->centralFriction;
-	int rowCount = central ? 1 : pointCount;
+	int rowCount = central ? tbMinInt(pointCount, 1) : pointCount;
 	for (int j = 0; j < rowCount; ++j)
 	{
 		tbContactConstraintPoint* cp = c->points + j;
