@@ -1398,7 +1398,7 @@ void tbApplyRestitution(tbStepContext* context)
 // holds the impulses of before the solve); the others from the scalar constraint.
 // The lines holding the impulses of the lane of contact i (contact-id order): the blocks were last
 // touched colour by colour in the final pass and have mostly left the cache (many_pyramids: 8 MB
-// of blocks); this walk visits them in contact-id order, one stream per colour, with a 544-byte
+// of blocks); this walk visits them in contact-id order, one stream per colour, with a 608-byte
 // stride the hardware prefetcher does not follow.
 static inline void tbPrefetchLaneImpulses(const tbStepContext* context, int i)
 {

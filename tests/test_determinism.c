@@ -32,16 +32,24 @@ static uint64_t HashWorld(const SceneWorld* sw)
 	return hash;
 }
 
-static uint64_t RunRain(tbBroadPhaseMethod method, int steps, int* contacts)
+/// The scene's world with the broad phase `method`, on `tasks` (NULL: no task system).
+static SceneWorld BuildWithBroadPhase(const Scene* scene, tbBroadPhaseMethod method, TaskSystem* tasks)
 {
-	Scene* scene = Catalogue_Build("rain_rigid");
-	cr_assert_not_null(scene);
 	SceneOverrides overrides;
 	memset(&overrides, 0, sizeof(overrides));
 	overrides.methods.broadPhase = method;
 	overrides.methods.hasBroadPhase = true;
+	overrides.tasks = tasks;
 	SceneWorld sw = Scene_BuildWorld(scene, &overrides);
 	cr_assert(tbWorld_IsValid(sw.worldId));
+	return sw;
+}
+
+static uint64_t RunRain(tbBroadPhaseMethod method, int steps, int* contacts)
+{
+	Scene* scene = Catalogue_Build("rain_rigid");
+	cr_assert_not_null(scene);
+	SceneWorld sw = BuildWithBroadPhase(scene, method, NULL);
 	cr_assert_eq(tbWorld_GetDef(sw.worldId).broadPhase, method == tb_broadPhaseAuto ? tb_broadPhaseTree : method);
 	*contacts = 0;
 	for (int i = 0; i < steps; ++i)
@@ -190,13 +198,9 @@ Test(determinism, tree_refreshed_beside_the_narrow_phase_is_the_same_tree)
 	{
 		Scene* scene = Catalogue_Build("tumbler");
 		cr_assert_not_null(scene);
-		SceneOverrides overrides;
-		memset(&overrides, 0, sizeof(overrides));
-		overrides.methods.broadPhase = tb_broadPhaseTree;
-		overrides.methods.hasBroadPhase = true;
-		overrides.tasks = run == 1 ? TaskSystem_Create(2) : NULL;
-		SceneWorld sw = Scene_BuildWorld(scene, &overrides);
-		cr_assert(tbWorld_IsValid(sw.worldId));
+		TaskSystem* tasks = run == 1 ? TaskSystem_Create(2) : NULL;
+		cr_assert(run == 0 || tasks != NULL);
+		SceneWorld sw = BuildWithBroadPhase(scene, tb_broadPhaseTree, tasks);
 		uint64_t visit = 1469598103934665603ull;
 		for (int i = 0; i < 90; ++i)
 		{
@@ -207,7 +211,7 @@ Test(determinism, tree_refreshed_beside_the_narrow_phase_is_the_same_tree)
 		bodies[run] = HashWorld(&sw);
 		visits[run] = visit;
 		SceneWorld_Destroy(&sw);
-		TaskSystem_Destroy(overrides.tasks);
+		TaskSystem_Destroy(tasks);
 		Scene_Destroy(scene);
 	}
 	cr_expect_eq(bodies[1], bodies[0], "2 workers: other trajectories than 1");
