@@ -47,11 +47,11 @@ extern float tb_lengthUnitsPerMeter;
 /// overlap). Static boxes are not enlarged.
 #define TB_AABB_MARGIN (0.05f * TB_LENGTH_UNITS)
 
-/// Fat AABB margin relative to the body, 1/16 of its largest extent (0.011 m for a 0.25 m box,
-/// 0.044 m for a unit box): a fixed margin around small bodies makes far more contacts than touch.
-/// 1/16 measured against 1/8 and 1/4 on the tumbler, smash and spinner scenes: fewest contacts
-/// (within 10 % of Box2D v3's counts) at no more time (docs/methods.md, "Broad-phase boxes").
-#define TB_AABB_MARGIN_FRACTION 0.0625f
+/// Fat AABB margin relative to the body, 1/8 of its largest extent (0.022 m for a 0.25 m box,
+/// capped at 0.05 m for a unit box), Box2D v3's fraction: with the sweep in the box, 1/16 kept 16-18 %
+/// fewer contacts than v3 on smash and junkyard, 1/8 keeps every benchmark scene within 10 % of
+/// v3's counts at the same time per step (docs/methods.md, "Broad-phase boxes").
+#define TB_AABB_MARGIN_FRACTION 0.125f
 
 /// Manifold recycling distance, at most TB_SPECULATIVE_DISTANCE = 0.02 m: a touching contact keeps
 /// its manifold points (moved with the bodies, separations updated) while no point of one body can
