@@ -135,11 +135,28 @@ void tbDestroyContactColorCache(tbWorld* world)
 
 static bool tbSameColorInputs(const tbStepContext* context)
 {
+	if (context->keysFromCache)
+	{
+		return true; // tbSteadyContactKeys: the same keys and solve order as the colours were made for
+	}
 	const tbContactColorCache* cache = context->world->contactColorCache;
 	int n = context->constraintCount;
 	return cache != NULL && cache->count == n && n > 0 && cache->bodyCount == context->bodyCount &&
 		   memcmp(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n) == 0 &&
 		   memcmp(cache->slots, context->world->solverSlots, sizeof(int) * (size_t)n) == 0;
+}
+
+const tbContactKey* tbSteadyContactKeys(const tbStepContext* context)
+{
+	const tbWorld* world = context->world;
+	const tbContactColorCache* cache = world->contactColorCache;
+	int n = context->constraintCount;
+	// solverIsTouching: the solver contacts, hence their solve order (world->solverSlots), are the
+	// last step's; the cache then holds that step's keys and slots (checked or kept since).
+	bool steady = world->collideKeysUnchanged && world->solverIsTouching && cache != NULL && cache->count == n &&
+				  n > 0 && cache->bodyCount == context->bodyCount && cache->bounceCount == 0 &&
+				  world->colorCacheStep == world->stepIndex - 1u;
+	return steady ? cache->keysById : NULL;
 }
 
 static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1], int bounceCount)
@@ -194,6 +211,7 @@ void tbColorConstraints(tbStepContext* context)
 	int n = context->constraintCount;
 	int bodyCount = context->bodyCount;
 	int counts[TB_GRAPH_COLOR_COUNT + 1] = {0};
+	context->world->colorCacheStep = context->world->stepIndex; // kept or made below
 	if (tbSameColorInputs(context))
 	{
 		const tbContactColorCache* cache = context->world->contactColorCache;

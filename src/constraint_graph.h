@@ -6,6 +6,11 @@
 /// Colour the contacts from their keys (tbKeyContacts) and hand out their wide lanes (before the
 /// contacts are prepared into them).
 void tbColorConstraints(tbStepContext* context);
+/// The last step's keys in contact-id order, kept with its colours, when this step's are known to
+/// equal them without computing them: the collide stage kept the touching list and found every
+/// solver contact's key unchanged (world->collideKeysUnchanged), the island stage kept the solver
+/// contacts, the colours are the last step's and no contact bounces. NULL otherwise.
+const tbContactKey* tbSteadyContactKeys(const tbStepContext* context);
 /// Colour the prepared joints in a graph of their own and reorder world->solverJoints colour by
 /// colour (context->jointColorStart); after tbPrepareJoints, whatever the solver method.
 void tbColorJoints(tbStepContext* context);

@@ -123,6 +123,7 @@ static void tbUnlinkEdge(tbWorld* world, int contactId, int edgeIndex)
 
 void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 {
+	world->contactEpoch += 1; // the collide stage's touching list may change (tbCollideStage)
 	int id;
 	if (world->contactFreeCount > 0)
 	{
@@ -222,6 +223,7 @@ static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 
 void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 {
+	world->contactEpoch += 1; // the collide stage's touching list may change (tbCollideStage)
 	tbContact* contact = world->contacts + contactId;
 	if (contact->flags & tb_contactReported)
 	{
@@ -260,7 +262,20 @@ enum tbCollideResult
 	tb_collideSolver = 0x80,   ///< touching and not a sensor: the solver will see it
 	tb_collideReported = 0x100, ///< within the begin-touch distance (tb_contactReported)
 	tb_collideReady = 0x200,	///< a solver contact as it stands: a dynamic side and no sleeping one
+	tb_collideEnded = 0x400,	///< manifold points disappeared (touching ended)
+	tb_collideNewKey = 0x800,	///< a ready contact whose solver key differs from the last step's
 };
+
+/// One worker's sums over its collide ranges, on a cache line of its own (tbCollideStage adds them
+/// in worker order).
+typedef struct tbCollideTally
+{
+	int reported, recycled, gjk, sat;
+	int changed;  ///< destroyed, began or ended touching, or a begin/end event
+	int notReady; ///< solver contacts not ready (tb_collideReady)
+	int newKeys;  ///< ready contacts with a new key (tb_collideNewKey)
+	int padding[9];
+} tbCollideTally;
 
 static bool tbIsSegmentKind(tbShapeType type)
 {
@@ -721,6 +736,7 @@ static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* cont
 	contact->touchingSteps = touching ? (uint16_t)(contact->touchingSteps + (contact->touchingSteps < UINT16_MAX)) : 0u;
 	contact->hitSpeed = touching ? contact->hitSpeed : 0.0f; // an impact that never touched is dropped
 	result |= touching && wasTouching == false ? tb_collideBegan : 0u;
+	result |= touching == false && wasTouching ? tb_collideEnded : 0u;
 	result |= reported != wasReported ? (reported ? tb_collideBeginEvent : tb_collideEndEvent) : 0u;
 	return result;
 }
@@ -835,7 +851,8 @@ static bool tbIsReadySolverContact(const tbWorld* world, const tbContact* contac
 /// The solver key of a ready contact, from the bodies the narrow phase just read (tbCollideKey).
 /// The flags are those contact_solver.c derives from the solver's mass arrays: a body moves when
 /// it is dynamic with a positive inverse mass or (rotation not fixed) inverse inertia.
-static void tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* contact)
+/// Returns whether the key is the one written in the last step.
+static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* contact)
 {
 	const tbBody* a = world->bodies + contact->edges[0].bodyId;
 	const tbBody* b = world->bodies + contact->edges[1].bodyId;
@@ -847,10 +864,14 @@ static void tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* co
 	flags |= contact->rollingResistance > 0.0f || contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
 	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
 	tbCollideKey* key = world->collideKeys + contactId;
+	// The same key as written in the last step (a steady step can keep the solver's keys).
+	bool same = key->step == world->stepIndex - 1u && key->indexA == a->awakeIndex && key->indexB == b->awakeIndex &&
+				key->flags == flags;
 	key->indexA = a->awakeIndex; // TB_NULL_INDEX for a static body; no side sleeps (ready)
 	key->indexB = b->awakeIndex;
 	key->flags = flags;
 	key->step = world->stepIndex;
+	return same;
 }
 
 /// The collide walk's loads form a chain: the contact names its shapes and bodies, a shape names
@@ -889,12 +910,14 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 	}
 }
 
-/// Collide task: the narrow phase of stepContacts[start..end), results into world->collideResults.
+/// Collide task: the narrow phase of stepContacts[start..end), results into world->collideResults
+/// and sums into the worker's tally.
 static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
 {
-	(void)workerIndex;
 	tbWorld* world = context;
 	const tbBroadPhase* bp = &world->broadPhase;
+	const uint32_t change = tb_collideDestroy | tb_collideBegan | tb_collideEnded | tb_collideBeginEvent | tb_collideEndEvent;
+	tbCollideTally sum = {0};
 	for (int i = startIndex; i < endIndex; ++i)
 	{
 		tbContact* contact = world->contacts + world->stepContacts[i];
@@ -913,11 +936,26 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 			if (solver && tbIsReadySolverContact(world, contact))
 			{
 				result |= tb_collideReady;
-				tbWriteCollideKey(world, world->stepContacts[i], contact);
+				result |= tbWriteCollideKey(world, world->stepContacts[i], contact) ? 0u : (uint32_t)tb_collideNewKey;
 			}
 		}
 		world->collideResults[i] = (uint16_t)result;
+		sum.reported += (result & tb_collideReported) != 0 ? 1 : 0;
+		sum.recycled += (result & tb_collideRecycled) != 0 ? 1 : 0;
+		sum.gjk += (result & tb_collideGJK) != 0 ? 1 : 0;
+		sum.sat += (result & tb_collideSAT) != 0 ? 1 : 0;
+		sum.changed += (result & change) != 0 ? 1 : 0;
+		sum.notReady += (result & (tb_collideSolver | tb_collideReady)) == tb_collideSolver ? 1 : 0;
+		sum.newKeys += (result & tb_collideNewKey) != 0 ? 1 : 0;
 	}
+	tbCollideTally* tally = world->collideTallies + workerIndex;
+	tally->reported += sum.reported;
+	tally->recycled += sum.recycled;
+	tally->gjk += sum.gjk;
+	tally->sat += sum.sat;
+	tally->changed += sum.changed;
+	tally->notReady += sum.notReady;
+	tally->newKeys += sum.newKeys;
 }
 
 /// The broad phase's deferred tree refresh (tbUpdatePairsStage), beside the narrow phase: it
@@ -927,35 +965,16 @@ static void tbFinishTreeRefresh(void* broadPhase)
 	tbBroadPhase_FinishRefresh(broadPhase);
 }
 
-/// The narrow phase over every awake contact, on the workers; then, on the caller and in contact
-/// order, what changes the world: contacts whose fat boxes parted are destroyed, touching ones
-/// listed, bodies woken, events appended. The result is the same for any number of workers.
-void tbCollideStage(tbWorld* world)
+/// The collide results in contact order, on the caller: contacts whose fat boxes parted are
+/// destroyed, touching ones listed (world->touchingContacts), bodies woken, events appended.
+static void tbWalkCollideResults(tbWorld* world)
 {
-	tbGatherAwakeContacts(world);
-	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
-	// Keys for every contact slot in use; new entries start stale (a step that never comes round
-	// before the slot is written: the key pass checks the step).
-	TB_ARRAY_RESERVE(world->collideKeys, world->collideKeyCapacity, world->contactHighWater);
-	for (; world->collideKeyCount < world->contactHighWater; ++world->collideKeyCount)
-	{
-		world->collideKeys[world->collideKeyCount].step = world->stepIndex - 1u;
-	}
-	if (tbBroadPhase_RefreshPending(&world->broadPhase))
-	{
-		tbParallelForAlongside(world, tbCollideTask, world->stepContactCount, 64, world, tbFinishTreeRefresh,
-							   &world->broadPhase);
-	}
-	else
-	{
-		tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
-	}
 	int kept = 0;
-	int reported = 0, recycled = 0, gjk = 0, sat = 0;
 	// Every kept contact may touch: room for all of them, so the walk appends without checks.
 	TB_ARRAY_RESERVE(world->touchingContacts, world->touchingContactCapacity, world->stepContactCount);
 	int* touching = world->touchingContacts;
 	int touchingCount = 0;
+	bool allReady = true;
 	int* stepContacts = world->stepContacts; // locals: the stores below may alias the world's fields
 	const uint16_t* results = world->collideResults;
 	int stepContactCount = world->stepContactCount;
@@ -969,15 +988,12 @@ void tbCollideStage(tbWorld* world)
 			continue;
 		}
 		stepContacts[kept++] = contactId;
-		// The counters tbCountCollideResult keeps, summed here and added once.
-		reported += (result & tb_collideReported) != 0 ? 1 : 0;
-		recycled += (result & tb_collideRecycled) != 0 ? 1 : 0;
-		gjk += (result & tb_collideGJK) != 0 ? 1 : 0;
-		sat += (result & tb_collideSAT) != 0 ? 1 : 0;
 		if (result & tb_collideSolver)
 		{
 			// The sign says "ready" (tb_collideReady): the island stage takes it as it is.
-			touching[touchingCount++] = (result & tb_collideReady) != 0 ? contactId : -1 - contactId;
+			bool ready = (result & tb_collideReady) != 0;
+			touching[touchingCount++] = ready ? contactId : -1 - contactId;
+			allReady = allReady && ready;
 		}
 		if ((result & (tb_collideBegan | tb_collideBeginEvent | tb_collideEndEvent)) == 0)
 		{
@@ -1002,10 +1018,69 @@ void tbCollideStage(tbWorld* world)
 	}
 	world->stepContactCount = kept;
 	world->touchingContactCount = touchingCount;
-	world->counters.recycledManifolds += recycled;
-	world->counters.gjkManifolds += gjk;
-	world->counters.satManifolds += sat;
-	world->counters.touchingCount = reported; // counted here, where each flag is in cache anyway
+	world->touchingAllReady = allReady;
+	world->touchingEpoch = world->contactEpoch; // after this walk's destroys
+}
+
+/// The narrow phase over every awake contact, on the workers; then, on the caller and in contact
+/// order, what changes the world (tbWalkCollideResults), unless nothing did: a settled pile's step
+/// keeps the last touching list, and the solver its keys (contact_solver.c). The result is the
+/// same for any number of workers.
+void tbCollideStage(tbWorld* world)
+{
+	// The last touching list still holds if the awake set and the contacts are those of the last
+	// step's gathering (checked here, before tbGatherAwakeContacts records the new state) and no
+	// contact changes below (tbCollideTally).
+	bool sameContacts = world->gatheredVersion == world->awakeSetVersion &&
+						world->gatheredRemovals == world->awakeRemovals && world->touchingEpoch == world->contactEpoch &&
+						world->touchingAllReady;
+	tbGatherAwakeContacts(world);
+	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
+	// Keys for every contact slot in use; new entries start stale (a step that never comes round
+	// before the slot is written: the key pass checks the step).
+	TB_ARRAY_RESERVE(world->collideKeys, world->collideKeyCapacity, world->contactHighWater);
+	for (; world->collideKeyCount < world->contactHighWater; ++world->collideKeyCount)
+	{
+		world->collideKeys[world->collideKeyCount].step = world->stepIndex - 2u;
+	}
+	int workers = tbWorkerCount(world);
+	char* tallyBytes = tbArenaAlloc(&world->stepArena, (workers + 1) * (int)sizeof(tbCollideTally));
+	world->collideTallies = (tbCollideTally*)(((uintptr_t)tallyBytes + 63) & ~(uintptr_t)63);
+	memset(world->collideTallies, 0, (size_t)workers * sizeof(tbCollideTally));
+	if (tbBroadPhase_RefreshPending(&world->broadPhase))
+	{
+		tbParallelForAlongside(world, tbCollideTask, world->stepContactCount, 64, world, tbFinishTreeRefresh,
+							   &world->broadPhase);
+	}
+	else
+	{
+		tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
+	}
+	tbCollideTally total = {0};
+	for (int w = 0; w < workers; ++w)
+	{
+		const tbCollideTally* t = world->collideTallies + w;
+		total.reported += t->reported;
+		total.recycled += t->recycled;
+		total.gjk += t->gjk;
+		total.sat += t->sat;
+		total.changed += t->changed;
+		total.notReady += t->notReady;
+		total.newKeys += t->newKeys;
+	}
+	world->collideTallies = NULL; // arena memory: gone with the step
+	world->counters.recycledManifolds += total.recycled;
+	world->counters.gjkManifolds += total.gjk;
+	world->counters.satManifolds += total.sat;
+	world->counters.touchingCount = total.reported;
+	// A steady step (a settled pile): nothing was destroyed, began or ended touching or made an
+	// event, and every solver contact is ready, so the walk would write the last list again.
+	world->touchingUnchanged = sameContacts && total.changed == 0 && total.notReady == 0;
+	world->collideKeysUnchanged = world->touchingUnchanged && total.newKeys == 0;
+	if (world->touchingUnchanged == false)
+	{
+		tbWalkCollideResults(world);
+	}
 }
 
 /// Hit events: one per impact, in the step its contact begins to touch or later. A solved contact

@@ -32,6 +32,7 @@
 // References: E. Catto, "Fast and Simple Physics using Sequential Impulses", GDC 2006;
 // "Modeling and Solving Constraints", GDC 2009; "Soft Constraints", GDC 2011;
 // "Understanding Constraints", GDC 2014; "Solver2D" blog post, 2024.
+#include "constraint_graph.h"
 #include "contact_solver.h"
 #include "task.h"
 
@@ -426,6 +427,13 @@ void tbKeyContacts(tbStepContext* context)
 {
 	int n = context->constraintCount;
 	context->keys = tbArenaAlloc(&context->world->stepArena, tbMaxInt((int)sizeof(tbContactKey) * n, 1));
+	const tbContactKey* steady = tbSteadyContactKeys(context); // constraint_graph.c
+	context->keysFromCache = steady != NULL;
+	if (steady != NULL)
+	{
+		context->keysById = (tbContactKey*)steady; // read only: no contact bounces (tbDropBounce)
+		return;
+	}
 	context->keysById = tbArenaAlloc(&context->world->stepArena, tbMaxInt((int)sizeof(tbContactKey) * n, 1));
 	tbParallelFor(context->world, tbKeyContactsTask, n, TB_CONTACTS_PER_TASK, context);
 }

@@ -199,18 +199,25 @@ static bool tbGatherRecordedContacts(tbWorld* world, uint32_t stamp)
 /// ready (a dynamic side, both sides awake), and no body joined or left the awake set since. The
 /// solve order and the id order depend on the contact ids alone, so the last step's arrays hold
 /// as they are (a settled pile: large_pyramid, every step after the first few).
+/// When the collide stage kept the last touching list (world->touchingUnchanged) and the last step
+/// found it equal to the solver contacts, it still is, without the comparison.
 static bool tbSameSolverContacts(const tbWorld* world)
 {
 	int n = world->touchingContactCount;
-	return world->gatheredRemovals == world->awakeRemovals && world->gatheredVersion == world->awakeSetVersion &&
-		   n == world->solverContactCount &&
+	bool sameAwake = world->gatheredRemovals == world->awakeRemovals && world->gatheredVersion == world->awakeSetVersion;
+	if (sameAwake && world->touchingUnchanged && world->solverIsTouching)
+	{
+		return true;
+	}
+	return sameAwake && n == world->solverContactCount &&
 		   (n == 0 || memcmp(world->touchingContacts, world->solverContactsById, sizeof(int) * (size_t)n) == 0);
 }
 
 void tbIslandStage(tbWorld* world)
 {
 	tbWakeJointPartners(world); // joint.c: before anything is gathered
-	if (tbSameSolverContacts(world))
+	world->solverIsTouching = tbSameSolverContacts(world);
+	if (world->solverIsTouching)
 	{
 		return;
 	}

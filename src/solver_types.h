@@ -220,6 +220,9 @@ typedef struct tbStepContext
 	/// only when the colouring runs or some contact bounces (constraint_graph.c, tbScatterKeys).
 	tbContactKey* keys;
 	tbContactKey* keysById;
+	/// A steady step: keysById is the colour cache's copy of the last step's keys, which these
+	/// equal (tbSteadyContactKeys); read only (no contact bounces, so nothing writes them).
+	bool keysFromCache;
 	int constraintCount;
 	int restitutionCount; ///< constraints with restitution > 0 (tbApplyRestitution skips when 0)
 

@@ -121,6 +121,8 @@ _Static_assert(sizeof(tbManifoldBase) == 76, "tbManifoldBase is 76 bytes");
 
 /// A pair of shapes whose fat boxes overlap. Exists from the step the boxes start to overlap
 /// until the step they stop.
+struct tbCollideTally;
+
 typedef struct tbContact
 {
 	// Hot while walking a body's contact list (island and gather passes): the edges, flags and
@@ -314,6 +316,16 @@ typedef struct tbWorld
 	/// than 1.5 × TB_LINEAR_SLOP apart, so the solver sees no speculative second point (contact.c).
 	bool enableSpeculative;
 	uint32_t gatheredRemovals; ///< awakeRemovals when the collide stage gathered its contacts
+	// A steady step (a settled pile) repeats the last step's lists, which the collide stage then
+	// keeps instead of rebuilding (contact.c, tbCollideStage; island.c; contact_solver.c):
+	uint32_t contactEpoch;	///< bumped by every contact created or destroyed
+	uint32_t touchingEpoch; ///< contactEpoch when the touching list was last built
+	bool touchingAllReady;	///< every entry of that list was ready then
+	bool touchingUnchanged; ///< this step's collide stage kept the last touching list
+	bool collideKeysUnchanged; ///< and every solver contact's key is the last step's
+	bool solverIsTouching;	///< this step's island stage found its solver contacts unchanged
+	uint32_t colorCacheStep; ///< step of the last colouring, or reuse, of contactColorCache
+	struct tbCollideTally* collideTallies; ///< per worker, this step's (contact.c, from the step arena)
 	int gatheredAwakeCount;	  ///< awakeBodyCount then: bodies woken since are appended after it
 	int* islandStack;
 	int islandStackCapacity;
