@@ -277,6 +277,17 @@ typedef struct tbCollideTally
 	int padding[9];
 } tbCollideTally;
 
+static void tbAddTally(tbCollideTally* sum, const tbCollideTally* part)
+{
+	sum->reported += part->reported;
+	sum->recycled += part->recycled;
+	sum->gjk += part->gjk;
+	sum->sat += part->sat;
+	sum->changed += part->changed;
+	sum->notReady += part->notReady;
+	sum->newKeys += part->newKeys;
+}
+
 static bool tbIsSegmentKind(tbShapeType type)
 {
 	return type == tb_segmentShape || type == tb_chainSegmentShape;
@@ -948,14 +959,7 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 		sum.notReady += (result & (tb_collideSolver | tb_collideReady)) == tb_collideSolver ? 1 : 0;
 		sum.newKeys += (result & tb_collideNewKey) != 0 ? 1 : 0;
 	}
-	tbCollideTally* tally = world->collideTallies + workerIndex;
-	tally->reported += sum.reported;
-	tally->recycled += sum.recycled;
-	tally->gjk += sum.gjk;
-	tally->sat += sum.sat;
-	tally->changed += sum.changed;
-	tally->notReady += sum.notReady;
-	tally->newKeys += sum.newKeys;
+	tbAddTally(world->collideTallies + workerIndex, &sum);
 }
 
 /// The broad phase's deferred tree refresh (tbUpdatePairsStage), beside the narrow phase: it
@@ -1036,8 +1040,9 @@ void tbCollideStage(tbWorld* world)
 						world->touchingAllReady;
 	tbGatherAwakeContacts(world);
 	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
-	// Keys for every contact slot in use; new entries start stale (a step that never comes round
-	// before the slot is written: the key pass checks the step).
+	// Keys for every contact slot in use; new entries start stale, two steps back, so that neither
+	// the key pass (this step) nor tbWriteCollideKey's comparison (the last step) takes an unwritten
+	// key for a written one.
 	TB_ARRAY_RESERVE(world->collideKeys, world->collideKeyCapacity, world->contactHighWater);
 	for (; world->collideKeyCount < world->contactHighWater; ++world->collideKeyCount)
 	{
@@ -1059,14 +1064,7 @@ void tbCollideStage(tbWorld* world)
 	tbCollideTally total = {0};
 	for (int w = 0; w < workers; ++w)
 	{
-		const tbCollideTally* t = world->collideTallies + w;
-		total.reported += t->reported;
-		total.recycled += t->recycled;
-		total.gjk += t->gjk;
-		total.sat += t->sat;
-		total.changed += t->changed;
-		total.notReady += t->notReady;
-		total.newKeys += t->newKeys;
+		tbAddTally(&total, world->collideTallies + w);
 	}
 	world->collideTallies = NULL; // arena memory: gone with the step
 	world->counters.recycledManifolds += total.recycled;

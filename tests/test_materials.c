@@ -88,6 +88,30 @@ Test(materials, changing_the_belt_at_run_time_reaches_existing_contacts)
 	tbDestroyWorld(world);
 }
 
+// A belt started under a box that has rested on it long enough for the steps to be steady (the
+// solver then takes the last step's contact keys instead of rebuilding them, while none changes):
+// the started belt changes the contact's key (a tangent speed sends it to the scalar solver, which
+// carries it), so the kept keys must not be taken. Sleep is off, so the box stays awake and the
+// steps stay steady until the belt starts. Closed form and bound as for the belt that always ran:
+// the belt speed, 1 %.
+Test(materials, a_belt_started_under_a_resting_box_drives_it)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	worldDef.enableSleep = false;
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbSurfaceMaterial belt = tbDefaultSurfaceMaterial();
+	tbShapeId beltShape = MakeGround(world, &belt);
+	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
+	Step(world, 120);
+	cr_assert(fabsf(tbBody_GetLinearVelocity(box).x) <= 1e-4f, "the box rests before the belt starts");
+	belt.tangentSpeed = 2.0f;
+	cr_assert(tbShape_SetSurfaceMaterial(beltShape, &belt));
+	Step(world, 120);
+	float vx = tbBody_GetLinearVelocity(box).x;
+	cr_expect(fabsf(vx - 2.0f) <= 0.02f, "box moves at %.4f m/s on a belt started at 2 m/s", (double)vx);
+	tbDestroyWorld(world);
+}
+
 // Rolling resistance: a disc of radius r rolling without slipping on level ground feels a torque
 // up to c·r·N against its rolling (c the larger coefficient, r the larger rounding radius, N the
 // normal force). Energy: d/dt(½mv² + ½Iω²) = −c·r·m·g·ω with ω = v/r and I = ½mr², so the disc
