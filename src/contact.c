@@ -1032,13 +1032,17 @@ static void tbWalkCollideResults(tbWorld* world)
 /// same for any number of workers.
 void tbCollideStage(tbWorld* world)
 {
-	// The last touching list still holds if the awake set and the contacts are those of the last
-	// step's gathering (checked here, before tbGatherAwakeContacts records the new state) and no
+	// The awake contacts are those gathered last, less the ones the walk destroyed, if neither the
+	// awake set nor the set of contacts has changed since (touchingEpoch: the contact set after the
+	// last walk). The last touching list still holds too if every contact on it was ready and no
 	// contact changes below (tbCollideTally).
-	bool sameContacts = world->gatheredVersion == world->awakeSetVersion &&
-						world->gatheredRemovals == world->awakeRemovals && world->touchingEpoch == world->contactEpoch &&
-						world->touchingAllReady;
-	tbGatherAwakeContacts(world);
+	bool sameList = world->gatheredVersion == world->awakeSetVersion && world->gatheredRemovals == world->awakeRemovals &&
+					world->touchingEpoch == world->contactEpoch;
+	bool sameContacts = sameList && world->touchingAllReady;
+	if (sameList == false)
+	{
+		tbGatherAwakeContacts(world);
+	}
 	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
 	// Keys for every contact slot in use; new entries start stale, two steps back, so that neither
 	// the key pass (this step) nor tbWriteCollideKey's comparison (the last step) takes an unwritten
