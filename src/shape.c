@@ -150,11 +150,6 @@ static tbAABB tbSweepBox(tbAABB box, tbVec2 d, float pad)
 	return tbAABB_Fatten(tbAABB_Union(box, moved), pad);
 }
 
-float tbSpeculativeReach(const tbBody* body)
-{
-	return body->speculativeReach; // body.c, tbUpdateSpeculativeReach
-}
-
 /// Broad-phase boxes must contain where a body's shapes can go during the next step, so that every
 /// pair that can touch in that step has its contact (and speculative points) when the step begins:
 /// two bodies that meet during the step have overlapping sweeps, hence overlapping fat boxes. The
