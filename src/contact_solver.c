@@ -925,6 +925,7 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 	int restitutionCount = 0;
 	tbLaneBatch batch;
 	batch.count = 0;
+	uint32_t bounceInBatch = 0u; // the batch's keys' flags together
 	for (int i = start; i < end; ++i)
 	{
 		int slot = slots[i];
@@ -963,10 +964,16 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 			batch.locations[batch.count] = location;
 			batch.slots[batch.count] = slot;
 			batch.indices[batch.count] = i;
+			bounceInBatch |= key.flags;
 			if (++batch.count == TB_SIMD_WIDTH)
 			{
-				restitutionCount += tbFinishLaneBatch(context, &batch, tbPrepareWideLanes(context, &batch));
+				int rebound = tbPrepareWideLanes(context, &batch);
+				if ((bounceInBatch & tb_keyBounces) != 0u) // most batches have none: no call
+				{
+					restitutionCount += tbFinishLaneBatch(context, &batch, rebound);
+				}
 				batch.count = 0;
+				bounceInBatch = 0u;
 			}
 			continue;
 		}
