@@ -12,10 +12,19 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <stdalign.h>
 #include <stdatomic.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define TASK_SPIN_ROUNDS 4000
+
+/// The ranges of one worker's share: the next to claim, on a line of its own (every claim writes it).
+typedef struct Share
+{
+	alignas(64) atomic_int next;
+	int end;
+} Share;
 
 typedef struct Task
 {
@@ -24,8 +33,9 @@ typedef struct Task
 	int itemCount;
 	int rangeSize;
 	int rangeCount;
-	atomic_int nextRange;
-	atomic_int doneRanges;
+	int shareCount;
+	Share shares[TB_MAX_WORKERS];
+	alignas(64) atomic_int doneRanges;
 } Task;
 
 typedef struct Thread
@@ -56,20 +66,28 @@ static inline void Pause(void)
 #endif
 }
 
-/// Claim and run ranges of the current task until none is left.
+/// Claim and run ranges of the current task until none is left. The ranges are cut into one
+/// contiguous share per worker; worker w starts on share w, then helps with the others in turn. Loop
+/// after loop over the same items (bodies, contacts in id order) a worker so takes the same items,
+/// and finds them and what the step's other stages wrote for them in its own cache; the library's
+/// sub-step stages start worker w at w/n of each stage likewise (solver_workers.c).
 static void RunRanges(Task* task, uint32_t workerIndex)
 {
-	for (;;)
+	for (int k = 0; k < task->shareCount; ++k)
 	{
-		int range = atomic_fetch_add_explicit(&task->nextRange, 1, memory_order_acq_rel);
-		if (range >= task->rangeCount)
+		Share* share = task->shares + ((int)workerIndex + k) % task->shareCount;
+		for (;;)
 		{
-			return;
+			int range = atomic_fetch_add_explicit(&share->next, 1, memory_order_acq_rel);
+			if (range >= share->end)
+			{
+				break;
+			}
+			int start = range * task->rangeSize;
+			int end = start + task->rangeSize < task->itemCount ? start + task->rangeSize : task->itemCount;
+			task->callback(start, end, workerIndex, task->context);
+			atomic_fetch_add_explicit(&task->doneRanges, 1, memory_order_acq_rel);
 		}
-		int start = range * task->rangeSize;
-		int end = start + task->rangeSize < task->itemCount ? start + task->rangeSize : task->itemCount;
-		task->callback(start, end, workerIndex, task->context);
-		atomic_fetch_add_explicit(&task->doneRanges, 1, memory_order_acq_rel);
 	}
 }
 
@@ -126,16 +144,21 @@ TaskSystem* TaskSystem_Create(int workerCount)
 	{
 		return NULL;
 	}
-	TaskSystem* system = calloc(1, sizeof(TaskSystem));
+	size_t bytes = (sizeof(TaskSystem) + 63) / 64 * 64; // aligned_alloc: a multiple of the alignment,
+	TaskSystem* system = aligned_alloc(64, bytes);		  // which the shares' lines need (alignas)
 	if (system == NULL)
 	{
 		return NULL;
 	}
+	memset(system, 0, bytes);
 	system->workerCount = workerCount;
 	atomic_init(&system->generation, 0u);
 	atomic_init(&system->busy, 0);
 	atomic_init(&system->quit, false);
-	atomic_init(&system->task.nextRange, 0);
+	for (int w = 0; w < TB_MAX_WORKERS; ++w)
+	{
+		atomic_init(&system->task.shares[w].next, 0);
+	}
 	atomic_init(&system->task.doneRanges, 0);
 	pthread_mutex_init(&system->lock, NULL);
 	pthread_cond_init(&system->wake, NULL);
@@ -205,8 +228,13 @@ void* TaskSystem_Enqueue(tbTaskCallback* callback, int itemCount, int minRange, 
 	task->itemCount = itemCount;
 	task->rangeSize = rangeSize;
 	task->rangeCount = (itemCount + rangeSize - 1) / rangeSize;
+	task->shareCount = system->workerCount;
+	for (int w = 0; w < task->shareCount; ++w)
+	{
+		atomic_store_explicit(&task->shares[w].next, w * task->rangeCount / task->shareCount, memory_order_relaxed);
+		task->shares[w].end = (w + 1) * task->rangeCount / task->shareCount;
+	}
 	atomic_store_explicit(&task->doneRanges, 0, memory_order_relaxed);
-	atomic_store_explicit(&task->nextRange, 0, memory_order_relaxed);
 	pthread_mutex_lock(&system->lock);
 	atomic_fetch_add_explicit(&system->generation, 1u, memory_order_release); // even: published
 	pthread_cond_broadcast(&system->wake);

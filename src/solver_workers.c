@@ -75,7 +75,6 @@ typedef struct tbStageProgram
 	int claimCount;
 	atomic_int openStage; ///< stages [0, openStage] may be worked on; stageCount: all done
 	atomic_int orchestrator; ///< 0 until a participant takes the role
-	atomic_int arrivals;	 ///< participants so far: each one's slot
 } tbStageProgram;
 
 static void tbAddStage(tbStageProgram* p, tbStageKind kind, int start, int count, int unitSize, tbBiasPolicy policy,
@@ -296,9 +295,12 @@ static void tbHelp(tbStageProgram* p, int slot)
 	}
 }
 
-static void tbParticipate(tbStageProgram* p)
+/// `workerIndex`: the task system's for the thread (the caller's is 0). Worker w takes slot w, so it
+/// starts each stage where it started the loops before (tbWorkOnStage), as a task system that hands
+/// worker w the w-th share of a loop's items does (samples/task_system.c).
+static void tbParticipate(tbStageProgram* p, uint32_t workerIndex)
 {
-	int slot = atomic_fetch_add_explicit(&p->arrivals, 1, memory_order_relaxed) % p->workerCount;
+	int slot = (int)(workerIndex % (uint32_t)p->workerCount);
 	int expected = 0;
 	if (atomic_compare_exchange_strong_explicit(&p->orchestrator, &expected, 1, memory_order_acq_rel,
 												memory_order_acquire))
@@ -313,10 +315,9 @@ static void tbParticipate(tbStageProgram* p)
 
 static void tbHelperTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
 {
-	(void)workerIndex;
 	for (int i = startIndex; i < endIndex; ++i)
 	{
-		tbParticipate(context);
+		tbParticipate(context, workerIndex);
 	}
 }
 
@@ -348,7 +349,6 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 	program.claimCount = 0;
 	atomic_init(&program.openStage, -1);
 	atomic_init(&program.orchestrator, 0);
-	atomic_init(&program.arrivals, 0);
 	tbBuildSoftProgram(&program);
 	program.claims = tbArenaAlloc(&world->stepArena, program.claimCount);
 	for (int i = 0; i < program.claimCount; ++i)
@@ -356,7 +356,7 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 		atomic_init(program.claims + i, 0);
 	}
 	void* handle = world->def.enqueueTask(tbHelperTask, workers - 1, 1, &program, world->def.userTaskContext);
-	tbParticipate(&program);
+	tbParticipate(&program, 0);
 	if (handle != NULL)
 	{
 		world->def.finishTask(handle, world->def.userTaskContext);
