@@ -1,7 +1,8 @@
 // Reference task system (see task_system.h). Threads wait for a task by spinning briefly on its
 // generation counter (a step issues its tasks microseconds apart), then sleep on a condition
-// variable. Ranges are claimed with an atomic counter, so a range is run exactly once, by
-// whichever thread gets to it first; completions are counted to know when the task is done.
+// variable. The ranges are cut into one share per worker, each with an atomic counter: worker w
+// claims from share w first, then from the others', so a range is run exactly once, by whichever
+// thread gets to it first; completions are counted to know when the task is done.
 //
 // The one task record is reused, so a thread late from the last task must not read it while the
 // next is written. The generation works as a sequence lock: odd while the caller writes a task,
