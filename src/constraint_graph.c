@@ -40,6 +40,7 @@
 
 #include "contact_solver.h"
 #include "joint.h"
+#include "task.h"
 
 #include <string.h>
 
@@ -95,6 +96,12 @@ static void tbAssignColors(const tbStepContext* context, uint32_t* bodyMasks, ui
 	}
 }
 
+/// Contacts of colour k in partition p: n[k][p].
+typedef struct tbPartitionCounts
+{
+	int n[TB_GRAPH_COLOR_COUNT][TB_MAX_PARTITIONS];
+} tbPartitionCounts;
+
 // The colouring of the last step, kept with its inputs: the keys in contact-id order and each
 // contact's place in the solve order (world->solverSlots), which together are the keys in solve
 // order. The colours are a function of exactly those (and of the body count, the static
@@ -113,6 +120,10 @@ typedef struct tbContactColorCache
 	int* wideLocation;	///< the colouring's outputs: lane by solve slot,
 	int* locationById;	///< and by contact-id order
 	int counts[TB_GRAPH_COLOR_COUNT + 1];
+	int partitionRequest; ///< tbPartitionRequest when the colours were made
+	int partitionCount;	  ///< as tbStepContext (0: none)
+	int partitionBodyStart[TB_MAX_PARTITIONS + 1];
+	tbPartitionCounts partitionCounts;
 } tbContactColorCache;
 
 void tbDestroyContactColorCache(tbWorld* world)
@@ -133,15 +144,18 @@ void tbDestroyContactColorCache(tbWorld* world)
 	world->contactColorCache = NULL;
 }
 
-static bool tbSameColorInputs(const tbStepContext* context)
+static bool tbSameColorInputs(const tbStepContext* context, int partitionRequest)
 {
+	const tbContactColorCache* cache = context->world->contactColorCache;
 	if (context->keysFromCache)
 	{
-		return true; // tbSteadyContactKeys: the same keys and solve order as the colours were made for
+		// tbSteadyContactKeys: the same keys and solve order as the colours were made for; the
+		// partitions also depend on the worker count (tbWorld_SetWorkerCount)
+		return cache->partitionRequest == partitionRequest;
 	}
-	const tbContactColorCache* cache = context->world->contactColorCache;
 	int n = context->constraintCount;
 	return cache != NULL && cache->count == n && n > 0 && cache->bodyCount == context->bodyCount &&
+		   cache->partitionRequest == partitionRequest &&
 		   memcmp(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n) == 0 &&
 		   memcmp(cache->slots, context->world->solverSlots, sizeof(int) * (size_t)n) == 0;
 }
@@ -159,7 +173,9 @@ const tbContactKey* tbSteadyContactKeys(const tbStepContext* context)
 	return steady ? cache->keysById : NULL;
 }
 
-static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1], int bounceCount)
+static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1],
+						 const tbPartitionCounts* partitionCounts, int partitionRequest,
+						 int bounceCount)
 {
 	tbWorld* world = context->world;
 	int n = context->constraintCount;
@@ -180,16 +196,25 @@ static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH
 	cache->count = n;
 	cache->bodyCount = context->bodyCount;
 	cache->bounceCount = bounceCount;
-	memcpy(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n);
+	if (cache->keysById != context->keysById) // a steady step recoloured for another worker count
+	{
+		memcpy(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n);
+	}
 	memcpy(cache->slots, world->solverSlots, sizeof(int) * (size_t)n);
 	memcpy(cache->wideLocation, context->wideLocation, sizeof(int) * (size_t)n);
 	memcpy(cache->locationById, context->locationById, sizeof(int) * (size_t)n);
 	memcpy(cache->counts, counts, sizeof(cache->counts));
+	cache->partitionRequest = partitionRequest;
+	cache->partitionCount = context->partitionCount;
+	memcpy(cache->partitionBodyStart, context->partitionBodyStart, sizeof(cache->partitionBodyStart));
+	cache->partitionCounts = *partitionCounts;
 }
 
-// The blocks, padding and overflow list for the per-colour counts; wideLocation allocated (filled
-// by the caller, as is locationById).
-static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1]);
+// The blocks, padding and overflow list for the per-colour counts, each colour's split over the
+// context's partitions (partitionCounts->n[k][p]; one partition when context->partitionCount is 0);
+// wideLocation allocated (filled by the caller, as is locationById).
+static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1],
+						   const tbPartitionCounts* partitionCounts);
 
 /// The keys in solve order (context->keys) from the keys in contact-id order; returns how many
 /// bounce.
@@ -206,16 +231,164 @@ static int tbScatterKeys(const tbStepContext* context)
 	return bounceCount;
 }
 
+// Island partitions. The contacts of bodies that no contact links (separate piles: islands) can be
+// solved apart with no barrier between them. When the solver order of the awake bodies keeps each
+// island in one run (a scene's piles built one after another, woken together), cutting the order
+// where no contact straddles the cut gives runs that share no body, and each worker can take one
+// run through every sub-step stage on its own (solver_workers.c): no barrier per colour, and no
+// body's state passes between the workers' caches. The results are the same bit for bit as with
+// the shared stages or one worker: a body meets its contacts in the same colour order either way,
+// and the contacts of one colour are independent whatever block they sit in.
+// The cuts are taken nearest to equal contact counts (a sweep over the solver bodies with a
+// difference array of the contacts' index spans); when the largest run holds more than 1/16 above
+// an equal share, or the bodies do not fall into runs, there is one partition and the workers
+// share every stage.
+
+/// How many partitions the step could use: one per worker (up to TB_MAX_PARTITIONS workers) when the
+/// workers run the soft step's stages (tbSolveSubStepsOnWorkers) and no joint links bodies; else 1.
+static int tbPartitionRequest(const tbStepContext* context)
+{
+	const tbWorld* world = context->world;
+	int workers = tbWorkerCount(world);
+	if (workers < 2 || world->def.solver != tb_solverSoft || context->enableWarmStarting == false ||
+		world->solverJointCount > 0)
+	{
+		return 1;
+	}
+	return workers <= TB_MAX_PARTITIONS ? workers : 1;
+}
+
+/// The lowest solver index among a contact's bodies that are not the static stand-in (bodyCount
+/// when neither is), and the highest (the lowest when only one is).
+static inline void tbKeySpan(tbContactKey key, int bodyCount, int* lo, int* hi)
+{
+	int a = tbMinInt(key.indexA, key.indexB);
+	int b = tbMaxInt(key.indexA, key.indexB);
+	*lo = a;
+	*hi = b < bodyCount ? b : a;
+}
+
+/// Cuts of the solver body order into `request` runs that no contact straddles, nearest to equal
+/// contact counts: context->partitionBodyStart. Returns false when there are not enough cuts.
+/// cover and weight: bodyCount + 1 ints each.
+static bool tbCutPartitions(tbStepContext* context, int request, int* cover, int* weight)
+{
+	int n = context->constraintCount;
+	int bodyCount = context->bodyCount;
+	memset(cover, 0, sizeof(int) * (size_t)(bodyCount + 1));
+	memset(weight, 0, sizeof(int) * (size_t)(bodyCount + 1));
+	for (int i = 0; i < n; ++i)
+	{
+		int lo, hi;
+		tbKeySpan(context->keys[i], bodyCount, &lo, &hi);
+		weight[lo] += 1;
+		if (hi > lo)
+		{
+			cover[lo + 1] += 1; // a cut before any body in (lo, hi] would split this contact
+			cover[hi + 1] -= 1;
+		}
+	}
+	int* start = context->partitionBodyStart;
+	start[0] = 0;
+	int found = 1;
+	int target = (int)((int64_t)n * found / request);
+	int open = 0;			// contacts straddling a cut before body s
+	int before = weight[0]; // contacts whose lowest body is below s
+	int candidate = -1, candidateBefore = 0; // the last valid cut below the target
+	for (int s = 1; s < bodyCount && found < request; ++s)
+	{
+		open += cover[s];
+		if (open == 0)
+		{
+			if (before < target)
+			{
+				candidate = s;
+				candidateBefore = before;
+			}
+			else
+			{
+				bool below = candidate > start[found - 1] && target - candidateBefore < before - target;
+				start[found++] = below ? candidate : s;
+				target = (int)((int64_t)n * found / request);
+				candidate = below ? s : -1;
+				candidateBefore = before;
+			}
+		}
+		before += weight[s];
+	}
+	if (found == request - 1 && candidate > start[found - 1])
+	{
+		start[found++] = candidate;
+	}
+	start[request] = bodyCount;
+	return found == request;
+}
+
+/// The partition of a contact: the run holding its lowest body.
+static inline int tbKeyPartition(const tbStepContext* context, tbContactKey key)
+{
+	int lo = tbMinInt(key.indexA, key.indexB);
+	int p = 0;
+	while (p + 1 < context->partitionCount && lo >= context->partitionBodyStart[p + 1])
+	{
+		p += 1;
+	}
+	return p;
+}
+
+/// Partitions for the step (context->partitionCount, 0 when none) and each colour's contacts per
+/// partition. cover and weight: bodyCount + 1 ints each (request > 1).
+static void tbPartitionColors(tbStepContext* context, int request, const uint8_t* colors,
+							  const int counts[TB_GRAPH_COLOR_COUNT + 1],
+							  tbPartitionCounts* partitionCounts, int* cover, int* weight)
+{
+	int n = context->constraintCount;
+	memset(partitionCounts, 0, sizeof(*partitionCounts));
+	context->partitionCount = 0;
+	// Contacts without a colour are solved in one stage after the colours: no partitions then.
+	bool worth = request > 1 && counts[TB_GRAPH_COLOR_COUNT] == 0 && context->bodyCount >= 2 * request;
+	if (worth && tbCutPartitions(context, request, cover, weight))
+	{
+		context->partitionCount = request;
+		int load[TB_MAX_PARTITIONS] = {0};
+		for (int i = 0; i < n; ++i)
+		{
+			int p = tbKeyPartition(context, context->keys[i]);
+			partitionCounts->n[colors[i]][p] += 1;
+			load[p] += 1;
+		}
+		int largest = 0;
+		for (int p = 0; p < request; ++p)
+		{
+			largest = tbMaxInt(largest, load[p]);
+		}
+		if ((int64_t)largest * request * 16 <= (int64_t)n * 17)
+		{
+			return;
+		}
+		context->partitionCount = 0; // too uneven: the shared stages balance better
+		memset(partitionCounts, 0, sizeof(*partitionCounts));
+	}
+	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
+	{
+		partitionCounts->n[k][0] = counts[k];
+	}
+}
+
 void tbColorConstraints(tbStepContext* context)
 {
 	int n = context->constraintCount;
 	int bodyCount = context->bodyCount;
 	int counts[TB_GRAPH_COLOR_COUNT + 1] = {0};
+	tbPartitionCounts partitionCounts;
+	int request = tbPartitionRequest(context);
 	context->world->colorCacheStep = context->world->stepIndex; // kept or made below
-	if (tbSameColorInputs(context))
+	if (tbSameColorInputs(context, request))
 	{
 		const tbContactColorCache* cache = context->world->contactColorCache;
-		tbLayOutColors(context, cache->counts);
+		context->partitionCount = cache->partitionCount;
+		memcpy(context->partitionBodyStart, cache->partitionBodyStart, sizeof(context->partitionBodyStart));
+		tbLayOutColors(context, cache->counts, &cache->partitionCounts);
 		memcpy(context->wideLocation, cache->wideLocation, sizeof(int) * (size_t)n);
 		context->locationById = cache->locationById; // read only until the next colouring
 		for (int i = 0; i < n && context->overflowCount < cache->counts[TB_GRAPH_COLOR_COUNT]; ++i)
@@ -234,17 +407,20 @@ void tbColorConstraints(tbStepContext* context)
 	int bounceCount = tbScatterKeys(context);
 
 	int maskBytes = (int)sizeof(uint32_t) * (bodyCount + 1);
-	int colorBytes = n;
-	int scratchBytes = maskBytes + colorBytes;
+	int colorBytes = (n + 3) & ~3;
+	int scratchBytes = maskBytes + colorBytes + (request > 1 ? (int)sizeof(int) * (bodyCount + 1) : 0);
 	char* scratch = tbArenaAlloc(&context->world->stepArena, scratchBytes);
 	uint32_t* bodyMasks = (uint32_t*)scratch;
 	uint8_t* colors = (uint8_t*)(scratch + maskBytes);
 	memset(bodyMasks, 0, (size_t)maskBytes);
 	tbAssignColors(context, bodyMasks, colors, counts);
-	tbLayOutColors(context, counts);
+	// The masks are done with: their bodyCount + 1 ints and the ones after the colours are the
+	// partition sweep's.
+	tbPartitionColors(context, request, colors, counts, &partitionCounts, (int*)scratch,
+					  (int*)(scratch + maskBytes + colorBytes));
+	tbLayOutColors(context, counts, &partitionCounts);
 	context->locationById = tbArenaAlloc(&context->world->stepArena, (int)sizeof(int) * tbMaxInt(n, 1));
-	int* blockStart = context->colorBlockStart;
-	int filled[TB_GRAPH_COLOR_COUNT] = {0};
+	int filled[TB_GRAPH_COLOR_COUNT][TB_MAX_PARTITIONS] = {{0}};
 	// The overflow is solved one constraint at a time, in the solve order.
 	for (int i = 0; i < n; ++i)
 	{
@@ -257,9 +433,9 @@ void tbColorConstraints(tbStepContext* context)
 	// Within a colour no moving body appears twice, so where a constraint sits among its colour's
 	// lanes does not change the result. The lanes are handed out in contact-id order, the order in
 	// which the preparation reads the contacts and writes the lanes (contact_solver.c): each
-	// colour's blocks are then written front to back, one stream per colour. Handed out in solve
-	// order (a hash of the contact id, island.c), every block was written lane by lane from
-	// sixteen places at once and fell out of the cache between its lanes.
+	// colour's blocks are then written front to back, one stream per colour (and partition). Handed
+	// out in solve order (a hash of the contact id, island.c), every block was written lane by lane
+	// from sixteen places at once and fell out of the cache between its lanes.
 	const int* slots = context->world->solverSlots;
 	for (int i = 0; i < n; ++i)
 	{
@@ -268,29 +444,38 @@ void tbColorConstraints(tbStepContext* context)
 		int location = -1;
 		if (k != TB_GRAPH_COLOR_COUNT)
 		{
-			location = blockStart[k] * TB_SIMD_WIDTH + filled[k]++;
+			int p = context->partitionCount > 0 ? tbKeyPartition(context, context->keys[index]) : 0;
+			location = context->partitionBlockStart[k][p] * TB_SIMD_WIDTH + filled[k][p]++;
 			context->wideLocation[index] = location;
 		}
 		context->locationById[i] = location;
 	}
 	if (n > 0)
 	{
-		tbKeepColors(context, counts, bounceCount);
+		tbKeepColors(context, counts, &partitionCounts, request, bounceCount);
 	}
 }
 
-static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1])
+static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COLOR_COUNT + 1],
+						   const tbPartitionCounts* partitionCounts)
 {
 	int n = context->constraintCount;
 	int bodyCount = context->bodyCount;
+	int partitions = tbMaxInt(context->partitionCount, 1);
 
-	// Blocks of TB_SIMD_WIDTH lanes, colour after colour; the last block of a colour is padded.
+	// Blocks of TB_SIMD_WIDTH lanes, colour after colour, and within a colour partition after
+	// partition; the last block of each is padded.
 	int* blockStart = context->colorBlockStart;
 	int blockCount = 0;
 	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
 	{
 		blockStart[k] = blockCount;
-		blockCount += (counts[k] + TB_SIMD_WIDTH - 1) / TB_SIMD_WIDTH;
+		for (int p = 0; p < partitions; ++p)
+		{
+			context->partitionBlockStart[k][p] = blockCount;
+			blockCount += (partitionCounts->n[k][p] + TB_SIMD_WIDTH - 1) / TB_SIMD_WIDTH;
+		}
+		context->partitionBlockStart[k][partitions] = blockCount;
 	}
 	blockStart[TB_GRAPH_COLOR_COUNT] = blockCount;
 	int overflowCount = counts[TB_GRAPH_COLOR_COUNT];
@@ -314,13 +499,16 @@ static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COL
 		context->colorCount += counts[k] > 0 ? 1 : 0;
 	}
 
-	// Only the last block of a colour can have padding lanes; the preparation (contact_solver.c)
-	// then writes every field of each contact's lane.
+	// Only the last block of a colour's partition can have padding lanes; the preparation
+	// (contact_solver.c) then writes every field of each contact's lane.
 	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
 	{
-		if (counts[k] % TB_SIMD_WIDTH != 0)
+		for (int p = 0; p < partitions; ++p)
 		{
-			tbInitWideConstraint(context->wideConstraints + blockStart[k + 1] - 1, bodyCount);
+			if (partitionCounts->n[k][p] % TB_SIMD_WIDTH != 0)
+			{
+				tbInitWideConstraint(context->wideConstraints + context->partitionBlockStart[k][p + 1] - 1, bodyCount);
+			}
 		}
 	}
 }

@@ -151,6 +151,9 @@ typedef enum tbBiasPolicy
 /// room for crowded bodies.
 #define TB_GRAPH_COLOR_COUNT 24
 
+/// Most island partitions of a step (constraint_graph.c): one per worker, up to this many.
+#define TB_MAX_PARTITIONS 8
+
 /// The accumulated impulses of one manifold point of four contacts, lane by lane (N·s): 48 bytes.
 typedef struct tbWideImpulses
 {
@@ -238,6 +241,14 @@ typedef struct tbStepContext
 	int* locationById;
 	int colorCount;											///< colours in use this step
 	int colorBlockStart[TB_GRAPH_COLOR_COUNT + 1]; ///< blocks of colour k: [start[k], start[k + 1])
+	/// Island partitions (constraint_graph.c, tbFindPartitions), 0 when there are none: partition p
+	/// is the solver bodies [partitionBodyStart[p], partitionBodyStart[p + 1]) and the contacts on
+	/// them, which no contact links to another partition's bodies. Each colour's blocks then hold
+	/// one partition's contacts after another: partition p's blocks of colour k are
+	/// [partitionBlockStart[k][p], partitionBlockStart[k][p + 1]).
+	int partitionCount;
+	int partitionBodyStart[TB_MAX_PARTITIONS + 1];
+	int partitionBlockStart[TB_GRAPH_COLOR_COUNT][TB_MAX_PARTITIONS + 1];
 	// Joints (constraint_graph.c): world->solverJoints reordered. First the joints of small
 	// mechanisms, [0, jointSmallCount), in units of whole mechanisms [jointUnitStart[u],
 	// jointUnitStart[u + 1]) for u < jointUnitCount; then colour groups: group k holds

@@ -338,6 +338,122 @@ Test(constraint_graph, no_constraints_no_blocks)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Island partitions (constraint_graph.c, tbCutPartitions): with workers, separate runs of the
+// solver bodies become partitions, each colour's blocks holding one run's contacts after another.
+
+static void* NeverCalledEnqueue(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* userContext)
+{
+	(void)task, (void)itemCount, (void)minRange, (void)taskContext, (void)userContext;
+	return NULL;
+}
+
+/// Two chains on the ground: bodies [0, firstRun) and [firstRun, 20), each body also on the static
+/// stand-in; bodies 20..38 touch nothing. Optionally one more contact, linkA–linkB.
+static int BuildTwoRuns(tbContactConstraint* constraints, int firstRun, int linkA, int linkB)
+{
+	int n = 0;
+	for (int i = 0; i < 20; ++i)
+	{
+		if (i + 1 != firstRun && i + 1 < 20)
+		{
+			constraints[n++] = MakeConstraint(i, i + 1);
+		}
+		constraints[n++] = MakeConstraint(STATIC_INDEX, i);
+	}
+	if (linkA >= 0)
+	{
+		constraints[n++] = MakeConstraint(linkA, linkB);
+	}
+	return n;
+}
+
+/// The colouring of BuildTwoRuns' contacts for a world of two workers.
+static void ColorForTwoWorkers(tbStepContext* context, tbWorld* world, tbContactConstraint* constraints, int firstRun,
+							   int linkA, int linkB)
+{
+	memset(world, 0, sizeof(*world));
+	world->def.enqueueTask = NeverCalledEnqueue; // only its presence counts: the colouring calls no task
+	world->def.workerCount = 2;
+	world->def.solver = tb_solverSoft;
+	memset(context, 0, sizeof(*context));
+	context->world = world;
+	context->enableWarmStarting = true;
+	context->bodyCount = BODY_COUNT;
+	context->constraints = constraints;
+	context->constraintCount = BuildTwoRuns(constraints, firstRun, linkA, linkB);
+	ColorAndPack(context, world, NULL);
+}
+
+Test(constraint_graph, separate_runs_become_partitions)
+{
+	tbContactConstraint constraints[64];
+	tbWorld world;
+	tbStepContext context;
+	ColorForTwoWorkers(&context, &world, constraints, 10, -1, -1);
+	int n = context.constraintCount;
+	// 19 contacts on bodies 0..9 and 19 on 10..19: the cut at 10 splits them evenly; the bodies
+	// touching nothing go with the last run.
+	cr_assert_eq(context.partitionCount, 2);
+	cr_expect_eq(context.partitionBodyStart[0], 0);
+	cr_expect_eq(context.partitionBodyStart[1], 10);
+	cr_expect_eq(context.partitionBodyStart[2], BODY_COUNT);
+	int seen[64] = {0};
+	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
+	{
+		cr_expect_eq(context.partitionBlockStart[k][0], context.colorBlockStart[k]);
+		cr_expect_eq(context.partitionBlockStart[k][2], context.colorBlockStart[k + 1]);
+		for (int p = 0; p < 2; ++p)
+		{
+			for (int b = context.partitionBlockStart[k][p]; b < context.partitionBlockStart[k][p + 1]; ++b)
+			{
+				for (int lane = 0; lane < TB_SIMD_WIDTH; ++lane)
+				{
+					int index = LaneOwner(&context, b * TB_SIMD_WIDTH + lane);
+					if (index < 0)
+					{
+						cr_expect_eq(context.wideConstraints[b].indexA[lane], STATIC_INDEX, "padding lane");
+						cr_expect_eq(context.wideConstraints[b].indexB[lane], STATIC_INDEX, "padding lane");
+						continue;
+					}
+					seen[index] += 1;
+					const tbContactConstraint* c = constraints + index;
+					int body = c->indexA != STATIC_INDEX ? c->indexA : c->indexB;
+					cr_expect_eq(body >= 10, p == 1, "colour %d: constraint %d (body %d) in partition %d", k, index,
+								 body, p);
+				}
+			}
+		}
+	}
+	for (int i = 0; i < n; ++i)
+	{
+		cr_expect_eq(seen[i], 1, "constraint %d in %d lanes", i, seen[i]);
+	}
+	tbReleaseColors(&context);
+	tbDestroyContactColorCache(&world);
+	tbArenaDestroy(&world.stepArena);
+}
+
+// No partitions when a contact links the runs (between two dynamic bodies, or through a kinematic
+// body, whose state the other run would read while its owner integrates it), or when the only cut
+// leaves one run with more than 1/16 above half the contacts (27 against 11).
+Test(constraint_graph, linked_or_uneven_runs_share_the_stages)
+{
+	const int cases[3][3] = {{10, 9, 10}, {10, 5, KINEMATIC_BODY}, {14, -1, -1}};
+	for (int c = 0; c < 3; ++c)
+	{
+		tbContactConstraint constraints[64];
+		tbWorld world;
+		tbStepContext context;
+		ColorForTwoWorkers(&context, &world, constraints, cases[c][0], cases[c][1], cases[c][2]);
+		cr_expect_eq(context.partitionCount, 0, "case %d", c);
+		cr_expect(context.wideCount > 0, "case %d: still coloured", c);
+		tbReleaseColors(&context);
+		tbDestroyContactColorCache(&world);
+		tbArenaDestroy(&world.stepArena);
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
 // Wide against scalar on whole worlds
 
 #define TIME_STEP (1.0f / 60.0f)
