@@ -154,7 +154,7 @@ void tbBroadPhase_Destroy(tbBroadPhase* bp)
 	tbFree(bp->table.proxies, bp->table.capacity * (int)sizeof(tbBroadProxy));
 	tbFree(bp->moveBuffer, bp->moveCapacity * (int)sizeof(int));
 	tbPairList_Destroy(&bp->pairList);
-	for (int i = 0; i < TB_MAX_WORKERS; ++i)
+	for (int i = 0; i < 2 * TB_MAX_WORKERS; ++i)
 	{
 		tbPairList_Destroy(bp->workerPairs + i);
 	}
@@ -501,7 +501,7 @@ static void tbFindPairsTask(int start, int end, uint32_t workerIndex, void* cont
 }
 
 void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext, int workerCount,
-									   bool deferRefresh)
+									   int slotCount, bool deferRefresh)
 {
 	bool tree = bp->method == tb_broadPhaseTree;
 	if ((tree == false && bp->method != tb_broadPhaseSpatialHash) || workerCount <= 1)
@@ -518,7 +518,7 @@ void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, 
 	{
 		tbSpatialHash_PrepareFind(bp->hash, &bp->table);
 	}
-	for (int w = 0; w < workerCount; ++w)
+	for (int w = 0; w < slotCount; ++w)
 	{
 		bp->workerPairs[w].count = 0;
 		bp->workerPairs[w].filter = bp->pairList.filter;
@@ -527,7 +527,7 @@ void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, 
 		bp->workerPairs[w].pendingCount = 0;
 	}
 	run(tbFindPairsTask, bp->moveCount, 64, bp, runnerContext);
-	for (int w = 0; w < workerCount; ++w)
+	for (int w = 0; w < slotCount; ++w)
 	{
 		const tbPairList* list = bp->workerPairs + w;
 		for (int i = 0; i < list->count; ++i)

@@ -38,7 +38,7 @@ typedef struct tbBroadPhase
 	// Pairs found by the last UpdatePairs (sorted, unique), with the optional pair filter.
 	tbPairList pairList;
 	// Pairs each worker found (tree method on workers), merged into pairList before the sort.
-	tbPairList workerPairs[TB_MAX_WORKERS];
+	tbPairList workerPairs[2 * TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
 
 	// Method state. Only the selected method's state is live.
 	tbDynamicTree staticTree;
@@ -95,8 +95,9 @@ typedef void tbRangeRunnerFcn(tbTaskCallback* task, int itemCount, int minRange,
 /// it would after the refresh) and its refresh, a serial rebuild or re-insertion, is left to
 /// tbBroadPhase_FinishRefresh, which the caller runs while the workers do other work (the narrow
 /// phase). The refreshed tree is the same either way: nothing it depends on changes in between.
+/// slotCount: the worker indices the runner's tasks may see (tbWorkerSlotCount, task.h).
 void tbBroadPhase_UpdatePairsOnWorkers(tbBroadPhase* bp, tbRangeRunnerFcn* run, void* runnerContext,
-									   int workerCount, bool deferRefresh);
+									   int workerCount, int slotCount, bool deferRefresh);
 /// Whether a deferred refresh is waiting (tbBroadPhase_FinishRefresh).
 static inline bool tbBroadPhase_RefreshPending(const tbBroadPhase* bp)
 {

@@ -367,7 +367,7 @@ void tbUpdatePairsStage(tbWorld* world)
 	// query the world.
 	int workers = tbWorkerCount(world);
 	bool deferRefresh = workers > 1 && world->preSolveFcn == NULL;
-	tbBroadPhase_UpdatePairsOnWorkers(bp, tbRunOnWorkers, world, workers, deferRefresh);
+	tbBroadPhase_UpdatePairsOnWorkers(bp, tbRunOnWorkers, world, workers, tbWorkerSlotCount(world), deferRefresh);
 	world->counters.pairCandidates = bp->pairList.count;
 	// Every pair passed tbContactPairFilter as it was found, and the pairs are unique: each
 	// becomes a contact.
@@ -1052,10 +1052,10 @@ void tbCollideStage(tbWorld* world)
 	{
 		world->collideKeys[world->collideKeyCount].step = world->stepIndex - 2u;
 	}
-	int workers = tbWorkerCount(world);
-	char* tallyBytes = tbArenaAlloc(&world->stepArena, (workers + 1) * (int)sizeof(tbCollideTally));
+	int slots = tbWorkerSlotCount(world); // task.h: the spare slots too
+	char* tallyBytes = tbArenaAlloc(&world->stepArena, (slots + 1) * (int)sizeof(tbCollideTally));
 	world->collideTallies = (tbCollideTally*)(((uintptr_t)tallyBytes + 63) & ~(uintptr_t)63);
-	memset(world->collideTallies, 0, (size_t)workers * sizeof(tbCollideTally));
+	memset(world->collideTallies, 0, (size_t)slots * sizeof(tbCollideTally));
 	if (tbBroadPhase_RefreshPending(&world->broadPhase))
 	{
 		tbParallelForAlongside(world, tbCollideTask, world->stepContactCount, 64, world, tbFinishTreeRefresh,
@@ -1066,7 +1066,7 @@ void tbCollideStage(tbWorld* world)
 		tbParallelFor(world, tbCollideTask, world->stepContactCount, 64, world);
 	}
 	tbCollideTally total = {0};
-	for (int w = 0; w < workers; ++w)
+	for (int w = 0; w < slots; ++w)
 	{
 		tbAddTally(&total, world->collideTallies + w);
 	}

@@ -367,7 +367,7 @@ typedef struct tbContinuousTaskContext
 {
 	tbWorld* world;
 	const int* bodies;
-	tbToiCounters counters[TB_MAX_WORKERS];
+	tbToiCounters counters[2 * TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
 } tbContinuousTaskContext;
 
 static void tbContinuousTask(int start, int end, uint32_t workerIndex, void* context)
@@ -453,7 +453,7 @@ void tbContinuousStage(tbWorld* world)
 	{
 		tbSolveFastBody(world, fast[world->awakeBodyCount - 1 - i], task->counters);
 	}
-	for (int w = 0; w < TB_MAX_WORKERS; ++w)
+	for (int w = 0; w < tbWorkerSlotCount(world); ++w)
 	{
 		world->counters.toiCalls += task->counters[w].calls;
 		world->counters.toiIterationsMax = tbMaxInt(world->counters.toiIterationsMax, task->counters[w].iterationsMax);

@@ -6,6 +6,8 @@
 
 #include "world.h"
 
+#include <stdatomic.h>
+
 #if defined(__SSE2__) || defined(_M_X64)
 #include <emmintrin.h>
 #define TB_PAUSE() _mm_pause()
@@ -28,6 +30,96 @@ int tbWorkerCount(const tbWorld* world)
 	return world->def.enqueueTask != NULL ? world->def.workerCount : 1;
 }
 
+int tbWorkerSlotCount(const tbWorld* world)
+{
+	return 2 * tbWorkerCount(world);
+}
+
+// The task callback's contract (types.h) gives every range a worker index in [0, workerCount), and
+// the step's per-worker buffers are indexed by it. A task system that hands out a larger one (a
+// pool of more threads than tbWorld_SetWorkerCount allows) would write past them, so the library's
+// tasks run through this guard: a valid index passes straight on; a range with an invalid one
+// borrows a spare slot [workerCount, 2·workerCount) for its duration (a bit mask, claimed by
+// compare-and-swap; with every spare lent out it waits for one), and the caller reports the broken
+// contract once the task is done. Sums and pair lists do not depend on which slot a range used.
+typedef struct tbTaskGuard
+{
+	tbTaskCallback* task;
+	void* context;
+	uint32_t workers;
+	atomic_uint_fast64_t spares; ///< bit s: spare slot workers + s is free
+	atomic_uint badIndex;		 ///< the first invalid index seen + 1, or 0
+} tbTaskGuard;
+
+static inline int tbLowestBit64(uint_fast64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	return __builtin_ctzll((unsigned long long)x);
+#else
+	int n = 0;
+	while ((x & 1u) == 0u)
+	{
+		x >>= 1;
+		n += 1;
+	}
+	return n;
+#endif
+}
+
+static void tbGuardedTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
+{
+	tbTaskGuard* guard = context;
+	if (workerIndex < guard->workers)
+	{
+		guard->task(startIndex, endIndex, workerIndex, guard->context);
+		return;
+	}
+	unsigned int none = 0u;
+	atomic_compare_exchange_strong(&guard->badIndex, &none, workerIndex + 1u);
+	int rounds = 0;
+	uint_fast64_t free = atomic_load(&guard->spares);
+	for (;;)
+	{
+		if (free == 0u)
+		{
+			tbSpinPause(&rounds);
+			free = atomic_load(&guard->spares);
+		}
+		else if (atomic_compare_exchange_weak(&guard->spares, &free, free & (free - 1u)))
+		{
+			break;
+		}
+	}
+	int spare = tbLowestBit64(free);
+	guard->task(startIndex, endIndex, guard->workers + (uint32_t)spare, guard->context);
+	atomic_fetch_or(&guard->spares, (uint_fast64_t)1u << spare);
+}
+
+static void tbInitTaskGuard(tbTaskGuard* guard, tbTaskCallback* task, void* context, int workers)
+{
+	guard->task = task;
+	guard->context = context;
+	guard->workers = (uint32_t)workers;
+	atomic_init(&guard->spares, workers >= 64 ? ~(uint_fast64_t)0u : ((uint_fast64_t)1u << workers) - 1u);
+	atomic_init(&guard->badIndex, 0u);
+}
+
+static void tbFinishGuardedTask(tbWorld* world, void* handle, tbTaskGuard* guard)
+{
+	if (handle != NULL)
+	{
+		world->def.finishTask(handle, world->def.userTaskContext);
+	}
+	unsigned int bad = atomic_load(&guard->badIndex);
+	if (bad != 0u)
+	{
+		tbReportError("tbWorld_Step",
+					  "the task system gave worker index %u, outside [0, workerCount = %u): the range ran in a spare "
+					  "slot; give indices below tbWorldDef::workerCount (tbWorld_SetWorkerCount)",
+					  bad - 1u, guard->workers);
+	}
+}
+
 void tbParallelFor(tbWorld* world, tbTaskCallback* task, int itemCount, int minRange, void* context)
 {
 	if (itemCount <= 0)
@@ -40,11 +132,10 @@ void tbParallelFor(tbWorld* world, tbTaskCallback* task, int itemCount, int minR
 		task(0, itemCount, 0, context);
 		return;
 	}
-	void* handle = world->def.enqueueTask(task, itemCount, minRange, context, world->def.userTaskContext);
-	if (handle != NULL)
-	{
-		world->def.finishTask(handle, world->def.userTaskContext);
-	}
+	tbTaskGuard guard;
+	tbInitTaskGuard(&guard, task, context, workers);
+	void* handle = world->def.enqueueTask(tbGuardedTask, itemCount, minRange, &guard, world->def.userTaskContext);
+	tbFinishGuardedTask(world, handle, &guard);
 }
 
 void tbParallelForAlongside(tbWorld* world, tbTaskCallback* task, int itemCount, int minRange, void* context,
@@ -57,12 +148,11 @@ void tbParallelForAlongside(tbWorld* world, tbTaskCallback* task, int itemCount,
 		tbParallelFor(world, task, itemCount, minRange, context);
 		return;
 	}
-	void* handle = world->def.enqueueTask(task, itemCount, minRange, context, world->def.userTaskContext);
+	tbTaskGuard guard;
+	tbInitTaskGuard(&guard, task, context, workers);
+	void* handle = world->def.enqueueTask(tbGuardedTask, itemCount, minRange, &guard, world->def.userTaskContext);
 	alongside(alongsideContext);
-	if (handle != NULL)
-	{
-		world->def.finishTask(handle, world->def.userTaskContext);
-	}
+	tbFinishGuardedTask(world, handle, &guard);
 }
 
 void tbSpinPause(int* rounds)

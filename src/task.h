@@ -8,9 +8,16 @@ struct tbWorld;
 /// Workers the step may use: the world's workerCount when task callbacks are set, else 1.
 int tbWorkerCount(const struct tbWorld* world);
 
+/// Per-worker slots a task run by tbParallelFor may be handed: workerIndex is below this. The
+/// game's worker indices [0, workerCount), and as many spares for a task system that breaks the
+/// callback's contract (an index at or beyond workerCount: tbParallelFor reports it and lends the
+/// range a spare slot), so per-worker buffers of this many entries are never overrun.
+int tbWorkerSlotCount(const struct tbWorld* world);
+
 /// Run task over items [0, itemCount) on the world's workers, ranges of at least minRange items,
 /// and return when every item has run. Without task callbacks (or with one worker, or too few
-/// items to split) it runs on the caller as task(0, itemCount, 0, context).
+/// items to split) it runs on the caller as task(0, itemCount, 0, context). The task sees a worker
+/// index below tbWorkerSlotCount, never shared by two ranges running at once.
 void tbParallelFor(struct tbWorld* world, tbTaskCallback* task, int itemCount, int minRange, void* context);
 
 /// tbParallelFor, with `alongside(alongsideContext)` run on the caller while the workers start on

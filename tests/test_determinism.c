@@ -333,3 +333,43 @@ Test(determinism, separate_piles_identical_on_any_number_of_workers)
 	TaskSystem_Destroy(overrides.tasks);
 	Scene_Destroy(scene);
 }
+
+static void CountError(const char* message, void* context)
+{
+	int* count = context;
+	*count += strstr(message, "worker index") != NULL ? 1 : 0;
+}
+
+// A task system that hands out worker indices at or beyond the world's worker count breaks the
+// callback's contract (a pool of 4 threads serving a world told to use 2, tbWorld_SetWorkerCount):
+// the step's per-worker buffers must not be overrun. The ranges run in spare slots, each step
+// reports the broken contract, and the results are 1 worker's bits.
+Test(determinism, worker_indices_beyond_the_count_are_reported_not_overrun)
+{
+	int events1;
+	uint64_t one = RunOnWorkers("rain_rigid", 1, 60, &events1);
+	Scene* scene = Catalogue_Build("rain_rigid");
+	cr_assert_not_null(scene);
+	SceneOverrides overrides;
+	memset(&overrides, 0, sizeof(overrides));
+	overrides.tasks = TaskSystem_Create(4);
+	cr_assert_not_null(overrides.tasks);
+	SceneWorld sw = Scene_BuildWorld(scene, &overrides);
+	tbWorld_SetWorkerCount(sw.worldId, 2);
+	int errors = 0;
+	tbSetErrorCallback(CountError, &errors);
+	int events = 0;
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(sw.worldId, scene->timeStep, scene->subSteps);
+		tbContactEvents e = tbWorld_GetContactEvents(sw.worldId);
+		events += e.beginCount + 3 * e.endCount;
+	}
+	tbSetErrorCallback(NULL, NULL);
+	cr_expect_gt(errors, 0, "the broken contract was not reported");
+	cr_expect_eq(HashWorld(&sw), one, "other bits than 1 worker's");
+	cr_expect_eq(events, events1, "other events than 1 worker's");
+	SceneWorld_Destroy(&sw);
+	TaskSystem_Destroy(overrides.tasks);
+	Scene_Destroy(scene);
+}
