@@ -6,8 +6,8 @@
 // stage's units may run on any worker in any order and the result is bit-identical to the serial
 // loop; between stages everyone waits (a colour reads what the previous one wrote).
 //
-// Synchronisation (C11 atomics, no locks): every stage has its own counters, the next unit to
-// claim and the units done. One participant, the orchestrator, opens the stages one after another
+// Synchronisation (C11 atomics, no locks): every stage has its own counters, the units claimed
+// in each worker's share (tbWorkOnStage) and the units done. One participant, the orchestrator, opens the stages one after another
 // and waits for each to be done before opening the next; every participant (the orchestrator too)
 // claims units of the open stage until none is left. The orchestrator is whoever arrives first,
 // the caller or one of the tasks it enqueued (compare-and-swap), and it can finish every stage on
@@ -69,7 +69,7 @@ typedef struct tbStage
 	int count;		///< bodies or blocks
 	int unitSize;
 	int unitCount;
-	int firstClaim; ///< this stage's units in the program's claim flags
+	int index;		///< in the program's stage list (its column of the share counters)
 	alignas(64) atomic_int doneUnits; ///< on a line of its own: every worker counts here
 } tbStage;
 
@@ -79,8 +79,11 @@ typedef struct tbStageProgram
 	int workerCount;
 	tbStage* stages;
 	int stageCount;
-	atomic_uchar* claims; ///< one flag per unit of every stage: set by the worker that runs it
-	int claimCount;
+	/// Per worker share and stage, the units of the share claimed so far: row w (worker w's, on
+	/// lines of its own) holds a counter per stage, so a worker claims its own units with an
+	/// uncontended increment and touches another's row only to help with what is left.
+	atomic_int* shareClaims;
+	int shareStride; ///< counters per row: the stage count rounded up to a whole line
 	atomic_int openStage; ///< stages [0, openStage] may be worked on; stageCount: all done
 	atomic_int orchestrator; ///< 0 until a participant takes the role
 } tbStageProgram;
@@ -104,8 +107,7 @@ static void tbAddStage(tbStageProgram* p, tbStageKind kind, int start, int count
 	s->count = count;
 	s->unitSize = unitSize;
 	s->unitCount = (count + unitSize - 1) / unitSize;
-	s->firstClaim = p->claimCount;
-	p->claimCount += s->unitCount;
+	s->index = p->stageCount - 1;
 	atomic_init(&s->doneUnits, 0);
 }
 
@@ -235,20 +237,34 @@ static void tbRunUnit(tbStepContext* context, const tbStage* s, int unit)
 	tbRunRange(context, s, begin, tbMinInt(s->start + s->count, begin + s->unitSize));
 }
 
-/// Run every unit of stage s nobody has claimed. Participant `slot` of n starts at its own share
-/// (slot/n of the way along), so in a stage after stage it finds the same blocks and bodies it had
-/// before in its cache, and then takes what others have not reached.
+/// Run every unit of stage s nobody has claimed. The units are cut into one contiguous share per
+/// participant; participant `slot` claims from its own share first (so in a stage after stage it
+/// finds the same blocks and bodies it had before in its cache), then helps with the others' in
+/// turn. The units done are counted once, at the end.
 static void tbWorkOnStage(tbStageProgram* p, tbStage* s, int slot)
 {
-	int start = (int)((int64_t)slot * s->unitCount / p->workerCount);
-	for (int j = 0; j < s->unitCount; ++j)
+	int shares = p->workerCount;
+	int done = 0;
+	for (int j = 0; j < shares; ++j)
 	{
-		int unit = start + j < s->unitCount ? start + j : start + j - s->unitCount;
-		if (atomic_exchange_explicit(p->claims + s->firstClaim + unit, 1, memory_order_relaxed) == 0)
+		int share = slot + j < shares ? slot + j : slot + j - shares;
+		int first = (int)((int64_t)share * s->unitCount / shares);
+		int end = (int)((int64_t)(share + 1) * s->unitCount / shares);
+		atomic_int* claimed = p->shareClaims + share * p->shareStride + s->index;
+		for (;;)
 		{
+			int unit = first + atomic_fetch_add_explicit(claimed, 1, memory_order_relaxed);
+			if (unit >= end)
+			{
+				break;
+			}
 			tbRunUnit(p->context, s, unit);
-			atomic_fetch_add_explicit(&s->doneUnits, 1, memory_order_release);
+			done += 1;
 		}
+	}
+	if (done > 0)
+	{
+		atomic_fetch_add_explicit(&s->doneUnits, done, memory_order_release);
 	}
 }
 
@@ -416,7 +432,6 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 	program.stageCount = 0;
 	program.stages = tbArenaAlloc(&world->stepArena, capacity * (int)sizeof(tbStage) + 64);
 	program.stages = (tbStage*)(((uintptr_t)program.stages + 63) & ~(uintptr_t)63); // the alignment above
-	program.claimCount = 0;
 	atomic_init(&program.openStage, -1);
 	atomic_init(&program.orchestrator, 0);
 	tbBuildSoftProgram(&program);
@@ -428,10 +443,14 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 		tbRunPartitions(&program);
 		return true;
 	}
-	program.claims = tbArenaAlloc(&world->stepArena, program.claimCount);
-	for (int i = 0; i < program.claimCount; ++i)
+	int lineInts = 64 / (int)sizeof(atomic_int);
+	program.shareStride = (program.stageCount + lineInts - 1) / lineInts * lineInts;
+	int counters = workers * program.shareStride;
+	char* claimBytes = tbArenaAlloc(&world->stepArena, counters * (int)sizeof(atomic_int) + 64);
+	program.shareClaims = (atomic_int*)(((uintptr_t)claimBytes + 63) & ~(uintptr_t)63); // rows on lines of their own
+	for (int i = 0; i < counters; ++i)
 	{
-		atomic_init(program.claims + i, 0);
+		atomic_init(program.shareClaims + i, 0);
 	}
 	void* handle = world->def.enqueueTask(tbHelperTask, workers - 1, 1, &program, world->def.userTaskContext);
 	tbParticipate(&program, 0);
