@@ -244,6 +244,9 @@ static int tbScatterKeys(const tbStepContext* context)
 // an equal share, or the bodies do not fall into runs, there is one partition and the workers
 // share every stage.
 
+/// Steps between tries after a colouring that found no partitions (half a second at 60 Hz).
+#define TB_PARTITION_RETRY_STEPS 30
+
 /// How many partitions the step could use: one per worker (up to TB_MAX_PARTITIONS workers) when the
 /// workers run the soft step's stages (tbSolveSubStepsOnWorkers) and no joint links bodies; else 1.
 static int tbPartitionRequest(const tbStepContext* context)
@@ -345,9 +348,18 @@ static void tbPartitionColors(tbStepContext* context, int request, const uint8_t
 	int n = context->constraintCount;
 	memset(partitionCounts, 0, sizeof(*partitionCounts));
 	context->partitionCount = 0;
-	// Contacts without a colour are solved in one stage after the colours: no partitions then.
-	bool worth = request > 1 && counts[TB_GRAPH_COLOR_COUNT] == 0 && context->bodyCount >= 2 * request;
-	if (worth && tbCutPartitions(context, request, cover, weight))
+	// Contacts without a colour are solved in one stage after the colours: no partitions then. A
+	// scene whose last try found none (one pile, a kinematic body across the piles) tries again
+	// only after TB_PARTITION_RETRY_STEPS, not at every colouring (the sweep is a pass over the
+	// contacts and one over the bodies; the tumbler colours every step).
+	tbWorld* world = context->world;
+	bool worth = request > 1 && counts[TB_GRAPH_COLOR_COUNT] == 0 && context->bodyCount >= 2 * request &&
+				 (int32_t)(world->stepIndex - world->partitionRetryStep) >= 0;
+	if (worth && tbCutPartitions(context, request, cover, weight) == false)
+	{
+		world->partitionRetryStep = world->stepIndex + TB_PARTITION_RETRY_STEPS;
+	}
+	else if (worth)
 	{
 		context->partitionCount = request;
 		int load[TB_MAX_PARTITIONS] = {0};
@@ -367,6 +379,7 @@ static void tbPartitionColors(tbStepContext* context, int request, const uint8_t
 			return;
 		}
 		context->partitionCount = 0; // too uneven: the shared stages balance better
+		world->partitionRetryStep = world->stepIndex + TB_PARTITION_RETRY_STEPS;
 		memset(partitionCounts, 0, sizeof(*partitionCounts));
 	}
 	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)

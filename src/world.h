@@ -325,6 +325,9 @@ typedef struct tbWorld
 	bool collideKeysUnchanged; ///< and every solver contact's key is the last step's
 	bool solverIsTouching;	///< this step's island stage found its solver contacts unchanged
 	uint32_t colorCacheStep; ///< step of the last colouring, or reuse, of contactColorCache
+	/// constraint_graph.c: after a colouring that found no island partitions, none is looked for
+	/// before this step (TB_PARTITION_RETRY_STEPS later)
+	uint32_t partitionRetryStep;
 	struct tbCollideTally* collideTallies; ///< per worker, this step's (contact.c, from the step arena)
 	int gatheredAwakeCount;	  ///< awakeBodyCount then: bodies woken since are appended after it
 	int* islandStack;
