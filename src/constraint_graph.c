@@ -44,21 +44,6 @@
 
 #include <string.h>
 
-static inline int tbLowestSetBit(uint32_t x)
-{
-#if defined(__GNUC__) || defined(__clang__)
-	return __builtin_ctz(x);
-#else
-	int n = 0;
-	while ((x & 1u) == 0u)
-	{
-		x >>= 1;
-		n += 1;
-	}
-	return n;
-#endif
-}
-
 // Colour of each constraint (or TB_GRAPH_COLOR_COUNT for overflow); counts per colour. A body takes
 // part when the constraint can change its velocity (tb_keyMovesA/B).
 static void tbAssignColors(const tbStepContext* context, uint32_t* bodyMasks, uint8_t* colors,

@@ -67,6 +67,22 @@ bool tbIsPosition(tbPos p);
 /// A world position: finite (tbCheckVec2 in the float build).
 bool tbCheckFinitePosition(const char* function, const char* name, tbPos value);
 
+/// Index of the lowest set bit of x (x ≠ 0): a colour free in a body's mask, a free slot in a set.
+static inline int tbLowestSetBit(uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	return __builtin_ctzll((unsigned long long)x);
+#else
+	int n = 0;
+	while ((x & 1u) == 0u)
+	{
+		x >>= 1;
+		n += 1;
+	}
+	return n;
+#endif
+}
+
 /// Closest point to p on the segment a–b (Ericson, Real-Time Collision Detection, §5.1.2), with
 /// its fraction t along a → b; a degenerate segment (a = b) gives a and t = 0.
 /// Ask for the cache lines of [p, p + bytes) ahead of use: for walks over a sparse subset of a big

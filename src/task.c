@@ -51,21 +51,6 @@ typedef struct tbTaskGuard
 	atomic_uint badIndex;		 ///< the first invalid index seen + 1, or 0
 } tbTaskGuard;
 
-static inline int tbLowestBit64(uint_fast64_t x)
-{
-#if defined(__GNUC__) || defined(__clang__)
-	return __builtin_ctzll((unsigned long long)x);
-#else
-	int n = 0;
-	while ((x & 1u) == 0u)
-	{
-		x >>= 1;
-		n += 1;
-	}
-	return n;
-#endif
-}
-
 static void tbGuardedTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
 {
 	tbTaskGuard* guard = context;
@@ -90,7 +75,7 @@ static void tbGuardedTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 			break;
 		}
 	}
-	int spare = tbLowestBit64(free);
+	int spare = tbLowestSetBit(free);
 	guard->task(startIndex, endIndex, guard->workers + (uint32_t)spare, guard->context);
 	atomic_fetch_or(&guard->spares, (uint_fast64_t)1u << spare);
 }
