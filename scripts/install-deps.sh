@@ -7,7 +7,7 @@ set -euo pipefail
 base=(cmake make gcc g++ pkg-config libcjson-dev libstb-dev)
 case "${1:-build}" in
 	build) packages=("${base[@]}") ;;
-	test) packages=("${base[@]}" libcriterion-dev libbox2d-dev clang) ;; # clang: libFuzzer (scripts/fuzz.sh)
+	test) packages=("${base[@]}" libcriterion-dev libbox2d-dev clang libclang-rt-dev) ;; # clang and its runtimes: libFuzzer (scripts/fuzz.sh)
 	bench) packages=("${base[@]}" libbox2d-dev libchipmunk-dev gnuplot-nox) ;;
 	*) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
 esac
