@@ -9,7 +9,7 @@
 // The time covers those moves and UpdatePairs. Brute force runs up to 16k bodies.
 //
 // Output: a human-readable table, then CSV lines "method,bodies,sizes,ms_per_step".
-#include "broad_phase.h"
+#include "broad_phase/broad_phase.h"
 
 #include <stdio.h>
 #include <string.h>

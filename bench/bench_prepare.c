@@ -10,9 +10,9 @@
 //
 // Output: CSV path,ns_per_contact
 
-#include "contact_solver.h"
-#include "solver_methods.h"
-#include "world.h"
+#include "solver/contact_solver.h"
+#include "solver/solver_methods.h"
+#include "world/world.h"
 
 #include "tumble/base.h"
 

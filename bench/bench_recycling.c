@@ -14,7 +14,7 @@
 
 #include "catalogue.h"
 #include "scene.h"
-#include "world.h"
+#include "world/world.h"
 
 #include <math.h>
 #include <stdio.h>

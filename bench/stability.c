@@ -552,7 +552,7 @@ static void WriteSweep(FILE* f, SweepResult sweep[2][SWEEP_COUNT])
 	fprintf(f, "\n## Contact stiffness: fixed or following the sub-step rate\n\n");
 	fprintf(f, "Soft step at 1–16 sub-steps. *fixed*: contactHertz 30 Hz (¼ sub-step rate cap, static contacts 2×,\n"
 			   "settled dynamic ones 1.75×); *follow*: `contactHertzFollowsSubStep`, 30·n/4 Hz (the same as fixed at 4\n"
-			   "sub-steps). Contacts stiffen by age, not load (src/solver_soft.c). Stack: top box sink after 10 s\n"
+			   "sub-steps). Contacts stiffen by age, not load (src/solver/solver_soft.c). Stack: top box sink after 10 s\n"
 			   "(\"fell\" when it toppled or slid > 0.1 m); pyramid: top box drop after 5 s; penetration: deepest over\n"
 			   "10 s in mass 1:100.\n\n");
 	fprintf(f, "| sub-steps | stack sink fixed | stack sink follow | pyramid sag fixed | pyramid sag follow | "

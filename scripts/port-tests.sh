@@ -5,7 +5,7 @@
 # Usage: scripts/port-tests.sh /path/to/box2d [BUILD_DIR]   (BUILD_DIR default build/, built first)
 # Files: test_math, test_id, test_shape, test_distance, test_dynamic_tree, test_collision,
 # test_world (with the shared benchmark scenes and ragdoll it uses). test_collision includes
-# Box2D's internal headers aabb.h and shape.h; it is built with Tumble's src/ on its include path,
+# Box2D's internal headers aabb.h and shape.h; it is built with Tumble's src/collision and src/world on its include path,
 # where the headers of those names hold the same internals (tbAABB_RayCast, the tbShape record
 # with its type and geometry fields, tbComputeFatShapeAABB), as Box2D's own test build does.
 set -euo pipefail
@@ -51,7 +51,7 @@ int main(void)
 	return 0;
 }
 MAIN
-cc -std=c17 -O1 "${flags[@]}" -I"$here/include" -I"$tmp" -c "$tmp/test_collision.c" -I"$here/src" -o "$tmp/test_collision.o"
+cc -std=c17 -O1 "${flags[@]}" -I"$here/include" -I"$tmp" -c "$tmp/test_collision.c" -I"$here/src/collision" -I"$here/src/world" -o "$tmp/test_collision.o"
 rm "$tmp/test_collision.c"
 cc -std=c17 -O1 "${flags[@]}" -I"$here/include" -I"$tmp" "$tmp"/*.c "$tmp/test_collision.o" "$build/libtumble.a" -lm -lpthread -o "$tmp/port-tests"
 "$tmp/port-tests"

@@ -6,7 +6,7 @@
 // repeat (a kinematic paddle sweeping through boxes), and the warm-up is long enough that every
 // growable array has reached its size (measured: the counts stop changing within 2 s; the warm-up
 // is 3 s).
-#include "arena.h"
+#include "core/arena.h"
 #include "catalogue.h"
 #include "scene.h"
 

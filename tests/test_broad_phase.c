@@ -3,7 +3,7 @@
 // destroys; brute force, the last, is the reference.
 #include <criterion/criterion.h>
 
-#include "broad_phase.h"
+#include "broad_phase/broad_phase.h"
 
 #include <math.h>
 #include <stdlib.h>

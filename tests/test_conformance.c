@@ -3,7 +3,7 @@
 // target transforms of sleeping bodies, null ids and the named colours. Box2D v3.2's own
 // public-API tests, renamed b2 → tb, run by hand outside this repository (docs/porting.md says how);
 // these tests keep the same behaviours checked here, with values worked out in each comment.
-#include "aabb.h"
+#include "collision/aabb.h"
 #include "tumble/tumble.h"
 
 #include <criterion/criterion.h>

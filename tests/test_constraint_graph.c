@@ -10,7 +10,7 @@
 //    (compared with ==, which ignores the sign of a zero: the wide code writes 0 − x where the
 //    scalar writes −x, the one difference in the arithmetic). Soft step and Baumgarte, warm
 //    starting on and off, and a friction so large that its mix is infinite (the clamp's NaN rule).
-#include "solver.h"
+#include "solver/solver.h"
 
 #include "tumble/tumble.h"
 

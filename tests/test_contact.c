@@ -15,7 +15,7 @@
 // |xB − xA|·sin(θ/2) (the kept normal is off by θ/2) plus s0·(1 − cos(θ/2)) ≤ s0·θ²/8, and
 // |xB − xA| ≤ |Δp| + θ·maxExtent (translation of the box's centre plus the arc of its farthest
 // point). Float rounding of the transforms adds a few 1e-7 m; 1e-6 m covers it.
-#include "world.h"
+#include "world/world.h"
 
 #include <criterion/criterion.h>
 

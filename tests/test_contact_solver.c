@@ -1,8 +1,8 @@
 // Unit checks of the solve stage on a hand-built world (no broad phase, no narrow phase): one
 // dynamic unit-mass body (B) touching the static ground (A) through a one-point manifold at B's
 // centre of mass (anchorB zero, so B's rotation never enters), normal (0, 1) from A to B.
-#include "constraint_graph.h"
-#include "solver.h"
+#include "solver/constraint_graph.h"
+#include "solver/solver.h"
 
 #include "tumble/constants.h"
 

@@ -1,9 +1,9 @@
-// tbSortIndices (src/sort.c): the radix sort that puts gathered contact ids in id order. The
+// tbSortIndices (src/core/sort.c): the radix sort that puts gathered contact ids in id order. The
 // reference is the C library's qsort on the same values; stability is checked through the
 // position each value came from.
 #include <criterion/criterion.h>
 
-#include "sort.h"
+#include "core/sort.h"
 
 #include <stdlib.h>
 

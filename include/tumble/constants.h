@@ -100,7 +100,7 @@ extern float tb_lengthUnitsPerMeter;
 /// Iteration cap of conservative advancement and of the root finders (never loop forever).
 #define TB_TOI_MAX_ITERATIONS 30
 
-/// Colours of the contact solver's constraint graph (src/solver_types.h defines the same value for
+/// Colours of the contact solver's constraint graph (src/solver/solver_types.h defines the same value for
 /// the solver; a different one there would not compile with -Werror). Contacts that find no colour
 /// go to an overflow, so tbGetGraphColor takes 0..TB_GRAPH_COLOR_COUNT, the last being the overflow
 /// (Box2D v3.2 counts its overflow among its 24).

@@ -1,0 +1,597 @@
+// Spatial-hash broad phase: a uniform grid of square cells, hashed into buckets so that only cells
+// holding something take memory (Teschner et al. 2003, "Optimized spatial hashing for collision
+// detection of deformable objects"; Ericson 2005, "Real-Time Collision Detection", §7.1).
+//
+// Every proxy is entered in each cell its fat box covers. Two boxes that overlap share at least
+// the cell holding the lower corner of their overlap, max(lowerA, lowerB): a pair met in several
+// cells is reported only from that one, so each query reports it once. Each moved proxy looks at
+// the cells it covers; when both proxies of a pair moved, the one with the larger key reports it
+// (as the tree does), and the broad phase sorts the pairs, so the set is the tree's exactly.
+//
+// Cost: hashing is O(entries) per step for the movable proxies (rebuilt each FindPairs, sleeping
+// ones included, as sort-and-sweep sweeps them) and only when they change for the static ones; a
+// query visits the entries of its cells. It suits many bodies of one size: with cells twice the
+// typical box, a box covers one to four cells and meets only its near neighbours. It suits mixed
+// sizes badly: a box much larger than a cell covers many cells, and small boxes in a large cell
+// all meet each other. A proxy covering more than TB_HASH_MAX_CELLS cells is kept apart in a
+// "large" list that every query tests directly (a long static ground, a big kinematic), so it
+// does not fill thousands of cells.
+//
+// Cell size: twice the median of the movable proxies' largest box side (their fat boxes), chosen
+// when the first proxies are hashed and re-chosen every TB_HASH_RESIZE_INTERVAL updates when the
+// median has drifted by more than 2× (a new size rebuilds the static grid).
+
+#include "spatial_hash.h"
+
+#include "brute_force.h"
+#include "core/core.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/// A proxy covering more cells than this is "large" (tested directly, not hashed).
+#define TB_HASH_MAX_CELLS 16
+/// Cell size over the median largest box side of the movable proxies.
+#define TB_HASH_CELL_FACTOR 2.0f
+/// Updates between checks of the cell size.
+#define TB_HASH_RESIZE_INTERVAL 64
+/// Cell coordinates are clamped to ±2^30 (far beyond TB_MAX_COORDINATE over any useful cell).
+#define TB_HASH_COORD_LIMIT 1073741824.0f
+
+typedef struct tbCellEntry
+{
+	int64_t cell;
+	int key;
+	int next;	///< next entry in the bucket, or −1
+	int x0, y0; ///< the proxy's lowest cell (tbCellsOf), for the pair query's lower-corner test
+} tbCellEntry;
+
+/// Cells hashed into a power-of-two number of buckets, each a chain of entries.
+typedef struct tbGrid
+{
+	int* heads;
+	int headCount;
+	tbCellEntry* entries;
+	int entryCount;
+	int entryCapacity;
+	int* large; ///< keys of the large proxies
+	int largeCount;
+	int largeCapacity;
+	int* all; ///< keys of every proxy in the grid (a query too large for cells scans these)
+	int allCount;
+	int allCapacity;
+} tbGrid;
+
+struct tbSpatialHash
+{
+	float* sides; ///< scratch for the cell size (grown only)
+	int sideCapacity;
+	float cellSize;
+	float invCellSize;
+	tbGrid staticGrid;
+	tbGrid movableGrid;
+	bool staticDirty;
+	int updateCount;
+};
+
+typedef struct tbCellRange
+{
+	int x0, y0, x1, y1;
+} tbCellRange;
+
+static int tbCellCoordinate(float value, float invCellSize)
+{
+	float c = floorf(value * invCellSize);
+	c = c < -TB_HASH_COORD_LIMIT ? -TB_HASH_COORD_LIMIT : (c > TB_HASH_COORD_LIMIT ? TB_HASH_COORD_LIMIT : c);
+	return c == c ? (int)c : 0; // NaN boxes are refused upstream; stay defined anyway
+}
+
+static tbCellRange tbCellsOf(const tbSpatialHash* hash, tbAABB box)
+{
+	tbCellRange r;
+	r.x0 = tbCellCoordinate(box.lowerBound.x, hash->invCellSize);
+	r.y0 = tbCellCoordinate(box.lowerBound.y, hash->invCellSize);
+	r.x1 = tbCellCoordinate(box.upperBound.x, hash->invCellSize);
+	r.y1 = tbCellCoordinate(box.upperBound.y, hash->invCellSize);
+	return r;
+}
+
+static int64_t tbCellKey(int x, int y)
+{
+	return (int64_t)(((uint64_t)(uint32_t)x << 32) | (uint64_t)(uint32_t)y);
+}
+
+static bool tbIsLargeRange(tbCellRange r)
+{
+	int64_t count = ((int64_t)r.x1 - r.x0 + 1) * ((int64_t)r.y1 - r.y0 + 1);
+	return count > TB_HASH_MAX_CELLS;
+}
+
+static int tbBucketOf(const tbGrid* grid, int64_t cell)
+{
+	// Fibonacci hashing of the 64-bit cell key (Knuth, TAOCP vol. 3, §6.4).
+	uint64_t h = (uint64_t)cell * UINT64_C(0x9E3779B97F4A7C15);
+	return (int)((h >> 32) & (uint64_t)(grid->headCount - 1));
+}
+
+// --------------------------------------------------------------------------------------------
+// Grids
+
+static void tbGrid_Destroy(tbGrid* grid)
+{
+	tbFree(grid->heads, grid->headCount * (int)sizeof(int));
+	tbFree(grid->entries, grid->entryCapacity * (int)sizeof(tbCellEntry));
+	tbFree(grid->large, grid->largeCapacity * (int)sizeof(int));
+	tbFree(grid->all, grid->allCapacity * (int)sizeof(int));
+	memset(grid, 0, sizeof(*grid));
+}
+
+static void tbGrid_Clear(tbGrid* grid, int expectedEntries)
+{
+	int heads = 64;
+	while (heads < 2 * expectedEntries)
+	{
+		heads *= 2;
+	}
+	if (heads > grid->headCount) // grow only: a settled scene steps without allocating
+	{
+		tbFree(grid->heads, grid->headCount * (int)sizeof(int));
+		grid->heads = tbAlloc(heads * (int)sizeof(int));
+		grid->headCount = heads;
+	}
+	memset(grid->heads, 0xff, (size_t)grid->headCount * sizeof(int)); // every head −1
+	grid->entryCount = 0;
+	grid->largeCount = 0;
+	grid->allCount = 0;
+}
+
+static void tbPushKey(int** keys, int* count, int* capacity, int key)
+{
+	if (*count == *capacity)
+	{
+		int n = *capacity;
+		int m = tbMaxInt(16, 2 * n);
+		*keys = tbGrowAlloc(*keys, n * (int)sizeof(int), m * (int)sizeof(int));
+		*capacity = m;
+	}
+	(*keys)[(*count)++] = key;
+}
+
+static void tbGrid_AddLarge(tbGrid* grid, int key)
+{
+	tbPushKey(&grid->large, &grid->largeCount, &grid->largeCapacity, key);
+}
+
+static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, int x0, int y0)
+{
+	if (grid->entryCount == grid->entryCapacity)
+	{
+		int n = grid->entryCapacity;
+		int m = tbMaxInt(256, 2 * n);
+		grid->entries = tbGrowAlloc(grid->entries, n * (int)sizeof(tbCellEntry), m * (int)sizeof(tbCellEntry));
+		grid->entryCapacity = m;
+	}
+	int bucket = tbBucketOf(grid, cell);
+	grid->entries[grid->entryCount] = (tbCellEntry){cell, key, grid->heads[bucket], x0, y0};
+	grid->heads[bucket] = grid->entryCount++;
+}
+
+/// Hash every live proxy of one kind (static or movable) into the grid.
+static void tbGrid_Build(tbGrid* grid, const tbSpatialHash* hash, const tbProxyTable* table, bool statics)
+{
+	tbGrid_Clear(grid, 2 * table->count);
+	for (int key = 0; key < table->capacity; ++key)
+	{
+		const tbBroadProxy* p = table->proxies + key;
+		if (p->isFree || (p->type == tb_proxyStatic) != statics)
+		{
+			continue;
+		}
+		tbPushKey(&grid->all, &grid->allCount, &grid->allCapacity, key);
+		tbCellRange r = tbCellsOf(hash, p->aabb);
+		if (tbIsLargeRange(r))
+		{
+			tbGrid_AddLarge(grid, key);
+			continue;
+		}
+		for (int x = r.x0; x <= r.x1; ++x)
+		{
+			for (int y = r.y0; y <= r.y1; ++y)
+			{
+				tbGrid_AddEntry(grid, tbCellKey(x, y), key, r.x0, r.y0);
+			}
+		}
+	}
+}
+
+// --------------------------------------------------------------------------------------------
+// Cell size
+
+static int tbCompareFloats(const void* a, const void* b)
+{
+	float x = *(const float*)a, y = *(const float*)b;
+	return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+/// Twice the median largest side of the movable (else all) proxies' boxes; 1 m without proxies.
+static float tbChooseCellSize(tbSpatialHash* hash, const tbProxyTable* table)
+{
+	int n = 0;
+	if (table->count > hash->sideCapacity)
+	{
+		int capacity = tbMaxInt(table->count, 2 * hash->sideCapacity);
+		hash->sides = tbGrowAlloc(hash->sides, hash->sideCapacity * (int)sizeof(float), capacity * (int)sizeof(float));
+		hash->sideCapacity = capacity;
+	}
+	float* sides = hash->sides;
+	for (int pass = 0; pass < 2 && n == 0; ++pass)
+	{
+		for (int key = 0; key < table->capacity; ++key)
+		{
+			const tbBroadProxy* p = table->proxies + key;
+			if (p->isFree || (pass == 0 && p->type == tb_proxyStatic))
+			{
+				continue;
+			}
+			tbVec2 d = tbSub(p->aabb.upperBound, p->aabb.lowerBound);
+			sides[n++] = tbMaxFloat(d.x, d.y);
+		}
+	}
+	float size = 1.0f;
+	if (n > 0)
+	{
+		qsort(sides, (size_t)n, sizeof(float), tbCompareFloats);
+		size = TB_HASH_CELL_FACTOR * sides[n / 2];
+	}
+	return size > 1e-3f && size < 1e6f ? size : 1.0f;
+}
+
+static void tbUpdateCellSize(tbSpatialHash* hash, const tbProxyTable* table)
+{
+	if (hash->cellSize > 0.0f && hash->updateCount % TB_HASH_RESIZE_INTERVAL != 0)
+	{
+		return;
+	}
+	float size = tbChooseCellSize(hash, table);
+	if (hash->cellSize <= 0.0f || size > 2.0f * hash->cellSize || 2.0f * size < hash->cellSize)
+	{
+		hash->cellSize = size;
+		hash->invCellSize = 1.0f / size;
+		hash->staticDirty = true;
+	}
+}
+
+// --------------------------------------------------------------------------------------------
+// Lifetime
+
+tbSpatialHash* tbSpatialHash_Create(void)
+{
+	tbSpatialHash* hash = tbAlloc((int)sizeof(tbSpatialHash));
+	memset(hash, 0, sizeof(*hash));
+	hash->staticDirty = true;
+	return hash;
+}
+
+void tbSpatialHash_Destroy(tbSpatialHash* hash)
+{
+	tbGrid_Destroy(&hash->staticGrid);
+	tbGrid_Destroy(&hash->movableGrid);
+	tbFree(hash->sides, hash->sideCapacity * (int)sizeof(float));
+	tbFree(hash, (int)sizeof(tbSpatialHash));
+}
+
+void tbSpatialHash_AddProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey)
+{
+	hash->staticDirty = hash->staticDirty || table->proxies[proxyKey].type == tb_proxyStatic;
+}
+
+void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey)
+{
+	hash->staticDirty = hash->staticDirty || table->proxies[proxyKey].type == tb_proxyStatic;
+}
+
+void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash)
+{
+	hash->staticDirty = true;
+}
+
+float tbSpatialHash_GetCellSize(const tbSpatialHash* hash)
+{
+	return hash->cellSize;
+}
+
+// --------------------------------------------------------------------------------------------
+// Pairs
+
+typedef struct tbPairQuery
+{
+	const tbSpatialHash* hash;
+	const tbProxyTable* table;
+	tbPairList* pairs;
+	int key;
+	const tbBroadProxy* proxy;
+} tbPairQuery;
+
+/// Report (query, other) unless it is not a pair, or the other query reports it.
+static TB_FORCE_INLINE void tbConsider(const tbPairQuery* q, int otherKey)
+{
+	if (otherKey == q->key)
+	{
+		return;
+	}
+	const tbBroadProxy* other = q->table->proxies + otherKey;
+	if (other->moveIndex >= 0 && otherKey > q->key)
+	{
+		return; // both moved: the larger key reports it
+	}
+	if (other->type == tb_proxyStatic && q->proxy->type == tb_proxyStatic)
+	{
+		return;
+	}
+	if (tbAABB_Overlaps(q->proxy->aabb, other->aabb))
+	{
+		tbPairList_Add(q->pairs, q->table, q->key, otherKey);
+	}
+}
+
+/// The entries of one cell: each pair is reported only from the cell holding its overlap's lower
+/// corner, max(lowerA, lowerB). Its cell is max(cell(lowerA), cell(lowerB)) coordinate by
+/// coordinate, since the cell coordinate (a product by a positive factor, floored and clamped) never
+/// decreases as the value grows: so the test compares the two proxies' lowest cells, (x0, y0) of the
+/// query and of the entry, without converting a coordinate per entry.
+static void tbConsiderCell(const tbPairQuery* q, const tbGrid* grid, int x, int y, int x0, int y0)
+{
+	int64_t cell = tbCellKey(x, y);
+	for (int e = grid->heads[tbBucketOf(grid, cell)]; e >= 0; e = grid->entries[e].next)
+	{
+		const tbCellEntry* entry = grid->entries + e;
+		if (entry->cell == cell && tbMaxInt(x0, entry->x0) == x && tbMaxInt(y0, entry->y0) == y)
+		{
+			tbConsider(q, entry->key);
+		}
+	}
+}
+
+static void tbConsiderLarge(const tbPairQuery* q, const tbGrid* grid)
+{
+	for (int i = 0; i < grid->largeCount; ++i)
+	{
+		tbConsider(q, grid->large[i]);
+	}
+}
+
+static void tbQueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs, int key)
+{
+	const tbBroadProxy* p = table->proxies + key;
+	tbPairQuery q = {hash, table, pairs, key, p};
+	bool isStatic = p->type == tb_proxyStatic;
+	tbCellRange r = tbCellsOf(hash, p->aabb);
+	if (tbIsLargeRange(r))
+	{
+		// A large proxy meets everything it overlaps: scan the table.
+		for (int other = 0; other < table->capacity; ++other)
+		{
+			if (table->proxies[other].isFree == false)
+			{
+				tbConsider(&q, other);
+			}
+		}
+		return;
+	}
+	for (int x = r.x0; x <= r.x1; ++x)
+	{
+		for (int y = r.y0; y <= r.y1; ++y)
+		{
+			tbConsiderCell(&q, &hash->movableGrid, x, y, r.x0, r.y0);
+			if (isStatic == false)
+			{
+				tbConsiderCell(&q, &hash->staticGrid, x, y, r.x0, r.y0);
+			}
+		}
+	}
+	tbConsiderLarge(&q, &hash->movableGrid);
+	if (isStatic == false)
+	{
+		tbConsiderLarge(&q, &hash->staticGrid);
+	}
+}
+
+void tbSpatialHash_PrepareFind(tbSpatialHash* hash, const tbProxyTable* table)
+{
+	tbUpdateCellSize(hash, table);
+	if (hash->staticDirty)
+	{
+		tbGrid_Build(&hash->staticGrid, hash, table, true);
+		hash->staticDirty = false;
+	}
+	tbGrid_Build(&hash->movableGrid, hash, table, false);
+	hash->updateCount += 1;
+}
+
+void tbSpatialHash_QueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs, int proxyKey)
+{
+	tbQueryMoved(hash, table, pairs, proxyKey);
+}
+
+void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs)
+{
+	tbSpatialHash_PrepareFind(hash, table);
+	for (int key = 0; key < table->capacity; ++key)
+	{
+		if (table->proxies[key].isFree == false && table->proxies[key].moveIndex >= 0)
+		{
+			tbQueryMoved(hash, table, pairs, key);
+		}
+	}
+}
+
+// --------------------------------------------------------------------------------------------
+// Queries
+
+typedef struct tbBoxQuery
+{
+	const tbSpatialHash* hash;
+	const tbProxyTable* table;
+	tbAABB aabb;
+	uint64_t maskBits;
+	tbProxyQueryFcn* callback;
+	void* context;
+} tbBoxQuery;
+
+/// Call back for one proxy if its box and bits match; false when the callback asks to stop.
+static bool tbVisit(const tbBoxQuery* q, int key)
+{
+	const tbBroadProxy* p = q->table->proxies + key;
+	if ((p->categoryBits & q->maskBits) == 0 || tbAABB_Overlaps(p->aabb, q->aabb) == false)
+	{
+		return true;
+	}
+	return q->callback(key, p->shapeIndex, q->context);
+}
+
+/// Static proxies through the static grid (current): each once, from its overlap's lower corner.
+/// r: the query box's cells.
+static bool tbQueryStaticGrid(const tbBoxQuery* q, tbCellRange r)
+{
+	const tbGrid* grid = &q->hash->staticGrid;
+	for (int i = 0; i < grid->largeCount; ++i)
+	{
+		if (tbVisit(q, grid->large[i]) == false)
+		{
+			return false;
+		}
+	}
+	for (int x = r.x0; x <= r.x1; ++x)
+	{
+		for (int y = r.y0; y <= r.y1; ++y)
+		{
+			int64_t cell = tbCellKey(x, y);
+			for (int e = grid->heads[tbBucketOf(grid, cell)]; e >= 0; e = grid->entries[e].next)
+			{
+				const tbCellEntry* entry = grid->entries + e;
+				// The overlap's lower corner cell, as in tbConsiderCell.
+				int rx = tbMaxInt(r.x0, entry->x0);
+				int ry = tbMaxInt(r.y0, entry->y0);
+				if (entry->cell == cell && rx == x && ry == y && tbVisit(q, entry->key) == false)
+				{
+					return false;
+				}
+			}
+		}
+	}
+	return true;
+}
+
+void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, tbAABB aabb, uint64_t maskBits,
+						 bool staticOnly, tbProxyQueryFcn* callback, void* context)
+{
+	tbBoxQuery q = {hash, table, aabb, maskBits, callback, context};
+	// Static proxies: through the grid when it is current (its cells for a box covering few of
+	// them, else its list of static proxies); by a scan of the table when it is not.
+	bool gridCurrent = hash->staticDirty == false && hash->cellSize > 0.0f;
+	tbCellRange cells = gridCurrent ? tbCellsOf(hash, aabb) : (tbCellRange){0, 0, 0, 0};
+	if (gridCurrent && tbIsLargeRange(cells) == false)
+	{
+		if (tbQueryStaticGrid(&q, cells) == false)
+		{
+			return;
+		}
+	}
+	else if (gridCurrent)
+	{
+		for (int i = 0; i < hash->staticGrid.allCount; ++i)
+		{
+			if (tbVisit(&q, hash->staticGrid.all[i]) == false)
+			{
+				return;
+			}
+		}
+	}
+	if (staticOnly && gridCurrent)
+	{
+		return;
+	}
+	for (int key = 0; key < table->capacity; ++key)
+	{
+		const tbBroadProxy* p = table->proxies + key;
+		bool isStatic = p->type == tb_proxyStatic;
+		if (p->isFree || (gridCurrent && isStatic) || (staticOnly && isStatic == false))
+		{
+			continue;
+		}
+		if (tbVisit(&q, key) == false)
+		{
+			return;
+		}
+	}
+}
+
+void tbSpatialHash_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
+						   tbProxyRayCastFcn* callback, void* context)
+{
+	tbBruteForce_RayCast(table, input, maskBits, callback, context);
+}
+
+// --------------------------------------------------------------------------------------------
+// Validation
+
+static bool tbGridHolds(const tbGrid* grid, int64_t cell, int key)
+{
+	for (int e = grid->heads[tbBucketOf(grid, cell)]; e >= 0; e = grid->entries[e].next)
+	{
+		if (grid->entries[e].cell == cell && grid->entries[e].key == key)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+static bool tbLargeHolds(const tbGrid* grid, int key)
+{
+	for (int i = 0; i < grid->largeCount; ++i)
+	{
+		if (grid->large[i] == key)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+bool tbSpatialHash_Validate(const tbSpatialHash* hash, const tbProxyTable* table)
+{
+	if (hash->staticDirty || hash->cellSize <= 0.0f)
+	{
+		return true; // rebuilt before it is next used
+	}
+	for (int key = 0; key < table->capacity; ++key)
+	{
+		const tbBroadProxy* p = table->proxies + key;
+		if (p->isFree || p->type != tb_proxyStatic)
+		{
+			continue;
+		}
+		tbCellRange r = tbCellsOf(hash, p->aabb);
+		if (tbIsLargeRange(r))
+		{
+			if (tbLargeHolds(&hash->staticGrid, key) == false)
+			{
+				return false;
+			}
+			continue;
+		}
+		for (int x = r.x0; x <= r.x1; ++x)
+		{
+			for (int y = r.y0; y <= r.y1; ++y)
+			{
+				if (tbGridHolds(&hash->staticGrid, tbCellKey(x, y), key) == false)
+				{
+					return false;
+				}
+			}
+		}
+	}
+	return true;
+}

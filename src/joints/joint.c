@@ -1,0 +1,1392 @@
+// Joints: the common part. Definitions and defaults, the pool (creation, destruction, stale-id
+// detection), the functions every kind shares, the filter joint (no constraint: it only stops the
+// two bodies colliding), the joints' place in the step, and the hooks that make joined bodies one
+// island. Each constrained kind has its own file with its maths (revolute_joint.c,
+// distance_joint.c, weld_joint.c, prismatic_joint.c, wheel_joint.c, motor_joint.c, mover_joint.c,
+// pogo_joint.c).
+//
+// A joint is a set of equality and inequality constraints C(x) between two bodies, solved with
+// the contacts by sequential impulses (Catto, "Modeling and Solving Constraints", GDC 2009):
+// Ċ = J·v, an impulse λ along Jᵀ changes Ċ by K·λ with K = J·M⁻¹·Jᵀ, and the impulse that brings
+// Ċ to the target −bias is λ = −K⁻¹(Ċ + bias). Accumulated impulses are kept from sub-step to
+// sub-step and step to step (warm starting). Anchors are measured from the centres of mass; the
+// position error during the step is read from the same position deltas (tbSolverBody) the
+// contacts use, so every sub-step sees the drift the previous one left.
+//
+// Where joints sit in the step (solver.c and the method files): prepared once per step after the
+// contacts (anchors in world axes, masses, softness); warm started before the contacts in every
+// sub-step; solved before the contacts in each velocity pass. Joints go first so that the
+// contacts, solved last, have the final word on non-penetration. Row by row, the joints are
+// solved one at a time (scalar) in the order tbColorJoints gives (constraint_graph.c): small
+// mechanisms in joint-id order, whole mechanisms side by side on the workers, the joints of large
+// ones colour by colour. In the biased passes the equality rows of each tree of joined bodies are
+// solved exactly instead (joint_tree.c, tbSolveJoints below).
+//
+// Position error by method (the `useBias` pass):
+// - soft step: rows solved one at a time are soft constraints (Catto, "Soft Constraints", GDC
+//   2011; Solver2D 2024), λ = −m_eff·massScale·(Ċ + biasRate·C) − impulseScale·λ_acc, with the
+//   joint's constraintHertz (default 60 Hz) and constraintDampingRatio (default 2, Box2D v3's
+//   values) and the hertz capped at a quarter of the sub-step rate, the cap contacts use (a
+//   faster spring is not resolved by the sub-step and only adds jitter). The equality rows of a
+//   joint tree are rigid, corrected by the same bias rate β = ω/(2ζ + hω) and no compliance. The
+//   relaxing pass solves every row rigidly with no bias, removing the correction velocity.
+// - Baumgarte and NGS: the same velocity code with a Baumgarte bias, biasRate = TB_BAUMGARTE/h,
+//   massScale 1, impulseScale 0 (a fifth of the error per sub-step, as contacts under
+//   Baumgarte). NGS corrects contact overlap on positions (solver_ngs.c); joints have no
+//   position pass there: their drift is corrected by that velocity bias.
+// Limits use speculation as contacts do: a limit not yet reached (C > 0) gets bias C/h, so it may
+// be approached within a sub-step but not passed. Springs, motors and limits act in every pass.
+//
+// Islands: a joint with a dynamic body on each side links the two bodies: they sleep together
+// (island.c follows joint edges from dynamic bodies) and wake together (tbWakeBody wakes the
+// bodies joined to a dynamic body, transitively). A joint to a static body links nothing; a
+// filter joint links nothing (it couples no motion).
+#include "joint.h"
+
+#include "core/array.h"
+
+#include <float.h>
+#include <string.h>
+
+// ---------------------------------------------------------------------------------------------
+// Definitions
+
+static tbJointDef tbDefaultJointDef(void)
+{
+	tbJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.localFrameA = tb_transform_identity;
+	def.localFrameB = tb_transform_identity;
+	def.forceThreshold = FLT_MAX;
+	def.torqueThreshold = FLT_MAX;
+	def.constraintHertz = 60.0f;
+	def.constraintDampingRatio = 2.0f;
+	def.drawScale = 1.0f * tbGetLengthUnitsPerMeter(); // one metre, in length units
+	return def;
+}
+
+tbDistanceJointDef tbDefaultDistanceJointDef(void)
+{
+	tbDistanceJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.length = 1.0f;
+	def.lowerSpringForce = -FLT_MAX;
+	def.upperSpringForce = FLT_MAX;
+	def.maxLength = TB_HUGE;
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+tbFilterJointDef tbDefaultFilterJointDef(void)
+{
+	tbFilterJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+tbMotorJointDef tbDefaultMotorJointDef(void)
+{
+	tbMotorJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+tbMoverJointDef tbDefaultMoverJointDef(void)
+{
+	tbMoverJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+// Box2D v3.2 leaves every field zero, the normal too; a zero normal is no direction, so the
+// default here is the world's up, the pogo axis's own default.
+tbPogoJointDef tbDefaultPogoJointDef(void)
+{
+	tbPogoJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.normal = tbMakeVec2(0.0f, 1.0f);
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+tbPrismaticJointDef tbDefaultPrismaticJointDef(void)
+{
+	tbPrismaticJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+tbRevoluteJointDef tbDefaultRevoluteJointDef(void)
+{
+	tbRevoluteJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+tbWeldJointDef tbDefaultWeldJointDef(void)
+{
+	tbWeldJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+tbWheelJointDef tbDefaultWheelJointDef(void)
+{
+	tbWheelJointDef def;
+	memset(&def, 0, sizeof(def));
+	def.base = tbDefaultJointDef();
+	def.enableSpring = true;
+	def.hertz = 1.0f;
+	def.dampingRatio = 0.7f;
+	def.internalValue = TB_JOINT_DEF_MAGIC;
+	return def;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Ids and checks
+
+static const char* const s_jointTypeNames[tb_jointTypeCount] = {
+	"distance", "filter", "motor", "mover", "pogo", "prismatic", "revolute", "weld", "wheel"};
+
+tbJointId tbMakeJointId(const tbWorld* world, const tbJoint* joint)
+{
+	tbJointId id = {(int32_t)(joint - world->joints) + 1, world->worldId, joint->generation};
+	return id;
+}
+
+static tbJoint* tbLookUpJoint(tbJointId id, tbWorld** worldOut)
+{
+	if (id.index1 <= 0 || id.world0 >= TB_MAX_WORLDS)
+	{
+		return NULL;
+	}
+	tbWorld* world = tbGetWorldFromIndex(id.world0);
+	int index = id.index1 - 1;
+	if (world == NULL || index >= world->jointHighWater || world->joints[index].inUse == false ||
+		world->joints[index].generation != id.generation)
+	{
+		return NULL;
+	}
+	*worldOut = world;
+	return world->joints + index;
+}
+
+bool tbJoint_IsValid(tbJointId id)
+{
+	tbWorld* world;
+	return tbLookUpJoint(id, &world) != NULL;
+}
+
+tbJoint* tbGetJointChecked(tbJointId id, const char* function, tbWorld** worldOut, int type, bool mutating)
+{
+	tbWorld* world = NULL;
+	tbJoint* joint = tbLookUpJoint(id, &world);
+	if (joint == NULL)
+	{
+		tbReportError(function, "jointId is null or refers to a destroyed joint, body or world; do not use a joint id "
+								"after tbDestroyJoint, after destroying one of its bodies or its world (check with "
+								"tbJoint_IsValid)");
+		return NULL;
+	}
+	if (type >= 0 && joint->type != type)
+	{
+		tbReportError(function, "jointId is a %s joint, not a %s joint; call the function of its kind (see "
+								"tbJoint_GetType)", s_jointTypeNames[joint->type], s_jointTypeNames[type]);
+		return NULL;
+	}
+	if (mutating && world->locked)
+	{
+		tbReportError(function, "the world is locked (stepping); change joints between steps");
+		return NULL;
+	}
+	if (worldOut != NULL)
+	{
+		*worldOut = world;
+	}
+	return joint;
+}
+
+bool tbCheckRange(const char* function, const char* lowerName, float lower, const char* upperName, float upper)
+{
+	if (tbIsValidFloat(lower) == false || tbIsValidFloat(upper) == false || lower > upper)
+	{
+		tbReportError(function, "%s is %g and %s is %g; both must be finite with %s <= %s", lowerName, (double)lower,
+					  upperName, (double)upper, lowerName, upperName);
+		return false;
+	}
+	return true;
+}
+
+bool tbCheckJointDefPointer(const char* f, const void* def, int internalValue, const char* defaultName)
+{
+	if (tbCheckPointer(f, "def", def) == false)
+	{
+		return false;
+	}
+	if (internalValue != TB_JOINT_DEF_MAGIC)
+	{
+		tbReportError(f, "def was not initialised by %s(); start from it and change fields", defaultName);
+		return false;
+	}
+	return true;
+}
+
+static bool tbCheckBodyForJoint(const char* f, const char* name, tbBodyId bodyId, const tbWorld* world)
+{
+	if (tbBody_IsValid(bodyId) == false)
+	{
+		tbReportError(f, "%s is null or refers to a destroyed body; pass a body id from tbCreateBody (check with "
+						 "tbBody_IsValid)", name);
+		return false;
+	}
+	if (bodyId.world0 != world->worldId)
+	{
+		tbReportError(f, "%s belongs to another world; a joint joins two bodies of the world passed as worldId", name);
+		return false;
+	}
+	return true;
+}
+
+static bool tbCheckFrame(const char* f, const char* name, tbTransform frame)
+{
+	if (tbIsValidVec2(frame.p) == false)
+	{
+		tbReportError(f, "%s.p is (%g, %g) (NaN or infinity); pass finite coordinates", name, (double)frame.p.x,
+					  (double)frame.p.y);
+		return false;
+	}
+	if (tbIsCoordinate(frame.p) == false)
+	{
+		// An anchor is a point of the body, as a shape's vertex is: the same bound, beyond which the
+		// solver's products of lengths overflow (an anchor at 9e17 m gave NaN velocities).
+		tbReportError(f, "%s.p is (%g, %g), beyond TB_MAX_COORDINATE (%g m) from the body origin; put the anchor on "
+						 "the body", name, (double)frame.p.x, (double)frame.p.y, (double)TB_MAX_COORDINATE);
+		return false;
+	}
+	if (tbIsValidRot(frame.q) == false)
+	{
+		tbReportError(f, "%s.q is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", name,
+					  (double)frame.q.c, (double)frame.q.s);
+		return false;
+	}
+	return true;
+}
+
+static bool tbCheckJointBase(const char* f, const tbWorld* world, const tbJointDef* def)
+{
+	if (tbCheckBodyForJoint(f, "def->base.bodyIdA", def->bodyIdA, world) == false ||
+		tbCheckBodyForJoint(f, "def->base.bodyIdB", def->bodyIdB, world) == false)
+	{
+		return false;
+	}
+	if (def->bodyIdA.index1 == def->bodyIdB.index1)
+	{
+		tbReportError(f, "def->base.bodyIdA and def->base.bodyIdB are the same body; a joint joins two different "
+						 "bodies");
+		return false;
+	}
+	return tbCheckFrame(f, "def->base.localFrameA", def->localFrameA) &&
+		   tbCheckFrame(f, "def->base.localFrameB", def->localFrameB) &&
+		   tbCheckNonNegative(f, "def->base.forceThreshold", def->forceThreshold) &&
+		   tbCheckNonNegative(f, "def->base.torqueThreshold", def->torqueThreshold) &&
+		   tbCheckNonNegative(f, "def->base.constraintHertz", def->constraintHertz) &&
+		   tbCheckNonNegative(f, "def->base.constraintDampingRatio", def->constraintDampingRatio) &&
+		   tbCheckNonNegative(f, "def->base.drawScale", def->drawScale);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The pool: creation and destruction
+
+static void tbLinkJointEdge(tbWorld* world, int jointId, int edgeIndex)
+{
+	tbJoint* joint = world->joints + jointId;
+	tbBody* body = world->bodies + joint->edges[edgeIndex].bodyId;
+	int key = (jointId << 1) | edgeIndex;
+	joint->edges[edgeIndex].prevKey = TB_NULL_INDEX;
+	joint->edges[edgeIndex].nextKey = body->headJointKey;
+	if (body->headJointKey != TB_NULL_INDEX)
+	{
+		int head = body->headJointKey;
+		world->joints[head >> 1].edges[head & 1].prevKey = key;
+	}
+	body->headJointKey = key;
+	body->jointCount += 1;
+}
+
+static void tbUnlinkJointEdge(tbWorld* world, int jointId, int edgeIndex)
+{
+	tbJointEdge* edge = world->joints[jointId].edges + edgeIndex;
+	tbBody* body = world->bodies + edge->bodyId;
+	if (edge->prevKey != TB_NULL_INDEX)
+	{
+		world->joints[edge->prevKey >> 1].edges[edge->prevKey & 1].nextKey = edge->nextKey;
+	}
+	else
+	{
+		body->headJointKey = edge->nextKey;
+	}
+	if (edge->nextKey != TB_NULL_INDEX)
+	{
+		world->joints[edge->nextKey >> 1].edges[edge->nextKey & 1].prevKey = edge->prevKey;
+	}
+	body->jointCount -= 1;
+}
+
+/// Destroy the contacts between two bodies (a joint that forbids their collision), walking the
+/// shorter contact list.
+static void tbDestroyContactsBetween(tbWorld* world, int bodyIdA, int bodyIdB)
+{
+	const tbBody* a = world->bodies + bodyIdA;
+	const tbBody* b = world->bodies + bodyIdB;
+	int key = a->contactCount <= b->contactCount ? a->headContactKey : b->headContactKey;
+	int other = a->contactCount <= b->contactCount ? bodyIdB : bodyIdA;
+	while (key != TB_NULL_INDEX)
+	{
+		const tbContact* contact = world->contacts + (key >> 1);
+		int next = contact->edges[key & 1].nextKey;
+		if (contact->edges[(key & 1) ^ 1].bodyId == other)
+		{
+			tbDestroyContact(world, key >> 1, false);
+		}
+		key = next;
+	}
+}
+
+/// Let the broad phase report the pairs of a body's shapes again (their contacts were forbidden
+/// by a joint that is gone now): marking a proxy moved makes the next pair update query it.
+static void tbRefindBodyPairs(tbWorld* world, const tbBody* body)
+{
+	if (body->type == tb_staticBody)
+	{
+		return;
+	}
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		const tbShape* shape = world->shapes + id;
+		if (shape->proxyKey != TB_NULL_INDEX)
+		{
+			tbBroadPhase_MoveProxy(&world->broadPhase, shape->proxyKey, shape->fatAABB);
+		}
+	}
+}
+
+void tbWakeJoint(tbWorld* world, const tbJoint* joint)
+{
+	tbWakeBody(world, world->bodies + joint->edges[0].bodyId);
+	tbWakeBody(world, world->bodies + joint->edges[1].bodyId);
+}
+
+static int tbAllocJointSlot(tbWorld* world)
+{
+	if (world->jointFreeCount > 0)
+	{
+		return world->jointFree[--world->jointFreeCount];
+	}
+	TB_ARRAY_RESERVE(world->joints, world->jointCapacity, world->jointHighWater + 1);
+	int id = world->jointHighWater++;
+	memset(world->joints + id, 0, sizeof(tbJoint));
+	return id;
+}
+
+tbJoint* tbCreateJointInternal(tbWorldId worldId, const tbJointDef* def, tbJointType type, const char* f, tbJointId* id)
+{
+	tbWorld* world = tbGetWorldChecked(worldId, f);
+	if (world == NULL || tbCheckJointBase(f, world, def) == false)
+	{
+		return NULL;
+	}
+	if (tbStructureLocked(world, f, "create joints"))
+	{
+		return NULL;
+	}
+	int bodyIdA = def->bodyIdA.index1 - 1;
+	int bodyIdB = def->bodyIdB.index1 - 1;
+	if (def->collideConnected == false)
+	{
+		tbDestroyContactsBetween(world, bodyIdA, bodyIdB);
+	}
+
+	int jointId = tbAllocJointSlot(world);
+	tbJoint* joint = world->joints + jointId;
+	uint16_t generation = (uint16_t)(joint->generation + 1);
+	memset(joint, 0, sizeof(tbJoint));
+	joint->generation = generation;
+	joint->inUse = true;
+	joint->type = (uint8_t)type;
+	joint->userData = def->userData;
+	joint->collideConnected = def->collideConnected;
+	joint->localFrameA.p = def->localFrameA.p;
+	joint->localFrameA.q = tbNormalizeRot(def->localFrameA.q);
+	joint->localFrameB.p = def->localFrameB.p;
+	joint->localFrameB.q = tbNormalizeRot(def->localFrameB.q);
+	joint->forceThreshold = def->forceThreshold;
+	joint->torqueThreshold = def->torqueThreshold;
+	joint->constraintHertz = def->constraintHertz;
+	joint->constraintDampingRatio = def->constraintDampingRatio;
+	joint->drawScale = def->drawScale;
+	joint->edges[0].bodyId = bodyIdA;
+	joint->edges[1].bodyId = bodyIdB;
+	tbLinkJointEdge(world, jointId, 0);
+	tbLinkJointEdge(world, jointId, 1);
+	world->jointCount += 1;
+
+	// As Box2D v3: a joint between an awake and a sleeping body wakes the sleeping one (they are one
+	// island now); a joint between sleeping bodies leaves them asleep.
+	const tbBody* a = world->bodies + bodyIdA;
+	const tbBody* b = world->bodies + bodyIdB;
+	if (type != tb_filterJoint && (a->awakeIndex != TB_NULL_INDEX || b->awakeIndex != TB_NULL_INDEX))
+	{
+		tbWakeJoint(world, joint);
+	}
+	*id = tbMakeJointId(world, joint);
+	return joint;
+}
+
+static void tbDestroyJointInternal(tbWorld* world, int jointId, bool refindPairs)
+{
+	tbJoint* joint = world->joints + jointId;
+	tbBody* a = world->bodies + joint->edges[0].bodyId;
+	tbBody* b = world->bodies + joint->edges[1].bodyId;
+	tbUnlinkJointEdge(world, jointId, 0);
+	tbUnlinkJointEdge(world, jointId, 1);
+	if (refindPairs && joint->collideConnected == false && tbJointBlocksCollision(world, joint->edges[0].bodyId,
+																				  joint->edges[1].bodyId) == false)
+	{
+		tbRefindBodyPairs(world, a);
+		tbRefindBodyPairs(world, b);
+	}
+	tbWakeBody(world, a);
+	tbWakeBody(world, b);
+	joint->inUse = false;
+	joint->generation += 1;
+	TB_ARRAY_PUSH(world->jointFree, world->jointFreeCount, world->jointFreeCapacity, jointId);
+	world->jointCount -= 1;
+}
+
+void tbDestroyJoint(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbDestroyJoint", &world, -1, true);
+	if (joint != NULL && tbStructureLocked(world, "tbDestroyJoint", "destroy joints") == false)
+	{
+		tbDestroyJointInternal(world, jointId.index1 - 1, true);
+	}
+}
+
+void tbDestroyBodyJoints(tbWorld* world, tbBody* body)
+{
+	int key = body->headJointKey;
+	while (key != TB_NULL_INDEX)
+	{
+		int next = world->joints[key >> 1].edges[key & 1].nextKey;
+		tbDestroyJointInternal(world, key >> 1, false); // the body goes: no pairs to find again
+		key = next;
+	}
+}
+
+void tbFreeJoints(tbWorld* world)
+{
+	TB_ARRAY_FREE(world->joints, world->jointCapacity);
+	TB_ARRAY_FREE(world->jointFree, world->jointFreeCapacity);
+	TB_ARRAY_FREE(world->solverJoints, world->solverJointCapacity);
+	TB_ARRAY_FREE(world->jointEvents, world->jointEventCapacity);
+	TB_ARRAY_FREE(world->jointWakeStack, world->jointWakeCapacity);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The filter joint
+
+tbJointId tbCreateFilterJoint(tbWorldId worldId, const tbFilterJointDef* def)
+{
+	const char* f = "tbCreateFilterJoint";
+	tbJointId id = TB_NULL_JOINT_ID;
+	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultFilterJointDef") == false)
+	{
+		return id;
+	}
+	tbCreateJointInternal(worldId, &def->base, tb_filterJoint, f, &id);
+	return id;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Functions every kind shares
+
+tbJointType tbJoint_GetType(tbJointId jointId)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetType", NULL, -1, false);
+	return joint != NULL ? (tbJointType)joint->type : tb_distanceJoint;
+}
+
+tbBodyId tbJoint_GetBodyA(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetBodyA", &world, -1, false);
+	return joint != NULL ? tbMakeBodyId(world, joint->edges[0].bodyId) : TB_NULL_BODY_ID;
+}
+
+tbBodyId tbJoint_GetBodyB(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetBodyB", &world, -1, false);
+	return joint != NULL ? tbMakeBodyId(world, joint->edges[1].bodyId) : TB_NULL_BODY_ID;
+}
+
+tbWorldId tbJoint_GetWorld(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetWorld", &world, -1, false);
+	if (joint == NULL)
+	{
+		return TB_NULL_WORLD_ID;
+	}
+	tbWorldId id = {(uint16_t)(world->worldId + 1), world->generation};
+	return id;
+}
+
+static bool tbSetLocalFrame(tbJointId jointId, tbTransform frame, int edge, const char* f)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, f, &world, -1, true);
+	if (joint == NULL || tbCheckFrame(f, "localFrame", frame) == false)
+	{
+		return false;
+	}
+	frame.q = tbNormalizeRot(frame.q);
+	if (edge == 0)
+	{
+		joint->localFrameA = frame;
+	}
+	else
+	{
+		joint->localFrameB = frame;
+	}
+	tbWakeJoint(world, joint);
+	return true;
+}
+
+bool tbJoint_SetLocalFrameA(tbJointId jointId, tbTransform localFrame)
+{
+	return tbSetLocalFrame(jointId, localFrame, 0, "tbJoint_SetLocalFrameA");
+}
+
+bool tbJoint_SetLocalFrameB(tbJointId jointId, tbTransform localFrame)
+{
+	return tbSetLocalFrame(jointId, localFrame, 1, "tbJoint_SetLocalFrameB");
+}
+
+tbTransform tbJoint_GetLocalFrameA(tbJointId jointId)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetLocalFrameA", NULL, -1, false);
+	return joint != NULL ? joint->localFrameA : tb_transform_identity;
+}
+
+tbTransform tbJoint_GetLocalFrameB(tbJointId jointId)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetLocalFrameB", NULL, -1, false);
+	return joint != NULL ? joint->localFrameB : tb_transform_identity;
+}
+
+void tbJoint_SetCollideConnected(tbJointId jointId, bool shouldCollide)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_SetCollideConnected", &world, -1, true);
+	if (joint == NULL || joint->collideConnected == shouldCollide ||
+		tbStructureLocked(world, "tbJoint_SetCollideConnected", "change collideConnected"))
+	{
+		return;
+	}
+	joint->collideConnected = shouldCollide;
+	int bodyIdA = joint->edges[0].bodyId;
+	int bodyIdB = joint->edges[1].bodyId;
+	if (shouldCollide == false)
+	{
+		tbDestroyContactsBetween(world, bodyIdA, bodyIdB);
+	}
+	else if (tbJointBlocksCollision(world, bodyIdA, bodyIdB) == false)
+	{
+		tbRefindBodyPairs(world, world->bodies + bodyIdA);
+		tbRefindBodyPairs(world, world->bodies + bodyIdB);
+	}
+	tbWakeJoint(world, joint);
+}
+
+bool tbJoint_GetCollideConnected(tbJointId jointId)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetCollideConnected", NULL, -1, false);
+	return joint != NULL && joint->collideConnected;
+}
+
+void tbJoint_SetUserData(tbJointId jointId, void* userData)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_SetUserData", NULL, -1, false);
+	if (joint != NULL)
+	{
+		joint->userData = userData;
+	}
+}
+
+void* tbJoint_GetUserData(tbJointId jointId)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetUserData", NULL, -1, false);
+	return joint != NULL ? joint->userData : NULL;
+}
+
+void tbJoint_WakeBodies(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_WakeBodies", &world, -1, true);
+	if (joint != NULL)
+	{
+		tbWakeJoint(world, joint);
+	}
+}
+
+static void tbGetJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque)
+{
+	*force = tb_vec2_zero;
+	*torque = 0.0f;
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			tbGetDistanceJointReaction(world, joint, inv_h, force, torque);
+			break;
+		case tb_motorJoint:
+			tbGetMotorJointReaction(world, joint, inv_h, force, torque);
+			break;
+		case tb_moverJoint:
+			tbGetMoverJointReaction(world, joint, inv_h, force, torque);
+			break;
+		case tb_pogoJoint:
+			tbGetPogoJointReaction(world, joint, inv_h, force, torque);
+			break;
+		case tb_prismaticJoint:
+			tbGetPrismaticJointReaction(world, joint, inv_h, force, torque);
+			break;
+		case tb_revoluteJoint:
+			tbGetRevoluteJointReaction(world, joint, inv_h, force, torque);
+			break;
+		case tb_weldJoint:
+			tbGetWeldJointReaction(world, joint, inv_h, force, torque);
+			break;
+		case tb_wheelJoint:
+			tbGetWheelJointReaction(world, joint, inv_h, force, torque);
+			break;
+		default:
+			break;
+	}
+}
+
+tbVec2 tbJoint_GetConstraintForce(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetConstraintForce", &world, -1, false);
+	tbVec2 force = tb_vec2_zero;
+	float torque = 0.0f;
+	if (joint != NULL)
+	{
+		tbGetJointReaction(world, joint, world->jointInvH, &force, &torque);
+	}
+	return force;
+}
+
+float tbJoint_GetConstraintTorque(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetConstraintTorque", &world, -1, false);
+	tbVec2 force = tb_vec2_zero;
+	float torque = 0.0f;
+	if (joint != NULL)
+	{
+		tbGetJointReaction(world, joint, world->jointInvH, &force, &torque);
+	}
+	return torque;
+}
+
+// Motor, mover and pogo joints are user forces (velocity targets and a spring) with nothing rigid
+// to violate, the filter joint has no rows, and the wheel joint turns freely: all read 0 where
+// their kind has no entry below.
+float tbJoint_GetLinearSeparation(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetLinearSeparation", &world, -1, false);
+	if (joint == NULL)
+	{
+		return 0.0f;
+	}
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			return tbDistanceJointLinearSeparation(world, joint);
+		case tb_prismaticJoint:
+			return tbAxisJointLinearSeparation(world, joint, joint->prismatic.enableLimit,
+											   joint->prismatic.lowerTranslation, joint->prismatic.upperTranslation);
+		case tb_revoluteJoint:
+			return tbRevoluteJointLinearSeparation(world, joint);
+		case tb_weldJoint:
+			return tbWeldJointLinearSeparation(world, joint);
+		case tb_wheelJoint:
+			return tbAxisJointLinearSeparation(world, joint, joint->wheel.enableLimit, joint->wheel.lowerTranslation,
+											   joint->wheel.upperTranslation);
+		default:
+			return 0.0f;
+	}
+}
+
+float tbJoint_GetAngularSeparation(tbJointId jointId)
+{
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetAngularSeparation", &world, -1, false);
+	if (joint == NULL)
+	{
+		return 0.0f;
+	}
+	switch (joint->type)
+	{
+		case tb_prismaticJoint:
+			return tbPrismaticJointAngularSeparation(world, joint);
+		case tb_revoluteJoint:
+			return tbRevoluteJointAngularSeparation(world, joint);
+		case tb_weldJoint:
+			return tbWeldJointAngularSeparation(world, joint);
+		default:
+			return 0.0f;
+	}
+}
+
+bool tbJoint_SetConstraintTuning(tbJointId jointId, float hertz, float dampingRatio)
+{
+	const char* f = "tbJoint_SetConstraintTuning";
+	tbWorld* world;
+	tbJoint* joint = tbGetJointChecked(jointId, f, &world, -1, true);
+	if (joint == NULL || tbCheckNonNegative(f, "hertz", hertz) == false ||
+		tbCheckNonNegative(f, "dampingRatio", dampingRatio) == false)
+	{
+		return false;
+	}
+	joint->constraintHertz = hertz;
+	joint->constraintDampingRatio = dampingRatio;
+	tbWakeJoint(world, joint);
+	return true;
+}
+
+void tbJoint_GetConstraintTuning(tbJointId jointId, float* hertz, float* dampingRatio)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetConstraintTuning", NULL, -1, false);
+	if (hertz != NULL)
+	{
+		*hertz = joint != NULL ? joint->constraintHertz : 0.0f;
+	}
+	if (dampingRatio != NULL)
+	{
+		*dampingRatio = joint != NULL ? joint->constraintDampingRatio : 0.0f;
+	}
+}
+
+bool tbJoint_SetForceThreshold(tbJointId jointId, float threshold)
+{
+	const char* f = "tbJoint_SetForceThreshold";
+	tbJoint* joint = tbGetJointChecked(jointId, f, NULL, -1, true);
+	if (joint == NULL || tbCheckNonNegative(f, "threshold", threshold) == false)
+	{
+		return false;
+	}
+	joint->forceThreshold = threshold;
+	return true;
+}
+
+float tbJoint_GetForceThreshold(tbJointId jointId)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetForceThreshold", NULL, -1, false);
+	return joint != NULL ? joint->forceThreshold : 0.0f;
+}
+
+bool tbJoint_SetTorqueThreshold(tbJointId jointId, float threshold)
+{
+	const char* f = "tbJoint_SetTorqueThreshold";
+	tbJoint* joint = tbGetJointChecked(jointId, f, NULL, -1, true);
+	if (joint == NULL || tbCheckNonNegative(f, "threshold", threshold) == false)
+	{
+		return false;
+	}
+	joint->torqueThreshold = threshold;
+	return true;
+}
+
+float tbJoint_GetTorqueThreshold(tbJointId jointId)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetTorqueThreshold", NULL, -1, false);
+	return joint != NULL ? joint->torqueThreshold : 0.0f;
+}
+
+bool tbJoint_SetDrawScale(tbJointId jointId, float drawScale)
+{
+	const char* f = "tbJoint_SetDrawScale";
+	tbJoint* joint = tbGetJointChecked(jointId, f, NULL, -1, false);
+	if (joint == NULL || tbCheckNonNegative(f, "drawScale", drawScale) == false)
+	{
+		return false;
+	}
+	joint->drawScale = drawScale;
+	return true;
+}
+
+float tbJoint_GetDrawScale(tbJointId jointId)
+{
+	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetDrawScale", NULL, -1, false);
+	return joint != NULL ? joint->drawScale : 0.0f;
+}
+
+int tbBody_GetJointCount(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetJointCount", NULL, false);
+	return body != NULL ? body->jointCount : 0;
+}
+
+int tbBody_GetJoints(tbBodyId bodyId, tbJointId* jointArray, int capacity)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetJoints", &world, false);
+	if (body == NULL || tbCheckPointer("tbBody_GetJoints", "jointArray", jointArray) == false)
+	{
+		return 0;
+	}
+	int count = 0;
+	for (int key = body->headJointKey; key != TB_NULL_INDEX && count < capacity;)
+	{
+		const tbJoint* joint = world->joints + (key >> 1);
+		jointArray[count++] = tbMakeJointId(world, joint);
+		key = joint->edges[key & 1].nextKey;
+	}
+	return count;
+}
+
+tbJointEvents tbWorld_GetJointEvents(tbWorldId worldId)
+{
+	tbJointEvents events = {0};
+	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetJointEvents");
+	if (world != NULL)
+	{
+		events.jointEvents = world->jointEvents;
+		events.count = world->jointEventCount;
+	}
+	return events;
+}
+
+tbWorldTransform tbJointWorldFrameA(const tbWorld* world, const tbJoint* joint)
+{
+	return tbMulWorldTransforms(world->bodies[joint->edges[0].bodyId].transform, joint->localFrameA);
+}
+
+tbWorldTransform tbJointWorldFrameB(const tbWorld* world, const tbJoint* joint)
+{
+	return tbMulWorldTransforms(world->bodies[joint->edges[1].bodyId].transform, joint->localFrameB);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The step
+
+static bool tbIsAwakeDynamic(const tbBody* body)
+{
+	return body->type == tb_dynamicBody && body->awakeIndex != TB_NULL_INDEX;
+}
+
+// The part of the preparation every kind shares: the solver's view of the two bodies and the
+// positional softness of the chosen method.
+static void tbPrepareJointBase(tbJoint* joint, const tbStepContext* context)
+{
+	const tbWorld* world = context->world;
+	const tbBody* a = world->bodies + joint->edges[0].bodyId;
+	const tbBody* b = world->bodies + joint->edges[1].bodyId;
+	// Static and sleeping bodies stand in as the motionless body at index bodyCount.
+	joint->indexA = a->awakeIndex != TB_NULL_INDEX ? a->awakeIndex : context->bodyCount;
+	joint->indexB = b->awakeIndex != TB_NULL_INDEX ? b->awakeIndex : context->bodyCount;
+	bool dynamicA = tbIsAwakeDynamic(a);
+	bool dynamicB = tbIsAwakeDynamic(b);
+	joint->invMassA = dynamicA ? a->invMass : 0.0f;
+	joint->invIA = dynamicA && a->fixedRotation == false ? a->invInertia : 0.0f;
+	joint->invMassB = dynamicB ? b->invMass : 0.0f;
+	joint->invIB = dynamicB && b->fixedRotation == false ? b->invInertia : 0.0f;
+
+	// Anchor minus centre of mass, in world axes: rotate(q, localFrame.p − localCenter).
+	joint->frameA.q = tbMulRot(a->transform.q, joint->localFrameA.q);
+	joint->frameA.p = tbRotateVector(a->transform.q, tbSub(joint->localFrameA.p, a->localCenter));
+	joint->frameB.q = tbMulRot(b->transform.q, joint->localFrameB.q);
+	joint->frameB.p = tbRotateVector(b->transform.q, tbSub(joint->localFrameB.p, b->localCenter));
+	joint->deltaCenter = tbSubPos(b->center, a->center);
+
+	if (world->def.solver == tb_solverSoft)
+	{
+		float hertz = tbMinFloat(joint->constraintHertz, 0.25f * context->inv_h);
+		joint->constraintSoftness = tbMakeSoftness(hertz, joint->constraintDampingRatio, context->h);
+	}
+	else
+	{
+		tbSoftness baumgarte = {TB_BAUMGARTE * context->inv_h, 1.0f, 0.0f};
+		joint->constraintSoftness = baumgarte;
+	}
+}
+
+void tbPrepareJoints(tbStepContext* context)
+{
+	tbWorld* world = context->world;
+	world->solverJointCount = 0;
+	world->jointEventCount = 0;
+	world->jointTreeCount = 0; // the trees live in the step arena: none survive a step
+	world->jointTreeNodeCount = 0;
+	if (world->jointCount == 0)
+	{
+		return;
+	}
+	// The pool in id order (joints are few): the joints with an awake dynamic body. Joined bodies
+	// wake together, so the other side is awake too, or static, or a resting kinematic body.
+	TB_ARRAY_RESERVE(world->solverJoints, world->solverJointCapacity, world->jointHighWater);
+	for (int id = 0; id < world->jointHighWater; ++id)
+	{
+		tbJoint* joint = world->joints + id;
+		if (joint->inUse == false || joint->type == tb_filterJoint ||
+			(tbIsAwakeDynamic(world->bodies + joint->edges[0].bodyId) == false &&
+			 tbIsAwakeDynamic(world->bodies + joint->edges[1].bodyId) == false))
+		{
+			continue;
+		}
+		tbPrepareJointBase(joint, context);
+		joint->treeNode = TB_NULL_INDEX;
+		joint->solvedInTree = false;
+		joint->loopyMechanism = false;
+		switch (joint->type)
+		{
+			case tb_distanceJoint:
+				tbPrepareDistanceJoint(joint, context);
+				break;
+			case tb_motorJoint:
+				tbPrepareMotorJoint(joint, context);
+				break;
+			case tb_moverJoint:
+				tbPrepareMoverJoint(joint, context);
+				break;
+			case tb_pogoJoint:
+				tbPreparePogoJoint(joint, context);
+				break;
+			case tb_prismaticJoint:
+				tbPreparePrismaticJoint(joint, context);
+				break;
+			case tb_revoluteJoint:
+				tbPrepareRevoluteJoint(joint, context);
+				break;
+			case tb_weldJoint:
+				tbPrepareWeldJoint(joint, context);
+				break;
+			case tb_wheelJoint:
+				tbPrepareWheelJoint(joint, context);
+				break;
+			default:
+				break;
+		}
+		world->solverJoints[world->solverJointCount++] = id;
+	}
+}
+
+// Joints are visited in solve order, colour by colour, so their 272-byte records are scattered
+// over the joint pool (joint_grid: 5 MB): ask for the one a few ahead.
+static inline void tbPrefetchJointAhead(const tbWorld* world, int i, int end)
+{
+	if (i + TB_PREFETCH_AHEAD < end)
+	{
+		// The solve's part only: the edges, ids and API fields after the kind's data stay behind.
+		tbPrefetch(world->joints + world->solverJoints[i + TB_PREFETCH_AHEAD], (int)offsetof(tbJoint, edges));
+	}
+}
+
+void tbWarmStartJointRange(tbStepContext* context, int begin, int end)
+{
+	tbWorld* world = context->world;
+	for (int i = begin; i < end; ++i)
+	{
+		tbJoint* joint = world->joints + world->solverJoints[i];
+		tbPrefetchJointAhead(world, i, end);
+		switch (joint->type)
+		{
+			case tb_distanceJoint:
+				tbWarmStartDistanceJoint(joint, context);
+				break;
+			case tb_motorJoint:
+				tbWarmStartMotorJoint(joint, context);
+				break;
+			case tb_moverJoint:
+				tbWarmStartMoverJoint(joint, context);
+				break;
+			case tb_pogoJoint:
+				tbWarmStartPogoJoint(joint, context);
+				break;
+			case tb_prismaticJoint:
+				tbWarmStartPrismaticJoint(joint, context);
+				break;
+			case tb_revoluteJoint:
+				tbWarmStartRevoluteJoint(joint, context);
+				break;
+			case tb_weldJoint:
+				tbWarmStartWeldJoint(joint, context);
+				break;
+			case tb_wheelJoint:
+				tbWarmStartWheelJoint(joint, context);
+				break;
+			default:
+				break;
+		}
+	}
+}
+
+void tbWarmStartJoints(tbStepContext* context)
+{
+	context->world->jointTreesStale = true; // a new sub-step: the bodies moved
+	tbWarmStartJointRange(context, 0, context->world->solverJointCount);
+}
+
+void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBias)
+{
+	tbWorld* world = context->world;
+	for (int i = begin; i < end; ++i)
+	{
+		tbJoint* joint = world->joints + world->solverJoints[i];
+		tbPrefetchJointAhead(world, i, end);
+		switch (joint->type)
+		{
+			case tb_distanceJoint:
+				tbSolveDistanceJoint(joint, context, useBias);
+				break;
+			case tb_motorJoint:
+				tbSolveMotorJoint(joint, context, useBias);
+				break;
+			case tb_moverJoint:
+				tbSolveMoverJoint(joint, context, useBias);
+				break;
+			case tb_pogoJoint:
+				tbSolvePogoJoint(joint, context, useBias);
+				break;
+			case tb_prismaticJoint:
+				tbSolvePrismaticJoint(joint, context, useBias);
+				break;
+			case tb_revoluteJoint:
+				tbSolveRevoluteJoint(joint, context, useBias);
+				break;
+			case tb_weldJoint:
+				tbSolveWeldJoint(joint, context, useBias);
+				break;
+			case tb_wheelJoint:
+				tbSolveWheelJoint(joint, context, useBias);
+				break;
+			default:
+				break;
+		}
+	}
+}
+
+// A pass over the joints. The relaxing pass, and a biased pass without trees, solve every row one
+// at a time. A biased pass with joint trees (joint_tree.c) sweeps symmetrically: the joints' own
+// rows (springs, motors, limits, and the equality rows of joints outside the trees), the trees'
+// equality rows exactly, then the joints' own rows again, since the exact solve moved their bodies.
+// Measured on the catalogue's 24-ragdoll pile (sleep off, mean over the last 3 of 10 s; friction
+// motors of 0.5 N·m, limits): rows then trees leave 6.9 of 240 bodies above the sleep speed, the
+// symmetric sweep 0.9; with 2 N·m friction motors 26.5 and 3.4 (row by row: none). Exact solves
+// in the relaxing pass too cost twice as much for the same peak chain stretch. Positions change only between sub-steps, so the trees are
+// factored once per sub-step (the first biased pass: Baumgarte and NGS run several).
+void tbBeginJointPass(tbStepContext* context, bool useBias)
+{
+	tbWorld* world = context->world;
+	if (useBias && world->jointTreesStale)
+	{
+		tbFactorJointTrees(context);
+		world->jointTreesStale = false;
+	}
+	tbMarkTreeRows(context, useBias);
+}
+
+void tbSolveJoints(tbStepContext* context, bool useBias)
+{
+	tbWorld* world = context->world;
+	tbBeginJointPass(context, useBias);
+	tbSolveJointRowRange(context, 0, world->solverJointCount, useBias);
+	if (useBias && world->jointTreeCount > 0)
+	{
+		tbSolveJointTrees(context);
+		tbSolveJointRowRange(context, 0, world->solverJointCount, useBias);
+	}
+}
+
+// Rigid tree rows have no compliance to damp them, and one relaxing iteration does not remove the
+// correction velocity they leave where contacts close loops between trees: measured on 24
+// ragdolls in a pile (sleep off, mean over the last 3 of 10 s), one relaxing iteration leaves 114
+// bodies above the sleep speed (0.033 J of kinetic energy; row by row: none), two leave none
+// (3e-4 J). More joint-only sweeps or exact relaxing of the trees do not do it: joints and
+// contacts must relax together. So a step with joint trees relaxes twice more: with the default
+// 2 relaxing iterations plus one, one ragdoll of the pile still moves at 0.05 m/s after 10 s and
+// the pile never sleeps; plus two, it sleeps at step 240 (ragdoll pile: ×1.69 → ×1.87 the
+// row-by-row step time, measured with 3 + 1).
+int tbJointTreeRelaxIterations(const tbStepContext* context)
+{
+	const tbWorld* world = context->world;
+	return world->jointTreeCount > 0 && world->def.relaxIterations > 0 ? 2 : 0;
+}
+
+// The relaxing iterations after the first are there for contact stacks (card houses, docs/
+// stability.md); joints solved row by row are relaxed by the first alone. Measured on a grid of
+// 19,800 revolute joints (joint_grid, 300 steps): relaxing them in both iterations gives a mean
+// pin gap of 0.0239 m against 0.0257 m (Box2D v3.2: 0.0259 m, one relaxing pass) for 1.3 ms more
+// per step (4.7 → 3.4 ms of solve). Joint trees need their rows relaxed in every iteration, with
+// the contacts (tbJointTreeRelaxIterations above).
+bool tbRelaxJointsInIteration(const tbStepContext* context, int iteration)
+{
+	return iteration == 0 || context->world->jointTreeCount > 0;
+}
+
+void tbSetJointRow(tbJointRows* rows, int row, tbVec3Row a, tbVec3Row b, float C, float* impulse)
+{
+	float* ja = rows->JA + 3 * row;
+	float* jb = rows->JB + 3 * row;
+	ja[0] = a.x;
+	ja[1] = a.y;
+	ja[2] = a.w;
+	jb[0] = b.x;
+	jb[1] = b.y;
+	jb[2] = b.w;
+	rows->bias[row] = C;
+	rows->impulse[row] = impulse;
+}
+
+int tbJointEqualityRowCount(const tbJoint* joint)
+{
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			return tbDistanceJointIsRigid(joint) ? 1 : 0;
+		case tb_prismaticJoint:
+		case tb_revoluteJoint:
+			return 2;
+		case tb_weldJoint:
+			return (joint->weld.linearHertz == 0.0f ? 2 : 0) + (joint->weld.angularHertz == 0.0f ? 1 : 0);
+		case tb_wheelJoint:
+			return 1;
+		default:
+			return 0;
+	}
+}
+
+void tbGetJointEqualityRows(tbJoint* joint, const tbJointBodies* b, tbJointRows* rows)
+{
+	int count = 0;
+	switch (joint->type)
+	{
+		case tb_distanceJoint:
+			count = tbDistanceJointEqualityRows(joint, b, rows);
+			break;
+		case tb_prismaticJoint:
+			count = tbPrismaticJointEqualityRows(joint, b, rows);
+			break;
+		case tb_revoluteJoint:
+			count = tbRevoluteJointEqualityRows(joint, b, rows);
+			break;
+		case tb_weldJoint:
+			count = tbWeldJointEqualityRows(joint, b, rows);
+			break;
+		case tb_wheelJoint:
+			count = tbWheelJointEqualityRows(joint, b, rows);
+			break;
+		default:
+			break;
+	}
+	// The rows hold their position error C; the bias of the biased pass is β·C.
+	float beta = joint->constraintSoftness.biasRate;
+	for (int r = 0; r < count; ++r)
+	{
+		rows->bias[r] *= beta;
+	}
+}
+
+// Joint events: the force and torque come from the impulses the joint holds at the end of the
+// step (one sub-step's worth, so force = impulse/h). Box2D v3 tests during the biased passes
+// instead; the end of the step is the force the game sees through tbJoint_GetConstraintForce.
+void tbFinishJoints(tbStepContext* context)
+{
+	tbWorld* world = context->world;
+	world->jointInvH = context->inv_h;
+	for (int i = 0; i < world->solverJointCount; ++i)
+	{
+		tbJoint* joint = world->joints + world->solverJoints[i];
+		if (joint->forceThreshold >= FLT_MAX && joint->torqueThreshold >= FLT_MAX)
+		{
+			continue;
+		}
+		tbVec2 force;
+		float torque;
+		tbGetJointReaction(world, joint, context->inv_h, &force, &torque);
+		if (tbLength(force) >= joint->forceThreshold || tbAbsFloat(torque) >= joint->torqueThreshold)
+		{
+			tbJointEvent event = {tbMakeJointId(world, joint), joint->userData};
+			TB_ARRAY_PUSH(world->jointEvents, world->jointEventCount, world->jointEventCapacity, event);
+		}
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// Islands, waking and the pair filter
+
+void tbWakeJointedBodies(tbWorld* world, tbBody* body)
+{
+	if (body->type != tb_dynamicBody || body->headJointKey == TB_NULL_INDEX)
+	{
+		return;
+	}
+	// An explicit stack instead of recursion (a long chain would be a deep recursion): a nested
+	// call, made by the tbWakeBody below, only pushes its body; the outer loop walks it.
+	TB_ARRAY_PUSH(world->jointWakeStack, world->jointWakeCount, world->jointWakeCapacity, (int)(body - world->bodies));
+	if (world->jointWakeActive)
+	{
+		return;
+	}
+	world->jointWakeActive = true;
+	while (world->jointWakeCount > 0)
+	{
+		const tbBody* b = world->bodies + world->jointWakeStack[--world->jointWakeCount];
+		for (int key = b->headJointKey; key != TB_NULL_INDEX;)
+		{
+			const tbJoint* joint = world->joints + (key >> 1);
+			tbBody* other = world->bodies + joint->edges[(key & 1) ^ 1].bodyId;
+			if (joint->type != tb_filterJoint && other->type != tb_staticBody && other->awakeIndex == TB_NULL_INDEX)
+			{
+				tbWakeBody(world, other);
+			}
+			key = joint->edges[key & 1].nextKey;
+		}
+	}
+	world->jointWakeActive = false;
+}
+
+/// The rule contacts follow (island.c): an awake dynamic body wakes what it is joined to; a
+/// kinematic one only while it moves.
+static bool tbWakesJoinedBody(const tbBody* body)
+{
+	if (body->awakeIndex == TB_NULL_INDEX)
+	{
+		return false;
+	}
+	bool moving = tbLengthSquared(body->linearVelocity) > 0.0f || body->angularVelocity != 0.0f;
+	return body->type == tb_dynamicBody || (body->type == tb_kinematicBody && moving);
+}
+
+void tbWakeJointPartners(tbWorld* world)
+{
+	// Joined bodies wake together, so a joint has one side awake and the other asleep only after a
+	// sleeping island took a kinematic body with it, or after tbBody_SetAwake(false) on one body.
+	// Joined bodies join and leave the awake set together, so with no kinematic body (whose
+	// velocity can change while both sides keep their state) a half-asleep joint can only appear
+	// when the awake set changed: a grid of 19,800 joints that all stay awake skips the walk.
+	if (world->jointCount == 0 || (world->jointWakeDirty == false && world->kinematicBodyCount == 0))
+	{
+		return;
+	}
+	world->jointWakeDirty = false;
+	for (int id = 0; id < world->jointHighWater; ++id)
+	{
+		const tbJoint* joint = world->joints + id;
+		if (joint->inUse == false || joint->type == tb_filterJoint)
+		{
+			continue;
+		}
+		tbBody* a = world->bodies + joint->edges[0].bodyId;
+		tbBody* b = world->bodies + joint->edges[1].bodyId;
+		if (b->type != tb_staticBody && b->awakeIndex == TB_NULL_INDEX && tbWakesJoinedBody(a))
+		{
+			tbWakeBody(world, b);
+		}
+		else if (a->type != tb_staticBody && a->awakeIndex == TB_NULL_INDEX && tbWakesJoinedBody(b))
+		{
+			tbWakeBody(world, a);
+		}
+	}
+}
+
+bool tbJointBlocksCollision(const tbWorld* world, int bodyIdA, int bodyIdB)
+{
+	const tbBody* a = world->bodies + bodyIdA;
+	const tbBody* b = world->bodies + bodyIdB;
+	int key = a->jointCount <= b->jointCount ? a->headJointKey : b->headJointKey;
+	int other = a->jointCount <= b->jointCount ? bodyIdB : bodyIdA;
+	while (key != TB_NULL_INDEX)
+	{
+		const tbJoint* joint = world->joints + (key >> 1);
+		if (joint->edges[(key & 1) ^ 1].bodyId == other && joint->collideConnected == false)
+		{
+			return true;
+		}
+		key = joint->edges[key & 1].nextKey;
+	}
+	return false;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Drawing
+
+void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw)
+{
+	if (draw->drawJoints == false || draw->DrawSegment == NULL)
+	{
+		return;
+	}
+	for (int id = 0; id < world->jointHighWater; ++id)
+	{
+		const tbJoint* joint = world->joints + id;
+		if (joint->inUse == false)
+		{
+			continue;
+		}
+		switch (joint->type)
+		{
+			case tb_distanceJoint:
+				tbDrawDistanceJoint(draw, world, joint);
+				break;
+			case tb_motorJoint:
+				tbDrawMotorJoint(draw, world, joint);
+				break;
+			case tb_moverJoint:
+				tbDrawMoverJoint(draw, world, joint);
+				break;
+			case tb_pogoJoint:
+				tbDrawPogoJoint(draw, world, joint);
+				break;
+			case tb_prismaticJoint:
+				tbDrawPrismaticJoint(draw, world, joint);
+				break;
+			case tb_revoluteJoint:
+				tbDrawRevoluteJoint(draw, world, joint);
+				break;
+			case tb_weldJoint:
+				tbDrawWeldJoint(draw, world, joint);
+				break;
+			case tb_wheelJoint:
+				tbDrawWheelJoint(draw, world, joint);
+				break;
+			default:
+			{
+				// Filter joint: a thin link between the body origins.
+				tbVec2 pA = tbToVec2(world->bodies[joint->edges[0].bodyId].transform.p);
+				tbVec2 pB = tbToVec2(world->bodies[joint->edges[1].bodyId].transform.p);
+				draw->DrawSegment(pA, pB, tb_colorAABB, draw->context);
+				break;
+			}
+		}
+	}
+}

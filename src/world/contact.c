@@ -1,0 +1,1357 @@
+// Contacts: a contact exists while two shapes' fat boxes overlap. This file owns the two stages
+// that find and update them: the pair stage turns broad-phase pairs into contacts (after
+// filtering), and the collide stage (the narrow phase) recomputes each awake contact's
+// manifold with a speculative margin that grows with the pair's approach speed (see
+// tbSpeculativeMargin), or, for a touching pair that barely moved since, carries the last one
+// along (tbRecycleManifold), carries impulses over by feature id for warm starting, and reports
+// begin/end events when a point comes within the fixed TB_SPECULATIVE_DISTANCE.
+#include "collision/manifold_internal.h"
+#include "core/task.h"
+#include "world.h"
+
+#include "core/sort.h"
+
+#include "core/array.h"
+
+#include <string.h>
+
+// Material mixing. A callback's answer is user input arriving mid-step: one the solver cannot use
+// (friction NaN or negative; restitution NaN, negative or infinite) is reported and replaced by the
+// default mix, so the contact still behaves. Infinite friction is allowed: it never slides, in
+// either contact solver (the default mix also reaches it, for frictions above about 1.8e19).
+static float tbMixFriction(const tbWorld* world, const tbShape* a, const tbShape* b)
+{
+	float mixed = sqrtf(a->material.friction * b->material.friction);
+	if (world->def.frictionCallback == NULL)
+	{
+		return mixed;
+	}
+	float value = world->def.frictionCallback(a->material.friction, a->material.userMaterialId, b->material.friction, b->material.userMaterialId);
+	if (!(value >= 0.0f))
+	{
+		tbReportError("tbWorld_Step", "frictionCallback returned %g for frictions %g and %g; it must return a number >= 0 "
+					  "(the default mix sqrt(a*b) = %g is used)", (double)value, (double)a->material.friction,
+					  (double)b->material.friction, (double)mixed);
+		return mixed;
+	}
+	return value;
+}
+
+static float tbMixRestitution(const tbWorld* world, const tbShape* a, const tbShape* b)
+{
+	float mixed = tbMaxFloat(a->material.restitution, b->material.restitution);
+	if (world->def.restitutionCallback == NULL)
+	{
+		return mixed;
+	}
+	float value =
+		world->def.restitutionCallback(a->material.restitution, a->material.userMaterialId, b->material.restitution, b->material.userMaterialId);
+	if (!(value >= 0.0f) || tbIsValidFloat(value) == false)
+	{
+		tbReportError("tbWorld_Step", "restitutionCallback returned %g for restitutions %g and %g; it must return a "
+					  "finite number >= 0 (the default mix max(a, b) = %g is used)", (double)value,
+					  (double)a->material.restitution, (double)b->material.restitution, (double)mixed);
+		return mixed;
+	}
+	return value;
+}
+
+/// Rounding radius of a shape: what rolls (circle, capsule, rounded polygon); 0 for the rest.
+static float tbRollingRadius(const tbShape* shape)
+{
+	switch (shape->geometry.type)
+	{
+		case tb_circleShape:
+			return shape->geometry.circle.radius;
+		case tb_capsuleShape:
+			return shape->geometry.capsule.radius;
+		case tb_polygonShape:
+			return shape->geometry.polygon.radius;
+		default:
+			return 0.0f;
+	}
+}
+
+// Rolling resistance and tangent speed as Box2D v3.2 mixes them: the larger coefficient times the
+// larger rounding radius (the lever arm of the resisting torque: a torque of c·r·N resists the
+// rolling of a wheel of radius r under normal force N), and the two surfaces' speeds added.
+void tbMixContactMaterials(const tbWorld* world, tbContact* contact)
+{
+	const tbShape* a = world->shapes + contact->shapeIdA;
+	const tbShape* b = world->shapes + contact->shapeIdB;
+	contact->friction = tbMixFriction(world, a, b);
+	contact->restitution = tbMixRestitution(world, a, b);
+	float resistance = tbMaxFloat(a->material.rollingResistance, b->material.rollingResistance);
+	contact->rollingResistance = resistance > 0.0f ? resistance * tbMaxFloat(tbRollingRadius(a), tbRollingRadius(b)) : 0.0f;
+	contact->tangentSpeed = a->material.tangentSpeed + b->material.tangentSpeed;
+}
+
+static void tbLinkEdge(tbWorld* world, int contactId, int edgeIndex)
+{
+	tbContact* contact = world->contacts + contactId;
+	tbBody* body = world->bodies + contact->edges[edgeIndex].bodyId;
+	int key = (contactId << 1) | edgeIndex;
+	contact->edges[edgeIndex].prevKey = TB_NULL_INDEX;
+	contact->edges[edgeIndex].nextKey = body->headContactKey;
+	if (body->headContactKey != TB_NULL_INDEX)
+	{
+		int head = body->headContactKey;
+		world->contacts[head >> 1].edges[head & 1].prevKey = key;
+	}
+	body->headContactKey = key;
+	body->contactCount += 1;
+}
+
+static void tbUnlinkEdge(tbWorld* world, int contactId, int edgeIndex)
+{
+	tbContactEdge* edge = world->contacts[contactId].edges + edgeIndex;
+	tbBody* body = world->bodies + edge->bodyId;
+	if (edge->prevKey != TB_NULL_INDEX)
+	{
+		world->contacts[edge->prevKey >> 1].edges[edge->prevKey & 1].nextKey = edge->nextKey;
+	}
+	else
+	{
+		body->headContactKey = edge->nextKey;
+	}
+	if (edge->nextKey != TB_NULL_INDEX)
+	{
+		world->contacts[edge->nextKey >> 1].edges[edge->nextKey & 1].prevKey = edge->prevKey;
+	}
+	body->contactCount -= 1;
+}
+
+void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
+{
+	world->contactEpoch += 1; // the collide stage's touching list may change (tbCollideStage)
+	int id;
+	if (world->contactFreeCount > 0)
+	{
+		id = world->contactFree[--world->contactFreeCount];
+	}
+	else
+	{
+		TB_ARRAY_RESERVE(world->contacts, world->contactCapacity, world->contactHighWater + 1);
+		TB_ARRAY_RESERVE(world->contactBodies, world->contactBodyCapacity, world->contactHighWater + 1);
+		id = world->contactHighWater++;
+		// A fresh slot's generations start from the world's generation, so an id kept from an
+		// earlier world in the same world slot does not match (64k reuses of one slot per world).
+		world->contacts[id].generation = (uint32_t)world->generation << 16;
+	}
+	tbContact* contact = world->contacts + id;
+	uint32_t generation = contact->generation;
+	memset(contact, 0, sizeof(tbContact));
+	contact->generation = generation;
+	const tbShape* a = world->shapes + shapeIdA;
+	const tbShape* b = world->shapes + shapeIdB;
+	contact->inUse = true;
+	contact->shapeIdA = shapeIdA;
+	contact->shapeIdB = shapeIdB;
+	contact->edges[0].bodyId = a->bodyId;
+	contact->edges[1].bodyId = b->bodyId;
+	world->contactBodies[id] = (tbBodyPair){a->bodyId, b->bodyId};
+	tbMixContactMaterials(world, contact);
+	contact->stamp = UINT32_MAX;
+	if (a->isSensor || b->isSensor)
+	{
+		contact->flags |= tb_contactSensor;
+	}
+	if (a->enableContactEvents && b->enableContactEvents)
+	{
+		contact->flags |= tb_contactEnableEvents;
+	}
+	if (a->enableHitEvents || b->enableHitEvents)
+	{
+		contact->flags |= tb_contactEnableHits;
+		world->hitContactCount += 1;
+	}
+	if (a->enablePreSolveEvents || b->enablePreSolveEvents)
+	{
+		contact->flags |= tb_contactEnablePreSolve;
+	}
+	tbLinkEdge(world, id, 0);
+	tbLinkEdge(world, id, 1);
+	tbHashSet_Add(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB));
+	world->contactCount += 1;
+}
+
+/// A sensor reports a visitor when both shapes enable sensor events: the sensor's flag says it
+/// reports at all, the visitor's that it wants to be seen (a bullet a trigger should ignore).
+static bool tbSensorEventsEnabled(const tbWorld* world, int sensor, int visitor)
+{
+	return world->shapes[sensor].enableSensorEvents && world->shapes[visitor].enableSensorEvents;
+}
+
+/// End events of the step go to the event arrays; those of a change between steps (the world is
+/// unlocked) wait in the pending arrays for the next step, so they are neither cleared unseen at its
+/// start nor pushed into an array the user may be reading.
+static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
+{
+	if (contact->flags & tb_contactSensor)
+	{
+		const tbShape* a = world->shapes + contact->shapeIdA;
+		bool aIsSensor = a->isSensor;
+		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
+		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
+		if (tbSensorEventsEnabled(world, sensor, visitor))
+		{
+			tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
+			if (world->locked)
+			{
+				TB_ARRAY_PUSH(world->sensorEndEvents, world->sensorEndCount, world->sensorEndCapacity, e);
+			}
+			else
+			{
+				TB_ARRAY_PUSH(world->pendingSensorEndEvents, world->pendingSensorEndCount,
+							  world->pendingSensorEndCapacity, e);
+			}
+		}
+	}
+	else if (contact->flags & tb_contactEnableEvents)
+	{
+		tbContactEndTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB)};
+		if (world->locked)
+		{
+			TB_ARRAY_PUSH(world->endEvents, world->endCount, world->endCapacity, e);
+		}
+		else
+		{
+			TB_ARRAY_PUSH(world->pendingEndEvents, world->pendingEndCount, world->pendingEndCapacity, e);
+		}
+	}
+}
+
+void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
+{
+	world->contactEpoch += 1; // the collide stage's touching list may change (tbCollideStage)
+	tbContact* contact = world->contacts + contactId;
+	if (contact->flags & tb_contactReported)
+	{
+		tbPushEndEvent(world, contact);
+	}
+	tbHashSet_Remove(&world->pairSet, tbShapePairKey(contact->shapeIdA, contact->shapeIdB));
+	tbUnlinkEdge(world, contactId, 0);
+	tbUnlinkEdge(world, contactId, 1);
+	if (wakeBodies && (contact->flags & tb_contactTouching))
+	{
+		tbWakeBody(world, world->bodies + contact->edges[0].bodyId);
+		tbWakeBody(world, world->bodies + contact->edges[1].bodyId);
+	}
+	world->hitContactCount -= (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
+	contact->inUse = false;
+	contact->flags = 0;
+	contact->generation += 1;
+	world->contactBodies[contactId] = (tbBodyPair){TB_NULL_INDEX, TB_NULL_INDEX};
+	TB_ARRAY_PUSH(world->contactFree, world->contactFreeCount, world->contactFreeCapacity, contactId);
+	world->contactCount -= 1;
+}
+
+/// Should a broad-phase pair become a contact? Same body, no dynamic body (unless one shape is a
+/// sensor: a kinematic door or lift passing a static or kinematic sensor is reported), filtered
+/// out, or an existing contact: no. Static proxies never pair with each other.
+/// What the narrow phase of one contact found (tbCollideContact), acted on in contact order.
+enum tbCollideResult
+{
+	tb_collideDestroy = 0x01,	 ///< the fat boxes no longer overlap
+	tb_collideBegan = 0x02,		 ///< manifold points appeared: wake both bodies
+	tb_collideBeginEvent = 0x04, ///< within the begin-touch distance now
+	tb_collideEndEvent = 0x08,	 ///< no longer
+	tb_collideRecycled = 0x10,
+	tb_collideGJK = 0x20,
+	tb_collideSAT = 0x40,
+	tb_collideSolver = 0x80,   ///< touching and not a sensor: the solver will see it
+	tb_collideReported = 0x100, ///< within the begin-touch distance (tb_contactReported)
+	tb_collideReady = 0x200,	///< a solver contact as it stands: a dynamic side and no sleeping one
+	tb_collideEnded = 0x400,	///< manifold points disappeared (touching ended)
+	tb_collideNewKey = 0x800,	///< a ready contact whose solver key differs from the last step's
+};
+
+/// One worker's sums over its collide ranges, on a cache line of its own (tbCollideStage adds them
+/// in worker order).
+typedef struct tbCollideTally
+{
+	int reported, recycled, gjk, sat;
+	int changed;  ///< destroyed, began or ended touching, or a begin/end event
+	int notReady; ///< solver contacts not ready (tb_collideReady)
+	int newKeys;  ///< ready contacts with a new key (tb_collideNewKey)
+	int padding[9];
+} tbCollideTally;
+
+static void tbAddTally(tbCollideTally* sum, const tbCollideTally* part)
+{
+	sum->reported += part->reported;
+	sum->recycled += part->recycled;
+	sum->gjk += part->gjk;
+	sum->sat += part->sat;
+	sum->changed += part->changed;
+	sum->notReady += part->notReady;
+	sum->newKeys += part->newKeys;
+}
+
+static bool tbIsSegmentKind(tbShapeType type)
+{
+	return type == tb_segmentShape || type == tb_chainSegmentShape;
+}
+
+static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeIdB)
+{
+	const tbShape* a = world->shapes + shapeIdA;
+	const tbShape* b = world->shapes + shapeIdB;
+	if (a->bodyId == b->bodyId)
+	{
+		return false;
+	}
+	if (tbIsSegmentKind(a->geometry.type) && tbIsSegmentKind(b->geometry.type))
+	{
+		return false; // no area on either side: never a contact
+	}
+	const tbBody* bodyA = world->bodies + a->bodyId;
+	const tbBody* bodyB = world->bodies + b->bodyId;
+	if (bodyA->type != tb_dynamicBody && bodyB->type != tb_dynamicBody && a->isSensor == b->isSensor)
+	{
+		return false;
+	}
+	if ((bodyA->jointCount | bodyB->jointCount) != 0 && tbJointBlocksCollision(world, a->bodyId, b->bodyId))
+	{
+		return false; // a joint between them forbids it (collideConnected false)
+	}
+	if (a->isSensor && b->isSensor)
+	{
+		return false;
+	}
+	if (tbShouldShapesCollide(a->filter, b->filter) == false)
+	{
+		return false;
+	}
+	if (tbHashSet_Contains(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB)))
+	{
+		return false;
+	}
+	if ((a->enableCustomFiltering || b->enableCustomFiltering) && world->customFilterFcn != NULL)
+	{
+		return world->customFilterFcn(tbMakeShapeId(world, shapeIdA), tbMakeShapeId(world, shapeIdB),
+									  world->customFilterContext);
+	}
+	return true;
+}
+
+bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* context)
+{
+	// Most pairs a moving pile finds have a contact already: one hash probe rejects them before
+	// the shape and body loads of the full test.
+	const tbWorld* world = context;
+	if (tbHashSet_Contains(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB)))
+	{
+		return false;
+	}
+	return tbShouldCreateContact(world, shapeIdA, shapeIdB);
+}
+
+void tbContactPairPrefetch(int shapeIdA, int shapeIdB, void* context)
+{
+	const tbWorld* world = context;
+	tbHashSet_Prefetch(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB));
+}
+
+static void tbRunOnWorkers(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* world)
+{
+	tbParallelFor(&((tbWorld*)world)->def, task, itemCount, minRange, taskContext);
+}
+
+void tbUpdatePairsStage(tbWorld* world)
+{
+	tbBroadPhase* bp = &world->broadPhase;
+	// On workers the movable tree's refresh waits for the collide stage, where the caller runs it
+	// while the workers start the narrow phase (tbCollideStage), as Box2D v3 rebuilds its tree
+	// beside the narrow phase. Not with a pre-solve callback: it runs in the narrow phase and may
+	// query the world.
+	int workers = tbWorkerCount(&world->def);
+	bool deferRefresh = workers > 1 && world->preSolveFcn == NULL;
+	tbBroadPhase_UpdatePairsOnWorkers(bp, tbRunOnWorkers, world, workers, tbWorkerSlotCount(&world->def), deferRefresh);
+	world->counters.pairCandidates = bp->pairList.count;
+	// Every pair passed tbContactPairFilter as it was found, and the pairs are unique: each
+	// becomes a contact.
+	for (int i = 0; i < bp->pairList.count; ++i)
+	{
+		tbCreateContact(world, bp->pairList.pairs[i].a, bp->pairList.pairs[i].b);
+	}
+}
+
+/// Carry accumulated impulses from the old manifold to points of the new one with the same
+/// feature id (warm starting).
+static void tbMatchPoints(tbManifold* manifold, const tbManifold* old)
+{
+	manifold->rollingImpulse = old->rollingImpulse;
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		tbManifoldPoint* mp = manifold->points + i;
+		mp->normalImpulse = 0.0f;
+		mp->tangentImpulse = 0.0f;
+		mp->persisted = false;
+		for (int j = 0; j < old->pointCount; ++j)
+		{
+			if (old->points[j].id == mp->id)
+			{
+				mp->normalImpulse = old->points[j].normalImpulse;
+				mp->tangentImpulse = old->points[j].tangentImpulse;
+				mp->persisted = true;
+				break;
+			}
+		}
+	}
+}
+
+static bool tbIsSensorOverlap(const tbManifold* manifold)
+{
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		if (manifold->points[i].separation < 0.0f)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+/// True when a point is closer than the fixed speculative distance: the begin/end event notion
+/// of touching (tb_contactReported), independent of the speed-dependent manifold margin.
+static bool tbIsWithinSpeculativeDistance(const tbManifold* manifold)
+{
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		if (manifold->points[i].separation < TB_SPECULATIVE_DISTANCE)
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+/// Gravity scale that acts on a body (only dynamic bodies are accelerated by gravity).
+static float tbEffectiveGravityScale(const tbBody* body)
+{
+	return body->type == tb_dynamicBody ? body->gravityScale : 0.0f;
+}
+
+/// Speculative margin of a pair for this step (m): how far apart the manifold keeps points.
+///
+/// A point kept at separation s lets the solver stop an approach that would close s within the
+/// step; a point not kept cannot, so the pair penetrates by (closing distance − s). The margin
+/// is therefore a bound on how far any point of A can approach any point of B during the step,
+/// from what is known when the narrow phase runs (positions and velocities at the end of the
+/// last step):
+/// - a point of body X at r from its centre of mass moves at v_X + ω_X × r, and |ω_X × r| ≤
+///   |ω_X|·maxExtent_X, so the relative speed of two points is at most
+///       |vA − vB| + |ωA|·maxExtentA + |ωB|·maxExtentB;
+/// - during the step gravity adds g·sX·t to the velocity of a dynamic body X (sX its gravity
+///   scale); the sub-stepped symplectic Euler moves it by at most g·sX·dt² (exactly
+///   g·sX·dt²·(n + 1)/(2n) after n sub-steps), so the relative displacement grows by at most
+///   |g|·|sA − sB|·dt²;
+/// - damping only slows bodies; forces applied by the user are not included (small, and a
+///   body pushed hard enough is caught by the fixed TB_SPECULATIVE_DISTANCE or pushed out).
+/// Margin = TB_SPECULATIVE_DISTANCE + min(cap, dt·(relative point speed + dt·|g|·|sA − sB|)), with
+/// cap the larger of the two bodies' reaches (tbSpeculativeReach: a body moving farther per step is
+/// swept by continuous collision instead). The cap also bounds the extra points a fast scene pays
+/// for. Points need no contact beyond this: broad-phase boxes contain each body's predicted sweep
+/// (shape.c), so a pair that can touch during the step has its contact. Resting bodies get
+/// TB_SPECULATIVE_DISTANCE + g·dt² (0.0228 m at 60 Hz) against the ground and exactly
+/// TB_SPECULATIVE_DISTANCE against each other.
+static TB_FORCE_INLINE float tbSpeculativeMargin(const tbWorld* world, const tbBody* bodyA, const tbBody* bodyB)
+{
+	float dt = world->stepTime;
+	tbVec2 dv = tbSub(bodyA->linearVelocity, bodyB->linearVelocity);
+	float speed = tbLength(dv) + tbAbsFloat(bodyA->angularVelocity) * bodyA->maxExtent +
+				  tbAbsFloat(bodyB->angularVelocity) * bodyB->maxExtent;
+	float gravity = world->gravityLength *
+					tbAbsFloat(tbEffectiveGravityScale(bodyA) - tbEffectiveGravityScale(bodyB));
+	float closing = dt * (speed + dt * gravity);
+	// NaN-safe: a non-finite velocity gets the cap rather than poisoning the comparison.
+	float cap = tbMaxFloat(tbSpeculativeReach(bodyA), tbSpeculativeReach(bodyB));
+	float extra = closing < cap ? closing : cap;
+	return TB_SPECULATIVE_DISTANCE + tbMaxFloat(extra, 0.0f);
+}
+
+/// Remember where a touching manifold was computed: the relative pose, the normal in each body's
+/// frame and each point (midway between the surfaces, so the same world point for both bodies) in
+/// each body's origin frame. Origin frames, not centre-of-mass ones: a body's centre moves when a
+/// shape is added or its density changes, its origin does not.
+static void tbStoreManifoldBase(tbContact* contact, tbWorldTransform xfA, tbWorldTransform xfB, const tbPos points[2],
+								float margin)
+{
+	const tbManifold* m = &contact->manifold;
+	tbManifoldBase* base = &contact->base;
+	base->relative = tbInvMulWorldTransforms(xfA, xfB);
+	base->normalA = tbInvRotateVector(xfA.q, m->normal);
+	base->normalB = tbInvRotateVector(xfB.q, m->normal);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		base->pointA[i] = tbInvTransformWorldPoint(xfA, points[i]);
+		base->pointB[i] = tbInvTransformWorldPoint(xfB, points[i]);
+		base->separation[i] = m->points[i].separation;
+	}
+	base->margin = margin;
+	contact->flags |= tb_contactRecyclable;
+}
+
+/// Distance from a body's origin to its farthest shape point (m): maxExtent is measured from the
+/// centre of mass, which sits |localCenter| from the origin.
+static float tbOriginExtent(const tbBody* body)
+{
+	return body->maxExtent + tbLength(body->localCenter);
+}
+
+/// How far any point of one body can have moved relative to the other since the base pose (m).
+/// In A's frame, a point of B at r from B's origin (|r| ≤ extentB) sits at q·r + p, where (p, q)
+/// is B's pose in A's frame, so it moved by (q − q0)·r + (p − p0), at most
+/// |p − p0| + |q − q0|·extentB, with |q − q0| = 2·sin(|Δθ|/2) the chord of the relative turn
+/// (q as the vector (cos, sin)). The same holds in B's frame with A's extent; both bound the change
+/// of every distance between a point of A and a point of B, so the smaller one is taken (a box on a
+/// kinematic drum: the drum's 14 m extent does not count, the box's 0.18 m does).
+/// True when the smaller bound is below tolerance; B's frame is looked at only when A's bound is not
+/// (most resting pairs pass on it). False for a non-finite pose: then A's bound is NaN, and B's,
+/// made of the same numbers, too.
+static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform relative, const tbBody* bodyA, const tbBody* bodyB,
+							float tolerance)
+{
+	float chord = sqrtf((relative.q.c - relative0.q.c) * (relative.q.c - relative0.q.c) +
+						(relative.q.s - relative0.q.s) * (relative.q.s - relative0.q.s));
+	float inA = tbDistance(relative.p, relative0.p) + chord * tbOriginExtent(bodyB);
+	if (inA < tolerance)
+	{
+		return true;
+	}
+	// B's pose in A's frame inverted: A's origin in B's frame is −qᵀ·p.
+	tbVec2 pB = tbNeg(tbInvRotateVector(relative.q, relative.p));
+	tbVec2 pB0 = tbNeg(tbInvRotateVector(relative0.q, relative0.p));
+	float inB = tbDistance(pB, pB0) + chord * tbOriginExtent(bodyA);
+	return inB < tolerance;
+}
+
+/// Manifold recycling (Box2D v3's contact recycling; the persistent manifolds of Coumans'
+/// Bullet and PhysX keep points in the same spirit). A touching pair whose bodies barely moved
+/// relative to each other since the narrow phase ran keeps its points, feature ids and impulses;
+/// only the geometry is carried along:
+/// - the point fixed in A, xA = xfA·pointA, and the one fixed in B, xB = xfB·pointB, were the same
+///   world point when the manifold was computed, so xB − xA is the relative motion of the two
+///   surfaces there and the separation becomes s = s0 + (xB − xA)·n. This is the solver's own
+///   sub-step update (contact_solver.c, baseSeparation) carried across steps; its error is second
+///   order, |xB − xA|·|n − n_true| plus s0·Δθ²/2;
+/// - the normal turns with the bodies: it is a face normal (only polygon and segment pairs are
+///   recycled, tbHasMaterialFeatures), turning with A when the face is A's and with B when it is
+///   B's; not knowing which, the recycled normal bisects A's and B's turns (normalised mean of the
+///   two frame normals), off by at most half the relative turn;
+/// - the anchors are the material points xA − cA and xB − cB, as the solver would rotate them.
+/// When to recycle: a feature pair not in the manifold was at least margin0 (the speculative margin
+/// then) apart and has closed by at most the relative motion δ since (tbMovedLessThan); in this
+/// step it closes by at most margin − TB_SPECULATIVE_DISTANCE more. So while
+///     δ < min(recycleDistance, margin0 − margin + TB_SPECULATIVE_DISTANCE)
+/// no feature the narrow phase would add can reach contact during the step (a faster approach than
+/// when the manifold was made shrinks the allowance to nothing), and the relative turn must stay
+/// below TB_RECYCLE_ANGLE so that the normal stays within a degree. What is lost: a speculative
+/// point for a feature coming within the margin (caught later, before it touches), and the
+/// clipping against face ends (a point stays while a box slides less than δ past an edge). Bodies
+/// that were swept by continuous collision last step always get a new manifold.
+/// Rejected: keeping the empty manifold of a polygon pair while it moves less than its
+/// separating-axis gap less the margin (exact, as Box2D v3 keeps non-touching pairs, which it does
+/// inexactly): no gain measured over whole runs of tumbler, spinner, junkyard and smash (1.02× the
+/// time), most pairs apart being ruled out by their tight boxes before any narrow phase.
+// cos(TB_RECYCLE_ANGLE) = cos(2°), rounded to float.
+#define TB_RECYCLE_COS_ANGLE 0.99939083f
+
+/// recycleDistance is the world's (TB_RECYCLE_DISTANCE by default, tbWorld_SetContactRecycleDistance).
+static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin,
+							  float recycleDistance)
+{
+	const tbManifoldBase* base = &contact->base;
+	if ((contact->flags & tb_contactRecyclable) == 0 || bodyA->isFast || bodyB->isFast ||
+		bodyA->enableContactRecycling == false || bodyB->enableContactRecycling == false)
+	{
+		return false;
+	}
+	tbWorldTransform xfA = bodyA->transform;
+	tbWorldTransform xfB = bodyB->transform;
+	tbTransform relative = tbInvMulWorldTransforms(xfA, xfB);
+	float tolerance = tbMinFloat(recycleDistance, base->margin - margin + TB_SPECULATIVE_DISTANCE);
+	// |turn| < TB_RECYCLE_ANGLE ⟺ cos(turn) > cos(TB_RECYCLE_ANGLE): the cosine is the dot product of
+	// the two unit rotations, with no atan2 (which cost 4 % of a pyramid step here).
+	float cosTurn = base->relative.q.c * relative.q.c + base->relative.q.s * relative.q.s;
+	// Written so that NaN fails: a non-finite pose always gets a new manifold.
+	if (!(cosTurn > TB_RECYCLE_COS_ANGLE && tbMovedLessThan(base->relative, relative, bodyA, bodyB, tolerance)))
+	{
+		return false;
+	}
+	tbManifold* m = &contact->manifold;
+	m->normal = tbNormalize(tbAdd(tbRotateVector(xfA.q, base->normalA), tbRotateVector(xfB.q, base->normalB)));
+	// xB − xA from the origin offset and the rotated local points: no large world coordinates are
+	// subtracted, so far from the origin the difference keeps its precision.
+	tbVec2 dp = tbSubPos(xfB.p, xfA.p);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		tbManifoldPoint* mp = m->points + i;
+		tbVec2 rA = tbRotateVector(xfA.q, base->pointA[i]);
+		tbVec2 rB = tbRotateVector(xfB.q, base->pointB[i]);
+		tbVec2 gap = tbAdd(dp, tbSub(rB, rA));
+		mp->separation = base->separation[i] + tbDot(gap, m->normal);
+		tbPos pointA = tbOffsetPos(xfA.p, rA);
+		mp->point = tbToVec2(tbOffsetPos(pointA, tbMulSV(0.5f, gap)));
+		mp->anchorA = tbSubPos(pointA, bodyA->center);
+		mp->anchorB = tbSubPos(tbOffsetPos(xfB.p, rB), bodyB->center);
+		mp->persisted = true;
+	}
+	return true;
+}
+
+/// Polygons and segments meet at vertices and faces that move with their bodies, and their normal
+/// is a face normal, so their manifolds can be carried along. Circles and capsules cannot: their
+/// contact point slides over the round surface as the body turns and their normal follows the line
+/// between centres, not either body. Carrying them pumped energy into a jam of deeply overlapping
+/// circles (the stability table's confined 625: the centre line turned up to 1.5 degrees away from
+/// the kept normal, and the jam never came to rest: kinetic energy 42 J after 10 s, 6e-8 J when
+/// recomputed). Their closed forms are cheap anyway.
+static bool tbHasMaterialFeatures(const tbShape* shape)
+{
+	return shape->geometry.type == tb_polygonShape || shape->geometry.type == tb_segmentShape;
+}
+
+/// The narrow phase proper: a new manifold from the shapes, anchors, impulses carried over by
+/// feature id, and (for touching non-sensor contacts) the base for later recycling.
+static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, const tbShape* a, const tbShape* b,
+								  const tbBody* bodyA, const tbBody* bodyB, float margin)
+{
+	tbManifold old = contact->manifold;
+	tbNarrowPhaseMethod method = world->def.narrowPhase;
+	contact->flags &= ~(uint32_t)tb_contactRecyclable;
+	// Most contacts (fat boxes overlapping) are not touching. The tight boxes, current since the
+	// last finalize, grown by the speculative margin, rule them out for a few comparisons.
+	if (tbAABB_Overlaps(tbAABB_Fatten(a->aabb, margin), b->aabb) == false)
+	{
+		contact->manifold.pointCount = 0;
+		return 0;
+	}
+	tbPos points[2];
+	tbCollideInWorld(&contact->manifold, &a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin,
+					 points);
+	uint32_t result = 0;
+	if (a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape)
+	{
+		result = method == tb_narrowPhaseGJK ? tb_collideGJK : tb_collideSAT;
+	}
+	tbManifold* m = &contact->manifold;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		m->points[i].anchorA = tbSubPos(points[i], bodyA->center);
+		m->points[i].anchorB = tbSubPos(points[i], bodyB->center);
+	}
+	if (world->def.enableWarmStarting)
+	{
+		tbMatchPoints(m, &old);
+	}
+	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbHasMaterialFeatures(a) &&
+		tbHasMaterialFeatures(b))
+	{
+		tbStoreManifoldBase(contact, bodyA->transform, bodyB->transform, points, margin);
+	}
+	return result;
+}
+
+/// The user's pre-solve callback on a touching contact (tbPreSolveFcn). What it may do is bounded:
+/// no more points than it was given, a finite unit normal and finite separations; anything else
+/// is reported and the manifold restored. A manifold it changed is not recycled next step (the
+/// recycled one would carry its change along instead of asking again).
+static void tbCallPreSolve(tbWorld* world, tbContact* contact)
+{
+	tbManifold before = contact->manifold;
+	tbManifold* m = &contact->manifold;
+	world->preSolveFcn(tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB), m,
+					   world->preSolveContext);
+	bool valid = tbIsValidVec2(m->normal) && tbAbsFloat(tbLength(m->normal) - 1.0f) < 1e-3f;
+	m->pointCount = tbMinInt(tbMaxInt(m->pointCount, 0), before.pointCount);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		valid = valid && tbIsValidFloat(m->points[i].separation) && tbIsValidVec2(m->points[i].anchorA) &&
+				tbIsValidVec2(m->points[i].anchorB);
+	}
+	if (valid == false)
+	{
+		tbReportError("tbPreSolveFcn", "the callback left a non-finite or non-unit normal, separation or anchor; "
+									   "the manifold is restored (set pointCount to 0 to disable the contact)");
+		*m = before;
+		return;
+	}
+	if (memcmp(m, &before, sizeof(before)) != 0)
+	{
+		contact->flags &= ~(uint32_t)tb_contactRecyclable;
+	}
+}
+
+/// For tests (tbWorld_EnableSpeculative(false), Box2D v3.2's switch): of two manifold points, one
+/// more than 1.5 × TB_LINEAR_SLOP apart is dropped, so the solver sees no speculative second point.
+/// The manifold then no longer matches its recycling base, which is forgotten.
+static void tbDropSpeculativePoint(tbContact* contact)
+{
+	tbManifold* m = &contact->manifold;
+	if (m->pointCount != 2)
+	{
+		return;
+	}
+	float apart = 1.5f * TB_LINEAR_SLOP;
+	int drop = m->points[0].separation > apart ? 0 : (m->points[1].separation > apart ? 1 : -1);
+	if (drop < 0)
+	{
+		return;
+	}
+	m->points[0] = m->points[1 - drop];
+	m->pointCount = 1;
+	contact->flags &= ~(uint32_t)tb_contactRecyclable;
+}
+
+/// The narrow phase of one contact, writing only the contact (safe on any worker): returns
+/// tbCollideResult flags for the caller to act on in contact order.
+static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* contact)
+{
+	const tbShape* a = world->shapes + contact->shapeIdA;
+	const tbShape* b = world->shapes + contact->shapeIdB;
+	const tbBody* bodyA = world->bodies + a->bodyId;
+	const tbBody* bodyB = world->bodies + b->bodyId;
+	bool isSensor = (contact->flags & tb_contactSensor) != 0;
+	// Sensors only ask whether the shapes overlap: the fixed distance is plenty.
+	float margin = isSensor ? TB_SPECULATIVE_DISTANCE : tbSpeculativeMargin(world, bodyA, bodyB);
+	uint32_t result = 0;
+	if (world->def.enableManifoldRecycling && world->contactRecycleDistance > 0.0f &&
+		tbRecycleManifold(contact, bodyA, bodyB, margin, world->contactRecycleDistance))
+	{
+		result |= tb_collideRecycled;
+		contact->flags |= tb_contactRecycled;
+	}
+	else
+	{
+		result |= tbComputeManifold(world, contact, a, b, bodyA, bodyB, margin);
+		contact->flags &= ~(uint32_t)tb_contactRecycled;
+	}
+	if ((contact->flags & tb_contactEnablePreSolve) != 0 && isSensor == false && world->preSolveFcn != NULL &&
+		contact->manifold.pointCount > 0 && (bodyA->type == tb_dynamicBody || bodyB->type == tb_dynamicBody))
+	{
+		tbCallPreSolve(world, contact);
+	}
+	if (world->enableSpeculative == false && isSensor == false)
+	{
+		tbDropSpeculativePoint(contact);
+	}
+	const tbManifold* m = &contact->manifold;
+	bool touching = isSensor ? tbIsSensorOverlap(m) : m->pointCount > 0;
+	bool reported = isSensor ? touching : tbIsWithinSpeculativeDistance(m);
+	bool wasTouching = (contact->flags & tb_contactTouching) != 0;
+	bool wasReported = (contact->flags & tb_contactReported) != 0;
+	contact->flags &= ~(uint32_t)(tb_contactTouching | tb_contactReported);
+	contact->flags |= (touching ? (uint32_t)tb_contactTouching : 0u) | (reported ? (uint32_t)tb_contactReported : 0u);
+	contact->touchingSteps = touching ? (uint16_t)(contact->touchingSteps + (contact->touchingSteps < UINT16_MAX)) : 0u;
+	contact->hitSpeed = touching ? contact->hitSpeed : 0.0f; // an impact that never touched is dropped
+	result |= touching && wasTouching == false ? tb_collideBegan : 0u;
+	result |= touching == false && wasTouching ? tb_collideEnded : 0u;
+	result |= reported != wasReported ? (reported ? tb_collideBeginEvent : tb_collideEndEvent) : 0u;
+	return result;
+}
+
+/// Counters of one contact's narrow phase (on the caller, after the workers).
+static void tbCountCollideResult(tbWorld* world, uint32_t result)
+{
+	world->counters.recycledManifolds += (result & tb_collideRecycled) != 0 ? 1 : 0;
+	world->counters.gjkManifolds += (result & tb_collideGJK) != 0 ? 1 : 0;
+	world->counters.satManifolds += (result & tb_collideSAT) != 0 ? 1 : 0;
+}
+
+int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
+{
+	uint32_t result = tbCollideContact(world, contact);
+	tbCountCollideResult(world, result);
+	*beganTouching = (result & tb_collideBegan) != 0;
+	return (result & tb_collideBeginEvent) != 0 ? 1 : ((result & tb_collideEndEvent) != 0 ? -1 : 0);
+}
+
+static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
+{
+	if (contact->flags & tb_contactSensor)
+	{
+		bool aIsSensor = world->shapes[contact->shapeIdA].isSensor;
+		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
+		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
+		if (tbSensorEventsEnabled(world, sensor, visitor))
+		{
+			tbSensorBeginTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
+			TB_ARRAY_PUSH(world->sensorBeginEvents, world->sensorBeginCount, world->sensorBeginCapacity, e);
+		}
+	}
+	else if (contact->flags & tb_contactEnableEvents)
+	{
+		tbContactBeginTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB),
+									  tbMakeContactId(world, (int)(contact - world->contacts))};
+		TB_ARRAY_PUSH(world->beginEvents, world->beginCount, world->beginCapacity, e);
+	}
+}
+
+/// Gather each contact of an awake body once, in contact-id order: every later stage inherits
+/// this order (solver order included), so it must not depend on how the contacts were found.
+/// A mostly awake world scans the contact array (sequential memory, the fast case for a moving
+/// pile); a mostly sleeping one walks the awake bodies' contact lists (cost proportional to the
+/// awake part) and sorts the ids.
+static void tbGatherAwakeContacts(tbWorld* world)
+{
+	world->gatheredVersion = world->awakeSetVersion;
+	world->gatheredRemovals = world->awakeRemovals;
+	world->gatheredAwakeCount = world->awakeBodyCount;
+	world->stepContactCount = 0;
+	if (2 * world->awakeBodyCount >= world->bodyCount)
+	{
+		// A byte per body says awake: the scan then reads the contacts in memory order and this
+		// small array, instead of two scattered bodies per contact.
+		TB_ARRAY_RESERVE(world->stepContacts, world->stepContactCapacity, world->contactCount + 1); // + 1: the walk writes one past
+		// A free contact slot has both bodies TB_NULL_INDEX (−1): awake[−1] is a 0 kept for it.
+		uint8_t* awake = (uint8_t*)tbArenaAlloc(&world->stepArena, world->bodyHighWater + 1) + 1;
+		memset(awake - 1, 0, (size_t)world->bodyHighWater + 1);
+		for (int i = 0; i < world->awakeBodyCount; ++i)
+		{
+			awake[world->awakeBodies[i]] = 1;
+		}
+		// Locals: through world-> each append reloaded and stored the count (the int stores may
+		// alias the world's fields), a store-to-load chain that made this walk a third of the
+		// collide stage's serial time on many_pyramids.
+		const tbBodyPair* bodies = world->contactBodies;
+		int* stepContacts = world->stepContacts;
+		int count = 0;
+		int highWater = world->contactHighWater;
+		for (int id = 0; id < highWater; ++id)
+		{
+			stepContacts[count] = id;
+			count += (awake[bodies[id].bodyIdA] | awake[bodies[id].bodyIdB]) != 0 ? 1 : 0;
+		}
+		world->stepContactCount = count;
+		return;
+	}
+	uint32_t stamp = 2u * world->stepIndex;
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		const tbBody* body = world->bodies + world->awakeBodies[i];
+		for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+		{
+			tbContact* contact = world->contacts + (key >> 1);
+			if (contact->stamp != stamp)
+			{
+				contact->stamp = stamp;
+				TB_ARRAY_PUSH(world->stepContacts, world->stepContactCount, world->stepContactCapacity, key >> 1);
+			}
+			key = contact->edges[key & 1].nextKey;
+		}
+	}
+	// islandStack is free scratch here: the island stage uses it later in the step.
+	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, world->stepContactCount);
+	tbSortIndices(world->stepContacts, world->stepContactCount, world->islandStack);
+}
+
+/// A contact the island stage can hand to the solver without looking at it again: one side is
+/// dynamic and neither sleeps. Between here and the island stage bodies only wake, so it stays so;
+/// and a body that wakes after this has none of these contacts (island.c relies on both).
+static bool tbIsReadySolverContact(const tbWorld* world, const tbContact* contact)
+{
+	const tbBody* a = world->bodies + contact->edges[0].bodyId;
+	const tbBody* b = world->bodies + contact->edges[1].bodyId;
+	bool asleepA = a->type != tb_staticBody && a->awakeIndex == TB_NULL_INDEX;
+	bool asleepB = b->type != tb_staticBody && b->awakeIndex == TB_NULL_INDEX;
+	return (a->type == tb_dynamicBody || b->type == tb_dynamicBody) && asleepA == false && asleepB == false;
+}
+
+/// The solver key of a ready contact, from the bodies the narrow phase just read (tbCollideKey).
+/// The flags are those contact_solver.c derives from the solver's mass arrays: a body moves when
+/// it is dynamic with a positive inverse mass or (rotation not fixed) inverse inertia.
+/// Returns whether the key is the one written in the last step.
+static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* contact)
+{
+	const tbBody* a = world->bodies + contact->edges[0].bodyId;
+	const tbBody* b = world->bodies + contact->edges[1].bodyId;
+	bool dynamicA = a->type == tb_dynamicBody, dynamicB = b->type == tb_dynamicBody;
+	bool movesA = dynamicA && (a->invMass > 0.0f || (a->fixedRotation == false && a->invInertia > 0.0f));
+	bool movesB = dynamicB && (b->invMass > 0.0f || (b->fixedRotation == false && b->invInertia > 0.0f));
+	uint32_t flags = (movesA ? (uint32_t)tb_keyMovesA : 0u) | (movesB ? (uint32_t)tb_keyMovesB : 0u) |
+					 (dynamicA ? (uint32_t)tb_keyDynamicA : 0u) | (dynamicB ? (uint32_t)tb_keyDynamicB : 0u);
+	flags |= contact->rollingResistance > 0.0f || contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
+	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
+	tbCollideKey* key = world->collideKeys + contactId;
+	// The same key as written in the last step (a steady step can keep the solver's keys).
+	bool same = key->step == world->stepIndex - 1u && key->indexA == a->awakeIndex && key->indexB == b->awakeIndex &&
+				key->flags == flags;
+	key->indexA = a->awakeIndex; // TB_NULL_INDEX for a static body; no side sleeps (ready)
+	key->indexB = b->awakeIndex;
+	key->flags = flags;
+	key->step = world->stepIndex;
+	return same;
+}
+
+/// The collide walk's loads form a chain: the contact names its shapes and bodies, a shape names
+/// its proxy. Each is a miss to memory in a large pile (contact ids, shapes and bodies are in no
+/// common order), and the chain serialises them. So the walk prefetches in stages: the contact
+/// 2·TB_PREFETCH_AHEAD items ahead, the shapes and bodies of the one TB_PREFETCH_AHEAD ahead (its
+/// contact is in cache by then), and the proxies of the one half as far ahead (its shapes are).
+static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, int endIndex)
+{
+	const int* ids = world->stepContacts;
+	if (i + 2 * TB_PREFETCH_AHEAD < endIndex)
+	{
+		tbPrefetch(world->contacts + ids[i + 2 * TB_PREFETCH_AHEAD], (int)sizeof(tbContact));
+	}
+	if (i + TB_PREFETCH_AHEAD < endIndex)
+	{
+		const tbContact* ahead = world->contacts + ids[i + TB_PREFETCH_AHEAD];
+		// A contact recycled last step most often is again, and reads its shapes' first line only
+		// (box, body, proxy); any other reads their geometry too, and nothing after it (the whole
+		// 280-byte shape: spinner's narrow phase 4 % slower). Prefetching the geometry for every
+		// contact: compounds 8 % faster (touching pairs that moved too far to be recycled), the
+		// pyramids 3–4 % slower (every pair recycled).
+		const uint32_t recycling = tb_contactRecyclable | tb_contactRecycled;
+		int shapeBytes = (ahead->flags & recycling) == recycling ? 32 : (int)(offsetof(tbShape, geometry) + sizeof(tbGeometry));
+		tbPrefetch(world->shapes + ahead->shapeIdA, shapeBytes);
+		tbPrefetch(world->shapes + ahead->shapeIdB, shapeBytes);
+		tbPrefetch(world->bodies + ahead->edges[0].bodyId, (int)sizeof(tbBody));
+		tbPrefetch(world->bodies + ahead->edges[1].bodyId, (int)sizeof(tbBody));
+	}
+	if (i + TB_PREFETCH_AHEAD / 2 < endIndex)
+	{
+		const tbContact* ahead = world->contacts + ids[i + TB_PREFETCH_AHEAD / 2];
+		const tbBroadProxy* proxies = world->broadPhase.table.proxies;
+		tbPrefetch(proxies + world->shapes[ahead->shapeIdA].proxyKey, 16);
+		tbPrefetch(proxies + world->shapes[ahead->shapeIdB].proxyKey, 16);
+	}
+}
+
+/// Collide task: the narrow phase of stepContacts[start..end), results into world->collideResults
+/// and sums into the worker's tally.
+static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
+{
+	tbWorld* world = context;
+	const tbBroadPhase* bp = &world->broadPhase;
+	const uint32_t change = tb_collideDestroy | tb_collideBegan | tb_collideEnded | tb_collideBeginEvent | tb_collideEndEvent;
+	tbCollideTally sum = {0};
+	for (int i = startIndex; i < endIndex; ++i)
+	{
+		tbContact* contact = world->contacts + world->stepContacts[i];
+		tbPrefetchCollideAhead(world, i, endIndex);
+		const tbShape* a = world->shapes + contact->shapeIdA;
+		const tbShape* b = world->shapes + contact->shapeIdB;
+		bool overlap = tbBroadPhase_TestOverlap(bp, a->proxyKey, b->proxyKey);
+		uint32_t result = tb_collideDestroy;
+		if (overlap)
+		{
+			// The flags the caller's serial walk needs ride along, so it need not load the contact.
+			result = tbCollideContact(world, contact);
+			bool solver = (contact->flags & (tb_contactTouching | tb_contactSensor)) == tb_contactTouching;
+			result |= solver ? (uint32_t)tb_collideSolver : 0u;
+			result |= (contact->flags & tb_contactReported) != 0 ? (uint32_t)tb_collideReported : 0u;
+			if (solver && tbIsReadySolverContact(world, contact))
+			{
+				result |= tb_collideReady;
+				result |= tbWriteCollideKey(world, world->stepContacts[i], contact) ? 0u : (uint32_t)tb_collideNewKey;
+			}
+		}
+		world->collideResults[i] = (uint16_t)result;
+		sum.reported += (result & tb_collideReported) != 0 ? 1 : 0;
+		sum.recycled += (result & tb_collideRecycled) != 0 ? 1 : 0;
+		sum.gjk += (result & tb_collideGJK) != 0 ? 1 : 0;
+		sum.sat += (result & tb_collideSAT) != 0 ? 1 : 0;
+		sum.changed += (result & change) != 0 ? 1 : 0;
+		sum.notReady += (result & (tb_collideSolver | tb_collideReady)) == tb_collideSolver ? 1 : 0;
+		sum.newKeys += (result & tb_collideNewKey) != 0 ? 1 : 0;
+	}
+	tbAddTally(world->collideTallies + workerIndex, &sum);
+}
+
+/// The broad phase's deferred tree refresh (tbUpdatePairsStage), beside the narrow phase: it
+/// touches only the movable tree, which the narrow phase does not read.
+static void tbFinishTreeRefresh(void* broadPhase)
+{
+	tbBroadPhase_FinishRefresh(broadPhase);
+}
+
+/// The collide results in contact order, on the caller: contacts whose fat boxes parted are
+/// destroyed, touching ones listed (world->touchingContacts), bodies woken, events appended.
+static void tbWalkCollideResults(tbWorld* world)
+{
+	int kept = 0;
+	// Every kept contact may touch: room for all of them, so the walk appends without checks.
+	TB_ARRAY_RESERVE(world->touchingContacts, world->touchingContactCapacity, world->stepContactCount);
+	int* touching = world->touchingContacts;
+	int touchingCount = 0;
+	bool allReady = true;
+	int* stepContacts = world->stepContacts; // locals: the stores below may alias the world's fields
+	const uint16_t* results = world->collideResults;
+	int stepContactCount = world->stepContactCount;
+	for (int i = 0; i < stepContactCount; ++i)
+	{
+		int contactId = stepContacts[i];
+		uint32_t result = results[i];
+		if (result & tb_collideDestroy)
+		{
+			tbDestroyContact(world, contactId, false);
+			continue;
+		}
+		stepContacts[kept++] = contactId;
+		if (result & tb_collideSolver)
+		{
+			// The sign says "ready" (tb_collideReady): the island stage takes it as it is.
+			bool ready = (result & tb_collideReady) != 0;
+			touching[touchingCount++] = ready ? contactId : -1 - contactId;
+			allReady = allReady && ready;
+		}
+		if ((result & (tb_collideBegan | tb_collideBeginEvent | tb_collideEndEvent)) == 0)
+		{
+			continue; // most contacts: nothing changed, and the contact itself is not loaded
+		}
+		tbContact* contact = world->contacts + contactId;
+		if (result & tb_collideBegan)
+		{
+			// New manifold points (speculative ones too) wake both bodies: the sleeping one joins
+			// the awake island, so the solver never sees a contact with a sleeping body.
+			tbWakeBody(world, world->bodies + world->shapes[contact->shapeIdA].bodyId);
+			tbWakeBody(world, world->bodies + world->shapes[contact->shapeIdB].bodyId);
+		}
+		if (result & tb_collideBeginEvent)
+		{
+			tbPushBeginEvent(world, contact);
+		}
+		else if (result & tb_collideEndEvent)
+		{
+			tbPushEndEvent(world, contact);
+		}
+	}
+	world->stepContactCount = kept;
+	world->touchingContactCount = touchingCount;
+	world->touchingAllReady = allReady;
+	world->touchingEpoch = world->contactEpoch; // after this walk's destroys
+}
+
+/// The narrow phase over every awake contact, on the workers; then, on the caller and in contact
+/// order, what changes the world (tbWalkCollideResults), unless nothing did: a settled pile's step
+/// keeps the last touching list, and the solver its keys (contact_solver.c). The result is the
+/// same for any number of workers.
+void tbCollideStage(tbWorld* world)
+{
+	// The awake contacts are those gathered last, less the ones the walk destroyed, if neither the
+	// awake set nor the set of contacts has changed since (touchingEpoch: the contact set after the
+	// last walk). The last touching list still holds too if every contact on it was ready and no
+	// contact changes below (tbCollideTally).
+	bool sameList = world->gatheredVersion == world->awakeSetVersion && world->gatheredRemovals == world->awakeRemovals &&
+					world->touchingEpoch == world->contactEpoch;
+	bool sameContacts = sameList && world->touchingAllReady;
+	if (sameList == false)
+	{
+		tbGatherAwakeContacts(world);
+	}
+	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
+	// Keys for every contact slot in use; new entries start stale, two steps back, so that neither
+	// the key pass (this step) nor tbWriteCollideKey's comparison (the last step) takes an unwritten
+	// key for a written one.
+	TB_ARRAY_RESERVE(world->collideKeys, world->collideKeyCapacity, world->contactHighWater);
+	for (; world->collideKeyCount < world->contactHighWater; ++world->collideKeyCount)
+	{
+		world->collideKeys[world->collideKeyCount].step = world->stepIndex - 2u;
+	}
+	int slots = tbWorkerSlotCount(&world->def); // task.h: the spare slots too
+	char* tallyBytes = tbArenaAlloc(&world->stepArena, (slots + 1) * (int)sizeof(tbCollideTally));
+	world->collideTallies = (tbCollideTally*)(((uintptr_t)tallyBytes + 63) & ~(uintptr_t)63);
+	memset(world->collideTallies, 0, (size_t)slots * sizeof(tbCollideTally));
+	if (tbBroadPhase_RefreshPending(&world->broadPhase))
+	{
+		tbParallelForAlongside(&world->def, tbCollideTask, world->stepContactCount, 64, world, tbFinishTreeRefresh,
+							   &world->broadPhase);
+	}
+	else
+	{
+		tbParallelFor(&world->def, tbCollideTask, world->stepContactCount, 64, world);
+	}
+	tbCollideTally total = {0};
+	for (int w = 0; w < slots; ++w)
+	{
+		tbAddTally(&total, world->collideTallies + w);
+	}
+	world->collideTallies = NULL; // arena memory: gone with the step
+	world->counters.recycledManifolds += total.recycled;
+	world->counters.gjkManifolds += total.gjk;
+	world->counters.satManifolds += total.sat;
+	world->counters.touchingCount = total.reported;
+	// A steady step (a settled pile): nothing was destroyed, began or ended touching or made an
+	// event, and every solver contact is ready, so the walk would write the last list again.
+	world->touchingUnchanged = sameContacts && total.changed == 0 && total.notReady == 0;
+	world->collideKeysUnchanged = world->touchingUnchanged && total.newKeys == 0;
+	if (world->touchingUnchanged == false)
+	{
+		tbWalkCollideResults(world);
+	}
+}
+
+/// Hit events: one per impact, in the step its contact begins to touch or later. A solved contact
+/// whose point approached faster than the world's threshold and took a normal impulse holds that
+/// impact (the fastest seen, kept in contact->hitSpeed); it is reported once the contact is within
+/// the fixed distance that makes begin events (tb_contactReported), so a landing met by a
+/// speculative point a step early is reported with its begin event, not before it and not twice.
+/// An impact on a contact that separates before touching is dropped (tbUpdateContact).
+void tbReportHitEvents(tbWorld* world)
+{
+	if (world->hitContactCount == 0)
+	{
+		return; // no contact wants hit events: nothing to walk (1 % of large_pyramid's step went here)
+	}
+	float threshold = world->def.hitEventThreshold;
+	// Contact-id order: the walk streams through contact memory (the solve order would not).
+	for (int i = 0; i < world->solverContactCount; ++i)
+	{
+		tbContact* contact = world->contacts + world->solverContactsById[i];
+		if ((contact->flags & tb_contactEnableHits) == 0)
+		{
+			continue;
+		}
+		for (int j = 0; j < contact->manifold.pointCount; ++j)
+		{
+			const tbManifoldPoint* mp = contact->manifold.points + j;
+			float approach = -mp->normalVelocity;
+			if (approach > threshold && approach > contact->hitSpeed && mp->maxNormalImpulse > 0.0f)
+			{
+				contact->hitSpeed = approach;
+				contact->hitPoint = mp->point;
+			}
+		}
+		if (contact->hitSpeed > 0.0f && (contact->flags & tb_contactReported) != 0)
+		{
+			tbContactHitEvent event;
+			event.shapeIdA = tbMakeShapeId(world, contact->shapeIdA);
+			event.shapeIdB = tbMakeShapeId(world, contact->shapeIdB);
+			event.point = tbToPos(contact->hitPoint);
+			event.normal = contact->manifold.normal;
+			event.approachSpeed = contact->hitSpeed;
+			contact->hitSpeed = 0.0f;
+			TB_ARRAY_PUSH(world->hitEvents, world->hitCount, world->hitCapacity, event);
+		}
+	}
+}
+
+// ---------------------------------------------------------------------------------------------
+// Contact data (the public queries of what touches what)
+
+tbContactId tbMakeContactId(const tbWorld* world, int contactId)
+{
+	tbContactId id = {contactId + 1, (uint16_t)(world->worldId), 0, world->contacts[contactId].generation};
+	return id;
+}
+
+/// Touching, not a sensor overlap: what GetContactData reports (the touchingCount's contacts).
+static bool tbIsReportedContact(const tbContact* contact)
+{
+	return (contact->flags & (tb_contactReported | tb_contactSensor)) == tb_contactReported;
+}
+
+static tbContactData tbMakeContactData(const tbWorld* world, int contactId)
+{
+	const tbContact* contact = world->contacts + contactId;
+	tbContactData data;
+	data.contactId = tbMakeContactId(world, contactId);
+	data.shapeIdA = tbMakeShapeId(world, contact->shapeIdA);
+	data.shapeIdB = tbMakeShapeId(world, contact->shapeIdB);
+	data.manifold = contact->manifold;
+	return data;
+}
+
+/// The reported contacts of a body, or of one of its shapes (shapeId ≥ 0), or a sensor shape's
+/// visitors (sensors), from the body's contact list, written in contact-id order (the list's own
+/// order depends on history): the ids are gathered, insertion-sorted (a body touches few), then
+/// written up to capacity.
+static int tbCollectContacts(const tbWorld* world, const tbBody* body, int shapeId, bool sensors,
+							 tbContactData* data, tbShapeId* visitors, int capacity)
+{
+	int count = 0;
+	for (int key = body->headContactKey; key != TB_NULL_INDEX && count < capacity;)
+	{
+		int id = key >> 1;
+		const tbContact* contact = world->contacts + id;
+		key = contact->edges[key & 1].nextKey;
+		if (shapeId >= 0 && contact->shapeIdA != shapeId && contact->shapeIdB != shapeId)
+		{
+			continue;
+		}
+		bool wanted = sensors ? (contact->flags & (tb_contactSensor | tb_contactReported)) ==
+									(tb_contactSensor | tb_contactReported)
+							  : tbIsReportedContact(contact);
+		if (wanted == false)
+		{
+			continue;
+		}
+		int i = count++;
+		if (sensors)
+		{
+			tbShapeId visitor = tbMakeShapeId(world, contact->shapeIdA == shapeId ? contact->shapeIdB : contact->shapeIdA);
+			for (; i > 0 && visitors[i - 1].index1 > visitor.index1; --i)
+			{
+				visitors[i] = visitors[i - 1];
+			}
+			visitors[i] = visitor;
+		}
+		else
+		{
+			tbContactData entry = tbMakeContactData(world, id);
+			for (; i > 0 && data[i - 1].contactId.index1 > entry.contactId.index1; --i)
+			{
+				data[i] = data[i - 1];
+			}
+			data[i] = entry;
+		}
+	}
+	return count;
+}
+
+static bool tbCheckCapacity(const char* f, const void* array, int capacity)
+{
+	if (capacity < 0 || (capacity > 0 && array == NULL))
+	{
+		tbReportError(f, "capacity is %d with %s array; pass an array of at least capacity entries", capacity,
+					  array == NULL ? "a NULL" : "an");
+		return false;
+	}
+	return true;
+}
+
+int tbBody_GetContactCapacity(tbBodyId bodyId)
+{
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetContactCapacity", NULL, false);
+	return body != NULL ? body->contactCount : 0;
+}
+
+int tbBody_GetContactData(tbBodyId bodyId, tbContactData* contactData, int capacity)
+{
+	const char* f = "tbBody_GetContactData";
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, f, &world, false);
+	if (body == NULL || tbCheckCapacity(f, contactData, capacity) == false)
+	{
+		return 0;
+	}
+	return tbCollectContacts(world, body, -1, false, contactData, NULL, capacity);
+}
+
+int tbShape_GetContactCapacity(tbShapeId shapeId)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetContactCapacity", &world, false);
+	return shape != NULL && shape->isSensor == false ? world->bodies[shape->bodyId].contactCount : 0;
+}
+
+int tbShape_GetContactData(tbShapeId shapeId, tbContactData* contactData, int capacity)
+{
+	const char* f = "tbShape_GetContactData";
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
+	if (shape == NULL || tbCheckCapacity(f, contactData, capacity) == false || shape->isSensor)
+	{
+		return 0;
+	}
+	return tbCollectContacts(world, world->bodies + shape->bodyId, shapeId.index1 - 1, false, contactData, NULL,
+							 capacity);
+}
+
+int tbShape_GetSensorCapacity(tbShapeId shapeId)
+{
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetSensorCapacity", &world, false);
+	return shape != NULL && shape->isSensor ? world->bodies[shape->bodyId].contactCount : 0;
+}
+
+int tbShape_GetSensorData(tbShapeId shapeId, tbShapeId* visitorIds, int capacity)
+{
+	const char* f = "tbShape_GetSensorData";
+	tbWorld* world;
+	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
+	if (shape == NULL || tbCheckCapacity(f, visitorIds, capacity) == false || shape->isSensor == false)
+	{
+		return 0;
+	}
+	return tbCollectContacts(world, world->bodies + shape->bodyId, shapeId.index1 - 1, true, NULL, visitorIds,
+							 capacity);
+}
+
+static tbWorld* tbGetContactWorld(tbContactId id, int* contactOut)
+{
+	if (id.index1 <= 0 || id.world0 >= TB_MAX_WORLDS)
+	{
+		return NULL;
+	}
+	tbWorld* world = tbGetWorldFromIndex(id.world0);
+	int index = id.index1 - 1;
+	if (world == NULL || index >= world->contactHighWater || world->contacts[index].inUse == false ||
+		world->contacts[index].generation != id.generation)
+	{
+		return NULL;
+	}
+	*contactOut = index;
+	return world;
+}
+
+bool tbContact_IsValid(tbContactId contactId)
+{
+	int index;
+	return tbGetContactWorld(contactId, &index) != NULL;
+}
+
+tbContactData tbContact_GetData(tbContactId contactId)
+{
+	int index;
+	tbWorld* world = tbGetContactWorld(contactId, &index);
+	if (world == NULL)
+	{
+		tbReportError("tbContact_GetData", "contactId refers to a destroyed contact or world; contacts end when "
+										   "their shapes' boxes part (check with tbContact_IsValid)");
+		tbContactData none;
+		memset(&none, 0, sizeof(none));
+		return none;
+	}
+	return tbMakeContactData(world, index);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Event flags changed at run time
+
+/// The event flags a contact takes from its shapes (as at creation, tbCreateContact).
+static void tbRefreshContactEventFlags(tbWorld* world, tbContact* contact)
+{
+	const tbShape* a = world->shapes + contact->shapeIdA;
+	const tbShape* b = world->shapes + contact->shapeIdB;
+	world->hitContactCount -= (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
+	contact->flags &= ~(uint32_t)(tb_contactEnableEvents | tb_contactEnableHits | tb_contactEnablePreSolve);
+	contact->flags |= a->enableContactEvents && b->enableContactEvents ? (uint32_t)tb_contactEnableEvents : 0u;
+	contact->flags |= a->enableHitEvents || b->enableHitEvents ? (uint32_t)tb_contactEnableHits : 0u;
+	contact->flags |= a->enablePreSolveEvents || b->enablePreSolveEvents ? (uint32_t)tb_contactEnablePreSolve : 0u;
+	world->hitContactCount += (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
+}
+
+void tbSetShapeEventFlag(tbWorld* world, tbShape* shape, tbShapeEventKind kind, bool flag)
+{
+	switch (kind)
+	{
+		case tb_shapeEventContacts:
+			shape->enableContactEvents = flag;
+			break;
+		case tb_shapeEventHits:
+			shape->enableHitEvents = flag;
+			break;
+		case tb_shapeEventPreSolve:
+			shape->enablePreSolveEvents = flag;
+			break;
+		default:
+			shape->enableSensorEvents = flag; // read when events are made: no contact holds it
+			return;
+	}
+	int shapeId = (int)(shape - world->shapes);
+	const tbBody* body = world->bodies + shape->bodyId;
+	for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+	{
+		tbContact* contact = world->contacts + (key >> 1);
+		key = contact->edges[key & 1].nextKey;
+		if (contact->shapeIdA == shapeId || contact->shapeIdB == shapeId)
+		{
+			tbRefreshContactEventFlags(world, contact);
+		}
+	}
+}
