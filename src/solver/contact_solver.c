@@ -411,9 +411,9 @@ static void tbKeyContactsTask(int start, int end, uint32_t workerIndex, void* ta
 		tbContactKey key;
 		if (useCollideKeys && contactId < world->cache.collideKeyCount && ck->step == step)
 		{
-			key.indexA = ck->indexA == TB_NULL_INDEX ? staticIndex : ck->indexA;
-			key.indexB = ck->indexB == TB_NULL_INDEX ? staticIndex : ck->indexB;
-			key.flags = ck->flags;
+			key = ck->key; // awake indices: the static stand-in replaces TB_NULL_INDEX
+			key.indexA = key.indexA == TB_NULL_INDEX ? staticIndex : key.indexA;
+			key.indexB = key.indexB == TB_NULL_INDEX ? staticIndex : key.indexB;
 		}
 		else
 		{

@@ -127,12 +127,6 @@ _Static_assert(sizeof(tbContactConstraint) == 176, "tbContactConstraint is meant
 
 /// What colouring needs of a contact, known before the contact is prepared (contact_solver.c): the
 /// wide solver colours first and then prepares each contact straight into its lane.
-typedef struct tbContactKey
-{
-	int indexA, indexB; ///< solver body indices (bodyCount for the static stand-in)
-	uint32_t flags;		///< tbContactKeyFlag bits (world.h)
-} tbContactKey;
-
 
 /// How the velocity solve treats separation. Speculative gaps (s > 0) always get bias s/h: the
 /// constraint lets the bodies close exactly the gap in one sub-step and no more.

@@ -872,14 +872,15 @@ static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* co
 					 (dynamicA ? (uint32_t)tb_keyDynamicA : 0u) | (dynamicB ? (uint32_t)tb_keyDynamicB : 0u);
 	flags |= contact->rollingResistance > 0.0f || contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
 	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
-	tbCollideKey* key = world->cache.collideKeys + contactId;
+	tbCollideKey* written = world->cache.collideKeys + contactId;
+	tbContactKey* key = &written->key;
 	// The same key as written in the last step (a steady step can keep the solver's keys).
-	bool same = key->step == world->stepIndex - 1u && key->indexA == a->awakeIndex && key->indexB == b->awakeIndex &&
-				key->flags == flags;
+	bool same = written->step == world->stepIndex - 1u && key->indexA == a->awakeIndex &&
+				key->indexB == b->awakeIndex && key->flags == flags;
 	key->indexA = a->awakeIndex; // TB_NULL_INDEX for a static body; no side sleeps (ready)
 	key->indexB = b->awakeIndex;
 	key->flags = flags;
-	key->step = world->stepIndex;
+	written->step = world->stepIndex;
 	return same;
 }
 

@@ -81,8 +81,7 @@ typedef struct tbContact
 	uint32_t generation; ///< bumped when the slot is freed: stale tbContactIds are refused
 } tbContact;
 
-/// Bits of a contact's solver key (solver_types.h, tbContactKey; contact.c fills them for ready
-/// contacts during the narrow phase).
+/// Bits of a contact's solver key (tbContactKey).
 typedef enum tbContactKeyFlag
 {
 	tb_keyMovesA = 1,	   ///< the solve can change A's velocity (awake, positive inverse mass or inertia)
@@ -99,15 +98,22 @@ typedef struct tbBodyPair
 	int bodyIdA, bodyIdB;
 } tbBodyPair;
 
-/// What the narrow phase learnt of a contact that is ready for the solver (a dynamic side, no
-/// sleeping side), while it had both bodies in cache: their awake indices (TB_NULL_INDEX for a
-/// static body), which are the solver indices of this step, and the key bits. Valid in the step
-/// `step` only. A dense array by contact id, so the solver's key pass streams through it instead
-/// of visiting two bodies per contact (contact_solver.c).
-typedef struct tbCollideKey
+/// What the solver needs to order a contact: its two bodies' indices and tbContactKeyFlag bits. In
+/// the solver (contact_solver.c) the indices are solver indices, the static stand-in for a static
+/// body; in a tbCollideKey they are awake indices, TB_NULL_INDEX for a static body.
+typedef struct tbContactKey
 {
 	int indexA, indexB;
 	uint32_t flags;
+} tbContactKey;
+
+/// What the narrow phase learnt of a contact that is ready for the solver (a dynamic side, no
+/// sleeping side), while it had both bodies in cache: its key with awake indices, which are the
+/// solver indices of this step. Valid in the step `step` only. A dense array by contact id, so the
+/// solver's key pass streams through it instead of visiting two bodies per contact.
+typedef struct tbCollideKey
+{
+	tbContactKey key;
 	uint32_t step;
 } tbCollideKey;
 

@@ -344,9 +344,10 @@ static void tbGatherSleepLinks(tbWorld* world, tbSleepLinks* links)
 	for (int i = 0; i < world->cache.solverContactCount; ++i)
 	{
 		int contactId = world->cache.solverContactsById[i];
-		const tbCollideKey* key = world->cache.collideKeys + contactId;
-		if (useCollideKeys && contactId < world->cache.collideKeyCount && key->step == world->stepIndex)
+		const tbCollideKey* written = world->cache.collideKeys + contactId;
+		if (useCollideKeys && contactId < world->cache.collideKeyCount && written->step == world->stepIndex)
 		{
+			const tbContactKey* key = &written->key;
 			tbAddSleepLink(links, key->indexA, (key->flags & tb_keyDynamicA) != 0u, key->indexB,
 						   (key->flags & tb_keyDynamicB) != 0u);
 			continue;
