@@ -1374,6 +1374,30 @@ static void LineAndColumn(const char* text, const char* position, int* line, int
 	}
 }
 
+/// How deeply arrays and objects are open at `at` (brackets inside strings not counted).
+static int NestingDepth(const char* text, const char* at)
+{
+	int depth = 0;
+	bool inString = false;
+	for (const char* c = text; c < at && *c != '\0'; ++c)
+	{
+		if (inString)
+		{
+			if (*c == '\\' && c[1] != '\0')
+			{
+				c += 1; // the escaped character, whatever it is
+				continue;
+			}
+			inString = *c != '"';
+			continue;
+		}
+		inString = *c == '"';
+		depth += *c == '[' || *c == '{' ? 1 : 0;
+		depth -= *c == ']' || *c == '}' ? 1 : 0;
+	}
+	return depth;
+}
+
 Scene* SceneFile_Parse(const char* text, char* error, int errorSize)
 {
 	Parser parser = {.error = error, .errorSize = errorSize};
@@ -1388,6 +1412,14 @@ Scene* SceneFile_Parse(const char* text, char* error, int errorSize)
 	{
 		int line = 0, column = 0;
 		LineAndColumn(text, end != NULL ? end : text, &line, &column);
+		int depth = NestingDepth(text, end != NULL ? end : text);
+		if (depth >= CJSON_NESTING_LIMIT)
+		{
+			Fail(&parser, "", "line %d, column %d: arrays and objects nested more than %d deep, the parser's limit (a "
+							  "scene needs fewer than 10 levels)",
+				 line, column, CJSON_NESTING_LIMIT);
+			return NULL;
+		}
 		Fail(&parser, "", "line %d, column %d: invalid JSON", line, column);
 		return NULL;
 	}

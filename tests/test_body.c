@@ -260,3 +260,43 @@ Test(body, wake_touching_wakes_the_contact_partners, .init = SetupErrors, .fini 
 	cr_expect(tbBody_IsAwake(far) == false, "and nothing else changes");
 	tbDestroyWorld(world);
 }
+
+// A destroyed body's id, and its shape's, never pass validation again, however often the slot is
+// reused: each destruction advances the slot's 16-bit generation once, and a slot whose next
+// generation would come round to its first is retired (never reused), after 65,535 bodies. 70,000
+// create/destroy cycles: the first ids stay invalid throughout, ids handed out are never repeated,
+// the slot is retired once (the 65,536th body takes a new slot), and the world's memory stays flat.
+Test(body, destroyed_ids_never_come_back, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	tbBodyId firstBody = tbCreateBody(world, &bodyDef);
+	tbShapeId firstShape = tbCreateCircleShape(firstBody, &shapeDef, &circle);
+	tbDestroyBody(firstBody);
+	int64_t bytes = tbGetByteCount();
+	int firstSlotUses = 1, newSlots = 0, failedAt = -1;
+	// Checked with plain comparisons (an assertion per cycle would cost more than the cycles).
+	for (int i = 1; i < 70000 && failedAt < 0; ++i)
+	{
+		tbBodyId body = tbCreateBody(world, &bodyDef);
+		tbShapeId shape = tbCreateCircleShape(body, &shapeDef, &circle);
+		bool sameSlot = body.index1 == firstBody.index1;
+		firstSlotUses += sameSlot ? 1 : 0;
+		newSlots += sameSlot ? 0 : 1;
+		bool ok = tbShape_IsValid(shape) && (sameSlot == false || body.generation != firstBody.generation) &&
+				  tbBody_IsValid(firstBody) == false && tbShape_IsValid(firstShape) == false &&
+				  tbBody_SetLinearVelocity(firstBody, tbMakeVec2(1.0f, 0.0f)) == false;
+		failedAt = ok ? -1 : i;
+		tbDestroyBody(body);
+	}
+	cr_assert_eq(failedAt, -1, "cycle %d: a destroyed id matched again", failedAt);
+	cr_expect_eq(firstSlotUses, 65535);
+	cr_expect_eq(newSlots, 70000 - 65535);
+	// The retired slot's neighbour took over: one more body and shape slot (no more arrays).
+	cr_expect(tbGetByteCount() - bytes < 4096, "memory grew by %lld bytes", (long long)(tbGetByteCount() - bytes));
+	tbDestroyWorld(world);
+}

@@ -195,3 +195,100 @@ Test(callbacks, a_broken_manifold_from_pre_solve_is_refused, .init = SetupErrors
 	cr_assert(fabsf(tbBody_GetPosition(ball).y - 0.25f) < 0.01f, "ball at y %g", (double)tbBody_GetPosition(ball).y);
 	tbDestroyWorld(world);
 }
+
+typedef struct DeepContext
+{
+	float separation;
+	int calls;
+} DeepContext;
+
+static void WriteSeparation(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* manifold, void* context)
+{
+	(void)shapeIdA;
+	(void)shapeIdB;
+	DeepContext* c = context;
+	c->calls += 1;
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		manifold->points[i].separation = c->separation;
+	}
+}
+
+// A callback that writes a finite but impossible overlap (−1e30 m) into a ball's contact with the
+// ground is reported and undone, for every solver: the ball rests at y = 0.25 ± 0.01 (as in the test
+// above) and a box resting on the same ground beside it stays where it was within 1 cm. An overlap
+// deeper than the smaller shape's box (the 0.5 m ball: 0.71 m) is one no two shapes can have.
+Test(callbacks, an_impossible_overlap_from_pre_solve_is_refused, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbSolverMethod methods[3] = {tb_solverSoft, tb_solverBaumgarte, tb_solverNGS};
+	for (int k = 0; k < 3; ++k)
+	{
+		tbWorldDef worldDef = tbDefaultWorldDef();
+		worldDef.solver = methods[k];
+		tbWorldId world = tbCreateWorld(&worldDef);
+		tbShapeDef groundDef = tbDefaultShapeDef();
+		CreateStaticBox(world, tbMakeVec2(0.0f, -1.0f), 20.0f, 1.0f, &groundDef);
+		tbShapeDef ballDef = tbDefaultShapeDef();
+		ballDef.enablePreSolveEvents = true;
+		tbBodyId ball;
+		CreateBall(world, tbMakeVec2(0.0f, 0.25f), tbMakeVec2(0.0f, 0.0f), &ballDef, &ball);
+		tbBodyDef boxDef = tbDefaultBodyDef();
+		boxDef.type = tb_dynamicBody;
+		boxDef.position = tbMakeVec2(2.0f, 0.5f);
+		tbBodyId box = tbCreateBody(world, &boxDef);
+		tbPolygon square = tbMakeSquare(0.5f);
+		tbShapeDef boxShapeDef = tbDefaultShapeDef();
+		tbCreatePolygonShape(box, &boxShapeDef, &square);
+		DeepContext context = {-1e30f, 0};
+		tbWorld_SetPreSolveCallback(world, WriteSeparation, NULL, &context);
+		int before = s_errors;
+		for (int step = 0; step < 60; ++step)
+		{
+			tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+		}
+		cr_assert(context.calls > 0);
+		cr_assert(s_errors > before, "solver %d: no error", k);
+		cr_assert(strstr(s_lastError, "separation") != NULL, "'%s'", s_lastError);
+		tbVec2 p = tbBody_GetPosition(ball);
+		cr_assert(fabsf(p.y - 0.25f) < 0.01f && fabsf(p.x) < 0.01f, "solver %d: ball at (%g, %g)", k, (double)p.x,
+				  (double)p.y);
+		tbVec2 q = tbBody_GetPosition(box);
+		cr_assert(fabsf(q.y - 0.5f) < 0.01f && fabsf(q.x - 2.0f) < 0.01f, "solver %d: box at (%g, %g)", k,
+				  (double)q.x, (double)q.y);
+		tbDestroyWorld(world);
+	}
+}
+
+// Within the contract a callback may still ask for a deep overlap: 0.7 m on the 0.5 m ball (just
+// inside the 0.71 m bound). No solver then pushes the ball faster than the world's speed limit,
+// here maximumLinearSpeed = 10 m/s: below the Baumgarte solver's push for that overlap,
+// β/h·0.7 m = 0.2 × 240/s × 0.7 m ≈ 34 m/s, so the limit is what holds it.
+Test(callbacks, a_deep_overlap_from_pre_solve_stays_under_the_speed_limit, .init = SetupErrors,
+	 .fini = TeardownErrors)
+{
+	tbSolverMethod methods[3] = {tb_solverSoft, tb_solverBaumgarte, tb_solverNGS};
+	for (int k = 0; k < 3; ++k)
+	{
+		tbWorldDef worldDef = tbDefaultWorldDef();
+		worldDef.solver = methods[k];
+		worldDef.maximumLinearSpeed = 10.0f;
+		tbWorldId world = tbCreateWorld(&worldDef);
+		tbShapeDef groundDef = tbDefaultShapeDef();
+		CreateStaticBox(world, tbMakeVec2(0.0f, -1.0f), 20.0f, 1.0f, &groundDef);
+		tbShapeDef ballDef = tbDefaultShapeDef();
+		ballDef.enablePreSolveEvents = true;
+		tbBodyId ball;
+		CreateBall(world, tbMakeVec2(0.0f, 0.25f), tbMakeVec2(0.0f, 0.0f), &ballDef, &ball);
+		DeepContext context = {-0.7f, 0};
+		tbWorld_SetPreSolveCallback(world, WriteSeparation, NULL, &context);
+		int before = s_errors;
+		for (int step = 0; step < 30; ++step)
+		{
+			tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+			float speed = tbLength(tbBody_GetLinearVelocity(ball));
+			cr_assert(speed <= 10.0f * 1.0001f, "solver %d step %d: speed %g", k, step, (double)speed);
+		}
+		cr_assert_eq(s_errors, before, "'%s'", s_lastError);
+		tbDestroyWorld(world);
+	}
+}

@@ -406,3 +406,92 @@ Test(decompose, random_radial_outlines)
 		}
 	}
 }
+
+/// An 11-pointed star, tips `outer` and notches `inner` from (cx, cy) (metres).
+static void MakeStar(tbVec2* p, float cx, float cy, float outer, float inner)
+{
+	for (int i = 0; i < 11; ++i)
+	{
+		float radius = i % 2 == 0 ? outer : inner;
+		float angle = 2.0f * 3.14159265f * (float)i / 11.0f;
+		p[i] = tbMakeVec2(cx + radius * cosf(angle), cy + radius * sinf(angle));
+	}
+}
+
+// The pieces cover the outline to within 1 % of its area (TB_DECOMPOSE_TOLERANCE: what the
+// slop-sized welds may take from features well above TB_LINEAR_SLOP = 5 mm) or the outline is
+// refused naming the reason, at every scale from 1.5 cm to 1.5 km. A star 3 cm across has notches
+// of millimetres, which polygons cannot hold (refused); from 30 cm up every star is cut, and the
+// cover is checked in full (DecomposeAndCheck: convex pieces of outline points, no overlaps, the
+// area within the dropped slivers).
+Test(decompose, star_covers_or_is_refused_at_every_scale, .init = SetupErrors, .fini = TeardownErrors)
+{
+	float scales[] = {1.0f, 2.0f, 10.0f, 100.0f, 1000.0f, 10000.0f, 100000.0f};
+	for (int k = 0; k < (int)(sizeof(scales) / sizeof(scales[0])); ++k)
+	{
+		float s = scales[k];
+		tbVec2 star[11];
+		MakeStar(star, 0.0f, 0.0f, 0.015f * s, 0.006f * s);
+		int before = s_errors;
+		int count = tbDecomposePolygon(star, 11, s_pieces, MAX_PIECES);
+		double area = fabs(SignedArea(star, 11)), sum = 0.0;
+		for (int i = 0; i < count; ++i)
+		{
+			sum += SignedArea(s_pieces[i].vertices, s_pieces[i].count);
+		}
+		if (count == 0)
+		{
+			cr_assert(s < 10.0f, "scale %g: refused", (double)s);
+			ExpectError(before, "tbDecomposePolygon", "too small for polygons");
+			continue;
+		}
+		cr_assert(fabs(sum - area) <= 0.01 * area, "scale %g: pieces cover %.6g of %.6g", (double)s, sum, area);
+		if (s >= 10.0f)
+		{
+			DecomposeAndCheck(star, 11);
+		}
+	}
+}
+
+// A hexagon 2 cm across with a notch 3 mm deep in one side: within the slop, so no piece can keep
+// the notch, and a piece that spans it would leave the outline (by the notch's 6 % of the area).
+// Refused, naming the reason; the same outline ×100 (a 30 cm notch) is cut exactly.
+Test(decompose, a_notch_within_the_slop_is_refused_not_covered_over, .init = SetupErrors, .fini = TeardownErrors)
+{
+	for (int k = 0; k < 2; ++k)
+	{
+		float s = k == 0 ? 1.0f : 100.0f;
+		tbVec2 outline[7];
+		for (int i = 0; i < 6; ++i)
+		{
+			float angle = 2.0f * 3.14159265f * (float)i / 6.0f;
+			outline[i < 1 ? i : i + 1] = tbMakeVec2(4.0f + 0.01f * s * cosf(angle), 5.0f + 0.01f * s * sinf(angle));
+		}
+		// Between corners 0 and 1 (now 0 and 2): the side's midpoint moved 3 mm toward the centre.
+		tbVec2 mid = tbMulSV(0.5f, tbAdd(outline[0], outline[2]));
+		tbVec2 inward = tbNormalize(tbSub(tbMakeVec2(4.0f, 5.0f), mid));
+		outline[1] = tbMulAdd(mid, 0.003f * s, inward);
+		int before = s_errors;
+		int count = tbDecomposePolygon(outline, 7, s_pieces, MAX_PIECES);
+		if (k == 0)
+		{
+			cr_assert_eq(count, 0);
+			ExpectError(before, "tbDecomposePolygon", "too small for polygons");
+		}
+		else
+		{
+			cr_assert_eq(s_errors, before, "'%s'", s_lastError);
+			DecomposeAndCheck(outline, 7);
+		}
+	}
+}
+
+// Two squares that touch at one corner, given as one outline that visits the shared corner twice
+// (points 1 and 4): not simple, though no two edges cross. Refused, naming both points.
+Test(decompose, a_point_repeated_anywhere_is_refused, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbVec2 pinched[6] = {{0.0f, 0.0f}, {1.0f, 1.0f}, {2.0f, 0.0f}, {2.0f, 2.0f}, {1.0f, 1.0f}, {0.0f, 2.0f}};
+	int before = s_errors;
+	cr_assert_eq(tbDecomposePolygon(pinched, 6, s_pieces, MAX_PIECES), 0);
+	ExpectError(before, "tbDecomposePolygon", "points[1] and points[4]");
+}

@@ -372,3 +372,46 @@ Test(determinism, worker_indices_beyond_the_count_are_reported_not_overrun)
 	cr_expect_eq(events, events1, "other events than 1 worker's");
 	Scene_Destroy(scene);
 }
+
+// A world on workers with nothing awake (ground only, then a body that has fallen asleep) steps
+// and reports no move events. The finalize stage once offset a NULL move-event array by zero
+// there, undefined behaviour that the sanitizer build of the test command stops at.
+Test(determinism, workers_step_a_world_with_nothing_awake)
+{
+	TaskSystem* tasks = TaskSystem_Create(2);
+	cr_assert(tasks != NULL);
+	tbWorldDef def = tbDefaultWorldDef();
+	def.workerCount = TaskSystem_WorkerCount(tasks);
+	def.enqueueTask = TaskSystem_Enqueue;
+	def.finishTask = TaskSystem_Finish;
+	def.userTaskContext = tasks;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef groundDef = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &groundDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon floor = tbMakeBox(10.0f, 0.5f);
+	tbCreatePolygonShape(ground, &shapeDef, &floor);
+	for (int i = 0; i < 5; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+		cr_expect_eq(tbWorld_GetBodyEvents(world).moveCount, 0);
+	}
+	tbBodyDef boxDef = tbDefaultBodyDef();
+	boxDef.type = tb_dynamicBody;
+	boxDef.position = tbMakeVec2(0.0f, 1.0f);
+	tbBodyId box = tbCreateBody(world, &boxDef);
+	tbPolygon square = tbMakeSquare(0.5f);
+	tbCreatePolygonShape(box, &shapeDef, &square);
+	tbWorld_Step(world, 1.0f / 60.0f, 4);
+	cr_expect_eq(tbWorld_GetBodyEvents(world).moveCount, 1);
+	// Resting on the ground it falls asleep after TB_TIME_TO_SLEEP (0.5 s): give it 2 s.
+	for (int i = 0; i < 120; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_expect(tbBody_IsAwake(box) == false);
+	tbWorld_Step(world, 1.0f / 60.0f, 4);
+	cr_expect_eq(tbWorld_GetBodyEvents(world).moveCount, 0);
+	tbDestroyWorld(world);
+	TaskSystem_Destroy(tasks);
+}

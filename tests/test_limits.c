@@ -1123,3 +1123,52 @@ Test(world_limits, impact_speed_estimate_bounded_by_the_speed_clamp, .init = Set
 	}
 	cr_assert_eq(s_errors, 0);
 }
+
+// The world's coordinate bound holds for bodies the solver moves, not only for the setters: a body
+// set at x = 999,000 m flying at the default speed limit (4,000 m/s, 66.7 m a step) crosses
+// TB_MAX_POSITION = 1e6 m in its 15th step, is taken out of the simulation at the end of that step
+// (disabled, as tbBody_Disable would) and reported once, naming the bound. A body elsewhere steps on
+// unaffected; enabled again after being moved back, the first body simulates again.
+Test(world_bounds, a_body_carried_beyond_the_bound_is_disabled_and_reported, .init = SetupHooks, .fini = TeardownHooks)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	worldDef.gravity = tbMakeVec2(0.0f, 0.0f);
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = tbMakeVec2(999000.0f, 0.0f);
+	bodyDef.linearVelocity = tbMakeVec2(4000.0f, 0.0f);
+	bodyDef.isBullet = false;
+	tbBodyId runaway = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+	tbCreateCircleShape(runaway, &shapeDef, &circle);
+	bodyDef.position = tbMakeVec2(0.0f, 0.0f);
+	bodyDef.linearVelocity = tbMakeVec2(1.0f, 0.0f);
+	tbBodyId other = tbCreateBody(world, &bodyDef);
+	tbCreateCircleShape(other, &shapeDef, &circle);
+	int before = s_errors;
+	int disabledAt = -1;
+	for (int step = 1; step <= 30; ++step)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+		if (disabledAt < 0 && tbBody_IsEnabled(runaway) == false)
+		{
+			disabledAt = step;
+		}
+	}
+	cr_expect_eq(disabledAt, 15);
+	cr_assert_eq(s_errors, before + 1, "%d errors", s_errors - before);
+	cr_expect(strstr(s_lastError, "TB_MAX_POSITION") != NULL && strstr(s_lastError, "disabled") != NULL, "'%s'",
+			  s_lastError);
+	float x = tbBody_GetPosition(runaway).x;
+	cr_expect(x > 1.0e6f && x < 1.0e6f + 4000.0f / 60.0f, "x = %g", (double)x);
+	// 30 steps at 1 m/s: 0.5 m.
+	cr_expect(fabsf(tbBody_GetPosition(other).x - 0.5f) < 1e-4f, "the other body at %g", (double)tbBody_GetPosition(other).x);
+	cr_assert(tbBody_SetTransform(runaway, tbMakeVec2(10.0f, 0.0f), tbMakeRot(0.0f)));
+	tbBody_Enable(runaway);
+	tbWorld_Step(world, 1.0f / 60.0f, 4);
+	cr_expect(tbBody_IsEnabled(runaway) && tbBody_GetPosition(runaway).x > 10.0f);
+	cr_expect_eq(s_errors, before + 1);
+	tbDestroyWorld(world);
+}

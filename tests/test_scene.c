@@ -900,3 +900,30 @@ Test(scene, spawn_lifetime_destroys_at_the_given_step)
 	Scene_Destroy(scene);
 	cr_assert_eq(tbGetByteCount(), 0);
 }
+
+// A file nested deeper than the JSON parser takes (CJSON_NESTING_LIMIT, 1000 levels) is refused
+// naming the depth, not as bare invalid JSON; a string holding brackets and an escaped quote does
+// not count toward the depth.
+Test(scene, files_nested_too_deep_name_the_depth)
+{
+	int depth = 2000;
+	const char* prefix = "{\"name\": \"[[{\\\"x\", \"bodies\": ";
+	char* text = malloc(strlen(prefix) + 2 * (size_t)depth + 2);
+	strcpy(text, prefix);
+	size_t at = strlen(text);
+	for (int i = 0; i < depth; ++i)
+	{
+		text[at++] = '[';
+	}
+	for (int i = 0; i < depth; ++i)
+	{
+		text[at++] = ']';
+	}
+	text[at++] = '}';
+	text[at] = '\0';
+	char error[256] = "";
+	Scene* scene = SceneFile_Parse(text, error, (int)sizeof(error));
+	cr_assert_null(scene);
+	cr_assert(strstr(error, "nested more than 1000 deep") != NULL, "'%s'", error);
+	free(text);
+}

@@ -251,6 +251,12 @@ void tbBroadPhase_DestroyProxy(tbBroadPhase* bp, int proxyKey)
 	if (p->moveIndex >= 0)
 	{
 		bp->moveBuffer[p->moveIndex] = -1;
+		// Trailing holes are dropped, so that creating and destroying between steps (a proxy is
+		// buffered when created) does not grow the buffer until the next step clears it.
+		while (bp->moveCount > 0 && bp->moveBuffer[bp->moveCount - 1] == -1)
+		{
+			bp->moveCount -= 1;
+		}
 	}
 	*p = (tbBroadProxy){.handle = bp->freeProxy, .moveIndex = -1, .isFree = true};
 	bp->freeProxy = proxyKey;

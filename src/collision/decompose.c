@@ -41,6 +41,11 @@
 /// Reflex corners beyond which pairing (step 1, O(r²) candidates) is skipped.
 #define TB_PAIRING_LIMIT 256
 
+/// The largest difference between the pieces and the outline, as a fraction of its area, that is
+/// accepted (what the slop-sized welds and straightening may take from an outline whose features
+/// are well above the slop); an outline that would lose more is refused.
+#define TB_DECOMPOSE_TOLERANCE 0.01
+
 /// A piece under construction: indices into the outline, counter-clockwise (a merge may hold
 /// straight corners for a moment before they are dropped).
 typedef struct tbPiece
@@ -512,11 +517,71 @@ static tbHull tbPieceHull(const tbDecomposer* d, const tbPiece* piece)
 	return tbComputeHull(corners, piece->count);
 }
 
+/// Twice the signed area of a closed outline, in double and about the outline's first point (so that
+/// an outline far from the origin keeps its digits).
+static double tbArea2(const tbVec2* p, int n)
+{
+	double sum = 0.0;
+	for (int i = 1; i + 1 < n; ++i)
+	{
+		double ax = (double)p[i].x - p[0].x, ay = (double)p[i].y - p[0].y;
+		double bx = (double)p[i + 1].x - p[0].x, by = (double)p[i + 1].y - p[0].y;
+		sum += ax * by - ay * bx;
+	}
+	return sum;
+}
+
+/// Twice the area of a piece's own corners (a face of the triangulation, merged).
+static double tbPieceArea2(const tbDecomposer* d, const tbPiece* piece)
+{
+	tbVec2 corners[2 * TB_MAX_POLYGON_VERTICES];
+	for (int k = 0; k < piece->count; ++k)
+	{
+		corners[k] = d->p[piece->index[k]];
+	}
+	return tbArea2(corners, piece->count);
+}
+
+/// How far the pieces are from covering the outline exactly, as twice an area: what the hulls add
+/// to or take from their faces (a hull adds where a face is not convex by more than rounding, and
+/// takes away nothing but corners within the slop of straight), plus the faces of dropped slivers
+/// and the corners dropped from the outline. The faces partition the outline, so this is zero when
+/// each hull is its face.
+static double tbCoverageError2(const tbDecomposer* d, double outlineArea2)
+{
+	double error = 0.0, kept = 0.0;
+	for (int t = 0; t < d->triCount; ++t)
+	{
+		if (d->tri[t].merged == false)
+		{
+			tbHull hull = tbPieceHull(d, d->tri + t);
+			if (hull.count >= 3)
+			{
+				double face = tbPieceArea2(d, d->tri + t);
+				error += fabs(tbArea2(hull.points, hull.count) - face);
+				kept += face;
+			}
+		}
+	}
+	return error + fabs(outlineArea2 - kept);
+}
+
 /// Write the pieces as polygons. A sliver left unmerged (a thin ear cut when no fat one was left,
 /// thinner than TB_LINEAR_SLOP everywhere) is dropped: no polygon can hold it, and the gap it
-/// leaves is thinner than the contact slop. Nothing is written when capacity is too small.
-static int tbWritePieces(const char* f, const tbDecomposer* d, tbPolygon* pieces, int capacity)
+/// leaves is thinner than the contact slop. Nothing is written when capacity is too small, or when
+/// the pieces would miss or exceed the outline by more than TB_DECOMPOSE_TOLERANCE of its area:
+/// an outline whose features are near the slop's size, which polygons cannot hold.
+static int tbWritePieces(const char* f, const tbDecomposer* d, double outlineArea2, tbPolygon* pieces, int capacity)
 {
+	double error2 = tbCoverageError2(d, outlineArea2);
+	if (error2 > TB_DECOMPOSE_TOLERANCE * outlineArea2)
+	{
+		tbReportError(f, "the pieces would differ from the outline by %.2g%% of its area: it has features (spikes, "
+						 "notches, corners within %g m of straight) too small for polygons, whose corners are welded "
+						 "and straightened within TB_LINEAR_SLOP; scale it up or simplify it",
+					  100.0 * error2 / outlineArea2, (double)TB_LINEAR_SLOP);
+		return 0;
+	}
 	int count = 0;
 	for (int t = 0; t < d->triCount; ++t)
 	{
@@ -559,11 +624,20 @@ static bool tbCheckOutline(const char* f, const tbVec2* points, int count)
 						  (double)points[i].y, (double)TB_MAX_COORDINATE);
 			return false;
 		}
-		if (tbDistance(points[i], points[(i + 1) % count]) < TB_LINEAR_SLOP)
+	}
+	// Every pair, not only neighbours: a simple outline visits each point once (a point repeated
+	// further along would pinch the polygon into two that touch).
+	for (int i = 0; i < count; ++i)
+	{
+		for (int j = i + 1; j < count; ++j)
 		{
-			tbReportError(f, "points[%d] and points[%d] are closer than %g m (duplicate points); remove one", i,
-						  (i + 1) % count, (double)TB_LINEAR_SLOP);
-			return false;
+			if (tbDistance(points[i], points[j]) < TB_LINEAR_SLOP)
+			{
+				tbReportError(f, "points[%d] and points[%d] are closer than %g m (duplicate points: a simple polygon "
+								 "visits each point once); remove one",
+							  i, j, (double)TB_LINEAR_SLOP);
+				return false;
+			}
 		}
 	}
 	return true;
@@ -581,11 +655,7 @@ int tbDecomposePolygon(const tbVec2* points, int count, tbPolygon* pieces, int c
 		tbReportError(f, "pieces is NULL or capacity %d < 1; pass room for up to count − 2 pieces", capacity);
 		return 0;
 	}
-	double area2 = 0.0;
-	for (int i = 0; i < count; ++i)
-	{
-		area2 += (double)tbCross(points[i], points[(i + 1) % count]);
-	}
+	double area2 = tbArea2(points, count);
 	if (fabs(area2) < 2.0 * TB_LINEAR_SLOP * TB_LINEAR_SLOP)
 	{
 		tbReportError(f, "the outline has no area; pass at least three points not on one line");
@@ -626,7 +696,7 @@ int tbDecomposePolygon(const tbVec2* points, int count, tbPolygon* pieces, int c
 	else
 	{
 		tbMergeTriangles(&d);
-		result = tbWritePieces(f, &d, pieces, capacity);
+		result = tbWritePieces(f, &d, fabs(area2), pieces, capacity);
 	}
 	tbFree(memory, bytes);
 	return result;

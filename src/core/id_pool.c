@@ -21,6 +21,17 @@ void tbIdPool_Free(tbIdPool* pool, int id)
 	pool->count -= 1;
 }
 
+void tbIdPool_Release(tbIdPool* pool, int id, uint16_t* generation, uint16_t first)
+{
+	*generation = (uint16_t)(*generation + 1);
+	if ((uint16_t)(*generation - first) == UINT16_MAX)
+	{
+		pool->count -= 1; // retired: never handed out again
+		return;
+	}
+	tbIdPool_Free(pool, id);
+}
+
 void tbIdPool_Destroy(tbIdPool* pool)
 {
 	TB_ARRAY_FREE(pool->freeIds, pool->freeCapacity);

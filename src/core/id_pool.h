@@ -7,6 +7,7 @@
 #pragma once
 
 #include <stdbool.h>
+#include <stdint.h>
 
 typedef struct tbIdPool
 {
@@ -22,6 +23,13 @@ int tbIdPool_Alloc(tbIdPool* pool, bool* isNew);
 
 /// Give an id back (it must be in use).
 void tbIdPool_Free(tbIdPool* pool, int id);
+
+/// An object in slot `id` is destroyed: advance the slot's generation (so that ids of the object
+/// are refused from now on) and give the id back, or retire the slot for good when one more
+/// generation would come round to `first`, the one the slot started at. An id once destroyed then
+/// never matches again: a slot serves 65,535 objects and is then left unused (one slot's memory
+/// per 65,535 creations in it).
+void tbIdPool_Release(tbIdPool* pool, int id, uint16_t* generation, uint16_t first);
 
 /// Release the free list (the world is being destroyed).
 void tbIdPool_Destroy(tbIdPool* pool);

@@ -422,7 +422,7 @@ tbJoint* tbCreateJointInternal(tbWorldId worldId, const tbJointDef* def, tbJoint
 
 	int jointId = tbAllocJointSlot(world);
 	tbJoint* joint = world->joints + jointId;
-	uint16_t generation = (uint16_t)(joint->generation + 1);
+	uint16_t generation = joint->generation; // advanced when the last joint here was destroyed
 	memset(joint, 0, sizeof(tbJoint));
 	joint->generation = generation;
 	joint->inUse = true;
@@ -471,8 +471,7 @@ static void tbDestroyJointInternal(tbWorld* world, int jointId, bool refindPairs
 	tbWakeBody(world, a);
 	tbWakeBody(world, b);
 	joint->inUse = false;
-	joint->generation += 1;
-	tbIdPool_Free(&world->jointPool, jointId);
+	tbIdPool_Release(&world->jointPool, jointId, &joint->generation, 0);
 }
 
 void tbDestroyJoint(tbJointId jointId)

@@ -1178,7 +1178,10 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 		}
 		else if (policy == tb_biasBaumgarte)
 		{
+			// Bounded like every push: an overlap no contact can have (a pre-solve callback's) must
+			// not launch the body past the speed limit.
 			overlapBias = TB_BAUMGARTE * inv_h * tbMinFloat(0.0f, s + TB_LINEAR_SLOP);
+			overlapBias = tbMaxFloat(overlapBias, -context->maxLinearSpeed);
 		}
 		float bias = speculative ? s * inv_h : overlapBias;
 		float massScale = speculative ? 1.0f : overlapMassScale;

@@ -254,6 +254,7 @@ typedef struct tbWidePass
 	tbFloatW inv_h;
 	tbFloatW minPushBias;	///< −maxContactPushSpeed
 	tbFloatW baumgarteRate; ///< TB_BAUMGARTE/h
+	tbFloatW minBaumgarteBias; ///< −maxLinearSpeed
 	tbFloatW slop;			///< TB_LINEAR_SLOP
 } tbWidePass;
 
@@ -309,7 +310,7 @@ static TB_FORCE_INLINE void tbSolveNormalW(tbWideContactPoint* cp, tbWideImpulse
 		}
 		else if (policy == tb_biasBaumgarte)
 		{
-			overlapBias = tbMulW(pass->baumgarteRate, tbMinW(zero, tbAddW(s, pass->slop)));
+			overlapBias = tbMaxW(tbMulW(pass->baumgarteRate, tbMinW(zero, tbAddW(s, pass->slop))), pass->minBaumgarteBias);
 		}
 		bias = tbSelectGreaterW(s, zero, tbMulW(s, pass->inv_h), overlapBias);
 		massScale = tbSelectGreaterW(s, zero, tbSplatW(1.0f), overlapMassScale);
@@ -432,6 +433,7 @@ void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, in
 	pass.inv_h = tbSplatW(context->inv_h);
 	pass.minPushBias = tbSplatW(-context->maxContactPushSpeed);
 	pass.baumgarteRate = tbSplatW(TB_BAUMGARTE * context->inv_h);
+	pass.minBaumgarteBias = tbSplatW(-context->maxLinearSpeed);
 	pass.slop = tbSplatW(TB_LINEAR_SLOP);
 	bool central = context->centralFriction;
 	switch (policy)

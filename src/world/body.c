@@ -186,7 +186,7 @@ static int tbAllocBodySlot(tbWorld* world)
 	{
 		TB_ARRAY_RESERVE(world->bodies, world->bodyCapacity, id + 1);
 		memset(world->bodies + id, 0, sizeof(tbBody));
-		world->bodies[id].generation = world->bodyGenerationBase; // tbCreateBody adds one
+		world->bodies[id].generation = world->bodyGenerationBase;
 	}
 	return id;
 }
@@ -204,7 +204,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	}
 	int id = tbAllocBodySlot(world);
 	tbBody* body = world->bodies + id;
-	uint16_t generation = (uint16_t)(body->generation + 1);
+	uint16_t generation = body->generation; // advanced when the last body here was destroyed
 	memset(body, 0, sizeof(tbBody));
 	body->generation = generation;
 	body->inUse = true;
@@ -281,8 +281,7 @@ void tbDestroyBody(tbBodyId bodyId)
 		int next = shape->nextShapeId;
 		tbDestroyShapeProxy(world, shape);
 		shape->inUse = false;
-		shape->generation += 1;
-		tbIdPool_Free(&world->shapePool, shapeId);
+		tbIdPool_Release(&world->shapePool, shapeId, &shape->generation, world->shapeGenerationBase);
 		shapeId = next;
 	}
 	if (body->awakeIndex != TB_NULL_INDEX)
@@ -290,11 +289,10 @@ void tbDestroyBody(tbBodyId bodyId)
 		tbRemoveFromAwakeSet(world, body);
 	}
 	body->inUse = false;
-	body->generation += 1;
 	world->kinematicBodyCount -= body->type == tb_kinematicBody ? 1 : 0;
 	world->staticBodyCount -= body->type == tb_staticBody ? 1 : 0;
 	world->linearLockCount -= body->lockLinearX || body->lockLinearY ? 1 : 0;
-	tbIdPool_Free(&world->bodyPool, bodyId.index1 - 1);
+	tbIdPool_Release(&world->bodyPool, bodyId.index1 - 1, &body->generation, world->bodyGenerationBase);
 }
 
 /// The reach of a body's speculative contacts, max(TB_SPECULATIVE_REACH, safetyFactor × minExtent)
@@ -538,14 +536,8 @@ bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
 	return true;
 }
 
-void tbBody_Disable(tbBodyId bodyId)
+static void tbDisableBody(tbWorld* world, tbBody* body)
 {
-	tbWorld* world;
-	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_Disable", &world, true);
-	if (body == NULL || body->isDisabled || tbStructureLocked(world, "tbBody_Disable", "disable bodies"))
-	{
-		return;
-	}
 	tbDestroyBodyContacts(world, body, true);
 	if (body->awakeIndex != TB_NULL_INDEX)
 	{
@@ -556,6 +548,17 @@ void tbBody_Disable(tbBodyId bodyId)
 		tbDestroyShapeProxy(world, world->shapes + id);
 	}
 	body->isDisabled = true;
+}
+
+void tbBody_Disable(tbBodyId bodyId)
+{
+	tbWorld* world;
+	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_Disable", &world, true);
+	if (body == NULL || body->isDisabled || tbStructureLocked(world, "tbBody_Disable", "disable bodies"))
+	{
+		return;
+	}
+	tbDisableBody(world, body);
 }
 
 void tbBody_Enable(tbBodyId bodyId)
@@ -1417,12 +1420,39 @@ static tbBodyMoveEvent tbMakeMoveEvent(const tbWorld* world, const tbBody* body,
 	return event;
 }
 
+/// The body's origin is farther than TB_MAX_POSITION from the world's origin on some axis: only the
+/// solver can take it there (every setter refuses such a position), by letting it fly at the speed
+/// limit for minutes. Beyond it a float position is coarser than contacts can work with.
+static bool tbIsBeyondBounds(const tbBody* body)
+{
+	return fabs((double)body->transform.p.x) > TB_MAX_POSITION || fabs((double)body->transform.p.y) > TB_MAX_POSITION;
+}
+
+void tbDisableBodiesBeyondBounds(tbWorld* world)
+{
+	for (int i = 0; i < world->awakeBodyCount; ++i)
+	{
+		int bodyId = world->awakeBodies[i];
+		tbBody* body = bodyId != TB_NULL_INDEX ? world->bodies + bodyId : NULL;
+		if (body != NULL && tbIsBeyondBounds(body))
+		{
+			tbReportError("tbWorld_Step",
+						  "body %d%s%s%s reached (%g, %g), farther than TB_MAX_POSITION = %g m from the origin; it is "
+						  "disabled (tbBody_Enable, after moving it back with tbBody_SetTransform, or tbDestroyBody)",
+						  bodyId + 1, body->name != NULL ? " (" : "", body->name != NULL ? body->name : "",
+						  body->name != NULL ? ")" : "", (double)body->transform.p.x, (double)body->transform.p.y,
+						  (double)TB_MAX_POSITION);
+			tbDisableBody(world, body);
+		}
+	}
+}
+
 typedef struct tbFinalizeTaskContext
 {
 	tbWorld* world;
 	float timeStep;
 	tbBodyMoveEvent* events; ///< one per awake body, in awake order
-	uint8_t* moved;			 ///< per awake body: 1 when a proxy of its is to be moved
+	uint8_t* moved;			 ///< per awake body: bit 0, a proxy of its is to be moved; bit 1, beyond bounds
 } tbFinalizeTaskContext;
 
 /// Sleep timers, shape boxes and move events of awake bodies [start, end): each writes only its own
@@ -1437,14 +1467,20 @@ static void tbFinalizeTask(int start, int end, uint32_t workerIndex, void* conte
 		int bodyId = world->awakeBodies[i];
 		tbBody* body = world->bodies + bodyId;
 		tbUpdateSleepTime(world, body, task->timeStep);
-		task->moved[i] = tbComputeBodyShapeBoxes(world, body, false) ? 1u : 0u;
+		task->moved[i] = (uint8_t)((tbComputeBodyShapeBoxes(world, body, false) ? 1u : 0u) |
+								   (tbIsBeyondBounds(body) ? 2u : 0u));
 		task->events[i] = tbMakeMoveEvent(world, body, bodyId);
 	}
 }
 
-void tbFinalizeStage(tbWorld* world, float timeStep)
+int tbFinalizeStage(tbWorld* world, float timeStep)
 {
 	int n = world->awakeBodyCount;
+	int beyond = 0;
+	if (n == 0)
+	{
+		return 0; // nothing awake: no boxes, no events (and no event array to point into)
+	}
 	if (tbWorkerCount(&world->def) > 1)
 	{
 		// On workers: everything per body, each move event written to its slot (awake order, as the
@@ -1457,12 +1493,13 @@ void tbFinalizeStage(tbWorld* world, float timeStep)
 		world->events.moveCount += n;
 		for (int i = 0; i < n; ++i)
 		{
-			if (task.moved[i] != 0u)
+			if ((task.moved[i] & 1u) != 0u)
 			{
 				tbMoveFlaggedProxies(world, world->bodies + world->awakeBodies[i]);
 			}
+			beyond += task.moved[i] >> 1;
 		}
-		return;
+		return beyond;
 	}
 	// One worker: one pass over the bodies (a second walk would only cost memory traffic).
 	for (int i = 0; i < n; ++i)
@@ -1474,5 +1511,7 @@ void tbFinalizeStage(tbWorld* world, float timeStep)
 		tbMoveFlaggedProxies(world, body);
 		tbBodyMoveEvent event = tbMakeMoveEvent(world, body, bodyId);
 		TB_ARRAY_PUSH(world->events.moveEvents, world->events.moveCount, world->events.moveCapacity, event);
+		beyond += tbIsBeyondBounds(body) ? 1 : 0;
 	}
+	return beyond;
 }

@@ -96,5 +96,9 @@ void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);
 bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove);
 void tbMoveFlaggedProxies(tbWorld* world, const tbBody* body);
 
-/// The finalize stage of the step: shape boxes, proxies, sleep timers, move events.
-void tbFinalizeStage(tbWorld* world, float timeStep);
+/// The finalize stage of the step: shape boxes, proxies, sleep timers, move events. Returns how
+/// many awake bodies the step carried farther than TB_MAX_POSITION from the origin.
+int tbFinalizeStage(tbWorld* world, float timeStep);
+/// Take every awake body beyond TB_MAX_POSITION out of the simulation (as tbBody_Disable does) and
+/// report each: the step's last stage when the finalize stage found one.
+void tbDisableBodiesBeyondBounds(tbWorld* world);

@@ -170,8 +170,7 @@ tbChainId tbCreateChain(tbBodyId bodyId, const tbChainDef* def)
 	}
 	int index = tbAllocChainSlot(world);
 	tbChain* chain = world->chains + index;
-	chain->generation = (uint16_t)(chain->generation + 1);
-	chain->inUse = true;
+	chain->inUse = true; // generation: advanced when the last chain here was destroyed
 	chain->bodyId = bodyId.index1 - 1;
 	chain->segmentCount = def->isLoop ? def->count : def->count - 3;
 	chain->materialCount = def->materialCount;
@@ -214,8 +213,7 @@ static void tbRemoveChain(tbWorld* world, int index, bool removeShapes)
 	chain->shapeIds = NULL;
 	chain->materials = NULL;
 	chain->inUse = false;
-	chain->generation += 1;
-	tbIdPool_Free(&world->chainPool, index);
+	tbIdPool_Release(&world->chainPool, index, &chain->generation, 0);
 }
 
 void tbDestroyChain(tbChainId chainId)

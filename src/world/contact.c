@@ -652,10 +652,20 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 	return result;
 }
 
+/// The deepest two shapes can overlap (m): the diagonal of the smaller of their tight boxes.
+static float tbDeepestOverlap(const tbShape* a, const tbShape* b)
+{
+	tbVec2 da = tbSub(a->aabb.upperBound, a->aabb.lowerBound);
+	tbVec2 db = tbSub(b->aabb.upperBound, b->aabb.lowerBound);
+	return tbMinFloat(tbLength(da), tbLength(db));
+}
+
 /// The user's pre-solve callback on a touching contact (tbPreSolveFcn). What it may do is bounded:
-/// no more points than it was given, a finite unit normal and finite separations; anything else
-/// is reported and the manifold restored. A manifold it changed is not recycled next step (the
-/// recycled one would carry its change along instead of asking again).
+/// no more points than it was given, a finite unit normal, finite anchors, and separations no
+/// deeper than the two shapes could overlap (a deeper one would be an overlap the solver pushes
+/// out of at speeds no contact can ask for); anything else is reported and the manifold restored.
+/// A manifold it changed is not recycled next step (the recycled one would carry its change along
+/// instead of asking again).
 static void tbCallPreSolve(tbWorld* world, tbContact* contact)
 {
 	tbManifold before = contact->manifold;
@@ -664,15 +674,18 @@ static void tbCallPreSolve(tbWorld* world, tbContact* contact)
 					   world->preSolveContext);
 	bool valid = tbIsValidVec2(m->normal) && tbAbsFloat(tbLength(m->normal) - 1.0f) < 1e-3f;
 	m->pointCount = tbMinInt(tbMaxInt(m->pointCount, 0), before.pointCount);
+	float deepest = -tbDeepestOverlap(world->shapes + contact->shapeIdA, world->shapes + contact->shapeIdB);
 	for (int i = 0; i < m->pointCount; ++i)
 	{
-		valid = valid && tbIsValidFloat(m->points[i].separation) && tbIsValidVec2(m->points[i].anchorA) &&
-				tbIsValidVec2(m->points[i].anchorB);
+		valid = valid && tbIsValidFloat(m->points[i].separation) && m->points[i].separation >= deepest &&
+				tbIsValidVec2(m->points[i].anchorA) && tbIsValidVec2(m->points[i].anchorB);
 	}
 	if (valid == false)
 	{
-		tbReportError("tbPreSolveFcn", "the callback left a non-finite or non-unit normal, separation or anchor; "
-									   "the manifold is restored (set pointCount to 0 to disable the contact)");
+		tbReportError("tbPreSolveFcn", "the callback left a non-finite or non-unit normal, a non-finite anchor, or a "
+									   "separation below %g m (deeper than the two shapes can overlap); the manifold "
+									   "is restored (set pointCount to 0 to disable the contact)",
+					  (double)deepest);
 		*m = before;
 		return;
 	}

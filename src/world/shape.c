@@ -472,7 +472,7 @@ static int tbAllocShapeSlot(tbWorld* world)
 	{
 		TB_ARRAY_RESERVE(world->shapes, world->shapeCapacity, id + 1);
 		memset(world->shapes + id, 0, sizeof(tbShape));
-		world->shapes[id].generation = world->shapeGenerationBase; // the creation adds one
+		world->shapes[id].generation = world->shapeGenerationBase;
 	}
 	return id;
 }
@@ -495,7 +495,7 @@ int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeo
 	int id = tbAllocShapeSlot(world);
 	tbBody* body = world->bodies + bodyIndex;
 	tbShape* shape = world->shapes + id;
-	uint16_t generation = (uint16_t)(shape->generation + 1);
+	uint16_t generation = shape->generation; // advanced when the last shape here was destroyed
 	memset(shape, 0, sizeof(tbShape));
 	shape->generation = generation;
 	shape->inUse = true;
@@ -648,8 +648,7 @@ void tbRemoveShape(tbWorld* world, int id, bool updateBodyMass)
 	tbDestroyShapeProxy(world, shape);
 	tbUnlinkShape(world, body, id);
 	shape->inUse = false;
-	shape->generation += 1;
-	tbIdPool_Free(&world->shapePool, id);
+	tbIdPool_Release(&world->shapePool, id, &shape->generation, world->shapeGenerationBase);
 	if (updateBodyMass)
 	{
 		tbUpdateBodyMass(world, body);

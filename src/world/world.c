@@ -370,8 +370,9 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	world->worldId = (uint16_t)slot;
 	world->generation = (uint16_t)(s_worldGenerations[slot] + 1);
 	s_worldGenerations[slot] = world->generation;
-	world->bodyGenerationBase = s_bodyGenerations[slot];
-	world->shapeGenerationBase = s_shapeGenerations[slot];
+	// One past every generation the slot's earlier worlds handed out.
+	world->bodyGenerationBase = (uint16_t)(s_bodyGenerations[slot] + 1);
+	world->shapeGenerationBase = (uint16_t)(s_shapeGenerations[slot] + 1);
 	world->userData = def->userData;
 	tbHashSet_Create(&world->pairSet, 64);
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
@@ -571,7 +572,7 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	world->profile.continuous = tbGetMilliseconds(t);
 
 	t = tbGetTicks();
-	tbFinalizeStage(world, timeStep);
+	int beyondBounds = tbFinalizeStage(world, timeStep);
 	world->profile.finalize = tbGetMilliseconds(t);
 
 	t = tbGetTicks();
@@ -581,6 +582,11 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	t = tbGetTicks();
 	tbSleepStage(world, timeStep);
 	world->profile.sleep = tbGetMilliseconds(t);
+
+	if (beyondBounds > 0)
+	{
+		tbDisableBodiesBeyondBounds(world);
+	}
 
 	tbUpdateCounters(world);
 	tbUpdateAutoBroadPhase(world);
