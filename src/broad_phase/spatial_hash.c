@@ -19,7 +19,8 @@
 //
 // Cell size: twice the median of the movable proxies' largest box side (their fat boxes), chosen
 // when the first proxies are hashed and re-chosen every TB_HASH_RESIZE_INTERVAL updates when the
-// median has drifted by more than 2× (a new size rebuilds the static grid).
+// median has drifted by more than a factor of two (a new size rebuilds the static grid, so it is
+// not re-chosen for small drifts).
 
 #include "spatial_hash.h"
 

@@ -553,8 +553,8 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 /// that were swept by continuous collision last step always get a new manifold.
 /// Rejected: keeping the empty manifold of a polygon pair while it moves less than its
 /// separating-axis gap less the margin (exact, as Box2D v3 keeps non-touching pairs, which it does
-/// inexactly): no gain measured over whole runs of tumbler, spinner, junkyard and smash (1.02× the
-/// time), most pairs apart being ruled out by their tight boxes before any narrow phase.
+/// inexactly): no gain over whole runs of the benchmark piles, since most pairs apart are ruled out
+/// by their tight boxes before any narrow phase, and the test itself costs about what it saves.
 // cos(TB_RECYCLE_ANGLE) = cos(2°), rounded to float.
 #define TB_RECYCLE_COS_ANGLE 0.99939083f
 
@@ -573,7 +573,7 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 	tbTransform relative = tbInvMulWorldTransforms(xfA, xfB);
 	float tolerance = tbMinFloat(recycleDistance, base->margin - margin + TB_SPECULATIVE_DISTANCE);
 	// |turn| < TB_RECYCLE_ANGLE ⟺ cos(turn) > cos(TB_RECYCLE_ANGLE): the cosine is the dot product of
-	// the two unit rotations, with no atan2 (which cost 4 % of a pyramid step here).
+	// the two unit rotations: no atan2 for every touching contact in every step.
 	float cosTurn = base->relative.q.c * relative.q.c + base->relative.q.s * relative.q.s;
 	// Written so that NaN fails: a non-finite pose always gets a new manifold.
 	if (!(cosTurn > TB_RECYCLE_COS_ANGLE && tbMovedLessThan(base->relative, relative, bodyA, bodyB, tolerance)))
@@ -813,8 +813,8 @@ static void tbGatherAwakeContacts(tbWorld* world)
 			awake[world->awakeBodies[i]] = 1;
 		}
 		// Locals: through world-> each append reloaded and stored the count (the int stores may
-		// alias the world's fields), a store-to-load chain that made this walk a third of the
-		// collide stage's serial time on many_pyramids.
+		// alias the world's fields), a store-to-load chain through every contact, in a walk that
+		// runs on one thread before the narrow phase's workers start.
 		const tbBodyPair* bodies = world->contactBodies;
 		int* stepContacts = world->stepContacts;
 		int count = 0;
@@ -901,10 +901,10 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 	{
 		const tbContact* ahead = world->contacts + ids[i + TB_PREFETCH_AHEAD];
 		// A contact recycled last step most often is again, and reads its shapes' first line only
-		// (box, body, proxy); any other reads their geometry too, and nothing after it (the whole
-		// 280-byte shape: spinner's narrow phase 4 % slower). Prefetching the geometry for every
-		// contact: compounds 8 % faster (touching pairs that moved too far to be recycled), the
-		// pyramids 3–4 % slower (every pair recycled).
+		// (box, body, proxy); any other reads their geometry too, and nothing after it (prefetching
+		// the whole 280-byte shape fetches lines nobody reads). Prefetching the geometry for every
+		// contact would help scenes whose touching pairs move too far to be recycled and cost
+		// scenes that recycle every pair (a pyramid), so the flags choose per contact.
 		const uint32_t recycling = tb_contactRecyclable | tb_contactRecycled;
 		int shapeBytes = (ahead->flags & recycling) == recycling ? 32 : (int)(offsetof(tbShape, geometry) + sizeof(tbGeometry));
 		tbPrefetch(world->shapes + ahead->shapeIdA, shapeBytes);
@@ -1095,7 +1095,7 @@ void tbReportHitEvents(tbWorld* world)
 {
 	if (world->hitContactCount == 0)
 	{
-		return; // no contact wants hit events: nothing to walk (1 % of large_pyramid's step went here)
+		return; // no contact wants hit events (the common case): no walk over every touching contact
 	}
 	float threshold = world->def.hitEventThreshold;
 	// Contact-id order: the walk streams through contact memory (the solve order would not).

@@ -9,9 +9,8 @@
 // every body, and every kinematic body it touches, has rested for TB_TIME_TO_SLEEP. Sleeping bodies
 // leave the awake set, so they cost nothing in any stage. The islands are found again each step,
 // from dense arrays, when some body has rested (persistent islands as in Box2D v3 would avoid
-// even that, but need island splitting). Junkyard, where rested and moving bodies mix in one pile:
-// 0.20 ms a step, against 0.67 ms for the depth-first search from each rested body it replaced
-// (7,000 contact-list links a step, a cache miss each) and 0.18 ms for Box2D v3.
+// even that, but need island splitting); the union–find below says why it replaced a search,
+// and docs/methods.md ("Sleeping") compares the costs.
 #include "world.h"
 
 #include "core/arena.h"
@@ -24,23 +23,21 @@
 
 // Solve order of the contacts. Gauss–Seidel is order dependent: the contacts gathered body by
 // body (bottom row first, left to right in a pyramid) form a sweep across the structure, and a
-// fixed sweep direction biases the result sideways. Measured on the 5,050-box pyramid (60 Hz, 4
-// sub-steps, soft step): gathered order drifts the top box 0.98 m sideways in 5 s (the reversed
-// order drifts −0.88 m); sorting by contact id or by body pair −0.37 m; alternating the sweep
-// direction per sub-step 0.6–0.7 m; greedy graph colouring 0.97 m; shuffling blocks of 4–16
-// neighbouring contacts 0.3–0.6 m. Scattering single contacts removes the bias: drift
-// |0.01–0.05| m over 10 s for different hash seeds, sag 0.84 m instead of 0.91 m, kinetic
-// energy 1 J instead of 27 J. So the contacts are bucketed by a hash of their id (stable while the
-// contact lives, independent of memory addresses, so the order is deterministic) into
-// TB_SOLVE_ORDER_BUCKETS buckets with a stable counting sort; within a bucket the gathered order
-// (contact-id order: contacts made in one step get consecutive ids in shape-pair order, which keeps
-// some locality) is kept (cost: about +10% solve time on the large pyramid, from the scattered
-// body accesses). 4 buckets leave 0.11 m of drift, 8 0.05 m, 16 0.04 m.
+// fixed sweep direction biases the result sideways: in a tall pyramid the top drifts to one side
+// (the reversed order drifts as far to the other). Orders with structure of their own keep a
+// bias: sorting by contact id or by body pair, alternating the sweep direction per sub-step, a
+// greedy colouring in gathered order, shuffling small blocks of neighbouring contacts. Scattering
+// single contacts removes it, and the pile also sags less and holds less kinetic energy. So the
+// contacts are bucketed by a hash of their id (stable while the contact lives, independent of
+// memory addresses, so the order is deterministic) into TB_SOLVE_ORDER_BUCKETS buckets with a
+// stable counting sort; within a bucket the gathered order (contact-id order: contacts made in
+// one step get consecutive ids in shape-pair order, which keeps some locality) is kept. The cost
+// is locality: the solve reaches its bodies in a scattered order. Fewer buckets keep more of the
+// gathered sweep and leave more drift; 16 leave next to none.
 // The wide solver (the default, constraint_graph.c) then solves colour by colour, the colours
-// assigned greedily in this order, so each colour is a scattered set too. Measured 2026-11-24 on
-// the same pyramid, sleep off: top box drift after 10 s and 20 s, scalar 0.09 and 0.11 m, wide
-// 0.23 and 0.24 m (sag 0.33 m in both); the 210-box pyramid of the stability table drifts 0.025 m
-// with either.
+// assigned greedily in this order, so each colour is a scattered set too; a large pyramid drifts
+// somewhat more under the wide order than the scalar one, the pyramid of the stability table
+// no more (docs/methods.md, "Wide or scalar contact solver").
 #define TB_SOLVE_ORDER_BUCKETS 16
 
 static inline int tbSolveOrderBucket(int contactId)
@@ -257,7 +254,7 @@ void tbIslandStage(tbWorld* world)
 // nothing; a kinematic body links nothing either (it does not carry motion from one island to
 // another) but belongs to every island it touches. The cost is a pass over dense arrays: the search
 // it replaces followed contact lists, a cache miss per link, and in a pile where rested and moving
-// bodies mix (junkyard) it walked 7,000 links a step to learn that nothing could sleep.
+// bodies mix (junkyard) it walked thousands of links a step to learn that nothing could sleep.
 
 enum
 {

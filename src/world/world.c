@@ -216,13 +216,14 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 	return method == tb_broadPhaseAuto ? tb_broadPhaseTree : method;
 }
 
-// The automatic broad phase, from the scene's statistics over a window of steps. Measured with
-// tumble-bench (catalogue scenes, every method) and tumble-bench-broadphase (boxes drifting): the
-// spatial hash is the fastest when many proxies move each step and the boxes are of similar sizes
-// (junkyard 1.5×, rain 1.36×, the ball pile 1.14×, the tumbler 1.1× faster than the tree; 2× at
-// 16k–64k uniform boxes), and the slowest when sizes spread over 100× (3× slower at 64k: large
-// boxes cover many cells). The tree wins when few proxies move (a settled pile: it does nothing for
-// unmoved proxies while the hash re-hashes every movable proxy; many_pyramids 4 % faster).
+// The automatic broad phase, from the scene's statistics over a window of steps, chosen from
+// tumble-bench (catalogue scenes, every method) and tumble-bench-broadphase (boxes drifting;
+// docs/methods.md has the figures): the spatial hash is the fastest when many proxies move each
+// step and the boxes are of similar sizes (a box then covers few cells and meets only its near
+// neighbours, where the tree pays a re-insertion or a rebuild per moved proxy), and the slowest
+// when sizes spread widely (large boxes cover many cells, small ones crowd large cells). The tree
+// wins when few proxies move (a settled pile: it does nothing for unmoved proxies while the hash
+// re-hashes every movable proxy).
 // Sort-and-sweep wins only for few, sparse, similar-size boxes, where all three cost little. So:
 // the hash when more than a quarter of the movable proxies move per step and the 90th percentile
 // of their sizes is within TB_AUTO_HASH_SPREAD of the median; else sort-and-sweep when few movable
