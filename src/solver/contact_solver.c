@@ -188,7 +188,8 @@ static void tbPrepareConstraintNGS(const tbStepContext* context, const tbManifol
 /// surface later in the step, after gravity has sped the approach up: with relative normal
 /// acceleration aₙ < 0 (towards each other), energy gives v_impact² = v² + 2·|aₙ|·s, so
 /// v_impact = −sqrt(v² − 2·aₙ·s). Without this the rebound of a body whose contact appears one
-/// step before impact is up to g·dt too slow (4 % low apex for a ball dropped 5 m at 60 Hz).
+/// step before impact is up to g·dt too slow, and its apex, which goes as v², up to 2g·dt/v of it
+/// too low.
 // The relative normal acceleration gravity gives the pair (aₙ above).
 static float tbGravityApproach(const tbStepContext* context, int indexA, float invMassA, int indexB, float invMassB,
 							   tbVec2 normal)
@@ -244,8 +245,9 @@ static bool tbIsDeepOverlap(const tbContactConstraint* c, float deepOverlap)
 }
 
 // Soft step's settling (solver_soft.c): a dynamic pair touching for `age` steps that does not
-// overlap deeply stiffens from contactHertz to restHertz over the second settleSteps of touching.
-// Static pairs start at the resting stiffness, deep ones stay at contactHertz. `softness` is the
+// overlap deeply stiffens from contactHertz to settledHertz over the second settleSteps of
+// touching. Static pairs start at the resting stiffness (restHertz), deep ones stay at
+// contactHertz. `softness` is the
 // pair's softness before settling; the caller has ruled out static and deep pairs.
 static inline tbSoftness tbSettledSoftness(const tbStepContext* context, tbSoftness softness, int age)
 {
@@ -619,8 +621,8 @@ static inline tbFloatW tbInverseMassAlongW(tbFloatW mass[2][4], tbFloatW rAX, tb
 /// lanes whose contact has no point j get zeros (their numbers are whatever the manifold holds there,
 /// masked out). `an`: tbGravityApproach per lane; `velocity`: each side's (vx, vy, ω) rows. With
 /// central friction the points' own friction rows are left to tbPrepareCentralFrictionW, which
-/// writes both points' (the tangent masses were computed here and overwritten there: the batch
-/// 6 % faster without them, tumble-bench-prepare).
+/// writes both points' (the tangent masses were computed here and overwritten there: work thrown
+/// away on every contact, which tumble-bench-prepare showed).
 static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput* in, tbFloatW present,
 							tbFloatW mass[2][4], tbFloatW velocity[2][4], tbFloatW nX, tbFloatW nY,
 							tbFloatW an, tbWidePointOutput* out)
@@ -935,9 +937,9 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 			// what is read here: up to the settle clock after the manifold
 			tbPrefetch(world->contacts + contactIds[i + TB_PREFETCH_AHEAD], (int)offsetof(tbContact, base));
 			// and the block of the lane ahead, whichever lane it is: each lane writes a float in every
-			// line of its block, and a block's four lanes are written some dozens of contacts apart
-			// (one per colour in turn), by which time its lines may have left L1 (prefetching only
-			// for the first lane: prepare 9 % slower on large_pyramid, 6 % on spinner)
+			// line of its block, and a block's TB_SIMD_WIDTH lanes are written some dozens of
+			// contacts apart (one per colour in turn), by which time its lines may have left L1
+			// (prefetching only for the first lane left the later lanes' writes missing the cache)
 			int ahead = wideLocation != NULL ? context->locationById[i + TB_PREFETCH_AHEAD] : -1;
 			if (ahead >= 0)
 			{
@@ -1419,9 +1421,10 @@ void tbApplyRestitution(tbStepContext* context)
 // contact-id order. A constraint solved in a wide lane is read from its lane (its scalar copy
 // holds the impulses of before the solve); the others from the scalar constraint.
 // The lines holding the impulses of the lane of contact i (contact-id order): the blocks were last
-// touched colour by colour in the final pass and have mostly left the cache (many_pyramids: 8 MB
-// of blocks); this walk visits them in contact-id order, one stream per colour, with a 608-byte
-// stride the hardware prefetcher does not follow.
+// touched colour by colour in the final pass and have mostly left the cache (a large scene's
+// blocks far exceed it); this walk visits them in contact-id order, one stream per colour, with
+// a stride of a whole block (sizeof(tbWideContactConstraint)) the hardware prefetcher does not
+// follow.
 static inline void tbPrefetchLaneImpulses(const tbStepContext* context, int i)
 {
 	if (context->locationById == NULL || context->locationById[i] < 0)
