@@ -1,5 +1,5 @@
 // Internal: the sequential-impulse contact solver shared by the position methods, scalar
-// (contact_solver.c) and four contacts of one colour at a time (contact_solver_wide.c).
+// (contact_solver.c) and TB_SIMD_WIDTH contacts of one colour at a time (contact_solver_wide.c).
 #pragma once
 
 #include "solver_types.h"
