@@ -47,6 +47,7 @@
 #include "contact_solver.h"
 #include "joints/joint.h"
 #include "core/task.h"
+#include "core/union_find.h"
 
 #include <string.h>
 
@@ -550,16 +551,6 @@ void tbReleaseColors(tbStepContext* context)
 #define TB_JOINT_SMALL_GROUP 64
 #define TB_JOINTS_PER_MECHANISM_UNIT 16
 
-static int tbFindRoot(int* parent, int i)
-{
-	while (parent[i] != i)
-	{
-		parent[i] = parent[parent[i]]; // path halving
-		i = parent[i];
-	}
-	return i;
-}
-
 /// Mechanism of each solver joint (a root solver body), and the joints per root.
 static void tbFindMechanisms(const tbStepContext* context, int* parent, int* jointRoot, int* size)
 {
@@ -575,8 +566,7 @@ static void tbFindMechanisms(const tbStepContext* context, int* parent, int* joi
 		const tbJoint* joint = world->joints + world->solverJoints[i];
 		if (tbJointMovesA(joint) && tbJointMovesB(joint))
 		{
-			int a = tbFindRoot(parent, joint->indexA), b = tbFindRoot(parent, joint->indexB);
-			parent[a < b ? b : a] = a < b ? a : b;
+			tbLinkRoots(parent, joint->indexA, joint->indexB);
 		}
 	}
 	for (int i = 0; i < n; ++i)

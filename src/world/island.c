@@ -17,6 +17,7 @@
 #include "core/array.h"
 #include "joints/joint.h"
 #include "core/sort.h"
+#include "core/union_find.h"
 
 #include <stdint.h>
 #include <string.h>
@@ -246,8 +247,9 @@ void tbIslandStage(tbWorld* world)
 	tbOrderSolverContacts(world);
 }
 
-// The sleep stage's islands, found by union–find (Tarjan 1975, path halving) over the awake
-// indices instead of a depth-first search from each rested body. The links are the ones a search
+// The sleep stage's islands, found by union–find (core/union_find.h: Tarjan 1975, path halving;
+// each island's root is its smallest awake index) over the awake indices instead of a
+// depth-first search from each rested body. The links are the ones a search
 // would follow: this step's solver contacts whose both bodies are dynamic (world->solverContacts,
 // gathered by the island stage from the same touching flags, and read through the narrow phase's
 // dense keys where they hold) and the joints between awake dynamic bodies. Static bodies link
@@ -263,32 +265,6 @@ enum
 	tb_sleepKeepAwake = 4,	   ///< on a root: some member, or some kinematic body it touches, has not rested
 	tb_sleepTouchesAwake = 8,  ///< on a kinematic body: touches an island that stays awake
 };
-
-static int tbFindIsland(int* parent, int i)
-{
-	while (parent[i] != i)
-	{
-		parent[i] = parent[parent[i]];
-		i = parent[i];
-	}
-	return i;
-}
-
-// The smaller root stays the root: each island's root is its smallest awake index, whatever the
-// order of the links.
-static void tbLinkIslands(int* parent, int a, int b)
-{
-	a = tbFindIsland(parent, a);
-	b = tbFindIsland(parent, b);
-	if (a < b)
-	{
-		parent[b] = a;
-	}
-	else if (b < a)
-	{
-		parent[a] = b;
-	}
-}
 
 // A dynamic body touching (or joined to) a kinematic one, by awake index.
 typedef struct tbKinematicTouch
@@ -315,7 +291,7 @@ static void tbAddSleepLink(tbSleepLinks* links, int a, bool dynamicA, int b, boo
 	}
 	if (dynamicA && dynamicB)
 	{
-		tbLinkIslands(links->parent, a, b);
+		tbLinkRoots(links->parent, a, b);
 	}
 	else if (dynamicA != dynamicB)
 	{
@@ -404,7 +380,7 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 	{
 		if ((state[i] & (tb_sleepDynamic | tb_sleepRested)) == tb_sleepDynamic)
 		{
-			state[tbFindIsland(links->parent, i)] |= tb_sleepKeepAwake;
+			state[tbFindRoot(links->parent, i)] |= tb_sleepKeepAwake;
 		}
 	}
 	for (int t = 0; t < links->touchCount; ++t)
@@ -412,13 +388,13 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 		const tbKinematicTouch* touch = links->touches + t;
 		if ((state[touch->kinematicIndex] & tb_sleepRested) == 0)
 		{
-			state[tbFindIsland(links->parent, touch->dynamicIndex)] |= tb_sleepKeepAwake;
+			state[tbFindRoot(links->parent, touch->dynamicIndex)] |= tb_sleepKeepAwake;
 		}
 	}
 	for (int t = 0; t < links->touchCount; ++t)
 	{
 		const tbKinematicTouch* touch = links->touches + t;
-		if ((state[tbFindIsland(links->parent, touch->dynamicIndex)] & tb_sleepKeepAwake) != 0)
+		if ((state[tbFindRoot(links->parent, touch->dynamicIndex)] & tb_sleepKeepAwake) != 0)
 		{
 			state[touch->kinematicIndex] |= tb_sleepTouchesAwake;
 		}
@@ -427,7 +403,7 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 	for (int i = 0; i < n; ++i)
 	{
 		bool sleeps = (state[i] & tb_sleepDynamic) != 0
-						  ? (state[tbFindIsland(links->parent, i)] & tb_sleepKeepAwake) == 0
+						  ? (state[tbFindRoot(links->parent, i)] & tb_sleepKeepAwake) == 0
 						  : (state[i] & (tb_sleepRested | tb_sleepTouchesAwake)) == tb_sleepRested;
 		if (sleeps)
 		{
@@ -448,7 +424,7 @@ static int tbCountRestedIslands(const tbWorld* world, const tbSleepLinks* links,
 		{
 			continue;
 		}
-		int root = (state[i] & tb_sleepDynamic) != 0 ? tbFindIsland(links->parent, i) : i;
+		int root = (state[i] & tb_sleepDynamic) != 0 ? tbFindRoot(links->parent, i) : i;
 		islands += counted[root] == 0 ? 1 : 0;
 		counted[root] = 1;
 	}
