@@ -1031,16 +1031,6 @@ static inline bool tbConstraintBounces(const tbStepContext* context, int i)
 	return context->constraints[i].restitution != 0.0f;
 }
 
-// Apply impulse P at anchors rA, rB: A receives −P, B receives +P.
-static inline void tbApplyImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbContactConstraint* c, tbVec2 rA,
-								  tbVec2 rB, tbVec2 P)
-{
-	sA->linearVelocity = tbMulSub(sA->linearVelocity, c->invMassA, P);
-	sA->angularVelocity -= c->invIA * tbCross(rA, P);
-	sB->linearVelocity = tbMulAdd(sB->linearVelocity, c->invMassB, P);
-	sB->angularVelocity += c->invIB * tbCross(rB, P);
-}
-
 static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstraint* c, bool centralFriction)
 {
 	tbSolverBody* sA = bodies + c->indexA;
@@ -1053,12 +1043,12 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 		for (int j = 0; j < c->pointCount; ++j)
 		{
 			const tbContactConstraintPoint* cp = c->points + j;
-			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(cp->normalImpulse, normal));
+			tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(cp->normalImpulse, normal));
 		}
 		if (c->pointCount > 0)
 		{
-			tbApplyImpulse(sA, sB, c, c->frictionAnchorA, c->frictionAnchorB,
-						   tbMulSV(c->points[0].tangentImpulse, tangent));
+			tbApplyContactImpulse(sA, sB, c, c->frictionAnchorA, c->frictionAnchorB,
+								  tbMulSV(c->points[0].tangentImpulse, tangent));
 		}
 	}
 	else
@@ -1067,7 +1057,7 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 		{
 			const tbContactConstraintPoint* cp = c->points + j;
 			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
-			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
+			tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
 		}
 	}
 	sA->angularVelocity -= c->invIA * c->rollingImpulse;
@@ -1344,7 +1334,7 @@ void tbPropagateImpacts(tbStepContext* context)
 					continue;
 				}
 				float impulse = -cp->normalMass * (vn - tbReboundSpeed(c->restitution, vn, context->maxLinearSpeed));
-				tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(impulse, c->normal));
+				tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(impulse, c->normal));
 				approaching = true;
 			}
 		}
@@ -1412,7 +1402,7 @@ void tbApplyRestitution(tbStepContext* context)
 			impulse = newImpulse - cp->normalImpulse;
 			cp->normalImpulse = newImpulse;
 			cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
-			tbApplyImpulse(sA, sB, c, rA, rB, tbMulSV(impulse, normal));
+			tbApplyContactImpulse(sA, sB, c, rA, rB, tbMulSV(impulse, normal));
 		}
 	}
 }

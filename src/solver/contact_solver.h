@@ -13,6 +13,18 @@ static inline float tbReboundSpeed(float restitution, float approach, float maxL
 	return tbMinFloat(-restitution * approach, tbMaxFloat(-approach, 2.0f * maxLinearSpeed));
 }
 
+/// A contact's impulse P at its anchors rA, rB (from the centres of mass): B receives +P and A −P,
+/// each through its inverse mass and inverse inertia (v += P/m, ω += (r × P)/I). The scalar solve,
+/// restitution and NGS's undoing of warm starts all apply impulses so.
+static inline void tbApplyContactImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbContactConstraint* c, tbVec2 rA,
+										 tbVec2 rB, tbVec2 P)
+{
+	sA->linearVelocity = tbMulSub(sA->linearVelocity, c->invMassA, P);
+	sA->angularVelocity -= c->invIA * tbCross(rA, P);
+	sB->linearVelocity = tbMulAdd(sB->linearVelocity, c->invMassB, P);
+	sB->angularVelocity += c->invIB * tbCross(rB, P);
+}
+
 /// Central friction (tbWorldDef::enableCentralFriction, contact_solver.c): the share of point 0 in
 /// the centre of pressure of a two-point manifold whose points carry normal impulses n0 and n1; a
 /// half when neither carries any. Point 1's share is 1 − this.

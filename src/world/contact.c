@@ -1203,7 +1203,8 @@ static int tbCollectContacts(const tbWorld* world, const tbBody* body, int shape
 	return count;
 }
 
-static bool tbCheckCapacity(const char* f, const void* array, int capacity)
+// An output array the caller passes with its capacity: capacity ≥ 0, and an array when it is > 0.
+static bool tbCheckOutputArray(const char* f, const void* array, int capacity)
 {
 	if (capacity < 0 || (capacity > 0 && array == NULL))
 	{
@@ -1225,7 +1226,7 @@ int tbBody_GetContactData(tbBodyId bodyId, tbContactData* contactData, int capac
 	const char* f = "tbBody_GetContactData";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, false);
-	if (body == NULL || tbCheckCapacity(f, contactData, capacity) == false)
+	if (body == NULL || tbCheckOutputArray(f, contactData, capacity) == false)
 	{
 		return 0;
 	}
@@ -1244,7 +1245,7 @@ int tbShape_GetContactData(tbShapeId shapeId, tbContactData* contactData, int ca
 	const char* f = "tbShape_GetContactData";
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
-	if (shape == NULL || tbCheckCapacity(f, contactData, capacity) == false || shape->isSensor)
+	if (shape == NULL || tbCheckOutputArray(f, contactData, capacity) == false || shape->isSensor)
 	{
 		return 0;
 	}
@@ -1264,7 +1265,7 @@ int tbShape_GetSensorData(tbShapeId shapeId, tbShapeId* visitorIds, int capacity
 	const char* f = "tbShape_GetSensorData";
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
-	if (shape == NULL || tbCheckCapacity(f, visitorIds, capacity) == false || shape->isSensor == false)
+	if (shape == NULL || tbCheckOutputArray(f, visitorIds, capacity) == false || shape->isSensor == false)
 	{
 		return 0;
 	}

@@ -146,7 +146,7 @@ static bool tbCheckWorkers(const tbWorldDef* def, const char* f)
 }
 
 /// Capacities are counts: ≥ 0, and small enough that the reserved arrays fit an int of bytes.
-static bool tbCheckCapacity(const char* f, const tbCapacity* c)
+static bool tbCheckWorldCapacity(const char* f, const tbCapacity* c)
 {
 	const int counts[5] = {c->staticShapeCount, c->dynamicShapeCount, c->staticBodyCount, c->dynamicBodyCount,
 						   c->contactCount};
@@ -206,7 +206,7 @@ static bool tbCheckWorldDef(const tbWorldDef* def)
 		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
 		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
 		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f) && tbCheckWorkers(def, f) &&
-		   tbCheckCapacity(f, &def->capacity);
+		   tbCheckWorldCapacity(f, &def->capacity);
 }
 
 /// Auto starts with the dynamic tree: it costs nothing for sleeping and static bodies, handles any
