@@ -26,9 +26,9 @@
 
 #include "brute_force.h"
 #include "core/core.h"
+#include "core/sort.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 /// A proxy covering more cells than this is "large" (tested directly, not hashed).
@@ -209,12 +209,6 @@ static void tbGrid_Build(tbGrid* grid, const tbSpatialHash* hash, const tbProxyT
 // --------------------------------------------------------------------------------------------
 // Cell size
 
-static int tbCompareFloats(const void* a, const void* b)
-{
-	float x = *(const float*)a, y = *(const float*)b;
-	return x < y ? -1 : (x > y ? 1 : 0);
-}
-
 /// Twice the median largest side of the movable (else all) proxies' boxes; 1 m without proxies.
 static float tbChooseCellSize(tbSpatialHash* hash, const tbProxyTable* table)
 {
@@ -242,7 +236,7 @@ static float tbChooseCellSize(tbSpatialHash* hash, const tbProxyTable* table)
 	float size = 1.0f;
 	if (n > 0)
 	{
-		qsort(sides, (size_t)n, sizeof(float), tbCompareFloats);
+		tbSortFloats(sides, n);
 		size = TB_HASH_CELL_FACTOR * sides[n / 2];
 	}
 	return size > 1e-3f && size < 1e6f ? size : 1.0f;

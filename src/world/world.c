@@ -8,9 +8,9 @@
 #include "solver/constraint_graph.h"
 
 #include "core/array.h"
+#include "core/sort.h"
 
 #include <stddef.h>
-#include <stdlib.h>
 #include <string.h>
 
 static tbWorld* s_worlds[TB_MAX_WORLDS];
@@ -238,12 +238,6 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 #define TB_AUTO_SWEEP_MAX_PROXIES 4096
 #define TB_AUTO_HASH_SPREAD 4.0f
 
-static int tbCompareSizes(const void* a, const void* b)
-{
-	float x = *(const float*)a, y = *(const float*)b;
-	return x < y ? -1 : (x > y ? 1 : 0);
-}
-
 /// 90th percentile over median of the movable proxies' largest box side (1 without proxies).
 static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
 {
@@ -262,7 +256,7 @@ static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
 			sides[n++] = tbMaxFloat(d.x, d.y);
 		}
 	}
-	qsort(sides, (size_t)n, sizeof(float), tbCompareSizes);
+	tbSortFloats(sides, n);
 	float median = sides[n / 2], high = sides[(9 * n) / 10];
 	tbFree(sides, movable * (int)sizeof(float));
 	return median > 0.0f ? high / median : TB_AUTO_HASH_SPREAD + 1.0f;
@@ -271,11 +265,7 @@ static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
 static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 {
 	const tbBroadPhase* bp = &world->broadPhase;
-	int statics = 0;
-	for (int key = 0; key < bp->table.capacity; ++key)
-	{
-		statics += bp->table.proxies[key].isFree == false && bp->table.proxies[key].type == tb_proxyStatic ? 1 : 0;
-	}
+	int statics = world->staticProxyCount; // kept by tbCreateShapeProxy and tbDestroyShapeProxy
 	int movable = bp->table.count - statics;
 	float window = (float)world->autoWindowSteps;
 	float movedFraction = movable > 0 ? (float)world->autoMovedProxies / (window * (float)movable) : 0.0f;
