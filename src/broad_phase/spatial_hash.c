@@ -291,11 +291,6 @@ void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash)
 	hash->staticDirty = true;
 }
 
-float tbSpatialHash_GetCellSize(const tbSpatialHash* hash)
-{
-	return hash->cellSize;
-}
-
 // --------------------------------------------------------------------------------------------
 // Pairs
 

@@ -1006,11 +1006,6 @@ void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* 
 	}
 }
 
-bool tbIsRoutineOrder(tbShapeType typeA, tbShapeType typeB)
-{
-	return tbDispatchRank(typeA) >= tbDispatchRank(typeB);
-}
-
 tbManifold tbSwapManifoldRoles(tbManifold m)
 {
 	m.normal = tbNeg(m.normal);

@@ -47,8 +47,6 @@
 #include <math.h>
 #include <string.h>
 
-#define TB_TREE_MAX_DIM 3 ///< a body's three velocity unknowns, or a joint's rows (at most 3)
-
 /// The factorization and solve run in double precision. Eliminating a heavy body into a light one
 /// subtracts nearly equal terms: for a 0.1 kg capsule pinned 60 m from the centre of an 8,171 kg
 /// disc (mass ratio 8e4, inertia ratio 5e9) the joint's impulse came out of single precision 29
