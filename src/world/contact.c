@@ -605,9 +605,9 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 /// is a face normal, so their manifolds can be carried along. Circles and capsules cannot: their
 /// contact point slides over the round surface as the body turns and their normal follows the line
 /// between centres, not either body. Carrying them pumped energy into a jam of deeply overlapping
-/// circles (the stability table's confined 625: the centre line turned up to 1.5 degrees away from
-/// the kept normal, and the jam never came to rest: kinetic energy 42 J after 10 s, 6e-8 J when
-/// recomputed). Their closed forms are cheap anyway.
+/// circles (the stability table's confined circles: the centre line turned away from the kept
+/// normal, so every kept impulse pushed a little off the line, and the jam never came to rest; with
+/// the manifold recomputed it does). Their closed forms are cheap anyway.
 static bool tbHasMaterialFeatures(const tbShape* shape)
 {
 	return shape->geometry.type == tb_polygonShape || shape->geometry.type == tb_segmentShape;
