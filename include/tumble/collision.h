@@ -117,7 +117,7 @@ TB_API tbPolygon tbMakePolygon(const tbHull* hull, float radius);
 /// Cut a simple polygon (3 to TB_MAX_DECOMPOSE_POINTS points, either winding, no edge crossing
 /// another, no duplicate points, non-zero area) into convex pieces of at most
 /// TB_MAX_POLYGON_VERTICES vertices that cover it exactly: ear clipping, then Hertel–Mehlhorn
-/// merging (at most 4× the fewest pieces possible). Writes at most `capacity` pieces (count − 2
+/// merging (at most four times the fewest pieces possible). Writes at most `capacity` pieces (count − 2
 /// always suffices) and returns how many; 0 and an error naming the problem for bad input, or when
 /// capacity is too small. Make them shapes of one body to get a concave body.
 TB_API int tbDecomposePolygon(const tbVec2* points, int count, tbPolygon* pieces, int capacity);
@@ -574,9 +574,9 @@ typedef enum tbTreeSplit
 	/// At the plane between 16 centroid bins that minimises N·perimeter summed over both sides
 	/// (binned surface-area heuristic): the better tree for queries. The default.
 	tb_splitBinnedSah,
-	/// At the middle of the centres' extent: one pass per level, about half the build time (8,000
-	/// random boxes: 0.72 against 1.38 ms) for 3 % more node perimeter and ~5 % more query time;
-	/// for a tree rebuilt every step (the broad phase's tree of moving proxies).
+	/// At the middle of the centres' extent: one pass per level against the SAH's three, so a
+	/// faster build for slightly looser nodes and slower queries; for a tree rebuilt every step
+	/// (the broad phase's tree of moving proxies).
 	tb_splitMidpoint,
 } tbTreeSplit;
 

@@ -8,9 +8,9 @@
 
 // The length units (tbSetLengthUnitsPerMeter). Inside the library the constants read the stored
 // value itself: a load where a call would spill every float register in the loops that use them,
-// and the per-contact use (a body's speculative reach) is cached in the body. Cachegrind, 60 steps
-// of a 40-row pyramid, against the constants as literals: +2.5 % instructions with the call,
-// +0.4 % with the load, none with the reach cached; the same trajectory bit for bit at 1.
+// and the per-contact use (a body's speculative reach) is cached in the body. With both, a pile
+// runs as many instructions as with the constants written as literals (Cachegrind), and the same
+// trajectory bit for bit at 1.
 #if defined(TUMBLE_BUILDING)
 extern float tb_lengthUnitsPerMeter;
 #define TB_LENGTH_UNITS tb_lengthUnitsPerMeter
@@ -48,9 +48,10 @@ extern float tb_lengthUnitsPerMeter;
 #define TB_AABB_MARGIN (0.05f * TB_LENGTH_UNITS)
 
 /// Fat AABB margin relative to the body, 1/8 of its largest extent (0.022 m for a 0.25 m box,
-/// capped at 0.05 m for a unit box), Box2D v3's fraction: with the sweep in the box, 1/16 kept 16-18 %
-/// fewer contacts than v3 on smash and junkyard, 1/8 keeps every benchmark scene within 10 % of
-/// v3's counts at the same time per step (docs/methods.md, "Broad-phase boxes").
+/// capped at 0.05 m for a unit box), Box2D v3's fraction: with the sweep in the box, 1/16 made
+/// markedly fewer contacts than v3 where bodies fly and tumble (smash, junkyard), while 1/8 keeps
+/// every benchmark scene's contact count close to v3's at the same time per step
+/// (docs/methods.md, "Broad-phase boxes").
 #define TB_AABB_MARGIN_FRACTION 0.125f
 
 /// Manifold recycling distance, at most TB_SPECULATIVE_DISTANCE = 0.02 m: a touching contact keeps
@@ -142,7 +143,7 @@ extern float tb_lengthUnitsPerMeter;
 
 /// Smallest time step tbWorld_Step accepts, 1e-9 s. Below ~1e-38 s the sub-step's 1/h and the
 /// angular speed bound TB_MAX_ROTATION/Δt overflow float (NaN positions); the bound keeps a wide
-/// margin and is far below any useful step: in 1 ns a body at 1000 m/s moves 1 µm.
+/// margin and is far below any useful step: in 1e-9 s a body at 1000 m/s moves 1e-6 m.
 #define TB_MIN_TIME_STEP 1.0e-9f
 
 /// Largest sub-step count tbWorld_Step accepts, 64 (4 is typical, 16 the most any benchmark

@@ -122,8 +122,9 @@ typedef struct tbWorldDef
 	int relaxIterations;			///< soft: relaxing iterations per sub-step, default 1
 	int finalRelaxIterations;		///< soft: relaxing iterations added to the last sub-step, default 1
 	bool enableWarmStarting;		///< default true
-	bool enableWideSolver;			///< soft and Baumgarte: contacts graph-coloured and solved four at a
-									///< time (SIMD); false: the scalar reference in hashed order. Default true
+	bool enableWideSolver;			///< soft and Baumgarte: contacts graph-coloured and solved 4 at a time
+									///< (SIMD; 8 in an AVX2 build); false: the scalar reference in hashed
+									///< order. Default true
 	bool enableJointTrees;			///< the equality rows of joints solved exactly over each tree of joined
 									///< bodies (joint_tree.c); false: row by row (Gauss–Seidel). Default true
 	bool enableCentralFriction;		///< soft and Baumgarte: one friction row per contact, at the manifold's

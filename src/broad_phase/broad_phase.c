@@ -363,10 +363,14 @@ static bool tbPairQueryCallback(int treeProxyId, uint64_t userData, void* contex
 /// Moved movable proxies were enlarged in place (their ancestors only grew). When many moved, a
 /// partial rebuild of the movable tree above the subtrees that hold none of them is cheaper than
 /// re-inserting each (a branch-and-bound sibling search and rotations per proxy); when few moved,
-/// re-insert those. Threshold: 1/16 of the movable proxies, measured on the tumbler (2,025 boxes,
-/// ~900 moves per step: re-insertion was 36% of the step). The movable tree is split at the
-/// spatial median: against the binned SAH, junkyard 12 %, tumbler 7 %, spinner 5 %, washer 4 %
-/// faster per step (8,000 bodies, 6,700 proxies moved per step on junkyard).
+/// re-insert those. Threshold: 1/16 of the movable proxies. Re-inserting k moved leaves costs k
+/// searches down the tree and rotations up it, each O(log n) with a cache miss per level; the
+/// partial rebuild sorts about k·log n items (the moved leaves and the unmoved subtrees beside
+/// their paths) in passes over arrays, so it wins once k is a fair share of n, as in a tumbling
+/// pile, where re-insertion was the dearest part of the step (docs/performance.md). The movable
+/// tree is split at the spatial median, not by the binned SAH: one partition pass per level
+/// against the SAH's three (dynamic_tree.c), for a tree rebuilt every step, at the price of
+/// slightly looser nodes.
 static void tbRefreshMovableTree(tbBroadPhase* bp)
 {
 	int movable = bp->movableTree.proxyCount;

@@ -19,15 +19,16 @@
 //
 // Cell size: twice the median of the movable proxies' largest box side (their fat boxes), chosen
 // when the first proxies are hashed and re-chosen every TB_HASH_RESIZE_INTERVAL updates when the
-// median has drifted by more than 2× (a new size rebuilds the static grid).
+// median has drifted by more than a factor of two (a new size rebuilds the static grid, so it is
+// not re-chosen for small drifts).
 
 #include "spatial_hash.h"
 
 #include "brute_force.h"
 #include "core/core.h"
+#include "core/sort.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 /// A proxy covering more cells than this is "large" (tested directly, not hashed).
@@ -208,12 +209,6 @@ static void tbGrid_Build(tbGrid* grid, const tbSpatialHash* hash, const tbProxyT
 // --------------------------------------------------------------------------------------------
 // Cell size
 
-static int tbCompareFloats(const void* a, const void* b)
-{
-	float x = *(const float*)a, y = *(const float*)b;
-	return x < y ? -1 : (x > y ? 1 : 0);
-}
-
 /// Twice the median largest side of the movable (else all) proxies' boxes; 1 m without proxies.
 static float tbChooseCellSize(tbSpatialHash* hash, const tbProxyTable* table)
 {
@@ -241,7 +236,7 @@ static float tbChooseCellSize(tbSpatialHash* hash, const tbProxyTable* table)
 	float size = 1.0f;
 	if (n > 0)
 	{
-		qsort(sides, (size_t)n, sizeof(float), tbCompareFloats);
+		tbSortFloats(sides, n);
 		size = TB_HASH_CELL_FACTOR * sides[n / 2];
 	}
 	return size > 1e-3f && size < 1e6f ? size : 1.0f;
@@ -294,11 +289,6 @@ void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, i
 void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash)
 {
 	hash->staticDirty = true;
-}
-
-float tbSpatialHash_GetCellSize(const tbSpatialHash* hash)
-{
-	return hash->cellSize;
 }
 
 // --------------------------------------------------------------------------------------------

@@ -31,8 +31,5 @@ void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, t
 void tbSpatialHash_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
 						   tbProxyRayCastFcn* callback, void* context);
 
-/// Cell size (m) in use, for the benchmarks.
-float tbSpatialHash_GetCellSize(const tbSpatialHash* hash);
-
 /// The static grid, when current, holds every small static proxy in every cell its box covers.
 bool tbSpatialHash_Validate(const tbSpatialHash* hash, const tbProxyTable* table);

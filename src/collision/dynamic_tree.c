@@ -566,8 +566,8 @@ tbTreeStats tbDynamicTree_QueryAll(const tbDynamicTree* tree, tbAABB aabb, tbTre
 	return tbQueryTree(tree, aabb, 0u, false, callback, context);
 }
 
-/// Bounding box of the segment p1 → p1 + fraction·d.
-static tbAABB tbSegmentBox(tbVec2 p1, tbVec2 d, float fraction)
+/// Bounding box of the ray p1 → p1 + fraction·d (the part of it still to be cast).
+static tbAABB tbRayBox(tbVec2 p1, tbVec2 d, float fraction)
 {
 	tbVec2 p2 = tbMulAdd(p1, fraction, d);
 	return (tbAABB){tbMin(p1, p2), tbMax(p1, p2)};
@@ -597,7 +597,7 @@ tbTreeStats tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInpu
 	tbVec2 d = input->translation;
 	tbVec2 normal = tbLeftPerp(d); // need not be unit: the test is homogeneous in |n|
 	float maxFraction = input->maxFraction;
-	tbAABB segmentBox = tbSegmentBox(p1, d, maxFraction);
+	tbAABB segmentBox = tbRayBox(p1, d, maxFraction);
 
 	tbTreeStack stack;
 	tbTreeStackInit(&stack);
@@ -628,7 +628,7 @@ tbTreeStats tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInpu
 		if (0.0f < value && value < maxFraction)
 		{
 			maxFraction = value; // clip the ray: farther boxes can no longer be hit first
-			segmentBox = tbSegmentBox(p1, d, maxFraction);
+			segmentBox = tbRayBox(p1, d, maxFraction);
 		}
 	}
 	tbTreeStackFree(&stack);

@@ -634,7 +634,7 @@ bool tbIsValidRay(const tbRayCastInput* input)
 }
 
 // Report non-finite ray input; a zero-length ray is valid and simply hits nothing.
-static bool tbCheckRay(const char* function, const tbRayCastInput* input)
+static bool tbCheckRayInput(const char* function, const tbRayCastInput* input)
 {
 	return tbCheckVec2(function, "input->origin", input->origin) &&
 		   tbCheckVec2(function, "input->translation", input->translation) &&
@@ -696,7 +696,7 @@ static tbCastOutput tbRayCastCircleUnchecked(const tbRayCastInput* input, tbVec2
 
 tbCastOutput tbRayCastCircle(const tbCircle* shape, const tbRayCastInput* input)
 {
-	if (tbCheckRay("tbRayCastCircle", input) == false)
+	if (tbCheckRayInput("tbRayCastCircle", input) == false)
 	{
 		return tbNoHit();
 	}
@@ -740,7 +740,7 @@ static tbCastOutput tbRayCastSegmentUnchecked(const tbRayCastInput* input, tbVec
 /// normal rightPerp(point2 − point1)); a ray starting on the left passes through.
 tbCastOutput tbRayCastSegment(const tbSegment* shape, const tbRayCastInput* input, bool oneSided)
 {
-	if (tbCheckRay("tbRayCastSegment", input) == false)
+	if (tbCheckRayInput("tbRayCastSegment", input) == false)
 	{
 		return tbNoHit();
 	}
@@ -779,7 +779,7 @@ static tbCastOutput tbRayCastOffsetEdge(const tbRayCastInput* input, tbVec2 v1, 
 
 tbCastOutput tbRayCastCapsule(const tbCapsule* shape, const tbRayCastInput* input)
 {
-	if (tbCheckRay("tbRayCastCapsule", input) == false || tbPointInCapsule(shape, input->origin))
+	if (tbCheckRayInput("tbRayCastCapsule", input) == false || tbPointInCapsule(shape, input->origin))
 	{
 		return tbNoHit();
 	}
@@ -844,7 +844,7 @@ static tbCastOutput tbRayCastCorePolygon(const tbRayCastInput* input, const tbPo
 
 tbCastOutput tbRayCastPolygon(const tbPolygon* shape, const tbRayCastInput* input)
 {
-	if (tbCheckRay("tbRayCastPolygon", input) == false || shape->count < 3)
+	if (tbCheckRayInput("tbRayCastPolygon", input) == false || shape->count < 3)
 	{
 		return tbNoHit();
 	}

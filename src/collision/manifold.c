@@ -90,11 +90,11 @@
 // of one polygon on an edge of the other whichever face is the reference: an incident vertex
 // kept by the side planes is (reference edge, incident vertex), a crossing of a side plane with
 // the incident edge is (reference vertex, incident edge). So when two near-parallel faces swap
-// roles (A's face the reference one step, B's the next: a box in a sagging pyramid turns by
-// 5e-3 rad, which moves the separations by more than TB_REFERENCE_TOLERANCE), each point keeps
-// its id and its warm start. Measured on the 5,050-box pyramid (60 Hz, 4 sub-steps): ids that
-// carried the clip's roles lost the warm start of 700 of 29,000 points in every step, and
-// the pyramid spread 0.4 m at its flanks; with these ids 8.
+// roles (A's face the reference one step, B's the next: a box in a sagging pyramid turns by a
+// few milliradians, enough to move the separations by more than TB_REFERENCE_TOLERANCE), each
+// point keeps its id and its warm start. Ids that carried the clip's roles lost the warm start of
+// every point whose faces swapped, in every step, and a large pyramid spread at its flanks with
+// them (docs/methods.md).
 #define TB_FEATURE_EDGE 0x80
 #define TB_FEATURE_VERTEX 0x20
 
@@ -178,7 +178,7 @@ static bool tbIsDegenerateSegment(tbVec2 p1, tbVec2 p2)
 // Polygon moved by a rigid transform into *out (vertices and normals up to its count; the slots
 // beyond are not written). Written in place, field by field: a whole tbPolygon (144 bytes) copied
 // and then overwritten point by point made the copy's 16-byte loads wait on the 8-byte stores
-// before them (store forwarding fails), 12 % of a triangle pair's time.
+// before them (store forwarding fails), a stall on every polygon placed.
 static void tbPlacePolygon(tbPolygon* out, const tbPolygon* polygon, tbTransform xf)
 {
 	int count = polygon->count;
@@ -1004,11 +1004,6 @@ void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* 
 			*m = tb_emptyManifold;
 			return;
 	}
-}
-
-bool tbIsRoutineOrder(tbShapeType typeA, tbShapeType typeB)
-{
-	return tbDispatchRank(typeA) >= tbDispatchRank(typeB);
 }
 
 tbManifold tbSwapManifoldRoles(tbManifold m)

@@ -21,10 +21,11 @@ static inline tbManifold tbManifoldToWorld(tbManifold m, tbTransform xfA)
 /// separation is below `keep`; the manifold in A's frame (manifold_gjk.c).
 tbManifold tbPolygonsGJKFrameA(const tbPolygon* polygonA, const tbPolygon* polygonB, tbTransform xf, float keep);
 
-/// Any pair in routine order (tbIsRoutineOrder(a->type, b->type)), B placed in A's frame by
-/// xf = A⁻¹·B, keeping points whose separation is below `keep`; the manifold in A's frame, its
-/// normal from A to B (manifold.c). The narrow phase calls it with the relative transform of
-/// the two bodies, taken in the precision of world positions. Written into *m (every field).
+/// Any pair in routine order (the order the pair routines take them: manifold.c's dispatch rank of
+/// a's type at least b's), B placed in A's frame by xf = A⁻¹·B, keeping points whose separation is
+/// below `keep`; the manifold in A's frame, its normal from A to B (manifold.c). The narrow phase
+/// calls it with the relative transform of the two bodies, taken in the precision of world
+/// positions. Written into *m (every field).
 void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* b, tbTransform xf,
 						  tbNarrowPhaseMethod method, float keep);
 
@@ -35,9 +36,6 @@ void tbCollideOrderedInto(tbManifold* m, const tbGeometry* a, const tbGeometry* 
 /// (every field), which may be the contact's own manifold: nothing reads it before it is written.
 void tbCollideInWorld(tbManifold* m, const tbGeometry* a, tbWorldTransform xfA, const tbGeometry* b,
 					  tbWorldTransform xfB, tbNarrowPhaseMethod method, float keep, tbPos points[2]);
-
-/// True when the pair routines take a shape of typeA first and one of typeB second.
-bool tbIsRoutineOrder(tbShapeType typeA, tbShapeType typeB);
 
 /// The manifold of (B, A) as one of (A, B): normal reversed, feature bytes swapped so that the
 /// first names a feature of A. Points and separations do not depend on the order.

@@ -34,8 +34,8 @@
 //
 // Second-order step, fixed axis (u = n). The first-order bound counts every point of a spinning
 // body as approaching at |ω|·ρ, even a tip that the spin is carrying away; a thin box spinning
-// while it slides in can then need more than TB_TOI_MAX_ITERATIONS steps (measured: 3 launches
-// in 100 of the spinning-box test). Each core point x of a body moves as x(s) = c(s) + R(θ(s))·r
+// while it slides in can then need more than TB_TOI_MAX_ITERATIONS steps (tests/test_toi.c,
+// conservative_spinning_thin_box_never_tunnels, had such launches). Each core point x of a body moves as x(s) = c(s) + R(θ(s))·r
 // with c and θ linear in s, so x'' = −ω²·R r and Taylor's theorem with remainder gives
 //   n·x(t + Δ) ≥ n·x(t) + n·x'(t)·Δ − ½ω²|r|·Δ²     (and ≤ with + for the upper bound).
 // Hence each pair (a, b) stays above the target until the first positive root of
@@ -47,13 +47,13 @@
 // Second-order step, turning axis. Along a fixed n, a face that turns brings one of its ends
 // towards the other shape at up to |ω|·(half its length) even while the witness point on it
 // barely moves, so the fixed-axis bound itself, not only its Taylor model, reaches the target
-// well before d does, and the advancement converges linearly. Measured on a circle meeting a
-// 3.6 × 7.4 m box that turns 0.69 rad while moving 8 m (tests/test_toi.c, Box2D verification seed
-// 3001 case 3557): from the iterates at t = 0.48 to 0.613 the exact first crossing of the
-// fixed-axis bound (sampled at 1e-7) is only 36% down to 29% of the remaining time to impact, so
-// 30 iterations ended 2e-5 m short of the target (failed). A tighter model along the fixed axis
-// (support-feature reach, Taylor model re-evaluated on the witness pair) cannot step past that
-// crossing either, and the fixed Taylor step is already within about 1% of it. When GJK's
+// well before d does, and the advancement converges linearly: each step covers only a fraction
+// of the remaining time to impact, and the iteration cap is reached short of the target (a circle
+// meeting a long box that turns while it moves: tests/test_toi.c,
+// conservative_circle_meets_turning_long_box, from Box2D's verification seed 3001, case 3557). A
+// tighter model along the fixed axis (support-feature reach, Taylor model re-evaluated on the
+// witness pair) cannot step past the bound's own crossing either, and the fixed Taylor step
+// already nearly reaches that crossing. When GJK's
 // witness is a vertex against a face, the true normal is the face normal, fixed in the face's
 // body (Box2D's separation function for a face, Catto 2013, "Continuous collision", GDC; here it
 // is bounded, not solved for a root). So the axis is also made to turn with that body,
@@ -68,9 +68,8 @@
 // of an affine function of time, is convex, so its largest value on [t, maxFraction] is at an end.
 // λ = 0 gives back the fixed-axis model. The face's body does not move in the turning frame, so
 // near a vertex–face hit the model is exact to first order and the steps converge quadratically
-// (case 3557: 7 iterations; case 6129, a 0.38 × 6.3 m box turning 0.89 rad past a triangle
-// 0.0156 m away against a target of 0.005 m: separated after 10 iterations instead of failing
-// after 30 at 3e-3 of the sweep per step). With a vertex–vertex witness the fixed axis is
+// (cases 3557 and 6129, a long box turning past a triangle, converge well within the cap instead
+// of failing at it: tests/test_toi.c logs the iterations). With a vertex–vertex witness the fixed axis is
 // already exact to first order (the other vertices lie farther along n) and no turning axis is
 // tried; with two parallel edges neither face is singled out and neither is tried.
 //
@@ -87,8 +86,8 @@
 // like the bounds above proves that none comes earlier; polishing a bracket by secant or
 // bisection was therefore not added: with the turning axis the safe steps already converge
 // quadratically at the hits that failed. Trying the turning axes of both bodies on every
-// iteration saves nothing over the witness's one (mean iterations 3.423 against 3.424 on 5,000
-// random pairs) for one more O(nA·nB) pass each time. toi_quadratic.c holds the closed form for
+// iteration saves nothing over the witness's one (the mean iteration count over random pairs does
+// not move) for one more O(nA·nB) pass each time. toi_quadratic.c holds the closed form for
 // circles.
 
 #include "core/core.h"
@@ -97,11 +96,11 @@
 #include "tumble/collision.h"
 
 // Convergence tolerance on the separation, 1e-5 m (0.008 × TB_TOI_TARGET_SEPARATION). The hit is
-// reported with the separation in [target, target + tolerance). With the second-order step the
-// cost of a tight tolerance is small (spinning thin box: at most 6 iterations at 1e-5 m, 5 at
-// 1e-4 m), while 1e-4 m leaves conservative advancement up to 4.8e-4 of the step away from the
-// closed-form circle time at oblique impacts (tests/test_toi.c; 5.4e-5 at 1e-5 m). It stays
-// above the float noise of GJK distances at 10 m coordinates (~1e-6 m).
+// reported with the separation in [target, target + tolerance). The second-order step converges
+// fast near the hit, so a tight tolerance costs about one iteration more than a loose one, while
+// a loose one (1e-4 m) leaves conservative advancement visibly off the closed-form circle time at
+// oblique impacts (tests/test_toi.c compares the two). It stays above the float noise of GJK
+// distances at 10 m coordinates (a float's spacing there is about 1e-6 m).
 #ifndef TB_TOI_TOLERANCE
 #define TB_TOI_TOLERANCE 1.0e-5f
 #endif

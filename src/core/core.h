@@ -83,8 +83,6 @@ static inline int tbLowestSetBit(uint64_t x)
 #endif
 }
 
-/// Closest point to p on the segment a–b (Ericson, Real-Time Collision Detection, §5.1.2), with
-/// its fraction t along a → b; a degenerate segment (a = b) gives a and t = 0.
 /// Ask for the cache lines of [p, p + bytes) ahead of use: for walks over a sparse subset of a big
 /// array (solver contacts among all contacts), where the hardware prefetcher sees no stream. A hint
 /// only: no effect on results.
@@ -104,6 +102,8 @@ static inline void tbPrefetch(const void* p, int bytes)
 
 /// How many items ahead a walk by index list prefetches (tbPrefetch): far enough to hide a miss to
 /// memory behind the work of the items in between.
+#define TB_PREFETCH_AHEAD 8
+
 /// Inline whatever the compiler's size heuristics say, for the few hot helpers whose callers
 /// gain from constants folded into them (contact_solver_wide.c, contact.c).
 #if defined(__GNUC__) || defined(__clang__)
@@ -114,8 +114,8 @@ static inline void tbPrefetch(const void* p, int bytes)
 #define TB_FORCE_INLINE inline
 #endif
 
-#define TB_PREFETCH_AHEAD 8
-
+/// Closest point to p on the segment a–b (Ericson, Real-Time Collision Detection, §5.1.2), with
+/// its fraction t along a → b; a degenerate segment (a = b) gives a and t = 0.
 static inline tbVec2 tbClosestPointOnSegment(float* t, tbVec2 p, tbVec2 a, tbVec2 b)
 {
 	tbVec2 e = tbSub(b, a);

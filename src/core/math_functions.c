@@ -6,8 +6,8 @@
 
 // atan(t) for t in [0, 1] by an odd polynomial t·(a1 + a3·t² + … + a11·t¹⁰), a standard fit of atan
 // on [0, 1] in the manner of Hastings (cf. Abramowitz & Stegun 4.4.47–4.4.49). Its error is
-// measured, not assumed: against atan2 in double over 10⁶ directions at three radii it is 1.96e-6
-// rad at most, within the stated 3e-6 (tests/test_math.c). Other octants by
+// checked, not assumed: tests/test_math.c holds it within the stated 3e-6 rad of atan2 in double
+// over 10⁶ directions at three radii. Other octants by
 // atan(t) = π/2 − atan(1/t) and the signs of x and y.
 float tbAtan2(float y, float x)
 {

@@ -4,6 +4,7 @@
 // fewer than 65,536 contacts). Each pass is a stable counting sort, so the whole sort is stable.
 #include "sort.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 static void tbCountingPass(const int* in, int* out, int count, int shift)
@@ -47,4 +48,15 @@ void tbSortIndices(int* values, int count, int* scratch)
 	{
 		memcpy(values, in, (size_t)count * sizeof(int));
 	}
+}
+
+static int tbCompareFloats(const void* a, const void* b)
+{
+	float x = *(const float*)a, y = *(const float*)b;
+	return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+void tbSortFloats(float* values, int count)
+{
+	qsort(values, (size_t)count, sizeof(float), tbCompareFloats);
 }

@@ -998,7 +998,7 @@ void tbPrepareJoints(tbStepContext* context)
 }
 
 // Joints are visited in solve order, colour by colour, so their 272-byte records are scattered
-// over the joint pool (joint_grid: 5 MB): ask for the one a few ahead.
+// over the joint pool (a large grid of joints spans megabytes): ask for the one a few ahead.
 static inline void tbPrefetchJointAhead(const tbWorld* world, int i, int end)
 {
 	if (i + TB_PREFETCH_AHEAD < end)
@@ -1095,12 +1095,12 @@ void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBi
 // A pass over the joints. The relaxing pass, and a biased pass without trees, solve every row one
 // at a time. A biased pass with joint trees (joint_tree.c) sweeps symmetrically: the joints' own
 // rows (springs, motors, limits, and the equality rows of joints outside the trees), the trees'
-// equality rows exactly, then the joints' own rows again, since the exact solve moved their bodies.
-// Measured on the catalogue's 24-ragdoll pile (sleep off, mean over the last 3 of 10 s; friction
-// motors of 0.5 N·m, limits): rows then trees leave 6.9 of 240 bodies above the sleep speed, the
-// symmetric sweep 0.9; with 2 N·m friction motors 26.5 and 3.4 (row by row: none). Exact solves
-// in the relaxing pass too cost twice as much for the same peak chain stretch. Positions change only between sub-steps, so the trees are
-// factored once per sub-step (the first biased pass: Baumgarte and NGS run several).
+// equality rows exactly, then the joints' own rows again, since the exact solve moved their bodies:
+// left last, it would undo part of what the motors and limits did, and a pile of ragdolls with
+// friction motors keeps many more bodies above the sleep speed with rows then trees than with the
+// symmetric sweep (docs/methods.md, "Joint trees"). Exact solves in the relaxing pass too cost
+// twice the work for the same peak chain stretch. Positions change only between sub-steps, so the
+// trees are factored once per sub-step (the first biased pass: Baumgarte and NGS run several).
 void tbBeginJointPass(tbStepContext* context, bool useBias)
 {
 	tbWorld* world = context->world;
@@ -1125,14 +1125,12 @@ void tbSolveJoints(tbStepContext* context, bool useBias)
 }
 
 // Rigid tree rows have no compliance to damp them, and one relaxing iteration does not remove the
-// correction velocity they leave where contacts close loops between trees: measured on 24
-// ragdolls in a pile (sleep off, mean over the last 3 of 10 s), one relaxing iteration leaves 114
-// bodies above the sleep speed (0.033 J of kinetic energy; row by row: none), two leave none
-// (3e-4 J). More joint-only sweeps or exact relaxing of the trees do not do it: joints and
-// contacts must relax together. So a step with joint trees relaxes twice more: with the default
-// 2 relaxing iterations plus one, one ragdoll of the pile still moves at 0.05 m/s after 10 s and
-// the pile never sleeps; plus two, it sleeps at step 240 (ragdoll pile: ×1.69 → ×1.87 the
-// row-by-row step time, measured with 3 + 1).
+// correction velocity they leave where contacts close loops between trees: in a pile of ragdolls
+// it leaves a jitter that keeps bodies above the sleep speed (row by row leaves none), and a
+// second iteration removes it. More joint-only sweeps or exact relaxing of the trees do not do
+// it: joints and contacts must relax together. So a step with joint trees relaxes twice more
+// than the world asks: once more still left a ragdoll of the pile moving and the pile awake,
+// twice more lets it sleep, for a somewhat dearer step (docs/methods.md, "Joint trees").
 int tbJointTreeRelaxIterations(const tbStepContext* context)
 {
 	const tbWorld* world = context->world;
@@ -1140,11 +1138,10 @@ int tbJointTreeRelaxIterations(const tbStepContext* context)
 }
 
 // The relaxing iterations after the first are there for contact stacks (card houses, docs/
-// stability.md); joints solved row by row are relaxed by the first alone. Measured on a grid of
-// 19,800 revolute joints (joint_grid, 300 steps): relaxing them in both iterations gives a mean
-// pin gap of 0.0239 m against 0.0257 m (Box2D v3.2: 0.0259 m, one relaxing pass) for 1.3 ms more
-// per step (4.7 → 3.4 ms of solve). Joint trees need their rows relaxed in every iteration, with
-// the contacts (tbJointTreeRelaxIterations above).
+// stability.md); joints solved row by row are relaxed by the first alone, as Box2D v3.2 relaxes
+// them once: relaxing them in every iteration closes the pins of a large grid of joints only a
+// little further for a much dearer solve (docs/methods.md, "Relaxing"). Joint trees need their
+// rows relaxed in every iteration, with the contacts (tbJointTreeRelaxIterations above).
 bool tbRelaxJointsInIteration(const tbStepContext* context, int iteration)
 {
 	return iteration == 0 || context->world->cache.jointTreeCount > 0;

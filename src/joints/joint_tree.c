@@ -3,9 +3,9 @@
 // each tree of bodies they join, instead of one row at a time.
 //
 // Why. Gauss–Seidel passes information one constraint per pass, and a light body between heavy
-// ones converges slowly: a chain of 30 light links holding a ball 100 times heavier stretches by
-// 10 % or more at 4 sub-steps (Box2D v3 measures 9.6 % on such a set-up). Soft rows keep GS stable,
-// but they settle where each row's spring, of stiffness K⁻¹·ω² with K the row's own (light)
+// ones converges slowly: a chain of 30 light links holding a ball 100 times heavier stretches
+// visibly at 4 sub-steps, in Box2D v3 as here (docs/methods.md, "Joint trees"). Soft rows keep GS
+// stable, but they settle where each row's spring, of stiffness K⁻¹·ω² with K the row's own (light)
 // inverse mass, balances the load: the chain sags like a soft spring, and stiffer rows make GS
 // unstable. An exact solve needs neither: the rows are rigid (a bias β·C, no compliance), so the
 // chain settles at its length.
@@ -46,8 +46,6 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
-
-#define TB_TREE_MAX_DIM 3 ///< a body's three velocity unknowns, or a joint's rows (at most 3)
 
 /// The factorization and solve run in double precision. Eliminating a heavy body into a light one
 /// subtracts nearly equal terms: for a 0.1 kg capsule pinned 60 m from the centre of an 8,171 kg
@@ -236,8 +234,9 @@ static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId
 /// similar bodies, a ragdoll, carries only its own motion through its joints and converges within
 /// the sub-step's passes. So a tree is solved exactly when it is rooted at ground, or a path from
 /// its root crosses at least TB_TREE_MIN_DEPTH joints, or its heaviest body is at least
-/// TB_TREE_MIN_MASS_RATIO times its lightest. Measured on 1,000 falling ragdolls (rain_ragdolls,
-/// first 60 steps): 14.5 → 7.4 ms per step; the ragdoll pile settles as before (tests/test_joint.c).
+/// TB_TREE_MIN_MASS_RATIO times its lightest. Leaving ragdolls to Gauss–Seidel saves most of what
+/// the trees cost in a rain of ragdolls (docs/methods.md), and the ragdoll pile settles as before
+/// (tests/test_joint.c).
 #define TB_TREE_MIN_DEPTH 6
 #define TB_TREE_MIN_MASS_RATIO 10.0f
 

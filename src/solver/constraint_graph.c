@@ -1,39 +1,45 @@
-// Graph colouring of the contact constraints, for the wide solver (contact_solver_wide.c).
+// The solve order of the step's constraints, by graph colouring: the contacts, for the wide
+// solver (contact_solver_wide.c), split into island partitions where the workers can take whole
+// piles (tbColorConstraints); and the joints (tbColorJoints, the second half of the file): small
+// mechanisms in joint-id order, the joints of large ones by colour, and which mechanisms have too
+// many loops for joint trees (tbMarkLoopyMechanisms). Both colourings are kept with their inputs
+// and reused while those stay the same from step to step.
 //
 // Two constraints that share a body that moves cannot be solved at the same time: each reads the
 // body's velocity that the other writes. Colouring the constraint graph (constraints are vertices,
 // an edge joins two constraints on a common moving body) splits the constraints into sets in
 // which no moving body appears twice; the constraints of one colour are then independent, and
-// four of them can be solved at once in the lanes of a wide float, with exactly the result of
-// solving them one after another in any order. Static, kinematic and sleeping bodies do not move
-// in the solve (infinite mass: the solver writes back the velocity it read), so they do not take
-// a colour: a ground box touching a hundred boxes costs nothing here.
+// TB_SIMD_WIDTH of them (4 with SSE2 or plain floats, 8 with AVX2) can be solved at once in the
+// lanes of a wide float, with exactly the result of solving them one after another in any order.
+// Static, kinematic and sleeping bodies do not move in the solve (infinite mass: the solver writes
+// back the velocity it read), so they do not take a colour: a ground box touching a hundred boxes
+// costs nothing here.
 //
 // Greedy first fit, one pass: each body keeps a bit mask of the colours its constraints already
 // took; a constraint takes the lowest colour free in both masks, found with one OR and a count of
-// trailing zeros. Greedy colouring needs at most (largest degree + 1) colours; measured on the
-// benchmark scenes: at most 9 on the pyramids, 11 on the tumbler, none overflowing. Constraints that find no free colour among
-// TB_GRAPH_COLOR_COUNT (very crowded bodies: a body with many small neighbours) go to an overflow
-// list that the scalar solver handles after the colours, and so do contacts with rolling
-// resistance or a tangent speed (tbSurfaceMaterial): the wide blocks do not carry them, so that
-// the common contact pays nothing for them.
+// trailing zeros. Greedy colouring needs at most (largest degree + 1) colours, and a body in a pile
+// touches few others, so TB_GRAPH_COLOR_COUNT leaves room. Constraints that find no free colour
+// among TB_GRAPH_COLOR_COUNT (very crowded bodies: a body with many small neighbours) go to an
+// overflow list that the scalar solver handles after the colours, and so do contacts with rolling
+// resistance or a tangent speed (tbSurfaceMaterial): the wide blocks do not carry them, so that the
+// common contact pays nothing for them.
 //
 // Order. Gauss–Seidel results depend on the order, and the order here is colour by colour; the
 // colours are assigned greedily in the island stage's order (a hash of the contact id, island.c),
-// which makes each colour a scattered set, not a sweep across the structure (the measurements
-// behind this choice are in island.c and docs/methods.md). Within a colour the order does not
-// matter (no moving body appears twice), so the lanes are handed out in contact-id order, the
-// order in which the preparation reads the contacts and writes the lanes.
+// which makes each colour a scattered set, not a sweep across the structure (island.c says why,
+// docs/methods.md has the measurements). Within a colour the order does not matter (no moving body
+// appears twice), so the lanes are handed out in contact-id order, the order in which the
+// preparation reads the contacts and writes the lanes.
 //
 // The colours are computed before the contacts are prepared, from a small key per contact
 // (tbContactKey: its two solver bodies and whether each moves); each contact is then prepared
 // straight into its lane (contact_solver.c). They are recomputed from scratch whenever the keys
 // or the solve order differ from the last step's in any byte, and reused from the last step
 // otherwise (tbContactColorCache): nothing has to be kept consistent when contacts begin and end
-// (Box2D v3 keeps its colours persistent and updates them instead). Measured against
-// colouring after preparing (a 160-byte scalar constraint per contact written, then read back to
-// colour and pack): simulated L1 misses of 20 large_pyramid steps 73.2 M → 62.8 M, instructions
-// +2 %, whole run 2 % faster (8 alternated runs, median ratio 0.98).
+// (Box2D v3 keeps its colours persistent and updates them instead). Colouring after preparing
+// would write a 160-byte scalar constraint per contact and read it back to colour and pack it;
+// colouring from the keys first writes each contact once, into its lane, which saves more cache
+// misses than the few extra instructions cost (docs/architecture.md).
 // Reference: the graph colouring used by Box2D v3's solver (Catto, "Solver2D" and "SIMD
 // matters" blog posts, 2024).
 #include "constraint_graph.h"
@@ -41,6 +47,7 @@
 #include "contact_solver.h"
 #include "joints/joint.h"
 #include "core/task.h"
+#include "core/union_find.h"
 
 #include <string.h>
 
@@ -526,9 +533,10 @@ void tbReleaseColors(tbStepContext* context)
 
 // Joints. Gauss–Seidel in joint-id order sweeps a mechanism the way it was built (a ragdoll from
 // the torso out, a chain link after link), passing a correction along the whole mechanism in one
-// pass; in colour order the same joints take turns, and the measurements show it: a pile of 24
-// ragdolls that falls asleep in joint-id order never does in colour order. So the joints are split
-// by mechanism, the groups of awake dynamic bodies they join (union–find on the solver bodies):
+// pass; in colour order the same joints take turns, and a correction advances a joint or two per
+// pass: a pile of ragdolls that falls asleep in joint-id order does not in colour order
+// (docs/methods.md, "Solve order of the joints"). So the joints are split by mechanism, the groups
+// of awake dynamic bodies they join (union–find on the solver bodies):
 // - small mechanisms (at most TB_JOINT_SMALL_GROUP joints: ragdolls, vehicles, chains, bridges)
 //   keep joint-id order; they share no moving body with one another, so they run side by side on
 //   the workers, a few whole mechanisms per unit (context->jointUnitStart);
@@ -536,22 +544,12 @@ void tbReleaseColors(tbStepContext* context)
 //   own: every pass solves all joints before the contacts (joint.c says why), so a joint and a
 //   contact never run in the same stage and need not avoid each other's bodies. Colours let the
 //   workers share the pass and let one worker overlap consecutive joints, where in joint-id order
-//   each joint waits for the velocity the previous one stored. On a 100 × 100 grid of revolute
-//   joints colour order gave the same pin gaps as joint-id order (largest 0.50 m, mean 0.024 m).
+//   each joint waits for the velocity the previous one stored. A mesh closes its loops by
+//   iterating whatever the order, so there colour order holds its pins as joint-id order does.
 // world->cache.solverJoints becomes: the small mechanisms, then colour after colour (joint-id order
 // within each), then the joints that found no colour; the same order on any number of workers.
 #define TB_JOINT_SMALL_GROUP 64
 #define TB_JOINTS_PER_MECHANISM_UNIT 16
-
-static int tbFindRoot(int* parent, int i)
-{
-	while (parent[i] != i)
-	{
-		parent[i] = parent[parent[i]]; // path halving
-		i = parent[i];
-	}
-	return i;
-}
 
 /// Mechanism of each solver joint (a root solver body), and the joints per root.
 static void tbFindMechanisms(const tbStepContext* context, int* parent, int* jointRoot, int* size)
@@ -568,8 +566,7 @@ static void tbFindMechanisms(const tbStepContext* context, int* parent, int* joi
 		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		if (tbJointMovesA(joint) && tbJointMovesB(joint))
 		{
-			int a = tbFindRoot(parent, joint->indexA), b = tbFindRoot(parent, joint->indexB);
-			parent[a < b ? b : a] = a < b ? a : b;
+			tbLinkRoots(parent, joint->indexA, joint->indexB);
 		}
 	}
 	for (int i = 0; i < n; ++i)
@@ -606,8 +603,8 @@ static void tbPackMechanismUnits(tbStepContext* context, const int* orderedRoot,
 /// Joint trees (joint_tree.c) pay where a mechanism is mostly a tree: chains, ragdolls, bridges,
 /// vehicles. Where loops are many (a mesh or a grid of joints: about one loop per tree joint)
 /// Gauss–Seidel closes them anyway and the tree only adds its cost: on a 100 × 100 grid of
-/// revolute joints the exact spanning tree cut the largest pin gap from 0.50 to 0.20 m but made
-/// the step 2.3× longer (6.5 → 14.9 ms) and took two more relaxing iterations. So a mechanism
+/// revolute joints the exact spanning tree narrowed the largest pin gap but made the step much
+/// longer and took two more relaxing iterations (docs/methods.md). So a mechanism
 /// gets trees when the joints closing loops in it are few: counted from its equality joints (the
 /// rows a tree solves) as the cycle rank, E_inner − (V − 1) between its V bodies plus the ground
 /// joints after the first, with a loop between bodies weighing twice a loop through ground (it
@@ -654,8 +651,9 @@ static void tbMarkLoopyMechanisms(const tbStepContext* context, int* parent, con
 // sides move and how many equality rows each has (the loop count of its mechanism). Those rarely
 // change from one step to the next (a grid or a chain that stays awake), so the order of the last
 // step is kept with a 64-bit fingerprint of its inputs and reused when the fingerprint matches:
-// joint_grid's union–find and colouring of 19,800 joints (0.45 ms a step) become one pass over
-// the joints and a copy. A different fingerprint recomputes; nothing else decides.
+// a union–find and a colouring of every joint each step (a large grid of joints pays for both)
+// become one pass over the joints and a copy. A different fingerprint recomputes; nothing else
+// decides.
 typedef struct tbJointOrderCache
 {
 	uint64_t fingerprint;

@@ -188,7 +188,8 @@ static void tbPrepareConstraintNGS(const tbStepContext* context, const tbManifol
 /// surface later in the step, after gravity has sped the approach up: with relative normal
 /// acceleration aₙ < 0 (towards each other), energy gives v_impact² = v² + 2·|aₙ|·s, so
 /// v_impact = −sqrt(v² − 2·aₙ·s). Without this the rebound of a body whose contact appears one
-/// step before impact is up to g·dt too slow (4 % low apex for a ball dropped 5 m at 60 Hz).
+/// step before impact is up to g·dt too slow, and its apex, which goes as v², up to 2g·dt/v of it
+/// too low.
 // The relative normal acceleration gravity gives the pair (aₙ above).
 static float tbGravityApproach(const tbStepContext* context, int indexA, float invMassA, int indexB, float invMassB,
 							   tbVec2 normal)
@@ -244,8 +245,9 @@ static bool tbIsDeepOverlap(const tbContactConstraint* c, float deepOverlap)
 }
 
 // Soft step's settling (solver_soft.c): a dynamic pair touching for `age` steps that does not
-// overlap deeply stiffens from contactHertz to restHertz over the second settleSteps of touching.
-// Static pairs start at the resting stiffness, deep ones stay at contactHertz. `softness` is the
+// overlap deeply stiffens from contactHertz to settledHertz over the second settleSteps of
+// touching. Static pairs start at the resting stiffness (restHertz), deep ones stay at
+// contactHertz. `softness` is the
 // pair's softness before settling; the caller has ruled out static and deep pairs.
 static inline tbSoftness tbSettledSoftness(const tbStepContext* context, tbSoftness softness, int age)
 {
@@ -582,6 +584,49 @@ static inline tbFloatW tbKeepGreaterW(tbFloatW a, tbFloatW b, tbFloatW ifTrue)
 	return tbSelectGreaterW(a, b, ifTrue, tbZeroW());
 }
 
+// The wide preparation reads its inputs as rows of four floats, one row per lane, straight out of
+// the solver arrays and the public manifold, and transposes them (tbLoadTransposeRowsW: float k
+// of lane l's row becomes lane l of out[k]). These are the columns of those rows; the asserts
+// below hold the structures to them, since a field moved in any of them would otherwise be read
+// silently as another.
+enum
+{
+	tb_massInvMass = 0, ///< tbSolverMass: invMass, invI, gravityScale, padding
+	tb_massInvI = 1,
+	tb_massGravityScale = 2,
+	tb_velocityX = 0, ///< tbSolverBody's first row: linearVelocity.x, linearVelocity.y, angularVelocity, padding
+	tb_velocityY = 1,
+	tb_velocityAngular = 2,
+	tb_normalX = 0, ///< tbManifold from its normal: normal.x, normal.y, then two floats not used
+	tb_normalY = 1,
+	tb_anchorAX = 0, ///< tbManifoldPoint from anchorA: anchorA.x, anchorA.y, anchorB.x, anchorB.y
+	tb_anchorAY = 1,
+	tb_anchorBX = 2,
+	tb_anchorBY = 3,
+	tb_pointSeparation = 0, ///< tbManifoldPoint from separation: separation, normalImpulse, tangentImpulse,
+	tb_pointNormalImpulse = 1, ///< then maxNormalImpulse (not used)
+	tb_pointTangentImpulse = 2,
+};
+
+_Static_assert(offsetof(tbVec2, x) == 0 && offsetof(tbVec2, y) == 4 && sizeof(tbVec2) == 8,
+			   "tbVec2 is two floats, x then y, as the wide preparation's rows read them");
+_Static_assert(offsetof(tbSolverMass, invMass) == 4 * tb_massInvMass && offsetof(tbSolverMass, invI) == 4 * tb_massInvI &&
+				   offsetof(tbSolverMass, gravityScale) == 4 * tb_massGravityScale && sizeof(tbSolverMass) == 16,
+			   "tbSolverMass is one row of (invMass, invI, gravityScale, padding)");
+_Static_assert(offsetof(tbSolverBody, linearVelocity) == 4 * tb_velocityX &&
+				   offsetof(tbSolverBody, angularVelocity) == 4 * tb_velocityAngular && sizeof(tbSolverBody) >= 16,
+			   "tbSolverBody starts with the row (v.x, v.y, ω, padding)");
+_Static_assert(offsetof(tbManifold, normal) + 16 <= sizeof(tbManifold),
+			   "a row of four floats from tbManifold::normal stays within the manifold");
+_Static_assert(offsetof(tbManifoldPoint, anchorB) == offsetof(tbManifoldPoint, anchorA) + 4 * tb_anchorBX,
+			   "tbManifoldPoint: anchorB right after anchorA, one row of four floats");
+_Static_assert(offsetof(tbManifoldPoint, normalImpulse) ==
+					   offsetof(tbManifoldPoint, separation) + 4 * tb_pointNormalImpulse &&
+				   offsetof(tbManifoldPoint, tangentImpulse) ==
+					   offsetof(tbManifoldPoint, separation) + 4 * tb_pointTangentImpulse &&
+				   offsetof(tbManifoldPoint, separation) + 16 <= sizeof(tbManifoldPoint),
+			   "tbManifoldPoint: separation, normalImpulse and tangentImpulse in a row within the point");
+
 /// The point numbers of one manifold point j for the lanes of a batch (tbPrepareWideLanes).
 typedef struct tbWidePointInput
 {
@@ -596,7 +641,7 @@ typedef struct tbWidePointOutput
 	float baseSeparation[TB_SIMD_WIDTH], normalImpulse[TB_SIMD_WIDTH], tangentImpulse[TB_SIMD_WIDTH];
 	float normalMass[TB_SIMD_WIDTH], tangentMass[TB_SIMD_WIDTH], normalVelocity[TB_SIMD_WIDTH];
 	int deep; ///< bit per lane: the point overlaps by more than the deep-overlap depth
-	/// central friction's anchors (A.x, A.y, B.x, B.y), in the second point's output only
+	/// central friction's anchors (tb_anchorAX … tb_anchorBY), in the second point's output only
 	float centralAnchor[4][TB_SIMD_WIDTH];
 } tbWidePointOutput;
 
@@ -611,16 +656,17 @@ static inline tbFloatW tbInverseMassAlongW(tbFloatW mass[2][4], tbFloatW rAX, tb
 {
 	tbFloatW rnA = tbSubW(tbMulW(rAX, uY), tbMulW(rAY, uX));
 	tbFloatW rnB = tbSubW(tbMulW(rBX, uY), tbMulW(rBY, uX));
-	tbFloatW k = tbAddW(tbAddW(mass[0][0], mass[1][0]), tbMulW(tbMulW(mass[0][1], rnA), rnA));
-	return tbAddW(k, tbMulW(tbMulW(mass[1][1], rnB), rnB));
+	tbFloatW k = tbAddW(tbAddW(mass[0][tb_massInvMass], mass[1][tb_massInvMass]),
+						tbMulW(tbMulW(mass[0][tb_massInvI], rnA), rnA));
+	return tbAddW(k, tbMulW(tbMulW(mass[1][tb_massInvI], rnB), rnB));
 }
 
 /// Point j of every lane: tbPrepareWideLane's per-point expressions, the branches as selects. The
 /// lanes whose contact has no point j get zeros (their numbers are whatever the manifold holds there,
-/// masked out). `an`: tbGravityApproach per lane; `velocity`: each side's (vx, vy, ω) rows. With
-/// central friction the points' own friction rows are left to tbPrepareCentralFrictionW, which
-/// writes both points' (the tangent masses were computed here and overwritten there: the batch
-/// 6 % faster without them, tumble-bench-prepare).
+/// masked out). `an`: tbGravityApproach per lane; `mass` and `velocity`: each side's rows (the
+/// columns above). With central friction the points' own friction rows are left to
+/// tbPrepareCentralFrictionW, which writes both points' (the tangent masses were computed here and
+/// overwritten there: work thrown away on every contact, which tumble-bench-prepare showed).
 static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput* in, tbFloatW present,
 							tbFloatW mass[2][4], tbFloatW velocity[2][4], tbFloatW nX, tbFloatW nY,
 							tbFloatW an, tbWidePointOutput* out)
@@ -634,10 +680,12 @@ static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput
 	tbFloatW normalMass = tbKeepGreaterW(kNormal, zero, tbDivW(one, kNormal));
 
 	// v + ω × r on each side (tbCrossSV: (−ω·r.y, ω·r.x)), then the normal part of vB − vA
-	tbFloatW vAX = tbAddW(velocity[0][0], tbMulW(tbMulW(minusOne, velocity[0][2]), in->anchorAY));
-	tbFloatW vAY = tbAddW(velocity[0][1], tbMulW(velocity[0][2], in->anchorAX));
-	tbFloatW vBX = tbAddW(velocity[1][0], tbMulW(tbMulW(minusOne, velocity[1][2]), in->anchorBY));
-	tbFloatW vBY = tbAddW(velocity[1][1], tbMulW(velocity[1][2], in->anchorBX));
+	const tbFloatW* a = velocity[0];
+	const tbFloatW* b = velocity[1];
+	tbFloatW vAX = tbAddW(a[tb_velocityX], tbMulW(tbMulW(minusOne, a[tb_velocityAngular]), in->anchorAY));
+	tbFloatW vAY = tbAddW(a[tb_velocityY], tbMulW(a[tb_velocityAngular], in->anchorAX));
+	tbFloatW vBX = tbAddW(b[tb_velocityX], tbMulW(tbMulW(minusOne, b[tb_velocityAngular]), in->anchorBY));
+	tbFloatW vBY = tbAddW(b[tb_velocityY], tbMulW(b[tb_velocityAngular], in->anchorBX));
 	tbFloatW v = tbAddW(tbMulW(tbSubW(vBX, vAX), nX), tbMulW(tbSubW(vBY, vAY), nY));
 
 	// tbImpactVelocity: sep > 0, v < 0 and aₙ < 0 give max(−sqrt(v² − 2·aₙ·sep), min(v, −2·vmax))
@@ -671,182 +719,226 @@ static void tbPreparePointW(const tbStepContext* context, const tbWidePointInput
 
 /// Central friction for every lane of a batch (tbCentralFrictionRow, lane by lane, the same
 /// expressions): point 0's tangent mass and impulse become the central row's, point 1's zeros, and
-/// the row's anchors go to centralAnchor (A.x, A.y, B.x, B.y). `numbers[j]`: point j's separation,
-/// normal and tangent impulses as read from the manifolds.
+/// the row's anchors go to centralAnchor (tb_anchorAX … tb_anchorBY). `separationAndImpulses[j]`:
+/// point j's row as read from the manifolds (tb_pointSeparation …).
 static void tbPrepareCentralFrictionW(const tbStepContext* context, tbFloatW mass[2][4], tbFloatW anchors[2][4],
-									  tbFloatW numbers[2][4], tbFloatW pointCount, tbFloatW nX, tbFloatW nY,
-									  tbWidePointOutput points[2])
+									  tbFloatW separationAndImpulses[2][4], tbFloatW pointCount, tbFloatW nX,
+									  tbFloatW nY, tbWidePointOutput points[2])
 {
 	tbFloatW zero = tbZeroW(), one = tbSplatW(1.0f);
 	tbFloatW warmScale = tbSplatW(context->enableWarmStarting ? 1.0f : 0.0f);
-	tbFloatW n0 = tbMulW(warmScale, numbers[0][1]), n1 = tbMulW(warmScale, numbers[1][1]);
-	tbFloatW t0 = tbMulW(warmScale, numbers[0][2]), t1 = tbMulW(warmScale, numbers[1][2]);
+	const tbFloatW* p0 = separationAndImpulses[0];
+	const tbFloatW* p1 = separationAndImpulses[1];
+	tbFloatW n0 = tbMulW(warmScale, p0[tb_pointNormalImpulse]), n1 = tbMulW(warmScale, p1[tb_pointNormalImpulse]);
+	tbFloatW t0 = tbMulW(warmScale, p0[tb_pointTangentImpulse]), t1 = tbMulW(warmScale, p1[tb_pointTangentImpulse]);
 	tbFloatW total = tbAddW(n0, n1);
 	tbFloatW w0 = tbSelectGreaterW(total, zero, tbDivW(n0, total), tbSplatW(0.5f)); // tbPressureWeight
 	tbFloatW w1 = tbSubW(one, w0);
-	tbFloatW two = tbSubW(pointCount, one); // > 0 where the contact has two points
+	tbFloatW hasSecondPoint = tbSubW(pointCount, one); // > 0 in the lanes whose contact has two points
 	tbFloatW row[4];
-	for (int k = 0; k < 4; ++k)
+	for (int k = tb_anchorAX; k <= tb_anchorBY; ++k)
 	{
 		tbFloatW blend = tbAddW(tbMulW(w0, anchors[0][k]), tbMulW(w1, anchors[1][k]));
-		row[k] = tbSelectGreaterW(two, zero, blend, anchors[0][k]);
+		row[k] = tbSelectGreaterW(hasSecondPoint, zero, blend, anchors[0][k]);
 		tbStoreLanesW(points[1].centralAnchor[k], row[k]);
 	}
-	tbFloatW impulse = tbSelectGreaterW(two, zero, tbAddW(t0, t1), t0);
+	tbFloatW impulse = tbSelectGreaterW(hasSecondPoint, zero, tbAddW(t0, t1), t0);
 	tbFloatW tX = nY, tY = tbMulW(tbSplatW(-1.0f), nX);
-	tbFloatW k = tbInverseMassAlongW(mass, row[0], row[1], row[2], row[3], tX, tY);
+	tbFloatW k = tbInverseMassAlongW(mass, row[tb_anchorAX], row[tb_anchorAY], row[tb_anchorBX], row[tb_anchorBY], tX, tY);
 	tbStoreLanesW(points[0].tangentMass, tbKeepGreaterW(k, zero, tbDivW(one, k)));
 	tbStoreLanesW(points[0].tangentImpulse, impulse);
 	tbStoreLanesW(points[1].tangentMass, zero);
 	tbStoreLanesW(points[1].tangentImpulse, zero);
 }
 
-/// tbPrepareWideLane for a full batch of contacts, one per lane of wide floats: the same expressions
-/// in the same order, so bit for bit the same lanes; the arithmetic is done TB_SIMD_WIDTH contacts
-/// at a time and only the stores into the blocks stay lane by lane (the contacts of a batch are
-/// consecutive in id order, so their lanes are spread over the colours' blocks). The inputs are
-/// read as rows of four floats and transposed: the two bodies' masses and velocities, the
-/// manifold's normal, each point's anchors and each point's separation and impulses. Returns a bit
-/// per lane, set where a point approaches at the restitution threshold or faster.
-int tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
+/// A batch's inputs, transposed: one wide float per column of the rows above.
+typedef struct tbWideBatchRows
+{
+	tbFloatW mass[2][4];				  ///< side A, side B: tbSolverMass (tb_massInvMass …)
+	tbFloatW velocity[2][4];			  ///< side A, side B: tbSolverBody's first row (tb_velocityX …)
+	tbFloatW normalRow[4];				  ///< the manifold's normal (tb_normalX, tb_normalY)
+	tbFloatW anchors[2][4];				  ///< point j's anchors (tb_anchorAX …)
+	tbFloatW separationAndImpulses[2][4]; ///< point j's separation and impulses (tb_pointSeparation …)
+	tbFloatW pointCount;				  ///< the manifold's point count, as a float
+} tbWideBatchRows;
+
+static void tbLoadBatchRows(const tbStepContext* context, const tbLaneBatch* batch, tbWideBatchRows* in)
 {
 	const void* rows[TB_SIMD_WIDTH];
-	tbFloatW mass[2][4], velocity[2][4], head[4], anchors[2][4], numbers[2][4];
+	for (int side = 0; side < 2; ++side)
+	{
+		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+		{
+			rows[l] = context->masses + (side == 0 ? batch->keys[l].indexA : batch->keys[l].indexB);
+		}
+		tbLoadTransposeRowsW(rows, in->mass[side]);
+	}
+	for (int side = 0; side < 2; ++side)
+	{
+		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
+		{
+			rows[l] = context->bodies + (side == 0 ? batch->keys[l].indexA : batch->keys[l].indexB);
+		}
+		tbLoadTransposeRowsW(rows, in->velocity[side]);
+	}
 	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
 	{
-		rows[l] = context->masses + batch->keys[l].indexA; // invMass, invI, gravityScale
+		rows[l] = &batch->contacts[l]->manifold.normal;
 	}
-	tbLoadTransposeRowsW(rows, mass[0]);
-	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
-	{
-		rows[l] = context->masses + batch->keys[l].indexB;
-	}
-	tbLoadTransposeRowsW(rows, mass[1]);
-	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
-	{
-		rows[l] = context->bodies + batch->keys[l].indexA; // linear velocity, angular velocity
-	}
-	tbLoadTransposeRowsW(rows, velocity[0]);
-	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
-	{
-		rows[l] = context->bodies + batch->keys[l].indexB;
-	}
-	tbLoadTransposeRowsW(rows, velocity[1]);
-	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
-	{
-		rows[l] = &batch->contacts[l]->manifold.normal; // normal, then two floats not used
-	}
-	tbLoadTransposeRowsW(rows, head);
+	tbLoadTransposeRowsW(rows, in->normalRow);
 	for (int j = 0; j < 2; ++j)
 	{
 		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
 		{
-			rows[l] = &batch->contacts[l]->manifold.points[j].anchorA; // anchorA, anchorB
+			rows[l] = &batch->contacts[l]->manifold.points[j].anchorA;
 		}
-		tbLoadTransposeRowsW(rows, anchors[j]);
+		tbLoadTransposeRowsW(rows, in->anchors[j]);
 		for (int l = 0; l < TB_SIMD_WIDTH; ++l)
 		{
-			rows[l] = &batch->contacts[l]->manifold.points[j].separation; // and the two impulses
+			rows[l] = &batch->contacts[l]->manifold.points[j].separation;
 		}
-		tbLoadTransposeRowsW(rows, numbers[j]);
+		tbLoadTransposeRowsW(rows, in->separationAndImpulses[j]);
 	}
 	float pointCounts[TB_SIMD_WIDTH];
 	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
 	{
 		pointCounts[l] = (float)batch->contacts[l]->manifold.pointCount;
 	}
-	tbFloatW pointCount;
-	memcpy(&pointCount, pointCounts, sizeof(pointCount));
+	memcpy(&in->pointCount, pointCounts, sizeof(in->pointCount));
+}
 
-	// tbGravityApproach: gB − gA along the normal, each side's g·gravityScale when it has mass
+/// tbGravityApproach per lane: gB − gA along the normal, each side's g·gravityScale when it has mass.
+static tbFloatW tbGravityApproachW(const tbStepContext* context, const tbWideBatchRows* in)
+{
 	tbFloatW zero = tbZeroW();
 	tbVec2 gravity = context->world->def.gravity;
 	tbFloatW gX = tbSplatW(gravity.x), gY = tbSplatW(gravity.y);
-	tbFloatW gAX = tbKeepGreaterW(mass[0][0], zero, tbMulW(mass[0][2], gX));
-	tbFloatW gAY = tbKeepGreaterW(mass[0][0], zero, tbMulW(mass[0][2], gY));
-	tbFloatW gBX = tbKeepGreaterW(mass[1][0], zero, tbMulW(mass[1][2], gX));
-	tbFloatW gBY = tbKeepGreaterW(mass[1][0], zero, tbMulW(mass[1][2], gY));
-	tbFloatW an = tbAddW(tbMulW(tbSubW(gBX, gAX), head[0]), tbMulW(tbSubW(gBY, gAY), head[1]));
+	const tbFloatW* a = in->mass[0];
+	const tbFloatW* b = in->mass[1];
+	tbFloatW gAX = tbKeepGreaterW(a[tb_massInvMass], zero, tbMulW(a[tb_massGravityScale], gX));
+	tbFloatW gAY = tbKeepGreaterW(a[tb_massInvMass], zero, tbMulW(a[tb_massGravityScale], gY));
+	tbFloatW gBX = tbKeepGreaterW(b[tb_massInvMass], zero, tbMulW(b[tb_massGravityScale], gX));
+	tbFloatW gBY = tbKeepGreaterW(b[tb_massInvMass], zero, tbMulW(b[tb_massGravityScale], gY));
+	return tbAddW(tbMulW(tbSubW(gBX, gAX), in->normalRow[tb_normalX]),
+				  tbMulW(tbSubW(gBY, gAY), in->normalRow[tb_normalY]));
+}
 
+/// What the lanes of a batch are written from: the points computed in wide floats, and lane-by-lane
+/// copies of the inverse masses and the normal.
+typedef struct tbWideBatchResult
+{
 	tbWidePointOutput points[2];
+	float invMass[2][2][TB_SIMD_WIDTH]; ///< side, then its invMass and invI
+	float normal[2][TB_SIMD_WIDTH];		///< x, y
+	int deep;							///< bit per lane: some point overlaps deeply
+} tbWideBatchResult;
+
+/// Writes lane l of a batch into its block (every field but the relaxing bias, as tbPackWideLane)
+/// and the approach speeds into its manifold; returns 1 << l when some point approaches at the
+/// restitution threshold or faster, else 0.
+static int tbWriteBatchLane(const tbStepContext* context, const tbLaneBatch* batch, const tbWideBatchResult* r, int l)
+{
+	tbContact* contact = batch->contacts[l];
+	tbContactKey key = batch->keys[l];
+	tbWideContactConstraint* block = context->wideConstraints + batch->locations[l] / TB_SIMD_WIDTH;
+	int lane = batch->locations[l] % TB_SIMD_WIDTH;
+	int count = contact->manifold.pointCount;
+	float threshold = context->world->def.restitutionThreshold;
+	int rebound = 0;
+	block->indexA[lane] = key.indexA;
+	block->indexB[lane] = key.indexB;
+	tbSetLaneW(&block->normalX, lane, r->normal[0][l]);
+	tbSetLaneW(&block->normalY, lane, r->normal[1][l]);
+	tbSetLaneW(&block->friction, lane, contact->friction);
+	tbSetLaneW(&block->invMassA, lane, r->invMass[0][0][l]);
+	tbSetLaneW(&block->invIA, lane, r->invMass[0][1][l]);
+	tbSetLaneW(&block->invMassB, lane, r->invMass[1][0][l]);
+	tbSetLaneW(&block->invIB, lane, r->invMass[1][1][l]);
 	for (int j = 0; j < 2; ++j)
 	{
-		tbWidePointInput in = {anchors[j][0],	  anchors[j][1], anchors[j][2], anchors[j][3],
-							   numbers[j][0], numbers[j][1], numbers[j][2]};
-		tbFloatW present = tbSubW(pointCount, tbSplatW((float)j)); // > 0 where the contact has point j
-		tbPreparePointW(context, &in, present, mass, velocity, head[0], head[1], an, points + j);
+		const tbWidePointOutput* p = r->points + j;
+		tbWideContactPoint* wp = block->points + j;
+		tbSetLaneW(&wp->anchorAX, lane, p->anchorAX[l]);
+		tbSetLaneW(&wp->anchorAY, lane, p->anchorAY[l]);
+		tbSetLaneW(&wp->anchorBX, lane, p->anchorBX[l]);
+		tbSetLaneW(&wp->anchorBY, lane, p->anchorBY[l]);
+		tbSetLaneW(&wp->baseSeparation, lane, p->baseSeparation[l]);
+		tbSetLaneW(&block->impulses[j].normalImpulse, lane, p->normalImpulse[l]);
+		tbSetLaneW(&block->impulses[j].tangentImpulse, lane, p->tangentImpulse[l]);
+		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
+		tbSetLaneW(&wp->normalMass, lane, p->normalMass[l]);
+		tbSetLaneW(&wp->tangentMass, lane, p->tangentMass[l]);
+		if (j < count)
+		{
+			contact->manifold.points[j].normalVelocity = p->normalVelocity[l];
+			rebound |= p->normalVelocity[l] <= -threshold ? 1 << l : 0;
+		}
+	}
+
+	if (context->centralFriction)
+	{
+		const float(*anchor)[TB_SIMD_WIDTH] = r->points[1].centralAnchor;
+		tbSetLaneW(&block->frictionAnchorAX, lane, anchor[tb_anchorAX][l]);
+		tbSetLaneW(&block->frictionAnchorAY, lane, anchor[tb_anchorAY][l]);
+		tbSetLaneW(&block->frictionAnchorBX, lane, anchor[tb_anchorBX][l]);
+		tbSetLaneW(&block->frictionAnchorBY, lane, anchor[tb_anchorBY][l]);
+	}
+
+	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
+	tbSoftness softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+	bool movesBoth = tbMovesBoth(r->invMass[0][0][l], r->invMass[0][1][l], r->invMass[1][0][l], r->invMass[1][1][l]);
+	if (context->settleSteps > 0.0f && movesBoth && (r->deep & (1 << l)) == 0)
+	{
+		softness = tbSettledSoftness(context, softness, contact->touchingSteps);
+	}
+	tbSetLaneW(&block->biasRate, lane, softness.biasRate);
+	tbSetLaneW(&block->massScale, lane, softness.massScale);
+	tbSetLaneW(&block->impulseScale, lane, softness.impulseScale);
+	return rebound;
+}
+
+/// tbPrepareWideLane for a full batch of contacts, one per lane of wide floats: the same expressions
+/// in the same order, so bit for bit the same lanes; the arithmetic is done TB_SIMD_WIDTH contacts
+/// at a time and only the stores into the blocks stay lane by lane (the contacts of a batch are
+/// consecutive in id order, so their lanes are spread over the colours' blocks). The inputs are
+/// read as rows of four floats and transposed (tbLoadBatchRows): the two bodies' masses and
+/// velocities, the manifold's normal, each point's anchors and each point's separation and
+/// impulses. Returns a bit per lane, set where a point approaches at the restitution threshold or
+/// faster.
+int tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
+{
+	tbWideBatchRows in;
+	tbLoadBatchRows(context, batch, &in);
+	tbFloatW an = tbGravityApproachW(context, &in);
+	tbFloatW nX = in.normalRow[tb_normalX], nY = in.normalRow[tb_normalY];
+	tbWideBatchResult r;
+	for (int j = 0; j < 2; ++j)
+	{
+		const tbFloatW* anchor = in.anchors[j];
+		const tbFloatW* values = in.separationAndImpulses[j];
+		tbWidePointInput point = {anchor[tb_anchorAX],		 anchor[tb_anchorAY],		anchor[tb_anchorBX],
+								  anchor[tb_anchorBY],		 values[tb_pointSeparation], values[tb_pointNormalImpulse],
+								  values[tb_pointTangentImpulse]};
+		tbFloatW present = tbSubW(in.pointCount, tbSplatW((float)j)); // > 0 where the contact has point j
+		tbPreparePointW(context, &point, present, in.mass, in.velocity, nX, nY, an, r.points + j);
 	}
 	if (context->centralFriction)
 	{
-		tbPrepareCentralFrictionW(context, mass, anchors, numbers, pointCount, head[0], head[1], points);
+		tbPrepareCentralFrictionW(context, in.mass, in.anchors, in.separationAndImpulses, in.pointCount, nX, nY,
+								  r.points);
 	}
-	float invMass[2][2][TB_SIMD_WIDTH], normal[2][TB_SIMD_WIDTH];
-	tbStoreLanesW(invMass[0][0], mass[0][0]);
-	tbStoreLanesW(invMass[0][1], mass[0][1]);
-	tbStoreLanesW(invMass[1][0], mass[1][0]);
-	tbStoreLanesW(invMass[1][1], mass[1][1]);
-	tbStoreLanesW(normal[0], head[0]);
-	tbStoreLanesW(normal[1], head[1]);
-	int deep = points[0].deep | points[1].deep;
-	float threshold = context->world->def.restitutionThreshold;
+	for (int side = 0; side < 2; ++side)
+	{
+		tbStoreLanesW(r.invMass[side][0], in.mass[side][tb_massInvMass]);
+		tbStoreLanesW(r.invMass[side][1], in.mass[side][tb_massInvI]);
+	}
+	tbStoreLanesW(r.normal[0], nX);
+	tbStoreLanesW(r.normal[1], nY);
+	r.deep = r.points[0].deep | r.points[1].deep;
 	int rebound = 0;
-
 	for (int l = 0; l < TB_SIMD_WIDTH; ++l)
 	{
-		tbContact* contact = batch->contacts[l];
-		tbContactKey key = batch->keys[l];
-		tbWideContactConstraint* block = context->wideConstraints + batch->locations[l] / TB_SIMD_WIDTH;
-		int lane = batch->locations[l] % TB_SIMD_WIDTH;
-		int count = contact->manifold.pointCount;
-		block->indexA[lane] = key.indexA;
-		block->indexB[lane] = key.indexB;
-		tbSetLaneW(&block->normalX, lane, normal[0][l]);
-		tbSetLaneW(&block->normalY, lane, normal[1][l]);
-		tbSetLaneW(&block->friction, lane, contact->friction);
-		tbSetLaneW(&block->invMassA, lane, invMass[0][0][l]);
-		tbSetLaneW(&block->invIA, lane, invMass[0][1][l]);
-		tbSetLaneW(&block->invMassB, lane, invMass[1][0][l]);
-		tbSetLaneW(&block->invIB, lane, invMass[1][1][l]);
-		for (int j = 0; j < 2; ++j)
-		{
-			const tbWidePointOutput* p = points + j;
-			tbWideContactPoint* wp = block->points + j;
-			tbSetLaneW(&wp->anchorAX, lane, p->anchorAX[l]);
-			tbSetLaneW(&wp->anchorAY, lane, p->anchorAY[l]);
-			tbSetLaneW(&wp->anchorBX, lane, p->anchorBX[l]);
-			tbSetLaneW(&wp->anchorBY, lane, p->anchorBY[l]);
-			tbSetLaneW(&wp->baseSeparation, lane, p->baseSeparation[l]);
-			tbSetLaneW(&block->impulses[j].normalImpulse, lane, p->normalImpulse[l]);
-			tbSetLaneW(&block->impulses[j].tangentImpulse, lane, p->tangentImpulse[l]);
-			tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
-			tbSetLaneW(&wp->normalMass, lane, p->normalMass[l]);
-			tbSetLaneW(&wp->tangentMass, lane, p->tangentMass[l]);
-			if (j < count)
-			{
-				contact->manifold.points[j].normalVelocity = p->normalVelocity[l];
-				rebound |= p->normalVelocity[l] <= -threshold ? 1 << l : 0;
-			}
-		}
-
-		if (context->centralFriction)
-		{
-			float(*anchor)[TB_SIMD_WIDTH] = points[1].centralAnchor;
-			tbSetLaneW(&block->frictionAnchorAX, lane, anchor[0][l]);
-			tbSetLaneW(&block->frictionAnchorAY, lane, anchor[1][l]);
-			tbSetLaneW(&block->frictionAnchorBX, lane, anchor[2][l]);
-			tbSetLaneW(&block->frictionAnchorBY, lane, anchor[3][l]);
-		}
-
-		bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
-		tbSoftness softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
-		bool movesBoth = tbMovesBoth(invMass[0][0][l], invMass[0][1][l], invMass[1][0][l], invMass[1][1][l]);
-		if (context->settleSteps > 0.0f && movesBoth && (deep & (1 << l)) == 0)
-		{
-			softness = tbSettledSoftness(context, softness, contact->touchingSteps);
-		}
-		tbSetLaneW(&block->biasRate, lane, softness.biasRate);
-		tbSetLaneW(&block->massScale, lane, softness.massScale);
-		tbSetLaneW(&block->impulseScale, lane, softness.impulseScale);
+		rebound |= tbWriteBatchLane(context, batch, &r, l);
 	}
 	return rebound;
 }
@@ -935,9 +1027,9 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 			// what is read here: up to the settle clock after the manifold
 			tbPrefetch(world->contacts + contactIds[i + TB_PREFETCH_AHEAD], (int)offsetof(tbContact, base));
 			// and the block of the lane ahead, whichever lane it is: each lane writes a float in every
-			// line of its block, and a block's four lanes are written some dozens of contacts apart
-			// (one per colour in turn), by which time its lines may have left L1 (prefetching only
-			// for the first lane: prepare 9 % slower on large_pyramid, 6 % on spinner)
+			// line of its block, and a block's TB_SIMD_WIDTH lanes are written some dozens of
+			// contacts apart (one per colour in turn), by which time its lines may have left L1
+			// (prefetching only for the first lane left the later lanes' writes missing the cache)
 			int ahead = wideLocation != NULL ? context->locationById[i + TB_PREFETCH_AHEAD] : -1;
 			if (ahead >= 0)
 			{
@@ -1029,16 +1121,6 @@ static inline bool tbConstraintBounces(const tbStepContext* context, int i)
 	return context->constraints[i].restitution != 0.0f;
 }
 
-// Apply impulse P at anchors rA, rB: A receives −P, B receives +P.
-static inline void tbApplyImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbContactConstraint* c, tbVec2 rA,
-								  tbVec2 rB, tbVec2 P)
-{
-	sA->linearVelocity = tbMulSub(sA->linearVelocity, c->invMassA, P);
-	sA->angularVelocity -= c->invIA * tbCross(rA, P);
-	sB->linearVelocity = tbMulAdd(sB->linearVelocity, c->invMassB, P);
-	sB->angularVelocity += c->invIB * tbCross(rB, P);
-}
-
 static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstraint* c, bool centralFriction)
 {
 	tbSolverBody* sA = bodies + c->indexA;
@@ -1051,12 +1133,12 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 		for (int j = 0; j < c->pointCount; ++j)
 		{
 			const tbContactConstraintPoint* cp = c->points + j;
-			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(cp->normalImpulse, normal));
+			tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(cp->normalImpulse, normal));
 		}
 		if (c->pointCount > 0)
 		{
-			tbApplyImpulse(sA, sB, c, c->frictionAnchorA, c->frictionAnchorB,
-						   tbMulSV(c->points[0].tangentImpulse, tangent));
+			tbApplyContactImpulse(sA, sB, c, c->frictionAnchorA, c->frictionAnchorB,
+								  tbMulSV(c->points[0].tangentImpulse, tangent));
 		}
 	}
 	else
@@ -1065,7 +1147,7 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 		{
 			const tbContactConstraintPoint* cp = c->points + j;
 			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
-			tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
+			tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
 		}
 	}
 	sA->angularVelocity -= c->invIA * c->rollingImpulse;
@@ -1345,7 +1427,7 @@ void tbPropagateImpacts(tbStepContext* context)
 					continue;
 				}
 				float impulse = -cp->normalMass * (vn - tbReboundSpeed(c->restitution, vn, context->maxLinearSpeed));
-				tbApplyImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(impulse, c->normal));
+				tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(impulse, c->normal));
 				approaching = true;
 			}
 		}
@@ -1413,7 +1495,7 @@ void tbApplyRestitution(tbStepContext* context)
 			impulse = newImpulse - cp->normalImpulse;
 			cp->normalImpulse = newImpulse;
 			cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
-			tbApplyImpulse(sA, sB, c, rA, rB, tbMulSV(impulse, normal));
+			tbApplyContactImpulse(sA, sB, c, rA, rB, tbMulSV(impulse, normal));
 		}
 	}
 }
@@ -1422,9 +1504,10 @@ void tbApplyRestitution(tbStepContext* context)
 // contact-id order. A constraint solved in a wide lane is read from its lane (its scalar copy
 // holds the impulses of before the solve); the others from the scalar constraint.
 // The lines holding the impulses of the lane of contact i (contact-id order): the blocks were last
-// touched colour by colour in the final pass and have mostly left the cache (many_pyramids: 8 MB
-// of blocks); this walk visits them in contact-id order, one stream per colour, with a 608-byte
-// stride the hardware prefetcher does not follow.
+// touched colour by colour in the final pass and have mostly left the cache (a large scene's
+// blocks far exceed it); this walk visits them in contact-id order, one stream per colour, with
+// a stride of a whole block (sizeof(tbWideContactConstraint)) the hardware prefetcher does not
+// follow.
 static inline void tbPrefetchLaneImpulses(const tbStepContext* context, int i)
 {
 	if (context->locationById == NULL || context->locationById[i] < 0)

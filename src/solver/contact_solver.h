@@ -1,5 +1,5 @@
 // Internal: the sequential-impulse contact solver shared by the position methods, scalar
-// (contact_solver.c) and four contacts of one colour at a time (contact_solver_wide.c).
+// (contact_solver.c) and TB_SIMD_WIDTH contacts of one colour at a time (contact_solver_wide.c).
 #pragma once
 
 #include "solver_types.h"
@@ -11,6 +11,18 @@
 static inline float tbReboundSpeed(float restitution, float approach, float maxLinearSpeed)
 {
 	return tbMinFloat(-restitution * approach, tbMaxFloat(-approach, 2.0f * maxLinearSpeed));
+}
+
+/// A contact's impulse P at its anchors rA, rB (from the centres of mass): B receives +P and A −P,
+/// each through its inverse mass and inverse inertia (v += P/m, ω += (r × P)/I). The scalar solve,
+/// restitution and NGS's undoing of warm starts all apply impulses so.
+static inline void tbApplyContactImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbContactConstraint* c, tbVec2 rA,
+										 tbVec2 rB, tbVec2 P)
+{
+	sA->linearVelocity = tbMulSub(sA->linearVelocity, c->invMassA, P);
+	sA->angularVelocity -= c->invIA * tbCross(rA, P);
+	sB->linearVelocity = tbMulAdd(sB->linearVelocity, c->invMassB, P);
+	sB->angularVelocity += c->invIB * tbCross(rB, P);
 }
 
 /// Central friction (tbWorldDef::enableCentralFriction, contact_solver.c): the share of point 0 in

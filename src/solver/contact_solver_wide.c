@@ -1,21 +1,26 @@
-// The wide contact solver: the sequential impulses of contact_solver.c, four contacts at a time.
+// The wide contact solver: the sequential impulses of contact_solver.c, TB_SIMD_WIDTH contacts at
+// a time (4 with SSE2 or plain floats, 8 with AVX2).
 //
 // The constraint graph colouring (constraint_graph.c) puts contacts that share no moving body in
-// one colour, and the contacts of a colour in blocks of four. A block gathers the 8 bodies' hot
-// state into wide floats (the 32-byte tbSolverBody is two rows of four floats, so a gather is
-// four loads and a 4×4 transpose), runs the same per-point arithmetic as the scalar
-// tbSolveConstraint lane by lane, and scatters the velocities back. Within a colour the lanes are
-// independent, so this is exactly sequential impulses in the order colour by colour; the maths,
-// the bias policies and the references are in contact_solver.c and are not repeated here.
+// one colour, and the contacts of a colour in blocks of TB_SIMD_WIDTH. A block gathers its
+// 2·TB_SIMD_WIDTH bodies' hot state into wide floats (the 32-byte tbSolverBody is two rows of four
+// floats, so a gather is one load per lane and a 4×4 transpose per four lanes: one with four
+// lanes, two with eight), runs the same per-point arithmetic as the scalar tbSolveConstraint lane
+// by lane, and scatters the velocities back. Within a colour the lanes are independent, so this is
+// exactly sequential impulses in the order colour by colour; the maths, the bias policies and the
+// references are in contact_solver.c and are not repeated here.
 //
-// The SIMD is behind simd.h (SSE2, or four plain floats with lane-for-lane identical results).
-// A lane whose contact has one point runs the second point with normal and tangent mass 0, so its
-// impulses stay 0 and its bodies receive nothing. Restitution and the storing of impulses stay
-// scalar: they run once per step, reading the impulses from the lanes (tbLoadWideImpulses; a
-// contact with restitution is first copied back to its scalar constraint, tbUnpackWideConstraint).
+// The SIMD is behind simd.h (AVX2 or SSE2, or four plain floats with lane-for-lane identical
+// results). A lane whose contact has one point runs the second point with normal and tangent
+// mass 0, so its impulses stay 0 and its bodies receive nothing. Restitution and the storing of
+// impulses stay scalar: they run once per step, reading the impulses from the lanes
+// (tbLoadWideImpulses; a contact with restitution is first copied back to its scalar constraint,
+// tbUnpackWideConstraint).
 //
-// Measured (tumbler, 60 Hz, 4 sub-steps, perf): the solve passes went from 29 % of a 4.2 ms step
-// (scalar, bound by the dependency chain through each body's velocity) to 13 % of a 3.9 ms step.
+// Why wide: the scalar solve is bound by the dependency chain through each body's velocity (each
+// contact waits for the velocities the previous one on its bodies stored); the contacts of a
+// block share no moving body, so their chains run side by side in the lanes and the solve passes
+// take a much smaller share of the step (docs/methods.md, "Wide or scalar contact solver").
 #include "contact_solver.h"
 
 #include "tumble/constants.h"
@@ -51,7 +56,7 @@ void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex)
 
 // The block solve and its helpers are forced inline (TB_FORCE_INLINE, core.h): each pass
 // (TB_SOLVE_WIDE_LOOP) then gets its own copy with the policy and the `shared` choice folded away.
-// Left to itself the compiler kept one out-of-line copy (680 instructions) taking both at run time.
+// Left to itself the compiler kept one large out-of-line copy that tested both at run time.
 
 // The velocities (v.x, v.y, ω) of a block side's bodies (one per lane) and their step deltas
 // (Δp.x, Δp.y, Δq.c, Δq.s).

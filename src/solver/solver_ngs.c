@@ -76,15 +76,6 @@ void tbNGSPrepare(tbStepContext* context)
 	context->staticSoftness = rigid;
 }
 
-static void tbApplyPointImpulse(tbSolverBody* sA, tbSolverBody* sB, const tbContactConstraint* c, tbVec2 rA,
-								tbVec2 rB, tbVec2 P)
-{
-	sA->linearVelocity = tbMulSub(sA->linearVelocity, c->invMassA, P);
-	sA->angularVelocity -= c->invIA * tbCross(rA, P);
-	sB->linearVelocity = tbMulAdd(sB->linearVelocity, c->invMassB, P);
-	sB->angularVelocity += c->invIB * tbCross(rB, P);
-}
-
 // Block solver set-up of a constraint whose active points are known: K and K⁻¹ when both points
 // are active and K is well conditioned; otherwise, as 2.4, only the first point is solved for
 // velocity, and its partner's warm start is taken back (when `context` is given).
@@ -131,8 +122,8 @@ static void tbSetupBlock(tbNGSConstraint* info, tbContactConstraint* c, tbStepCo
 		info->active[1] = false;
 		tbContactConstraintPoint* cp = c->points + 1;
 		tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, n), tbMulSV(cp->tangentImpulse, tbRightPerp(n)));
-		tbApplyPointImpulse(context->bodies + c->indexA, context->bodies + c->indexB, c, cp->anchorA,
-							cp->anchorB, tbNeg(P));
+		tbApplyContactImpulse(context->bodies + c->indexA, context->bodies + c->indexB, c, cp->anchorA,
+							  cp->anchorB, tbNeg(P));
 		cp->normalImpulse = 0.0f;
 		cp->tangentImpulse = 0.0f;
 	}

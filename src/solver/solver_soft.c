@@ -17,30 +17,17 @@
 // resolved overlap does not turn into bounce (the "relax" of soft step); the last sub-step adds
 // finalRelaxIterations passes. Speculative gaps (s > 0) always use the rigid bias s/h. It is the
 // number of relaxing sweeps per step, wherever they fall, that lets a pile at its resting
-// stiffness settle, and its stiffness that sets how many it needs. Measured at 60 Hz, 4 sub-steps,
-// 10 s, sleep off where it says drift (tests/test_stability.c's scenes):
-//
-//   relaxing passes    settled  large_pyramid top      heavy_on_    touching  card houses  step, ms
-//   per sub-step+last  stiffness drift/speed/sag       pyramids     stack sag standing     pyramid
-//   2 + 0 (earlier)    60 Hz    0.013/0.002/0.199 m    asleep 332   0.035 m   20/20        6.07
-//   1 + 0              60 Hz    0.227/0.579/0.223 m    never        0.035 m   20/20
-//   1 + 2              60 Hz    0.064/0.031/0.195 m    asleep 478   0.035 m   20/20
-//   1 + 0              52.5 Hz  0.042/0.036/0.263 m    asleep 506   0.045 m   20/20
-//   1 + 1 (default)    52.5 Hz  0.008/0.006/0.257 m    asleep 392   0.045 m   20/20        5.55
-//   1 + 1              48 Hz    0.017/0.003/0.304 m    asleep 266   0.054 m (sways 0.12 m)
-//   1 + 0              45 Hz    0.017/0.003/0.342 m    asleep 249   0.064 m (sways 0.31 m)
-//   1 + 0              30 Hz    0.009/0.000/0.734 m    asleep 154   1.28 m (falls)
-//
-// (speed: the fastest box over the last second; step: large_pyramid, one worker, medians of 3
-// alternated runs of 120 steps.) Settled contacts at 1.75 × contactHertz with one relaxing pass
-// per sub-step and one more in the last keep every test's bound with three fewer passes a step
-// (12 → 9; the passes after the first in a sub-step are the cheap repeats, so the step is 9 %
-// faster, not 25 %); the sag grows as 1/ω² (a touching stack 0.035 → 0.045 m, Box2D v3: 0.135 m).
-// A softer settled spring needs fewer sweeps but the tall stack sways; a stiffer one needs two
-// per sub-step. Positions do not move between the relax passes of a sub-step, so the wide solver
-// computes each point's speculative bias in the first and reuses it in the others
-// (tb_biasRelaxRepeat: no position deltas gathered, bit-identical impulses). Perturbed card
-// houses stand in 20 of 20 in every row.
+// stiffness settle, and its stiffness that sets how many it needs: a stiffer spring rings longer
+// through a pile and needs more sweeps; a softer one settles with fewer but sags more (the sag
+// grows as 1/ω²) and lets a tall stack sway. The default, settled contacts at 1.75 × contactHertz
+// with one relaxing pass per sub-step and one more in the last, keeps every bound of
+// tests/test_stability.c with three fewer passes a step than two relaxing passes per sub-step at
+// the resting stiffness (at 4 sub-steps 4 + 4 + 1 = 9 passes against 4 + 8 = 12); the passes
+// after the first in a sub-step are the cheap repeats, so the step saves less than a quarter.
+// docs/methods.md ("Cost") has the table of passes against stiffness it was chosen from.
+// Positions do not move between the relax passes of a sub-step, so the wide solver computes each
+// point's speculative bias in the first and reuses it in the others (tb_biasRelaxRepeat: no
+// position deltas gathered, bit-identical impulses).
 //
 // Stiffness (tests/test_stability.c, docs/methods.md):
 // - the resting stiffness, restHertz = min(2·contactHertz, ¼ sub-step rate): a spring faster than
@@ -48,34 +35,29 @@
 //   and kinematic contacts always use it (the ground has infinite mass, so there is no mass ratio
 //   to protect; Box2D v3 makes the same choice);
 // - the settled stiffness, settledHertz = min(settledHertzRatio·contactHertz, ¼ sub-step rate),
-//   of dynamic contacts once settled (table above). A load F settles at F/(m_eff·ω²), so it is
-//   what keeps piles from sagging: the touching stack of 20 sinks 0.045 m at 52.5 Hz, 0.035 m at
-//   60 Hz, 0.136 m at 30 Hz, where it also sways (0.15 m) and, without extra relax passes,
-//   buckles and falls;
+//   of dynamic contacts once settled. A load F settles at F/(m_eff·ω²), so it is what keeps piles
+//   from sagging: a softer one lets a touching stack sink deeper and sway, and at Box2D v3's
+//   settled 30 Hz a tall stack buckles and falls without extra relax passes;
 // - a new dynamic contact keeps contactHertz for TB_SOFT_SETTLE_TIME of touching and then
 //   stiffens to settledHertz: impacts and bodies falling into place meet the soft spring (a stiff
-//   one rings through a pile and saturates friction: 47 of 60 perturbed card houses stand with
-//   the resting stiffness from the first step, 59 of 60 with the settling);
+//   one rings through a pile and saturates friction, and perturbed card houses fall that stand
+//   with the settling);
 // - a dynamic contact overlapping by more than TB_SOFT_DEEP_OVERLAP at the start of the step is
 //   a recovery (overlap recovery, the confined circles) and keeps contactHertz: a stiffer spring
-//   squeezes bodies through each other (confined: overlap 0.42 → 0.70 m when only overlaps
-//   beyond 0.2 m stay soft);
+//   squeezes bodies through each other (the confined circles overlap further when only deeper
+//   overlaps stay soft);
 // - contactHertzFollowsSubStep: contactHertz·subSteps/4 instead of contactHertz, so the soft
 //   error floor (sag ≈ g/ω²) shrinks as sub-steps are added instead of staying put.
 // None of these depends on the impulses. An earlier version stiffened each contact from the
 // previous step's impulse (so that its load settled at a fixed depth); that fed every change of
 // load back into the stiffness and kept heavy piles jittering (docs/methods.md).
 //
-// Rejected: friction in fewer passes (Box2D v3 solves friction only in its relaxing pass). Measured
-// at 4 sub-steps against friction in every pass (with the earlier 2 relaxing passes per sub-step): friction in the first relaxing pass only was
-// 10–15 % faster on the pyramids but made slopes creep 0.44 mm instead of 0.04 mm and left
-// large_pyramid's fastest box at 0.039 m/s after 9 s (0.002 m/s now); friction in the biased and
-// first relaxing passes only (5 % faster) left it at 0.69 m/s, in the biased and last only at
-// 0.34 m/s. The repeated passes settle the pile only when they also hold it by friction. (Measured
-// again with one relaxing pass per sub-step, 2026-11-27: without friction in the biased passes the
-// fastest box was at 0.094 m/s after 9 s, against 0.006; friction only in the last sub-step's
-// relaxing passes, 0.17 m/s.) What does make friction cheaper is one row per contact instead of one
-// per point (central friction, contact_solver.c): the same friction on a face, in every pass.
+// Rejected: friction in fewer passes (Box2D v3 solves friction only in its relaxing pass). Leaving
+// friction out of the biased pass, or out of all relaxing passes but one, makes a pass cheaper but
+// lets slopes creep and leaves the boxes of a large pyramid moving long after they should rest: the
+// repeated passes settle the pile only when they also hold it by friction (docs/performance.md, on
+// the gap to Box2D v3's solve). What does make friction cheaper is one row per contact instead of
+// one per point (central friction, contact_solver.c): the same friction on a face, in every pass.
 // Rejected: rigid contacts with position projection after each sub-step (fast, but it flings
 // deeply overlapping bodies apart: see the overlap recovery scene in docs/stability.md).
 #include "solver_methods.h"
@@ -87,17 +69,20 @@
 #include "tumble/constants.h"
 
 // Settling of a new dynamic contact: it keeps contactHertz for TB_SOFT_SETTLE_TIME of touching
-// (0.25 s, 15 steps at 60 Hz), then stiffens linearly to the resting stiffness over as long
-// again. The cards of a card house fall into place within about 15 steps: measured over 60
-// perturbed houses (x ±1 mm, ±3 mrad), 47 stand with the resting stiffness from the first step,
-// 57 with a linear ramp over the first 0.25 s, 59 with this one. The ramp moves the resting
-// depth of a loaded contact smoothly (from F/(m_eff·ω0²) to F/(m_eff·ω²)) instead of at once.
+// (0.25 s, 15 steps at 60 Hz), then stiffens linearly to the settled stiffness (settledHertz)
+// over as long again. The time is about how long the cards of a card house take to fall into
+// place: stiff from the first step, the spring rings through the house and some perturbed houses
+// fall; a ramp that starts at once stiffens while the cards still move, and holding the soft
+// spring first stands the most (tests/test_stability.c). The ramp moves the resting depth of a
+// loaded contact smoothly (from F/(m_eff·ω0²) to F/(m_eff·ω²)) instead of at once.
 #define TB_SOFT_SETTLE_TIME 0.25f
 
 // Overlap (m) beyond which a dynamic contact is a recovery and stays soft: 10 × linear slop =
-// 0.05 m. Recoveries start far deeper (overlap recovery 0.25 m, confined circles 0.3 to 0.5 m);
-// loads rest well above it once stiff, and a 100 kg box on a 1 kg one rests at 3.6 cm while its
-// contact is still soft, which a lower threshold (0.02 m) would take for a recovery and leave soft.
+// 0.05 m. It trades the two ways of being wrong: recoveries start far deeper than that (the
+// overlap recovery and confined-circles scenes are built with overlaps of a few tenths of a
+// metre), and loads rest well above it once stiff; but a heavy box on a light one rests a few
+// centimetres deep while its contact is still soft (F/(m_eff·ω²) at contactHertz), which a
+// lower threshold would take for a recovery and leave soft for good.
 #define TB_SOFT_DEEP_OVERLAP (10.0f * TB_LINEAR_SLOP)
 
 void tbSoftPrepare(tbStepContext* context)

@@ -141,14 +141,16 @@ typedef enum tbBiasPolicy
 } tbBiasPolicy;
 
 /// Colours of the constraint graph (constraint_graph.c); at most 32 (one bit each in a uint32_t
-/// mask per body). Measured: the pyramids need at most 9, the tumbler 11, with no overflow; 24 leaves
-/// room for crowded bodies.
+/// mask per body). Greedy colouring needs at most one more colour than a body has constraints, and
+/// a body in a pile has few, so 24 leaves room for crowded bodies while the per-colour tables stay
+/// small; a constraint that finds no colour goes to the scalar overflow.
 #define TB_GRAPH_COLOR_COUNT 24
 
 /// Most island partitions of a step (constraint_graph.c): one per worker, up to this many.
 #define TB_MAX_PARTITIONS 8
 
-/// The accumulated impulses of one manifold point of four contacts, lane by lane (N·s): 48 bytes.
+/// The accumulated impulses of one manifold point of TB_SIMD_WIDTH contacts, lane by lane (N·s):
+/// 12 bytes a lane (48 with four lanes).
 typedef struct tbWideImpulses
 {
 	tbFloatW normalImpulse;
@@ -156,7 +158,8 @@ typedef struct tbWideImpulses
 	tbFloatW maxNormalImpulse; ///< the largest normal impulse of the step (hit events)
 } tbWideImpulses;
 
-/// The rest of one manifold point of four contacts, lane by lane (structure of arrays): 128 bytes.
+/// The rest of one manifold point of TB_SIMD_WIDTH contacts, lane by lane (structure of arrays): 32
+/// bytes a lane (128 with four lanes).
 typedef struct tbWideContactPoint
 {
 	tbFloatW anchorAX, anchorAY; ///< m, as tbContactConstraintPoint
@@ -172,9 +175,10 @@ typedef struct tbWideContactPoint
 /// TB_SIMD_WIDTH contacts of one graph colour, solved together (contact_solver_wide.c): 608 bytes
 /// with four lanes (SSE2), 1,216 with eight (AVX2); the array starts on a 64-byte line
 /// (constraint_graph.c). Padding lanes have both bodies at the static stand-in and every number 0.
-/// The impulses of both points come first, in the block's first 96 bytes (four lanes): the store
+/// The impulses of both points come first, in the block's first 24·TB_SIMD_WIDTH bytes: the store
 /// after the solve, which reads only them, lane by lane in contact-id order and so from blocks long
-/// gone from the cache, then reads two lines per contact instead of four. Which constraint a lane
+/// gone from the cache, then reads the lines of those bytes per contact instead of lines spread
+/// over the whole block. Which constraint a lane
 /// holds is tbStepContext::wideLocation's inverse; the blocks do not repeat it.
 typedef struct tbWideContactConstraint
 {
@@ -224,7 +228,7 @@ typedef struct tbStepContext
 	int restitutionCount; ///< constraints with restitution > 0 (tbApplyRestitution skips when 0)
 
 	// Wide solver (null when the scalar reference solver runs): constraints grouped by colour in
-	// blocks of four, and the constraints that found no colour, by index.
+	// blocks of TB_SIMD_WIDTH, and the constraints that found no colour, by index.
 	tbWideContactConstraint* wideConstraints;
 	int wideCount;
 	int* overflowConstraints;
@@ -235,7 +239,7 @@ typedef struct tbStepContext
 	int* locationById;
 	int colorCount;											///< colours in use this step
 	int colorBlockStart[TB_GRAPH_COLOR_COUNT + 1]; ///< blocks of colour k: [start[k], start[k + 1])
-	/// Island partitions (constraint_graph.c, tbFindPartitions), 0 when there are none: partition p
+	/// Island partitions (constraint_graph.c, tbCutPartitions), 0 when there are none: partition p
 	/// is the solver bodies [partitionBodyStart[p], partitionBodyStart[p + 1]) and the contacts on
 	/// them, which no contact links to another partition's bodies. Each colour's blocks then hold
 	/// one partition's contacts after another: partition p's blocks of colour k are

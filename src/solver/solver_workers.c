@@ -21,10 +21,10 @@
 // Island partitions. When the colouring has cut the awake bodies into one run per worker that no
 // contact links (constraint_graph.c: separate piles), each worker takes its run through the whole
 // stage list alone (tbRunPartition): no claims and no barrier per stage, and no body's state moves
-// between the workers' caches. Results are the same bit for bit. Measured on many_pyramids (400
-// separate pyramids, 2 workers): the shared stages' workers spent about 5 % of the sub-steps
-// waiting at the barriers (0.4 ms a step each, of 125 stages); with partitions the step takes
-// 0.95–0.98 of that (docs/performance.md, "Island partitions").
+// between the workers' caches. Results are the same bit for bit. A step has a stage per colour
+// and pass in every sub-step, each ending at a barrier where the workers wait for the slowest;
+// with separate piles (many_pyramids) partitions take that waiting out of the step
+// (docs/performance.md, "Island partitions").
 #include "solver_workers.h"
 
 #include "contact_solver.h"
@@ -37,8 +37,8 @@
 #include <stdalign.h>
 #include <stdatomic.h>
 
-/// Bodies per unit of the integration stages, blocks (of four contacts) per unit of a colour,
-/// joints per unit of a joint colour.
+/// Bodies per unit of the integration stages, blocks (of TB_SIMD_WIDTH contacts) per unit of a
+/// colour, joints per unit of a joint colour.
 #define TB_BODIES_PER_UNIT 64
 #define TB_BLOCKS_PER_UNIT 4
 #define TB_JOINTS_PER_UNIT 16

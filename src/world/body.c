@@ -861,8 +861,8 @@ bool tbBody_ApplyTorque(tbBodyId bodyId, float torque, bool wake)
 // overflow (0 · ∞ = NaN). An impulse that
 // would leave a velocity that is not a finite float is refused before the body is woken: the step
 // clamps any finite speed, but no direction survives ∞ − ∞.
-static bool tbApplyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, const tbPos* point, float angularImpulse,
-						   bool wake)
+static bool tbApplyBodyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, const tbPos* point, float angularImpulse,
+							   bool wake)
 {
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
@@ -904,7 +904,7 @@ bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbPos point, boo
 	{
 		return false;
 	}
-	return tbApplyImpulse(bodyId, f, impulse, &point, 0.0f, wake);
+	return tbApplyBodyImpulse(bodyId, f, impulse, &point, 0.0f, wake);
 }
 
 bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wake)
@@ -914,7 +914,7 @@ bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wak
 	{
 		return false;
 	}
-	return tbApplyImpulse(bodyId, f, impulse, NULL, 0.0f, wake);
+	return tbApplyBodyImpulse(bodyId, f, impulse, NULL, 0.0f, wake);
 }
 
 bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
@@ -924,7 +924,7 @@ bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
 	{
 		return false;
 	}
-	return tbApplyImpulse(bodyId, f, tb_vec2_zero, NULL, impulse, wake);
+	return tbApplyBodyImpulse(bodyId, f, tb_vec2_zero, NULL, impulse, wake);
 }
 
 float tbBody_GetMass(tbBodyId bodyId)

@@ -551,8 +551,8 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 /// that were swept by continuous collision last step always get a new manifold.
 /// Rejected: keeping the empty manifold of a polygon pair while it moves less than its
 /// separating-axis gap less the margin (exact, as Box2D v3 keeps non-touching pairs, which it does
-/// inexactly): no gain measured over whole runs of tumbler, spinner, junkyard and smash (1.02× the
-/// time), most pairs apart being ruled out by their tight boxes before any narrow phase.
+/// inexactly): no gain over whole runs of the benchmark piles, since most pairs apart are ruled out
+/// by their tight boxes before any narrow phase, and the test itself costs about what it saves.
 // cos(TB_RECYCLE_ANGLE) = cos(2°), rounded to float.
 #define TB_RECYCLE_COS_ANGLE 0.99939083f
 
@@ -571,7 +571,7 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 	tbTransform relative = tbInvMulWorldTransforms(xfA, xfB);
 	float tolerance = tbMinFloat(recycleDistance, base->margin - margin + TB_SPECULATIVE_DISTANCE);
 	// |turn| < TB_RECYCLE_ANGLE ⟺ cos(turn) > cos(TB_RECYCLE_ANGLE): the cosine is the dot product of
-	// the two unit rotations, with no atan2 (which cost 4 % of a pyramid step here).
+	// the two unit rotations: no atan2 for every touching contact in every step.
 	float cosTurn = base->relative.q.c * relative.q.c + base->relative.q.s * relative.q.s;
 	// Written so that NaN fails: a non-finite pose always gets a new manifold.
 	if (!(cosTurn > TB_RECYCLE_COS_ANGLE && tbMovedLessThan(base->relative, relative, bodyA, bodyB, tolerance)))
@@ -603,9 +603,9 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 /// is a face normal, so their manifolds can be carried along. Circles and capsules cannot: their
 /// contact point slides over the round surface as the body turns and their normal follows the line
 /// between centres, not either body. Carrying them pumped energy into a jam of deeply overlapping
-/// circles (the stability table's confined 625: the centre line turned up to 1.5 degrees away from
-/// the kept normal, and the jam never came to rest: kinetic energy 42 J after 10 s, 6e-8 J when
-/// recomputed). Their closed forms are cheap anyway.
+/// circles (the stability table's confined circles: the centre line turned away from the kept
+/// normal, so every kept impulse pushed a little off the line, and the jam never came to rest; with
+/// the manifold recomputed it does). Their closed forms are cheap anyway.
 static bool tbHasMaterialFeatures(const tbShape* shape)
 {
 	return shape->geometry.type == tb_polygonShape || shape->geometry.type == tb_segmentShape;
@@ -824,8 +824,8 @@ static void tbGatherAwakeContacts(tbWorld* world)
 			awake[world->awakeBodies[i]] = 1;
 		}
 		// Locals: through world-> each append reloaded and stored the count (the int stores may
-		// alias the world's fields), a store-to-load chain that made this walk a third of the
-		// collide stage's serial time on many_pyramids.
+		// alias the world's fields), a store-to-load chain through every contact, in a walk that
+		// runs on one thread before the narrow phase's workers start.
 		const tbBodyPair* bodies = world->cache.contactBodies;
 		int* stepContacts = world->cache.stepContacts;
 		int count = 0;
@@ -913,10 +913,10 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 	{
 		const tbContact* ahead = world->contacts + ids[i + TB_PREFETCH_AHEAD];
 		// A contact recycled last step most often is again, and reads its shapes' first line only
-		// (box, body, proxy); any other reads their geometry too, and nothing after it (the whole
-		// 280-byte shape: spinner's narrow phase 4 % slower). Prefetching the geometry for every
-		// contact: compounds 8 % faster (touching pairs that moved too far to be recycled), the
-		// pyramids 3–4 % slower (every pair recycled).
+		// (box, body, proxy); any other reads their geometry too, and nothing after it (prefetching
+		// the whole 280-byte shape fetches lines nobody reads). Prefetching the geometry for every
+		// contact would help scenes whose touching pairs move too far to be recycled and cost
+		// scenes that recycle every pair (a pyramid), so the flags choose per contact.
 		const uint32_t recycling = tb_contactRecyclable | tb_contactRecycled;
 		int shapeBytes = (ahead->flags & recycling) == recycling ? 32 : (int)(offsetof(tbShape, geometry) + sizeof(tbGeometry));
 		tbPrefetch(world->shapes + ahead->shapeIdA, shapeBytes);
@@ -1107,7 +1107,7 @@ void tbReportHitEvents(tbWorld* world)
 {
 	if (world->hitContactCount == 0)
 	{
-		return; // no contact wants hit events: nothing to walk (1 % of large_pyramid's step went here)
+		return; // no contact wants hit events (the common case): no walk over every touching contact
 	}
 	float threshold = world->def.hitEventThreshold;
 	// Contact-id order: the walk streams through contact memory (the solve order would not).
@@ -1215,7 +1215,8 @@ static int tbCollectContacts(const tbWorld* world, const tbBody* body, int shape
 	return count;
 }
 
-static bool tbCheckCapacity(const char* f, const void* array, int capacity)
+// An output array the caller passes with its capacity: capacity ≥ 0, and an array when it is > 0.
+static bool tbCheckOutputArray(const char* f, const void* array, int capacity)
 {
 	if (capacity < 0 || (capacity > 0 && array == NULL))
 	{
@@ -1237,7 +1238,7 @@ int tbBody_GetContactData(tbBodyId bodyId, tbContactData* contactData, int capac
 	const char* f = "tbBody_GetContactData";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, false);
-	if (body == NULL || tbCheckCapacity(f, contactData, capacity) == false)
+	if (body == NULL || tbCheckOutputArray(f, contactData, capacity) == false)
 	{
 		return 0;
 	}
@@ -1256,7 +1257,7 @@ int tbShape_GetContactData(tbShapeId shapeId, tbContactData* contactData, int ca
 	const char* f = "tbShape_GetContactData";
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
-	if (shape == NULL || tbCheckCapacity(f, contactData, capacity) == false || shape->isSensor)
+	if (shape == NULL || tbCheckOutputArray(f, contactData, capacity) == false || shape->isSensor)
 	{
 		return 0;
 	}
@@ -1276,7 +1277,7 @@ int tbShape_GetSensorData(tbShapeId shapeId, tbShapeId* visitorIds, int capacity
 	const char* f = "tbShape_GetSensorData";
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, false);
-	if (shape == NULL || tbCheckCapacity(f, visitorIds, capacity) == false || shape->isSensor == false)
+	if (shape == NULL || tbCheckOutputArray(f, visitorIds, capacity) == false || shape->isSensor == false)
 	{
 		return 0;
 	}

@@ -9,9 +9,8 @@
 // every body, and every kinematic body it touches, has rested for TB_TIME_TO_SLEEP. Sleeping bodies
 // leave the awake set, so they cost nothing in any stage. The islands are found again each step,
 // from dense arrays, when some body has rested (persistent islands as in Box2D v3 would avoid
-// even that, but need island splitting). Junkyard, where rested and moving bodies mix in one pile:
-// 0.20 ms a step, against 0.67 ms for the depth-first search from each rested body it replaced
-// (7,000 contact-list links a step, a cache miss each) and 0.18 ms for Box2D v3.
+// even that, but need island splitting); the union–find below says why it replaced a search,
+// and docs/methods.md ("Sleeping") compares the costs.
 #include "island.h"
 
 #include "world.h"
@@ -19,6 +18,7 @@
 #include "core/arena.h"
 #include "core/array.h"
 #include "core/sort.h"
+#include "core/union_find.h"
 #include "joints/joint.h"
 
 #include <stdint.h>
@@ -26,23 +26,21 @@
 
 // Solve order of the contacts. Gauss–Seidel is order dependent: the contacts gathered body by
 // body (bottom row first, left to right in a pyramid) form a sweep across the structure, and a
-// fixed sweep direction biases the result sideways. Measured on the 5,050-box pyramid (60 Hz, 4
-// sub-steps, soft step): gathered order drifts the top box 0.98 m sideways in 5 s (the reversed
-// order drifts −0.88 m); sorting by contact id or by body pair −0.37 m; alternating the sweep
-// direction per sub-step 0.6–0.7 m; greedy graph colouring 0.97 m; shuffling blocks of 4–16
-// neighbouring contacts 0.3–0.6 m. Scattering single contacts removes the bias: drift
-// |0.01–0.05| m over 10 s for different hash seeds, sag 0.84 m instead of 0.91 m, kinetic
-// energy 1 J instead of 27 J. So the contacts are bucketed by a hash of their id (stable while the
-// contact lives, independent of memory addresses, so the order is deterministic) into
-// TB_SOLVE_ORDER_BUCKETS buckets with a stable counting sort; within a bucket the gathered order
-// (contact-id order: contacts made in one step get consecutive ids in shape-pair order, which keeps
-// some locality) is kept (cost: about +10% solve time on the large pyramid, from the scattered
-// body accesses). 4 buckets leave 0.11 m of drift, 8 0.05 m, 16 0.04 m.
+// fixed sweep direction biases the result sideways: in a tall pyramid the top drifts to one side
+// (the reversed order drifts as far to the other). Orders with structure of their own keep a
+// bias: sorting by contact id or by body pair, alternating the sweep direction per sub-step, a
+// greedy colouring in gathered order, shuffling small blocks of neighbouring contacts. Scattering
+// single contacts removes it, and the pile also sags less and holds less kinetic energy. So the
+// contacts are bucketed by a hash of their id (stable while the contact lives, independent of
+// memory addresses, so the order is deterministic) into TB_SOLVE_ORDER_BUCKETS buckets with a
+// stable counting sort; within a bucket the gathered order (contact-id order: contacts made in
+// one step get consecutive ids in shape-pair order, which keeps some locality) is kept. The cost
+// is locality: the solve reaches its bodies in a scattered order. Fewer buckets keep more of the
+// gathered sweep and leave more drift; 16 leave next to none.
 // The wide solver (the default, constraint_graph.c) then solves colour by colour, the colours
-// assigned greedily in this order, so each colour is a scattered set too. Measured 2026-11-24 on
-// the same pyramid, sleep off: top box drift after 10 s and 20 s, scalar 0.09 and 0.11 m, wide
-// 0.23 and 0.24 m (sag 0.33 m in both); the 210-box pyramid of the stability table drifts 0.025 m
-// with either.
+// assigned greedily in this order, so each colour is a scattered set too; a large pyramid drifts
+// somewhat more under the wide order than the scalar one, the pyramid of the stability table
+// no more (docs/methods.md, "Wide or scalar contact solver").
 #define TB_SOLVE_ORDER_BUCKETS 16
 
 static inline int tbSolveOrderBucket(int contactId)
@@ -251,15 +249,16 @@ void tbIslandStage(tbWorld* world)
 	tbOrderSolverContacts(world);
 }
 
-// The sleep stage's islands, found by union–find (Tarjan 1975, path halving) over the awake
-// indices instead of a depth-first search from each rested body. The links are the ones a search
+// The sleep stage's islands, found by union–find (core/union_find.h: Tarjan 1975, path halving;
+// each island's root is its smallest awake index) over the awake indices instead of a
+// depth-first search from each rested body. The links are the ones a search
 // would follow: this step's solver contacts whose both bodies are dynamic (world->cache.solverContacts,
 // gathered by the island stage from the same touching flags, and read through the narrow phase's
 // dense keys where they hold) and the joints between awake dynamic bodies. Static bodies link
 // nothing; a kinematic body links nothing either (it does not carry motion from one island to
 // another) but belongs to every island it touches. The cost is a pass over dense arrays: the search
 // it replaces followed contact lists, a cache miss per link, and in a pile where rested and moving
-// bodies mix (junkyard) it walked 7,000 links a step to learn that nothing could sleep.
+// bodies mix (junkyard) it walked thousands of links a step to learn that nothing could sleep.
 
 enum
 {
@@ -268,32 +267,6 @@ enum
 	tb_sleepKeepAwake = 4,	   ///< on a root: some member, or some kinematic body it touches, has not rested
 	tb_sleepTouchesAwake = 8,  ///< on a kinematic body: touches an island that stays awake
 };
-
-static int tbFindIsland(int* parent, int i)
-{
-	while (parent[i] != i)
-	{
-		parent[i] = parent[parent[i]];
-		i = parent[i];
-	}
-	return i;
-}
-
-// The smaller root stays the root: each island's root is its smallest awake index, whatever the
-// order of the links.
-static void tbLinkIslands(int* parent, int a, int b)
-{
-	a = tbFindIsland(parent, a);
-	b = tbFindIsland(parent, b);
-	if (a < b)
-	{
-		parent[b] = a;
-	}
-	else if (b < a)
-	{
-		parent[a] = b;
-	}
-}
 
 // A dynamic body touching (or joined to) a kinematic one, by awake index.
 typedef struct tbKinematicTouch
@@ -320,7 +293,7 @@ static void tbAddSleepLink(tbSleepLinks* links, int a, bool dynamicA, int b, boo
 	}
 	if (dynamicA && dynamicB)
 	{
-		tbLinkIslands(links->parent, a, b);
+		tbLinkRoots(links->parent, a, b);
 	}
 	else if (dynamicA != dynamicB)
 	{
@@ -408,7 +381,7 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 	{
 		if ((state[i] & (tb_sleepDynamic | tb_sleepRested)) == tb_sleepDynamic)
 		{
-			state[tbFindIsland(links->parent, i)] |= tb_sleepKeepAwake;
+			state[tbFindRoot(links->parent, i)] |= tb_sleepKeepAwake;
 		}
 	}
 	for (int t = 0; t < links->touchCount; ++t)
@@ -416,13 +389,13 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 		const tbKinematicTouch* touch = links->touches + t;
 		if ((state[touch->kinematicIndex] & tb_sleepRested) == 0)
 		{
-			state[tbFindIsland(links->parent, touch->dynamicIndex)] |= tb_sleepKeepAwake;
+			state[tbFindRoot(links->parent, touch->dynamicIndex)] |= tb_sleepKeepAwake;
 		}
 	}
 	for (int t = 0; t < links->touchCount; ++t)
 	{
 		const tbKinematicTouch* touch = links->touches + t;
-		if ((state[tbFindIsland(links->parent, touch->dynamicIndex)] & tb_sleepKeepAwake) != 0)
+		if ((state[tbFindRoot(links->parent, touch->dynamicIndex)] & tb_sleepKeepAwake) != 0)
 		{
 			state[touch->kinematicIndex] |= tb_sleepTouchesAwake;
 		}
@@ -431,7 +404,7 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 	for (int i = 0; i < n; ++i)
 	{
 		bool sleeps = (state[i] & tb_sleepDynamic) != 0
-						  ? (state[tbFindIsland(links->parent, i)] & tb_sleepKeepAwake) == 0
+						  ? (state[tbFindRoot(links->parent, i)] & tb_sleepKeepAwake) == 0
 						  : (state[i] & (tb_sleepRested | tb_sleepTouchesAwake)) == tb_sleepRested;
 		if (sleeps)
 		{
@@ -452,7 +425,7 @@ static int tbCountRestedIslands(const tbWorld* world, const tbSleepLinks* links,
 		{
 			continue;
 		}
-		int root = (state[i] & tb_sleepDynamic) != 0 ? tbFindIsland(links->parent, i) : i;
+		int root = (state[i] & tb_sleepDynamic) != 0 ? tbFindRoot(links->parent, i) : i;
 		islands += counted[root] == 0 ? 1 : 0;
 		counted[root] = 1;
 	}

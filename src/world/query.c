@@ -226,7 +226,7 @@ static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int sh
 
 // The collision layer answers for shapes and placements within TB_MAX_COORDINATE: a ray origin
 // beyond it is refused. A translation may have any finite length.
-static bool tbCheckRay(const char* f, tbPos origin, tbVec2 translation)
+static bool tbCheckWorldRay(const char* f, tbPos origin, tbVec2 translation)
 {
 	return tbCheckPosition(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
 }
@@ -236,7 +236,7 @@ bool tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQuer
 {
 	const char* f = "tbWorld_CastRay";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
-	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckRay(f, origin, translation) == false)
+	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckWorldRay(f, origin, translation) == false)
 	{
 		return false;
 	}

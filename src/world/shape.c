@@ -164,16 +164,18 @@ static tbAABB tbSweepBox(tbAABB box, tbVec2 d, float pad)
 /// ends is largest halfway, where it is the sagitta |r|·(1 − cos(Δθ/2)). So the box around the
 /// shape's boxes at the start and at the predicted end pose, grown by maxExtent·(1 − cos(Δθ/2)),
 /// holds the whole sweep. Growing by the arc instead counted a spinning body's turn in every
-/// direction: the spinner kept 29,100 contacts where Box2D v3 keeps 23,200 (24,500 with the exact
-/// bound). A round shape about its centre of mass does not grow at all.
+/// direction, and a spinning blade (the spinner) kept many more contacts than Box2D v3; with the
+/// exact bound it keeps about as many (docs/methods.md, "Broad-phase boxes"). A round shape about
+/// its centre of mass does not grow at all.
 ///
 /// When the fat box no longer contains that sweep it is re-made as the sweep enlarged by the margin
 /// min(TB_AABB_MARGIN, TB_AABB_MARGIN_FRACTION·maxExtent), the hysteresis that keeps a resting or
 /// jiggling body from moving its proxy every step. A moving body whose d exceeds the margin gets a
 /// new box every step. Rejected: sweeping the new box by 2·d so that steady motion stays inside it
-/// for two steps (half the proxy moves on the tumbler): every box then reaches a step further ahead
-/// than the body can go, and bodies moving together overlap each other's boxes (the tumbler kept
-/// 13,278 contacts where Box2D v3 keeps 8,823; now 9,052, with no more time per step).
+/// for two steps (half the proxy moves of a tumbling pile): every box then reaches a step further
+/// ahead than the body can go, and bodies moving together overlap each other's boxes (a tumbling
+/// pile kept far more contacts than Box2D v3; with one step's sweep about as many, at no more
+/// time per step).
 /// The shapes' tight boxes, and the fat boxes of those whose sweep left their fat box, which are
 /// flagged (shape->proxyMoved) for tbMoveFlaggedProxies: writes only this body's shapes, so
 /// bodies may be done on several workers at once.
@@ -226,8 +228,8 @@ bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
 		pad = tbMinFloat(arc, cap);
 		// The margin is hysteresis for a body that stays inside its box for a while; one that moves
 		// farther than the margin in a step gets a new box every step anyway, and the margin only
-		// makes it overlap more boxes (bodies falling together in the washer: 32,600 contacts at step
-		// 60 with it, 13,900 without; Box2D v3 31,900).
+		// makes it overlap more boxes (bodies falling together, as in the washer, then keep many
+		// more contacts, for nothing; docs/methods.md, "Broad-phase boxes").
 		margin = length > margin ? 0.0f : margin;
 		// A turn of at most half a radian whose arc is within the reach: bounded exactly (a larger
 		// one keeps the arc, which is then close to the exact bound anyway).

@@ -15,9 +15,9 @@
 #include "solver/solver.h"
 
 #include "core/array.h"
+#include "core/sort.h"
 
 #include <stddef.h>
-#include <stdlib.h>
 #include <string.h>
 
 static tbWorld* s_worlds[TB_MAX_WORLDS];
@@ -153,7 +153,7 @@ static bool tbCheckWorkers(const tbWorldDef* def, const char* f)
 }
 
 /// Capacities are counts: ≥ 0, and small enough that the reserved arrays fit an int of bytes.
-static bool tbCheckCapacity(const char* f, const tbCapacity* c)
+static bool tbCheckWorldCapacity(const char* f, const tbCapacity* c)
 {
 	const int counts[5] = {c->staticShapeCount, c->dynamicShapeCount, c->staticBodyCount, c->dynamicBodyCount,
 						   c->contactCount};
@@ -213,7 +213,7 @@ static bool tbCheckWorldDef(const tbWorldDef* def)
 		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
 		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
 		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f) && tbCheckWorkers(def, f) &&
-		   tbCheckCapacity(f, &def->capacity);
+		   tbCheckWorldCapacity(f, &def->capacity);
 }
 
 /// Auto starts with the dynamic tree: it costs nothing for sleeping and static bodies, handles any
@@ -223,13 +223,14 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 	return method == tb_broadPhaseAuto ? tb_broadPhaseTree : method;
 }
 
-// The automatic broad phase, from the scene's statistics over a window of steps. Measured with
-// tumble-bench (catalogue scenes, every method) and tumble-bench-broadphase (boxes drifting): the
-// spatial hash is the fastest when many proxies move each step and the boxes are of similar sizes
-// (junkyard 1.5×, rain 1.36×, the ball pile 1.14×, the tumbler 1.1× faster than the tree; 2× at
-// 16k–64k uniform boxes), and the slowest when sizes spread over 100× (3× slower at 64k: large
-// boxes cover many cells). The tree wins when few proxies move (a settled pile: it does nothing for
-// unmoved proxies while the hash re-hashes every movable proxy; many_pyramids 4 % faster).
+// The automatic broad phase, from the scene's statistics over a window of steps, chosen from
+// tumble-bench (catalogue scenes, every method) and tumble-bench-broadphase (boxes drifting;
+// docs/methods.md has the figures): the spatial hash is the fastest when many proxies move each
+// step and the boxes are of similar sizes (a box then covers few cells and meets only its near
+// neighbours, where the tree pays a re-insertion or a rebuild per moved proxy), and the slowest
+// when sizes spread widely (large boxes cover many cells, small ones crowd large cells). The tree
+// wins when few proxies move (a settled pile: it does nothing for unmoved proxies while the hash
+// re-hashes every movable proxy).
 // Sort-and-sweep wins only for few, sparse, similar-size boxes, where all three cost little. So:
 // the hash when more than a quarter of the movable proxies move per step and the 90th percentile
 // of their sizes is within TB_AUTO_HASH_SPREAD of the median; else sort-and-sweep when few movable
@@ -243,12 +244,6 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 #define TB_AUTO_FIRST_WINDOW 15
 #define TB_AUTO_SWEEP_MAX_PROXIES 4096
 #define TB_AUTO_HASH_SPREAD 4.0f
-
-static int tbCompareSizes(const void* a, const void* b)
-{
-	float x = *(const float*)a, y = *(const float*)b;
-	return x < y ? -1 : (x > y ? 1 : 0);
-}
 
 /// 90th percentile over median of the movable proxies' largest box side (1 without proxies).
 static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
@@ -268,7 +263,7 @@ static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
 			sides[n++] = tbMaxFloat(d.x, d.y);
 		}
 	}
-	qsort(sides, (size_t)n, sizeof(float), tbCompareSizes);
+	tbSortFloats(sides, n);
 	float median = sides[n / 2], high = sides[(9 * n) / 10];
 	tbFree(sides, movable * (int)sizeof(float));
 	return median > 0.0f ? high / median : TB_AUTO_HASH_SPREAD + 1.0f;
@@ -277,11 +272,7 @@ static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
 static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 {
 	const tbBroadPhase* bp = &world->broadPhase;
-	int statics = 0;
-	for (int key = 0; key < bp->table.capacity; ++key)
-	{
-		statics += bp->table.proxies[key].isFree == false && bp->table.proxies[key].type == tb_proxyStatic ? 1 : 0;
-	}
+	int statics = world->staticProxyCount; // kept by tbCreateShapeProxy and tbDestroyShapeProxy
 	int movable = bp->table.count - statics;
 	float window = (float)world->broadPhaseVote.windowSteps;
 	float movedFraction = movable > 0 ? (float)world->broadPhaseVote.movedProxies / (window * (float)movable) : 0.0f;
