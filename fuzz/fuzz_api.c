@@ -482,7 +482,8 @@ static void TryForbidden(int which, tbWorldId world, tbShapeId shape, bool inSte
 		case 4:
 		{
 			bool changed = true;
-			EXPECT_REFUSED(changed = tbShape_SetFilter(shape, tbDefaultFilter()), changed == false, "tbShape_SetFilter");
+			EXPECT_REFUSED(changed = tbShape_SetFilter(shape, tbDefaultFilter()), changed == false,
+						   "tbShape_SetFilter");
 			break;
 		}
 		case 5:
@@ -579,7 +580,8 @@ static void TryForbidden(int which, tbWorldId world, tbShapeId shape, bool inSte
 		default:
 		{
 			tbAABB bounds = {{1.0f, 1.0f}, {1.0f, 1.0f}};
-			EXPECT_REFUSED(bounds = tbWorld_GetBounds(world), bounds.lowerBound.x == 0.0f && bounds.upperBound.x == 0.0f,
+			EXPECT_REFUSED(bounds = tbWorld_GetBounds(world),
+						   bounds.lowerBound.x == 0.0f && bounds.upperBound.x == 0.0f,
 						   "tbWorld_GetBounds");
 			break;
 		}
@@ -2258,8 +2260,9 @@ static void CheckIds(Harness* h)
 		const List* list = h->lists + k;
 		for (int i = 0; i < list->deadCount; ++i)
 		{
-			FUZZ_CHECK(IsValid((Kind)k, list->dead[i]) == false, "the id of a destroyed %s (index %d, generation %d) is valid",
-					   s_kindNames[k], list->dead[i].index1, list->dead[i].generation);
+			FUZZ_CHECK(IsValid((Kind)k, list->dead[i]) == false,
+					   "the id of a destroyed %s (index %d, generation %d) is valid", s_kindNames[k],
+					   list->dead[i].index1, list->dead[i].generation);
 		}
 		for (int i = 0; i < list->liveCount; ++i)
 		{
@@ -2303,7 +2306,8 @@ static void CheckEvents(Harness* h, int slot)
 	for (int i = 0; i < contacts.beginCount; ++i)
 	{
 		const tbContactBeginTouchEvent* e = contacts.beginEvents + i;
-		FUZZ_CHECK(tbShape_IsValid(e->shapeIdA) && tbShape_IsValid(e->shapeIdB), "begin event %d with a stale shape", i);
+		FUZZ_CHECK(tbShape_IsValid(e->shapeIdA) && tbShape_IsValid(e->shapeIdB), "begin event %d with a stale shape",
+				   i);
 		FUZZ_CHECK(tbShape_IsSensor(e->shapeIdA) == false && tbShape_IsSensor(e->shapeIdB) == false,
 				   "begin event %d for a sensor", i);
 		if (tbContact_IsValid(e->contactId))
@@ -2365,7 +2369,8 @@ static void CheckEvents(Harness* h, int slot)
 		if (tbContact_IsValid(h->contacts[i]))
 		{
 			tbContactData data = tbContact_GetData(h->contacts[i]);
-			FUZZ_CHECK(tbShape_IsValid(data.shapeIdA) && tbShape_IsValid(data.shapeIdB), "a live contact has a stale shape");
+			FUZZ_CHECK(tbShape_IsValid(data.shapeIdA) && tbShape_IsValid(data.shapeIdB),
+					   "a live contact has a stale shape");
 		}
 	}
 	tbAABB bounds = tbWorld_GetBounds(world);
