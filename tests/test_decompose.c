@@ -528,7 +528,8 @@ static double LargestExcursion(const tbVec2* outline, int n, int count)
 			for (int s = 0; s < 64; ++s)
 			{
 				double t = (double)s / 64.0;
-				largest = fmax(largest, OutsideBy(a.x + t * ((double)b.x - a.x), a.y + t * ((double)b.y - a.y), outline, n));
+				double qx = a.x + t * ((double)b.x - a.x), qy = a.y + t * ((double)b.y - a.y);
+				largest = fmax(largest, OutsideBy(qx, qy, outline, n));
 			}
 		}
 	}
@@ -591,4 +592,36 @@ Test(decompose, welded_points_do_not_carry_a_side_beyond_the_slop)
 	cr_assert(pieces > 0);
 	double excursion = LargestExcursion(outline, count, pieces);
 	cr_assert(excursion <= TB_LINEAR_SLOP * 1.001, "a piece leaves the outline by %.3g m", excursion);
+}
+
+// A hexagon 1 km across whose sides are runs of points a few millimetres off straight (the
+// outline fuzz_decompose found). Ear clipping judged a vertex 7 micrometres from an ear's edge
+// 546 m long to be outside the ear by float rounding, cut the ear across it, and the triangles
+// that followed covered a sliver outside the outline, 14 mm at its widest; the containment test
+// is now computed in double. Allowed: the slop of the welded points plus that of a straightened
+// corner.
+Test(decompose, an_ear_is_not_cut_across_a_vertex_rounding_hides)
+{
+	static const tbVec2 outline[48] = {
+		{672.134094f, -41.9607811f}, {612.986816f, -7.80053711f}, {553.825134f, 26.3348122f},
+		{494.672913f, 60.4864006f}, {435.529999f, 94.6542206f}, {376.377716f, 128.805801f},
+		{317.222931f, 162.953064f}, {258.068146f, 197.100311f}, {198.910858f, 231.243225f},
+		{139.758606f, 265.394806f}, {80.606308f, 299.546387f}, {21.4546471f, 333.699066f},
+		{-37.6982422f, 367.849579f}, {-96.8505325f, 402.00116f}, {-156.002838f, 436.15274f},
+		{-215.150696f, 470.311859f}, {-274.302368f, 504.464569f}, {-274.301086f, 436.161377f},
+		{-274.29361f, 367.858246f}, {-274.301086f, 299.555084f}, {-274.301086f, 231.251923f},
+		{-274.30484f, 162.948715f}, {-274.293579f, 94.6455383f}, {-274.30484f, 26.3423805f},
+		{-274.30484f, -41.9607811f}, {-274.303589f, -110.263947f}, {-274.309814f, -178.567108f},
+		{-274.308563f, -246.870285f}, {-274.292297f, -315.173492f}, {-274.292267f, -383.476654f},
+		{-274.30603f, -451.779816f}, {-274.308563f, -520.082947f}, {-274.302277f, -588.386108f},
+		{-215.153137f, -554.229065f}, {-156.002747f, -520.07428f}, {-96.850441f, -485.922699f},
+		{-37.6981812f, -451.771118f}, {21.4540844f, -417.619507f}, {80.6126175f, -383.47876f},
+		{139.758652f, -349.316315f}, {198.914673f, -315.171234f}, {258.067566f, -281.020721f},
+		{317.224213f, -246.876724f}, {376.376526f, -212.725128f}, {435.528778f, -178.573547f},
+		{494.672272f, -144.406784f}, {553.824524f, -110.255188f}, {612.976807f, -76.1036072f},
+	};
+	int count = tbDecomposePolygon(outline, 48, s_pieces, MAX_PIECES);
+	cr_assert(count > 0);
+	double excursion = LargestExcursion(outline, 48, count);
+	cr_assert(excursion <= 2.0 * TB_LINEAR_SLOP, "a piece leaves the outline by %.3g m", excursion);
 }
