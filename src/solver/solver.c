@@ -209,11 +209,23 @@ static void tbMethodSubStep(tbStepContext* context)
 	}
 }
 
+/// A step with nothing to solve (a zero time step, or nothing awake): no body moves, no joint is
+/// solved and none reports an event. The joints keep the last solve's impulses and 1/h, whose
+/// product is the force they report.
+static void tbSkipSolve(tbWorld* world)
+{
+	world->cache.solverJointCount = 0;
+	world->cache.jointTreeCount = 0;
+	world->cache.jointTreeNodeCount = 0;
+	world->events.jointEventCount = 0;
+}
+
 void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 {
-	if (timeStep <= 0.0f)
+	if (timeStep <= 0.0f || world->awakeBodyCount == 0)
 	{
-		return; // a zero step moves nothing (the world may step with 0 to refresh contacts)
+		tbSkipSolve(world); // a zero step moves nothing (the world may step with 0 to refresh contacts)
+		return;
 	}
 	subStepCount = tbMaxInt(subStepCount, 1);
 

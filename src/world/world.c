@@ -541,39 +541,25 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	memset(&world->counters, 0, sizeof(world->counters));
 	world->counters.byteCount = byteCount;
 
+	// Each stage's time is the lap since the last (one clock read a stage).
 	uint64_t stepTicks = tbGetTicks();
-	uint64_t t = tbGetTicks();
+	uint64_t t = stepTicks;
 	tbUpdatePairsStage(world);
-	world->profile.pairs = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.pairs = tbGetMillisecondsAndReset(&t);
 	tbCollideStage(world);
-	world->profile.collide = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.collide = tbGetMillisecondsAndReset(&t);
 	tbIslandStage(world);
-	world->profile.islands = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.islands = tbGetMillisecondsAndReset(&t);
 	tbSolveStage(world, timeStep, subStepCount);
-	world->profile.solve = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.solve = tbGetMillisecondsAndReset(&t);
 	tbContinuousStage(world);
-	world->profile.continuous = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.continuous = tbGetMillisecondsAndReset(&t);
 	int beyondBounds = tbFinalizeStage(world, timeStep);
-	world->profile.finalize = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.finalize = tbGetMillisecondsAndReset(&t);
 	tbReportHitEvents(world);
-	world->profile.events = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.events = tbGetMillisecondsAndReset(&t);
 	tbSleepStage(world, timeStep);
-	world->profile.sleep = tbGetMilliseconds(t);
-
+	world->profile.sleep = tbGetMillisecondsAndReset(&t);
 	if (beyondBounds > 0)
 	{
 		tbDisableBodiesBeyondBounds(world);
