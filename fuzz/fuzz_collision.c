@@ -221,7 +221,7 @@ static void RayCastEverything(const FuzzShape* shape, tbVec2 origin, tbVec2 tran
 	tbRayCastInput ray = {origin, translation, 1.0f};
 	tbCastOutput out = tbRayCastShape(&shape->geometry, &ray);
 	(void)tbPointInShape(&shape->geometry, origin);
-	tbAABB box = tbComputeShapeAABB(&shape->geometry, tb_transform_identity);
+	tbAABB box = tbComputeShapeAABB(&shape->geometry, tbTransform_identity);
 	tbMassData mass = tbComputeShapeMass(&shape->geometry, 1.0f);
 	// any input: a hit has finite numbers and a fraction in [0, 1] (a translation of any length)
 	bool finite = FuzzIsFinite2(out.point.x, out.point.y) && FuzzIsFinite2(out.normal.x, out.normal.y);

@@ -113,10 +113,10 @@ Test(accessors, geometry_boxes_and_points)
 	tbAABB a = tbComputeCircleAABB(&circle, moved);
 	cr_assert(a.lowerBound.x == 2.0f && a.upperBound.x == 4.0f && a.lowerBound.y == -1.0f && a.upperBound.y == 1.0f);
 	tbCapsule capsule = {{0.0f, 0.0f}, {2.0f, 0.0f}, 0.5f};
-	a = tbComputeCapsuleAABB(&capsule, tb_transform_identity);
+	a = tbComputeCapsuleAABB(&capsule, tbTransform_identity);
 	cr_assert(a.lowerBound.x == -0.5f && a.upperBound.x == 2.5f && a.upperBound.y == 0.5f);
 	tbSegment segment = {{0.0f, 0.0f}, {1.0f, 1.0f}};
-	a = tbComputeSegmentAABB(&segment, tb_transform_identity);
+	a = tbComputeSegmentAABB(&segment, tbTransform_identity);
 	cr_assert(a.lowerBound.x == 0.0f && a.upperBound.x == 1.0f && a.upperBound.y == 1.0f);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
 	tbTransform turned = {{0.0f, 0.0f}, tbMakeRot(0.25f * 3.14159265f)};
@@ -281,7 +281,7 @@ Test(accessors, joint_motors_report_the_load_they_hold)
 	revolute.enableMotor = true;
 	revolute.maxMotorTorque = 100.0f;
 	tbJointId joint = tbCreateRevoluteJoint(world, &revolute);
-	float torque = HoldAgainst(world, disc, 2.0f, tb_vec2_zero, joint, tbRevoluteJoint_GetMotorTorque);
+	float torque = HoldAgainst(world, disc, 2.0f, tbVec2_zero, joint, tbRevoluteJoint_GetMotorTorque);
 	cr_assert(fabsf(fabsf(torque) - 2.0f) < 0.04f, "revolute motor torque %g, load 2 N·m", (double)torque);
 	tbDestroyWorld(world);
 
@@ -293,7 +293,7 @@ Test(accessors, joint_motors_report_the_load_they_hold)
 	wheel.enableMotor = true;
 	wheel.maxMotorTorque = 100.0f;
 	joint = tbCreateWheelJoint(world, &wheel);
-	torque = HoldAgainst(world, disc, 3.0f, tb_vec2_zero, joint, tbWheelJoint_GetMotorTorque);
+	torque = HoldAgainst(world, disc, 3.0f, tbVec2_zero, joint, tbWheelJoint_GetMotorTorque);
 	cr_assert(fabsf(fabsf(torque) - 3.0f) < 0.06f, "wheel motor torque %g, load 3 N·m", (double)torque);
 	tbDestroyWorld(world);
 

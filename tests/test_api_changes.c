@@ -61,7 +61,7 @@ Test(api_changes, teleport_wakes_resting_neighbours)
 	tbBodyId box = MakeBox(world, 0.0f);
 	Run(world, 90); // 1.5 s: the box settles and, after TB_TIME_TO_SLEEP = 0.5 s at rest, sleeps
 	cr_assert(tbBody_IsAwake(box) == false, "the resting box should be asleep before the teleport");
-	cr_assert(tbBody_SetTransform(ground, tbMakeVec2(0.0f, -20.0f), tb_rot_identity));
+	cr_assert(tbBody_SetTransform(ground, tbMakeVec2(0.0f, -20.0f), tbRot_identity));
 	Run(world, 60);
 	float y = tbBody_GetPosition(box).y;
 	cr_assert_lt(y, 0.5f - 2.0f, "the box should fall once its support is gone; it is at y = %g", (double)y);
@@ -116,7 +116,7 @@ Test(api_changes, event_array_stays_valid_while_destroying)
 	for (int i = 0; i < 16; ++i)
 	{
 		tbVec2 p = tbBody_GetPosition(boxes[i]);
-		tbBody_SetTransform(boxes[i], tbMakeVec2(p.x, 10.0f), tb_rot_identity);
+		tbBody_SetTransform(boxes[i], tbMakeVec2(p.x, 10.0f), tbRot_identity);
 	}
 	Run(world, 1);
 	tbContactEvents events = tbWorld_GetContactEvents(world);
@@ -237,7 +237,7 @@ Test(api_changes, shape_queries_check_geometry, .init = SetupErrors, .fini = Tea
 Test(api_changes, set_type_keeps_origin_velocity)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
-	worldDef.gravity = tb_vec2_zero;
+	worldDef.gravity = tbVec2_zero;
 	tbWorldId world = tbCreateWorld(&worldDef);
 	tbBodyDef def = tbDefaultBodyDef();
 	def.type = tb_dynamicBody;
@@ -245,7 +245,7 @@ Test(api_changes, set_type_keeps_origin_velocity)
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbCircle circle = {{1.0f, 0.0f}, 0.25f};
 	tbCreateCircleShape(body, &shapeDef, &circle);
-	tbBody_SetLinearVelocity(body, tb_vec2_zero);
+	tbBody_SetLinearVelocity(body, tbVec2_zero);
 	tbBody_SetAngularVelocity(body, 2.0f);
 	cr_assert(tbBody_SetType(body, tb_kinematicBody));
 	tbVec2 v = tbBody_GetLinearVelocity(body);

@@ -66,7 +66,7 @@ static void CreateScene(Scene* scene, int count, float halfWidth, float staticFr
 		scene->tight[i] = (tbAABB){{x, y}, {x + w, y + h}};
 		scene->fat[i] = tbAABB_Fatten(scene->tight[i], TB_AABB_MARGIN);
 		scene->isStatic[i] = RandomFloat(0.0f, 1.0f) < staticFraction;
-		scene->velocity[i] = scene->isStatic[i] ? tb_vec2_zero : (tbVec2){RandomFloat(-3.0f, 3.0f), RandomFloat(-3.0f, 3.0f)};
+		scene->velocity[i] = scene->isStatic[i] ? tbVec2_zero : (tbVec2){RandomFloat(-3.0f, 3.0f), RandomFloat(-3.0f, 3.0f)};
 		scene->alive[i] = true;
 		tbProxyType type = scene->isStatic[i] ? tb_proxyStatic : tb_proxyMovable;
 		for (int m = 0; m < METHOD_COUNT; ++m)

@@ -188,7 +188,7 @@ Test(chain, loops_hold_inside_or_outside)
 	shapeDef.material.restitution = 0.8f;
 	tbCircle circle = {{0.0f, 0.0f}, 0.3f};
 	tbCreateCircleShape(ball, &shapeDef, &circle);
-	bodyDef.linearVelocity = tb_vec2_zero;
+	bodyDef.linearVelocity = tbVec2_zero;
 	bodyDef.position = tbMakeVec2(21.0f, 3.0f);
 	tbBodyId box = tbCreateBody(world, &bodyDef);
 	tbPolygon boxShape = tbMakeBox(0.5f, 0.5f);
@@ -386,14 +386,14 @@ Test(chain, straight_joint_gives_the_face_normal)
 	{
 		float x = -0.6f + 0.01f * (float)i;
 		tbTransform xf = {{x, 0.249f}, tbMakeRot(0.0f)};
-		tbManifold m = WorldCollideChainSegmentAndCapsule(&chain, tb_transform_identity, &capsule, xf);
+		tbManifold m = WorldCollideChainSegmentAndCapsule(&chain, tbTransform_identity, &capsule, xf);
 		if (m.pointCount > 0)
 		{
 			touching += 1;
 			cr_assert(m.normal.y >= 1.0f - 1e-6f, "x = %g: chain normal (%g, %g)", (double)x, (double)m.normal.x,
 					  (double)m.normal.y);
 		}
-		tbManifold p = WorldCollideSegmentAndCapsule(&plain, tb_transform_identity, &capsule, xf);
+		tbManifold p = WorldCollideSegmentAndCapsule(&plain, tbTransform_identity, &capsule, xf);
 		if (p.pointCount > 0)
 		{
 			worstPlain = fminf(worstPlain, p.normal.y);
@@ -422,8 +422,8 @@ Test(chain, convex_joint_is_reported_once)
 		float theta = (float)degrees * 3.14159265f / 180.0f;
 		tbVec2 normal = {-sinf(theta), cosf(theta)};
 		tbTransform xf = {tbMulSV(0.499f, normal), tbMakeRot(0.0f)};
-		tbManifold a = WorldCollideChainSegmentAndCircle(&flat, tb_transform_identity, &circle, xf);
-		tbManifold b = WorldCollideChainSegmentAndCircle(&slope, tb_transform_identity, &circle, xf);
+		tbManifold a = WorldCollideChainSegmentAndCircle(&flat, tbTransform_identity, &circle, xf);
+		tbManifold b = WorldCollideChainSegmentAndCircle(&slope, tbTransform_identity, &circle, xf);
 		cr_assert_eq((a.pointCount > 0) + (b.pointCount > 0), 1, "%d°: reported by %d segments", degrees,
 					 (a.pointCount > 0) + (b.pointCount > 0));
 		tbManifold m = a.pointCount > 0 ? a : b;
@@ -510,17 +510,17 @@ Test(chain, random_placements_give_valid_manifolds)
 		if (kind == 0)
 		{
 			tbCircle circle = {{0.0f, 0.0f}, size};
-			m = WorldCollideChainSegmentAndCircle(&segment, tb_transform_identity, &circle, xf);
+			m = WorldCollideChainSegmentAndCircle(&segment, tbTransform_identity, &circle, xf);
 		}
 		else if (kind == 1)
 		{
 			tbCapsule capsule = {{-size, 0.0f}, {size, 0.0f}, 0.5f * size};
-			m = WorldCollideChainSegmentAndCapsule(&segment, tb_transform_identity, &capsule, xf);
+			m = WorldCollideChainSegmentAndCapsule(&segment, tbTransform_identity, &capsule, xf);
 		}
 		else
 		{
 			tbPolygon box = kind == 2 ? tbMakeBox(size, 0.5f * size) : tbMakeRoundedBox(size, 0.5f * size, 0.1f * size);
-			m = WorldCollideChainSegmentAndPolygon(&segment, tb_transform_identity, &box, xf);
+			m = WorldCollideChainSegmentAndPolygon(&segment, tbTransform_identity, &box, xf);
 		}
 		cr_assert(m.pointCount >= 0 && m.pointCount <= 2);
 		if (xf.p.y < 0.0f)

@@ -231,11 +231,11 @@ Test(conformance, target_transform_of_a_sleeping_body)
 	tbCreatePolygonShape(platform, &shapeDef, &slab);
 	cr_assert_not(tbBody_IsAwake(platform));
 	float dt = 1.0f / 60.0f;
-	tbTransform far = {{1.0f, 0.0f}, tb_rot_identity};
+	tbTransform far = {{1.0f, 0.0f}, tbRot_identity};
 	cr_assert(tbBody_SetTargetTransform(platform, far, dt, false));
 	cr_expect_not(tbBody_IsAwake(platform));
 	cr_expect_eq(tbBody_GetLinearVelocity(platform).x, 0.0f);
-	tbTransform creep = {{1e-4f, 0.0f}, tb_rot_identity}; // 6 mm/s, below the 0.05 m/s threshold
+	tbTransform creep = {{1e-4f, 0.0f}, tbRot_identity}; // 6 mm/s, below the 0.05 m/s threshold
 	cr_assert(tbBody_SetTargetTransform(platform, creep, dt, true));
 	cr_expect_not(tbBody_IsAwake(platform));
 	cr_assert(tbBody_SetTargetTransform(platform, far, dt, true));

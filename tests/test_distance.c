@@ -228,7 +228,7 @@ Test(gjk, circle_circle_closed_form)
 		tbDistanceInput input = {0};
 		input.proxyA = tbMakeProxy(&c1, 1, r1);
 		input.proxyB = tbMakeProxy(&c2, 1, r2);
-		input.transform = tb_transform_identity;
+		input.transform = tbTransform_identity;
 		input.useRadii = true;
 		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL, 0);
 
@@ -301,7 +301,7 @@ Test(gjk, warm_start_after_small_motion)
 	for (int i = 0; i < 100; ++i)
 	{
 		tbTransform xfB = {{-2.0f + 0.04f * (float)i, 1.1f}, tbMakeRot(0.0f)};
-		tbDistanceInput input = makeInput(&box, tb_transform_identity, &box, xfB);
+		tbDistanceInput input = makeInput(&box, tbTransform_identity, &box, xfB);
 		tbDistanceOutput warm = tbShapeDistance(&input, &cache, NULL, 0);
 		tbDistanceOutput cold = tbShapeDistance(&input, NULL, NULL, 0);
 		cr_assert_float_eq(warm.distance, cold.distance, DISTANCE_TOLERANCE, "step %d", i);
@@ -334,7 +334,7 @@ Test(gjk, tiny_edges_do_not_overlap)
 	tbDistanceInput input = {0};
 	input.proxyA = tbMakeProxy(sliver, 3, 0.0f);
 	input.proxyB = tbMakeProxy(sliver, 3, 0.0f);
-	input.transform = tb_transform_identity;
+	input.transform = tbTransform_identity;
 	for (int i = 0; i < 100; ++i)
 	{
 		// copy turned by π: its base runs 1 mm under A's base, parallel edges, 1 mm gap
@@ -395,7 +395,7 @@ Test(shape_cast, circles_match_closed_form)
 		tbShapeCastPairInput input = {0};
 		input.proxyA = tbMakeProxy(&cA, 1, rA);
 		input.proxyB = tbMakeProxy(&cB, 1, rB);
-		input.transform = tb_transform_identity;
+		input.transform = tbTransform_identity;
 		input.translationB = r;
 		input.maxFraction = 1.0f;
 		tbCastOutput out = tbShapeCast(&input);
@@ -436,7 +436,7 @@ Test(shape_cast, box_drop_onto_box_far_away)
 	tbShapeCastPairInput input = {0};
 	input.proxyA = tbMakeProxy(box.vertices, 4, 0.0f);
 	input.proxyB = tbMakeProxy(box.vertices, 4, 0.0f);
-	tbTransform xfA = {{1000.0f, 1000.0f}, tb_rot_identity}, xfB = {{1000.0f, 1002.0f}, tb_rot_identity};
+	tbTransform xfA = {{1000.0f, 1000.0f}, tbRot_identity}, xfB = {{1000.0f, 1002.0f}, tbRot_identity};
 	input.transform = tbInvMulTransforms(xfA, xfB); // exact here: the answer does not depend on where the pair is
 	input.translationB = tbMakeVec2(0.0f, -2.0f);
 	input.maxFraction = 1.0f;
@@ -463,7 +463,7 @@ static tbShapeCastPairInput CircleCast(tbVec2 centerB, float radiusA, float radi
 	tbShapeCastPairInput input = {0};
 	input.proxyA = tbMakeProxy(&origin, 1, radiusA);
 	input.proxyB = tbMakeProxy(&origin, 1, radiusB);
-	input.transform = (tbTransform){centerB, tb_rot_identity}; // A at the origin
+	input.transform = (tbTransform){centerB, tbRot_identity}; // A at the origin
 	input.translationB = translation;
 	input.maxFraction = 1.0f;
 	return input;
@@ -495,8 +495,8 @@ Test(shape_cast, initial_overlap_hits_at_zero_with_zero_normal)
 	input = (tbShapeCastPairInput){0};
 	input.proxyA = tbMakeProxy(box.vertices, 4, 0.0f);
 	input.proxyB = tbMakeProxy(box.vertices, 4, 0.0f);
-	input.transform = tbInvMulTransforms((tbTransform){{10.0f, 20.0f}, tb_rot_identity},
-										 (tbTransform){{10.0f, 21.0f}, tb_rot_identity});
+	input.transform = tbInvMulTransforms((tbTransform){{10.0f, 20.0f}, tbRot_identity},
+										 (tbTransform){{10.0f, 21.0f}, tbRot_identity});
 	input.translationB = tbMakeVec2(1.0f, 0.0f);
 	input.maxFraction = 1.0f;
 	out = tbShapeCast(&input);

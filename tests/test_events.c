@@ -182,7 +182,7 @@ Test(events, contact_end_touch_when_lifted)
 	cr_assert_eq(begins, 1);
 	cr_assert_eq(tbWorld_GetCounters(world).touchingCount, 1);
 
-	cr_assert(tbBody_SetTransform(ball, (tbVec2){0.0f, 5.0f}, tb_rot_identity));
+	cr_assert(tbBody_SetTransform(ball, (tbVec2){0.0f, 5.0f}, tbRot_identity));
 	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
 	tbContactEvents events = tbWorld_GetContactEvents(world);
 	cr_assert_eq(events.endCount, 1, "%d end events after the lift, expected 1", events.endCount);
@@ -469,7 +469,7 @@ Test(events, moving_kinematic_body_keeps_every_island_it_touches_awake)
 Test(events, rested_kinematic_body_sleeps_with_the_last_island_it_touches)
 {
 	tbWorldId world = CreateWorld();
-	tbBodyId platform = CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 4.0f, 0.25f, tb_vec2_zero);
+	tbBodyId platform = CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 4.0f, 0.25f, tbVec2_zero);
 	tbBodyId sleeper = CreateBox(world, (tbVec2){-2.0f, 1.75f}, 0.5f);
 	tbBodyId keeper = CreateBox(world, (tbVec2){2.0f, 1.75f}, 0.5f);
 	tbBody_EnableSleep(keeper, false);
@@ -818,7 +818,7 @@ Test(events, contact_data_of_a_resting_box)
 	cr_assert_eq(viaId.manifold.pointCount, 2);
 	cr_assert_eq(tbBody_GetContactData(box, data, 0), 0, "capacity 0 writes nothing");
 
-	cr_assert(tbBody_SetTransform(box, (tbVec2){0.0f, 10.0f}, tb_rot_identity));
+	cr_assert(tbBody_SetTransform(box, (tbVec2){0.0f, 10.0f}, tbRot_identity));
 	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
 	cr_assert(tbContact_IsValid(fromEvent) == false, "the contact ended: its id is stale");
 	cr_assert_eq(tbBody_GetContactData(box, data, 4), 0);

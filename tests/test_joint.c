@@ -177,8 +177,8 @@ Test(joint, disc_pendulum_period)
 Test(joint, distance_spring_frequency)
 {
 	const float f = 2.0f, L = 1.0f;
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(L + 0.1f, 0.0f), 0.1f, 2.0f);
 	tbDistanceJointDef def = tbDefaultDistanceJointDef();
 	def.base.bodyIdA = ground;
@@ -206,7 +206,7 @@ Test(joint, distance_spring_frequency)
 Test(joint, prismatic_motor_reaches_speed)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId box = MakeBox(world, tbMakeVec2(0.0f, 1.0f), 0.5f, 0.25f, 2.0f);
 	tbPrismaticJointDef def = tbDefaultPrismaticJointDef();
 	def.base.bodyIdA = ground;
@@ -246,7 +246,7 @@ Test(joint, revolute_limit_holds_under_load)
 	{
 		tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -g));
 		tbWorld_SetSolverMethod(world, (tbSolverMethod)method, 8, 3);
-		tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+		tbBodyId ground = MakeStatic(world, tbVec2_zero);
 		tbBodyId beam = MakeBox(world, tbMakeVec2(1.0f, 0.0f), 1.0f, 0.1f, 10.0f);
 		tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
 		def.base.bodyIdA = ground;
@@ -298,8 +298,8 @@ Test(joint, revolute_limit_holds_under_load)
 Test(joint, wheel_suspension_frequency)
 {
 	const float f = 4.0f;
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId chassis = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
+	tbBodyId chassis = MakeStatic(world, tbVec2_zero);
 	tbBodyId wheel = MakeDisc(world, tbMakeVec2(0.0f, 0.05f), 0.4f, 5.0f);
 	tbWheelJointDef def = tbDefaultWheelJointDef();
 	def.base.bodyIdA = chassis;
@@ -337,7 +337,7 @@ Test(joint, weld_cantilever_sag)
 		tbWorldDef worldDef = tbDefaultWorldDef();
 		worldDef.enableJointTrees = trees != 0;
 		tbWorldId world = tbCreateWorld(&worldDef);
-		tbBodyId wall = MakeStatic(world, tb_vec2_zero);
+		tbBodyId wall = MakeStatic(world, tbVec2_zero);
 		tbBodyId beam = MakeBox(world, tbMakeVec2(0.5f * L, 0.0f), 0.5f * L, 0.1f, 5.0f);
 		tbWeldJointDef def = tbDefaultWeldJointDef();
 		def.base.bodyIdA = wall;
@@ -371,8 +371,8 @@ Test(joint, weld_cantilever_sag)
 // drives the box at the target velocity against gravity (force cap far above m·g): within 1 %.
 Test(joint, motor_joint_reaches_target)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId box = MakeBox(world, tbMakeVec2(0.0f, 0.0f), 0.5f, 0.5f, 1.0f);
 	tbMotorJointDef def = tbDefaultMotorJointDef();
 	def.base.bodyIdA = ground;
@@ -419,7 +419,7 @@ Test(joint, motor_joint_reaches_target)
 Test(joint, constraint_force_holds_the_weight)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId bob = MakeDisc(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 3.0f);
 	tbBody_EnableSleep(bob, false); // events come from awake joints only
 	tbDistanceJointDef def = tbDefaultDistanceJointDef();
@@ -452,7 +452,7 @@ Test(joint, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Te
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
 	tbWorldId other = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
 	tbBodyId stranger = MakeDisc(other, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
 	tbBodyId dead = MakeDisc(world, tbMakeVec2(3.0f, 0.0f), 0.1f, 1.0f);
@@ -554,7 +554,7 @@ Test(joint, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Te
 Test(joint, anchors_far_apart_keep_positions_finite)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 6.0f), 0.1f, 0.1f);
 	tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
 	def.base.bodyIdA = ground;
@@ -582,7 +582,7 @@ Test(joint, anchors_far_apart_keep_positions_finite)
 Test(joint, destroying_a_body_makes_its_joint_ids_stale, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId a = MakeDisc(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
 	tbBodyId b = MakeDisc(world, tbMakeVec2(0.0f, -2.0f), 0.1f, 1.0f);
 	tbDistanceJointDef def = tbDefaultDistanceJointDef();
@@ -649,7 +649,7 @@ static void MakeHangingChain(tbWorldId world, tbBodyId anchorBody, tbVec2 anchor
 Test(joint, joined_bodies_sleep_and_wake_together)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId left[4], right[4];
 	MakeHangingChain(world, ground, tbMakeVec2(0.0f, 0.0f), 4, left);
 	MakeHangingChain(world, ground, tbMakeVec2(3.0f, 0.0f), 4, right);
@@ -687,7 +687,7 @@ Test(joint, joined_bodies_sleep_and_wake_together)
 Test(joint, a_body_put_to_sleep_by_hand_is_woken_by_its_awake_partner)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId links[4];
 	MakeHangingChain(world, ground, tbMakeVec2(0.0f, 0.0f), 4, links);
 	tbBody_SetLinearVelocity(links[3], tbMakeVec2(2.0f, 0.0f)); // swinging: nothing rests
@@ -752,15 +752,15 @@ Test(joint, collide_connected_filters_contacts)
 {
 	for (int collide = 0; collide < 2; ++collide)
 	{
-		tbWorldId world = MakeWorld(tb_vec2_zero);
+		tbWorldId world = MakeWorld(tbVec2_zero);
 		tbBodyId a = MakeBox(world, tbMakeVec2(0.0f, 0.0f), 0.5f, 0.5f, 1.0f);
 		tbBodyId b = MakeBox(world, tbMakeVec2(0.6f, 0.0f), 0.5f, 0.5f, 1.0f);
 		tbWorld_Step(world, DT, SUB_STEPS); // a contact exists before the joint (and pushed them)
 		cr_assert(tbWorld_GetCounters(world).touchingCount > 0);
-		tbBody_SetTransform(a, tbMakeVec2(0.0f, 0.0f), tb_rot_identity);
-		tbBody_SetTransform(b, tbMakeVec2(0.6f, 0.0f), tb_rot_identity);
-		tbBody_SetLinearVelocity(a, tb_vec2_zero);
-		tbBody_SetLinearVelocity(b, tb_vec2_zero);
+		tbBody_SetTransform(a, tbMakeVec2(0.0f, 0.0f), tbRot_identity);
+		tbBody_SetTransform(b, tbMakeVec2(0.6f, 0.0f), tbRot_identity);
+		tbBody_SetLinearVelocity(a, tbVec2_zero);
+		tbBody_SetLinearVelocity(b, tbVec2_zero);
 		tbBody_SetAngularVelocity(a, 0.0f);
 		tbBody_SetAngularVelocity(b, 0.0f);
 		tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
@@ -819,7 +819,7 @@ static uint64_t RunJointedScene(tbBroadPhaseMethod method, int steps)
 	tbWorldId world = tbCreateWorld(&worldDef);
 	tbBodyId bodies[64];
 	int n = 0;
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbSegment floor = {{-20.0f, 0.0f}, {20.0f, 0.0f}};
 	tbCreateSegmentShape(ground, &shapeDef, &floor);
@@ -963,7 +963,7 @@ static float SwingBallAndChain(int subSteps, bool trees, int steps)
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	worldDef.enableJointTrees = trees;
 	tbWorldId world = tbCreateWorld(&worldDef);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	const int count = 30;
 	const float hx = 0.25f, top = 20.0f;
 	tbCapsule capsule = {{-hx, 0.0f}, {hx, 0.0f}, 0.05f};
@@ -1064,7 +1064,7 @@ static tbJointId Pin(tbWorldId world, tbBodyId a, tbBodyId b, tbVec2 pivot)
 Test(joint, trees_handle_bridges_loops_ragdolls_and_degenerate_blocks)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbSegment floor = {{-30.0f, 0.0f}, {30.0f, 0.0f}};
 	tbCreateSegmentShape(ground, &shapeDef, &floor);
@@ -1343,7 +1343,7 @@ Test(joint, every_kind_refuses_a_bad_definition, .init = SetupErrors, .fini = Te
 
 	// A locked world refuses: create from inside a query callback is not possible here, so check
 	// the stale world instead.
-	tbWorldId stale = MakeWorld(tb_vec2_zero);
+	tbWorldId stale = MakeWorld(tbVec2_zero);
 	tbDestroyWorld(stale);
 	before = s_errors;
 	tbFilterJointDef filter = tbDefaultFilterJointDef();

@@ -104,7 +104,7 @@ static tbJointId MakePogo(tbWorldId world, tbBodyId ground, tbBodyId body, float
 Test(mover, reaches_the_commanded_velocity)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 2.0f), 2.0f);
 	tbJointId joint = MakeMover(world, ground, body, tbMakeVec2(3.0f, 1.0f), tbMakeVec2(1000.0f, 1000.0f));
 	Run(world, 60);
@@ -128,10 +128,10 @@ Test(mover, reaches_the_commanded_velocity)
 // relative; the force reads back as the caps.
 Test(mover, force_cap_limits_the_acceleration_to_f_over_m)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	const float m = 2.0f;
-	tbBodyId body = MakeDisc(world, tb_vec2_zero, m);
+	tbBodyId body = MakeDisc(world, tbVec2_zero, m);
 	const tbVec2 F = {4.0f, 1.0f};
 	tbJointId joint = MakeMover(world, ground, body, tbMakeVec2(10.0f, 10.0f), F);
 	Run(world, 60);
@@ -152,10 +152,10 @@ Test(mover, force_cap_limits_the_acceleration_to_f_over_m)
 // Setters store what the getters return, wake a sleeping body, and take effect at the next step.
 Test(mover, setters_take_effect_and_wake_the_body)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-	tbBodyId body = MakeDisc(world, tb_vec2_zero, 1.0f);
-	tbJointId joint = MakeMover(world, ground, body, tb_vec2_zero, tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
+	tbBodyId body = MakeDisc(world, tbVec2_zero, 1.0f);
+	tbJointId joint = MakeMover(world, ground, body, tbVec2_zero, tbVec2_zero);
 	Run(world, 120); // at rest with no gravity: asleep after the sleep time (0.5 s)
 	cr_assert(tbBody_IsAwake(body) == false, "the resting body should be asleep");
 
@@ -198,7 +198,7 @@ static float PogoError(tbJointId joint)
 Test(pogo, settles_at_its_rest_length_and_holds_the_weight)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	const float m = 2.0f, g = 10.0f, L = 1.0f;
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, L + 0.2f), m);
 	tbJointId joint = MakePogo(world, ground, body, L, 3.0f, 0.7f, 1000.0f, 1000.0f);
@@ -229,7 +229,7 @@ static float MeasurePogoFrequency(tbSolverMethod method, float hertz, float mass
 	worldDef.gravity = tbMakeVec2(0.0f, -10.0f);
 	worldDef.solver = method;
 	tbWorldId world = tbCreateWorld(&worldDef);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 1.1f), mass);
 	tbJointId joint = MakePogo(world, ground, body, 1.0f, hertz, 0.0f, 1e5f, 1e5f);
 	float previous = PogoError(joint);
@@ -318,7 +318,7 @@ Test(pogo, every_solver_method_gives_the_same_frequency)
 Test(pogo, max_compression_force_caps_the_push)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	const float m = 2.0f, g = 10.0f, F = 12.0f;
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 1.0f), m);
 	tbJointId joint = MakePogo(world, ground, body, 1.0f, 5.0f, 1.0f, 1000.0f, F);
@@ -345,8 +345,8 @@ Test(pogo, max_compression_force_caps_the_push)
 // 1e-4 m on the length.
 Test(pogo, max_tension_force_caps_the_pull)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	const float m = 2.0f, T = 4.0f, v0 = 5.0f;
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 1.0f), m);
 	tbBody_SetLinearVelocity(body, tbMakeVec2(0.0f, v0));
@@ -376,7 +376,7 @@ Test(pogo, max_tension_force_caps_the_pull)
 Test(pogo, setters_take_effect_and_hertz_zero_turns_it_off)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 1.0f), 1.0f);
 	tbJointId joint = MakePogo(world, ground, body, 1.0f, 4.0f, 0.5f, 100.0f, 100.0f);
 	cr_expect(tbJoint_GetType(joint) == tb_pogoJoint);
@@ -431,8 +431,8 @@ static bool Near(tbVec2 a, tbVec2 b)
 // y-axis from anchor B and shows the normal at anchor A.
 Test(mover, mover_and_pogo_are_drawn)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 2.0f), 1.0f);
 	tbDebugDraw draw = tbDefaultDebugDraw();
 	SegmentLog log = {0};
@@ -444,7 +444,7 @@ Test(mover, mover_and_pogo_are_drawn)
 	tbJointId mover = MakeMover(world, ground, body, tbMakeVec2(4.0f, 0.0f), tbMakeVec2(10.0f, 10.0f));
 	tbWorld_Draw(world, &draw);
 	cr_assert_eq(log.count, 2, "mover: %d segments", log.count);
-	cr_expect(Near(log.p1[0], tb_vec2_zero) && Near(log.p2[0], tbMakeVec2(0.0f, 2.0f)), "centre to centre");
+	cr_expect(Near(log.p1[0], tbVec2_zero) && Near(log.p2[0], tbMakeVec2(0.0f, 2.0f)), "centre to centre");
 	cr_expect(Near(log.p1[1], tbMakeVec2(0.0f, 2.0f)) && Near(log.p2[1], tbMakeVec2(0.4f, 2.0f)), "velocity");
 	tbDestroyJoint(mover);
 
@@ -452,9 +452,9 @@ Test(mover, mover_and_pogo_are_drawn)
 	MakePogo(world, ground, body, 1.5f, 2.0f, 0.5f, 10.0f, 10.0f);
 	tbWorld_Draw(world, &draw);
 	cr_assert_eq(log.count, 3, "pogo: %d segments", log.count);
-	cr_expect(Near(log.p1[0], tb_vec2_zero) && Near(log.p2[0], tbMakeVec2(0.0f, 2.0f)), "anchor to anchor");
+	cr_expect(Near(log.p1[0], tbVec2_zero) && Near(log.p2[0], tbMakeVec2(0.0f, 2.0f)), "anchor to anchor");
 	cr_expect(Near(log.p1[1], tbMakeVec2(0.0f, 2.0f)) && Near(log.p2[1], tbMakeVec2(0.0f, 0.5f)), "rest length");
-	cr_expect(Near(log.p1[2], tb_vec2_zero) && Near(log.p2[2], tbMakeVec2(0.0f, 0.25f)), "normal");
+	cr_expect(Near(log.p1[2], tbVec2_zero) && Near(log.p2[2], tbMakeVec2(0.0f, 0.25f)), "normal");
 	tbDestroyWorld(world);
 }
 
@@ -464,7 +464,7 @@ Test(mover, mover_and_pogo_are_drawn)
 Test(mover, bad_input_is_refused_without_change, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 1.0f), 1.0f);
 
 	tbMoverJointDef def = tbDefaultMoverJointDef();
@@ -527,11 +527,11 @@ Test(mover, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Te
 	cr_expect(tbPogoJoint_GetRestLength(joint) == 0.0f);
 	ExpectError(before, "tbPogoJoint_GetRestLength", "mover joint");
 	before = s_errors;
-	cr_expect(tbMotorJoint_SetLinearVelocity(joint, tb_vec2_zero) == false);
+	cr_expect(tbMotorJoint_SetLinearVelocity(joint, tbVec2_zero) == false);
 	ExpectError(before, "tbMotorJoint_SetLinearVelocity", "not a motor joint");
 	tbDestroyJoint(joint);
 	before = s_errors;
-	cr_expect(tbMoverJoint_SetLinearVelocity(joint, tb_vec2_zero) == false);
+	cr_expect(tbMoverJoint_SetLinearVelocity(joint, tbVec2_zero) == false);
 	ExpectError(before, "tbMoverJoint_SetLinearVelocity", "jointId");
 	before = s_errors;
 	cr_expect(IsZero(tbMoverJoint_GetMaxVelocityForce(joint)));
@@ -542,7 +542,7 @@ Test(mover, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Te
 Test(pogo, bad_input_is_refused_without_change, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 1.0f), 1.0f);
 
 	tbPogoJointDef def = tbDefaultPogoJointDef();
@@ -561,7 +561,7 @@ Test(pogo, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Tea
 	int n = 0;
 	cases[n].argument = "def->normal";
 	cases[n].def = def;
-	cases[n++].def.normal = tb_vec2_zero; // Box2D v3.2's default: no direction
+	cases[n++].def.normal = tbVec2_zero; // Box2D v3.2's default: no direction
 	cases[n].argument = "def->normal";
 	cases[n].def = def;
 	cases[n++].def.normal = tbMakeVec2(0.0f, 2.0f);
@@ -646,7 +646,7 @@ Test(pogo, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Tea
 static void RunCharacterScene(float* state, int capacity, int* count)
 {
 	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = MakeStatic(world, tbVec2_zero);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbPolygon floor = tbMakeOffsetBox(20.0f, 0.5f, tbMakeVec2(0.0f, -0.5f), tbMakeRot(0.0f));
 	tbCreatePolygonShape(ground, &shapeDef, &floor);

@@ -194,8 +194,8 @@ Test(manifold_gjk, box_on_box)
 	// two points at B's bottom corners, separation −0.01, normal +y, midway points
 	tbPolygon ground = tbMakeBox(2.0f, 0.5f);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbTransform xfA = {{0.0f, 0.0f}, tb_rot_identity};
-	tbTransform xfB = {{0.3f, 0.99f}, tb_rot_identity};
+	tbTransform xfA = {{0.0f, 0.0f}, tbRot_identity};
+	tbTransform xfB = {{0.3f, 0.99f}, tbRot_identity};
 	tbManifold m = WorldCollidePolygonsGJK(&ground, xfA, &box, xfB);
 	cr_assert_eq(m.pointCount, 2);
 	cr_assert_float_eq(m.normal.x, 0.0f, 1e-6f);
@@ -217,9 +217,9 @@ Test(manifold_gjk, box_on_box)
 	cr_assert_eq(m2.points[1].id, m.points[1].id);
 
 	// far apart: no points; just within the speculative distance: points with positive separation
-	tbTransform apart = {{0.3f, 1.5f}, tb_rot_identity};
+	tbTransform apart = {{0.3f, 1.5f}, tbRot_identity};
 	cr_assert_eq(WorldCollidePolygonsGJK(&ground, xfA, &box, apart).pointCount, 0);
-	tbTransform near = {{0.3f, 1.01f}, tb_rot_identity};
+	tbTransform near = {{0.3f, 1.01f}, tbRot_identity};
 	tbManifold m3 = WorldCollidePolygonsGJK(&ground, xfA, &box, near);
 	cr_assert_eq(m3.pointCount, 2);
 	cr_assert_float_eq(m3.points[0].separation, 0.01f, 1e-6f);
@@ -234,7 +234,7 @@ Test(manifold_gjk, rounded_and_flipped)
 	tbPolygon a = tbMakePolygon(&hullA, 0.05f);
 	tbPolygon b = tbMakePolygon(&hullB, 0.05f);
 	tbTransform xfA = {{0.0f, 0.0f}, tbMakeRot(0.2f)}; // A tilted: only one corner reaches B
-	tbTransform xfB = {{0.0f, -0.8f}, tb_rot_identity};
+	tbTransform xfB = {{0.0f, -0.8f}, tbRot_identity};
 	tbManifold m = WorldCollidePolygonsGJK(&a, xfA, &b, xfB);
 	cr_assert(m.pointCount >= 1);
 	cr_assert_float_eq(m.normal.y, -1.0f, 1e-6f);

@@ -55,7 +55,7 @@ Test(materials, box_on_a_conveyor_reaches_the_belt_speed)
 	tbSurfaceMaterial belt = tbDefaultSurfaceMaterial();
 	belt.tangentSpeed = 2.0f;
 	MakeGround(world, &belt);
-	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
+	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tbVec2_zero, 0.6f);
 	Step(world, 120);
 	tbVec2 v = tbBody_GetLinearVelocity(box);
 	cr_expect(fabsf(v.x - 2.0f) <= 0.02f, "box moves at %.4f m/s on a 2 m/s belt", (double)v.x);
@@ -71,7 +71,7 @@ Test(materials, changing_the_belt_at_run_time_reaches_existing_contacts)
 	tbSurfaceMaterial belt = tbDefaultSurfaceMaterial();
 	belt.tangentSpeed = 2.0f;
 	tbShapeId beltShape = MakeGround(world, &belt);
-	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
+	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tbVec2_zero, 0.6f);
 	Step(world, 60);
 	belt.tangentSpeed = -1.0f;
 	cr_assert(tbShape_SetSurfaceMaterial(beltShape, &belt));
@@ -101,7 +101,7 @@ Test(materials, a_belt_started_under_a_resting_box_drives_it)
 	tbWorldId world = tbCreateWorld(&worldDef);
 	tbSurfaceMaterial belt = tbDefaultSurfaceMaterial();
 	tbShapeId beltShape = MakeGround(world, &belt);
-	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
+	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tbVec2_zero, 0.6f);
 	Step(world, 120);
 	cr_assert(fabsf(tbBody_GetLinearVelocity(box).x) <= 1e-4f, "the box rests before the belt starts");
 	belt.tangentSpeed = 2.0f;
@@ -134,7 +134,7 @@ static float MeasureRollingDeceleration(tbWorldDef worldDef, float c, float* sli
 	tbBodyId ball = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	shapeDef.material.rollingResistance = c;
-	tbCircle circle = {tb_vec2_zero, radius};
+	tbCircle circle = {tbVec2_zero, radius};
 	tbShapeId ballShape = tbCreateCircleShape(ball, &shapeDef, &circle);
 	cr_assert_eq(tbShape_GetSurfaceMaterial(ballShape).rollingResistance, c);
 	Step(world, 30);
@@ -206,7 +206,7 @@ Test(materials, motion_locks_hold_their_axes)
 
 	// rotation locked: spun, it never turns.
 	bodyDef.position = (tbVec2){10.0f, 5.0f};
-	bodyDef.linearVelocity = tb_vec2_zero;
+	bodyDef.linearVelocity = tbVec2_zero;
 	bodyDef.angularVelocity = 5.0f;
 	bodyDef.motionLocks = (tbMotionLocks){false, false, true};
 	tbBodyId lockedZ = tbCreateBody(world, &bodyDef);
@@ -269,7 +269,7 @@ Test(materials, user_material_ids_and_custom_colours)
 	tbSurfaceMaterial ground = tbDefaultSurfaceMaterial();
 	ground.userMaterialId = 0x100000000ull; // above 32 bits
 	tbShapeId groundShape = MakeGround(world, &ground);
-	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
+	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tbVec2_zero, 0.6f);
 	tbShapeId boxShape;
 	cr_assert_eq(tbBody_GetShapes(box, &boxShape, 1), 1);
 	tbShape_SetUserMaterial(boxShape, 7u);
@@ -320,7 +320,7 @@ Test(materials, bad_materials_and_locks_are_refused_without_change, .init = Setu
 			tbBodyId body = tbCreateBody(world, &bodyDef);
 			tbShapeDef shapeDef = tbDefaultShapeDef();
 			shapeDef.material = bad;
-			tbCircle circle = {tb_vec2_zero, 0.5f};
+			tbCircle circle = {tbVec2_zero, 0.5f};
 			before = s_errors;
 			tbShapeId none = tbCreateCircleShape(body, &shapeDef, &circle);
 			cr_expect_not(tbShape_IsValid(none));

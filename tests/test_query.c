@@ -25,7 +25,7 @@ static Scene MakeScene(void)
 	tbBodyDef bd = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(s.world, &bd);
 	tbShapeDef sd = tbDefaultShapeDef();
-	tbPolygon groundBox = tbMakeOffsetBox(10.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbPolygon groundBox = tbMakeOffsetBox(10.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tbRot_identity);
 	s.ground = tbCreatePolygonShape(ground, &sd, &groundBox);
 
 	bd.type = tb_dynamicBody;
@@ -252,7 +252,7 @@ static bool BlastCallback(tbShapeId shapeId, void* context)
 	c->pushed += 1;
 	// Moving it would move the broad-phase node the query is walking: refused, nothing changed.
 	tbVec2 before = tbBody_GetPosition(body);
-	if (tbBody_SetTransform(body, tbMakeVec2(50.0f, 50.0f), tb_rot_identity) == false)
+	if (tbBody_SetTransform(body, tbMakeVec2(50.0f, 50.0f), tbRot_identity) == false)
 	{
 		c->refusedMoves += 1;
 	}
@@ -286,6 +286,6 @@ Test(query, callback_may_apply_impulses_but_not_move_bodies, .init = SetupErrors
 	cr_assert_float_eq(tbBody_GetAngularVelocity(box), 1.0f, 1e-6f);
 	cr_assert(tbBody_GetLinearVelocity(box).x > 0.0f && tbBody_GetLinearVelocity(ball).x < 0.0f, "pushed apart");
 	// After the query the world takes structural changes again.
-	cr_assert(tbBody_SetTransform(box, tbMakeVec2(3.0f, 3.0f), tb_rot_identity));
+	cr_assert(tbBody_SetTransform(box, tbMakeVec2(3.0f, 3.0f), tbRot_identity));
 	tbDestroyWorld(s.world);
 }

@@ -79,17 +79,17 @@ Test(v3_api, offset_rounded_box_and_polygon, .init = SetupErrors, .fini = Teardo
 	cr_assert_float_eq(tbComputePolygonMass(&polygon, 1.0f).mass, area, 1e-5f * area);
 
 	int before = s_errors;
-	cr_assert_eq(tbMakeOffsetRoundedBox(1.0f, 0.5f, tb_vec2_zero, tb_rot_identity, -0.1f).count, 0);
+	cr_assert_eq(tbMakeOffsetRoundedBox(1.0f, 0.5f, tbVec2_zero, tbRot_identity, -0.1f).count, 0);
 	ExpectError(before, "tbMakeOffsetRoundedBox", "radius");
 	before = s_errors;
-	cr_assert_eq(tbMakeOffsetRoundedBox(1.0f, 0.5f, tbMakeVec2(NAN, 0.0f), tb_rot_identity, 0.1f).count, 0);
+	cr_assert_eq(tbMakeOffsetRoundedBox(1.0f, 0.5f, tbMakeVec2(NAN, 0.0f), tbRot_identity, 0.1f).count, 0);
 	ExpectError(before, "tbMakeOffsetRoundedBox", "center");
 	before = s_errors;
 	tbRot bad = {2.0f, 0.0f};
-	cr_assert_eq(tbMakeOffsetRoundedPolygon(&hull, tb_vec2_zero, bad, 0.1f).count, 0);
+	cr_assert_eq(tbMakeOffsetRoundedPolygon(&hull, tbVec2_zero, bad, 0.1f).count, 0);
 	ExpectError(before, "tbMakeOffsetRoundedPolygon", "rotation");
 	before = s_errors;
-	cr_assert_eq(tbMakeOffsetRoundedPolygon(&hull, tb_vec2_zero, tb_rot_identity, INFINITY).count, 0);
+	cr_assert_eq(tbMakeOffsetRoundedPolygon(&hull, tbVec2_zero, tbRot_identity, INFINITY).count, 0);
 	ExpectError(before, "tbMakeOffsetRoundedPolygon", "radius");
 }
 
@@ -105,16 +105,16 @@ Test(v3_api, offset_proxy, .init = SetupErrors, .fini = TeardownErrors)
 
 	int before = s_errors;
 	tbRot bad = {2.0f, 0.0f};
-	cr_assert_eq(tbMakeOffsetProxy(points, 2, 0.5f, tb_vec2_zero, bad).count, 0);
+	cr_assert_eq(tbMakeOffsetProxy(points, 2, 0.5f, tbVec2_zero, bad).count, 0);
 	ExpectError(before, "tbMakeOffsetProxy", "rotation");
 	before = s_errors;
-	cr_assert_eq(tbMakeOffsetProxy(points, 0, 0.5f, tb_vec2_zero, tb_rot_identity).count, 0);
+	cr_assert_eq(tbMakeOffsetProxy(points, 0, 0.5f, tbVec2_zero, tbRot_identity).count, 0);
 	ExpectError(before, "tbMakeOffsetProxy", "count");
 	before = s_errors;
-	cr_assert_eq(tbMakeOffsetProxy(points, 2, -1.0f, tb_vec2_zero, tb_rot_identity).count, 0);
+	cr_assert_eq(tbMakeOffsetProxy(points, 2, -1.0f, tbVec2_zero, tbRot_identity).count, 0);
 	ExpectError(before, "tbMakeOffsetProxy", "radius");
 	before = s_errors;
-	cr_assert_eq(tbMakeOffsetProxy(NULL, 2, 0.5f, tb_vec2_zero, tb_rot_identity).count, 0);
+	cr_assert_eq(tbMakeOffsetProxy(NULL, 2, 0.5f, tbVec2_zero, tbRot_identity).count, 0);
 	ExpectError(before, "tbMakeOffsetProxy", "points");
 }
 
@@ -124,7 +124,7 @@ Test(v3_api, ray_validity, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbRayCastInput ray = {{0.0f, 0.0f}, {1.0f, 0.0f}, 1.0f};
 	cr_assert(tbIsValidRay(&ray));
-	ray.translation = tb_vec2_zero;
+	ray.translation = tbVec2_zero;
 	cr_assert(tbIsValidRay(&ray), "a zero translation is a valid ray that hits nothing");
 	tbRayCastInput bad[5] = {{{NAN, 0.0f}, {1.0f, 0.0f}, 1.0f},
 							 {{0.0f, 0.0f}, {INFINITY, 0.0f}, 1.0f},
@@ -250,7 +250,7 @@ Test(v3_api, shape_casts_refuse_bad_input, .init = SetupErrors, .fini = Teardown
 // in the body and (2, 3) + (0, 1) in the world; the v3 names agree with Tumble's.
 Test(v3_api, body_center_names, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
 	tbBodyDef def = tbDefaultBodyDef();
 	def.type = tb_dynamicBody;
 	def.position = tbMakeVec2(2.0f, 3.0f);
@@ -277,8 +277,8 @@ Test(v3_api, body_center_names, .init = SetupErrors, .fini = TeardownErrors)
 // give the rotational inertia about the shape's centre of mass).
 Test(v3_api, shape_compute_mass_data, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId body = MakeBody(world, tb_dynamicBody, tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
+	tbBodyId body = MakeBody(world, tb_dynamicBody, tbVec2_zero);
 	tbShapeDef def = tbDefaultShapeDef();
 	def.density = 2.0f;
 	tbCircle circle = {{1.0f, 0.0f}, 0.5f};
@@ -348,12 +348,12 @@ Test(v3_api, shape_pre_solve_switch, .init = SetupErrors, .fini = TeardownErrors
 // rest, so drag does not matter).
 Test(v3_api, shape_wind_closed_forms)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
 	float q = 0.5f * 1.225f * 100.0f; // |wind| = 10 m/s
 
 	// Disc r = 0.5: width 2r = 1, F = q along the wind, no torque (it acts at the centre).
 	tbBodyId disc = MakeBody(world, tb_dynamicBody, tbMakeVec2(-10.0f, 0.0f));
-	tbShapeId discShape = AddCircle(disc, tb_vec2_zero, 0.5f);
+	tbShapeId discShape = AddCircle(disc, tbVec2_zero, 0.5f);
 	// Unit box: one face (width 1) meets the wind square on: F = q, no lift, no torque.
 	tbBodyId box = MakeBody(world, tb_dynamicBody, tbMakeVec2(0.0f, 0.0f));
 	tbShapeId boxShape = AddBox(box, 0.5f, 0.5f);
@@ -397,7 +397,7 @@ Test(v3_api, shape_wind_closed_forms)
 // of the two implementations (they agreed to 2e-6).
 Test(v3_api, shape_wind_matches_box2d_v3_with_lift)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
 	tbBodyDef bd = tbDefaultBodyDef();
 	bd.type = tb_dynamicBody;
 	bd.rotation.c = cosf(0.3f);
@@ -417,12 +417,12 @@ Test(v3_api, shape_wind_matches_box2d_v3_with_lift)
 // body, a segment, and a sleeping body with wake false are left alone; bad input is refused.
 Test(v3_api, shape_wind_refusals_and_no_ops, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
 	tbBodyDef bd = tbDefaultBodyDef();
 	bd.type = tb_dynamicBody;
 	bd.linearVelocity = tbMakeVec2(10.0f, 0.0f);
 	tbBodyId rider = tbCreateBody(world, &bd);
-	tbShapeId riderShape = AddCircle(rider, tb_vec2_zero, 0.5f);
+	tbShapeId riderShape = AddCircle(rider, tbVec2_zero, 0.5f);
 	cr_assert(tbShape_ApplyWind(riderShape, tbMakeVec2(10.0f, 0.0f), 1.0f, 0.0f, true));
 	tbBodyId ground = MakeBody(world, tb_staticBody, tbMakeVec2(0.0f, -5.0f));
 	tbShapeDef sd = tbDefaultShapeDef();
@@ -434,7 +434,7 @@ Test(v3_api, shape_wind_refusals_and_no_ops, .init = SetupErrors, .fini = Teardo
 	bd.position = tbMakeVec2(0.0f, 5.0f);
 	bd.isAwake = false;
 	tbBodyId sleeper = tbCreateBody(world, &bd);
-	tbShapeId sleeperShape = AddCircle(sleeper, tb_vec2_zero, 0.5f);
+	tbShapeId sleeperShape = AddCircle(sleeper, tbVec2_zero, 0.5f);
 	cr_assert_not(tbShape_ApplyWind(sleeperShape, tbMakeVec2(10.0f, 0.0f), 1.0f, 0.0f, false));
 	cr_assert_not(tbBody_IsAwake(sleeper), "wake false leaves it asleep");
 	cr_assert_eq(s_errors, 0, "ignoring is not an error");
@@ -475,9 +475,9 @@ typedef struct JointPair
 static JointPair MakePair(void)
 {
 	JointPair p;
-	p.world = MakeWorld(tb_vec2_zero);
-	p.a = MakeBody(p.world, tb_staticBody, tb_vec2_zero);
-	p.b = MakeBody(p.world, tb_dynamicBody, tb_vec2_zero);
+	p.world = MakeWorld(tbVec2_zero);
+	p.a = MakeBody(p.world, tb_staticBody, tbVec2_zero);
+	p.b = MakeBody(p.world, tb_dynamicBody, tbVec2_zero);
 	AddBox(p.b, 0.25f, 0.25f);
 	return p;
 }
@@ -679,7 +679,7 @@ Test(v3_api, world_contact_recycle_distance, .init = SetupErrors, .fini = Teardo
 // than 1.5 × TB_LINEAR_SLOP (0.0075 m) apart: two manifold points, one with speculation off.
 static int ContactPoints(bool speculative)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
 	tbWorld_EnableSpeculative(world, speculative);
 	tbBodyId ground = MakeBody(world, tb_staticBody, tbMakeVec2(0.0f, -0.5f));
 	AddBox(ground, 5.0f, 0.5f);
@@ -717,7 +717,7 @@ Test(v3_api, world_bounds, .init = SetupErrors, .fini = TeardownErrors)
 	tbBodyId ground = MakeBody(world, tb_staticBody, tbMakeVec2(0.0f, -0.5f));
 	AddBox(ground, 5.0f, 0.5f);
 	tbBodyId ball = MakeBody(world, tb_dynamicBody, tbMakeVec2(0.0f, 3.0f));
-	AddCircle(ball, tb_vec2_zero, 0.5f);
+	AddCircle(ball, tbVec2_zero, 0.5f);
 	tbAABB bounds = tbWorld_GetBounds(world);
 	ExpectVec2(bounds.lowerBound, -5.0f, -1.0f, 1e-6f, "lower");
 	ExpectVec2(bounds.upperBound, 5.0f, 3.0f + 0.5f + TB_AABB_MARGIN, 1e-6f, "upper");
@@ -789,7 +789,7 @@ static uint64_t RunStaticRow(bool rebuild, float* rayFraction)
 	for (int i = 0; i < 20; ++i)
 	{
 		tbBodyId ball = MakeBody(world, tb_dynamicBody, tbMakeVec2(2.0f * (float)i - 19.5f, 3.0f));
-		AddCircle(ball, tb_vec2_zero, 0.3f);
+		AddCircle(ball, tbVec2_zero, 0.3f);
 	}
 	for (int step = 0; step < 90; ++step)
 	{
@@ -817,7 +817,7 @@ Test(v3_api, world_rebuild_static_tree, .init = SetupErrors, .fini = TeardownErr
 	cr_assert_eq(a, b);
 	cr_assert_gt(rebuilt, 0.0f);
 	cr_assert_float_eq(plain, rebuilt, 0.0f);
-	tbWorldId world = MakeWorld(tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
 	tbDestroyWorld(world);
 	int before = s_errors;
 	tbWorld_RebuildStaticTree(world);
@@ -1034,7 +1034,7 @@ Test(v3_api, length_units_scale_the_tolerances, .init = SetupErrors, .fini = Tea
 	cr_assert_float_eq(depthCentimetres / 100.0f, depthMetres, 0.01f * depthMetres);
 
 	// Refused while a world exists, and out of range; the units stay.
-	tbWorldId world = MakeWorld(tb_vec2_zero);
+	tbWorldId world = MakeWorld(tbVec2_zero);
 	int before = s_errors;
 	cr_assert_not(tbSetLengthUnitsPerMeter(32.0f));
 	ExpectError(before, "tbSetLengthUnitsPerMeter", "world exists");

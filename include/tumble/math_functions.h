@@ -79,11 +79,12 @@ typedef struct tbAABB
 	tbVec2 upperBound;
 } tbAABB;
 
-static const tbVec2 tb_vec2_zero = {0.0f, 0.0f};
+static const tbVec2 tbVec2_zero = {0.0f, 0.0f};
+static const tbRot tbRot_identity = {1.0f, 0.0f};
+static const tbTransform tbTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
+static const tbMat22 tbMat22_zero = {{0.0f, 0.0f}, {0.0f, 0.0f}};
 static const tbPos tbPos_zero = {0.0f, 0.0f};
-static const tbRot tb_rot_identity = {1.0f, 0.0f};
-static const tbTransform tb_transform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
-static const tbMat22 tb_mat22_zero = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+static const tbWorldTransform tbWorldTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
 
 /// True for a finite float (neither NaN nor infinity).
 TB_INLINE bool tbIsValidFloat(float a)
@@ -287,7 +288,7 @@ TB_INLINE tbVec2 tbNormalize(tbVec2 v)
 	float length = tbLength(v);
 	if (length < FLT_EPSILON)
 	{
-		return tb_vec2_zero;
+		return tbVec2_zero;
 	}
 	float inv = 1.0f / length;
 	tbVec2 n = {inv * v.x, inv * v.y};
@@ -306,7 +307,7 @@ TB_INLINE tbVec2 tbGetLengthAndNormalize(float* length, tbVec2 v)
 	*length = tbLength(v);
 	if (*length < FLT_EPSILON)
 	{
-		return tb_vec2_zero;
+		return tbVec2_zero;
 	}
 	float inv = 1.0f / *length;
 	tbVec2 n = {inv * v.x, inv * v.y};
@@ -555,12 +556,7 @@ TB_INLINE bool tbIsValidAABB(tbAABB a)
 	return d.x >= 0.0f && d.y >= 0.0f && tbIsValidVec2(a.lowerBound) && tbIsValidVec2(a.upperBound);
 }
 
-// --- Box2D v3.2's names for the same things, and its smaller helpers ---------------------------
-
-static const tbVec2 tbVec2_zero = {0.0f, 0.0f};
-static const tbRot tbRot_identity = {1.0f, 0.0f};
-static const tbTransform tbTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
-static const tbWorldTransform tbWorldTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
+// --- Box2D v3.2's smaller helpers --------------------------------------------------------------
 
 TB_INLINE int tbAbsInt(int a)
 {

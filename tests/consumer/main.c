@@ -11,7 +11,7 @@ int main(void)
 	tbBodyDef groundDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &groundDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tbRot_identity);
 	tbCreatePolygonShape(ground, &shapeDef, &groundBox);
 
 	tbBodyDef boxDef = tbDefaultBodyDef();
