@@ -46,7 +46,7 @@ static FuzzShape MakePolygonShape(FuzzInput* in)
 		float hx = FuzzFloat(in), hy = FuzzFloat(in);
 		tbVec2 center = FuzzVec2(in);
 		tbRot q = tbMakeRot(FuzzFloat(in));
-		shape.geometry.polygon = tbIsValidRot(q) ? tbMakeOffsetBox(hx, hy, center, q) : tbMakeBox(hx, hy);
+		shape.geometry.polygon = tbIsValidRotation(q) ? tbMakeOffsetBox(hx, hy, center, q) : tbMakeBox(hx, hy);
 	}
 	else if (kind == 1)
 	{
@@ -109,7 +109,7 @@ static FuzzShape MakeShape(FuzzInput* in)
 static tbTransform MakeTransform(FuzzInput* in, bool* valid)
 {
 	tbTransform xf = {FuzzVec2(in), tbMakeRot(FuzzFloat(in))};
-	*valid = InBounds(xf.p) && tbIsValidRot(xf.q);
+	*valid = InBounds(xf.p) && tbIsValidRotation(xf.q);
 	return xf;
 }
 

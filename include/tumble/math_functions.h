@@ -98,7 +98,7 @@ TB_INLINE bool tbIsValidVec2(tbVec2 v)
 }
 
 /// A valid rotation is finite and normalised to 1e-4 (after tbNormalizeRot it is to float rounding).
-TB_INLINE bool tbIsValidRot(tbRot q)
+TB_INLINE bool tbIsValidRotation(tbRot q)
 {
 	if (tbIsValidFloat(q.c) == false || tbIsValidFloat(q.s) == false)
 	{
@@ -467,7 +467,7 @@ TB_INLINE tbTransform tbInvMulTransforms(tbTransform A, tbTransform B)
 
 TB_INLINE bool tbIsValidTransform(tbTransform t)
 {
-	return tbIsValidVec2(t.p) && tbIsValidRot(t.q);
+	return tbIsValidVec2(t.p) && tbIsValidRotation(t.q);
 }
 
 TB_INLINE tbVec2 tbMulMV(tbMat22 A, tbVec2 v)
@@ -581,7 +581,7 @@ TB_INLINE tbRot tbMakeRotFromUnitVector(tbVec2 unitVector)
 	return q;
 }
 
-/// cos² + sin² within 6e-4 of 1 (tbIsValidRot also asks for finite numbers).
+/// cos² + sin² within 6e-4 of 1 (tbIsValidRotation also asks for finite numbers).
 TB_INLINE bool tbIsNormalizedRot(tbRot q)
 {
 	float d = q.c * q.c + q.s * q.s - 1.0f;
@@ -604,7 +604,6 @@ TB_INLINE float tbComputeAngularVelocity(tbRot q1, tbRot q2, float inv_h)
 
 /// The rotation taking unit vector v1 to unit vector v2: cos = v1·v2, sin = v1 × v2.
 TB_API tbRot tbComputeRotationBetweenUnitVectors(tbVec2 v1, tbVec2 v2);
-TB_API bool tbIsValidRotation(tbRot q);
 TB_API bool tbIsValidPlane(tbPlane plane);
 TB_API bool tbIsValidPosition(tbPos p);
 TB_API bool tbIsValidWorldTransform(tbWorldTransform t);

@@ -176,7 +176,7 @@ tbShapeProxy tbMakeOffsetProxy(const tbVec2* points, int count, float radius, tb
 	{
 		return proxy;
 	}
-	if (tbIsValidRot(rotation) == false)
+	if (tbIsValidRotation(rotation) == false)
 	{
 		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot", (double)rotation.c,
 					  (double)rotation.s);

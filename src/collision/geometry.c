@@ -109,7 +109,7 @@ static bool tbCheckOffset(const char* f, const char* positionName, tbVec2 positi
 	{
 		return false;
 	}
-	if (tbIsValidRot(rotation) == false)
+	if (tbIsValidRotation(rotation) == false)
 	{
 		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot", (double)rotation.c,
 					  (double)rotation.s);

@@ -277,7 +277,7 @@ static bool tbCheckFrame(const char* f, const char* name, tbTransform frame)
 						 "the body", name, (double)frame.p.x, (double)frame.p.y, (double)TB_MAX_COORDINATE);
 		return false;
 	}
-	if (tbIsValidRot(frame.q) == false)
+	if (tbIsValidRotation(frame.q) == false)
 	{
 		tbReportError(f, "%s.q is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", name,
 					  (double)frame.q.c, (double)frame.q.s);

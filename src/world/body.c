@@ -90,7 +90,7 @@ static bool tbCheckBodyDef(const tbBodyDef* def)
 		tbReportError(f, "def->type is %d; use tb_staticBody, tb_kinematicBody or tb_dynamicBody", (int)def->type);
 		return false;
 	}
-	if (tbIsValidRot(def->rotation) == false)
+	if (tbIsValidRotation(def->rotation) == false)
 	{
 		tbReportError(f, "def->rotation is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)",
 					  (double)def->rotation.c, (double)def->rotation.s);
@@ -634,7 +634,7 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbPos position, tbRot rotation)
 	{
 		return false;
 	}
-	if (tbIsValidRot(rotation) == false)
+	if (tbIsValidRotation(rotation) == false)
 	{
 		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", (double)rotation.c,
 					  (double)rotation.s);
@@ -753,7 +753,7 @@ bool tbBody_SetTargetTransform(tbBodyId bodyId, tbWorldTransform target, float t
 	{
 		return false;
 	}
-	if (tbIsValidRot(target.q) == false)
+	if (tbIsValidRotation(target.q) == false)
 	{
 		tbReportError(f, "target.q is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", (double)target.q.c,
 					  (double)target.q.s);
