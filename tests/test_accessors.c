@@ -261,7 +261,7 @@ static float HoldAgainst(tbWorldId world, tbBodyId body, float torque, tbVec2 fo
 	for (int step = 0; step < 60; ++step)
 	{
 		tbBody_ApplyTorque(body, torque, true);
-		tbBody_ApplyForce(body, force, tbBody_GetWorldCenterOfMass(body), true);
+		tbBody_ApplyForce(body, force, tbBody_GetWorldCenter(body), true);
 		tbWorld_Step(world, TIME_STEP, 4);
 	}
 	return read(joint);

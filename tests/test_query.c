@@ -246,7 +246,7 @@ static bool BlastCallback(tbShapeId shapeId, void* context)
 	{
 		return true;
 	}
-	tbVec2 away = tbNormalize(tbSub(tbBody_GetWorldCenterOfMass(body), c->centre));
+	tbVec2 away = tbNormalize(tbSub(tbBody_GetWorldCenter(body), c->centre));
 	tbBody_ApplyLinearImpulseToCenter(body, tbMulSV(c->impulse, away), true);
 	tbBody_SetAngularVelocity(body, 1.0f);
 	c->pushed += 1;

@@ -937,18 +937,6 @@ float tbBody_GetRotationalInertia(tbBodyId bodyId)
 	return body != NULL ? body->inertia : 0.0f;
 }
 
-tbVec2 tbBody_GetLocalCenterOfMass(tbBodyId bodyId)
-{
-	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalCenterOfMass", NULL, false);
-	return body != NULL ? body->localCenter : tbVec2_zero;
-}
-
-tbPos tbBody_GetWorldCenterOfMass(tbBodyId bodyId)
-{
-	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldCenterOfMass", NULL, false);
-	return body != NULL ? body->center : tbPos_zero;
-}
-
 tbVec2 tbBody_GetLocalCenter(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalCenter", NULL, false);

@@ -1136,13 +1136,6 @@ tbWorldCastOutput tbShape_RayCast(tbShapeId shapeId, tbPos origin, tbVec2 transl
 	return output;
 }
 
-tbMassData tbShape_GetMassData(tbShapeId shapeId)
-{
-	tbMassData md = {0};
-	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetMassData", NULL, false);
-	return shape != NULL ? tbComputeShapeMass(&shape->geometry, shape->density) : md;
-}
-
 tbMassData tbShape_ComputeMassData(tbShapeId shapeId)
 {
 	tbMassData md = {0};
