@@ -9,18 +9,12 @@
 #include "tumble/tumble.h"
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 #include <math.h>
 
 #define TIME_STEP (1.0f / 60.0f)
 #define SEGMENTS 100
-
-static tbWorldId CreateWorld(void)
-{
-	tbWorldDef def = tbDefaultWorldDef();
-	def.gravity = tbMakeVec2(0.0f, -10.0f);
-	return tbCreateWorld(&def);
-}
 
 /// Flat ground from x = 0 to x = SEGMENTS at y = 0, solid below: points run right to left, with a
 /// ghost point beyond each end.
@@ -104,7 +98,7 @@ Test(chain, box_and_capsule_cross_seams_without_bumps)
 	{
 		for (int s = 0; s < 3; ++s)
 		{
-			tbWorldId world = CreateWorld();
+			tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 			CreateFlatChain(world);
 			tbBodyId body = CreateMover(world, (Mover)kind);
 			float worst = MaxVerticalSpeed(world, body, speeds[s]);
@@ -121,7 +115,7 @@ Test(chain, box_and_capsule_cross_seams_without_bumps)
 // from above hits the ground at y = 0, a ray from below does not.
 Test(chain, is_one_sided)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	CreateFlatChain(world);
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	bodyDef.type = tb_dynamicBody;
@@ -154,7 +148,7 @@ Test(chain, is_one_sided)
 // square loop (solid inside) rests on its top face at the box's half height above it.
 Test(chain, loops_hold_inside_or_outside)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbBodyDef groundDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &groundDef);
 	tbVec2 ring[16];
@@ -213,7 +207,7 @@ Test(chain, loops_hold_inside_or_outside)
 // speed and stops on the half with friction 1 within v²/(2μg) = 9/20 = 0.45 m of reaching it.
 Test(chain, materials_per_segment)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbVec2 points[13];
 	for (int i = 0; i < 13; ++i)
 	{
@@ -271,7 +265,7 @@ Test(chain, materials_per_segment)
 // Bad chains are refused with one error naming the problem, and nothing is created.
 Test(chain, bad_input_is_refused, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &bodyDef);
 	tbVec2 good[5] = {{4, 0}, {3, 0}, {2, 0}, {1, 0}, {0, 0}};
@@ -357,7 +351,7 @@ Test(chain, bad_input_is_refused, .init = SetupErrors, .fini = TeardownErrors)
 Test(chain, memory_is_returned)
 {
 	int before = tbGetByteCount();
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	CreateFlatChain(world);
 	tbBodyId body = CreateMover(world, MoverBox);
 	(void)body;
@@ -443,7 +437,7 @@ Test(chain, convex_joint_is_reported_once)
 static float HighestPoint(float speedFraction)
 {
 	const float R = 5.0f, r = 0.25f, g = 10.0f;
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbBodyDef groundDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &groundDef);
 	static tbVec2 loop[1024];

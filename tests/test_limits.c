@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 // --- an assertion hook that counts instead of aborting ----------------------------------------
 
@@ -246,26 +247,13 @@ static void ExpectFiniteBody(tbBodyId body, int step)
 			  (double)w);
 }
 
-static tbBodyId MakeBox(tbWorldId world, tbVec2 position, tbVec2 velocity)
-{
-	tbBodyDef def = tbDefaultBodyDef();
-	def.type = tb_dynamicBody;
-	def.position = position;
-	def.linearVelocity = velocity;
-	tbBodyId body = tbCreateBody(world, &def);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbCreatePolygonShape(body, &shapeDef, &box);
-	return body;
-}
-
 Test(world_limits, step_counts_and_spans_beyond_bounds_refused, .init = SetupHooks, .fini = TeardownHooks)
 {
 	// Before: 2^31 − 1 sub-steps were accepted (a step then ran for minutes) and so was a time step
 	// of 1e30 s.
 	tbWorldDef def = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&def);
-	tbBodyId body = MakeBox(world, tbMakeVec2(0.0f, 10.0f), tbVec2_zero);
+	tbBodyId body = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 10.0f), 0.5f, 0.5f, 1.0f);
 	int n = s_errors;
 	cr_assert_not(tbWorld_Step(world, 1.0f / 60.0f, 2147483647));
 	ExpectError(n, "tbWorld_Step", "subStepCount");
@@ -303,7 +291,10 @@ Test(world_limits, huge_velocity_clamped_to_maximum_speed_not_zeroed, .init = Se
 	tbWorldDef def = tbDefaultWorldDef();
 	def.gravity = tbVec2_zero;
 	tbWorldId world = tbCreateWorld(&def);
-	tbBodyId body = MakeBox(world, tbVec2_zero, tbMakeVec2(3e20f, 4e20f));
+	tbBodyDef boxDef = tbDefaultBodyDef();
+	boxDef.type = tb_dynamicBody;
+	boxDef.linearVelocity = tbMakeVec2(3e20f, 4e20f);
+	tbBodyId body = CreateBoxFromDef(world, &boxDef, 0.5f, 0.5f, NULL);
 	cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
 	tbVec2 v = tbBody_GetLinearVelocity(body);
 	float tolerance = 4.0f * FLT_EPSILON * def.maximumLinearSpeed;
@@ -319,7 +310,7 @@ Test(world_limits, gravity_near_float_max_clamped_and_positions_finite, .init = 
 	tbWorldDef def = tbDefaultWorldDef();
 	def.gravity = tbMakeVec2(0.0f, -3e38f);
 	tbWorldId world = tbCreateWorld(&def);
-	tbBodyId body = MakeBox(world, tbVec2_zero, tbVec2_zero);
+	tbBodyId body = CreateBox(world, tb_dynamicBody, tbVec2_zero, 0.5f, 0.5f, 1.0f);
 	tbBodyDef scaledDef = tbDefaultBodyDef();
 	scaledDef.type = tb_dynamicBody;
 	scaledDef.gravityScale = 10.0f; // 3e39: infinite in float
@@ -726,7 +717,7 @@ Test(world_limits, impulse_giving_a_non_finite_velocity_refused, .init = SetupHo
 	tbWorldDef def = tbDefaultWorldDef();
 	def.gravity = tbVec2_zero;
 	tbWorldId world = tbCreateWorld(&def);
-	tbBodyId body = MakeBox(world, tbVec2_zero, tbVec2_zero);
+	tbBodyId body = CreateBox(world, tb_dynamicBody, tbVec2_zero, 0.5f, 0.5f, 1.0f);
 	int n = s_errors;
 	cr_assert(tbBody_ApplyLinearImpulseToCenter(body, tbMakeVec2(3e38f, 0.0f), true));
 	cr_assert_not(tbBody_ApplyLinearImpulseToCenter(body, tbMakeVec2(3e38f, 0.0f), true));
@@ -858,13 +849,6 @@ static float CountCastHit(tbShapeId shapeId, tbPos point, tbVec2 normal, float f
 	return fraction;
 }
 
-static bool CountOverlap(tbShapeId shapeId, void* context)
-{
-	(void)shapeId;
-	*(int*)context += 1;
-	return true;
-}
-
 Test(world_limits, query_placements_beyond_max_coordinate_refused, .init = SetupHooks, .fini = TeardownHooks)
 {
 	// The collision layer's answers are defined for placements within TB_MAX_COORDINATE: a world
@@ -980,8 +964,12 @@ Test(world_limits, time_step_below_minimum_refused, .init = SetupHooks, .fini = 
 		tbShapeDef shapeDef = tbDefaultShapeDef();
 		tbPolygon floor = tbMakeOffsetBox(10.0f, 0.5f, tbMakeVec2(0.0f, -0.5f), tbRot_identity);
 		cr_assert(TB_IS_NON_NULL(tbCreatePolygonShape(ground, &shapeDef, &floor)));
-		tbBodyId resting = MakeBox(world, tbMakeVec2(-3.0f, 0.45f), tbVec2_zero);
-		tbBodyId spinning = MakeBox(world, tbMakeVec2(3.0f, 0.45f), tbMakeVec2(1.0f, -1.0f));
+		tbBodyId resting = CreateBox(world, tb_dynamicBody, tbMakeVec2(-3.0f, 0.45f), 0.5f, 0.5f, 1.0f);
+		tbBodyDef spinningDef = tbDefaultBodyDef();
+		spinningDef.type = tb_dynamicBody;
+		spinningDef.position = tbMakeVec2(3.0f, 0.45f);
+		spinningDef.linearVelocity = tbMakeVec2(1.0f, -1.0f);
+		tbBodyId spinning = CreateBoxFromDef(world, &spinningDef, 0.5f, 0.5f, NULL);
 		cr_assert(tbBody_SetAngularVelocity(spinning, 3e38f));
 		for (int k = 0; k < 2; ++k)
 		{

@@ -5,6 +5,7 @@
 #include "tumble/tumble.h"
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <string.h>
@@ -117,13 +118,6 @@ Test(query, ray_all_hits_continue_and_stop)
 	tbWorld_CastRay(s.world, tbMakeVec2(-3.0f, 5.0f), tbMakeVec2(0.0f, -10.0f), tbDefaultQueryFilter(), CollectHit, &stop);
 	cr_assert_eq(stop.count, 1);
 	tbDestroyWorld(s.world);
-}
-
-static bool CountOverlap(tbShapeId shapeId, void* context)
-{
-	(void)shapeId;
-	*(int*)context += 1;
-	return true;
 }
 
 Test(query, overlap_aabb_point_and_shape)
