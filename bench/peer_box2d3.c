@@ -439,7 +439,7 @@ PeerWorld* PeerBox2D3_Create(const Scene* scene)
 	peer->driven = calloc(slots, sizeof(int));
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
-		peer->bodies[i] = MakeBody(peer->world, scene->bodies + i, tb_vec2_zero);
+		peer->bodies[i] = MakeBody(peer->world, scene->bodies + i, tbVec2_zero);
 		if (scene->bodies[i].drive.enabled)
 		{
 			peer->driven[peer->drivenCount++] = i;

@@ -517,7 +517,7 @@ static Run RunBoxes(bool wide, Variant variant, int stepCount)
 	}
 	else
 	{
-		AddBox(worldId, tb_staticBody, tbMakeVec2(0.0f, -0.5f), 0.0f, tb_vec2_zero, 0.0f, 100.0f, 0.0f);
+		AddBox(worldId, tb_staticBody, tbMakeVec2(0.0f, -0.5f), 0.0f, tbVec2_zero, 0.0f, 100.0f, 0.0f);
 	}
 	tbBodyId ids[BOX_COUNT];
 	for (int i = 0; i < BOX_COUNT; ++i)
@@ -625,7 +625,7 @@ Test(constraint_graph, a_body_with_more_contacts_than_colours_rests)
 	def.enableSleep = false;
 	tbWorldId worldId = tbCreateWorld(&def);
 	s_friction = 0.6f;
-	AddBox(worldId, tb_staticBody, tbMakeVec2(0.0f, -0.5f), 0.0f, tb_vec2_zero, 0.0f, 100.0f, 0.0f);
+	AddBox(worldId, tb_staticBody, tbMakeVec2(0.0f, -0.5f), 0.0f, tbVec2_zero, 0.0f, 100.0f, 0.0f);
 	tbBodyDef bd = tbDefaultBodyDef();
 	bd.type = tb_dynamicBody;
 	bd.position = tbMakeVec2(0.0f, 0.1f);
@@ -636,7 +636,7 @@ Test(constraint_graph, a_body_with_more_contacts_than_colours_rests)
 	tbBodyId boxes[30];
 	for (int i = 0; i < 30; ++i)
 	{
-		boxes[i] = AddBox(worldId, tb_dynamicBody, tbMakeVec2(-14.5f + (float)i, 0.7f), 0.0f, tb_vec2_zero, 0.0f, 0.25f,
+		boxes[i] = AddBox(worldId, tb_dynamicBody, tbMakeVec2(-14.5f + (float)i, 0.7f), 0.0f, tbVec2_zero, 0.0f, 0.25f,
 						  0.0f);
 	}
 	for (int i = 0; i < 180; ++i)

@@ -15,6 +15,7 @@
 #include <criterion/criterion.h>
 
 #include "tumble/tumble.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -25,54 +26,6 @@
 #define GRAVITY 10.0f
 
 // --- helpers ----------------------------------------------------------------------------------
-
-static tbWorldId CreateWorld(void)
-{
-	tbWorldDef def = tbDefaultWorldDef();
-	def.gravity = (tbVec2){0.0f, -GRAVITY};
-	tbWorldId world = tbCreateWorld(&def);
-	cr_assert(tbWorld_IsValid(world));
-	return world;
-}
-
-/// Static ground box of half size (20, 1) whose top face is at y = 0.
-static tbShapeId CreateGround(tbWorldId world, const tbShapeDef* shapeDef)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.position = (tbVec2){0.0f, -1.0f};
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef def = shapeDef != NULL ? *shapeDef : tbDefaultShapeDef();
-	tbPolygon box = tbMakeBox(20.0f, 1.0f);
-	tbShapeId shape = tbCreatePolygonShape(body, &def, &box);
-	cr_assert(tbShape_IsValid(shape));
-	return shape;
-}
-
-static tbShapeId CreateBall(tbWorldId world, tbVec2 position, float radius, const tbShapeDef* shapeDef, tbBodyId* bodyOut)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.type = tb_dynamicBody;
-	bodyDef.position = position;
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef def = shapeDef != NULL ? *shapeDef : tbDefaultShapeDef();
-	tbCircle circle = {{0.0f, 0.0f}, radius};
-	tbShapeId shape = tbCreateCircleShape(body, &def, &circle);
-	cr_assert(tbShape_IsValid(shape));
-	*bodyOut = body;
-	return shape;
-}
-
-static tbBodyId CreateBox(tbWorldId world, tbVec2 position, float halfSize)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.type = tb_dynamicBody;
-	bodyDef.position = position;
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef def = tbDefaultShapeDef();
-	tbPolygon box = tbMakeSquare(halfSize);
-	tbCreatePolygonShape(body, &def, &box);
-	return body;
-}
 
 /// Free-fall height after `steps` steps from rest at y0 (symplectic Euler, SUB_STEPS sub-steps).
 static double FreeFallHeight(double y0, int steps)
@@ -113,12 +66,12 @@ static int StepUntilAsleep(tbWorldId world, tbBodyId body, int maxSteps)
 // with manifold points) becomes 1 in that same step.
 Test(events, contact_begin_touch_on_landing)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeId ground = CreateGround(world, NULL);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
 	const float radius = 0.5f;
 	const double y0 = radius + 1.0;
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, radius, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, tbVec2_zero, radius, NULL, &ball);
 
 	// Expected step: first k with gap(k − 1) < TB_SPECULATIVE_DISTANCE.
 	int expected = -1;
@@ -169,10 +122,10 @@ Test(events, contact_begin_touch_on_landing)
 // The resting ball is teleported 5 m up: exactly one end event, in the next step.
 Test(events, contact_end_touch_when_lifted)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeId ground = CreateGround(world, NULL);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f}, 0.5f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f}, tbVec2_zero, 0.5f, NULL, &ball);
 	int begins = 0;
 	for (int step = 0; step < 20; ++step)
 	{
@@ -182,7 +135,7 @@ Test(events, contact_end_touch_when_lifted)
 	cr_assert_eq(begins, 1);
 	cr_assert_eq(tbWorld_GetCounters(world).touchingCount, 1);
 
-	cr_assert(tbBody_SetTransform(ball, (tbVec2){0.0f, 5.0f}, tb_rot_identity));
+	cr_assert(tbBody_SetTransform(ball, (tbVec2){0.0f, 5.0f}, tbRot_identity));
 	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
 	tbContactEvents events = tbWorld_GetContactEvents(world);
 	cr_assert_eq(events.endCount, 1, "%d end events after the lift, expected 1", events.endCount);
@@ -199,13 +152,13 @@ Test(events, contact_end_touch_when_lifted)
 // = 6.32 m/s within 5%, with the two shape ids and a vertical normal.
 Test(events, hit_event_above_threshold)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeId ground = CreateGround(world, NULL);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
 	tbShapeDef def = tbDefaultShapeDef();
 	def.enableHitEvents = true;
 	tbBodyId ball;
 	const float drop = 2.0f;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f + drop}, 0.5f, &def, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f + drop}, tbVec2_zero, 0.5f, &def, &ball);
 	const float expected = sqrtf(2.0f * GRAVITY * drop);
 
 	int hits = 0;
@@ -235,8 +188,8 @@ Test(events, no_hit_event_below_threshold)
 {
 	for (int variant = 0; variant < 2; ++variant)
 	{
-		tbWorldId world = CreateWorld();
-		CreateGround(world, NULL);
+		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+		CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
 		tbShapeDef def = tbDefaultShapeDef();
 		def.enableHitEvents = variant == 0;
 		if (variant == 0)
@@ -244,7 +197,7 @@ Test(events, no_hit_event_below_threshold)
 			cr_assert(tbWorld_SetHitEventThreshold(world, 10.0f));
 		}
 		tbBodyId ball;
-		CreateBall(world, (tbVec2){0.0f, 2.5f}, 0.5f, &def, &ball);
+		CreateBall(world, (tbVec2){0.0f, 2.5f}, tbVec2_zero, 0.5f, &def, &ball);
 		int hits = 0, begins = 0;
 		for (int step = 0; step < 120; ++step)
 		{
@@ -268,7 +221,7 @@ Test(events, no_hit_event_below_threshold)
 // stays −g·t within 1e-4.
 Test(events, sensor_begin_end_ball_falls_through)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbBodyDef sensorBodyDef = tbDefaultBodyDef();
 	sensorBodyDef.position = (tbVec2){0.0f, 5.0f};
 	tbBodyId sensorBody = tbCreateBody(world, &sensorBodyDef);
@@ -281,7 +234,7 @@ Test(events, sensor_begin_end_ball_falls_through)
 	const float radius = 0.25f;
 	const double y0 = 8.0;
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, radius, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, tbVec2_zero, radius, NULL, &ball);
 
 	int beginStep = -1, endStep = -1;
 	const float top = 5.5f, bottom = 4.5f;
@@ -333,12 +286,12 @@ Test(events, sensor_begin_end_ball_falls_through)
 // Three falling boxes: one move event per awake body each step, carrying its id and transform.
 Test(events, body_move_events_for_awake_bodies)
 {
-	tbWorldId world = CreateWorld();
-	CreateGround(world, NULL);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
 	tbBodyId boxes[3];
 	for (int i = 0; i < 3; ++i)
 	{
-		boxes[i] = CreateBox(world, (tbVec2){-3.0f + 3.0f * (float)i, 5.0f}, 0.5f);
+		boxes[i] = CreateBox(world, tb_dynamicBody, (tbVec2){-3.0f + 3.0f * (float)i, 5.0f}, 0.5f, 0.5f, 1.0f);
 	}
 	for (int step = 0; step < 30; ++step)
 	{
@@ -372,9 +325,9 @@ Test(events, body_move_events_for_awake_bodies)
 // (30 steps at 60 Hz; allow 15 more for the first steps of settling), then no more move events.
 Test(events, fell_asleep_event_after_time_to_sleep)
 {
-	tbWorldId world = CreateWorld();
-	CreateGround(world, NULL);
-	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	int minSteps = (int)floorf(TB_TIME_TO_SLEEP / TIME_STEP);
 	int step = StepUntilAsleep(world, box, 120);
 	cr_assert(step >= minSteps && step <= minSteps + 15, "fell asleep at step %d, expected %d..%d", step, minSteps,
@@ -396,15 +349,15 @@ Test(events, one_body_that_may_not_sleep_keeps_its_island_awake)
 {
 	for (int keeper = 0; keeper < 6; ++keeper)
 	{
-		tbWorldId world = CreateWorld();
-		CreateGround(world, NULL);
+		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+		CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
 		tbBodyId row[6];
 		for (int i = 0; i < 6; ++i)
 		{
-			row[i] = CreateBox(world, (tbVec2){-5.0f + 1.0f * (float)i, 0.5f}, 0.5f);
+			row[i] = CreateBox(world, tb_dynamicBody, (tbVec2){-5.0f + 1.0f * (float)i, 0.5f}, 0.5f, 0.5f, 1.0f);
 		}
 		tbBody_EnableSleep(row[keeper], false);
-		tbBodyId lone = CreateBox(world, (tbVec2){8.0f, 0.5f}, 0.5f);
+		tbBodyId lone = CreateBox(world, tb_dynamicBody, (tbVec2){8.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 		for (int step = 0; step < 120; ++step)
 		{
 			tbWorld_Step(world, TIME_STEP, SUB_STEPS);
@@ -440,10 +393,10 @@ static tbBodyId CreateKinematicBox(tbWorldId world, tbVec2 position, float hx, f
 // however the sleep stage orders them.
 Test(events, moving_kinematic_body_keeps_every_island_it_touches_awake)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 20.0f, 0.25f, (tbVec2){1.0f, 0.0f});
-	tbBodyId left = CreateBox(world, (tbVec2){-2.0f, 1.75f}, 0.5f);
-	tbBodyId right = CreateBox(world, (tbVec2){2.0f, 1.75f}, 0.5f);
+	tbBodyId left = CreateBox(world, tb_dynamicBody, (tbVec2){-2.0f, 1.75f}, 0.5f, 0.5f, 1.0f);
+	tbBodyId right = CreateBox(world, tb_dynamicBody, (tbVec2){2.0f, 1.75f}, 0.5f, 0.5f, 1.0f);
 	for (int step = 1; step <= 120; ++step)
 	{
 		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
@@ -468,10 +421,10 @@ Test(events, moving_kinematic_body_keeps_every_island_it_touches_awake)
 // sleeps within 1 s (0.5 s of sleep time, counted from when the box is allowed to sleep).
 Test(events, rested_kinematic_body_sleeps_with_the_last_island_it_touches)
 {
-	tbWorldId world = CreateWorld();
-	tbBodyId platform = CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 4.0f, 0.25f, tb_vec2_zero);
-	tbBodyId sleeper = CreateBox(world, (tbVec2){-2.0f, 1.75f}, 0.5f);
-	tbBodyId keeper = CreateBox(world, (tbVec2){2.0f, 1.75f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbBodyId platform = CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 4.0f, 0.25f, tbVec2_zero);
+	tbBodyId sleeper = CreateBox(world, tb_dynamicBody, (tbVec2){-2.0f, 1.75f}, 0.5f, 0.5f, 1.0f);
+	tbBodyId keeper = CreateBox(world, tb_dynamicBody, (tbVec2){2.0f, 1.75f}, 0.5f, 0.5f, 1.0f);
 	tbBody_EnableSleep(keeper, false);
 	for (int step = 1; step <= 120; ++step)
 	{
@@ -500,14 +453,14 @@ Test(events, rested_kinematic_body_sleeps_with_the_last_island_it_touches)
 // begin-touch event, and the ball comes to rest on it (centre at 1 + 0.25 m).
 Test(events, sleeping_box_woken_by_landing_ball)
 {
-	tbWorldId world = CreateWorld();
-	CreateGround(world, NULL);
-	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	cr_assert(StepUntilAsleep(world, box, 120) > 0);
 	cr_assert_not(tbBody_IsAwake(box));
 
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 2.25f}, 0.25f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 2.25f}, tbVec2_zero, 0.25f, NULL, &ball);
 	int beginStep = -1, wokenStep = -1;
 	for (int step = 1; step <= 60; ++step)
 	{
@@ -537,9 +490,9 @@ Test(events, sleeping_box_woken_by_landing_ball)
 // (Δv = 5 m/s: after one step it has risen by about 5/60 m).
 Test(events, impulse_wakes_sleeping_body)
 {
-	tbWorldId world = CreateWorld();
-	CreateGround(world, NULL);
-	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	cr_assert(StepUntilAsleep(world, box, 120) > 0);
 	cr_assert_not(tbBody_IsAwake(box));
 	float y0 = tbBody_GetPosition(box).y;
@@ -559,14 +512,14 @@ Test(events, impulse_wakes_sleeping_body)
 /// its final height and the number of begin events.
 static float DropWithFilters(tbFilter groundFilter, tbFilter ballFilter, int* beginsOut)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeDef groundDef = tbDefaultShapeDef();
 	groundDef.filter = groundFilter;
-	CreateGround(world, &groundDef);
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, &groundDef);
 	tbShapeDef ballDef = tbDefaultShapeDef();
 	ballDef.filter = ballFilter;
 	tbBodyId ball;
-	CreateBall(world, (tbVec2){0.0f, 1.5f}, 0.5f, &ballDef, &ball);
+	CreateBall(world, (tbVec2){0.0f, 1.5f}, tbVec2_zero, 0.5f, &ballDef, &ball);
 	int begins = 0;
 	for (int step = 0; step < 90; ++step)
 	{
@@ -637,8 +590,8 @@ Test(events, one_landing_gives_one_hit_event_with_its_begin_event)
 {
 	for (int shapeKind = 0; shapeKind < 2; ++shapeKind)
 	{
-		tbWorldId world = CreateWorld();
-		tbShapeId ground = CreateGround(world, NULL);
+		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+		tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
 		const float drop = 2.0f, half = 0.5f;
 		tbBodyDef bodyDef = tbDefaultBodyDef();
 		bodyDef.type = tb_dynamicBody;
@@ -697,13 +650,13 @@ static tbShapeId CreateStaticSensor(tbWorldId world)
 // one end.
 Test(events, sensor_ignores_a_visitor_that_disables_sensor_events)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeId sensor = CreateStaticSensor(world);
 	tbShapeDef quiet = tbDefaultShapeDef();
 	quiet.enableSensorEvents = false;
 	tbBodyId quietBall, seenBall;
-	tbShapeId quietShape = CreateBall(world, (tbVec2){-0.5f, 8.0f}, 0.25f, &quiet, &quietBall);
-	tbShapeId seenShape = CreateBall(world, (tbVec2){0.5f, 8.0f}, 0.25f, NULL, &seenBall);
+	tbShapeId quietShape = CreateBall(world, (tbVec2){-0.5f, 8.0f}, tbVec2_zero, 0.25f, &quiet, &quietBall);
+	tbShapeId seenShape = CreateBall(world, (tbVec2){0.5f, 8.0f}, tbVec2_zero, 0.25f, NULL, &seenBall);
 	int begins = 0, ends = 0;
 	for (int step = 0; step < 90; ++step)
 	{
@@ -734,7 +687,7 @@ Test(events, sensor_ignores_a_visitor_that_disables_sensor_events)
 // later (the collide stage sees the positions of the previous step), within a step either way.
 Test(events, kinematic_body_passing_a_static_sensor_is_reported)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeId sensor = CreateStaticSensor(world);
 	tbBodyDef liftDef = tbDefaultBodyDef();
 	liftDef.type = tb_kinematicBody;
@@ -777,9 +730,9 @@ Test(events, kinematic_body_passing_a_static_sensor_is_reported)
 // kept id goes stale.
 Test(events, contact_data_of_a_resting_box)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeId ground = CreateGround(world, NULL);
-	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	tbShapeId boxShape;
 	cr_assert_eq(tbBody_GetShapes(box, &boxShape, 1), 1);
 	tbContactId fromEvent = TB_NULL_CONTACT_ID;
@@ -818,7 +771,7 @@ Test(events, contact_data_of_a_resting_box)
 	cr_assert_eq(viaId.manifold.pointCount, 2);
 	cr_assert_eq(tbBody_GetContactData(box, data, 0), 0, "capacity 0 writes nothing");
 
-	cr_assert(tbBody_SetTransform(box, (tbVec2){0.0f, 10.0f}, tb_rot_identity));
+	cr_assert(tbBody_SetTransform(box, (tbVec2){0.0f, 10.0f}, tbRot_identity));
 	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
 	cr_assert(tbContact_IsValid(fromEvent) == false, "the contact ended: its id is stale");
 	cr_assert_eq(tbBody_GetContactData(box, data, 4), 0);
@@ -828,10 +781,10 @@ Test(events, contact_data_of_a_resting_box)
 // Sensor data: a static sensor reports the ball inside it, and nothing once it has fallen out.
 Test(events, sensor_data_lists_visitors)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeId sensor = CreateStaticSensor(world);
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 6.0f}, 0.25f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 6.0f}, tbVec2_zero, 0.25f, NULL, &ball);
 	tbShapeId visitors[4];
 	int inside = 0;
 	for (int step = 0; step < 90; ++step)

@@ -50,7 +50,7 @@ static void AddGround(Scene* scene, float angle, float friction, float restituti
 	tbShapeDef sd = tbDefaultShapeDef();
 	sd.material.friction = friction;
 	sd.material.restitution = restitution;
-	scene->groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	scene->groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tbRot_identity);
 	tbCreatePolygonShape(scene->ground, &sd, &scene->groundBox);
 }
 
@@ -670,7 +670,7 @@ static float TouchingStack20(int subSteps, float* slide)
 	tbBodyId ground = tbCreateBody(worldId, &gd);
 	tbShapeDef sd = tbDefaultShapeDef();
 	sd.material.friction = 0.6f;
-	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbPolygon groundBox = tbMakeOffsetBox(50.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tbRot_identity);
 	tbCreatePolygonShape(ground, &sd, &groundBox);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
 	tbBodyId top = tbCreateBody(worldId, &gd);

@@ -252,9 +252,7 @@ TB_API bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake
 TB_API float tbBody_GetMass(tbBodyId bodyId);
 /// Rotational inertia about the centre of mass (kg·m²).
 TB_API float tbBody_GetRotationalInertia(tbBodyId bodyId);
-TB_API tbVec2 tbBody_GetLocalCenterOfMass(tbBodyId bodyId);
-TB_API tbPos tbBody_GetWorldCenterOfMass(tbBodyId bodyId);
-/// Box2D v3.2's names for the two above: the centre of mass in the body frame and in world space.
+/// The centre of mass in the body frame and in world space.
 TB_API tbVec2 tbBody_GetLocalCenter(tbBodyId bodyId);
 TB_API tbPos tbBody_GetWorldCenter(tbBodyId bodyId);
 TB_API tbMassData tbBody_GetMassData(tbBodyId bodyId);
@@ -388,9 +386,8 @@ TB_API bool tbShape_TestPoint(tbShapeId shapeId, tbPos point);
 TB_API tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target);
 /// The ray origin → origin + translation against one shape; the hit point a world position.
 TB_API tbWorldCastOutput tbShape_RayCast(tbShapeId shapeId, tbPos origin, tbVec2 translation);
-TB_API tbMassData tbShape_GetMassData(tbShapeId shapeId);
-/// Box2D v3.2's name for tbShape_GetMassData: the shape's mass, centre (body frame) and rotational
-/// inertia about that centre, from its geometry and density.
+/// The shape's mass, centre (body frame) and rotational inertia about that centre, from its
+/// geometry and density.
 TB_API tbMassData tbShape_ComputeMassData(tbShapeId shapeId);
 /// Wind on a shape (Box2D v3.2's b2Shape_ApplyWind): a force from the air (1.225 kg/m³, unit depth)
 /// flowing at u = wind − drag·v past the shape (v: the velocity of the shape's centroid; drag 0

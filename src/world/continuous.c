@@ -284,7 +284,7 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 		c->fraction = output.fraction;
 		c->coreHit = core;
 		c->normal = output.normal;
-		c->otherVelocity = otherBody->awakeIndex != TB_NULL_INDEX ? otherBody->linearVelocity : tb_vec2_zero;
+		c->otherVelocity = otherBody->awakeIndex != TB_NULL_INDEX ? otherBody->linearVelocity : tbVec2_zero;
 	}
 	return true;
 }

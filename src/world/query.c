@@ -150,7 +150,7 @@ bool tbWorld_OverlapPoint(tbWorldId worldId, tbPos point, tbQueryFilter filter, 
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
 	q.point = point;
-	tbAABB box = tbOffsetAABB((tbAABB){tb_vec2_zero, tb_vec2_zero}, point); // contains the point
+	tbAABB box = tbOffsetAABB((tbAABB){tbVec2_zero, tbVec2_zero}, point); // contains the point
 	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbPointQueryCallback, &q);
 	tbLeaveQuery(world);
@@ -169,7 +169,7 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = q->proxy;
-	tbWorldTransform frame = {q->base, tb_rot_identity};
+	tbWorldTransform frame = {q->base, tbRot_identity};
 	input.transform = tbInvMulWorldTransforms(q->world->bodies[shape->bodyId].transform, frame);
 	input.useRadii = true;
 	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL, 0);
@@ -282,7 +282,7 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 	tbShapeProxy proxyA = tbMakeShapeProxy(&shape->geometry);
 	tbTransform xfA = tbToRelativeTransform(q->world->bodies[shape->bodyId].transform, q->base);
 	tbCastOutput output =
-		tbShapeCastBetween(&proxyA, xfA, &q->proxy, tb_transform_identity, q->translation, q->maxFraction, false);
+		tbShapeCastBetween(&proxyA, xfA, &q->proxy, tbTransform_identity, q->translation, q->maxFraction, false);
 	if (output.hit == false)
 	{
 		return true;
@@ -420,7 +420,7 @@ static bool tbMoverCastCallback(int proxyKey, int shapeIndex, void* context)
 	tbShapeProxy proxyB = tbMakeProxy(centers, 2, m->mover->radius);
 	// canEncroach: the plane solver keeps the slop; the sweep may use it
 	tbCastOutput output = tbShapeCastBetween(&proxyA, tbRelativeTransform(m->q.world, shape, m->origin), &proxyB,
-											 tb_transform_identity, m->q.translation, m->fraction, true);
+											 tbTransform_identity, m->q.translation, m->fraction, true);
 	// Shapes the mover starts in (fraction 0) are left to the planes: ignoring them lets a mover
 	// pressed into a wall move away from it.
 	if (output.hit && output.fraction > 0.0f && output.fraction < m->fraction)

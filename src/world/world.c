@@ -656,7 +656,7 @@ bool tbWorld_SetGravity(tbWorldId worldId, tbVec2 gravity)
 tbVec2 tbWorld_GetGravity(tbWorldId worldId)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetGravity");
-	return world != NULL ? world->def.gravity : tb_vec2_zero;
+	return world != NULL ? world->def.gravity : tbVec2_zero;
 }
 
 void tbWorld_EnableSleeping(tbWorldId worldId, bool flag)
