@@ -46,7 +46,9 @@ Test(api_changes, destroy_end_event_reported_after_next_step)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, NULL);
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = true; // one shape of a contact enabling them reports its events
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, &groundDef);
 	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 0.5f), 0.5f, 0.5f, 1.0f);
 	StepWorld(world, 10, 1.0f / 60.0f, 4);
 	cr_assert_eq(tbWorld_GetContactEvents(world).endCount, 0, "the box is still resting: no end events yet");
@@ -75,7 +77,9 @@ Test(api_changes, event_array_stays_valid_while_destroying)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, NULL);
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = true; // one shape of a contact enabling them reports its events
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, &groundDef);
 	tbBodyId boxes[17];
 	for (int i = 0; i < 17; ++i)
 	{
@@ -128,7 +132,9 @@ Test(api_changes, query_callback_cannot_mutate, .init = SetupErrors, .fini = Tea
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, NULL);
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = true; // one shape of a contact enabling them reports its events
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, &groundDef);
 	for (int i = 0; i < 20; ++i)
 	{
 		CreateBox(world, tb_dynamicBody, tbMakeVec2(2.0f * (float)i - 20.0f, 0.5f), 0.5f, 0.5f, 1.0f);
@@ -168,7 +174,9 @@ Test(api_changes, shape_queries_check_geometry, .init = SetupErrors, .fini = Tea
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, NULL);
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = true; // one shape of a contact enabling them reports its events
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, &groundDef);
 	tbVec2 zero = {0.0f, 0.0f};
 	tbShapeProxy circle = tbMakeProxy(&zero, 1, 0.5f);
 	circle.radius = NAN;

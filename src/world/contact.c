@@ -156,9 +156,9 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	{
 		contact->flags |= tb_contactSensor;
 	}
-	if (a->enableContactEvents && b->enableContactEvents)
+	if (a->enableContactEvents || b->enableContactEvents)
 	{
-		contact->flags |= tb_contactEnableEvents;
+		contact->flags |= tb_contactEnableEvents; // either shape asks (Box2D v3.2's rule)
 	}
 	if (a->enableHitEvents || b->enableHitEvents)
 	{
@@ -184,27 +184,30 @@ static bool tbSensorEventsEnabled(const tbWorld* world, int sensor, int visitor)
 /// End events of the step go to the event arrays; those of a change between steps (the world is
 /// unlocked) wait in the pending arrays for the next step, so they are neither cleared unseen at its
 /// start nor pushed into an array the user may be reading.
+static void tbPushSensorEndEvent(tbWorld* world, int sensor, int visitor)
+{
+	if (world->shapes[sensor].isSensor == false || tbSensorEventsEnabled(world, sensor, visitor) == false)
+	{
+		return;
+	}
+	tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
+	if (world->locked)
+	{
+		TB_ARRAY_PUSH(world->events.sensorEndEvents, world->events.sensorEndCount, world->events.sensorEndCapacity, e);
+	}
+	else
+	{
+		TB_ARRAY_PUSH(world->events.pendingSensorEndEvents, world->events.pendingSensorEndCount,
+					  world->events.pendingSensorEndCapacity, e);
+	}
+}
+
 static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 {
 	if (contact->flags & tb_contactSensor)
 	{
-		const tbShape* a = world->shapes + contact->shapeIdA;
-		bool aIsSensor = a->isSensor;
-		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
-		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
-		if (tbSensorEventsEnabled(world, sensor, visitor))
-		{
-			tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
-			if (world->locked)
-			{
-				TB_ARRAY_PUSH(world->events.sensorEndEvents, world->events.sensorEndCount, world->events.sensorEndCapacity, e);
-			}
-			else
-			{
-				TB_ARRAY_PUSH(world->events.pendingSensorEndEvents, world->events.pendingSensorEndCount,
-							  world->events.pendingSensorEndCapacity, e);
-			}
-		}
+		tbPushSensorEndEvent(world, contact->shapeIdA, contact->shapeIdB);
+		tbPushSensorEndEvent(world, contact->shapeIdB, contact->shapeIdA);
 	}
 	else if (contact->flags & tb_contactEnableEvents)
 	{
@@ -312,10 +315,6 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	if ((bodyA->jointCount | bodyB->jointCount) != 0 && tbJointBlocksCollision(world, a->bodyId, b->bodyId))
 	{
 		return false; // a joint between them forbids it (collideConnected false)
-	}
-	if (a->isSensor && b->isSensor)
-	{
-		return false;
 	}
 	if (tbShouldShapesCollide(a->filter, b->filter) == false)
 	{
@@ -779,18 +778,22 @@ int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 	return (result & tb_collideBeginEvent) != 0 ? 1 : ((result & tb_collideEndEvent) != 0 ? -1 : 0);
 }
 
+static void tbPushSensorBeginEvent(tbWorld* world, int sensor, int visitor)
+{
+	if (world->shapes[sensor].isSensor && tbSensorEventsEnabled(world, sensor, visitor))
+	{
+		tbSensorBeginTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
+		TB_ARRAY_PUSH(world->events.sensorBeginEvents, world->events.sensorBeginCount, world->events.sensorBeginCapacity, e);
+	}
+}
+
 static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 {
 	if (contact->flags & tb_contactSensor)
 	{
-		bool aIsSensor = world->shapes[contact->shapeIdA].isSensor;
-		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
-		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
-		if (tbSensorEventsEnabled(world, sensor, visitor))
-		{
-			tbSensorBeginTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
-			TB_ARRAY_PUSH(world->events.sensorBeginEvents, world->events.sensorBeginCount, world->events.sensorBeginCapacity, e);
-		}
+		// Each sensor of the pair reports the other shape: two sensors overlapping see each other.
+		tbPushSensorBeginEvent(world, contact->shapeIdA, contact->shapeIdB);
+		tbPushSensorBeginEvent(world, contact->shapeIdB, contact->shapeIdA);
 	}
 	else if (contact->flags & tb_contactEnableEvents)
 	{
@@ -1333,7 +1336,7 @@ static void tbRefreshContactEventFlags(tbWorld* world, tbContact* contact)
 	const tbShape* b = world->shapes + contact->shapeIdB;
 	world->hitContactCount -= (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
 	contact->flags &= ~(uint32_t)(tb_contactEnableEvents | tb_contactEnableHits | tb_contactEnablePreSolve);
-	contact->flags |= a->enableContactEvents && b->enableContactEvents ? (uint32_t)tb_contactEnableEvents : 0u;
+	contact->flags |= a->enableContactEvents || b->enableContactEvents ? (uint32_t)tb_contactEnableEvents : 0u;
 	contact->flags |= a->enableHitEvents || b->enableHitEvents ? (uint32_t)tb_contactEnableHits : 0u;
 	contact->flags |= a->enablePreSolveEvents || b->enablePreSolveEvents ? (uint32_t)tb_contactEnablePreSolve : 0u;
 	world->hitContactCount += (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
