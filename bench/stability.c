@@ -798,7 +798,7 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 			   "among the chain. With impact propagation (`tbWorldDef.enableImpactPropagation`: bouncing contacts\n"
 			   "take their impacts one pair at a time before the solve, docs/methods.md) the last ball leaves at\n"
 			   "1.00 v0 and the others stay at 0.00 v0 (`tests/test_solver.c`).\n");
-	fprintf(f, "\nThe tall stacks fail by the criteria, not by falling. The 40-stack stands (soft, 2 sub-steps and up)\n"
+	fprintf(f, "\nThe tall stacks fail by the criteria, not by falling. The 40-stack stands (soft, 4 sub-steps and up)\n"
 			   "but its top sinks by the soft contacts' sag, the springs' resting depths summed down the column, which\n"
 			   "grows as n² and which no stiffness under the quarter-sub-step-rate cap brings below 0.1 m at 4\n"
 			   "sub-steps (Box2D v3: 0.54 m). The dropped 30 stands with every box within a few mrad of upright, but\n"
