@@ -38,7 +38,7 @@ TB_API bool tbWorld_IsValid(tbWorldId worldId);
 /// changes nothing when an argument is bad (time step ≤ 0 or not finite, sub-steps < 1).
 TB_API bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount);
 
-TB_API void tbWorld_Draw(tbWorldId worldId, const tbDebugDraw* draw);
+TB_API void tbWorld_Draw(tbWorldId worldId, tbDebugDraw* draw);
 
 TB_API tbBodyEvents tbWorld_GetBodyEvents(tbWorldId worldId);
 TB_API tbSensorEvents tbWorld_GetSensorEvents(tbWorldId worldId);
