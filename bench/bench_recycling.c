@@ -92,7 +92,7 @@ static void RunScene(const char* name, int steps)
 	for (int step = 0; step < n; ++step)
 	{
 		tbWorld_Step(sw.worldId, scene->timeStep, scene->subSteps);
-		for (int id = 0; id < world->contactHighWater; ++id)
+		for (int id = 0; id < world->contactPool.highWater; ++id)
 		{
 			const tbContact* contact = world->contacts + id;
 			if (contact->inUse == false || (contact->flags & tb_contactTouching) == 0 ||

@@ -116,7 +116,7 @@ static void ColorAndPack(tbStepContext* context, tbWorld* world, const int* slot
 	}
 	context->keys = keys; // filled in solve order by the colouring
 	context->keysById = keysById;
-	world->solverSlots = (int*)order;
+	world->cache.solverSlots = (int*)order;
 	tbColorConstraints(context);
 	for (int i = 0; i < n; ++i)
 	{
@@ -127,7 +127,7 @@ static void ColorAndPack(tbStepContext* context, tbWorld* world, const int* slot
 						   context->constraints + i);
 		}
 	}
-	world->solverSlots = NULL;
+	world->cache.solverSlots = NULL;
 }
 
 Test(constraint_graph, colours_are_independent_sets_in_input_order)

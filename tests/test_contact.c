@@ -34,7 +34,7 @@ typedef struct Pair
 
 static tbContact* OnlyContact(tbWorld* world)
 {
-	for (int id = 0; id < world->contactHighWater; ++id)
+	for (int id = 0; id < world->contactPool.highWater; ++id)
 	{
 		if (world->contacts[id].inUse)
 		{

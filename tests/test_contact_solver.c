@@ -33,10 +33,10 @@ static void InitMini(MiniWorld* m, tbSolverMethod method, tbVec2 velocity, float
 	m->world.contacts = &m->contact;
 	m->world.awakeBodies = m->awake;
 	m->world.awakeBodyCount = 1;
-	m->world.solverContacts = m->solverContacts;
-	m->world.solverContactsById = m->solverContacts; // one contact: both orders agree
-	m->world.solverSlots = m->solverSlots;
-	m->world.solverContactCount = 1;
+	m->world.cache.solverContacts = m->solverContacts;
+	m->world.cache.solverContactsById = m->solverContacts; // one contact: both orders agree
+	m->world.cache.solverSlots = m->solverSlots;
+	m->world.cache.solverContactCount = 1;
 	for (int i = 0; i < 2; ++i)
 	{
 		m->bodies[i].transform.q = tb_rot_identity;

@@ -21,7 +21,7 @@
 // naturally; for ≤ 8 points either is fast, and quickhull's "farthest point" step is also the
 // natural place to drop nearly collinear points.
 
-#include "core.h"
+#include "core/core.h"
 
 #include "tumble/collision.h"
 

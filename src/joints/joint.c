@@ -176,7 +176,7 @@ static tbJoint* tbLookUpJoint(tbJointId id, tbWorld** worldOut)
 	}
 	tbWorld* world = tbGetWorldFromIndex(id.world0);
 	int index = id.index1 - 1;
-	if (world == NULL || index >= world->jointHighWater || world->joints[index].inUse == false ||
+	if (world == NULL || index >= world->jointPool.highWater || world->joints[index].inUse == false ||
 		world->joints[index].generation != id.generation)
 	{
 		return NULL;
@@ -392,13 +392,13 @@ void tbWakeJoint(tbWorld* world, const tbJoint* joint)
 
 static int tbAllocJointSlot(tbWorld* world)
 {
-	if (world->jointFreeCount > 0)
+	bool isNew;
+	int id = tbIdPool_Alloc(&world->jointPool, &isNew);
+	if (isNew)
 	{
-		return world->jointFree[--world->jointFreeCount];
+		TB_ARRAY_RESERVE(world->joints, world->jointCapacity, id + 1);
+		memset(world->joints + id, 0, sizeof(tbJoint));
 	}
-	TB_ARRAY_RESERVE(world->joints, world->jointCapacity, world->jointHighWater + 1);
-	int id = world->jointHighWater++;
-	memset(world->joints + id, 0, sizeof(tbJoint));
 	return id;
 }
 
@@ -442,7 +442,6 @@ tbJoint* tbCreateJointInternal(tbWorldId worldId, const tbJointDef* def, tbJoint
 	joint->edges[1].bodyId = bodyIdB;
 	tbLinkJointEdge(world, jointId, 0);
 	tbLinkJointEdge(world, jointId, 1);
-	world->jointCount += 1;
 
 	// As Box2D v3: a joint between an awake and a sleeping body wakes the sleeping one (they are one
 	// island now); a joint between sleeping bodies leaves them asleep.
@@ -473,8 +472,7 @@ static void tbDestroyJointInternal(tbWorld* world, int jointId, bool refindPairs
 	tbWakeBody(world, b);
 	joint->inUse = false;
 	joint->generation += 1;
-	TB_ARRAY_PUSH(world->jointFree, world->jointFreeCount, world->jointFreeCapacity, jointId);
-	world->jointCount -= 1;
+	tbIdPool_Free(&world->jointPool, jointId);
 }
 
 void tbDestroyJoint(tbJointId jointId)
@@ -501,10 +499,10 @@ void tbDestroyBodyJoints(tbWorld* world, tbBody* body)
 void tbFreeJoints(tbWorld* world)
 {
 	TB_ARRAY_FREE(world->joints, world->jointCapacity);
-	TB_ARRAY_FREE(world->jointFree, world->jointFreeCapacity);
-	TB_ARRAY_FREE(world->solverJoints, world->solverJointCapacity);
-	TB_ARRAY_FREE(world->jointEvents, world->jointEventCapacity);
-	TB_ARRAY_FREE(world->jointWakeStack, world->jointWakeCapacity);
+	tbIdPool_Destroy(&world->jointPool);
+	TB_ARRAY_FREE(world->cache.solverJoints, world->cache.solverJointCapacity);
+	TB_ARRAY_FREE(world->events.jointEvents, world->events.jointEventCapacity);
+	TB_ARRAY_FREE(world->cache.jointWakeStack, world->cache.jointWakeCapacity);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -880,8 +878,8 @@ tbJointEvents tbWorld_GetJointEvents(tbWorldId worldId)
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetJointEvents");
 	if (world != NULL)
 	{
-		events.jointEvents = world->jointEvents;
-		events.count = world->jointEventCount;
+		events.jointEvents = world->events.jointEvents;
+		events.count = world->events.jointEventCount;
 	}
 	return events;
 }
@@ -943,18 +941,18 @@ static void tbPrepareJointBase(tbJoint* joint, const tbStepContext* context)
 void tbPrepareJoints(tbStepContext* context)
 {
 	tbWorld* world = context->world;
-	world->solverJointCount = 0;
-	world->jointEventCount = 0;
-	world->jointTreeCount = 0; // the trees live in the step arena: none survive a step
-	world->jointTreeNodeCount = 0;
-	if (world->jointCount == 0)
+	world->cache.solverJointCount = 0;
+	world->events.jointEventCount = 0;
+	world->cache.jointTreeCount = 0; // the trees live in the step arena: none survive a step
+	world->cache.jointTreeNodeCount = 0;
+	if (world->jointPool.count == 0)
 	{
 		return;
 	}
 	// The pool in id order (joints are few): the joints with an awake dynamic body. Joined bodies
 	// wake together, so the other side is awake too, or static, or a resting kinematic body.
-	TB_ARRAY_RESERVE(world->solverJoints, world->solverJointCapacity, world->jointHighWater);
-	for (int id = 0; id < world->jointHighWater; ++id)
+	TB_ARRAY_RESERVE(world->cache.solverJoints, world->cache.solverJointCapacity, world->jointPool.highWater);
+	for (int id = 0; id < world->jointPool.highWater; ++id)
 	{
 		tbJoint* joint = world->joints + id;
 		if (joint->inUse == false || joint->type == tb_filterJoint ||
@@ -996,7 +994,7 @@ void tbPrepareJoints(tbStepContext* context)
 			default:
 				break;
 		}
-		world->solverJoints[world->solverJointCount++] = id;
+		world->cache.solverJoints[world->cache.solverJointCount++] = id;
 	}
 }
 
@@ -1007,7 +1005,7 @@ static inline void tbPrefetchJointAhead(const tbWorld* world, int i, int end)
 	if (i + TB_PREFETCH_AHEAD < end)
 	{
 		// The solve's part only: the edges, ids and API fields after the kind's data stay behind.
-		tbPrefetch(world->joints + world->solverJoints[i + TB_PREFETCH_AHEAD], (int)offsetof(tbJoint, edges));
+		tbPrefetch(world->joints + world->cache.solverJoints[i + TB_PREFETCH_AHEAD], (int)offsetof(tbJoint, edges));
 	}
 }
 
@@ -1016,7 +1014,7 @@ void tbWarmStartJointRange(tbStepContext* context, int begin, int end)
 	tbWorld* world = context->world;
 	for (int i = begin; i < end; ++i)
 	{
-		tbJoint* joint = world->joints + world->solverJoints[i];
+		tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		tbPrefetchJointAhead(world, i, end);
 		switch (joint->type)
 		{
@@ -1052,8 +1050,8 @@ void tbWarmStartJointRange(tbStepContext* context, int begin, int end)
 
 void tbWarmStartJoints(tbStepContext* context)
 {
-	context->world->jointTreesStale = true; // a new sub-step: the bodies moved
-	tbWarmStartJointRange(context, 0, context->world->solverJointCount);
+	tbStepCache_BodiesMoved(&context->world->cache); // a new sub-step
+	tbWarmStartJointRange(context, 0, context->world->cache.solverJointCount);
 }
 
 void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBias)
@@ -1061,7 +1059,7 @@ void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBi
 	tbWorld* world = context->world;
 	for (int i = begin; i < end; ++i)
 	{
-		tbJoint* joint = world->joints + world->solverJoints[i];
+		tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		tbPrefetchJointAhead(world, i, end);
 		switch (joint->type)
 		{
@@ -1107,10 +1105,10 @@ void tbSolveJointRowRange(tbStepContext* context, int begin, int end, bool useBi
 void tbBeginJointPass(tbStepContext* context, bool useBias)
 {
 	tbWorld* world = context->world;
-	if (useBias && world->jointTreesStale)
+	if (useBias && world->cache.jointTreesStale)
 	{
 		tbFactorJointTrees(context);
-		world->jointTreesStale = false;
+		world->cache.jointTreesStale = false;
 	}
 	tbMarkTreeRows(context, useBias);
 }
@@ -1119,11 +1117,11 @@ void tbSolveJoints(tbStepContext* context, bool useBias)
 {
 	tbWorld* world = context->world;
 	tbBeginJointPass(context, useBias);
-	tbSolveJointRowRange(context, 0, world->solverJointCount, useBias);
-	if (useBias && world->jointTreeCount > 0)
+	tbSolveJointRowRange(context, 0, world->cache.solverJointCount, useBias);
+	if (useBias && world->cache.jointTreeCount > 0)
 	{
 		tbSolveJointTrees(context);
-		tbSolveJointRowRange(context, 0, world->solverJointCount, useBias);
+		tbSolveJointRowRange(context, 0, world->cache.solverJointCount, useBias);
 	}
 }
 
@@ -1139,7 +1137,7 @@ void tbSolveJoints(tbStepContext* context, bool useBias)
 int tbJointTreeRelaxIterations(const tbStepContext* context)
 {
 	const tbWorld* world = context->world;
-	return world->jointTreeCount > 0 && world->def.relaxIterations > 0 ? 2 : 0;
+	return world->cache.jointTreeCount > 0 && world->def.relaxIterations > 0 ? 2 : 0;
 }
 
 // The relaxing iterations after the first are there for contact stacks (card houses, docs/
@@ -1150,7 +1148,7 @@ int tbJointTreeRelaxIterations(const tbStepContext* context)
 // the contacts (tbJointTreeRelaxIterations above).
 bool tbRelaxJointsInIteration(const tbStepContext* context, int iteration)
 {
-	return iteration == 0 || context->world->jointTreeCount > 0;
+	return iteration == 0 || context->world->cache.jointTreeCount > 0;
 }
 
 void tbSetJointRow(tbJointRows* rows, int row, tbVec3Row a, tbVec3Row b, float C, float* impulse)
@@ -1223,9 +1221,9 @@ void tbFinishJoints(tbStepContext* context)
 {
 	tbWorld* world = context->world;
 	world->jointInvH = context->inv_h;
-	for (int i = 0; i < world->solverJointCount; ++i)
+	for (int i = 0; i < world->cache.solverJointCount; ++i)
 	{
-		tbJoint* joint = world->joints + world->solverJoints[i];
+		tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		if (joint->forceThreshold >= FLT_MAX && joint->torqueThreshold >= FLT_MAX)
 		{
 			continue;
@@ -1236,7 +1234,7 @@ void tbFinishJoints(tbStepContext* context)
 		if (tbLength(force) >= joint->forceThreshold || tbAbsFloat(torque) >= joint->torqueThreshold)
 		{
 			tbJointEvent event = {tbMakeJointId(world, joint), joint->userData};
-			TB_ARRAY_PUSH(world->jointEvents, world->jointEventCount, world->jointEventCapacity, event);
+			TB_ARRAY_PUSH(world->events.jointEvents, world->events.jointEventCount, world->events.jointEventCapacity, event);
 		}
 	}
 }
@@ -1252,15 +1250,15 @@ void tbWakeJointedBodies(tbWorld* world, tbBody* body)
 	}
 	// An explicit stack instead of recursion (a long chain would be a deep recursion): a nested
 	// call, made by the tbWakeBody below, only pushes its body; the outer loop walks it.
-	TB_ARRAY_PUSH(world->jointWakeStack, world->jointWakeCount, world->jointWakeCapacity, (int)(body - world->bodies));
-	if (world->jointWakeActive)
+	TB_ARRAY_PUSH(world->cache.jointWakeStack, world->cache.jointWakeCount, world->cache.jointWakeCapacity, (int)(body - world->bodies));
+	if (world->cache.jointWakeActive)
 	{
 		return;
 	}
-	world->jointWakeActive = true;
-	while (world->jointWakeCount > 0)
+	world->cache.jointWakeActive = true;
+	while (world->cache.jointWakeCount > 0)
 	{
-		const tbBody* b = world->bodies + world->jointWakeStack[--world->jointWakeCount];
+		const tbBody* b = world->bodies + world->cache.jointWakeStack[--world->cache.jointWakeCount];
 		for (int key = b->headJointKey; key != TB_NULL_INDEX;)
 		{
 			const tbJoint* joint = world->joints + (key >> 1);
@@ -1272,7 +1270,7 @@ void tbWakeJointedBodies(tbWorld* world, tbBody* body)
 			key = joint->edges[key & 1].nextKey;
 		}
 	}
-	world->jointWakeActive = false;
+	world->cache.jointWakeActive = false;
 }
 
 /// The rule contacts follow (island.c): an awake dynamic body wakes what it is joined to; a
@@ -1294,12 +1292,12 @@ void tbWakeJointPartners(tbWorld* world)
 	// Joined bodies join and leave the awake set together, so with no kinematic body (whose
 	// velocity can change while both sides keep their state) a half-asleep joint can only appear
 	// when the awake set changed: a grid of 19,800 joints that all stay awake skips the walk.
-	if (world->jointCount == 0 || (world->jointWakeDirty == false && world->kinematicBodyCount == 0))
+	if (world->jointPool.count == 0 || (world->cache.jointWakeDirty == false && world->kinematicBodyCount == 0))
 	{
 		return;
 	}
-	world->jointWakeDirty = false;
-	for (int id = 0; id < world->jointHighWater; ++id)
+	world->cache.jointWakeDirty = false;
+	for (int id = 0; id < world->jointPool.highWater; ++id)
 	{
 		const tbJoint* joint = world->joints + id;
 		if (joint->inUse == false || joint->type == tb_filterJoint)
@@ -1346,7 +1344,7 @@ void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw)
 	{
 		return;
 	}
-	for (int id = 0; id < world->jointHighWater; ++id)
+	for (int id = 0; id < world->jointPool.highWater; ++id)
 	{
 		const tbJoint* joint = world->joints + id;
 		if (joint->inUse == false)

@@ -4,7 +4,7 @@
 // union member and in the kind's own file (revolute_joint.c, distance_joint.c, ...).
 //
 // Per step (joint.c): tbPrepareJoints gathers the joints with an awake dynamic body into
-// world->solverJoints (joint-id order) and computes anchors, masses and softness once;
+// world->cache.solverJoints (joint-id order) and computes anchors, masses and softness once;
 // tbColorJoints (constraint_graph.c) puts them in solve order; each sub-step warm starts them before the contacts and solves them before the contacts in the biased
 // and in the relaxing pass; tbFinishJoints reports joint events. Impulses stay in the joints for
 // the next step's warm start.
@@ -22,6 +22,20 @@ typedef struct tbJointEdge
 	int prevKey;
 	int nextKey;
 } tbJointEdge;
+
+// What bodies, contacts, islands and the world ask of joints (joint.c).
+/// Wake the sleeping bodies joined to this (just woken) body, transitively through dynamic bodies.
+void tbWakeJointedBodies(tbWorld* world, tbBody* body);
+/// Island stage, first thing: a joint with one side awake wakes the other (the rule contacts use).
+void tbWakeJointPartners(tbWorld* world);
+/// Pair filter: true when a joint between the two bodies forbids their collision.
+bool tbJointBlocksCollision(const tbWorld* world, int bodyIdA, int bodyIdB);
+/// Destroy every joint of a body (tbDestroyBody); the other bodies are woken.
+void tbDestroyBodyJoints(tbWorld* world, tbBody* body);
+/// Free the joint pool and arrays (world destruction).
+void tbFreeJoints(tbWorld* world);
+/// Draw every joint (draw.c).
+void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw);
 
 // Impulses below are accumulated over one sub-step (N·s): the force is impulse/h.
 
@@ -268,7 +282,7 @@ void tbWarmStartJoints(tbStepContext* context);
 /// soft spring, or the Baumgarte bias); false: the relaxing pass (rigid, no correction). User
 /// springs, motors and the speculative side of limits act in both.
 void tbSolveJoints(tbStepContext* context, bool useBias);
-// The pieces of those two passes for the workers (solver_workers.c): ranges of world->solverJoints
+// The pieces of those two passes for the workers (solver_workers.c): ranges of world->cache.solverJoints
 // within one colour, and the joint trees' serial part. tbSolveJoints(useBias) is: begin the pass,
 // rows of every colour, then (biased, with trees) the trees and the rows again.
 void tbWarmStartJointRange(tbStepContext* context, int begin, int end);

@@ -278,9 +278,9 @@ static int tbNodeFloatCount(const tbTreeNode* node, int parentDim)
 void tbBuildJointTrees(tbStepContext* context)
 {
 	tbWorld* world = context->world;
-	world->jointTreeCount = 0;
-	world->jointTreeNodeCount = 0;
-	int jointCount = world->solverJointCount;
+	world->cache.jointTreeCount = 0;
+	world->cache.jointTreeNodeCount = 0;
+	int jointCount = world->cache.solverJointCount;
 	if (jointCount == 0 || world->def.enableJointTrees == false || context->jointTreeCandidates == 0)
 	{
 		return; // no joint can be in a tree (constraint_graph.c counted them): nothing to walk
@@ -303,7 +303,7 @@ void tbBuildJointTrees(tbStepContext* context)
 	int count = 0, treeCount = 0;
 	for (int pass = 0; pass < 2 * jointCount; ++pass)
 	{
-		tbJoint* joint = world->joints + world->solverJoints[pass % jointCount];
+		tbJoint* joint = world->joints + world->cache.solverJoints[pass % jointCount];
 		if (joint->treeNode != TB_NULL_INDEX || joint->loopyMechanism || tbJointEqualityRowCount(joint) == 0)
 		{
 			continue; // in a tree, in a mechanism left to Gauss–Seidel (constraint_graph.c), or no rows
@@ -357,12 +357,12 @@ void tbBuildJointTrees(tbStepContext* context)
 			world->joints[node->joint].treeNode = i;
 		}
 	}
-	world->jointTreeNodes = nodes;
-	world->jointTreeNodeCount = count;
-	world->jointTrees = trees;
-	world->jointTreeCount = treeCount;
-	world->jointTreeValues = tbArenaAlloc(arena, (int)sizeof(tbTreeReal) * floats);
-	world->jointTreeRows = tbArenaAlloc(arena, (int)sizeof(tbJointRows) * rows);
+	world->cache.jointTreeNodes = nodes;
+	world->cache.jointTreeNodeCount = count;
+	world->cache.jointTrees = trees;
+	world->cache.jointTreeCount = treeCount;
+	world->cache.jointTreeValues = tbArenaAlloc(arena, (int)sizeof(tbTreeReal) * floats);
+	world->cache.jointTreeRows = tbArenaAlloc(arena, (int)sizeof(tbJointRows) * rows);
 }
 
 // --- each pass ----------------------------------------------------------------------------------
@@ -382,8 +382,8 @@ typedef struct tbNodeValues
 static tbNodeValues tbGetValues(const tbWorld* world, const tbTreeNode* node)
 {
 	int n = node->dim;
-	int r = node->body < 0 ? n : (node->parent >= 0 ? world->jointTreeNodes[node->parent].dim : 0);
-	tbTreeReal* base = world->jointTreeValues + node->values;
+	int r = node->body < 0 ? n : (node->parent >= 0 ? world->cache.jointTreeNodes[node->parent].dim : 0);
+	tbTreeReal* base = world->cache.jointTreeValues + node->values;
 	tbNodeValues v = {base, base + n * n, base + n * n + 3 * r, base + n * n + 6 * r};
 	return v;
 }
@@ -413,9 +413,9 @@ static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNode
 	{
 		return;
 	}
-	const tbTreeNode* parent = world->jointTreeNodes + node->parent;
+	const tbTreeNode* parent = world->cache.jointTreeNodes + node->parent;
 	bool turns = tbTurns(world->bodies + world->awakeBodies[parent->body]);
-	const tbJointRows* rows = world->jointTreeRows + node->rows;
+	const tbJointRows* rows = world->cache.jointTreeRows + node->rows;
 	for (int r = 0; r < n; ++r)
 	{
 		tbTreeReal J[3];
@@ -439,8 +439,8 @@ static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeV
 	{
 		return;
 	}
-	const tbTreeNode* parent = world->jointTreeNodes + node->parent;
-	const tbJointRows* rows = world->jointTreeRows + parent->rows;
+	const tbTreeNode* parent = world->cache.jointTreeNodes + node->parent;
+	const tbJointRows* rows = world->cache.jointTreeRows + parent->rows;
 	int r = parent->dim;
 	for (int row = 0; row < r; ++row)
 	{
@@ -471,7 +471,7 @@ static void tbEliminate(const tbTreeNode* node, tbNodeValues v, tbTreeReal* pare
 static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 {
 	tbWorld* world = context->world;
-	tbTreeNode* nodes = world->jointTreeNodes;
+	tbTreeNode* nodes = world->cache.jointTreeNodes;
 	int end = tree->start + tree->count;
 	for (int i = tree->start; i < end; ++i)
 	{
@@ -480,7 +480,7 @@ static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 		{
 			tbJoint* joint = world->joints + node->joint;
 			tbJointBodies b = tbLoadJointBodies(context, joint);
-			tbGetJointEqualityRows(joint, &b, world->jointTreeRows + node->rows);
+			tbGetJointEqualityRows(joint, &b, world->cache.jointTreeRows + node->rows);
 		}
 	}
 	// Fill every node before eliminating any: a child's update lands on its parent's pivot.
@@ -515,21 +515,21 @@ static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 void tbFactorJointTrees(tbStepContext* context)
 {
 	tbWorld* world = context->world;
-	for (int t = 0; t < world->jointTreeCount; ++t)
+	for (int t = 0; t < world->cache.jointTreeCount; ++t)
 	{
-		world->jointTrees[t].factored = tbFactorTree(context, world->jointTrees + t);
+		world->cache.jointTrees[t].factored = tbFactorTree(context, world->cache.jointTrees + t);
 	}
 }
 
 void tbMarkTreeRows(tbStepContext* context, bool useBias)
 {
 	tbWorld* world = context->world;
-	for (int t = 0; t < world->jointTreeCount; ++t)
+	for (int t = 0; t < world->cache.jointTreeCount; ++t)
 	{
-		const tbTree* tree = world->jointTrees + t;
+		const tbTree* tree = world->cache.jointTrees + t;
 		for (int i = tree->start; i < tree->start + tree->count; ++i)
 		{
-			const tbTreeNode* node = world->jointTreeNodes + i;
+			const tbTreeNode* node = world->cache.jointTreeNodes + i;
 			if (node->joint >= 0)
 			{
 				world->joints[node->joint].solvedInTree = useBias && tree->factored;
@@ -549,7 +549,7 @@ static void tbLoadResiduals(const tbStepContext* context, const tbTreeNode* node
 		return;
 	}
 	const tbJoint* joint = world->joints + node->joint;
-	const tbJointRows* rows = world->jointTreeRows + node->rows;
+	const tbJointRows* rows = world->cache.jointTreeRows + node->rows;
 	const tbSolverBody* sA = context->bodies + joint->indexA;
 	const tbSolverBody* sB = context->bodies + joint->indexB;
 	for (int r = 0; r < node->dim; ++r)
@@ -567,7 +567,7 @@ static void tbApplySolution(tbStepContext* context, const tbTreeNode* node, cons
 	tbWorld* world = context->world;
 	if (node->joint >= 0)
 	{
-		const tbJointRows* rows = world->jointTreeRows + node->rows;
+		const tbJointRows* rows = world->cache.jointTreeRows + node->rows;
 		for (int r = 0; r < node->dim; ++r)
 		{
 			*rows->impulse[r] += x[r];
@@ -586,7 +586,7 @@ static void tbApplySolution(tbStepContext* context, const tbTreeNode* node, cons
 static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 {
 	tbWorld* world = context->world;
-	const tbTreeNode* nodes = world->jointTreeNodes;
+	const tbTreeNode* nodes = world->cache.jointTreeNodes;
 	int end = tree->start + tree->count;
 	for (int i = tree->start; i < end; ++i)
 	{
@@ -634,11 +634,11 @@ static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 void tbSolveJointTrees(tbStepContext* context)
 {
 	tbWorld* world = context->world;
-	for (int t = 0; t < world->jointTreeCount; ++t)
+	for (int t = 0; t < world->cache.jointTreeCount; ++t)
 	{
-		if (world->jointTrees[t].factored)
+		if (world->cache.jointTrees[t].factored)
 		{
-			tbSolveTree(context, world->jointTrees + t);
+			tbSolveTree(context, world->cache.jointTrees + t);
 		}
 	}
 }

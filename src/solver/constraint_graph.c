@@ -88,7 +88,7 @@ typedef struct tbPartitionCounts
 } tbPartitionCounts;
 
 // The colouring of the last step, kept with its inputs: the keys in contact-id order and each
-// contact's place in the solve order (world->solverSlots), which together are the keys in solve
+// contact's place in the solve order (world->cache.solverSlots), which together are the keys in solve
 // order. The colours are a function of exactly those (and of the body count, the static
 // stand-in's index), so when this step's inputs are equal byte for byte the last step's lanes are
 // this step's: a settled pile, whose touching contacts and awake bodies stay the same from step to
@@ -101,7 +101,7 @@ typedef struct tbContactColorCache
 	int bodyCount;
 	int bounceCount;		///< keys with tb_keyBounces among them
 	tbContactKey* keysById; ///< context->keysById as coloured
-	int* slots;				///< world->solverSlots
+	int* slots;				///< world->cache.solverSlots
 	int* wideLocation;	///< the colouring's outputs: lane by solve slot,
 	int* locationById;	///< and by contact-id order
 	int counts[TB_GRAPH_COLOR_COUNT + 1];
@@ -113,7 +113,7 @@ typedef struct tbContactColorCache
 
 void tbDestroyContactColorCache(tbWorld* world)
 {
-	tbContactColorCache* cache = world->contactColorCache;
+	tbContactColorCache* cache = world->cache.contactColorCache;
 	if (cache == NULL)
 	{
 		return;
@@ -126,12 +126,12 @@ void tbDestroyContactColorCache(tbWorld* world)
 		tbFree(cache->locationById, (int)sizeof(int) * cache->capacity);
 	}
 	tbFree(cache, (int)sizeof(tbContactColorCache));
-	world->contactColorCache = NULL;
+	world->cache.contactColorCache = NULL;
 }
 
 static bool tbSameColorInputs(const tbStepContext* context, int partitionRequest)
 {
-	const tbContactColorCache* cache = context->world->contactColorCache;
+	const tbContactColorCache* cache = context->world->cache.contactColorCache;
 	if (context->keysFromCache)
 	{
 		// tbSteadyContactKeys: the same keys and solve order as the colours were made for; the
@@ -142,19 +142,19 @@ static bool tbSameColorInputs(const tbStepContext* context, int partitionRequest
 	return cache != NULL && cache->count == n && n > 0 && cache->bodyCount == context->bodyCount &&
 		   cache->partitionRequest == partitionRequest &&
 		   memcmp(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n) == 0 &&
-		   memcmp(cache->slots, context->world->solverSlots, sizeof(int) * (size_t)n) == 0;
+		   memcmp(cache->slots, context->world->cache.solverSlots, sizeof(int) * (size_t)n) == 0;
 }
 
 const tbContactKey* tbSteadyContactKeys(const tbStepContext* context)
 {
 	const tbWorld* world = context->world;
-	const tbContactColorCache* cache = world->contactColorCache;
+	const tbContactColorCache* cache = world->cache.contactColorCache;
 	int n = context->constraintCount;
-	// solverIsTouching: the solver contacts, hence their solve order (world->solverSlots), are the
+	// solverIsTouching: the solver contacts, hence their solve order (world->cache.solverSlots), are the
 	// last step's; the cache then holds that step's keys and slots (checked or kept since).
-	bool steady = world->collideKeysUnchanged && world->solverIsTouching && cache != NULL && cache->count == n &&
+	bool steady = world->cache.collideKeysUnchanged && world->cache.solverContactsUnchanged && cache != NULL && cache->count == n &&
 				  n > 0 && cache->bodyCount == context->bodyCount && cache->bounceCount == 0 &&
-				  world->colorCacheStep == world->stepIndex - 1u;
+				  world->cache.colorCacheStep == world->stepIndex - 1u;
 	return steady ? cache->keysById : NULL;
 }
 
@@ -164,7 +164,7 @@ static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH
 {
 	tbWorld* world = context->world;
 	int n = context->constraintCount;
-	if (world->contactColorCache == NULL || n > world->contactColorCache->capacity)
+	if (world->cache.contactColorCache == NULL || n > world->cache.contactColorCache->capacity)
 	{
 		tbDestroyContactColorCache(world);
 		tbContactColorCache* fresh = tbAlloc((int)sizeof(tbContactColorCache));
@@ -175,9 +175,9 @@ static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH
 		fresh->slots = tbAlloc((int)sizeof(int) * capacity);
 		fresh->wideLocation = tbAlloc((int)sizeof(int) * capacity);
 		fresh->locationById = tbAlloc((int)sizeof(int) * capacity);
-		world->contactColorCache = fresh;
+		world->cache.contactColorCache = fresh;
 	}
-	tbContactColorCache* cache = world->contactColorCache;
+	tbContactColorCache* cache = world->cache.contactColorCache;
 	cache->count = n;
 	cache->bodyCount = context->bodyCount;
 	cache->bounceCount = bounceCount;
@@ -185,7 +185,7 @@ static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH
 	{
 		memcpy(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n);
 	}
-	memcpy(cache->slots, world->solverSlots, sizeof(int) * (size_t)n);
+	memcpy(cache->slots, world->cache.solverSlots, sizeof(int) * (size_t)n);
 	memcpy(cache->wideLocation, context->wideLocation, sizeof(int) * (size_t)n);
 	memcpy(cache->locationById, context->locationById, sizeof(int) * (size_t)n);
 	memcpy(cache->counts, counts, sizeof(cache->counts));
@@ -205,7 +205,7 @@ static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COL
 /// bounce.
 static int tbScatterKeys(const tbStepContext* context)
 {
-	const int* slots = context->world->solverSlots;
+	const int* slots = context->world->cache.solverSlots;
 	int bounceCount = 0;
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
@@ -239,7 +239,7 @@ static int tbPartitionRequest(const tbStepContext* context)
 	const tbWorld* world = context->world;
 	int workers = tbWorkerCount(&world->def);
 	if (workers < 2 || world->def.solver != tb_solverSoft || context->enableWarmStarting == false ||
-		world->solverJointCount > 0)
+		world->cache.solverJointCount > 0)
 	{
 		return 1;
 	}
@@ -339,10 +339,10 @@ static void tbPartitionColors(tbStepContext* context, int request, const uint8_t
 	// contacts and one over the bodies; the tumbler colours every step).
 	tbWorld* world = context->world;
 	bool worth = request > 1 && counts[TB_GRAPH_COLOR_COUNT] == 0 && context->bodyCount >= 2 * request &&
-				 (int32_t)(world->stepIndex - world->partitionRetryStep) >= 0;
+				 (int32_t)(world->stepIndex - world->cache.partitionRetryStep) >= 0;
 	if (worth && tbCutPartitions(context, request, cover, weight) == false)
 	{
-		world->partitionRetryStep = world->stepIndex + TB_PARTITION_RETRY_STEPS;
+		world->cache.partitionRetryStep = world->stepIndex + TB_PARTITION_RETRY_STEPS;
 	}
 	else if (worth)
 	{
@@ -364,7 +364,7 @@ static void tbPartitionColors(tbStepContext* context, int request, const uint8_t
 			return;
 		}
 		context->partitionCount = 0; // too uneven: the shared stages balance better
-		world->partitionRetryStep = world->stepIndex + TB_PARTITION_RETRY_STEPS;
+		world->cache.partitionRetryStep = world->stepIndex + TB_PARTITION_RETRY_STEPS;
 		memset(partitionCounts, 0, sizeof(*partitionCounts));
 	}
 	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
@@ -380,10 +380,10 @@ void tbColorConstraints(tbStepContext* context)
 	int counts[TB_GRAPH_COLOR_COUNT + 1] = {0};
 	tbPartitionCounts partitionCounts;
 	int request = tbPartitionRequest(context);
-	context->world->colorCacheStep = context->world->stepIndex; // kept or made below
+	context->world->cache.colorCacheStep = context->world->stepIndex; // kept or made below
 	if (tbSameColorInputs(context, request))
 	{
-		const tbContactColorCache* cache = context->world->contactColorCache;
+		const tbContactColorCache* cache = context->world->cache.contactColorCache;
 		context->partitionCount = cache->partitionCount;
 		memcpy(context->partitionBodyStart, cache->partitionBodyStart, sizeof(context->partitionBodyStart));
 		tbLayOutColors(context, cache->counts, &cache->partitionCounts);
@@ -434,7 +434,7 @@ void tbColorConstraints(tbStepContext* context)
 	// colour's blocks are then written front to back, one stream per colour (and partition). Handed
 	// out in solve order (a hash of the contact id, island.c), every block was written lane by lane
 	// from sixteen places at once and fell out of the cache between its lanes.
-	const int* slots = context->world->solverSlots;
+	const int* slots = context->world->cache.solverSlots;
 	for (int i = 0; i < n; ++i)
 	{
 		int index = slots[i];
@@ -538,7 +538,7 @@ void tbReleaseColors(tbStepContext* context)
 //   workers share the pass and let one worker overlap consecutive joints, where in joint-id order
 //   each joint waits for the velocity the previous one stored. On a 100 × 100 grid of revolute
 //   joints colour order gave the same pin gaps as joint-id order (largest 0.50 m, mean 0.024 m).
-// world->solverJoints becomes: the small mechanisms, then colour after colour (joint-id order
+// world->cache.solverJoints becomes: the small mechanisms, then colour after colour (joint-id order
 // within each), then the joints that found no colour; the same order on any number of workers.
 #define TB_JOINT_SMALL_GROUP 64
 #define TB_JOINTS_PER_MECHANISM_UNIT 16
@@ -557,7 +557,7 @@ static int tbFindRoot(int* parent, int i)
 static void tbFindMechanisms(const tbStepContext* context, int* parent, int* jointRoot, int* size)
 {
 	const tbWorld* world = context->world;
-	int n = world->solverJointCount;
+	int n = world->cache.solverJointCount;
 	for (int i = 0; i <= context->bodyCount; ++i)
 	{
 		parent[i] = i;
@@ -565,7 +565,7 @@ static void tbFindMechanisms(const tbStepContext* context, int* parent, int* joi
 	}
 	for (int i = 0; i < n; ++i)
 	{
-		const tbJoint* joint = world->joints + world->solverJoints[i];
+		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		if (tbJointMovesA(joint) && tbJointMovesB(joint))
 		{
 			int a = tbFindRoot(parent, joint->indexA), b = tbFindRoot(parent, joint->indexB);
@@ -574,7 +574,7 @@ static void tbFindMechanisms(const tbStepContext* context, int* parent, int* joi
 	}
 	for (int i = 0; i < n; ++i)
 	{
-		const tbJoint* joint = world->joints + world->solverJoints[i];
+		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		jointRoot[i] = tbFindRoot(parent, tbJointMovesA(joint) ? joint->indexA : joint->indexB);
 		size[jointRoot[i]] += 1;
 	}
@@ -616,7 +616,7 @@ static void tbPackMechanismUnits(tbStepContext* context, const int* orderedRoot,
 static void tbMarkLoopyMechanisms(const tbStepContext* context, int* parent, const int* jointRoot, const int* size)
 {
 	tbWorld* world = context->world;
-	int n = world->solverJointCount;
+	int n = world->cache.solverJointCount;
 	int bodies = context->bodyCount + 1;
 	tbArena* arena = &world->stepArena;
 	int* bodyCount = tbArenaAlloc(arena, (int)sizeof(int) * bodies);
@@ -632,7 +632,7 @@ static void tbMarkLoopyMechanisms(const tbStepContext* context, int* parent, con
 	}
 	for (int i = 0; i < n; ++i)
 	{
-		const tbJoint* joint = world->joints + world->solverJoints[i];
+		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		if (tbJointEqualityRowCount(joint) > 0)
 		{
 			bool both = tbJointMovesA(joint) && tbJointMovesB(joint);
@@ -646,7 +646,7 @@ static void tbMarkLoopyMechanisms(const tbStepContext* context, int* parent, con
 		int treeJoints = bodyCount[root] - 1 + (ground[root] > 0 ? 1 : 0);
 		int innerLoops = tbMaxInt(inner[root] - (bodyCount[root] - 1), 0);
 		int groundLoops = tbMaxInt(ground[root] - 1, 0);
-		world->joints[world->solverJoints[i]].loopyMechanism = 4 * innerLoops + 2 * groundLoops > treeJoints;
+		world->joints[world->cache.solverJoints[i]].loopyMechanism = 4 * innerLoops + 2 * groundLoops > treeJoints;
 	}
 }
 
@@ -661,7 +661,7 @@ typedef struct tbJointOrderCache
 	uint64_t fingerprint;
 	int count;			  ///< joints ordered; 0: nothing kept
 	int capacity;		  ///< of ordered and loopy
-	int* ordered;		  ///< world->solverJoints after ordering
+	int* ordered;		  ///< world->cache.solverJoints after ordering
 	uint8_t* loopy;		  ///< tbJoint::loopyMechanism of each, in that order
 	int* unitStart;		  ///< jointUnitCount + 1 entries (capacity + 1 allocated)
 	int unitCount, smallCount, colorCount, treeCandidates;
@@ -678,15 +678,15 @@ static uint64_t tbMixFingerprint(uint64_t h, uint32_t value)
 static uint64_t tbJointOrderFingerprint(const tbStepContext* context)
 {
 	const tbWorld* world = context->world;
-	uint64_t h = tbMixFingerprint(0x243F6A8885A308D3ull, (uint32_t)world->solverJointCount);
+	uint64_t h = tbMixFingerprint(0x243F6A8885A308D3ull, (uint32_t)world->cache.solverJointCount);
 	h = tbMixFingerprint(h, (uint32_t)context->bodyCount);
 	h = tbMixFingerprint(h, world->def.enableJointTrees ? 1u : 0u);
-	for (int i = 0; i < world->solverJointCount; ++i)
+	for (int i = 0; i < world->cache.solverJointCount; ++i)
 	{
-		const tbJoint* joint = world->joints + world->solverJoints[i];
+		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		uint32_t bits = (tbJointMovesA(joint) ? 1u : 0u) | (tbJointMovesB(joint) ? 2u : 0u) |
 						((uint32_t)tbJointEqualityRowCount(joint) << 2);
-		h = tbMixFingerprint(h, (uint32_t)world->solverJoints[i]);
+		h = tbMixFingerprint(h, (uint32_t)world->cache.solverJoints[i]);
 		h = tbMixFingerprint(h, (uint32_t)joint->indexA);
 		h = tbMixFingerprint(h, (uint32_t)joint->indexB);
 		h = tbMixFingerprint(h, bits);
@@ -697,13 +697,13 @@ static uint64_t tbJointOrderFingerprint(const tbStepContext* context)
 static bool tbReuseJointOrder(tbStepContext* context, uint64_t fingerprint)
 {
 	tbWorld* world = context->world;
-	const tbJointOrderCache* cache = world->jointOrderCache;
-	int n = world->solverJointCount;
+	const tbJointOrderCache* cache = world->cache.jointOrderCache;
+	int n = world->cache.solverJointCount;
 	if (cache == NULL || cache->count != n || cache->fingerprint != fingerprint)
 	{
 		return false;
 	}
-	memcpy(world->solverJoints, cache->ordered, sizeof(int) * (size_t)n);
+	memcpy(world->cache.solverJoints, cache->ordered, sizeof(int) * (size_t)n);
 	for (int i = 0; i < n; ++i)
 	{
 		world->joints[cache->ordered[i]].loopyMechanism = cache->loopy[i] != 0;
@@ -721,19 +721,19 @@ static bool tbReuseJointOrder(tbStepContext* context, uint64_t fingerprint)
 static void tbKeepJointOrder(const tbStepContext* context, uint64_t fingerprint)
 {
 	tbWorld* world = context->world;
-	int n = world->solverJointCount;
-	if (world->jointOrderCache == NULL)
+	int n = world->cache.solverJointCount;
+	if (world->cache.jointOrderCache == NULL)
 	{
-		world->jointOrderCache = tbAlloc((int)sizeof(tbJointOrderCache));
-		memset(world->jointOrderCache, 0, sizeof(tbJointOrderCache));
+		world->cache.jointOrderCache = tbAlloc((int)sizeof(tbJointOrderCache));
+		memset(world->cache.jointOrderCache, 0, sizeof(tbJointOrderCache));
 	}
-	tbJointOrderCache* cache = world->jointOrderCache;
+	tbJointOrderCache* cache = world->cache.jointOrderCache;
 	if (n > cache->capacity)
 	{
 		tbDestroyJointOrderCache(world);
-		world->jointOrderCache = tbAlloc((int)sizeof(tbJointOrderCache));
-		memset(world->jointOrderCache, 0, sizeof(tbJointOrderCache));
-		cache = world->jointOrderCache;
+		world->cache.jointOrderCache = tbAlloc((int)sizeof(tbJointOrderCache));
+		memset(world->cache.jointOrderCache, 0, sizeof(tbJointOrderCache));
+		cache = world->cache.jointOrderCache;
 		cache->capacity = n;
 		cache->ordered = tbAlloc((int)sizeof(int) * n);
 		cache->loopy = tbAlloc(n);
@@ -741,10 +741,10 @@ static void tbKeepJointOrder(const tbStepContext* context, uint64_t fingerprint)
 	}
 	cache->fingerprint = fingerprint;
 	cache->count = n;
-	memcpy(cache->ordered, world->solverJoints, sizeof(int) * (size_t)n);
+	memcpy(cache->ordered, world->cache.solverJoints, sizeof(int) * (size_t)n);
 	for (int i = 0; i < n; ++i)
 	{
-		cache->loopy[i] = world->joints[world->solverJoints[i]].loopyMechanism ? 1 : 0;
+		cache->loopy[i] = world->joints[world->cache.solverJoints[i]].loopyMechanism ? 1 : 0;
 	}
 	cache->smallCount = context->jointSmallCount;
 	cache->unitCount = context->jointUnitCount;
@@ -760,7 +760,7 @@ static void tbKeepJointOrder(const tbStepContext* context, uint64_t fingerprint)
 
 void tbDestroyJointOrderCache(tbWorld* world)
 {
-	tbJointOrderCache* cache = world->jointOrderCache;
+	tbJointOrderCache* cache = world->cache.jointOrderCache;
 	if (cache == NULL)
 	{
 		return;
@@ -772,7 +772,7 @@ void tbDestroyJointOrderCache(tbWorld* world)
 		tbFree(cache->unitStart, (int)sizeof(int) * (cache->capacity + 1));
 	}
 	tbFree(cache, (int)sizeof(tbJointOrderCache));
-	world->jointOrderCache = NULL;
+	world->cache.jointOrderCache = NULL;
 }
 
 static void tbComputeJointOrder(tbStepContext* context);
@@ -780,7 +780,7 @@ static void tbComputeJointOrder(tbStepContext* context);
 void tbColorJoints(tbStepContext* context)
 {
 	tbWorld* world = context->world;
-	int n = world->solverJointCount;
+	int n = world->cache.solverJointCount;
 	context->jointColorCount = 0;
 	context->jointOverflow = false;
 	context->jointUnitCount = 0;
@@ -800,7 +800,7 @@ void tbColorJoints(tbStepContext* context)
 	context->jointTreeCandidates = 0;
 	for (int i = 0; i < n; ++i)
 	{
-		const tbJoint* joint = world->joints + world->solverJoints[i];
+		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		context->jointTreeCandidates += joint->loopyMechanism == false && tbJointEqualityRowCount(joint) > 0 ? 1 : 0;
 	}
 	tbKeepJointOrder(context, fingerprint);
@@ -810,7 +810,7 @@ void tbColorJoints(tbStepContext* context)
 static void tbComputeJointOrder(tbStepContext* context)
 {
 	tbWorld* world = context->world;
-	int n = world->solverJointCount;
+	int n = world->cache.solverJointCount;
 	tbArena* arena = &world->stepArena;
 	int bodies = context->bodyCount + 1;
 	int* parent = tbArenaAlloc(arena, (int)sizeof(int) * bodies);
@@ -843,13 +843,13 @@ static void tbComputeJointOrder(tbStepContext* context)
 				size[root] = -small - 1; // from now on: −(offset of its next joint) − 1
 				small += count;
 			}
-			ordered[-size[root] - 1] = world->solverJoints[i];
+			ordered[-size[root] - 1] = world->cache.solverJoints[i];
 			orderedRoot[-size[root] - 1] = root;
 			size[root] -= 1;
 			colors[i] = 0xFF;
 			continue;
 		}
-		const tbJoint* joint = world->joints + world->solverJoints[i];
+		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		bool movesA = tbJointMovesA(joint), movesB = tbJointMovesB(joint);
 		uint32_t used = (movesA ? bodyMasks[joint->indexA] : 0u) | (movesB ? bodyMasks[joint->indexB] : 0u);
 		uint32_t available = ~used & allColors;
@@ -883,8 +883,8 @@ static void tbComputeJointOrder(tbStepContext* context)
 	{
 		if (colors[i] != 0xFF)
 		{
-			ordered[offsets[colors[i]]++] = world->solverJoints[i];
+			ordered[offsets[colors[i]]++] = world->cache.solverJoints[i];
 		}
 	}
-	memcpy(world->solverJoints, ordered, sizeof(int) * (size_t)n);
+	memcpy(world->cache.solverJoints, ordered, sizeof(int) * (size_t)n);
 }

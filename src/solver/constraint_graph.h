@@ -8,10 +8,10 @@
 void tbColorConstraints(tbStepContext* context);
 /// The last step's keys in contact-id order, kept with its colours, when this step's are known to
 /// equal them without computing them: the collide stage kept the touching list and found every
-/// solver contact's key unchanged (world->collideKeysUnchanged), the island stage kept the solver
+/// solver contact's key unchanged (world->cache.collideKeysUnchanged), the island stage kept the solver
 /// contacts, the colours are the last step's and no contact bounces. NULL otherwise.
 const tbContactKey* tbSteadyContactKeys(const tbStepContext* context);
-/// Colour the prepared joints in a graph of their own and reorder world->solverJoints colour by
+/// Colour the prepared joints in a graph of their own and reorder world->cache.solverJoints colour by
 /// colour (context->jointColorStart); after tbPrepareJoints, whatever the solver method.
 void tbColorJoints(tbStepContext* context);
 /// Release the joint order kept from the last step (world destruction).

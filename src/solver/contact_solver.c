@@ -396,12 +396,12 @@ static void tbKeyContactsTask(int start, int end, uint32_t workerIndex, void* ta
 	(void)workerIndex;
 	tbStepContext* context = taskContext;
 	const tbWorld* world = context->world;
-	const int* contactIds = world->solverContactsById;
-	const tbCollideKey* collideKeys = world->collideKeys;
+	const int* contactIds = world->cache.solverContactsById;
+	const tbCollideKey* collideKeys = world->cache.collideKeys;
 	// The narrow phase's keys hold when no body has left the awake set since (only then are its
 	// awake indices this step's solver indices); a contact it did not key (one side was asleep
 	// then) is keyed from its bodies.
-	bool useCollideKeys = world->gatheredRemovals == world->awakeRemovals;
+	bool useCollideKeys = world->cache.gatheredRemovals == world->cache.awakeRemovals;
 	uint32_t step = world->stepIndex;
 	int staticIndex = context->bodyCount;
 	for (int i = start; i < end; ++i)
@@ -409,11 +409,11 @@ static void tbKeyContactsTask(int start, int end, uint32_t workerIndex, void* ta
 		int contactId = contactIds[i];
 		const tbCollideKey* ck = collideKeys + contactId;
 		tbContactKey key;
-		if (useCollideKeys && contactId < world->collideKeyCount && ck->step == step)
+		if (useCollideKeys && contactId < world->cache.collideKeyCount && ck->step == step)
 		{
-			key.indexA = ck->indexA == TB_NULL_INDEX ? staticIndex : ck->indexA;
-			key.indexB = ck->indexB == TB_NULL_INDEX ? staticIndex : ck->indexB;
-			key.flags = ck->flags;
+			key = ck->key; // awake indices: the static stand-in replaces TB_NULL_INDEX
+			key.indexA = key.indexA == TB_NULL_INDEX ? staticIndex : key.indexA;
+			key.indexB = key.indexB == TB_NULL_INDEX ? staticIndex : key.indexB;
 		}
 		else
 		{
@@ -917,8 +917,8 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 	tbPrepareTaskContext* task = taskContext;
 	tbStepContext* context = task->context;
 	tbWorld* world = context->world;
-	const int* contactIds = world->solverContactsById;
-	const int* slots = world->solverSlots;
+	const int* contactIds = world->cache.solverContactsById;
+	const int* slots = world->cache.solverSlots;
 	const int* wideLocation = context->wideLocation;
 	bool laneFastPath = (world->def.solver == tb_solverNGS && context->subStepCount == 1) == false;
 	bool impactPropagation = world->def.enableImpactPropagation;
@@ -1438,8 +1438,8 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 	(void)workerIndex;
 	tbStepContext* context = taskContext;
 	tbWorld* world = context->world;
-	const int* contactIds = world->solverContactsById;
-	const int* slots = world->solverSlots;
+	const int* contactIds = world->cache.solverContactsById;
+	const int* slots = world->cache.solverSlots;
 	const int* wideLocation = context->wideLocation;
 	for (int i = start; i < end; ++i)
 	{

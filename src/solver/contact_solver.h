@@ -61,7 +61,7 @@ typedef struct tbLaneBatch
 	tbContactKey keys[TB_SIMD_WIDTH];
 	int locations[TB_SIMD_WIDTH]; ///< block·TB_SIMD_WIDTH + lane
 	int slots[TB_SIMD_WIDTH];
-	int indices[TB_SIMD_WIDTH]; ///< place in contact-id order (world->solverContactsById)
+	int indices[TB_SIMD_WIDTH]; ///< place in contact-id order (world->cache.solverContactsById)
 } tbLaneBatch;
 /// tbPrepareWideLane for a full batch of contacts, computed in wide floats: bit for bit the same
 /// lanes and approach speeds (tests/test_contact_solver.c checks it). Returns a bit per lane: set

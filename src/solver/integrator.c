@@ -109,7 +109,7 @@ void tbIntegratePositionsRange(tbStepContext* context, int start, int end)
 	// Only joints can ask for unbounded speeds (contacts push out at most maxContactPushSpeed and
 	// rebound at most 2·maxLinearSpeed, docs/limits.md): a world without them skips the guard, which
 	// costs 0.8 % of large_pyramid's instructions.
-	bool guard = context->world->jointCount > 0;
+	bool guard = context->world->jointPool.count > 0;
 	float guardLinear = TB_SPEED_GUARD * context->maxLinearSpeed;
 	float guardAngular = TB_SPEED_GUARD * context->maxAngularSpeed;
 	const uint8_t* locks = context->linearLocks;

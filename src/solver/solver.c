@@ -20,6 +20,7 @@
 #include "joints/joint.h"
 #include "solver.h"
 #include "solver_workers.h"
+#include "world/continuous.h"
 #include "core/task.h"
 
 #include "tumble/constants.h"
@@ -169,8 +170,8 @@ static void tbScatterBodies(tbStepContext* context)
 	tbParallelFor(&world->def, tbScatterBodiesTask, context->bodyCount, TB_BODIES_PER_TASK, &task);
 	if (task.markFast)
 	{
-		world->fastMarkedStep = world->stepIndex;
-		world->fastMarkedCount = atomic_load_explicit(&task.fastCount, memory_order_relaxed);
+		world->cache.fastMarkedStep = world->stepIndex;
+		world->cache.fastMarkedCount = atomic_load_explicit(&task.fastCount, memory_order_relaxed);
 	}
 }
 
@@ -231,7 +232,7 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	context.lapTicks = tbGetTicks();
 	tbProfile* profile = &world->profile; // the solve stage's parts (tbProfileLap)
 
-	tbAllocateStep(&context, world->awakeBodyCount, world->solverContactCount);
+	tbAllocateStep(&context, world->awakeBodyCount, world->cache.solverContactCount);
 	tbGatherBodies(&context);
 	tbPrepareMethod(&context);
 	if (world->def.enableWideSolver && world->def.solver != tb_solverNGS && context.constraintCount > 0)

@@ -8,3 +8,6 @@
 #include "integrator.h"
 #include "solver_methods.h"
 #include "solver_types.h"
+
+/// The solve stage of the step: integrate and solve the awake bodies, contacts and joints.
+void tbSolveStage(tbWorld* world, float timeStep, int subStepCount);

@@ -145,7 +145,7 @@ static void tbBuildNGSConstraints(tbStepContext* context, tbNGSConstraint* infos
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
 		tbContactConstraint* c = context->constraints + i;
-		const tbManifold* manifold = &world->contacts[world->solverContacts[i]].manifold;
+		const tbManifold* manifold = &world->contacts[world->cache.solverContacts[i]].manifold;
 		tbNGSConstraint* info = infos + i;
 		info->block = false;
 		info->k11 = info->k12 = info->k22 = 0.0f;
@@ -444,7 +444,7 @@ static void tbSolveTimeOfImpact(tbStepContext* context, tbNGSConstraint* infos)
 			{
 				continue;
 			}
-			const tbManifold* manifold = &world->contacts[world->solverContacts[k]].manifold;
+			const tbManifold* manifold = &world->contacts[world->cache.solverContacts[k]].manifold;
 			for (int j = 0; j < ck->pointCount; ++j)
 			{
 				float s0 = manifold->points[j].separation;

@@ -7,7 +7,7 @@
 // tbBody::solverIndex; one extra entry at the end (index bodyCount) is a motionless body with
 // infinite mass that stands for every static or non-awake body, so the contact loops never branch
 // on "is there a body here". Contacts become tbContactConstraint structs in the order of
-// world->solverContacts, with anchors, effective masses and softness precomputed once per step.
+// world->cache.solverContacts, with anchors, effective masses and softness precomputed once per step.
 #pragma once
 
 #include "core/simd.h"
@@ -127,12 +127,6 @@ _Static_assert(sizeof(tbContactConstraint) == 176, "tbContactConstraint is meant
 
 /// What colouring needs of a contact, known before the contact is prepared (contact_solver.c): the
 /// wide solver colours first and then prepares each contact straight into its lane.
-typedef struct tbContactKey
-{
-	int indexA, indexB; ///< solver body indices (bodyCount for the static stand-in)
-	uint32_t flags;		///< tbContactKeyFlag bits (world.h)
-} tbContactKey;
-
 
 /// How the velocity solve treats separation. Speculative gaps (s > 0) always get bias s/h: the
 /// constraint lets the bodies close exactly the gap in one sub-step and no more.
@@ -216,10 +210,10 @@ typedef struct tbStepContext
 	uint8_t* linearLocks; ///< per solver body: 1 x locked, 2 y locked (motion locks); NULL when no body has one
 	int bodyCount;
 
-	tbContactConstraint* constraints; ///< in the order of world->solverContacts; with the wide
+	tbContactConstraint* constraints; ///< in the order of world->cache.solverContacts; with the wide
 									  ///< solver only the overflow's and the bouncing ones are written
 	/// Wide solver only (NULL for the scalar one): each contact's key in contact-id order
-	/// (world->solverContactsById), written by the key pass, and the same keys in solve order, filled
+	/// (world->cache.solverContactsById), written by the key pass, and the same keys in solve order, filled
 	/// only when the colouring runs or some contact bounces (constraint_graph.c, tbScatterKeys).
 	tbContactKey* keys;
 	tbContactKey* keysById;
@@ -236,7 +230,7 @@ typedef struct tbStepContext
 	int* overflowConstraints;
 	int overflowCount;
 	int* wideLocation; ///< per constraint: block·TB_SIMD_WIDTH + lane, or −1 (overflow, or unpacked)
-	/// The same in contact-id order (world->solverContactsById), for the passes that walk the
+	/// The same in contact-id order (world->cache.solverContactsById), for the passes that walk the
 	/// contacts in that order; not updated when restitution unpacks a bouncing constraint.
 	int* locationById;
 	int colorCount;											///< colours in use this step
@@ -249,7 +243,7 @@ typedef struct tbStepContext
 	int partitionCount;
 	int partitionBodyStart[TB_MAX_PARTITIONS + 1];
 	int partitionBlockStart[TB_GRAPH_COLOR_COUNT][TB_MAX_PARTITIONS + 1];
-	// Joints (constraint_graph.c): world->solverJoints reordered. First the joints of small
+	// Joints (constraint_graph.c): world->cache.solverJoints reordered. First the joints of small
 	// mechanisms, [0, jointSmallCount), in units of whole mechanisms [jointUnitStart[u],
 	// jointUnitStart[u + 1]) for u < jointUnitCount; then colour groups: group k holds
 	// [jointColorStart[k], jointColorStart[k + 1]) for k < jointColorCount, the last group being the

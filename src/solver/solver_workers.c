@@ -151,7 +151,7 @@ static void tbAddJointColors(tbStageProgram* p, tbStageKind kind, bool useBias)
 /// biased pass with trees the trees' exact solve and the rows once more.
 static void tbAddJointPass(tbStageProgram* p, bool useBias)
 {
-	bool trees = p->context->world->jointTreeCount > 0;
+	bool trees = p->context->world->cache.jointTreeCount > 0;
 	tbAddStage(p, tb_stageBeginJointPass, 0, trees ? 1 : 0, 1, tb_biasSoft, useBias);
 	tbAddJointColors(p, tb_stageSolveJoints, useBias);
 	if (useBias && trees)
@@ -207,7 +207,7 @@ static void tbRunRange(tbStepContext* context, const tbStage* s, int begin, int 
 			break;
 		case tb_stageBeginJointPass:
 			// The program's one biased pass per sub-step factors the trees for the new positions.
-			context->world->jointTreesStale = context->world->jointTreesStale || s->useBias;
+			context->world->cache.jointTreesStale = context->world->cache.jointTreesStale || s->useBias;
 			tbBeginJointPass(context, s->useBias);
 			break;
 		case tb_stageSolveJoints:
@@ -438,7 +438,7 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 	tbBuildSoftProgram(&program);
 	// Partitions (constraint_graph.c) hold only contact colours and bodies: no joint stage, no
 	// overflow.
-	bool jointStages = context->jointUnitCount > 0 || context->jointColorCount > 0 || world->jointTreeCount > 0;
+	bool jointStages = context->jointUnitCount > 0 || context->jointColorCount > 0 || world->cache.jointTreeCount > 0;
 	if (context->partitionCount == workers && jointStages == false && context->overflowCount == 0)
 	{
 		tbRunPartitions(&program);

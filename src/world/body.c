@@ -1,7 +1,12 @@
 // Bodies: creation and destruction, the awake set, mass from shapes, getters and setters, and
 // the finalize stage (shape boxes, broad-phase moves, sleep timers, move events).
-#include "core/task.h"
+#include "body.h"
+
+#include "chain.h"
 #include "world.h"
+
+#include "core/task.h"
+#include "joints/joint.h"
 
 #include "core/array.h"
 
@@ -42,7 +47,7 @@ tbBody* tbGetBodyChecked(tbBodyId id, const char* function, tbWorld** worldOut, 
 	}
 	tbWorld* world = id.world0 < TB_MAX_WORLDS ? tbGetWorldFromIndex(id.world0) : NULL;
 	int index = id.index1 - 1;
-	if (world == NULL || index >= world->bodyHighWater || world->bodies[index].inUse == false ||
+	if (world == NULL || index >= world->bodyPool.highWater || world->bodies[index].inUse == false ||
 		world->bodies[index].generation != id.generation)
 	{
 		tbReportError(function, "bodyId refers to a destroyed body or world; do not use a body id after "
@@ -69,7 +74,7 @@ bool tbBody_IsValid(tbBodyId id)
 	}
 	tbWorld* world = tbGetWorldFromIndex(id.world0);
 	int index = id.index1 - 1;
-	return world != NULL && index < world->bodyHighWater && world->bodies[index].inUse &&
+	return world != NULL && index < world->bodyPool.highWater && world->bodies[index].inUse &&
 		   world->bodies[index].generation == id.generation;
 }
 
@@ -137,8 +142,7 @@ static void tbAddToAwakeSet(tbWorld* world, tbBody* body, int bodyId)
 	tbCompactAwakeSet(world); // appended after the bodies still awake, as if removed eagerly
 	body->awakeIndex = world->awakeBodyCount;
 	TB_ARRAY_PUSH(world->awakeBodies, world->awakeBodyCount, world->awakeBodyCapacity, bodyId);
-	world->awakeSetVersion += 1;
-	world->jointWakeDirty = true;
+	tbStepCache_AwakeSetChanged(&world->cache, false);
 }
 
 static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
@@ -146,9 +150,7 @@ static void tbRemoveFromAwakeSet(tbWorld* world, tbBody* body)
 	world->awakeBodies[body->awakeIndex] = TB_NULL_INDEX;
 	world->awakeHoles += 1;
 	body->awakeIndex = TB_NULL_INDEX;
-	world->awakeSetVersion += 1;
-	world->awakeRemovals += 1;
-	world->jointWakeDirty = true;
+	tbStepCache_AwakeSetChanged(&world->cache, true);
 }
 
 void tbWakeBody(tbWorld* world, tbBody* body)
@@ -178,14 +180,14 @@ void tbSleepBody(tbWorld* world, tbBody* body)
 
 static int tbAllocBodySlot(tbWorld* world)
 {
-	if (world->bodyFreeCount > 0)
+	bool isNew;
+	int id = tbIdPool_Alloc(&world->bodyPool, &isNew);
+	if (isNew)
 	{
-		return world->bodyFree[--world->bodyFreeCount];
+		TB_ARRAY_RESERVE(world->bodies, world->bodyCapacity, id + 1);
+		memset(world->bodies + id, 0, sizeof(tbBody));
+		world->bodies[id].generation = world->bodyGenerationBase; // tbCreateBody adds one
 	}
-	TB_ARRAY_RESERVE(world->bodies, world->bodyCapacity, world->bodyHighWater + 1);
-	int id = world->bodyHighWater++;
-	memset(world->bodies + id, 0, sizeof(tbBody));
-	world->bodies[id].generation = world->bodyGenerationBase; // tbCreateBody adds one
 	return id;
 }
 
@@ -242,7 +244,6 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	{
 		tbAddToAwakeSet(world, body, id);
 	}
-	world->bodyCount += 1;
 	return tbMakeBodyId(world, id);
 }
 
@@ -281,8 +282,7 @@ void tbDestroyBody(tbBodyId bodyId)
 		tbDestroyShapeProxy(world, shape);
 		shape->inUse = false;
 		shape->generation += 1;
-		TB_ARRAY_PUSH(world->shapeFree, world->shapeFreeCount, world->shapeFreeCapacity, shapeId);
-		world->shapeCount -= 1;
+		tbIdPool_Free(&world->shapePool, shapeId);
 		shapeId = next;
 	}
 	if (body->awakeIndex != TB_NULL_INDEX)
@@ -291,11 +291,10 @@ void tbDestroyBody(tbBodyId bodyId)
 	}
 	body->inUse = false;
 	body->generation += 1;
-	world->bodyCount -= 1;
 	world->kinematicBodyCount -= body->type == tb_kinematicBody ? 1 : 0;
 	world->staticBodyCount -= body->type == tb_staticBody ? 1 : 0;
 	world->linearLockCount -= body->lockLinearX || body->lockLinearY ? 1 : 0;
-	TB_ARRAY_PUSH(world->bodyFree, world->bodyFreeCount, world->bodyFreeCapacity, bodyId.index1 - 1);
+	tbIdPool_Free(&world->bodyPool, bodyId.index1 - 1);
 }
 
 /// The reach of a body's speculative contacts, max(TB_SPECULATIVE_REACH, safetyFactor × minExtent)
@@ -1451,11 +1450,11 @@ void tbFinalizeStage(tbWorld* world, float timeStep)
 		// On workers: everything per body, each move event written to its slot (awake order, as the
 		// one-worker walk appends them); then, serially and in body order, only the bodies with a
 		// re-made box move their proxies (the broad phase's move buffer keeps that order).
-		TB_ARRAY_RESERVE(world->moveEvents, world->moveCapacity, world->moveCount + n);
-		tbFinalizeTaskContext task = {world, timeStep, world->moveEvents + world->moveCount,
+		TB_ARRAY_RESERVE(world->events.moveEvents, world->events.moveCapacity, world->events.moveCount + n);
+		tbFinalizeTaskContext task = {world, timeStep, world->events.moveEvents + world->events.moveCount,
 									  tbArenaAlloc(&world->stepArena, tbMaxInt(n, 1))};
 		tbParallelFor(&world->def, tbFinalizeTask, n, 256, &task);
-		world->moveCount += n;
+		world->events.moveCount += n;
 		for (int i = 0; i < n; ++i)
 		{
 			if (task.moved[i] != 0u)
@@ -1474,6 +1473,6 @@ void tbFinalizeStage(tbWorld* world, float timeStep)
 		tbComputeBodyShapeBoxes(world, body, false);
 		tbMoveFlaggedProxies(world, body);
 		tbBodyMoveEvent event = tbMakeMoveEvent(world, body, bodyId);
-		TB_ARRAY_PUSH(world->moveEvents, world->moveCount, world->moveCapacity, event);
+		TB_ARRAY_PUSH(world->events.moveEvents, world->events.moveCount, world->events.moveCapacity, event);
 	}
 }

@@ -2,6 +2,8 @@
 // ids of its segment shapes and its surface materials; the segments are ordinary shapes of kind
 // tb_chainSegmentShape whose ghost points are the chain's neighbouring points, which is what lets
 // the narrow phase (manifold.c, "Chain segments") slide shapes across the joints without bumps.
+#include "chain.h"
+
 #include "core/array.h"
 #include "world.h"
 
@@ -11,17 +13,6 @@
 #include <string.h>
 
 #define TB_CHAIN_DEF_MAGIC 0x6C3E91A5
-
-typedef struct tbChain
-{
-	int bodyId;
-	int* shapeIds;
-	int segmentCount;
-	tbSurfaceMaterial* materials;
-	int materialCount;
-	uint16_t generation;
-	bool inUse;
-} tbChain;
 
 tbChainDef tbDefaultChainDef(void)
 {
@@ -49,7 +40,7 @@ static tbChain* tbLookUpChain(tbChainId id, tbWorld** worldOut)
 	}
 	tbWorld* world = tbGetWorldFromIndex(id.world0);
 	int index = id.index1 - 1;
-	if (world == NULL || index >= world->chainHighWater || world->chains[index].inUse == false ||
+	if (world == NULL || index >= world->chainPool.highWater || world->chains[index].inUse == false ||
 		world->chains[index].generation != id.generation)
 	{
 		return NULL;
@@ -143,13 +134,13 @@ static bool tbCheckChainDef(const char* f, const tbChainDef* def)
 
 static int tbAllocChainSlot(tbWorld* world)
 {
-	if (world->chainFreeCount > 0)
+	bool isNew;
+	int index = tbIdPool_Alloc(&world->chainPool, &isNew);
+	if (isNew)
 	{
-		return world->chainFree[--world->chainFreeCount];
+		TB_ARRAY_RESERVE(world->chains, world->chainCapacity, index + 1);
+		memset(world->chains + index, 0, sizeof(tbChain));
 	}
-	TB_ARRAY_RESERVE(world->chains, world->chainCapacity, world->chainHighWater + 1);
-	int index = world->chainHighWater++;
-	memset(world->chains + index, 0, sizeof(tbChain));
 	return index;
 }
 
@@ -187,7 +178,6 @@ tbChainId tbCreateChain(tbBodyId bodyId, const tbChainDef* def)
 	chain->shapeIds = tbAlloc(chain->segmentCount * (int)sizeof(int));
 	chain->materials = tbAlloc(chain->materialCount * (int)sizeof(tbSurfaceMaterial));
 	memcpy(chain->materials, def->materials, (size_t)chain->materialCount * sizeof(tbSurfaceMaterial));
-	world->chainCount += 1;
 
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	shapeDef.userData = def->userData;
@@ -225,8 +215,7 @@ static void tbRemoveChain(tbWorld* world, int index, bool removeShapes)
 	chain->materials = NULL;
 	chain->inUse = false;
 	chain->generation += 1;
-	world->chainCount -= 1;
-	TB_ARRAY_PUSH(world->chainFree, world->chainFreeCount, world->chainFreeCapacity, index);
+	tbIdPool_Free(&world->chainPool, index);
 }
 
 void tbDestroyChain(tbChainId chainId)
@@ -242,7 +231,7 @@ void tbDestroyChain(tbChainId chainId)
 
 void tbDestroyBodyChains(tbWorld* world, int bodyIndex)
 {
-	for (int i = 0; i < world->chainHighWater; ++i)
+	for (int i = 0; i < world->chainPool.highWater; ++i)
 	{
 		if (world->chains[i].inUse && world->chains[i].bodyId == bodyIndex)
 		{
@@ -253,7 +242,7 @@ void tbDestroyBodyChains(tbWorld* world, int bodyIndex)
 
 void tbFreeChains(tbWorld* world)
 {
-	for (int i = 0; i < world->chainHighWater; ++i)
+	for (int i = 0; i < world->chainPool.highWater; ++i)
 	{
 		if (world->chains[i].inUse)
 		{
@@ -261,7 +250,7 @@ void tbFreeChains(tbWorld* world)
 		}
 	}
 	TB_ARRAY_FREE(world->chains, world->chainCapacity);
-	TB_ARRAY_FREE(world->chainFree, world->chainFreeCapacity);
+	tbIdPool_Destroy(&world->chainPool);
 }
 
 tbWorldId tbChain_GetWorld(tbChainId chainId)

@@ -5,9 +5,13 @@
 // tbSpeculativeMargin), or, for a touching pair that barely moved since, carries the last one
 // along (tbRecycleManifold), carries impulses over by feature id for warm starting, and reports
 // begin/end events when a point comes within the fixed TB_SPECULATIVE_DISTANCE.
+#include "contact.h"
+
+#include "world.h"
+
 #include "collision/manifold_internal.h"
 #include "core/task.h"
-#include "world.h"
+#include "joints/joint.h"
 
 #include "core/sort.h"
 
@@ -123,17 +127,13 @@ static void tbUnlinkEdge(tbWorld* world, int contactId, int edgeIndex)
 
 void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 {
-	world->contactEpoch += 1; // the collide stage's touching list may change (tbCollideStage)
-	int id;
-	if (world->contactFreeCount > 0)
+	tbStepCache_ContactsChanged(&world->cache);
+	bool isNew;
+	int id = tbIdPool_Alloc(&world->contactPool, &isNew);
+	if (isNew)
 	{
-		id = world->contactFree[--world->contactFreeCount];
-	}
-	else
-	{
-		TB_ARRAY_RESERVE(world->contacts, world->contactCapacity, world->contactHighWater + 1);
-		TB_ARRAY_RESERVE(world->contactBodies, world->contactBodyCapacity, world->contactHighWater + 1);
-		id = world->contactHighWater++;
+		TB_ARRAY_RESERVE(world->contacts, world->contactCapacity, id + 1);
+		TB_ARRAY_RESERVE(world->cache.contactBodies, world->cache.contactBodyCapacity, id + 1);
 		// A fresh slot's generations start from the world's generation, so an id kept from an
 		// earlier world in the same world slot does not match (64k reuses of one slot per world).
 		world->contacts[id].generation = (uint32_t)world->generation << 16;
@@ -149,7 +149,7 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	contact->shapeIdB = shapeIdB;
 	contact->edges[0].bodyId = a->bodyId;
 	contact->edges[1].bodyId = b->bodyId;
-	world->contactBodies[id] = (tbBodyPair){a->bodyId, b->bodyId};
+	world->cache.contactBodies[id] = (tbBodyPair){a->bodyId, b->bodyId};
 	tbMixContactMaterials(world, contact);
 	contact->stamp = UINT32_MAX;
 	if (a->isSensor || b->isSensor)
@@ -172,7 +172,6 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	tbLinkEdge(world, id, 0);
 	tbLinkEdge(world, id, 1);
 	tbHashSet_Add(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB));
-	world->contactCount += 1;
 }
 
 /// A sensor reports a visitor when both shapes enable sensor events: the sensor's flag says it
@@ -198,12 +197,12 @@ static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 			tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
 			if (world->locked)
 			{
-				TB_ARRAY_PUSH(world->sensorEndEvents, world->sensorEndCount, world->sensorEndCapacity, e);
+				TB_ARRAY_PUSH(world->events.sensorEndEvents, world->events.sensorEndCount, world->events.sensorEndCapacity, e);
 			}
 			else
 			{
-				TB_ARRAY_PUSH(world->pendingSensorEndEvents, world->pendingSensorEndCount,
-							  world->pendingSensorEndCapacity, e);
+				TB_ARRAY_PUSH(world->events.pendingSensorEndEvents, world->events.pendingSensorEndCount,
+							  world->events.pendingSensorEndCapacity, e);
 			}
 		}
 	}
@@ -212,18 +211,18 @@ static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 		tbContactEndTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB)};
 		if (world->locked)
 		{
-			TB_ARRAY_PUSH(world->endEvents, world->endCount, world->endCapacity, e);
+			TB_ARRAY_PUSH(world->events.endEvents, world->events.endCount, world->events.endCapacity, e);
 		}
 		else
 		{
-			TB_ARRAY_PUSH(world->pendingEndEvents, world->pendingEndCount, world->pendingEndCapacity, e);
+			TB_ARRAY_PUSH(world->events.pendingEndEvents, world->events.pendingEndCount, world->events.pendingEndCapacity, e);
 		}
 	}
 }
 
 void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 {
-	world->contactEpoch += 1; // the collide stage's touching list may change (tbCollideStage)
+	tbStepCache_ContactsChanged(&world->cache);
 	tbContact* contact = world->contacts + contactId;
 	if (contact->flags & tb_contactReported)
 	{
@@ -241,9 +240,8 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 	contact->inUse = false;
 	contact->flags = 0;
 	contact->generation += 1;
-	world->contactBodies[contactId] = (tbBodyPair){TB_NULL_INDEX, TB_NULL_INDEX};
-	TB_ARRAY_PUSH(world->contactFree, world->contactFreeCount, world->contactFreeCapacity, contactId);
-	world->contactCount -= 1;
+	world->cache.contactBodies[contactId] = (tbBodyPair){TB_NULL_INDEX, TB_NULL_INDEX};
+	tbIdPool_Free(&world->contactPool, contactId);
 }
 
 /// Should a broad-phase pair become a contact? Same body, no dynamic body (unless one shape is a
@@ -778,14 +776,14 @@ static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 		if (tbSensorEventsEnabled(world, sensor, visitor))
 		{
 			tbSensorBeginTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
-			TB_ARRAY_PUSH(world->sensorBeginEvents, world->sensorBeginCount, world->sensorBeginCapacity, e);
+			TB_ARRAY_PUSH(world->events.sensorBeginEvents, world->events.sensorBeginCount, world->events.sensorBeginCapacity, e);
 		}
 	}
 	else if (contact->flags & tb_contactEnableEvents)
 	{
 		tbContactBeginTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB),
 									  tbMakeContactId(world, (int)(contact - world->contacts))};
-		TB_ARRAY_PUSH(world->beginEvents, world->beginCount, world->beginCapacity, e);
+		TB_ARRAY_PUSH(world->events.beginEvents, world->events.beginCount, world->events.beginCapacity, e);
 	}
 }
 
@@ -796,18 +794,18 @@ static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 /// awake part) and sorts the ids.
 static void tbGatherAwakeContacts(tbWorld* world)
 {
-	world->gatheredVersion = world->awakeSetVersion;
-	world->gatheredRemovals = world->awakeRemovals;
-	world->gatheredAwakeCount = world->awakeBodyCount;
-	world->stepContactCount = 0;
-	if (2 * world->awakeBodyCount >= world->bodyCount)
+	world->cache.gatheredVersion = world->cache.awakeSetVersion;
+	world->cache.gatheredRemovals = world->cache.awakeRemovals;
+	world->cache.gatheredAwakeCount = world->awakeBodyCount;
+	world->cache.stepContactCount = 0;
+	if (2 * world->awakeBodyCount >= world->bodyPool.count)
 	{
 		// A byte per body says awake: the scan then reads the contacts in memory order and this
 		// small array, instead of two scattered bodies per contact.
-		TB_ARRAY_RESERVE(world->stepContacts, world->stepContactCapacity, world->contactCount + 1); // + 1: the walk writes one past
+		TB_ARRAY_RESERVE(world->cache.stepContacts, world->cache.stepContactCapacity, world->contactPool.count + 1); // + 1: the walk writes one past
 		// A free contact slot has both bodies TB_NULL_INDEX (−1): awake[−1] is a 0 kept for it.
-		uint8_t* awake = (uint8_t*)tbArenaAlloc(&world->stepArena, world->bodyHighWater + 1) + 1;
-		memset(awake - 1, 0, (size_t)world->bodyHighWater + 1);
+		uint8_t* awake = (uint8_t*)tbArenaAlloc(&world->stepArena, world->bodyPool.highWater + 1) + 1;
+		memset(awake - 1, 0, (size_t)world->bodyPool.highWater + 1);
 		for (int i = 0; i < world->awakeBodyCount; ++i)
 		{
 			awake[world->awakeBodies[i]] = 1;
@@ -815,16 +813,16 @@ static void tbGatherAwakeContacts(tbWorld* world)
 		// Locals: through world-> each append reloaded and stored the count (the int stores may
 		// alias the world's fields), a store-to-load chain that made this walk a third of the
 		// collide stage's serial time on many_pyramids.
-		const tbBodyPair* bodies = world->contactBodies;
-		int* stepContacts = world->stepContacts;
+		const tbBodyPair* bodies = world->cache.contactBodies;
+		int* stepContacts = world->cache.stepContacts;
 		int count = 0;
-		int highWater = world->contactHighWater;
+		int highWater = world->contactPool.highWater;
 		for (int id = 0; id < highWater; ++id)
 		{
 			stepContacts[count] = id;
 			count += (awake[bodies[id].bodyIdA] | awake[bodies[id].bodyIdB]) != 0 ? 1 : 0;
 		}
-		world->stepContactCount = count;
+		world->cache.stepContactCount = count;
 		return;
 	}
 	uint32_t stamp = 2u * world->stepIndex;
@@ -837,14 +835,14 @@ static void tbGatherAwakeContacts(tbWorld* world)
 			if (contact->stamp != stamp)
 			{
 				contact->stamp = stamp;
-				TB_ARRAY_PUSH(world->stepContacts, world->stepContactCount, world->stepContactCapacity, key >> 1);
+				TB_ARRAY_PUSH(world->cache.stepContacts, world->cache.stepContactCount, world->cache.stepContactCapacity, key >> 1);
 			}
 			key = contact->edges[key & 1].nextKey;
 		}
 	}
 	// islandStack is free scratch here: the island stage uses it later in the step.
-	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, world->stepContactCount);
-	tbSortIndices(world->stepContacts, world->stepContactCount, world->islandStack);
+	TB_ARRAY_RESERVE(world->cache.islandStack, world->cache.islandStackCapacity, world->cache.stepContactCount);
+	tbSortIndices(world->cache.stepContacts, world->cache.stepContactCount, world->cache.islandStack);
 }
 
 /// A contact the island stage can hand to the solver without looking at it again: one side is
@@ -874,14 +872,15 @@ static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* co
 					 (dynamicA ? (uint32_t)tb_keyDynamicA : 0u) | (dynamicB ? (uint32_t)tb_keyDynamicB : 0u);
 	flags |= contact->rollingResistance > 0.0f || contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
 	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
-	tbCollideKey* key = world->collideKeys + contactId;
+	tbCollideKey* written = world->cache.collideKeys + contactId;
+	tbContactKey* key = &written->key;
 	// The same key as written in the last step (a steady step can keep the solver's keys).
-	bool same = key->step == world->stepIndex - 1u && key->indexA == a->awakeIndex && key->indexB == b->awakeIndex &&
-				key->flags == flags;
+	bool same = written->step == world->stepIndex - 1u && key->indexA == a->awakeIndex &&
+				key->indexB == b->awakeIndex && key->flags == flags;
 	key->indexA = a->awakeIndex; // TB_NULL_INDEX for a static body; no side sleeps (ready)
 	key->indexB = b->awakeIndex;
 	key->flags = flags;
-	key->step = world->stepIndex;
+	written->step = world->stepIndex;
 	return same;
 }
 
@@ -892,7 +891,7 @@ static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* co
 /// contact is in cache by then), and the proxies of the one half as far ahead (its shapes are).
 static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, int endIndex)
 {
-	const int* ids = world->stepContacts;
+	const int* ids = world->cache.stepContacts;
 	if (i + 2 * TB_PREFETCH_AHEAD < endIndex)
 	{
 		tbPrefetch(world->contacts + ids[i + 2 * TB_PREFETCH_AHEAD], (int)sizeof(tbContact));
@@ -921,7 +920,7 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 	}
 }
 
-/// Collide task: the narrow phase of stepContacts[start..end), results into world->collideResults
+/// Collide task: the narrow phase of stepContacts[start..end), results into world->cache.collideResults
 /// and sums into the worker's tally.
 static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
 {
@@ -931,7 +930,7 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 	tbCollideTally sum = {0};
 	for (int i = startIndex; i < endIndex; ++i)
 	{
-		tbContact* contact = world->contacts + world->stepContacts[i];
+		tbContact* contact = world->contacts + world->cache.stepContacts[i];
 		tbPrefetchCollideAhead(world, i, endIndex);
 		const tbShape* a = world->shapes + contact->shapeIdA;
 		const tbShape* b = world->shapes + contact->shapeIdB;
@@ -947,10 +946,10 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 			if (solver && tbIsReadySolverContact(world, contact))
 			{
 				result |= tb_collideReady;
-				result |= tbWriteCollideKey(world, world->stepContacts[i], contact) ? 0u : (uint32_t)tb_collideNewKey;
+				result |= tbWriteCollideKey(world, world->cache.stepContacts[i], contact) ? 0u : (uint32_t)tb_collideNewKey;
 			}
 		}
-		world->collideResults[i] = (uint16_t)result;
+		world->cache.collideResults[i] = (uint16_t)result;
 		sum.reported += (result & tb_collideReported) != 0 ? 1 : 0;
 		sum.recycled += (result & tb_collideRecycled) != 0 ? 1 : 0;
 		sum.gjk += (result & tb_collideGJK) != 0 ? 1 : 0;
@@ -959,7 +958,7 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 		sum.notReady += (result & (tb_collideSolver | tb_collideReady)) == tb_collideSolver ? 1 : 0;
 		sum.newKeys += (result & tb_collideNewKey) != 0 ? 1 : 0;
 	}
-	tbAddTally(world->collideTallies + workerIndex, &sum);
+	tbAddTally(world->cache.collideTallies + workerIndex, &sum);
 }
 
 /// The broad phase's deferred tree refresh (tbUpdatePairsStage), beside the narrow phase: it
@@ -970,18 +969,18 @@ static void tbFinishTreeRefresh(void* broadPhase)
 }
 
 /// The collide results in contact order, on the caller: contacts whose fat boxes parted are
-/// destroyed, touching ones listed (world->touchingContacts), bodies woken, events appended.
+/// destroyed, touching ones listed (world->cache.touchingContacts), bodies woken, events appended.
 static void tbWalkCollideResults(tbWorld* world)
 {
 	int kept = 0;
 	// Every kept contact may touch: room for all of them, so the walk appends without checks.
-	TB_ARRAY_RESERVE(world->touchingContacts, world->touchingContactCapacity, world->stepContactCount);
-	int* touching = world->touchingContacts;
+	TB_ARRAY_RESERVE(world->cache.touchingContacts, world->cache.touchingContactCapacity, world->cache.stepContactCount);
+	int* touching = world->cache.touchingContacts;
 	int touchingCount = 0;
 	bool allReady = true;
-	int* stepContacts = world->stepContacts; // locals: the stores below may alias the world's fields
-	const uint16_t* results = world->collideResults;
-	int stepContactCount = world->stepContactCount;
+	int* stepContacts = world->cache.stepContacts; // locals: the stores below may alias the world's fields
+	const uint16_t* results = world->cache.collideResults;
+	int stepContactCount = world->cache.stepContactCount;
 	for (int i = 0; i < stepContactCount; ++i)
 	{
 		int contactId = stepContacts[i];
@@ -1020,10 +1019,10 @@ static void tbWalkCollideResults(tbWorld* world)
 			tbPushEndEvent(world, contact);
 		}
 	}
-	world->stepContactCount = kept;
-	world->touchingContactCount = touchingCount;
-	world->touchingAllReady = allReady;
-	world->touchingEpoch = world->contactEpoch; // after this walk's destroys
+	world->cache.stepContactCount = kept;
+	world->cache.touchingContactCount = touchingCount;
+	world->cache.touchingAllReady = allReady;
+	world->cache.touchingEpoch = world->cache.contactEpoch; // after this walk's destroys
 }
 
 /// The narrow phase over every awake contact, on the workers; then, on the caller and in contact
@@ -1036,50 +1035,50 @@ void tbCollideStage(tbWorld* world)
 	// awake set nor the set of contacts has changed since (touchingEpoch: the contact set after the
 	// last walk). The last touching list still holds too if every contact on it was ready and no
 	// contact changes below (tbCollideTally).
-	bool sameList = world->gatheredVersion == world->awakeSetVersion && world->gatheredRemovals == world->awakeRemovals &&
-					world->touchingEpoch == world->contactEpoch;
-	bool sameContacts = sameList && world->touchingAllReady;
+	bool sameList = world->cache.gatheredVersion == world->cache.awakeSetVersion && world->cache.gatheredRemovals == world->cache.awakeRemovals &&
+					world->cache.touchingEpoch == world->cache.contactEpoch;
+	bool sameContacts = sameList && world->cache.touchingAllReady;
 	if (sameList == false)
 	{
 		tbGatherAwakeContacts(world);
 	}
-	TB_ARRAY_RESERVE(world->collideResults, world->collideResultCapacity, world->stepContactCount);
+	TB_ARRAY_RESERVE(world->cache.collideResults, world->cache.collideResultCapacity, world->cache.stepContactCount);
 	// Keys for every contact slot in use; new entries start stale, two steps back, so that neither
 	// the key pass (this step) nor tbWriteCollideKey's comparison (the last step) takes an unwritten
 	// key for a written one.
-	TB_ARRAY_RESERVE(world->collideKeys, world->collideKeyCapacity, world->contactHighWater);
-	for (; world->collideKeyCount < world->contactHighWater; ++world->collideKeyCount)
+	TB_ARRAY_RESERVE(world->cache.collideKeys, world->cache.collideKeyCapacity, world->contactPool.highWater);
+	for (; world->cache.collideKeyCount < world->contactPool.highWater; ++world->cache.collideKeyCount)
 	{
-		world->collideKeys[world->collideKeyCount].step = world->stepIndex - 2u;
+		world->cache.collideKeys[world->cache.collideKeyCount].step = world->stepIndex - 2u;
 	}
 	int slots = tbWorkerSlotCount(&world->def); // task.h: the spare slots too
 	char* tallyBytes = tbArenaAlloc(&world->stepArena, (slots + 1) * (int)sizeof(tbCollideTally));
-	world->collideTallies = (tbCollideTally*)(((uintptr_t)tallyBytes + 63) & ~(uintptr_t)63);
-	memset(world->collideTallies, 0, (size_t)slots * sizeof(tbCollideTally));
+	world->cache.collideTallies = (tbCollideTally*)(((uintptr_t)tallyBytes + 63) & ~(uintptr_t)63);
+	memset(world->cache.collideTallies, 0, (size_t)slots * sizeof(tbCollideTally));
 	if (tbBroadPhase_RefreshPending(&world->broadPhase))
 	{
-		tbParallelForAlongside(&world->def, tbCollideTask, world->stepContactCount, 64, world, tbFinishTreeRefresh,
+		tbParallelForAlongside(&world->def, tbCollideTask, world->cache.stepContactCount, 64, world, tbFinishTreeRefresh,
 							   &world->broadPhase);
 	}
 	else
 	{
-		tbParallelFor(&world->def, tbCollideTask, world->stepContactCount, 64, world);
+		tbParallelFor(&world->def, tbCollideTask, world->cache.stepContactCount, 64, world);
 	}
 	tbCollideTally total = {0};
 	for (int w = 0; w < slots; ++w)
 	{
-		tbAddTally(&total, world->collideTallies + w);
+		tbAddTally(&total, world->cache.collideTallies + w);
 	}
-	world->collideTallies = NULL; // arena memory: gone with the step
+	world->cache.collideTallies = NULL; // arena memory: gone with the step
 	world->counters.recycledManifolds += total.recycled;
 	world->counters.gjkManifolds += total.gjk;
 	world->counters.satManifolds += total.sat;
 	world->counters.touchingCount = total.reported;
 	// A steady step (a settled pile): nothing was destroyed, began or ended touching or made an
 	// event, and every solver contact is ready, so the walk would write the last list again.
-	world->touchingUnchanged = sameContacts && total.changed == 0 && total.notReady == 0;
-	world->collideKeysUnchanged = world->touchingUnchanged && total.newKeys == 0;
-	if (world->touchingUnchanged == false)
+	world->cache.touchingUnchanged = sameContacts && total.changed == 0 && total.notReady == 0;
+	world->cache.collideKeysUnchanged = world->cache.touchingUnchanged && total.newKeys == 0;
+	if (world->cache.touchingUnchanged == false)
 	{
 		tbWalkCollideResults(world);
 	}
@@ -1099,9 +1098,9 @@ void tbReportHitEvents(tbWorld* world)
 	}
 	float threshold = world->def.hitEventThreshold;
 	// Contact-id order: the walk streams through contact memory (the solve order would not).
-	for (int i = 0; i < world->solverContactCount; ++i)
+	for (int i = 0; i < world->cache.solverContactCount; ++i)
 	{
-		tbContact* contact = world->contacts + world->solverContactsById[i];
+		tbContact* contact = world->contacts + world->cache.solverContactsById[i];
 		if ((contact->flags & tb_contactEnableHits) == 0)
 		{
 			continue;
@@ -1125,7 +1124,7 @@ void tbReportHitEvents(tbWorld* world)
 			event.normal = contact->manifold.normal;
 			event.approachSpeed = contact->hitSpeed;
 			contact->hitSpeed = 0.0f;
-			TB_ARRAY_PUSH(world->hitEvents, world->hitCount, world->hitCapacity, event);
+			TB_ARRAY_PUSH(world->events.hitEvents, world->events.hitCount, world->events.hitCapacity, event);
 		}
 	}
 }
@@ -1280,7 +1279,7 @@ static tbWorld* tbGetContactWorld(tbContactId id, int* contactOut)
 	}
 	tbWorld* world = tbGetWorldFromIndex(id.world0);
 	int index = id.index1 - 1;
-	if (world == NULL || index >= world->contactHighWater || world->contacts[index].inUse == false ||
+	if (world == NULL || index >= world->contactPool.highWater || world->contacts[index].inUse == false ||
 		world->contacts[index].generation != id.generation)
 	{
 		return NULL;

@@ -12,8 +12,11 @@
 // Methods: tb_continuousDefault uses the closed-form quadratic for circle pairs whose motion is
 // linear and conservative advancement otherwise; tb_continuousConservative uses conservative
 // advancement for every pair; tb_continuousOff skips the stage.
-#include "core/task.h"
+#include "continuous.h"
+
 #include "world.h"
+
+#include "core/task.h"
 
 #include <string.h>
 
@@ -409,8 +412,8 @@ void tbContinuousStage(tbWorld* world)
 	// The solve's scatter marks the bodies it moves (tbMarkFastBody, while each body is in cache, as
 	// Box2D v3 does in its finalize): a step in which none is fast walks nothing here (large_pyramid:
 	// 0.03 ms a step, the walk over every awake body). A step without a solve (time step 0) marks here.
-	bool marked = world->fastMarkedStep == world->stepIndex;
-	if (marked && world->fastMarkedCount == 0)
+	bool marked = world->cache.fastMarkedStep == world->stepIndex;
+	if (marked && world->cache.fastMarkedCount == 0)
 	{
 		return;
 	}

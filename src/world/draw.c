@@ -2,6 +2,8 @@
 // The headless PNG renderer in samples/ is one implementation of those callbacks.
 #include "world.h"
 
+#include "joints/joint.h"
+
 // Graph colours for debug views: a walk round the hue circle in 24 steps (neighbouring colours
 // differ, so contacts of adjacent colours stand apart), and grey for the overflow.
 static const tbHexColor s_graphColors[TB_GRAPH_COLOR_COUNT + 1] = {
@@ -112,7 +114,7 @@ static void tbDrawTreeNode(tbAABB aabb, int depth, bool isLeaf, void* context)
 
 static void tbDrawContacts(tbWorld* world, const tbDebugDraw* draw)
 {
-	for (int i = 0; i < world->contactHighWater; ++i)
+	for (int i = 0; i < world->contactPool.highWater; ++i)
 	{
 		const tbContact* contact = world->contacts + i;
 		if (contact->inUse == false || (contact->flags & tb_contactTouching) == 0)
@@ -141,7 +143,7 @@ void tbWorld_Draw(tbWorldId worldId, const tbDebugDraw* draw)
 	{
 		return;
 	}
-	for (int i = 0; i < world->shapeHighWater; ++i)
+	for (int i = 0; i < world->shapePool.highWater; ++i)
 	{
 		const tbShape* shape = world->shapes + i;
 		if (shape->inUse == false)

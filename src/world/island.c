@@ -12,12 +12,14 @@
 // even that, but need island splitting). Junkyard, where rested and moving bodies mix in one pile:
 // 0.20 ms a step, against 0.67 ms for the depth-first search from each rested body it replaced
 // (7,000 contact-list links a step, a cache miss each) and 0.18 ms for Box2D v3.
+#include "island.h"
+
 #include "world.h"
 
 #include "core/arena.h"
 #include "core/array.h"
-#include "joints/joint.h"
 #include "core/sort.h"
+#include "joints/joint.h"
 
 #include <stdint.h>
 #include <string.h>
@@ -54,12 +56,12 @@ static inline int tbSolveOrderBucket(int contactId)
 
 static void tbOrderSolverContacts(tbWorld* world)
 {
-	int n = world->solverContactCount;
-	TB_ARRAY_RESERVE(world->solverContactsById, world->solverContactsByIdCapacity, n);
-	TB_ARRAY_RESERVE(world->solverSlots, world->solverSlotCapacity, n);
-	int* ids = world->solverContacts;
-	int* byId = world->solverContactsById;
-	int* slots = world->solverSlots;
+	int n = world->cache.solverContactCount;
+	TB_ARRAY_RESERVE(world->cache.solverContactsById, world->cache.solverContactsByIdCapacity, n);
+	TB_ARRAY_RESERVE(world->cache.solverSlots, world->cache.solverSlotCapacity, n);
+	int* ids = world->cache.solverContacts;
+	int* byId = world->cache.solverContactsById;
+	int* slots = world->cache.solverSlots;
 	int offsets[TB_SOLVE_ORDER_BUCKETS] = {0};
 	for (int i = 0; i < n; ++i)
 	{
@@ -128,7 +130,7 @@ static void tbWalkBodyContacts(tbWorld* world, const tbBody* body, uint32_t stam
 		if (otherAsleep == false)
 		{
 			contact->stamp = stamp;
-			TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, key >> 1);
+			TB_ARRAY_PUSH(world->cache.solverContacts, world->cache.solverContactCount, world->cache.solverContactCapacity, key >> 1);
 		}
 		key = next;
 	}
@@ -143,22 +145,22 @@ static void tbWalkBodyContacts(tbWorld* world, const tbBody* body, uint32_t stam
 /// Returns false (nothing gathered) when a body left the awake set since.
 static bool tbGatherRecordedContacts(tbWorld* world, uint32_t stamp)
 {
-	if (world->gatheredRemovals != world->awakeRemovals)
+	if (world->cache.gatheredRemovals != world->cache.awakeRemovals)
 	{
 		return false;
 	}
-	bool unchanged = world->gatheredVersion == world->awakeSetVersion;
-	world->solverContactCount = 0;
-	TB_ARRAY_RESERVE(world->solverContacts, world->solverContactCapacity, world->touchingContactCount);
-	for (int i = 0; i < world->touchingContactCount; ++i)
+	bool unchanged = world->cache.gatheredVersion == world->cache.awakeSetVersion;
+	world->cache.solverContactCount = 0;
+	TB_ARRAY_RESERVE(world->cache.solverContacts, world->cache.solverContactCapacity, world->cache.touchingContactCount);
+	for (int i = 0; i < world->cache.touchingContactCount; ++i)
 	{
-		int entry = world->touchingContacts[i];
+		int entry = world->cache.touchingContacts[i];
 		if (entry >= 0)
 		{
 			// Ready (contact.c): a dynamic side and both awake, so nothing to wake and no need to
 			// stamp it: only bodies woken after the collide stage are walked below, and a contact of
 			// such a body was not ready.
-			TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, entry);
+			TB_ARRAY_PUSH(world->cache.solverContacts, world->cache.solverContactCount, world->cache.solverContactCapacity, entry);
 			continue;
 		}
 		int contactId = -1 - entry;
@@ -180,18 +182,18 @@ static bool tbGatherRecordedContacts(tbWorld* world, uint32_t stamp)
 			tbWakeBody(world, asleepA ? world->bodies + contact->edges[0].bodyId : b);
 		}
 		contact->stamp = stamp;
-		TB_ARRAY_PUSH(world->solverContacts, world->solverContactCount, world->solverContactCapacity, contactId);
+		TB_ARRAY_PUSH(world->cache.solverContacts, world->cache.solverContactCount, world->cache.solverContactCapacity, contactId);
 	}
-	if (unchanged && world->gatheredVersion == world->awakeSetVersion)
+	if (unchanged && world->cache.gatheredVersion == world->cache.awakeSetVersion)
 	{
 		return true; // nobody woke: the recorded contacts, already in contact-id order
 	}
-	for (int i = world->gatheredAwakeCount; i < world->awakeBodyCount; ++i)
+	for (int i = world->cache.gatheredAwakeCount; i < world->awakeBodyCount; ++i)
 	{
 		tbWalkBodyContacts(world, world->bodies + world->awakeBodies[i], stamp);
 	}
-	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, world->solverContactCount);
-	tbSortIndices(world->solverContacts, world->solverContactCount, world->islandStack);
+	TB_ARRAY_RESERVE(world->cache.islandStack, world->cache.islandStackCapacity, world->cache.solverContactCount);
+	tbSortIndices(world->cache.solverContacts, world->cache.solverContactCount, world->cache.islandStack);
 	return true;
 }
 
@@ -199,25 +201,25 @@ static bool tbGatherRecordedContacts(tbWorld* world, uint32_t stamp)
 /// ready (a dynamic side, both sides awake), and no body joined or left the awake set since. The
 /// solve order and the id order depend on the contact ids alone, so the last step's arrays hold
 /// as they are (a settled pile: large_pyramid, every step after the first few).
-/// When the collide stage kept the last touching list (world->touchingUnchanged) and the last step
+/// When the collide stage kept the last touching list (world->cache.touchingUnchanged) and the last step
 /// found it equal to the solver contacts, it still is, without the comparison.
 static bool tbSameSolverContacts(const tbWorld* world)
 {
-	int n = world->touchingContactCount;
-	bool sameAwake = world->gatheredRemovals == world->awakeRemovals && world->gatheredVersion == world->awakeSetVersion;
-	if (sameAwake && world->touchingUnchanged && world->solverIsTouching)
+	int n = world->cache.touchingContactCount;
+	bool sameAwake = world->cache.gatheredRemovals == world->cache.awakeRemovals && world->cache.gatheredVersion == world->cache.awakeSetVersion;
+	if (sameAwake && world->cache.touchingUnchanged && world->cache.solverContactsUnchanged)
 	{
 		return true;
 	}
-	return sameAwake && n == world->solverContactCount &&
-		   (n == 0 || memcmp(world->touchingContacts, world->solverContactsById, sizeof(int) * (size_t)n) == 0);
+	return sameAwake && n == world->cache.solverContactCount &&
+		   (n == 0 || memcmp(world->cache.touchingContacts, world->cache.solverContactsById, sizeof(int) * (size_t)n) == 0);
 }
 
 void tbIslandStage(tbWorld* world)
 {
 	tbWakeJointPartners(world); // joint.c: before anything is gathered
-	world->solverIsTouching = tbSameSolverContacts(world);
-	if (world->solverIsTouching)
+	world->cache.solverContactsUnchanged = tbSameSolverContacts(world);
+	if (world->cache.solverContactsUnchanged)
 	{
 		return;
 	}
@@ -237,21 +239,21 @@ void tbIslandStage(tbWorld* world)
 	// bodies or a resting kinematic one) has nothing to solve (both sides would be treated as
 	// immovable) and is left out, so the solver never sees a sleeping non-static body. One walk
 	// does both (the walk is bound by cache misses on the contact lists).
-	world->solverContactCount = 0;
+	world->cache.solverContactCount = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		tbWalkBodyContacts(world, world->bodies + world->awakeBodies[i], stamp);
 	}
 	// Contact-id order, as the fast path (and the collide stage) gives: the solver order must not
 	// depend on whether a body was woken this step.
-	TB_ARRAY_RESERVE(world->islandStack, world->islandStackCapacity, world->solverContactCount);
-	tbSortIndices(world->solverContacts, world->solverContactCount, world->islandStack);
+	TB_ARRAY_RESERVE(world->cache.islandStack, world->cache.islandStackCapacity, world->cache.solverContactCount);
+	tbSortIndices(world->cache.solverContacts, world->cache.solverContactCount, world->cache.islandStack);
 	tbOrderSolverContacts(world);
 }
 
 // The sleep stage's islands, found by union–find (Tarjan 1975, path halving) over the awake
 // indices instead of a depth-first search from each rested body. The links are the ones a search
-// would follow: this step's solver contacts whose both bodies are dynamic (world->solverContacts,
+// would follow: this step's solver contacts whose both bodies are dynamic (world->cache.solverContacts,
 // gathered by the island stage from the same touching flags, and read through the narrow phase's
 // dense keys where they hold) and the joints between awake dynamic bodies. Static bodies link
 // nothing; a kinematic body links nothing either (it does not carry motion from one island to
@@ -338,13 +340,14 @@ static void tbAddBodyLink(tbSleepLinks* links, const tbBody* a, const tbBody* b)
 // its bodies; then the joints (a pool in id order, few).
 static void tbGatherSleepLinks(tbWorld* world, tbSleepLinks* links)
 {
-	bool useCollideKeys = world->gatheredRemovals == world->awakeRemovals;
-	for (int i = 0; i < world->solverContactCount; ++i)
+	bool useCollideKeys = world->cache.gatheredRemovals == world->cache.awakeRemovals;
+	for (int i = 0; i < world->cache.solverContactCount; ++i)
 	{
-		int contactId = world->solverContactsById[i];
-		const tbCollideKey* key = world->collideKeys + contactId;
-		if (useCollideKeys && contactId < world->collideKeyCount && key->step == world->stepIndex)
+		int contactId = world->cache.solverContactsById[i];
+		const tbCollideKey* written = world->cache.collideKeys + contactId;
+		if (useCollideKeys && contactId < world->cache.collideKeyCount && written->step == world->stepIndex)
 		{
+			const tbContactKey* key = &written->key;
 			tbAddSleepLink(links, key->indexA, (key->flags & tb_keyDynamicA) != 0u, key->indexB,
 						   (key->flags & tb_keyDynamicB) != 0u);
 			continue;
@@ -352,7 +355,7 @@ static void tbGatherSleepLinks(tbWorld* world, tbSleepLinks* links)
 		const tbContact* contact = world->contacts + contactId;
 		tbAddBodyLink(links, world->bodies + contact->edges[0].bodyId, world->bodies + contact->edges[1].bodyId);
 	}
-	for (int id = 0; id < world->jointHighWater && world->jointCount > 0; ++id)
+	for (int id = 0; id < world->jointPool.highWater && world->jointPool.count > 0; ++id)
 	{
 		const tbJoint* joint = world->joints + id;
 		if (joint->inUse && joint->type != tb_filterJoint)
@@ -379,16 +382,14 @@ static void tbRemoveMarkedFromAwakeSet(tbWorld* world)
 		world->awakeBodies[kept++] = bodyId;
 	}
 	world->awakeBodyCount = kept;
-	world->awakeSetVersion += 1;
-	world->awakeRemovals += 1;
-	world->jointWakeDirty = true;
+	tbStepCache_AwakeSetChanged(&world->cache, true);
 }
 
 static void tbPutBodyToSleep(tbWorld* world, tbBody* body)
 {
-	if (body->awakeIndex < world->moveCount)
+	if (body->awakeIndex < world->events.moveCount)
 	{
-		world->moveEvents[body->awakeIndex].fellAsleep = true;
+		world->events.moveEvents[body->awakeIndex].fellAsleep = true;
 	}
 	body->isMarked = true;
 	body->linearVelocity = tb_vec2_zero;
@@ -478,7 +479,7 @@ void tbSleepStage(tbWorld* world, float timeStep)
 	tbSleepLinks links;
 	links.parent = tbArenaAlloc(&world->stepArena, (int)sizeof(int) * n);
 	links.touches = tbArenaAlloc(&world->stepArena, (int)sizeof(tbKinematicTouch) *
-															tbMaxInt(world->solverContactCount + world->jointCount, 1));
+															tbMaxInt(world->cache.solverContactCount + world->jointPool.count, 1));
 	links.touchCount = 0;
 	uint8_t* state = tbArenaAlloc(&world->stepArena, 2 * n);
 	memset(state, 0, 2 * (size_t)n);

@@ -51,7 +51,7 @@ tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** worldOu
 	}
 	tbWorld* world = id.world0 < TB_MAX_WORLDS ? tbGetWorldFromIndex(id.world0) : NULL;
 	int index = id.index1 - 1;
-	if (world == NULL || index >= world->shapeHighWater || world->shapes[index].inUse == false ||
+	if (world == NULL || index >= world->shapePool.highWater || world->shapes[index].inUse == false ||
 		world->shapes[index].generation != id.generation)
 	{
 		tbReportError(function, "shapeId refers to a destroyed shape, body or world; do not use a shape id after it "
@@ -78,7 +78,7 @@ bool tbShape_IsValid(tbShapeId id)
 	}
 	tbWorld* world = tbGetWorldFromIndex(id.world0);
 	int index = id.index1 - 1;
-	return world != NULL && index < world->shapeHighWater && world->shapes[index].inUse &&
+	return world != NULL && index < world->shapePool.highWater && world->shapes[index].inUse &&
 		   world->shapes[index].generation == id.generation;
 }
 
@@ -466,14 +466,14 @@ static bool tbCheckShapeMass(const char* f, const tbGeometry* geometry, float de
 
 static int tbAllocShapeSlot(tbWorld* world)
 {
-	if (world->shapeFreeCount > 0)
+	bool isNew;
+	int id = tbIdPool_Alloc(&world->shapePool, &isNew);
+	if (isNew)
 	{
-		return world->shapeFree[--world->shapeFreeCount];
+		TB_ARRAY_RESERVE(world->shapes, world->shapeCapacity, id + 1);
+		memset(world->shapes + id, 0, sizeof(tbShape));
+		world->shapes[id].generation = world->shapeGenerationBase; // the creation adds one
 	}
-	TB_ARRAY_RESERVE(world->shapes, world->shapeCapacity, world->shapeHighWater + 1);
-	int id = world->shapeHighWater++;
-	memset(world->shapes + id, 0, sizeof(tbShape));
-	world->shapes[id].generation = world->shapeGenerationBase; // the creation adds one
 	return id;
 }
 
@@ -515,7 +515,6 @@ int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeo
 	shape->proxyKey = TB_NULL_INDEX;
 	body->headShapeId = id;
 	body->shapeCount += 1;
-	world->shapeCount += 1;
 	tbCreateShapeProxy(world, shape, body);
 	if (def->updateBodyMass)
 	{
@@ -650,8 +649,7 @@ void tbRemoveShape(tbWorld* world, int id, bool updateBodyMass)
 	tbUnlinkShape(world, body, id);
 	shape->inUse = false;
 	shape->generation += 1;
-	world->shapeCount -= 1;
-	TB_ARRAY_PUSH(world->shapeFree, world->shapeFreeCount, world->shapeFreeCapacity, id);
+	tbIdPool_Free(&world->shapePool, id);
 	if (updateBodyMass)
 	{
 		tbUpdateBodyMass(world, body);

@@ -1,4 +1,6 @@
-// Internal: a shape as the world keeps it (shape.c), and its bounding boxes.
+// Internal: a shape as the world keeps it, its bounding boxes, and what the other parts of the
+// world ask of shapes (shape.c). Includes only public headers: Box2D v3's renamed collision test
+// includes it by this name (scripts/port-tests.sh).
 #pragma once
 
 #include "tumble/collision.h"
@@ -6,6 +8,9 @@
 #include "tumble/types.h"
 
 #include <stddef.h>
+
+typedef struct tbWorld tbWorld;
+typedef struct tbBody tbBody;
 
 typedef struct tbShape
 {
@@ -64,3 +69,37 @@ tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbWorldTransform transfo
 
 /// The shape's world box enlarged by `extra` (m) on every side: the broad-phase (fat) box.
 tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, float extra);
+
+/// The shape for a shape id and its world, or NULL after reporting an error naming `function`;
+/// also refuses a locked world when `mutating`.
+tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** world, bool mutating);
+tbShapeId tbMakeShapeId(const tbWorld* world, int shapeId);
+
+void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body);
+void tbDestroyShapeProxy(tbWorld* world, tbShape* shape);
+bool tbShouldShapesCollide(tbFilter a, tbFilter b);
+/// Check user geometry (finite, positive radii, valid polygon); reports an error naming `f`.
+bool tbCheckGeometry(const char* f, const tbGeometry* geometry);
+/// A surface material's values are usable (finite; friction, restitution, rolling resistance ≥ 0),
+/// or an error naming `name`'s field.
+bool tbCheckSurfaceMaterial(const char* function, const char* name, const tbSurfaceMaterial* material);
+/// The shape's contacts remix their materials (after the shape's material changed).
+void tbRemixShapeContacts(tbWorld* world, const tbShape* shape);
+
+/// Which event flag of a shape tbSetShapeEventFlag changes.
+typedef enum tbShapeEventKind
+{
+	tb_shapeEventContacts,
+	tb_shapeEventHits,
+	tb_shapeEventSensors,
+	tb_shapeEventPreSolve,
+} tbShapeEventKind;
+
+/// Turn one of a shape's event flags on or off and refresh the flags its contacts hold.
+void tbSetShapeEventFlag(tbWorld* world, tbShape* shape, tbShapeEventKind kind, bool flag);
+
+// Shapes added and removed without the public checks (chains check their own input).
+/// Add a shape to a body (geometry and def already checked); returns its index.
+int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeometry* geometry);
+/// Remove a shape: its contacts, proxy and slot.
+void tbRemoveShape(tbWorld* world, int shapeIndex, bool updateBodyMass);

@@ -5,7 +5,14 @@
 // state besides the hooks in core.c; it exists because value handles must be resolved without
 // pointers. Body and shape ids carry the world slot too.
 #include "world.h"
+
+#include "chain.h"
+#include "continuous.h"
+#include "island.h"
+
+#include "joints/joint.h"
 #include "solver/constraint_graph.h"
+#include "solver/solver.h"
 
 #include "core/array.h"
 
@@ -276,9 +283,9 @@ static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 		statics += bp->table.proxies[key].isFree == false && bp->table.proxies[key].type == tb_proxyStatic ? 1 : 0;
 	}
 	int movable = bp->table.count - statics;
-	float window = (float)world->autoWindowSteps;
-	float movedFraction = movable > 0 ? (float)world->autoMovedProxies / (window * (float)movable) : 0.0f;
-	float fastFraction = movable > 0 ? (float)world->autoFastBodies / (window * (float)movable) : 0.0f;
+	float window = (float)world->broadPhaseVote.windowSteps;
+	float movedFraction = movable > 0 ? (float)world->broadPhaseVote.movedProxies / (window * (float)movable) : 0.0f;
+	float fastFraction = movable > 0 ? (float)world->broadPhaseVote.fastBodies / (window * (float)movable) : 0.0f;
 	if (movedFraction > 0.25f && tbMovableSizeSpread(bp, movable) <= TB_AUTO_HASH_SPREAD)
 	{
 		return tb_broadPhaseSpatialHash;
@@ -294,24 +301,24 @@ static void tbUpdateAutoBroadPhase(tbWorld* world)
 	{
 		return;
 	}
-	world->autoWindowSteps += 1;
-	world->autoMovedProxies += world->counters.proxyMoves;
-	world->autoFastBodies += world->counters.fastBodies;
+	world->broadPhaseVote.windowSteps += 1;
+	world->broadPhaseVote.movedProxies += world->counters.proxyMoves;
+	world->broadPhaseVote.fastBodies += world->counters.fastBodies;
 	int window = world->stepIndex < TB_AUTO_WINDOW ? TB_AUTO_FIRST_WINDOW : TB_AUTO_WINDOW;
-	if (world->autoWindowSteps < window)
+	if (world->broadPhaseVote.windowSteps < window)
 	{
 		return;
 	}
 	tbBroadPhaseMethod vote = tbVoteBroadPhase(world);
-	world->autoVotes = vote != world->broadPhase.method ? world->autoVotes + 1 : 0;
-	if (world->autoVotes >= 2)
+	world->broadPhaseVote.votes = vote != world->broadPhase.method ? world->broadPhaseVote.votes + 1 : 0;
+	if (world->broadPhaseVote.votes >= 2)
 	{
 		tbBroadPhase_SetMethod(&world->broadPhase, vote);
-		world->autoVotes = 0;
+		world->broadPhaseVote.votes = 0;
 	}
-	world->autoWindowSteps = 0;
-	world->autoMovedProxies = 0;
-	world->autoFastBodies = 0;
+	world->broadPhaseVote.windowSteps = 0;
+	world->broadPhaseVote.movedProxies = 0;
+	world->broadPhaseVote.fastBodies = 0;
 }
 
 bool tbSetLengthUnitsPerMeter(float lengthUnits)
@@ -396,31 +403,31 @@ static void tbFreeWorldArrays(tbWorld* w)
 {
 	tbArenaDestroy(&w->stepArena);
 	TB_ARRAY_FREE(w->bodies, w->bodyCapacity);
-	TB_ARRAY_FREE(w->bodyFree, w->bodyFreeCapacity);
+	tbIdPool_Destroy(&w->bodyPool);
 	TB_ARRAY_FREE(w->shapes, w->shapeCapacity);
-	TB_ARRAY_FREE(w->shapeFree, w->shapeFreeCapacity);
+	tbIdPool_Destroy(&w->shapePool);
 	TB_ARRAY_FREE(w->contacts, w->contactCapacity);
-	TB_ARRAY_FREE(w->contactFree, w->contactFreeCapacity);
+	tbIdPool_Destroy(&w->contactPool);
 	TB_ARRAY_FREE(w->awakeBodies, w->awakeBodyCapacity);
-	TB_ARRAY_FREE(w->stepContacts, w->stepContactCapacity);
-	TB_ARRAY_FREE(w->collideResults, w->collideResultCapacity);
-	TB_ARRAY_FREE(w->solverContacts, w->solverContactCapacity);
-	TB_ARRAY_FREE(w->solverContactsById, w->solverContactsByIdCapacity);
-	TB_ARRAY_FREE(w->solverSlots, w->solverSlotCapacity);
-	TB_ARRAY_FREE(w->touchingContacts, w->touchingContactCapacity);
-	TB_ARRAY_FREE(w->collideKeys, w->collideKeyCapacity);
-	TB_ARRAY_FREE(w->contactBodies, w->contactBodyCapacity);
+	TB_ARRAY_FREE(w->cache.stepContacts, w->cache.stepContactCapacity);
+	TB_ARRAY_FREE(w->cache.collideResults, w->cache.collideResultCapacity);
+	TB_ARRAY_FREE(w->cache.solverContacts, w->cache.solverContactCapacity);
+	TB_ARRAY_FREE(w->cache.solverContactsById, w->cache.solverContactsByIdCapacity);
+	TB_ARRAY_FREE(w->cache.solverSlots, w->cache.solverSlotCapacity);
+	TB_ARRAY_FREE(w->cache.touchingContacts, w->cache.touchingContactCapacity);
+	TB_ARRAY_FREE(w->cache.collideKeys, w->cache.collideKeyCapacity);
+	TB_ARRAY_FREE(w->cache.contactBodies, w->cache.contactBodyCapacity);
 	tbDestroyJointOrderCache(w);
 	tbDestroyContactColorCache(w);
-	TB_ARRAY_FREE(w->islandStack, w->islandStackCapacity);
-	TB_ARRAY_FREE(w->beginEvents, w->beginCapacity);
-	TB_ARRAY_FREE(w->endEvents, w->endCapacity);
-	TB_ARRAY_FREE(w->hitEvents, w->hitCapacity);
-	TB_ARRAY_FREE(w->sensorBeginEvents, w->sensorBeginCapacity);
-	TB_ARRAY_FREE(w->sensorEndEvents, w->sensorEndCapacity);
-	TB_ARRAY_FREE(w->moveEvents, w->moveCapacity);
-	TB_ARRAY_FREE(w->pendingEndEvents, w->pendingEndCapacity);
-	TB_ARRAY_FREE(w->pendingSensorEndEvents, w->pendingSensorEndCapacity);
+	TB_ARRAY_FREE(w->cache.islandStack, w->cache.islandStackCapacity);
+	TB_ARRAY_FREE(w->events.beginEvents, w->events.beginCapacity);
+	TB_ARRAY_FREE(w->events.endEvents, w->events.endCapacity);
+	TB_ARRAY_FREE(w->events.hitEvents, w->events.hitCapacity);
+	TB_ARRAY_FREE(w->events.sensorBeginEvents, w->events.sensorBeginCapacity);
+	TB_ARRAY_FREE(w->events.sensorEndEvents, w->events.sensorEndCapacity);
+	TB_ARRAY_FREE(w->events.moveEvents, w->events.moveCapacity);
+	TB_ARRAY_FREE(w->events.pendingEndEvents, w->events.pendingEndCapacity);
+	TB_ARRAY_FREE(w->events.pendingSensorEndEvents, w->events.pendingSensorEndCapacity);
 	tbFreeJoints(w);
 	tbFreeChains(w);
 }
@@ -437,9 +444,9 @@ void tbDestroyWorld(tbWorldId worldId)
 		return;
 	}
 	int slot = world->worldId;
-	s_bodyGenerations[slot] = tbLargestGeneration(world->bodyGenerationBase, world->bodies, world->bodyHighWater,
+	s_bodyGenerations[slot] = tbLargestGeneration(world->bodyGenerationBase, world->bodies, world->bodyPool.highWater,
 												   sizeof(tbBody), offsetof(tbBody, generation));
-	s_shapeGenerations[slot] = tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapeHighWater,
+	s_shapeGenerations[slot] = tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapePool.highWater,
 													sizeof(tbShape), offsetof(tbShape, generation));
 	tbBroadPhase_Destroy(&world->broadPhase);
 	tbHashSet_Destroy(&world->pairSet);
@@ -460,32 +467,32 @@ bool tbWorld_IsValid(tbWorldId id)
 
 static void tbClearEvents(tbWorld* world)
 {
-	world->beginCount = 0;
-	world->endCount = 0;
-	world->hitCount = 0;
-	world->sensorBeginCount = 0;
-	world->sensorEndCount = 0;
-	world->moveCount = 0;
+	world->events.beginCount = 0;
+	world->events.endCount = 0;
+	world->events.hitCount = 0;
+	world->events.sensorBeginCount = 0;
+	world->events.sensorEndCount = 0;
+	world->events.moveCount = 0;
 	// End events from changes since the last step are reported with this step's events.
-	for (int i = 0; i < world->pendingEndCount; ++i)
+	for (int i = 0; i < world->events.pendingEndCount; ++i)
 	{
-		TB_ARRAY_PUSH(world->endEvents, world->endCount, world->endCapacity, world->pendingEndEvents[i]);
+		TB_ARRAY_PUSH(world->events.endEvents, world->events.endCount, world->events.endCapacity, world->events.pendingEndEvents[i]);
 	}
-	for (int i = 0; i < world->pendingSensorEndCount; ++i)
+	for (int i = 0; i < world->events.pendingSensorEndCount; ++i)
 	{
-		TB_ARRAY_PUSH(world->sensorEndEvents, world->sensorEndCount, world->sensorEndCapacity,
-					  world->pendingSensorEndEvents[i]);
+		TB_ARRAY_PUSH(world->events.sensorEndEvents, world->events.sensorEndCount, world->events.sensorEndCapacity,
+					  world->events.pendingSensorEndEvents[i]);
 	}
-	world->pendingEndCount = 0;
-	world->pendingSensorEndCount = 0;
+	world->events.pendingEndCount = 0;
+	world->events.pendingSensorEndCount = 0;
 }
 
 static void tbUpdateCounters(tbWorld* world)
 {
 	tbCounters* c = &world->counters;
-	c->bodyCount = world->bodyCount;
-	c->shapeCount = world->shapeCount;
-	c->contactCount = world->contactCount;
+	c->bodyCount = world->bodyPool.count;
+	c->shapeCount = world->shapePool.count;
+	c->contactCount = world->contactPool.count;
 	c->awakeBodyCount = tbAwakeBodyCount(world);
 	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
 	c->byteCount = (int)tbGetByteCount(); // tbCounters keeps v3.2's int
@@ -500,8 +507,8 @@ static void tbRecordMaxCapacity(tbWorld* world)
 	c->staticShapeCount = tbMaxInt(c->staticShapeCount, world->staticProxyCount);
 	c->dynamicShapeCount = tbMaxInt(c->dynamicShapeCount, movableProxies);
 	c->staticBodyCount = tbMaxInt(c->staticBodyCount, world->staticBodyCount);
-	c->dynamicBodyCount = tbMaxInt(c->dynamicBodyCount, world->bodyCount - world->staticBodyCount);
-	c->contactCount = tbMaxInt(c->contactCount, world->contactCount);
+	c->dynamicBodyCount = tbMaxInt(c->dynamicBodyCount, world->bodyPool.count - world->staticBodyCount);
+	c->contactCount = tbMaxInt(c->contactCount, world->contactPool.count);
 }
 
 /// The step: each stage is a function in the file of its concept, run top to bottom.
@@ -589,8 +596,8 @@ tbBodyEvents tbWorld_GetBodyEvents(tbWorldId worldId)
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetBodyEvents");
 	if (world != NULL)
 	{
-		events.moveEvents = world->moveEvents;
-		events.moveCount = world->moveCount;
+		events.moveEvents = world->events.moveEvents;
+		events.moveCount = world->events.moveCount;
 	}
 	return events;
 }
@@ -601,10 +608,10 @@ tbSensorEvents tbWorld_GetSensorEvents(tbWorldId worldId)
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetSensorEvents");
 	if (world != NULL)
 	{
-		events.beginEvents = world->sensorBeginEvents;
-		events.beginCount = world->sensorBeginCount;
-		events.endEvents = world->sensorEndEvents;
-		events.endCount = world->sensorEndCount;
+		events.beginEvents = world->events.sensorBeginEvents;
+		events.beginCount = world->events.sensorBeginCount;
+		events.endEvents = world->events.sensorEndEvents;
+		events.endCount = world->events.sensorEndCount;
 	}
 	return events;
 }
@@ -615,12 +622,12 @@ tbContactEvents tbWorld_GetContactEvents(tbWorldId worldId)
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetContactEvents");
 	if (world != NULL)
 	{
-		events.beginEvents = world->beginEvents;
-		events.beginCount = world->beginCount;
-		events.endEvents = world->endEvents;
-		events.endCount = world->endCount;
-		events.hitEvents = world->hitEvents;
-		events.hitCount = world->hitCount;
+		events.beginEvents = world->events.beginEvents;
+		events.beginCount = world->events.beginCount;
+		events.endEvents = world->events.endEvents;
+		events.endCount = world->events.endCount;
+		events.hitEvents = world->events.hitEvents;
+		events.hitCount = world->events.hitCount;
 	}
 	return events;
 }
@@ -679,7 +686,7 @@ void tbWorld_EnableSleeping(tbWorldId worldId, bool flag)
 	world->def.enableSleep = flag;
 	if (flag == false)
 	{
-		for (int i = 0; i < world->bodyHighWater; ++i)
+		for (int i = 0; i < world->bodyPool.highWater; ++i)
 		{
 			tbBody* body = world->bodies + i;
 			if (body->inUse && body->type != tb_staticBody)
@@ -1054,9 +1061,9 @@ tbCounters tbWorld_GetCounters(tbWorldId worldId)
 	{
 		return counters;
 	}
-	world->counters.bodyCount = world->bodyCount;
-	world->counters.shapeCount = world->shapeCount;
-	world->counters.contactCount = world->contactCount;
+	world->counters.bodyCount = world->bodyPool.count;
+	world->counters.shapeCount = world->shapePool.count;
+	world->counters.contactCount = world->contactPool.count;
 	world->counters.awakeBodyCount = tbAwakeBodyCount(world);
 	return world->counters;
 }

@@ -147,15 +147,15 @@ uint64_t tbWorld_GetStateHash(tbWorldId worldId)
 		return 0;
 	}
 	uint64_t hash = TB_FNV_OFFSET;
-	for (int id = 0; id < world->bodyHighWater; ++id)
+	for (int id = 0; id < world->bodyPool.highWater; ++id)
 	{
 		hash = world->bodies[id].inUse ? tbHashBody(hash, id, world->bodies + id) : hash;
 	}
-	for (int id = 0; id < world->contactHighWater; ++id)
+	for (int id = 0; id < world->contactPool.highWater; ++id)
 	{
 		hash = world->contacts[id].inUse ? tbHashContact(hash, id, world->contacts + id) : hash;
 	}
-	for (int id = 0; id < world->jointHighWater; ++id)
+	for (int id = 0; id < world->jointPool.highWater; ++id)
 	{
 		const tbJoint* j = world->joints + id;
 		if (j->inUse)
@@ -164,8 +164,8 @@ uint64_t tbWorld_GetStateHash(tbWorldId worldId)
 			hash = tbHashJointImpulses(tbMixInt(hash, j->edges[1].bodyId), j);
 		}
 	}
-	int counts[8] = {world->bodyCount,	  world->bodyHighWater,	  world->shapeCount, world->shapeHighWater,
-					 world->contactCount, world->contactHighWater, world->jointCount, world->jointHighWater};
+	int counts[8] = {world->bodyPool.count,	  world->bodyPool.highWater,	  world->shapePool.count, world->shapePool.highWater,
+					 world->contactPool.count, world->contactPool.highWater, world->jointPool.count, world->jointPool.highWater};
 	return tbMixBytes(hash, counts, sizeof(counts));
 }
 
@@ -201,29 +201,29 @@ void tbWorld_DumpMemoryStats(tbWorldId worldId)
 	tbDumpArray(file, "contacts", (long long)world->contactCapacity * (long long)sizeof(tbContact), &total);
 	tbDumpArray(file, "joints", (long long)world->jointCapacity * (long long)sizeof(tbJoint), &total);
 	tbDumpArray(file, "free lists",
-				(long long)(world->bodyFreeCapacity + world->shapeFreeCapacity + world->contactFreeCapacity +
-							world->jointFreeCapacity + world->chainFreeCapacity) *
+				(long long)(world->bodyPool.freeCapacity + world->shapePool.freeCapacity + world->contactPool.freeCapacity +
+							world->jointPool.freeCapacity + world->chainPool.freeCapacity) *
 					(long long)sizeof(int),
 				&total);
 	fprintf(file, "\nper-step arrays\n");
 	tbDumpArray(file, "awake bodies", (long long)world->awakeBodyCapacity * (long long)sizeof(int), &total);
-	tbDumpArray(file, "step contacts", (long long)world->stepContactCapacity * (long long)sizeof(int), &total);
+	tbDumpArray(file, "step contacts", (long long)world->cache.stepContactCapacity * (long long)sizeof(int), &total);
 	tbDumpArray(file, "solver contacts",
-				(long long)(world->solverContactCapacity + world->solverContactsByIdCapacity +
-							world->solverSlotCapacity + world->touchingContactCapacity) *
+				(long long)(world->cache.solverContactCapacity + world->cache.solverContactsByIdCapacity +
+							world->cache.solverSlotCapacity + world->cache.touchingContactCapacity) *
 					(long long)sizeof(int),
 				&total);
-	tbDumpArray(file, "contact bodies", (long long)world->contactBodyCapacity * (long long)sizeof(tbBodyPair), &total);
-	tbDumpArray(file, "collide keys", (long long)world->collideKeyCapacity * (long long)sizeof(tbCollideKey), &total);
+	tbDumpArray(file, "contact bodies", (long long)world->cache.contactBodyCapacity * (long long)sizeof(tbBodyPair), &total);
+	tbDumpArray(file, "collide keys", (long long)world->cache.collideKeyCapacity * (long long)sizeof(tbCollideKey), &total);
 	tbDumpArray(file, "broad-phase proxies",
 				(long long)world->broadPhase.table.capacity * (long long)sizeof(tbBroadProxy), &total);
 	fprintf(file, "\nevents\n");
-	tbDumpArray(file, "contact begin", (long long)world->beginCapacity * (long long)sizeof(tbContactBeginTouchEvent),
+	tbDumpArray(file, "contact begin", (long long)world->events.beginCapacity * (long long)sizeof(tbContactBeginTouchEvent),
 				&total);
-	tbDumpArray(file, "contact end", (long long)world->endCapacity * (long long)sizeof(tbContactEndTouchEvent), &total);
-	tbDumpArray(file, "contact hit", (long long)world->hitCapacity * (long long)sizeof(tbContactHitEvent), &total);
-	tbDumpArray(file, "body move", (long long)world->moveCapacity * (long long)sizeof(tbBodyMoveEvent), &total);
-	tbDumpArray(file, "joint", (long long)world->jointEventCapacity * (long long)sizeof(tbJointEvent), &total);
+	tbDumpArray(file, "contact end", (long long)world->events.endCapacity * (long long)sizeof(tbContactEndTouchEvent), &total);
+	tbDumpArray(file, "contact hit", (long long)world->events.hitCapacity * (long long)sizeof(tbContactHitEvent), &total);
+	tbDumpArray(file, "body move", (long long)world->events.moveCapacity * (long long)sizeof(tbBodyMoveEvent), &total);
+	tbDumpArray(file, "joint", (long long)world->events.jointEventCapacity * (long long)sizeof(tbJointEvent), &total);
 	fprintf(file, "\ntotal of the above: %lld\n", total);
 	fprintf(file, "bytes allocated by Tumble (all worlds, tbGetByteCount): %lld\n", (long long)tbGetByteCount());
 	fclose(file);

@@ -1,0 +1,100 @@
+// Internal: a body as the world keeps it, and what the other parts of the world ask of bodies
+// (body.c).
+#pragma once
+
+#include "core/core.h"
+
+#include "tumble/types.h"
+
+typedef struct tbWorld tbWorld;
+
+/// A body. Cold fields (user data, name, lists) sit beside the state because the solver copies
+/// what it touches into tbSolverBody arrays each step.
+typedef struct tbBody
+{
+	// Hot in the collide and island stages (speculative margin, anchors, contact-list walks):
+	// grouped at the front so a visit touches one or two cache lines.
+	tbWorldTransform transform; ///< body origin and rotation
+	tbPos center;				///< world centre of mass
+	tbVec2 linearVelocity;
+	float angularVelocity;
+	/// Displacement per step its speculative contacts cover (tbSpeculativeReach, read per contact):
+	/// max(TB_SPECULATIVE_REACH, safetyFactor × minExtent), kept current by body.c.
+	float speculativeReach;
+	float maxExtent;	///< largest distance from the centre of mass to any shape point
+	float gravityScale;
+	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
+	int awakeIndex;		///< index in world->awakeBodies, or TB_NULL_INDEX when asleep or static
+	int solverIndex;	///< index in the solver's body arrays this step, or TB_NULL_INDEX (read by
+						///< the contact preparation for every contact: kept in this first line)
+	uint8_t type;		///< tbBodyType
+	bool isFast;		///< moved far this step: swept by continuous collision (read per contact: first line)
+	bool enableContactRecycling; ///< read per contact by the narrow phase: first line
+
+	tbPos center0;		///< centre of mass at the start of the step (continuous collision)
+	tbRot rotation0;	///< rotation at the start of the step
+	tbVec2 localCenter; ///< centre of mass in the body frame
+	tbVec2 force;
+	float torque;
+
+	float mass, invMass;
+	float inertia, invInertia; ///< about the centre of mass
+
+	float minExtent;	///< smallest distance from the centre of mass to the surface (continuous collision)
+	float safetyFactor; ///< continuous collision safety factor (tbBody_SetSafetyFactor), default 0.5
+	float linearDamping;
+	float angularDamping;
+	float sleepThreshold;
+	float sleepTime;
+
+	int headShapeId; ///< singly linked through tbShape::nextShapeId
+	int shapeCount;
+	int contactCount;
+	int headJointKey; ///< doubly linked joint edges (joint.h); key = (jointId << 1) | edge
+	int jointCount;
+
+	const char* name;
+	void* userData;
+
+	uint16_t generation;
+	bool inUse;
+	bool enableSleep;
+	bool fixedRotation; ///< also motion lock angularZ
+	bool lockLinearX;	///< motion locks (tbMotionLocks)
+	bool lockLinearY;
+	bool isBullet;
+	bool isMarked;
+	bool isDisabled; ///< out of the simulation (tbBody_Disable): no proxies, no contacts, never awake
+} tbBody;
+
+/// The body for a body id and its world, or NULL after reporting an error naming `function`; also
+/// refuses a locked world when `mutating`.
+tbBody* tbGetBodyChecked(tbBodyId id, const char* function, tbWorld** world, bool mutating);
+tbBodyId tbMakeBodyId(const tbWorld* world, int bodyId);
+
+void tbUpdateBodyMass(tbWorld* world, tbBody* body);
+void tbWakeBody(tbWorld* world, tbBody* body);
+/// Close the holes bodies that left the awake set left in it; the step starts with it.
+void tbCompactAwakeSet(tbWorld* world);
+void tbSleepBody(tbWorld* world, tbBody* body);
+void tbDestroyBodyContacts(tbWorld* world, tbBody* body, bool wakeBodies);
+
+/// Displacement per step that a body's speculative contacts cover (m): max(TB_SPECULATIVE_REACH,
+/// safetyFactor × minExtent), the body's safety factor TB_CONTINUOUS_FRACTION by default. Beyond it
+/// the body is swept by continuous collision. Kept in the body (tbUpdateSpeculativeReach); inline,
+/// since the narrow phase reads it twice per contact.
+static inline float tbSpeculativeReach(const tbBody* body)
+{
+	return body->speculativeReach;
+}
+
+/// Refresh the shape boxes of a body and move broad-phase proxies that left their fat boxes.
+void tbUpdateBodyShapeBoxes(tbWorld* world, tbBody* body, bool forceMove);
+/// The two halves of tbUpdateBodyShapeBoxes: boxes computed and proxies flagged (per body, on
+/// any worker), then the flagged proxies moved (in body order, on the caller).
+/// True when the fat box of some shape was re-made (flagged for tbMoveFlaggedProxies).
+bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove);
+void tbMoveFlaggedProxies(tbWorld* world, const tbBody* body);
+
+/// The finalize stage of the step: shape boxes, proxies, sleep timers, move events.
+void tbFinalizeStage(tbWorld* world, float timeStep);
