@@ -10,8 +10,8 @@
 #
 # Environment: BUILD_DIR (default /tmp/tumble-bench-build), MACHINE (default from lscpu),
 # BENCH_STEPS (default: each scene's own), BENCH_REPEAT (rounds, default 3), BENCH_PEER_BUDGET
-# (seconds a peer may spend on one scene's round before it is stopped there, default 20: Box2D
-# 2.4.1 takes seconds a step on the spinners), TUMBLE_BOX2D3_DIR (install prefix of Box2D v3) or
+# (seconds Box2D 2.4.1 or Chipmunk may spend on one scene's round before it is stopped there,
+# default 30: Box2D 2.4.1 takes seconds a step on the spinners; Tumble and v3 always finish), TUMBLE_BOX2D3_DIR (install prefix of Box2D v3) or
 # TUMBLE_BOX2D3_SOURCE_DIR (its source tree) for the Box2D v3 peer; without either, the v3 columns
 # stay empty. The build uses two jobs (the machines this runs on are shared).
 set -euo pipefail
@@ -30,7 +30,7 @@ PAGE="$DOCS/performance.md"
 STEPS_ARGS=()
 [[ -n "${BENCH_STEPS:-}" ]] && STEPS_ARGS=(--steps "$BENCH_STEPS")
 REPEAT="${BENCH_REPEAT:-3}"
-BUDGET="${BENCH_PEER_BUDGET:-20}"
+BUDGET="${BENCH_PEER_BUDGET:-30}"
 PEER_ARGS=()
 [[ -n "${TUMBLE_BOX2D3_DIR:-}" ]] && PEER_ARGS+=(-DTUMBLE_BOX2D3_DIR="$TUMBLE_BOX2D3_DIR")
 [[ -n "${TUMBLE_BOX2D3_SOURCE_DIR:-}" ]] && PEER_ARGS+=(-DTUMBLE_BOX2D3_SOURCE_DIR="$TUMBLE_BOX2D3_SOURCE_DIR")
@@ -51,7 +51,7 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 		"${PEER_ARGS[@]}" >/dev/null
 	cmake --build "$BUILD_DIR" -j 2 --target tumble-bench tumble-bench-broadphase >/dev/null
 	BENCH="$BUILD_DIR/bench/tumble-bench"
-	quiet() { grep -v '^Initializing cpSpace\|^Compile with' || true; }
+	quiet() { grep --line-buffered -v '^Initializing cpSpace\|^Compile with' || true; }
 
 	{
 		lscpu | grep -E '^(Model name|CPU\(s\)|Thread|Core|L2|L3)'
