@@ -222,7 +222,9 @@ bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
 		d = tbMulSV(dt, tbMulAdd(body->linearVelocity, dt, g));
 		float length = tbLength(d);
 		// NaN-safe: a non-finite displacement is replaced by none (the step rejects nothing here).
-		d = length > cap ? tbMulSV(cap / length, d) : (length <= cap ? d : tbVec2_zero);
+		// That includes an infinite one (gravity × gravityScale beyond FLT_MAX), which scaled down
+		// to the reach would give 0 · ∞ = NaN in the box.
+		d = length <= cap ? d : (length > cap && length <= FLT_MAX ? tbMulSV(cap / length, d) : tbVec2_zero);
 		float turn = body->angularVelocity * dt;
 		float arc = tbAbsFloat(turn) * body->maxExtent;
 		pad = tbMinFloat(arc, cap);

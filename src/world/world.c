@@ -22,10 +22,13 @@
 
 static tbWorld* s_worlds[TB_MAX_WORLDS];
 static uint16_t s_worldGenerations[TB_MAX_WORLDS];
-// Per world slot: the largest body and shape generations handed out by the worlds that used the
-// slot (see tbWorld::bodyGenerationBase). Generations wrap at 2^16, like every generation.
+// Per world slot: the largest body, shape, joint and chain generations handed out by the worlds
+// that used the slot (see tbWorld::bodyGenerationBase). Generations wrap at 2^16, like every
+// generation.
 static uint16_t s_bodyGenerations[TB_MAX_WORLDS];
 static uint16_t s_shapeGenerations[TB_MAX_WORLDS];
+static uint16_t s_jointGenerations[TB_MAX_WORLDS];
+static uint16_t s_chainGenerations[TB_MAX_WORLDS];
 
 #define TB_WORLD_DEF_MAGIC 0x7B3A1C01
 
@@ -364,6 +367,8 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	// One past every generation the slot's earlier worlds handed out.
 	world->bodyGenerationBase = (uint16_t)(s_bodyGenerations[slot] + 1);
 	world->shapeGenerationBase = (uint16_t)(s_shapeGenerations[slot] + 1);
+	world->jointGenerationBase = (uint16_t)(s_jointGenerations[slot] + 1);
+	world->chainGenerationBase = (uint16_t)(s_chainGenerations[slot] + 1);
 	world->userData = def->userData;
 	tbHashSet_Create(&world->pairSet, 64);
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
@@ -440,6 +445,10 @@ void tbDestroyWorld(tbWorldId worldId)
 												   sizeof(tbBody), offsetof(tbBody, generation));
 	s_shapeGenerations[slot] = tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapePool.highWater,
 													sizeof(tbShape), offsetof(tbShape, generation));
+	s_jointGenerations[slot] = tbLargestGeneration(world->jointGenerationBase, world->joints, world->jointPool.highWater,
+												   sizeof(tbJoint), offsetof(tbJoint, generation));
+	s_chainGenerations[slot] = tbLargestGeneration(world->chainGenerationBase, world->chains, world->chainPool.highWater,
+												   sizeof(tbChain), offsetof(tbChain, generation));
 	tbBroadPhase_Destroy(&world->broadPhase);
 	tbHashSet_Destroy(&world->pairSet);
 	tbFreeWorldArrays(world);

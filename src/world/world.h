@@ -59,11 +59,13 @@ typedef struct tbWorld
 	tbWorldDef def; ///< methods and tuning in force (auto resolved where it must be)
 	uint16_t worldId;
 	uint16_t generation;
-	// First generation of a body or shape slot used for the first time in this world: one past the
-	// largest generation any earlier world in the same slot handed out, so an id kept from a
-	// destroyed world never matches an object of a new world that took its slot.
+	// First generation of a body, shape, joint or chain slot used for the first time in this world:
+	// one past the largest generation any earlier world in the same slot handed out, so an id kept
+	// from a destroyed world never matches an object of a new world that took its slot.
 	uint16_t bodyGenerationBase;
 	uint16_t shapeGenerationBase;
+	uint16_t jointGenerationBase;
+	uint16_t chainGenerationBase;
 	bool locked; ///< true during the step: the API refuses every change
 	/// Query callbacks running (nested queries count): the API refuses what would change the
 	/// broad phase being walked (create, destroy, SetTransform, SetType, filters, collideConnected)
