@@ -69,7 +69,7 @@ static void makePairs(PolygonPair* pairs, CirclePolygonPair* circles)
 		circles[i].polygon = pairs[i].a;
 		circles[i].circle = (tbCircle){{0.0f, 0.0f}, 0.5f * size};
 		circles[i].xfA = pairs[i].xfA;
-		circles[i].xfB = (tbTransform){tbMulAdd(pairs[i].xfA.p, size * randomFloat(0.6f, 1.6f), u), tb_rot_identity};
+		circles[i].xfB = (tbTransform){tbMulAdd(pairs[i].xfA.p, size * randomFloat(0.6f, 1.6f), u), tbRot_identity};
 	}
 }
 

@@ -52,7 +52,7 @@ static void MakeBench(Bench* b)
 	{
 		bool moving = i < BODIES;
 		b->bodies[i].linearVelocity = tbMakeVec2(moving ? 0.001f * (float)(i % 7) : 0.0f, moving ? -0.01f : 0.0f);
-		b->bodies[i].deltaRotation = tb_rot_identity;
+		b->bodies[i].deltaRotation = tbRot_identity;
 		b->masses[i].invMass = moving ? 1.0f : 0.0f;
 		b->masses[i].invI = moving ? 6.0f : 0.0f;
 		b->masses[i].gravityScale = 1.0f;

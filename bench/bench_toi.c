@@ -57,7 +57,7 @@ static void makeCircleCases(void)
 		tbVec2 moveB = tbAdd(tbMulSV(-1.5f, startB), tbMakeVec2(lcgRange(&seed, -1.0f, 1.0f), lcgRange(&seed, -1.0f, 1.0f)));
 		c->input.proxyA = tbMakeProxy(&c->circleA.center, 1, c->circleA.radius);
 		c->input.proxyB = tbMakeProxy(&c->circleB.center, 1, c->circleB.radius);
-		c->input.sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, 0.0f, 0.0f);
+		c->input.sweepA = makeSweep(tbVec2_zero, tbVec2_zero, 0.0f, 0.0f);
 		c->input.sweepB = makeSweep(startB, tbAdd(startB, moveB), 0.0f, 0.0f);
 		c->input.maxFraction = 1.0f;
 	}
@@ -107,7 +107,7 @@ static tbTOIInput spinningLaunch(uint32_t* seed, float omega)
 	tbTOIInput input;
 	input.proxyA = boxProxy(0.05f, 10.0f);
 	input.proxyB = boxProxy(2.0f, 0.05f);
-	input.sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, 0.0f, 0.0f);
+	input.sweepA = makeSweep(tbVec2_zero, tbVec2_zero, 0.0f, 0.0f);
 	input.maxFraction = 1.0f;
 	float heading = lcgRange(seed, -0.5236f, 0.5236f);
 	float spin = (lcgNext(seed) & 1u) ? omega : -omega;

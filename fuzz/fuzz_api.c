@@ -148,24 +148,21 @@ typedef struct List
 	int deadCount;
 } List;
 
-/// The harness's own task system: a task's ranges run one after another on the calling thread,
-/// inside enqueueTask or later in finishTask, in order or reversed, with worker indices handed out
-/// in turn (and, in one mode, one outside [0, workerCount), which the library must survive and
-/// report).
+/// The harness's own task system (Box2D v3.2's interface: a task is one callback): tasks run on the
+/// calling thread, inside enqueueTask or later in finishTask, and in one mode every pending task
+/// runs at the first finish, the last enqueued first. The library must give 1 worker's results
+/// whatever the order.
 typedef struct PendingTask
 {
 	tbTaskCallback* task;
 	void* context;
-	int itemCount;
-	int minRange;
-	bool used;
+	uint8_t state; ///< 0 free, 1 enqueued, 2 run (until finishTask frees it)
 } PendingTask;
 
 typedef struct Tasks
 {
 	int workerCount; ///< what tbWorld_GetWorkerCount says
-	uint8_t mode;	 ///< bit 0: defer to finishTask; 1: reverse; 2: fine ranges; 3: a bad index now and then
-	uint32_t turn;
+	uint8_t mode;	 ///< bit 0: defer to finishTask; 1: run every pending task at the first finish, last first
 	int tasksRun;
 	PendingTask pending[MAX_PENDING];
 } Tasks;
@@ -368,56 +365,30 @@ static Handle PickId(Harness* h, Kind kind, int slot, FuzzInput* in)
 // ---------------------------------------------------------------------------------------------
 // The task system.
 
-static uint32_t NextWorker(Tasks* t)
+static void RunPending(Tasks* t, PendingTask* p)
 {
-	uint32_t workers = (uint32_t)(t->workerCount > 0 ? t->workerCount : 1);
-	t->turn += 1;
-	if ((t->mode & 8u) != 0 && t->turn % 7u == 0u)
-	{
-		return workers + t->turn % 3u; // outside the range: the library must lend a spare slot and report
-	}
-	return t->turn % workers;
-}
-
-static void RunRanges(Tasks* t, tbTaskCallback* task, int itemCount, int minRange, void* context)
-{
-	int workers = t->workerCount > 0 ? t->workerCount : 1;
-	int size = (t->mode & 4u) != 0 ? minRange : (itemCount + workers - 1) / workers;
-	if (size < minRange)
-	{
-		size = minRange;
-	}
-	if (size < 1)
-	{
-		size = 1;
-	}
-	int ranges = (itemCount + size - 1) / size;
-	for (int r = 0; r < ranges; ++r)
-	{
-		int k = (t->mode & 2u) != 0 ? ranges - 1 - r : r;
-		int start = k * size;
-		int end = start + size < itemCount ? start + size : itemCount;
-		task(start, end, NextWorker(t), context);
-	}
+	p->state = 2;
+	p->task(p->context);
 	t->tasksRun += 1;
 }
 
-static void* EnqueueTask(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* userContext)
+static void* EnqueueTask(tbTaskCallback* task, void* taskContext, void* userContext)
 {
 	Tasks* t = userContext;
-	FUZZ_CHECK(itemCount >= 0 && minRange >= 0, "enqueueTask(%d items, minRange %d)", itemCount, minRange);
+	FUZZ_CHECK(task != NULL, "enqueueTask without a task");
 	if ((t->mode & 1u) != 0)
 	{
 		for (int i = 0; i < MAX_PENDING; ++i)
 		{
-			if (t->pending[i].used == false)
+			if (t->pending[i].state == 0)
 			{
-				t->pending[i] = (PendingTask){task, taskContext, itemCount, minRange, true};
+				t->pending[i] = (PendingTask){task, taskContext, 1};
 				return t->pending + i;
 			}
 		}
 	}
-	RunRanges(t, task, itemCount, minRange, taskContext);
+	task(taskContext);
+	t->tasksRun += 1;
 	return NULL;
 }
 
@@ -425,9 +396,22 @@ static void FinishTask(void* userTask, void* userContext)
 {
 	Tasks* t = userContext;
 	PendingTask* p = userTask;
-	FUZZ_CHECK(p >= t->pending && p < t->pending + MAX_PENDING && p->used, "finishTask with a handle not given out");
-	p->used = false;
-	RunRanges(t, p->task, p->itemCount, p->minRange, p->context);
+	FUZZ_CHECK(p >= t->pending && p < t->pending + MAX_PENDING && p->state != 0, "finishTask with a handle not given out");
+	if ((t->mode & 2u) != 0)
+	{
+		for (int i = MAX_PENDING - 1; i >= 0; --i)
+		{
+			if (t->pending[i].state == 1)
+			{
+				RunPending(t, t->pending + i);
+			}
+		}
+	}
+	else if (p->state == 1)
+	{
+		RunPending(t, p);
+	}
+	p->state = 0;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1252,7 +1236,7 @@ static void ModifyBody(Harness* h, int slot, FuzzInput* in)
 					   body.index1, (double)p.x, (double)p.y);
 			(void)tbBody_GetAngle(body);
 			(void)tbBody_GetMassData(body);
-			(void)tbBody_GetWorldCenterOfMass(body);
+			(void)tbBody_GetWorldCenter(body);
 			(void)tbBody_GetLocalPoint(body, tbPos_zero);
 			(void)tbBody_GetWorldPointVelocity(body, tbPos_zero);
 			(void)tbBody_ComputeAABB(body);
@@ -1650,7 +1634,7 @@ static void ModifyShape(Harness* h, int slot, FuzzInput* in)
 		{
 			tbGeometry g = tbShape_GetGeometry(shape);
 			(void)g;
-			(void)tbShape_GetMassData(shape);
+			(void)tbShape_ComputeMassData(shape);
 			(void)tbShape_GetAABB(shape);
 			(void)tbShape_GetSurfaceMaterial(shape);
 			(void)tbShape_GetParentChain(shape);
@@ -2411,7 +2395,7 @@ static void Step(Harness* h, int slot, FuzzInput* in)
 	CheckIds(h);
 	for (int k = 0; k < MAX_PENDING; ++k)
 	{
-		FUZZ_CHECK(h->worlds[slot].tasks.pending[k].used == false, "a task was enqueued and never finished");
+		FUZZ_CHECK(h->worlds[slot].tasks.pending[k].state == 0, "a task was enqueued and never finished");
 	}
 }
 

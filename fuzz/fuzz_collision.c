@@ -46,7 +46,7 @@ static FuzzShape MakePolygonShape(FuzzInput* in)
 		float hx = FuzzFloat(in), hy = FuzzFloat(in);
 		tbVec2 center = FuzzVec2(in);
 		tbRot q = tbMakeRot(FuzzFloat(in));
-		shape.geometry.polygon = tbIsValidRot(q) ? tbMakeOffsetBox(hx, hy, center, q) : tbMakeBox(hx, hy);
+		shape.geometry.polygon = tbIsValidRotation(q) ? tbMakeOffsetBox(hx, hy, center, q) : tbMakeBox(hx, hy);
 	}
 	else if (kind == 1)
 	{
@@ -109,7 +109,7 @@ static FuzzShape MakeShape(FuzzInput* in)
 static tbTransform MakeTransform(FuzzInput* in, bool* valid)
 {
 	tbTransform xf = {FuzzVec2(in), tbMakeRot(FuzzFloat(in))};
-	*valid = InBounds(xf.p) && tbIsValidRot(xf.q);
+	*valid = InBounds(xf.p) && tbIsValidRotation(xf.q);
 	return xf;
 }
 
@@ -221,7 +221,7 @@ static void RayCastEverything(const FuzzShape* shape, tbVec2 origin, tbVec2 tran
 	tbRayCastInput ray = {origin, translation, 1.0f};
 	tbCastOutput out = tbRayCastShape(&shape->geometry, &ray);
 	(void)tbPointInShape(&shape->geometry, origin);
-	tbAABB box = tbComputeShapeAABB(&shape->geometry, tb_transform_identity);
+	tbAABB box = tbComputeShapeAABB(&shape->geometry, tbTransform_identity);
 	tbMassData mass = tbComputeShapeMass(&shape->geometry, 1.0f);
 	// any input: a hit has finite numbers and a fraction in [0, 1] (a translation of any length)
 	bool finite = FuzzIsFinite2(out.point.x, out.point.y) && FuzzIsFinite2(out.normal.x, out.normal.y);

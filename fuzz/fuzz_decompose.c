@@ -106,7 +106,7 @@ static int MakeOutline(FuzzInput* in, tbVec2* p, bool* mustSucceed)
 	}
 	// Scale: 1 cm to 1 km in steps of a factor of about 1.6.
 	float scale = powf(10.0f, -2.0f + 5.0f * (float)FuzzInt(in, 26) / 25.0f);
-	tbVec2 offset = tb_vec2_zero;
+	tbVec2 offset = tbVec2_zero;
 	if (FuzzInt(in, 4) == 0)
 	{
 		float far = powf(10.0f, (float)FuzzInt(in, 6)); // up to 1e5 m from the origin
@@ -197,7 +197,7 @@ static int MakeOutline(FuzzInput* in, tbVec2* p, bool* mustSucceed)
 		}
 		case 4: // a random walk closed by its last edge (often crosses itself)
 		{
-			tbVec2 at = tb_vec2_zero;
+			tbVec2 at = tbVec2_zero;
 			for (int i = 0; i < n; ++i)
 			{
 				float angle = 6.2831853f * (float)i / (float)n + 2.0f * (Unit(in) - 0.5f);

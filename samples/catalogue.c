@@ -20,7 +20,7 @@ static int AddBoxBody(Scene* scene, tbBodyType type, tbVec2 position, float angl
 					  float friction)
 {
 	int body = Scene_AddBody(scene, type, position, angle);
-	tbGeometry box = Scene_MakeBoxGeometry(hx, hy, tb_vec2_zero, 0.0f);
+	tbGeometry box = Scene_MakeBoxGeometry(hx, hy, tbVec2_zero, 0.0f);
 	Scene_AddGeometry(scene, body, &box, density, friction);
 	return body;
 }
@@ -28,7 +28,7 @@ static int AddBoxBody(Scene* scene, tbBodyType type, tbVec2 position, float angl
 static int AddCircleBody(Scene* scene, tbBodyType type, tbVec2 position, float radius, float density, float friction)
 {
 	int body = Scene_AddBody(scene, type, position, 0.0f);
-	tbGeometry circle = Scene_MakeCircleGeometry(tb_vec2_zero, radius);
+	tbGeometry circle = Scene_MakeCircleGeometry(tbVec2_zero, radius);
 	Scene_AddGeometry(scene, body, &circle, density, friction);
 	return body;
 }
@@ -327,7 +327,7 @@ static Scene* BuildConfined(void)
 	Scene* scene = Scene_Create();
 	scene->gravity = V(0.0f, 0.0f);
 	scene->steps = 600;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	tbGeometry walls[4] = {
 		Scene_MakeCapsuleGeometry(V(-10.5f, 0.0f), V(10.5f, 0.0f), 0.5f),
 		Scene_MakeCapsuleGeometry(V(-10.5f, 0.0f), V(-10.5f, 20.5f), 0.5f),
@@ -388,7 +388,7 @@ static void AddRainBody(Scene* scene, tbVec2 position, int kind)
 // static boxes of side gridSize on one static body (friction 0.6).
 static void AddRainFloors(Scene* scene, int rows, int gridCount, float gridSize)
 {
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	for (int i = 0; i < rows; ++i)
 	{
 		for (int j = 0; j <= gridCount; ++j)
@@ -453,7 +453,7 @@ static Scene* BuildManyPyramids(void)
 	float groundDeltaY = 2.0f * extent * ((float)baseCount + 1.0f);
 	float groundWidth = 2.0f * extent * (float)columnCount * ((float)baseCount + 1.0f);
 	float baseWidth = 2.0f * extent * (float)baseCount;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	for (int i = 0; i < rowCount; ++i)
 	{
 		float y = groundDeltaY * (float)i;
@@ -480,7 +480,7 @@ static Scene* MakeTumbler(bool motorised)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 750;
-	int ground = motorised ? Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f) : -1;
+	int ground = motorised ? Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f) : -1;
 	int drum = Scene_AddBody(scene, motorised ? tb_dynamicBody : tb_kinematicBody, V(0.0f, 10.0f), 0.0f);
 	scene->bodies[drum].angularVelocity = motorised ? 0.0f : 25.0f * DEG_TO_RAD;
 	tbGeometry walls[4] = {
@@ -554,7 +554,7 @@ static Scene* MakeSpinner(bool motorised)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 1000;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	const int pointCount = 360;
 	for (int i = 0; i < pointCount; ++i)
 	{
@@ -566,7 +566,7 @@ static Scene* MakeSpinner(bool motorised)
 	}
 	int blade = Scene_AddBody(scene, motorised ? tb_dynamicBody : tb_kinematicBody, V(0.0f, 12.0f), 0.0f);
 	scene->bodies[blade].angularVelocity = motorised ? 0.0f : 5.0f;
-	tbGeometry bladeShape = Scene_MakeBoxGeometry(0.4f, 20.0f, tb_vec2_zero, 0.0f);
+	tbGeometry bladeShape = Scene_MakeBoxGeometry(0.4f, 20.0f, tbVec2_zero, 0.0f);
 	bladeShape.polygon = tbMakeRoundedBox(0.4f, 20.0f, 0.2f);
 	Scene_AddGeometry(scene, blade, &bladeShape, 1.0f, 0.0f);
 	if (motorised)
@@ -579,8 +579,8 @@ static Scene* MakeSpinner(bool motorised)
 	}
 	tbGeometry kinds[3] = {
 		Scene_MakeCapsuleGeometry(V(-0.25f, 0.0f), V(0.25f, 0.0f), 0.25f),
-		Scene_MakeCircleGeometry(tb_vec2_zero, 0.35f),
-		Scene_MakeBoxGeometry(0.35f, 0.35f, tb_vec2_zero, 0.0f),
+		Scene_MakeCircleGeometry(tbVec2_zero, 0.35f),
+		Scene_MakeBoxGeometry(0.35f, 0.35f, tbVec2_zero, 0.0f),
 	};
 	float x = -23.0f, y = 2.0f;
 	for (int i = 0; i < 6076; ++i)
@@ -661,7 +661,7 @@ static Scene* BuildWasher(void)
 // +halfSpan, and a wall of `wallCount` cells (0.5 × 0.55) at each end from y = 1 up.
 static int AddPit(Scene* scene, int halfSpan, int wallCount)
 {
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	for (int i = -halfSpan; i <= halfSpan; ++i)
 	{
 		tbGeometry cell = Scene_MakeBoxGeometry(0.55f, 0.5f, V((float)i, 0.0f), 0.0f);
@@ -705,7 +705,7 @@ static Scene* BuildJunkyard(void)
 			side = -side;
 		}
 	}
-	int pusher = Scene_AddBody(scene, tb_kinematicBody, tb_vec2_zero, 0.0f);
+	int pusher = Scene_AddBody(scene, tb_kinematicBody, tbVec2_zero, 0.0f);
 	tbGeometry blade = Scene_MakeBoxGeometry(2.0f, 4.0f, V(0.0f, 4.0f), 0.0f);
 	Scene_AddGeometry(scene, pusher, &blade, 1.0f, 0.6f);
 	scene->bodies[pusher].drive = (SceneDrive){true, V(60.0f, 0.0f), 0.2f};
@@ -770,7 +770,7 @@ static Scene* BuildPendulumChain(void)
 	}
 	const float radius = 0.5f;
 	int ball = Scene_AddBody(scene, tb_dynamicBody, V(2.0f * hx * (float)count + radius, top), 0.0f);
-	tbGeometry circle = Scene_MakeCircleGeometry(tb_vec2_zero, radius);
+	tbGeometry circle = Scene_MakeCircleGeometry(tbVec2_zero, radius);
 	Scene_AddGeometry(scene, ball, &circle, 100.0f * linkMass / (TB_PI * radius * radius), 0.6f);
 	SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, previous, ball);
 	Scene_SetJointAnchor(scene, joint, V(2.0f * hx * (float)count, top));
@@ -796,7 +796,7 @@ static Scene* BuildRopeBridge(void)
 		float angle = i < count / 2 ? -slope : slope;
 		tbVec2 along = V(cosf(angle), sinf(angle));
 		int plank = Scene_AddBody(scene, tb_dynamicBody, tbMulAdd(pivot, 0.5f, along), angle);
-		tbGeometry box = Scene_MakeBoxGeometry(0.5f, 0.05f, tb_vec2_zero, 0.0f);
+		tbGeometry box = Scene_MakeBoxGeometry(0.5f, 0.05f, tbVec2_zero, 0.0f);
 		Scene_AddGeometry(scene, plank, &box, 2.0f, 0.6f);
 		SceneJoint* joint = Scene_AddJoint(scene, tb_revoluteJoint, previous, plank);
 		Scene_SetJointAnchor(scene, joint, pivot);
@@ -820,7 +820,7 @@ static Scene* BuildCar(void)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 900;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	memcpy(scene->bodies[ground].name, "ground", 7);
 	for (int i = 0; i < 200; ++i)
 	{
@@ -883,7 +883,7 @@ static void AddRagdoll(Scene* scene, float x, float y, int group)
 		tbVec2 center = V(x + 0.5f * (bone->from.x + bone->to.x), y + 0.5f * (bone->from.y + bone->to.y));
 		ids[i] = Scene_AddBody(scene, tb_dynamicBody, center, 0.0f);
 		tbVec2 half = V(0.5f * (bone->to.x - bone->from.x), 0.5f * (bone->to.y - bone->from.y));
-		tbGeometry shape = i == 1 ? Scene_MakeCircleGeometry(tb_vec2_zero, bone->radius)
+		tbGeometry shape = i == 1 ? Scene_MakeCircleGeometry(tbVec2_zero, bone->radius)
 								  : Scene_MakeCapsuleGeometry(tbNeg(half), half, bone->radius);
 		int shapeIndex = Scene_AddGeometry(scene, ids[i], &shape, 1.0f, 0.6f);
 		scene->bodies[ids[i]].shapes[shapeIndex].groupIndex = group;
@@ -1088,7 +1088,7 @@ static Scene* BuildCradleJoints(void)
 			position = V(x - length * sinf(angle), 4.0f - length * cosf(angle));
 		}
 		int ball = Scene_AddBody(scene, tb_dynamicBody, position, 0.0f);
-		tbGeometry circle = Scene_MakeCircleGeometry(tb_vec2_zero, r);
+		tbGeometry circle = Scene_MakeCircleGeometry(tbVec2_zero, r);
 		int shape = Scene_AddGeometry(scene, ball, &circle, 1.0f, 0.0f);
 		scene->bodies[ball].shapes[shape].restitution = 1.0f;
 		SceneJoint* rod = Scene_AddJoint(scene, tb_distanceJoint, bar, ball);
@@ -1161,7 +1161,7 @@ static Scene* BuildPlatformer(void)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 900;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	memcpy(scene->bodies[ground].name, "ground", 7);
 	tbVec2 points[128];
 	int count = 0;
@@ -1205,7 +1205,7 @@ static Scene* BuildLoopTheLoop(void)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 300;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	memcpy(scene->bodies[ground].name, "ground", 7);
 	const float R = 5.0f, r = 0.25f;
 	float critical = sqrtf(5.0f * 10.0f * (R - r));
@@ -1232,7 +1232,7 @@ static Scene* BuildBallPile(void)
 {
 	Scene* scene = Scene_Create();
 	scene->steps = 600;
-	int ground = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	memcpy(scene->bodies[ground].name, "box", 4);
 	tbVec2 corners[4] = {V(-20.0f, 40.0f), V(-20.0f, 0.0f), V(20.0f, 0.0f), V(20.0f, 40.0f)};
 	for (int i = 0; i < 3; ++i)

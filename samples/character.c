@@ -90,6 +90,6 @@ void Character_Step(Character* c, tbWorldId world, float moveSpeed, bool jump, f
 	c->velocity = tbClipVector(c->velocity, planes.planes, planes.count);
 	c->onGround = planes.onGround;
 	c->planeCount = planes.count;
-	tbTransform pose = {c->position, tb_rot_identity};
+	tbTransform pose = {c->position, tbRot_identity};
 	tbBody_SetTargetTransform(c->body, pose, dt, true);
 }

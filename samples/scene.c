@@ -482,6 +482,13 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 			def.finishTask = TaskSystem_Finish;
 			def.userTaskContext = overrides->tasks;
 		}
+		else if (overrides->enqueueTask != NULL)
+		{
+			def.workerCount = overrides->workerCount;
+			def.enqueueTask = overrides->enqueueTask;
+			def.finishTask = overrides->finishTask;
+			def.userTaskContext = overrides->userTaskContext;
+		}
 	}
 	return def;
 }
@@ -541,7 +548,7 @@ bool Scene_FindRefusedItem(const Scene* scene, char* item, int itemSize)
 	for (int i = 0; i < scene->bodyCount && refused == false; ++i)
 	{
 		int shapeIndex = -1;
-		tbBodyId bodyId = CreateSceneBody(worldId, scene->bodies + i, tb_vec2_zero, "", &shapeIndex);
+		tbBodyId bodyId = CreateSceneBody(worldId, scene->bodies + i, tbVec2_zero, "", &shapeIndex);
 		bodyIds[i] = bodyId;
 		refused = TB_IS_NULL(bodyId) || shapeIndex >= 0;
 		if (TB_IS_NULL(bodyId))
@@ -783,7 +790,7 @@ SceneWorld Scene_BuildWorldWithDef(const Scene* scene, const tbWorldDef* def)
 		world.names[i][SCENE_NAME_SIZE - 1] = '\0';
 		int refusedShape = -1; // scene files are checked when loaded (Scene_FindRefusedItem)
 		world.bodyIds[i] =
-			CreateSceneBody(world.worldId, scene->bodies + i, tb_vec2_zero, world.names[i], &refusedShape);
+			CreateSceneBody(world.worldId, scene->bodies + i, tbVec2_zero, world.names[i], &refusedShape);
 		if (scene->bodies[i].drive.enabled)
 		{
 			world.drivenBodies[world.drivenCount++] = i;

@@ -712,7 +712,7 @@ static bool ReadBody(Parser* parser, const cJSON* item, const char* path, Scene*
 	{
 		return false;
 	}
-	int index = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
+	int index = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
 	if (ReadBodyFields(parser, item, path, scene->bodies + index) == false)
 	{
 		return false;
@@ -1305,7 +1305,7 @@ static bool ReadSpawner(Parser* parser, const cJSON* item, const char* path, Sce
 	{
 		return Missing(parser, path, "interval");
 	}
-	SceneSpawner* spawner = Scene_AddSpawner(scene, templateIndex, 1, tb_vec2_zero);
+	SceneSpawner* spawner = Scene_AddSpawner(scene, templateIndex, 1, tbVec2_zero);
 	return ReadInt(parser, item, path, "first_step", 0, SCENE_MAX_STEPS, &spawner->firstStep) &&
 		   ReadInt(parser, item, path, "interval", 1, SCENE_MAX_STEPS, &spawner->interval) &&
 		   ReadInt(parser, item, path, "count", 0, SCENE_MAX_STEPS, &spawner->count) &&

@@ -4,7 +4,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh build
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF -DTUMBLE_BUILD_TOOLS=OFF >/dev/null
-cmake --build build/release --target tumble_cli -j"$(nproc)"
+# The `tumble` program and the platformer sample (build/release/samples/tumble-platformer), both
+# of which the README shows.
+cmake --build build/release --target tumble_cli tumble-platformer -j"$(nproc)"
 scene="${1:-pyramid}"
 out="out/$scene"
 rm -rf "$out"

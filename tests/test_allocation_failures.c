@@ -49,14 +49,10 @@ static void HookFree(void* memory)
 
 // --- a serial task system, so that the per-worker buffers are allocated --------------------------
 
-static void* EnqueueTask(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* userContext)
+static void* EnqueueTask(tbTaskCallback* task, void* taskContext, void* userContext)
 {
 	(void)userContext;
-	int range = minRange > 1 ? minRange : 1;
-	for (int start = 0, worker = 0; start < itemCount; start += range, worker = (worker + 1) % 2)
-	{
-		task(start, start + range < itemCount ? start + range : itemCount, (uint32_t)worker, taskContext);
-	}
+	task(taskContext); // run before returning: NULL tells the library there is nothing to finish
 	return NULL;
 }
 

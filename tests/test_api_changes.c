@@ -15,38 +15,7 @@
 
 // --- scene helpers ----------------------------------------------------------------------------
 
-/// A static ground box whose top face is at y = 0.
-static tbBodyId MakeGround(tbWorldId world)
-{
-	tbBodyDef def = tbDefaultBodyDef();
-	def.position = tbMakeVec2(0.0f, -0.5f);
-	tbBodyId ground = tbCreateBody(world, &def);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbPolygon box = tbMakeBox(50.0f, 0.5f);
-	tbCreatePolygonShape(ground, &shapeDef, &box);
-	return ground;
-}
-
-/// A 1 m dynamic box resting on the ground at x.
-static tbBodyId MakeBox(tbWorldId world, float x)
-{
-	tbBodyDef def = tbDefaultBodyDef();
-	def.type = tb_dynamicBody;
-	def.position = tbMakeVec2(x, 0.5f);
-	tbBodyId body = tbCreateBody(world, &def);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbCreatePolygonShape(body, &shapeDef, &box);
-	return body;
-}
-
-static void Run(tbWorldId world, int steps)
-{
-	for (int i = 0; i < steps; ++i)
-	{
-		tbWorld_Step(world, 1.0f / 60.0f, 4);
-	}
-}
+#include "test_helpers.h"
 
 // --- teleporting wakes what rests on the body --------------------------------------------------
 
@@ -57,12 +26,12 @@ Test(api_changes, teleport_wakes_resting_neighbours)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	tbBodyId ground = MakeGround(world);
-	tbBodyId box = MakeBox(world, 0.0f);
-	Run(world, 90); // 1.5 s: the box settles and, after TB_TIME_TO_SLEEP = 0.5 s at rest, sleeps
+	tbBodyId ground = tbShape_GetBody(CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, NULL));
+	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 0.5f), 0.5f, 0.5f, 1.0f);
+	StepWorld(world, 90, 1.0f / 60.0f, 4); // 1.5 s: the box settles and, after TB_TIME_TO_SLEEP = 0.5 s at rest, sleeps
 	cr_assert(tbBody_IsAwake(box) == false, "the resting box should be asleep before the teleport");
-	cr_assert(tbBody_SetTransform(ground, tbMakeVec2(0.0f, -20.0f), tb_rot_identity));
-	Run(world, 60);
+	cr_assert(tbBody_SetTransform(ground, tbMakeVec2(0.0f, -20.0f), tbRot_identity));
+	StepWorld(world, 60, 1.0f / 60.0f, 4);
 	float y = tbBody_GetPosition(box).y;
 	cr_assert_lt(y, 0.5f - 2.0f, "the box should fall once its support is gone; it is at y = %g", (double)y);
 	tbDestroyWorld(world);
@@ -77,14 +46,16 @@ Test(api_changes, destroy_end_event_reported_after_next_step)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	MakeGround(world);
-	tbBodyId box = MakeBox(world, 0.0f);
-	Run(world, 10);
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = true; // one shape of a contact enabling them reports its events
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, &groundDef);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 0.5f), 0.5f, 0.5f, 1.0f);
+	StepWorld(world, 10, 1.0f / 60.0f, 4);
 	cr_assert_eq(tbWorld_GetContactEvents(world).endCount, 0, "the box is still resting: no end events yet");
 	tbShapeId boxShape;
 	cr_assert_eq(tbBody_GetShapes(box, &boxShape, 1), 1);
 	tbDestroyBody(box);
-	Run(world, 1);
+	StepWorld(world, 1, 1.0f / 60.0f, 4);
 	tbContactEvents events = tbWorld_GetContactEvents(world);
 	cr_assert_eq(events.endCount, 1, "destroying the touching box must report one end event, got %d", events.endCount);
 	bool namesBox = memcmp(&events.endEvents[0].shapeIdA, &boxShape, sizeof(boxShape)) == 0 ||
@@ -92,7 +63,7 @@ Test(api_changes, destroy_end_event_reported_after_next_step)
 	cr_assert(namesBox, "the end event should name the destroyed box's shape");
 	cr_assert(tbShape_IsValid(events.endEvents[0].shapeIdA) == false || tbShape_IsValid(events.endEvents[0].shapeIdB) == false,
 			  "one shape of the event is destroyed, and its id says so");
-	Run(world, 1);
+	StepWorld(world, 1, 1.0f / 60.0f, 4);
 	cr_assert_eq(tbWorld_GetContactEvents(world).endCount, 0, "the event is reported once");
 	tbDestroyWorld(world);
 }
@@ -106,19 +77,21 @@ Test(api_changes, event_array_stays_valid_while_destroying)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	MakeGround(world);
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = true; // one shape of a contact enabling them reports its events
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, &groundDef);
 	tbBodyId boxes[17];
 	for (int i = 0; i < 17; ++i)
 	{
-		boxes[i] = MakeBox(world, 2.0f * (float)i - 16.0f);
+		boxes[i] = CreateBox(world, tb_dynamicBody, tbMakeVec2(2.0f * (float)i - 16.0f, 0.5f), 0.5f, 0.5f, 1.0f);
 	}
-	Run(world, 5);
+	StepWorld(world, 5, 1.0f / 60.0f, 4);
 	for (int i = 0; i < 16; ++i)
 	{
 		tbVec2 p = tbBody_GetPosition(boxes[i]);
-		tbBody_SetTransform(boxes[i], tbMakeVec2(p.x, 10.0f), tb_rot_identity);
+		tbBody_SetTransform(boxes[i], tbMakeVec2(p.x, 10.0f), tbRot_identity);
 	}
-	Run(world, 1);
+	StepWorld(world, 1, 1.0f / 60.0f, 4);
 	tbContactEvents events = tbWorld_GetContactEvents(world);
 	cr_assert_eq(events.endCount, 16, "the 16 lifted boxes end their touches, got %d", events.endCount);
 	tbDestroyBody(boxes[16]);
@@ -159,16 +132,18 @@ Test(api_changes, query_callback_cannot_mutate, .init = SetupErrors, .fini = Tea
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	MakeGround(world);
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = true; // one shape of a contact enabling them reports its events
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, &groundDef);
 	for (int i = 0; i < 20; ++i)
 	{
-		MakeBox(world, 2.0f * (float)i - 20.0f);
+		CreateBox(world, tb_dynamicBody, tbMakeVec2(2.0f * (float)i - 20.0f, 0.5f), 0.5f, 0.5f, 1.0f);
 	}
-	Run(world, 1);
+	StepWorld(world, 1, 1.0f / 60.0f, 4);
 	DestroyContext c = {0, 0};
 	tbAABB all = {{-60.0f, -5.0f}, {60.0f, 5.0f}};
 	int before = s_errors;
-	cr_assert(tbWorld_OverlapAABB(world, tbPos_zero, all, tbDefaultQueryFilter(), DestroyInCallback, &c));
+	cr_assert(tbWorld_OverlapAABB(world, tbPos_zero, all, tbDefaultQueryFilter(), DestroyInCallback, &c).leafVisits > 0);
 	cr_assert_eq(c.calls, 21, "21 shapes (ground and 20 boxes) overlap the box, got %d", c.calls);
 	cr_assert_eq(c.invalidReported, 0, "a query must never report a destroyed shape");
 	cr_assert_eq(tbWorld_GetCounters(world).bodyCount, 21, "the destroys are refused; all 21 bodies remain");
@@ -182,13 +157,6 @@ Test(api_changes, query_callback_cannot_mutate, .init = SetupErrors, .fini = Tea
 }
 
 // --- shape queries check their geometry -------------------------------------------------------
-
-static bool CountOverlap(tbShapeId shapeId, void* context)
-{
-	(void)shapeId;
-	*(int*)context += 1;
-	return true;
-}
 
 static float CountCast(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
 {
@@ -206,7 +174,9 @@ Test(api_changes, shape_queries_check_geometry, .init = SetupErrors, .fini = Tea
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&worldDef);
-	MakeGround(world);
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = true; // one shape of a contact enabling them reports its events
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 50.0f, 0.5f, &groundDef);
 	tbVec2 zero = {0.0f, 0.0f};
 	tbShapeProxy circle = tbMakeProxy(&zero, 1, 0.5f);
 	circle.radius = NAN;
@@ -215,12 +185,12 @@ Test(api_changes, shape_queries_check_geometry, .init = SetupErrors, .fini = Tea
 	polygon.count = 100;
 	int count = 0;
 	int before = s_errors;
-	cr_assert(tbWorld_OverlapShape(world, tbPos_zero, &circle, tbDefaultQueryFilter(), CountOverlap, &count) == false);
+	cr_assert(tbWorld_OverlapShape(world, tbPos_zero, &circle, tbDefaultQueryFilter(), CountOverlap, &count).leafVisits == 0);
 	cr_assert_eq(s_errors, before + 1);
 	cr_assert(strstr(s_lastError, "tbWorld_OverlapShape") != NULL && strstr(s_lastError, "radius") != NULL, "'%s'",
 			  s_lastError);
 	cr_assert(tbWorld_CastShape(world, tbPos_zero, &polygon, tbMakeVec2(0.0f, -1.0f), tbDefaultQueryFilter(),
-								CountCast, &count) == false);
+								CountCast, &count).leafVisits == 0);
 	cr_assert_eq(s_errors, before + 2);
 	cr_assert(strstr(s_lastError, "tbWorld_CastShape") != NULL && strstr(s_lastError, "count") != NULL, "'%s'",
 			  s_lastError);
@@ -237,7 +207,7 @@ Test(api_changes, shape_queries_check_geometry, .init = SetupErrors, .fini = Tea
 Test(api_changes, set_type_keeps_origin_velocity)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();
-	worldDef.gravity = tb_vec2_zero;
+	worldDef.gravity = tbVec2_zero;
 	tbWorldId world = tbCreateWorld(&worldDef);
 	tbBodyDef def = tbDefaultBodyDef();
 	def.type = tb_dynamicBody;
@@ -245,7 +215,7 @@ Test(api_changes, set_type_keeps_origin_velocity)
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbCircle circle = {{1.0f, 0.0f}, 0.25f};
 	tbCreateCircleShape(body, &shapeDef, &circle);
-	tbBody_SetLinearVelocity(body, tb_vec2_zero);
+	tbBody_SetLinearVelocity(body, tbVec2_zero);
 	tbBody_SetAngularVelocity(body, 2.0f);
 	cr_assert(tbBody_SetType(body, tb_kinematicBody));
 	tbVec2 v = tbBody_GetLinearVelocity(body);

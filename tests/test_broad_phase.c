@@ -4,6 +4,7 @@
 #include <criterion/criterion.h>
 
 #include "broad_phase/broad_phase.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -11,12 +12,6 @@
 
 // Linear congruential generator, constants from Numerical Recipes (Press et al., §7.1).
 static uint32_t s_seed = 1u;
-
-static float RandomFloat(float lower, float upper)
-{
-	s_seed = 1664525u * s_seed + 1013904223u;
-	return lower + (upper - lower) * (float)(s_seed >> 8) / 16777216.0f;
-}
 
 #define METHOD_COUNT 4
 #define REFERENCE (METHOD_COUNT - 1)
@@ -61,12 +56,14 @@ static void CreateScene(Scene* scene, int count, float halfWidth, float staticFr
 	for (int i = 0; i < count; ++i)
 	{
 		// Sizes from 0.2 m to 2 m: a factor of 10.
-		float w = RandomFloat(0.2f, 2.0f), h = RandomFloat(0.2f, 2.0f);
-		float x = RandomFloat(-halfWidth, halfWidth - w), y = RandomFloat(-halfWidth, halfWidth - h);
+		float w = RandomFloat(&s_seed, 0.2f, 2.0f), h = RandomFloat(&s_seed, 0.2f, 2.0f);
+		float x = RandomFloat(&s_seed, -halfWidth, halfWidth - w), y = RandomFloat(&s_seed, -halfWidth, halfWidth - h);
 		scene->tight[i] = (tbAABB){{x, y}, {x + w, y + h}};
 		scene->fat[i] = tbAABB_Fatten(scene->tight[i], TB_AABB_MARGIN);
-		scene->isStatic[i] = RandomFloat(0.0f, 1.0f) < staticFraction;
-		scene->velocity[i] = scene->isStatic[i] ? tb_vec2_zero : (tbVec2){RandomFloat(-3.0f, 3.0f), RandomFloat(-3.0f, 3.0f)};
+		scene->isStatic[i] = RandomFloat(&s_seed, 0.0f, 1.0f) < staticFraction;
+		scene->velocity[i] = scene->isStatic[i] ? tbVec2_zero
+												: (tbVec2){RandomFloat(&s_seed, -3.0f, 3.0f),
+														   RandomFloat(&s_seed, -3.0f, 3.0f)};
 		scene->alive[i] = true;
 		tbProxyType type = scene->isStatic[i] ? tb_proxyStatic : tb_proxyMovable;
 		for (int m = 0; m < METHOD_COUNT; ++m)
@@ -179,7 +176,7 @@ Test(broad_phase, identical_pairs_2000_moving_boxes_200_steps)
 			{
 				if (scene->isStatic[i])
 				{
-					tbVec2 d = {RandomFloat(-2.0f, 2.0f), RandomFloat(-2.0f, 2.0f)};
+					tbVec2 d = {RandomFloat(&s_seed, -2.0f, 2.0f), RandomFloat(&s_seed, -2.0f, 2.0f)};
 					scene->tight[i] = (tbAABB){tbAdd(scene->tight[i].lowerBound, d), tbAdd(scene->tight[i].upperBound, d)};
 					MoveBody(scene, i, tbAABB_Fatten(scene->tight[i], TB_AABB_MARGIN));
 					break;
@@ -320,12 +317,6 @@ static bool CollectShape(int proxyKey, int shapeIndex, void* context)
 	return true;
 }
 
-static int CompareInts(const void* a, const void* b)
-{
-	int x = *(const int*)a, y = *(const int*)b;
-	return (x > y) - (x < y);
-}
-
 typedef struct ClosestHit
 {
 	const tbBroadPhase* bp;
@@ -364,9 +355,9 @@ Test(broad_phase, queries_and_ray_casts_agree_across_methods)
 	static QueryResult results[METHOD_COUNT];
 	for (int q = 0; q < 50; ++q)
 	{
-		float x = RandomFloat(-20.0f, 20.0f), y = RandomFloat(-20.0f, 20.0f);
-		tbAABB box = {{x, y}, {x + RandomFloat(0.5f, 6.0f), y + RandomFloat(0.5f, 6.0f)}};
-		tbRayCastInput ray = {{x, y}, {RandomFloat(-30.0f, 30.0f), RandomFloat(-30.0f, 30.0f)}, 1.0f};
+		float x = RandomFloat(&s_seed, -20.0f, 20.0f), y = RandomFloat(&s_seed, -20.0f, 20.0f);
+		tbAABB box = {{x, y}, {x + RandomFloat(&s_seed, 0.5f, 6.0f), y + RandomFloat(&s_seed, 0.5f, 6.0f)}};
+		tbRayCastInput ray = {{x, y}, {RandomFloat(&s_seed, -30.0f, 30.0f), RandomFloat(&s_seed, -30.0f, 30.0f)}, 1.0f};
 		float fractions[METHOD_COUNT];
 		for (int m = 0; m < METHOD_COUNT; ++m)
 		{
@@ -424,7 +415,7 @@ Test(broad_phase, mixed_sizes_and_huge_proxies_agree)
 	}
 	for (int i = 0; i < 100; ++i)
 	{
-		float x = RandomFloat(-29.0f, 29.0f), y = RandomFloat(-29.0f, 29.0f);
+		float x = RandomFloat(&s_seed, -29.0f, 29.0f), y = RandomFloat(&s_seed, -29.0f, 29.0f);
 		scene->tight[i] = (tbAABB){{x, y}, {x + 0.05f, y + 0.05f}}; // grains among the boxes
 		MoveBody(scene, i, tbAABB_Fatten(scene->tight[i], 0.01f));
 	}
@@ -440,8 +431,9 @@ Test(broad_phase, mixed_sizes_and_huge_proxies_agree)
 		}
 		UpdateAndCompare(scene, step);
 		ValidateAll(scene);
-		tbAABB box = {{RandomFloat(-40.0f, 20.0f), RandomFloat(-40.0f, 20.0f)}, {0.0f, 0.0f}};
-		box.upperBound = tbAdd(box.lowerBound, (tbVec2){RandomFloat(0.1f, 20.0f), RandomFloat(0.1f, 20.0f)});
+		tbAABB box = {{RandomFloat(&s_seed, -40.0f, 20.0f), RandomFloat(&s_seed, -40.0f, 20.0f)}, {0.0f, 0.0f}};
+		box.upperBound =
+			tbAdd(box.lowerBound, (tbVec2){RandomFloat(&s_seed, 0.1f, 20.0f), RandomFloat(&s_seed, 0.1f, 20.0f)});
 		for (int m = 0; m < METHOD_COUNT; ++m)
 		{
 			hits[m].bp = &scene->bp[m];

@@ -7,19 +7,13 @@
 #include "tumble/tumble.h"
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <string.h>
 
 #define TIME_STEP (1.0f / 60.0f)
 #define SUB_STEPS 4
-
-static tbWorldId CreateWorld(void)
-{
-	tbWorldDef def = tbDefaultWorldDef();
-	def.gravity = tbMakeVec2(0.0f, -10.0f);
-	return tbCreateWorld(&def);
-}
 
 static tbShapeId CreateStaticBox(tbWorldId world, tbVec2 position, float halfWidth, float halfHeight, tbShapeDef* def)
 {
@@ -28,17 +22,6 @@ static tbShapeId CreateStaticBox(tbWorldId world, tbVec2 position, float halfWid
 	tbBodyId body = tbCreateBody(world, &bodyDef);
 	tbPolygon box = tbMakeBox(halfWidth, halfHeight);
 	return tbCreatePolygonShape(body, def, &box);
-}
-
-static tbShapeId CreateBall(tbWorldId world, tbVec2 position, tbVec2 velocity, tbShapeDef* def, tbBodyId* bodyOut)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.type = tb_dynamicBody;
-	bodyDef.position = position;
-	bodyDef.linearVelocity = velocity;
-	*bodyOut = tbCreateBody(world, &bodyDef);
-	tbCircle circle = {{0.0f, 0.0f}, 0.25f};
-	return tbCreateCircleShape(*bodyOut, def, &circle);
 }
 
 // --- custom filter -------------------------------------------------------------------------------
@@ -62,15 +45,16 @@ static bool KeepGhostOut(tbShapeId shapeIdA, tbShapeId shapeIdB, void* context)
 // symplectic Euler error of 120 steps (½·g·t·dt/4 = 0.04 m).
 Test(callbacks, custom_filter_keeps_shapes_apart)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbShapeDef groundDef = tbDefaultShapeDef();
 	CreateStaticBox(world, tbMakeVec2(0.0f, -1.0f), 20.0f, 1.0f, &groundDef);
 	tbShapeDef plain = tbDefaultShapeDef();
 	tbShapeDef custom = tbDefaultShapeDef();
 	custom.enableCustomFiltering = true;
 	tbBodyId solid, ghost;
-	CreateBall(world, tbMakeVec2(-2.0f, 3.0f), tbMakeVec2(0.0f, 0.0f), &plain, &solid);
-	FilterContext context = {CreateBall(world, tbMakeVec2(2.0f, 3.0f), tbMakeVec2(0.0f, 0.0f), &custom, &ghost), 0};
+	CreateBall(world, tbMakeVec2(-2.0f, 3.0f), tbMakeVec2(0.0f, 0.0f), 0.25f, &plain, &solid);
+	FilterContext context = {
+		CreateBall(world, tbMakeVec2(2.0f, 3.0f), tbMakeVec2(0.0f, 0.0f), 0.25f, &custom, &ghost), 0};
 	tbWorld_SetCustomFilterCallback(world, KeepGhostOut, &context);
 	for (int step = 0; step < 120; ++step)
 	{
@@ -128,7 +112,7 @@ Test(callbacks, pre_solve_makes_a_one_way_platform)
 {
 	for (int variant = 0; variant < 2; ++variant)
 	{
-		tbWorldId world = CreateWorld();
+		tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 		tbShapeDef platformDef = tbDefaultShapeDef();
 		platformDef.enablePreSolveEvents = true;
 		PlatformContext context;
@@ -140,7 +124,7 @@ Test(callbacks, pre_solve_makes_a_one_way_platform)
 		}
 		tbShapeDef ballDef = tbDefaultShapeDef();
 		tbBodyId ball;
-		CreateBall(world, tbMakeVec2(0.0f, 2.0f), tbMakeVec2(0.0f, 12.0f), &ballDef, &ball);
+		CreateBall(world, tbMakeVec2(0.0f, 2.0f), tbMakeVec2(0.0f, 12.0f), 0.25f, &ballDef, &ball);
 		float highest = 0.0f;
 		for (int step = 0; step < 240; ++step)
 		{
@@ -176,14 +160,14 @@ static void BreakTheNormal(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* m
 // ball still lands and rests on the ground at y = 0.25 ± 0.01.
 Test(callbacks, a_broken_manifold_from_pre_solve_is_refused, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbShapeDef groundDef = tbDefaultShapeDef();
 	groundDef.enablePreSolveEvents = true;
 	CreateStaticBox(world, tbMakeVec2(0.0f, -1.0f), 20.0f, 1.0f, &groundDef);
 	tbWorld_SetPreSolveCallback(world, BreakTheNormal, NULL, NULL);
 	tbShapeDef ballDef = tbDefaultShapeDef();
 	tbBodyId ball;
-	CreateBall(world, tbMakeVec2(0.0f, 1.0f), tbMakeVec2(0.0f, 0.0f), &ballDef, &ball);
+	CreateBall(world, tbMakeVec2(0.0f, 1.0f), tbMakeVec2(0.0f, 0.0f), 0.25f, &ballDef, &ball);
 	int before = s_errors;
 	for (int step = 0; step < 90; ++step)
 	{
@@ -231,7 +215,7 @@ Test(callbacks, an_impossible_overlap_from_pre_solve_is_refused, .init = SetupEr
 		tbShapeDef ballDef = tbDefaultShapeDef();
 		ballDef.enablePreSolveEvents = true;
 		tbBodyId ball;
-		CreateBall(world, tbMakeVec2(0.0f, 0.25f), tbMakeVec2(0.0f, 0.0f), &ballDef, &ball);
+		CreateBall(world, tbMakeVec2(0.0f, 0.25f), tbMakeVec2(0.0f, 0.0f), 0.25f, &ballDef, &ball);
 		tbBodyDef boxDef = tbDefaultBodyDef();
 		boxDef.type = tb_dynamicBody;
 		boxDef.position = tbMakeVec2(2.0f, 0.5f);
@@ -278,7 +262,7 @@ Test(callbacks, a_deep_overlap_from_pre_solve_stays_under_the_speed_limit, .init
 		tbShapeDef ballDef = tbDefaultShapeDef();
 		ballDef.enablePreSolveEvents = true;
 		tbBodyId ball;
-		CreateBall(world, tbMakeVec2(0.0f, 0.25f), tbMakeVec2(0.0f, 0.0f), &ballDef, &ball);
+		CreateBall(world, tbMakeVec2(0.0f, 0.25f), tbMakeVec2(0.0f, 0.0f), 0.25f, &ballDef, &ball);
 		DeepContext context = {-0.7f, 0};
 		tbWorld_SetPreSolveCallback(world, WriteSeparation, NULL, &context);
 		int before = s_errors;
@@ -340,7 +324,7 @@ Test(callbacks, far_anchors_and_changed_impulses_from_pre_solve_are_refused, .in
 			tbShapeDef ballDef = tbDefaultShapeDef();
 			ballDef.enablePreSolveEvents = true;
 			tbBodyId ball;
-			CreateBall(world, tbMakeVec2(0.0f, 0.5f), tbMakeVec2(0.0f, 0.0f), &ballDef, &ball);
+			CreateBall(world, tbMakeVec2(0.0f, 0.5f), tbMakeVec2(0.0f, 0.0f), 0.25f, &ballDef, &ball);
 			FarContext context = {field, 0};
 			tbWorld_SetPreSolveCallback(world, WriteFarAnchorsAndImpulses, NULL, &context);
 			int before = s_errors;

@@ -9,18 +9,12 @@
 #include "tumble/tumble.h"
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 #include <math.h>
 
 #define TIME_STEP (1.0f / 60.0f)
 #define SEGMENTS 100
-
-static tbWorldId CreateWorld(void)
-{
-	tbWorldDef def = tbDefaultWorldDef();
-	def.gravity = tbMakeVec2(0.0f, -10.0f);
-	return tbCreateWorld(&def);
-}
 
 /// Flat ground from x = 0 to x = SEGMENTS at y = 0, solid below: points run right to left, with a
 /// ghost point beyond each end.
@@ -104,7 +98,7 @@ Test(chain, box_and_capsule_cross_seams_without_bumps)
 	{
 		for (int s = 0; s < 3; ++s)
 		{
-			tbWorldId world = CreateWorld();
+			tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 			CreateFlatChain(world);
 			tbBodyId body = CreateMover(world, (Mover)kind);
 			float worst = MaxVerticalSpeed(world, body, speeds[s]);
@@ -121,7 +115,7 @@ Test(chain, box_and_capsule_cross_seams_without_bumps)
 // from above hits the ground at y = 0, a ray from below does not.
 Test(chain, is_one_sided)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	CreateFlatChain(world);
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	bodyDef.type = tb_dynamicBody;
@@ -154,7 +148,7 @@ Test(chain, is_one_sided)
 // square loop (solid inside) rests on its top face at the box's half height above it.
 Test(chain, loops_hold_inside_or_outside)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbBodyDef groundDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &groundDef);
 	tbVec2 ring[16];
@@ -188,7 +182,7 @@ Test(chain, loops_hold_inside_or_outside)
 	shapeDef.material.restitution = 0.8f;
 	tbCircle circle = {{0.0f, 0.0f}, 0.3f};
 	tbCreateCircleShape(ball, &shapeDef, &circle);
-	bodyDef.linearVelocity = tb_vec2_zero;
+	bodyDef.linearVelocity = tbVec2_zero;
 	bodyDef.position = tbMakeVec2(21.0f, 3.0f);
 	tbBodyId box = tbCreateBody(world, &bodyDef);
 	tbPolygon boxShape = tbMakeBox(0.5f, 0.5f);
@@ -213,7 +207,7 @@ Test(chain, loops_hold_inside_or_outside)
 // speed and stops on the half with friction 1 within v²/(2μg) = 9/20 = 0.45 m of reaching it.
 Test(chain, materials_per_segment)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbVec2 points[13];
 	for (int i = 0; i < 13; ++i)
 	{
@@ -271,7 +265,7 @@ Test(chain, materials_per_segment)
 // Bad chains are refused with one error naming the problem, and nothing is created.
 Test(chain, bad_input_is_refused, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &bodyDef);
 	tbVec2 good[5] = {{4, 0}, {3, 0}, {2, 0}, {1, 0}, {0, 0}};
@@ -357,7 +351,7 @@ Test(chain, bad_input_is_refused, .init = SetupErrors, .fini = TeardownErrors)
 Test(chain, memory_is_returned)
 {
 	int before = tbGetByteCount();
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	CreateFlatChain(world);
 	tbBodyId body = CreateMover(world, MoverBox);
 	(void)body;
@@ -386,14 +380,14 @@ Test(chain, straight_joint_gives_the_face_normal)
 	{
 		float x = -0.6f + 0.01f * (float)i;
 		tbTransform xf = {{x, 0.249f}, tbMakeRot(0.0f)};
-		tbManifold m = WorldCollideChainSegmentAndCapsule(&chain, tb_transform_identity, &capsule, xf);
+		tbManifold m = WorldCollideChainSegmentAndCapsule(&chain, tbTransform_identity, &capsule, xf);
 		if (m.pointCount > 0)
 		{
 			touching += 1;
 			cr_assert(m.normal.y >= 1.0f - 1e-6f, "x = %g: chain normal (%g, %g)", (double)x, (double)m.normal.x,
 					  (double)m.normal.y);
 		}
-		tbManifold p = WorldCollideSegmentAndCapsule(&plain, tb_transform_identity, &capsule, xf);
+		tbManifold p = WorldCollideSegmentAndCapsule(&plain, tbTransform_identity, &capsule, xf);
 		if (p.pointCount > 0)
 		{
 			worstPlain = fminf(worstPlain, p.normal.y);
@@ -422,8 +416,8 @@ Test(chain, convex_joint_is_reported_once)
 		float theta = (float)degrees * 3.14159265f / 180.0f;
 		tbVec2 normal = {-sinf(theta), cosf(theta)};
 		tbTransform xf = {tbMulSV(0.499f, normal), tbMakeRot(0.0f)};
-		tbManifold a = WorldCollideChainSegmentAndCircle(&flat, tb_transform_identity, &circle, xf);
-		tbManifold b = WorldCollideChainSegmentAndCircle(&slope, tb_transform_identity, &circle, xf);
+		tbManifold a = WorldCollideChainSegmentAndCircle(&flat, tbTransform_identity, &circle, xf);
+		tbManifold b = WorldCollideChainSegmentAndCircle(&slope, tbTransform_identity, &circle, xf);
 		cr_assert_eq((a.pointCount > 0) + (b.pointCount > 0), 1, "%d°: reported by %d segments", degrees,
 					 (a.pointCount > 0) + (b.pointCount > 0));
 		tbManifold m = a.pointCount > 0 ? a : b;
@@ -443,7 +437,7 @@ Test(chain, convex_joint_is_reported_once)
 static float HighestPoint(float speedFraction)
 {
 	const float R = 5.0f, r = 0.25f, g = 10.0f;
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbBodyDef groundDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &groundDef);
 	static tbVec2 loop[1024];
@@ -510,17 +504,17 @@ Test(chain, random_placements_give_valid_manifolds)
 		if (kind == 0)
 		{
 			tbCircle circle = {{0.0f, 0.0f}, size};
-			m = WorldCollideChainSegmentAndCircle(&segment, tb_transform_identity, &circle, xf);
+			m = WorldCollideChainSegmentAndCircle(&segment, tbTransform_identity, &circle, xf);
 		}
 		else if (kind == 1)
 		{
 			tbCapsule capsule = {{-size, 0.0f}, {size, 0.0f}, 0.5f * size};
-			m = WorldCollideChainSegmentAndCapsule(&segment, tb_transform_identity, &capsule, xf);
+			m = WorldCollideChainSegmentAndCapsule(&segment, tbTransform_identity, &capsule, xf);
 		}
 		else
 		{
 			tbPolygon box = kind == 2 ? tbMakeBox(size, 0.5f * size) : tbMakeRoundedBox(size, 0.5f * size, 0.1f * size);
-			m = WorldCollideChainSegmentAndPolygon(&segment, tb_transform_identity, &box, xf);
+			m = WorldCollideChainSegmentAndPolygon(&segment, tbTransform_identity, &box, xf);
 		}
 		cr_assert(m.pointCount >= 0 && m.pointCount <= 2);
 		if (xf.p.y < 0.0f)

@@ -43,7 +43,7 @@ Test(character, walks_jumps_and_pushes_through_the_platformer_level)
 	cr_assert_leq(scene->bodyCount, 64);
 	for (int i = 0; i < scene->bodyCount; ++i)
 	{
-		before[i] = i == hero ? tb_vec2_zero : tbBody_GetPosition(sw.bodyIds[i]);
+		before[i] = i == hero ? tbVec2_zero : tbBody_GetPosition(sw.bodyIds[i]);
 	}
 	tbQueryFilter filter = tbDefaultQueryFilter();
 	filter.maskBits &= ~CHARACTER_CATEGORY;

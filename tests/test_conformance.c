@@ -9,18 +9,11 @@
 #include <criterion/criterion.h>
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-static void Step(tbWorldId world, int steps)
-{
-	for (int i = 0; i < steps; ++i)
-	{
-		tbWorld_Step(world, 1.0f / 60.0f, 4);
-	}
-}
 
 static tbChainSegment MakeChainSegment(float half, float ghost)
 {
@@ -59,7 +52,7 @@ Test(conformance, orphan_chain_segment_holds_a_ball_and_can_be_replaced, .init =
 	tbBodyId ball = tbCreateBody(world, &bodyDef);
 	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 	tbCreateCircleShape(ball, &shapeDef, &circle);
-	Step(world, 120);
+	StepWorld(world, 120, 1.0f / 60.0f, 4);
 	cr_expect_float_eq(tbBody_GetPosition(ball).y, 0.5f, 0.01f, "ball at %.4f", (double)tbBody_GetPosition(ball).y);
 
 	// Replaced by a longer one; an owned chain segment may not be replaced.
@@ -99,12 +92,12 @@ static tbVec2 DropBox(tbWorldDef worldDef, int workerCountAfter)
 	tbBodyId box = tbCreateBody(world, &bodyDef);
 	tbPolygon square = tbMakeBox(0.5f, 0.5f);
 	tbCreatePolygonShape(box, &shapeDef, &square);
-	Step(world, 30);
+	StepWorld(world, 30, 1.0f / 60.0f, 4);
 	if (workerCountAfter > 0)
 	{
 		tbWorld_SetWorkerCount(world, workerCountAfter);
 	}
-	Step(world, 60);
+	StepWorld(world, 60, 1.0f / 60.0f, 4);
 	tbVec2 p = tbBody_GetPosition(box);
 	tbDestroyWorld(world);
 	return p;
@@ -155,11 +148,11 @@ Test(conformance, per_body_contact_recycling)
 	tbPolygon square = tbMakeBox(0.5f, 0.5f);
 	tbCreatePolygonShape(recycled, &shapeDef, &square);
 	tbCreatePolygonShape(fresh, &shapeDef, &square);
-	Step(world, 60);
+	StepWorld(world, 60, 1.0f / 60.0f, 4);
 	tbBody_EnableContactRecycling(fresh, true);
 	cr_expect(tbBody_IsContactRecyclingEnabled(fresh));
 	tbBody_EnableContactRecycling(recycled, false);
-	Step(world, 30);
+	StepWorld(world, 30, 1.0f / 60.0f, 4);
 	cr_expect_float_eq(tbBody_GetPosition(recycled).y, tbBody_GetPosition(fresh).y, 1e-4f);
 	tbDestroyWorld(world);
 }
@@ -231,11 +224,11 @@ Test(conformance, target_transform_of_a_sleeping_body)
 	tbCreatePolygonShape(platform, &shapeDef, &slab);
 	cr_assert_not(tbBody_IsAwake(platform));
 	float dt = 1.0f / 60.0f;
-	tbTransform far = {{1.0f, 0.0f}, tb_rot_identity};
+	tbTransform far = {{1.0f, 0.0f}, tbRot_identity};
 	cr_assert(tbBody_SetTargetTransform(platform, far, dt, false));
 	cr_expect_not(tbBody_IsAwake(platform));
 	cr_expect_eq(tbBody_GetLinearVelocity(platform).x, 0.0f);
-	tbTransform creep = {{1e-4f, 0.0f}, tb_rot_identity}; // 6 mm/s, below the 0.05 m/s threshold
+	tbTransform creep = {{1e-4f, 0.0f}, tbRot_identity}; // 6 mm/s, below the 0.05 m/s threshold
 	cr_assert(tbBody_SetTargetTransform(platform, creep, dt, true));
 	cr_expect_not(tbBody_IsAwake(platform));
 	cr_assert(tbBody_SetTargetTransform(platform, far, dt, true));

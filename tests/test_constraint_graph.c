@@ -341,10 +341,15 @@ Test(constraint_graph, no_constraints_no_blocks)
 // Island partitions (constraint_graph.c, tbCutPartitions): with workers, separate runs of the
 // solver bodies become partitions, each colour's blocks holding one run's contacts after another.
 
-static void* NeverCalledEnqueue(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* userContext)
+static void* NeverCalledEnqueue(tbTaskCallback* task, void* taskContext, void* userContext)
 {
-	(void)task, (void)itemCount, (void)minRange, (void)taskContext, (void)userContext;
+	(void)task, (void)taskContext, (void)userContext;
 	return NULL;
+}
+
+static void NeverCalledFinish(void* userTask, void* userContext)
+{
+	(void)userTask, (void)userContext;
 }
 
 /// Two chains on the ground: bodies [0, firstRun) and [firstRun, 20), each body also on the static
@@ -372,7 +377,8 @@ static void ColorForTwoWorkers(tbStepContext* context, tbWorld* world, tbContact
 							   int linkA, int linkB)
 {
 	memset(world, 0, sizeof(*world));
-	world->def.enqueueTask = NeverCalledEnqueue; // only its presence counts: the colouring calls no task
+	world->def.enqueueTask = NeverCalledEnqueue; // only their presence counts: the colouring calls no task
+	world->def.finishTask = NeverCalledFinish;
 	world->def.workerCount = 2;
 	world->def.solver = tb_solverSoft;
 	memset(context, 0, sizeof(*context));
@@ -517,7 +523,7 @@ static Run RunBoxes(bool wide, Variant variant, int stepCount)
 	}
 	else
 	{
-		AddBox(worldId, tb_staticBody, tbMakeVec2(0.0f, -0.5f), 0.0f, tb_vec2_zero, 0.0f, 100.0f, 0.0f);
+		AddBox(worldId, tb_staticBody, tbMakeVec2(0.0f, -0.5f), 0.0f, tbVec2_zero, 0.0f, 100.0f, 0.0f);
 	}
 	tbBodyId ids[BOX_COUNT];
 	for (int i = 0; i < BOX_COUNT; ++i)
@@ -625,7 +631,7 @@ Test(constraint_graph, a_body_with_more_contacts_than_colours_rests)
 	def.enableSleep = false;
 	tbWorldId worldId = tbCreateWorld(&def);
 	s_friction = 0.6f;
-	AddBox(worldId, tb_staticBody, tbMakeVec2(0.0f, -0.5f), 0.0f, tb_vec2_zero, 0.0f, 100.0f, 0.0f);
+	AddBox(worldId, tb_staticBody, tbMakeVec2(0.0f, -0.5f), 0.0f, tbVec2_zero, 0.0f, 100.0f, 0.0f);
 	tbBodyDef bd = tbDefaultBodyDef();
 	bd.type = tb_dynamicBody;
 	bd.position = tbMakeVec2(0.0f, 0.1f);
@@ -636,7 +642,7 @@ Test(constraint_graph, a_body_with_more_contacts_than_colours_rests)
 	tbBodyId boxes[30];
 	for (int i = 0; i < 30; ++i)
 	{
-		boxes[i] = AddBox(worldId, tb_dynamicBody, tbMakeVec2(-14.5f + (float)i, 0.7f), 0.0f, tb_vec2_zero, 0.0f, 0.25f,
+		boxes[i] = AddBox(worldId, tb_dynamicBody, tbMakeVec2(-14.5f + (float)i, 0.7f), 0.0f, tbVec2_zero, 0.0f, 0.25f,
 						  0.0f);
 	}
 	for (int i = 0; i < 180; ++i)

@@ -39,7 +39,7 @@ static void InitMini(MiniWorld* m, tbSolverMethod method, tbVec2 velocity, float
 	m->world.cache.solverContactCount = 1;
 	for (int i = 0; i < 2; ++i)
 	{
-		m->bodies[i].transform.q = tb_rot_identity;
+		m->bodies[i].transform.q = tbRot_identity;
 		m->bodies[i].solverIndex = TB_NULL_INDEX;
 		m->bodies[i].gravityScale = 1.0f;
 		m->shapes[i].bodyId = i;
@@ -61,7 +61,7 @@ static void InitMini(MiniWorld* m, tbSolverMethod method, tbVec2 velocity, float
 	m->contact.manifold.pointCount = 1;
 	m->contact.manifold.points[0].point = m->bodies[1].center;
 	m->contact.manifold.points[0].anchorA = m->bodies[1].center; // ground centre at the origin
-	m->contact.manifold.points[0].anchorB = tb_vec2_zero;
+	m->contact.manifold.points[0].anchorB = tbVec2_zero;
 	m->contact.manifold.points[0].separation = separation;
 }
 

@@ -100,7 +100,7 @@ static void CheckWall(tbGeometry geometry)
 		for (int i = 0; i < 4; ++i)
 		{
 			tbWorldId world = MakeWallWorld((tbContinuousMethod)method);
-			tbBodyId body = Launch(world, &geometry, kSpeeds[i], 0.0f, tb_rot_identity, false);
+			tbBodyId body = Launch(world, &geometry, kSpeeds[i], 0.0f, tbRot_identity, false);
 			cr_assert_not(PassesThrough(world, body), "method %d at %g m/s passed the wall", method, (double)kSpeeds[i]);
 			tbDestroyWorld(world);
 		}
@@ -109,7 +109,7 @@ static void CheckWall(tbGeometry geometry)
 	for (int i = 2; i < 4; ++i)
 	{
 		tbWorldId world = MakeWallWorld(tb_continuousOff);
-		tbBodyId body = Launch(world, &geometry, kSpeeds[i], 0.0f, tb_rot_identity, false);
+		tbBodyId body = Launch(world, &geometry, kSpeeds[i], 0.0f, tbRot_identity, false);
 		cr_assert(PassesThrough(world, body), "continuous off at %g m/s should tunnel", (double)kSpeeds[i]);
 		tbDestroyWorld(world);
 	}
@@ -149,7 +149,7 @@ Test(continuous, bullet_never_passes_thin_dynamic_plank)
 		tbPolygon box = tbMakeBox(0.05f, 2.0f);
 		tbCreatePolygonShape(plank, &sd, &box);
 		tbGeometry g = Circle(0.05f);
-		tbBodyId bullet = Launch(world, &g, 300.0f, 0.0f, tb_rot_identity, true);
+		tbBodyId bullet = Launch(world, &g, 300.0f, 0.0f, tbRot_identity, true);
 		bool through = false;
 		for (int i = 0; i < 30; ++i)
 		{
@@ -190,7 +190,7 @@ Test(continuous, bullet_never_passes_a_moving_kinematic_wall)
 		tbPolygon box = tbMakeBox(0.05f, 2.0f);
 		tbCreatePolygonShape(wall, &sd, &box);
 		tbGeometry g = Circle(0.05f);
-		tbBodyId fast = Launch(world, &g, 300.0f, 0.0f, tb_rot_identity, bullet == 1);
+		tbBodyId fast = Launch(world, &g, 300.0f, 0.0f, tbRot_identity, bullet == 1);
 		bool through = false;
 		for (int i = 0; i < 30; ++i)
 		{
@@ -250,7 +250,7 @@ Test(continuous, resting_scene_does_no_continuous_work)
 	tbBodyDef bd = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &bd);
 	tbShapeDef sd = tbDefaultShapeDef();
-	tbPolygon groundBox = tbMakeOffsetBox(20.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tb_rot_identity);
+	tbPolygon groundBox = tbMakeOffsetBox(20.0f, 1.0f, tbMakeVec2(0.0f, -1.0f), tbRot_identity);
 	tbCreatePolygonShape(ground, &sd, &groundBox);
 	bd.type = tb_dynamicBody;
 	for (int i = 0; i < 5; ++i)
@@ -284,7 +284,7 @@ Test(continuous, safety_factor_sets_which_bodies_are_swept, .init = SetupErrors,
 	{
 		tbWorldId world = MakeWallWorld(tb_continuousDefault);
 		tbGeometry disc = Circle(1.0f);
-		tbBodyId body = Launch(world, &disc, 24.0f, 0.0f, tb_rot_identity, false);
+		tbBodyId body = Launch(world, &disc, 24.0f, 0.0f, tbRot_identity, false);
 		cr_assert_float_eq(tbBody_GetSafetyFactor(body), 0.5f, 0.0f);
 		if (pass == 1)
 		{
@@ -299,7 +299,7 @@ Test(continuous, safety_factor_sets_which_bodies_are_swept, .init = SetupErrors,
 
 	tbWorldId world = MakeWallWorld(tb_continuousDefault);
 	tbGeometry disc = Circle(1.0f);
-	tbBodyId body = Launch(world, &disc, 24.0f, 0.0f, tb_rot_identity, false);
+	tbBodyId body = Launch(world, &disc, 24.0f, 0.0f, tbRot_identity, false);
 	int before = s_errors;
 	cr_assert_not(tbBody_SetSafetyFactor(body, -0.1f));
 	ExpectError(before, "tbBody_SetSafetyFactor", "safetyFactor");

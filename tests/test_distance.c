@@ -8,6 +8,7 @@
 #include <criterion/criterion.h>
 
 #include "tumble/collision.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,23 +20,16 @@
 // the same configurations.
 static uint32_t lcgState = 12345u;
 
-static float randomFloat(float lower, float upper)
-{
-	lcgState = 1664525u * lcgState + 1013904223u;
-	float unit = (float)(lcgState >> 8) * (1.0f / 16777216.0f);
-	return lower + (upper - lower) * unit;
-}
-
 // Random convex polygon of about `size` metres from 3 to 8 random points (tbComputeHull).
 static tbPolygon randomPolygon(float size)
 {
 	for (;;)
 	{
 		tbVec2 points[TB_MAX_POLYGON_VERTICES];
-		int count = 3 + (int)randomFloat(0.0f, 5.999f);
+		int count = 3 + (int)RandomFloat(&lcgState, 0.0f, 5.999f);
 		for (int i = 0; i < count; ++i)
 		{
-			points[i] = tbMakeVec2(randomFloat(-size, size), randomFloat(-size, size));
+			points[i] = tbMakeVec2(RandomFloat(&lcgState, -size, size), RandomFloat(&lcgState, -size, size));
 		}
 		tbHull hull = tbComputeHull(points, count);
 		if (hull.count >= 3)
@@ -47,8 +41,8 @@ static tbPolygon randomPolygon(float size)
 
 static tbTransform randomTransform(float extent)
 {
-	tbTransform xf = {{randomFloat(-extent, extent), randomFloat(-extent, extent)},
-					  tbMakeRot(randomFloat(-TB_PI, TB_PI))};
+	tbTransform xf = {{RandomFloat(&lcgState, -extent, extent), RandomFloat(&lcgState, -extent, extent)},
+					  tbMakeRot(RandomFloat(&lcgState, -TB_PI, TB_PI))};
 	return xf;
 }
 
@@ -222,13 +216,13 @@ Test(gjk, circle_circle_closed_form)
 {
 	for (int i = 0; i < 1000; ++i)
 	{
-		tbVec2 c1 = {randomFloat(-5.0f, 5.0f), randomFloat(-5.0f, 5.0f)};
-		tbVec2 c2 = {randomFloat(-5.0f, 5.0f), randomFloat(-5.0f, 5.0f)};
-		float r1 = randomFloat(0.05f, 1.0f), r2 = randomFloat(0.05f, 1.0f);
+		tbVec2 c1 = {RandomFloat(&lcgState, -5.0f, 5.0f), RandomFloat(&lcgState, -5.0f, 5.0f)};
+		tbVec2 c2 = {RandomFloat(&lcgState, -5.0f, 5.0f), RandomFloat(&lcgState, -5.0f, 5.0f)};
+		float r1 = RandomFloat(&lcgState, 0.05f, 1.0f), r2 = RandomFloat(&lcgState, 0.05f, 1.0f);
 		tbDistanceInput input = {0};
 		input.proxyA = tbMakeProxy(&c1, 1, r1);
 		input.proxyB = tbMakeProxy(&c2, 1, r2);
-		input.transform = tb_transform_identity;
+		input.transform = tbTransform_identity;
 		input.useRadii = true;
 		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL, 0);
 
@@ -253,8 +247,8 @@ Test(gjk, random_polygons_match_brute_force)
 	int overlaps = 0;
 	for (int i = 0; i < 5000; ++i)
 	{
-		tbPolygon a = randomPolygon(randomFloat(0.1f, 3.0f));
-		tbPolygon b = randomPolygon(randomFloat(0.1f, 3.0f));
+		tbPolygon a = randomPolygon(RandomFloat(&lcgState, 0.1f, 3.0f));
+		tbPolygon b = randomPolygon(RandomFloat(&lcgState, 0.1f, 3.0f));
 		tbTransform xfA = randomTransform(4.0f);
 		tbTransform xfB = randomTransform(4.0f);
 		tbDistanceInput input = makeInput(&a, xfA, &b, xfB);
@@ -280,8 +274,8 @@ Test(gjk, warm_start_same_answer_fewer_iterations)
 {
 	for (int i = 0; i < 2000; ++i)
 	{
-		tbPolygon a = randomPolygon(randomFloat(0.1f, 3.0f));
-		tbPolygon b = randomPolygon(randomFloat(0.1f, 3.0f));
+		tbPolygon a = randomPolygon(RandomFloat(&lcgState, 0.1f, 3.0f));
+		tbPolygon b = randomPolygon(RandomFloat(&lcgState, 0.1f, 3.0f));
 		tbDistanceInput input = makeInput(&a, randomTransform(4.0f), &b, randomTransform(4.0f));
 
 		tbSimplexCache cache = {0};
@@ -301,7 +295,7 @@ Test(gjk, warm_start_after_small_motion)
 	for (int i = 0; i < 100; ++i)
 	{
 		tbTransform xfB = {{-2.0f + 0.04f * (float)i, 1.1f}, tbMakeRot(0.0f)};
-		tbDistanceInput input = makeInput(&box, tb_transform_identity, &box, xfB);
+		tbDistanceInput input = makeInput(&box, tbTransform_identity, &box, xfB);
 		tbDistanceOutput warm = tbShapeDistance(&input, &cache, NULL, 0);
 		tbDistanceOutput cold = tbShapeDistance(&input, NULL, NULL, 0);
 		cr_assert_float_eq(warm.distance, cold.distance, DISTANCE_TOLERANCE, "step %d", i);
@@ -316,7 +310,7 @@ Test(gjk, tiny_edges_do_not_overlap)
 	tbPolygon tiny = tbMakeBox(0.0005f, 0.0005f);
 	for (int i = 0; i < 360; ++i)
 	{
-		float slide = randomFloat(-0.0009f, 0.0009f);
+		float slide = RandomFloat(&lcgState, -0.0009f, 0.0009f);
 		tbTransform xfA = {{0.0f, 0.0f}, tbMakeRot(0.0f)};
 		tbTransform xfB = {{slide, 0.002f}, tbMakeRot(0.0f)};
 		tbRot turn = tbMakeRot((float)i * TB_PI / 180.0f);
@@ -334,11 +328,11 @@ Test(gjk, tiny_edges_do_not_overlap)
 	tbDistanceInput input = {0};
 	input.proxyA = tbMakeProxy(sliver, 3, 0.0f);
 	input.proxyB = tbMakeProxy(sliver, 3, 0.0f);
-	input.transform = tb_transform_identity;
+	input.transform = tbTransform_identity;
 	for (int i = 0; i < 100; ++i)
 	{
 		// copy turned by π: its base runs 1 mm under A's base, parallel edges, 1 mm gap
-		float slide = randomFloat(-0.0009f, 0.0009f);
+		float slide = RandomFloat(&lcgState, -0.0009f, 0.0009f);
 		input.transform = (tbTransform){{0.002f + slide, -0.001f}, tbMakeRot(TB_PI)}; // A at the origin
 		tbDistanceOutput out = tbShapeDistance(&input, NULL, NULL, 0);
 		cr_assert(out.simplexCount < 3);
@@ -354,8 +348,8 @@ Test(gjk, far_from_origin)
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
 	for (int i = 0; i < 100; ++i)
 	{
-		float angle = randomFloat(-TB_PI, TB_PI);
-		tbVec2 offset = tbRotateVector(tbMakeRot(angle), tbMakeVec2(1.01f, randomFloat(-0.5f, 0.5f)));
+		float angle = RandomFloat(&lcgState, -TB_PI, TB_PI);
+		tbVec2 offset = tbRotateVector(tbMakeRot(angle), tbMakeVec2(1.01f, RandomFloat(&lcgState, -0.5f, 0.5f)));
 		tbTransform xfA = {{1000.0f, -1000.0f}, tbMakeRot(angle)};
 		tbTransform xfB = {tbAdd(xfA.p, offset), tbMakeRot(angle)};
 		tbTransform nearA = {{0.0f, 0.0f}, tbMakeRot(angle)};
@@ -384,18 +378,18 @@ Test(shape_cast, circles_match_closed_form)
 	for (int i = 0; i < 1000; ++i)
 	{
 		tbVec2 cA = {0.0f, 0.0f};
-		tbVec2 cB = {randomFloat(-5.0f, 5.0f), randomFloat(-5.0f, 5.0f)};
-		float rA = randomFloat(0.1f, 1.0f), rB = randomFloat(0.1f, 1.0f);
+		tbVec2 cB = {RandomFloat(&lcgState, -5.0f, 5.0f), RandomFloat(&lcgState, -5.0f, 5.0f)};
+		float rA = RandomFloat(&lcgState, 0.1f, 1.0f), rB = RandomFloat(&lcgState, 0.1f, 1.0f);
 		if (tbLength(cB) < rA + rB + 0.01f)
 		{
 			continue;
 		}
-		tbVec2 r = {randomFloat(-10.0f, 10.0f), randomFloat(-10.0f, 10.0f)};
+		tbVec2 r = {RandomFloat(&lcgState, -10.0f, 10.0f), RandomFloat(&lcgState, -10.0f, 10.0f)};
 
 		tbShapeCastPairInput input = {0};
 		input.proxyA = tbMakeProxy(&cA, 1, rA);
 		input.proxyB = tbMakeProxy(&cB, 1, rB);
-		input.transform = tb_transform_identity;
+		input.transform = tbTransform_identity;
 		input.translationB = r;
 		input.maxFraction = 1.0f;
 		tbCastOutput out = tbShapeCast(&input);
@@ -436,7 +430,7 @@ Test(shape_cast, box_drop_onto_box_far_away)
 	tbShapeCastPairInput input = {0};
 	input.proxyA = tbMakeProxy(box.vertices, 4, 0.0f);
 	input.proxyB = tbMakeProxy(box.vertices, 4, 0.0f);
-	tbTransform xfA = {{1000.0f, 1000.0f}, tb_rot_identity}, xfB = {{1000.0f, 1002.0f}, tb_rot_identity};
+	tbTransform xfA = {{1000.0f, 1000.0f}, tbRot_identity}, xfB = {{1000.0f, 1002.0f}, tbRot_identity};
 	input.transform = tbInvMulTransforms(xfA, xfB); // exact here: the answer does not depend on where the pair is
 	input.translationB = tbMakeVec2(0.0f, -2.0f);
 	input.maxFraction = 1.0f;
@@ -463,7 +457,7 @@ static tbShapeCastPairInput CircleCast(tbVec2 centerB, float radiusA, float radi
 	tbShapeCastPairInput input = {0};
 	input.proxyA = tbMakeProxy(&origin, 1, radiusA);
 	input.proxyB = tbMakeProxy(&origin, 1, radiusB);
-	input.transform = (tbTransform){centerB, tb_rot_identity}; // A at the origin
+	input.transform = (tbTransform){centerB, tbRot_identity}; // A at the origin
 	input.translationB = translation;
 	input.maxFraction = 1.0f;
 	return input;
@@ -495,8 +489,8 @@ Test(shape_cast, initial_overlap_hits_at_zero_with_zero_normal)
 	input = (tbShapeCastPairInput){0};
 	input.proxyA = tbMakeProxy(box.vertices, 4, 0.0f);
 	input.proxyB = tbMakeProxy(box.vertices, 4, 0.0f);
-	input.transform = tbInvMulTransforms((tbTransform){{10.0f, 20.0f}, tb_rot_identity},
-										 (tbTransform){{10.0f, 21.0f}, tb_rot_identity});
+	input.transform = tbInvMulTransforms((tbTransform){{10.0f, 20.0f}, tbRot_identity},
+										 (tbTransform){{10.0f, 21.0f}, tbRot_identity});
 	input.translationB = tbMakeVec2(1.0f, 0.0f);
 	input.maxFraction = 1.0f;
 	out = tbShapeCast(&input);

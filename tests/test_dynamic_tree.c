@@ -3,6 +3,7 @@
 #include <criterion/criterion.h>
 
 #include "tumble/collision.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -12,16 +13,10 @@
 // x ← 1664525·x + 1013904223 mod 2^32.
 static uint32_t s_seed = 12345u;
 
-static float RandomFloat(float lower, float upper)
-{
-	s_seed = 1664525u * s_seed + 1013904223u;
-	return lower + (upper - lower) * (float)(s_seed >> 8) / 16777216.0f;
-}
-
 static tbAABB RandomBox(float range, float minSize, float maxSize)
 {
-	float x = RandomFloat(-range, range), y = RandomFloat(-range, range);
-	float w = RandomFloat(minSize, maxSize), h = RandomFloat(minSize, maxSize);
+	float x = RandomFloat(&s_seed, -range, range), y = RandomFloat(&s_seed, -range, range);
+	float w = RandomFloat(&s_seed, minSize, maxSize), h = RandomFloat(&s_seed, minSize, maxSize);
 	return (tbAABB){{x, y}, {x + w, y + h}};
 }
 
@@ -39,12 +34,6 @@ static bool CollectCallback(int proxyId, uint64_t userData, void* context)
 	Collector* c = context;
 	c->ids[c->count++] = proxyId;
 	return true;
-}
-
-static int CompareInts(const void* a, const void* b)
-{
-	int x = *(const int*)a, y = *(const int*)b;
-	return (x > y) - (x < y);
 }
 
 /// Tree query results (sorted) must equal a scan over all proxies.
@@ -81,8 +70,8 @@ Test(dynamic_tree, validate_after_random_insert_move_remove)
 	cr_assert(tbDynamicTree_Validate(&tree));
 	for (int step = 0; step < 3000; ++step)
 	{
-		int i = (int)RandomFloat(0.0f, (float)count);
-		float op = RandomFloat(0.0f, 1.0f);
+		int i = (int)RandomFloat(&s_seed, 0.0f, (float)count);
+		float op = RandomFloat(&s_seed, 0.0f, 1.0f);
 		if (op < 0.5f && ids[i] >= 0)
 		{
 			tbDynamicTree_MoveProxy(&tree, ids[i], RandomBox(50.0f, 0.5f, 5.0f));
@@ -242,8 +231,8 @@ Test(dynamic_tree, ray_cast_closest_matches_brute_force)
 	}
 	for (int r = 0; r < 200; ++r)
 	{
-		tbVec2 origin = {RandomFloat(-120.0f, 120.0f), RandomFloat(-120.0f, 120.0f)};
-		tbVec2 target = {RandomFloat(-120.0f, 120.0f), RandomFloat(-120.0f, 120.0f)};
+		tbVec2 origin = {RandomFloat(&s_seed, -120.0f, 120.0f), RandomFloat(&s_seed, -120.0f, 120.0f)};
+		tbVec2 target = {RandomFloat(&s_seed, -120.0f, 120.0f), RandomFloat(&s_seed, -120.0f, 120.0f)};
 		tbRayCastInput input = {origin, tbSub(target, origin), 1.0f};
 		RayContext c = {&tree, 2.0f, -1, 0};
 		tbDynamicTree_RayCast(&tree, &input, 1, ClosestRayCallback, &c);

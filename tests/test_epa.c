@@ -87,7 +87,7 @@ Test(epa, circle_circle_overlap)
 	tbDistanceInput input = {0};
 	input.proxyA = tbMakeProxy(&c1, 1, 0.5f);
 	input.proxyB = tbMakeProxy(&c2, 1, 0.25f);
-	input.transform = tb_transform_identity;
+	input.transform = tbTransform_identity;
 	tbSeparationOutput out = tbShapeSeparation(&input, NULL);
 	cr_assert_float_eq(out.separation, 0.5f - 0.75f, 1e-6f);
 	cr_assert_float_eq(out.normal.x, 0.6f, 1e-6f);
@@ -142,7 +142,7 @@ Test(epa, identical_coincident_shapes)
 	tbDistanceInput points = {0};
 	points.proxyA = tbMakeProxy(&p, 1, 0.0f);
 	points.proxyB = tbMakeProxy(&p, 1, 0.0f);
-	points.transform = tb_transform_identity;
+	points.transform = tbTransform_identity;
 	out = tbShapeSeparation(&points, NULL);
 	expectUnit(out.normal);
 	cr_assert_float_eq(out.separation, 0.0f, 1e-6f);

@@ -15,64 +15,28 @@
 #include <criterion/criterion.h>
 
 #include "tumble/tumble.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+/// The default shape definition with contact and sensor events on: Box2D v3.2's defaults have them
+/// off, and these tests are about the events.
+static const tbShapeDef* EventDef(void)
+{
+	static tbShapeDef def;
+	def = tbDefaultShapeDef();
+	def.enableContactEvents = true;
+	def.enableSensorEvents = true;
+	return &def;
+}
 
 #define TIME_STEP (1.0f / 60.0f)
 #define SUB_STEPS 4
 #define GRAVITY 10.0f
 
 // --- helpers ----------------------------------------------------------------------------------
-
-static tbWorldId CreateWorld(void)
-{
-	tbWorldDef def = tbDefaultWorldDef();
-	def.gravity = (tbVec2){0.0f, -GRAVITY};
-	tbWorldId world = tbCreateWorld(&def);
-	cr_assert(tbWorld_IsValid(world));
-	return world;
-}
-
-/// Static ground box of half size (20, 1) whose top face is at y = 0.
-static tbShapeId CreateGround(tbWorldId world, const tbShapeDef* shapeDef)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.position = (tbVec2){0.0f, -1.0f};
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef def = shapeDef != NULL ? *shapeDef : tbDefaultShapeDef();
-	tbPolygon box = tbMakeBox(20.0f, 1.0f);
-	tbShapeId shape = tbCreatePolygonShape(body, &def, &box);
-	cr_assert(tbShape_IsValid(shape));
-	return shape;
-}
-
-static tbShapeId CreateBall(tbWorldId world, tbVec2 position, float radius, const tbShapeDef* shapeDef, tbBodyId* bodyOut)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.type = tb_dynamicBody;
-	bodyDef.position = position;
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef def = shapeDef != NULL ? *shapeDef : tbDefaultShapeDef();
-	tbCircle circle = {{0.0f, 0.0f}, radius};
-	tbShapeId shape = tbCreateCircleShape(body, &def, &circle);
-	cr_assert(tbShape_IsValid(shape));
-	*bodyOut = body;
-	return shape;
-}
-
-static tbBodyId CreateBox(tbWorldId world, tbVec2 position, float halfSize)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.type = tb_dynamicBody;
-	bodyDef.position = position;
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef def = tbDefaultShapeDef();
-	tbPolygon box = tbMakeSquare(halfSize);
-	tbCreatePolygonShape(body, &def, &box);
-	return body;
-}
 
 /// Free-fall height after `steps` steps from rest at y0 (symplectic Euler, SUB_STEPS sub-steps).
 static double FreeFallHeight(double y0, int steps)
@@ -113,12 +77,12 @@ static int StepUntilAsleep(tbWorldId world, tbBodyId body, int maxSteps)
 // with manifold points) becomes 1 in that same step.
 Test(events, contact_begin_touch_on_landing)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeId ground = CreateGround(world, NULL);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	const float radius = 0.5f;
 	const double y0 = radius + 1.0;
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, radius, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, tbVec2_zero, radius, EventDef(), &ball);
 
 	// Expected step: first k with gap(k − 1) < TB_SPECULATIVE_DISTANCE.
 	int expected = -1;
@@ -169,10 +133,10 @@ Test(events, contact_begin_touch_on_landing)
 // The resting ball is teleported 5 m up: exactly one end event, in the next step.
 Test(events, contact_end_touch_when_lifted)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeId ground = CreateGround(world, NULL);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f}, 0.5f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f}, tbVec2_zero, 0.5f, EventDef(), &ball);
 	int begins = 0;
 	for (int step = 0; step < 20; ++step)
 	{
@@ -182,7 +146,7 @@ Test(events, contact_end_touch_when_lifted)
 	cr_assert_eq(begins, 1);
 	cr_assert_eq(tbWorld_GetCounters(world).touchingCount, 1);
 
-	cr_assert(tbBody_SetTransform(ball, (tbVec2){0.0f, 5.0f}, tb_rot_identity));
+	cr_assert(tbBody_SetTransform(ball, (tbVec2){0.0f, 5.0f}, tbRot_identity));
 	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
 	tbContactEvents events = tbWorld_GetContactEvents(world);
 	cr_assert_eq(events.endCount, 1, "%d end events after the lift, expected 1", events.endCount);
@@ -199,13 +163,13 @@ Test(events, contact_end_touch_when_lifted)
 // = 6.32 m/s within 5%, with the two shape ids and a vertical normal.
 Test(events, hit_event_above_threshold)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeId ground = CreateGround(world, NULL);
-	tbShapeDef def = tbDefaultShapeDef();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
+	tbShapeDef def = *EventDef();
 	def.enableHitEvents = true;
 	tbBodyId ball;
 	const float drop = 2.0f;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f + drop}, 0.5f, &def, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f + drop}, tbVec2_zero, 0.5f, &def, &ball);
 	const float expected = sqrtf(2.0f * GRAVITY * drop);
 
 	int hits = 0;
@@ -235,16 +199,16 @@ Test(events, no_hit_event_below_threshold)
 {
 	for (int variant = 0; variant < 2; ++variant)
 	{
-		tbWorldId world = CreateWorld();
-		CreateGround(world, NULL);
-		tbShapeDef def = tbDefaultShapeDef();
+		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+		CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
+		tbShapeDef def = *EventDef();
 		def.enableHitEvents = variant == 0;
 		if (variant == 0)
 		{
 			cr_assert(tbWorld_SetHitEventThreshold(world, 10.0f));
 		}
 		tbBodyId ball;
-		CreateBall(world, (tbVec2){0.0f, 2.5f}, 0.5f, &def, &ball);
+		CreateBall(world, (tbVec2){0.0f, 2.5f}, tbVec2_zero, 0.5f, &def, &ball);
 		int hits = 0, begins = 0;
 		for (int step = 0; step < 120; ++step)
 		{
@@ -268,11 +232,11 @@ Test(events, no_hit_event_below_threshold)
 // stays −g·t within 1e-4.
 Test(events, sensor_begin_end_ball_falls_through)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbBodyDef sensorBodyDef = tbDefaultBodyDef();
 	sensorBodyDef.position = (tbVec2){0.0f, 5.0f};
 	tbBodyId sensorBody = tbCreateBody(world, &sensorBodyDef);
-	tbShapeDef sensorDef = tbDefaultShapeDef();
+	tbShapeDef sensorDef = *EventDef();
 	sensorDef.isSensor = true;
 	sensorDef.enableSensorEvents = true;
 	tbPolygon box = tbMakeBox(1.0f, 0.5f);
@@ -281,7 +245,7 @@ Test(events, sensor_begin_end_ball_falls_through)
 	const float radius = 0.25f;
 	const double y0 = 8.0;
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, radius, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, tbVec2_zero, radius, EventDef(), &ball);
 
 	int beginStep = -1, endStep = -1;
 	const float top = 5.5f, bottom = 4.5f;
@@ -333,12 +297,12 @@ Test(events, sensor_begin_end_ball_falls_through)
 // Three falling boxes: one move event per awake body each step, carrying its id and transform.
 Test(events, body_move_events_for_awake_bodies)
 {
-	tbWorldId world = CreateWorld();
-	CreateGround(world, NULL);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	tbBodyId boxes[3];
 	for (int i = 0; i < 3; ++i)
 	{
-		boxes[i] = CreateBox(world, (tbVec2){-3.0f + 3.0f * (float)i, 5.0f}, 0.5f);
+		boxes[i] = CreateBox(world, tb_dynamicBody, (tbVec2){-3.0f + 3.0f * (float)i, 5.0f}, 0.5f, 0.5f, 1.0f);
 	}
 	for (int step = 0; step < 30; ++step)
 	{
@@ -372,9 +336,9 @@ Test(events, body_move_events_for_awake_bodies)
 // (30 steps at 60 Hz; allow 15 more for the first steps of settling), then no more move events.
 Test(events, fell_asleep_event_after_time_to_sleep)
 {
-	tbWorldId world = CreateWorld();
-	CreateGround(world, NULL);
-	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	int minSteps = (int)floorf(TB_TIME_TO_SLEEP / TIME_STEP);
 	int step = StepUntilAsleep(world, box, 120);
 	cr_assert(step >= minSteps && step <= minSteps + 15, "fell asleep at step %d, expected %d..%d", step, minSteps,
@@ -396,15 +360,15 @@ Test(events, one_body_that_may_not_sleep_keeps_its_island_awake)
 {
 	for (int keeper = 0; keeper < 6; ++keeper)
 	{
-		tbWorldId world = CreateWorld();
-		CreateGround(world, NULL);
+		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+		CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 		tbBodyId row[6];
 		for (int i = 0; i < 6; ++i)
 		{
-			row[i] = CreateBox(world, (tbVec2){-5.0f + 1.0f * (float)i, 0.5f}, 0.5f);
+			row[i] = CreateBox(world, tb_dynamicBody, (tbVec2){-5.0f + 1.0f * (float)i, 0.5f}, 0.5f, 0.5f, 1.0f);
 		}
 		tbBody_EnableSleep(row[keeper], false);
-		tbBodyId lone = CreateBox(world, (tbVec2){8.0f, 0.5f}, 0.5f);
+		tbBodyId lone = CreateBox(world, tb_dynamicBody, (tbVec2){8.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 		for (int step = 0; step < 120; ++step)
 		{
 			tbWorld_Step(world, TIME_STEP, SUB_STEPS);
@@ -426,7 +390,7 @@ static tbBodyId CreateKinematicBox(tbWorldId world, tbVec2 position, float hx, f
 	bodyDef.position = position;
 	bodyDef.linearVelocity = velocity;
 	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef def = tbDefaultShapeDef();
+	tbShapeDef def = *EventDef();
 	def.material.friction = 0.0f;
 	tbPolygon box = tbMakeBox(hx, hy);
 	tbCreatePolygonShape(body, &def, &box);
@@ -440,10 +404,10 @@ static tbBodyId CreateKinematicBox(tbWorldId world, tbVec2 position, float hx, f
 // however the sleep stage orders them.
 Test(events, moving_kinematic_body_keeps_every_island_it_touches_awake)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 20.0f, 0.25f, (tbVec2){1.0f, 0.0f});
-	tbBodyId left = CreateBox(world, (tbVec2){-2.0f, 1.75f}, 0.5f);
-	tbBodyId right = CreateBox(world, (tbVec2){2.0f, 1.75f}, 0.5f);
+	tbBodyId left = CreateBox(world, tb_dynamicBody, (tbVec2){-2.0f, 1.75f}, 0.5f, 0.5f, 1.0f);
+	tbBodyId right = CreateBox(world, tb_dynamicBody, (tbVec2){2.0f, 1.75f}, 0.5f, 0.5f, 1.0f);
 	for (int step = 1; step <= 120; ++step)
 	{
 		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
@@ -468,10 +432,10 @@ Test(events, moving_kinematic_body_keeps_every_island_it_touches_awake)
 // sleeps within 1 s (0.5 s of sleep time, counted from when the box is allowed to sleep).
 Test(events, rested_kinematic_body_sleeps_with_the_last_island_it_touches)
 {
-	tbWorldId world = CreateWorld();
-	tbBodyId platform = CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 4.0f, 0.25f, tb_vec2_zero);
-	tbBodyId sleeper = CreateBox(world, (tbVec2){-2.0f, 1.75f}, 0.5f);
-	tbBodyId keeper = CreateBox(world, (tbVec2){2.0f, 1.75f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbBodyId platform = CreateKinematicBox(world, (tbVec2){0.0f, 1.0f}, 4.0f, 0.25f, tbVec2_zero);
+	tbBodyId sleeper = CreateBox(world, tb_dynamicBody, (tbVec2){-2.0f, 1.75f}, 0.5f, 0.5f, 1.0f);
+	tbBodyId keeper = CreateBox(world, tb_dynamicBody, (tbVec2){2.0f, 1.75f}, 0.5f, 0.5f, 1.0f);
 	tbBody_EnableSleep(keeper, false);
 	for (int step = 1; step <= 120; ++step)
 	{
@@ -500,14 +464,14 @@ Test(events, rested_kinematic_body_sleeps_with_the_last_island_it_touches)
 // begin-touch event, and the ball comes to rest on it (centre at 1 + 0.25 m).
 Test(events, sleeping_box_woken_by_landing_ball)
 {
-	tbWorldId world = CreateWorld();
-	CreateGround(world, NULL);
-	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	cr_assert(StepUntilAsleep(world, box, 120) > 0);
 	cr_assert_not(tbBody_IsAwake(box));
 
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 2.25f}, 0.25f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 2.25f}, tbVec2_zero, 0.25f, EventDef(), &ball);
 	int beginStep = -1, wokenStep = -1;
 	for (int step = 1; step <= 60; ++step)
 	{
@@ -537,9 +501,9 @@ Test(events, sleeping_box_woken_by_landing_ball)
 // (Δv = 5 m/s: after one step it has risen by about 5/60 m).
 Test(events, impulse_wakes_sleeping_body)
 {
-	tbWorldId world = CreateWorld();
-	CreateGround(world, NULL);
-	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	cr_assert(StepUntilAsleep(world, box, 120) > 0);
 	cr_assert_not(tbBody_IsAwake(box));
 	float y0 = tbBody_GetPosition(box).y;
@@ -559,14 +523,14 @@ Test(events, impulse_wakes_sleeping_body)
 /// its final height and the number of begin events.
 static float DropWithFilters(tbFilter groundFilter, tbFilter ballFilter, int* beginsOut)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeDef groundDef = tbDefaultShapeDef();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeDef groundDef = *EventDef();
 	groundDef.filter = groundFilter;
-	CreateGround(world, &groundDef);
-	tbShapeDef ballDef = tbDefaultShapeDef();
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, &groundDef);
+	tbShapeDef ballDef = *EventDef();
 	ballDef.filter = ballFilter;
 	tbBodyId ball;
-	CreateBall(world, (tbVec2){0.0f, 1.5f}, 0.5f, &ballDef, &ball);
+	CreateBall(world, (tbVec2){0.0f, 1.5f}, tbVec2_zero, 0.5f, &ballDef, &ball);
 	int begins = 0;
 	for (int step = 0; step < 90; ++step)
 	{
@@ -637,14 +601,14 @@ Test(events, one_landing_gives_one_hit_event_with_its_begin_event)
 {
 	for (int shapeKind = 0; shapeKind < 2; ++shapeKind)
 	{
-		tbWorldId world = CreateWorld();
-		tbShapeId ground = CreateGround(world, NULL);
+		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+		tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 		const float drop = 2.0f, half = 0.5f;
 		tbBodyDef bodyDef = tbDefaultBodyDef();
 		bodyDef.type = tb_dynamicBody;
 		bodyDef.position = (tbVec2){0.0f, half + drop};
 		tbBodyId body = tbCreateBody(world, &bodyDef);
-		tbShapeDef def = tbDefaultShapeDef();
+		tbShapeDef def = *EventDef();
 		def.enableHitEvents = true;
 		tbPolygon box = tbMakeSquare(half);
 		tbCircle circle = {{0.0f, 0.0f}, half};
@@ -684,7 +648,7 @@ static tbShapeId CreateStaticSensor(tbWorldId world)
 	tbBodyDef sensorBodyDef = tbDefaultBodyDef();
 	sensorBodyDef.position = (tbVec2){0.0f, 5.0f};
 	tbBodyId sensorBody = tbCreateBody(world, &sensorBodyDef);
-	tbShapeDef sensorDef = tbDefaultShapeDef();
+	tbShapeDef sensorDef = *EventDef();
 	sensorDef.isSensor = true;
 	sensorDef.enableSensorEvents = true;
 	tbPolygon box = tbMakeBox(1.0f, 0.5f);
@@ -697,13 +661,13 @@ static tbShapeId CreateStaticSensor(tbWorldId world)
 // one end.
 Test(events, sensor_ignores_a_visitor_that_disables_sensor_events)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeId sensor = CreateStaticSensor(world);
-	tbShapeDef quiet = tbDefaultShapeDef();
+	tbShapeDef quiet = *EventDef();
 	quiet.enableSensorEvents = false;
 	tbBodyId quietBall, seenBall;
-	tbShapeId quietShape = CreateBall(world, (tbVec2){-0.5f, 8.0f}, 0.25f, &quiet, &quietBall);
-	tbShapeId seenShape = CreateBall(world, (tbVec2){0.5f, 8.0f}, 0.25f, NULL, &seenBall);
+	tbShapeId quietShape = CreateBall(world, (tbVec2){-0.5f, 8.0f}, tbVec2_zero, 0.25f, &quiet, &quietBall);
+	tbShapeId seenShape = CreateBall(world, (tbVec2){0.5f, 8.0f}, tbVec2_zero, 0.25f, EventDef(), &seenBall);
 	int begins = 0, ends = 0;
 	for (int step = 0; step < 90; ++step)
 	{
@@ -734,14 +698,14 @@ Test(events, sensor_ignores_a_visitor_that_disables_sensor_events)
 // later (the collide stage sees the positions of the previous step), within a step either way.
 Test(events, kinematic_body_passing_a_static_sensor_is_reported)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeId sensor = CreateStaticSensor(world);
 	tbBodyDef liftDef = tbDefaultBodyDef();
 	liftDef.type = tb_kinematicBody;
 	liftDef.position = (tbVec2){0.0f, 3.0f};
 	liftDef.linearVelocity = (tbVec2){0.0f, 2.0f};
 	tbBodyId lift = tbCreateBody(world, &liftDef);
-	tbShapeDef def = tbDefaultShapeDef();
+	tbShapeDef def = *EventDef();
 	tbPolygon box = tbMakeSquare(0.25f);
 	tbShapeId liftShape = tbCreatePolygonShape(lift, &def, &box);
 	int beginStep = -1, endStep = -1;
@@ -777,9 +741,9 @@ Test(events, kinematic_body_passing_a_static_sensor_is_reported)
 // kept id goes stale.
 Test(events, contact_data_of_a_resting_box)
 {
-	tbWorldId world = CreateWorld();
-	tbShapeId ground = CreateGround(world, NULL);
-	tbBodyId box = CreateBox(world, (tbVec2){0.0f, 0.5f}, 0.5f);
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	tbShapeId boxShape;
 	cr_assert_eq(tbBody_GetShapes(box, &boxShape, 1), 1);
 	tbContactId fromEvent = TB_NULL_CONTACT_ID;
@@ -818,7 +782,7 @@ Test(events, contact_data_of_a_resting_box)
 	cr_assert_eq(viaId.manifold.pointCount, 2);
 	cr_assert_eq(tbBody_GetContactData(box, data, 0), 0, "capacity 0 writes nothing");
 
-	cr_assert(tbBody_SetTransform(box, (tbVec2){0.0f, 10.0f}, tb_rot_identity));
+	cr_assert(tbBody_SetTransform(box, (tbVec2){0.0f, 10.0f}, tbRot_identity));
 	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
 	cr_assert(tbContact_IsValid(fromEvent) == false, "the contact ended: its id is stale");
 	cr_assert_eq(tbBody_GetContactData(box, data, 4), 0);
@@ -828,10 +792,10 @@ Test(events, contact_data_of_a_resting_box)
 // Sensor data: a static sensor reports the ball inside it, and nothing once it has fallen out.
 Test(events, sensor_data_lists_visitors)
 {
-	tbWorldId world = CreateWorld();
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeId sensor = CreateStaticSensor(world);
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 6.0f}, 0.25f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 6.0f}, tbVec2_zero, 0.25f, EventDef(), &ball);
 	tbShapeId visitors[4];
 	int inside = 0;
 	for (int step = 0; step < 90; ++step)
@@ -849,4 +813,90 @@ Test(events, sensor_data_lists_visitors)
 	cr_assert_eq(tbShape_GetSensorData(sensor, visitors, 4), 0, "the ball has left");
 	cr_assert_eq(tbShape_GetSensorData(ballShape, visitors, 4), 0, "a non-sensor has no visitors");
 	tbDestroyWorld(world);
+}
+
+/// Begin events of a world where a 1 m box lands on the ground from 0.5 m, counted over 1 s.
+static int CountLandingBegins(bool groundEvents, bool boxEvents)
+{
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = groundEvents;
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, &groundDef);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = (tbVec2){0.0f, 1.0f};
+	tbBodyId box = tbCreateBody(world, &bodyDef);
+	tbShapeDef boxDef = tbDefaultShapeDef();
+	boxDef.enableContactEvents = boxEvents;
+	tbPolygon square = tbMakeSquare(0.5f);
+	tbCreatePolygonShape(box, &boxDef, &square);
+	int begins = 0;
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+		begins += tbWorld_GetContactEvents(world).beginCount;
+	}
+	tbDestroyWorld(world);
+	return begins;
+}
+
+// Box2D v3.2's rule: a contact reports begin and end when either of its shapes enables contact
+// events, and shapes default to off. One landing is one begin event whichever shape asks.
+Test(events, contact_events_when_either_shape_enables_them)
+{
+	cr_expect_eq(CountLandingBegins(false, false), 0, "the defaults report nothing");
+	cr_expect_eq(CountLandingBegins(true, false), 1);
+	cr_expect_eq(CountLandingBegins(false, true), 1);
+	cr_expect_eq(CountLandingBegins(true, true), 1);
+	tbShapeDef def = tbDefaultShapeDef();
+	cr_expect(def.enableContactEvents == false && def.enableSensorEvents == false && def.enableHitEvents == false);
+}
+
+// Two sensors that overlap see each other (Box2D v3.2 reports a sensor visiting a sensor): a
+// sensor disc falls through a static sensor box; each reports the other once on the way in and
+// once on the way out. With sensor events off on either shape, nothing is reported.
+Test(events, overlapping_sensors_see_each_other)
+{
+	for (int k = 0; k < 2; ++k)
+	{
+		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+		tbBodyDef groundDef = tbDefaultBodyDef();
+		tbBodyId ground = tbCreateBody(world, &groundDef);
+		tbShapeDef zoneDef = tbDefaultShapeDef();
+		zoneDef.isSensor = true;
+		zoneDef.enableSensorEvents = true;
+		tbPolygon zone = tbMakeBox(2.0f, 0.5f);
+		tbShapeId zoneShape = tbCreatePolygonShape(ground, &zoneDef, &zone);
+		tbBodyDef bodyDef = tbDefaultBodyDef();
+		bodyDef.type = tb_dynamicBody;
+		bodyDef.position = (tbVec2){0.0f, 3.0f};
+		tbBodyId ball = tbCreateBody(world, &bodyDef);
+		tbShapeDef ballDef = tbDefaultShapeDef();
+		ballDef.isSensor = true;
+		ballDef.enableSensorEvents = k == 0;
+		tbCircle circle = {{0.0f, 0.0f}, 0.25f};
+		tbShapeId ballShape = tbCreateCircleShape(ball, &ballDef, &circle);
+		int zoneSeesBall = 0, ballSeesZone = 0, ends = 0;
+		for (int i = 0; i < 120; ++i) // 2 s: it falls 20 m, through the zone and out below
+		{
+			tbWorld_Step(world, 1.0f / 60.0f, 4);
+			tbSensorEvents e = tbWorld_GetSensorEvents(world);
+			for (int j = 0; j < e.beginCount; ++j)
+			{
+				zoneSeesBall += TB_ID_EQUALS(e.beginEvents[j].sensorShapeId, zoneShape) &&
+										TB_ID_EQUALS(e.beginEvents[j].visitorShapeId, ballShape)
+									? 1
+									: 0;
+				ballSeesZone += TB_ID_EQUALS(e.beginEvents[j].sensorShapeId, ballShape) &&
+										TB_ID_EQUALS(e.beginEvents[j].visitorShapeId, zoneShape)
+									? 1
+									: 0;
+			}
+			ends += e.endCount;
+		}
+		cr_expect_eq(zoneSeesBall, k == 0 ? 1 : 0, "events %s", k == 0 ? "on" : "off");
+		cr_expect_eq(ballSeesZone, k == 0 ? 1 : 0);
+		cr_expect_eq(ends, k == 0 ? 2 : 0);
+		tbDestroyWorld(world);
+	}
 }

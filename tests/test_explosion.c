@@ -7,28 +7,10 @@
 #include "tumble/tumble.h"
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <string.h>
-
-static tbWorldId CreateWorld(void)
-{
-	tbWorldDef def = tbDefaultWorldDef();
-	def.gravity = tbMakeVec2(0.0f, 0.0f);
-	return tbCreateWorld(&def);
-}
-
-static tbBodyId CreateBox(tbWorldId world, tbBodyType type, tbVec2 position, float halfWidth, float halfHeight)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.type = type;
-	bodyDef.position = position;
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbPolygon box = tbMakeBox(halfWidth, halfHeight);
-	tbCreatePolygonShape(body, &shapeDef, &box);
-	return body;
-}
 
 // A unit box (1 kg) centred 3 m to the right: closest point (2.5, 0), blast direction +x, width
 // across it 1 m, so J = 2 N·s·m⁻¹ × 1 m = 2 N·s along +x through the centre line: v = (2, 0), no
@@ -36,10 +18,10 @@ static tbBodyId CreateBox(tbWorldId world, tbBodyType type, tbVec2 position, flo
 // radius 0.5 (π/4 kg) 3 m to the left shows 1 m: v = (−2/(π/4), 0). A static box is not moved.
 Test(explosion, impulse_is_exposed_width_times_impulse_per_length)
 {
-	tbWorldId world = CreateWorld();
-	tbBodyId right = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.0f), 0.5f, 0.5f);
-	tbBodyId above = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 3.0f), 1.0f, 0.5f);
-	tbBodyId wall = CreateBox(world, tb_staticBody, tbMakeVec2(0.0f, -3.0f), 1.0f, 0.5f);
+	tbWorldId world = CreateWorld(tbVec2_zero);
+	tbBodyId right = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.0f), 0.5f, 0.5f, 1.0f);
+	tbBodyId above = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 3.0f), 1.0f, 0.5f, 1.0f);
+	tbBodyId wall = CreateBox(world, tb_staticBody, tbMakeVec2(0.0f, -3.0f), 1.0f, 0.5f, 1.0f);
 	tbBodyDef ballDef = tbDefaultBodyDef();
 	ballDef.type = tb_dynamicBody;
 	ballDef.position = tbMakeVec2(-3.0f, 0.0f);
@@ -72,9 +54,9 @@ Test(explosion, impulse_is_exposed_width_times_impulse_per_length)
 // mask that excludes the box's category leaves it alone too.
 Test(explosion, falloff_scales_and_ends_the_blast)
 {
-	tbWorldId world = CreateWorld();
-	tbBodyId near = CreateBox(world, tb_dynamicBody, tbMakeVec2(6.0f, 0.0f), 0.5f, 0.5f);
-	tbBodyId far = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 8.0f), 0.5f, 0.5f);
+	tbWorldId world = CreateWorld(tbVec2_zero);
+	tbBodyId near = CreateBox(world, tb_dynamicBody, tbMakeVec2(6.0f, 0.0f), 0.5f, 0.5f, 1.0f);
+	tbBodyId far = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 8.0f), 0.5f, 0.5f, 1.0f);
 	tbExplosionDef def = tbDefaultExplosionDef();
 	def.radius = 5.0f;
 	def.falloff = 2.0f;
@@ -94,8 +76,8 @@ Test(explosion, falloff_scales_and_ends_the_blast)
 // r = (−0.5, 0.25) from the centre of mass: v = (2, 0), ω = (r × J)/I = (0 − 0.25·2)·6 = −3 rad/s.
 Test(explosion, a_blast_off_the_centre_line_turns_the_body)
 {
-	tbWorldId world = CreateWorld();
-	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.0f), 0.5f, 0.5f);
+	tbWorldId world = CreateWorld(tbVec2_zero);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.0f), 0.5f, 0.5f, 1.0f);
 	tbExplosionDef def = tbDefaultExplosionDef();
 	def.position = tbMakeVec2(2.0f, 0.25f);
 	def.radius = 2.0f;
@@ -111,8 +93,8 @@ Test(explosion, a_blast_off_the_centre_line_turns_the_body)
 // A sleeping body in reach is woken and pushed.
 Test(explosion, wakes_sleeping_bodies)
 {
-	tbWorldId world = CreateWorld();
-	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.0f), 0.5f, 0.5f);
+	tbWorldId world = CreateWorld(tbVec2_zero);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.0f), 0.5f, 0.5f, 1.0f);
 	tbBody_SetAwake(box, false);
 	cr_assert(tbBody_IsAwake(box) == false);
 	tbExplosionDef def = tbDefaultExplosionDef();
@@ -127,8 +109,8 @@ Test(explosion, wakes_sleeping_bodies)
 // Bad definitions are refused with an error naming the field, and nothing moves.
 Test(explosion, bad_input_is_refused_without_change, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = CreateWorld();
-	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.0f), 0.5f, 0.5f);
+	tbWorldId world = CreateWorld(tbVec2_zero);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.0f), 0.5f, 0.5f, 1.0f);
 	tbExplosionDef good = tbDefaultExplosionDef();
 	good.radius = 5.0f;
 	good.impulsePerLength = 1.0f;

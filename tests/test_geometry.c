@@ -72,8 +72,8 @@ Test(geometry, box_mass_and_shape)
 	tbMassData md = tbComputePolygonMass(&box, 3.0f);
 	expectRelative(md.mass, 9.0, MASS_REL_TOL, "mass");
 	expectRelative(md.rotationalInertia, 7.5, MASS_REL_TOL, "inertia");
-	expectVec2Near(md.center, tb_vec2_zero, GEOMETRY_TOL, "centre");
-	expectVec2Near(box.centroid, tb_vec2_zero, 0.0f, "centroid");
+	expectVec2Near(md.center, tbVec2_zero, GEOMETRY_TOL, "centre");
+	expectVec2Near(box.centroid, tbVec2_zero, 0.0f, "centroid");
 	// Outward unit normals: each vertex lies on its edge's line n·x = offset.
 	for (int i = 0; i < 4; ++i)
 	{
@@ -193,7 +193,7 @@ Test(geometry, rounded_box_mass)
 	tbMassData md = tbComputePolygonMass(&box, (float)rho);
 	expectRelative(md.mass, rho * area, MASS_REL_TOL, "mass");
 	expectRelative(md.rotationalInertia, rho * inertia, MASS_REL_TOL, "inertia");
-	expectVec2Near(md.center, tb_vec2_zero, GEOMETRY_TOL, "centre");
+	expectVec2Near(md.center, tbVec2_zero, GEOMETRY_TOL, "centre");
 
 	// The same rounded box moved off the origin and turned keeps m and I about its centre.
 	tbTransform xf = {{-3.0f, 2.0f}, tbMakeRot(1.1f)};
@@ -244,7 +244,7 @@ Test(geometry, shape_aabbs)
 
 	// Rounded box: core plus radius on every side.
 	tbGeometry rounded = {.type = tb_polygonShape, .polygon = tbMakeRoundedBox(1.0f, 0.5f, 0.1f)};
-	expectAABB(tbComputeShapeAABB(&rounded, tb_transform_identity), -1.1f, -0.6f, 1.1f, 0.6f);
+	expectAABB(tbComputeShapeAABB(&rounded, tbTransform_identity), -1.1f, -0.6f, 1.1f, 0.6f);
 }
 
 // ---------------------------------------------------------------------------------------------

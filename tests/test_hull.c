@@ -7,6 +7,7 @@
 // (see hull.c). Hull vertices themselves are input points, compared exactly.
 
 #include "tumble/collision.h"
+#include "test_helpers.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
@@ -36,13 +37,6 @@ static void restoreErrors(void)
 
 // Deterministic linear congruential generator (Numerical Recipes constants), uniform in [lo, hi].
 static uint32_t s_seed;
-
-static float randomFloat(float lo, float hi)
-{
-	s_seed = 1664525u * s_seed + 1013904223u;
-	float unit = (float)(s_seed >> 8) / 16777216.0f;
-	return lo + (hi - lo) * unit;
-}
 
 // Twice the signed area (positive for counter-clockwise).
 static float twiceSignedArea(const tbHull* hull)
@@ -109,11 +103,11 @@ Test(hull, random_clouds_are_convex_ccw_and_contain_every_point)
 	const int cloudCount = 1000;
 	for (int cloud = 0; cloud < cloudCount; ++cloud)
 	{
-		int count = 3 + (int)(randomFloat(0.0f, 5.999f));
+		int count = 3 + (int)(RandomFloat(&s_seed, 0.0f, 5.999f));
 		tbVec2 points[TB_MAX_POLYGON_VERTICES];
 		for (int i = 0; i < count; ++i)
 		{
-			points[i] = tbMakeVec2(randomFloat(-2.0f, 2.0f), randomFloat(-1.0f, 1.0f));
+			points[i] = tbMakeVec2(RandomFloat(&s_seed, -2.0f, 2.0f), RandomFloat(&s_seed, -1.0f, 1.0f));
 		}
 		tbHull hull = tbComputeHull(points, count);
 		if (hull.count == 0)
@@ -135,11 +129,11 @@ Test(hull, tiny_random_clouds_stay_valid)
 	int accepted = 0;
 	for (int cloud = 0; cloud < 1000; ++cloud)
 	{
-		int count = 3 + (int)(randomFloat(0.0f, 5.999f));
+		int count = 3 + (int)(RandomFloat(&s_seed, 0.0f, 5.999f));
 		tbVec2 points[TB_MAX_POLYGON_VERTICES];
 		for (int i = 0; i < count; ++i)
 		{
-			points[i] = tbMakeVec2(randomFloat(-0.015f, 0.015f), randomFloat(-0.015f, 0.015f));
+			points[i] = tbMakeVec2(RandomFloat(&s_seed, -0.015f, 0.015f), RandomFloat(&s_seed, -0.015f, 0.015f));
 		}
 		tbHull hull = tbComputeHull(points, count);
 		if (hull.count > 0)

@@ -9,6 +9,7 @@
 #include "error_recorder.h"
 
 #include "tumble/tumble.h"
+#include "test_helpers.h"
 
 #include <float.h>
 #include <math.h>
@@ -16,49 +17,6 @@
 
 #define DT (1.0f / 60.0f)
 #define SUB_STEPS 4
-
-static tbWorldId MakeWorld(tbVec2 gravity)
-{
-	tbWorldDef def = tbDefaultWorldDef();
-	def.gravity = gravity;
-	tbWorldId world = tbCreateWorld(&def);
-	cr_assert(tbWorld_IsValid(world));
-	return world;
-}
-
-static tbBodyId MakeStatic(tbWorldId world, tbVec2 position)
-{
-	tbBodyDef def = tbDefaultBodyDef();
-	def.position = position;
-	return tbCreateBody(world, &def);
-}
-
-/// A dynamic disc of the given mass and radius.
-static tbBodyId MakeDisc(tbWorldId world, tbVec2 position, float radius, float mass)
-{
-	tbBodyDef def = tbDefaultBodyDef();
-	def.type = tb_dynamicBody;
-	def.position = position;
-	tbBodyId body = tbCreateBody(world, &def);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.density = mass / (TB_PI * radius * radius);
-	tbCircle circle = {{0.0f, 0.0f}, radius};
-	tbCreateCircleShape(body, &shapeDef, &circle);
-	return body;
-}
-
-static tbBodyId MakeBox(tbWorldId world, tbVec2 position, float hx, float hy, float density)
-{
-	tbBodyDef def = tbDefaultBodyDef();
-	def.type = tb_dynamicBody;
-	def.position = position;
-	tbBodyId body = tbCreateBody(world, &def);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.density = density;
-	tbPolygon box = tbMakeBox(hx, hy);
-	tbCreatePolygonShape(body, &shapeDef, &box);
-	return body;
-}
 
 /// Mean period of a signal from its upward zero crossings (linear interpolation between samples).
 typedef struct PeriodMeter
@@ -105,11 +63,11 @@ Test(joint, point_mass_pendulum_period)
 	float expected = 2.0f * TB_PI * sqrtf(L / g) * (1.0f + theta0 * theta0 / 16.0f);
 	for (int method = 0; method < tb_solverMethodCount; ++method)
 	{
-		tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -g));
+		tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -g));
 		tbWorld_SetSolverMethod(world, (tbSolverMethod)method, 8, 3);
-		tbBodyId ground = MakeStatic(world, tbMakeVec2(0.0f, 0.0f));
+		tbBodyId ground = CreateBody(world, tb_staticBody, tbMakeVec2(0.0f, 0.0f));
 		tbVec2 start = {L * sinf(theta0), -L * cosf(theta0)};
-		tbBodyId bob = MakeDisc(world, start, 0.05f, 1.0f);
+		tbBodyId bob = CreateDiscOfMass(world, start, 0.05f, 1.0f);
 		tbDistanceJointDef def = tbDefaultDistanceJointDef();
 		def.base.bodyIdA = ground;
 		def.base.bodyIdB = bob;
@@ -139,8 +97,8 @@ Test(joint, disc_pendulum_period)
 {
 	const float R = 0.5f, g = 10.0f, theta0 = 0.1f;
 	float expected = 2.0f * TB_PI * sqrtf(1.5f * R / g) * (1.0f + theta0 * theta0 / 16.0f);
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -g));
-	tbBodyId ground = MakeStatic(world, tbMakeVec2(0.0f, 0.0f));
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -g));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbMakeVec2(0.0f, 0.0f));
 	// The disc's centre hangs R below the pivot, turned by θ0 about it.
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	bodyDef.type = tb_dynamicBody;
@@ -177,9 +135,9 @@ Test(joint, disc_pendulum_period)
 Test(joint, distance_spring_frequency)
 {
 	const float f = 2.0f, L = 1.0f;
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-	tbBodyId body = MakeDisc(world, tbMakeVec2(L + 0.1f, 0.0f), 0.1f, 2.0f);
+	tbWorldId world = CreateWorld(tbVec2_zero);
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId body = CreateDiscOfMass(world, tbMakeVec2(L + 0.1f, 0.0f), 0.1f, 2.0f);
 	tbDistanceJointDef def = tbDefaultDistanceJointDef();
 	def.base.bodyIdA = ground;
 	def.base.bodyIdB = body;
@@ -205,9 +163,9 @@ Test(joint, distance_spring_frequency)
 // (m·v/t) is within its cap. The 1 %.
 Test(joint, prismatic_motor_reaches_speed)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-	tbBodyId box = MakeBox(world, tbMakeVec2(0.0f, 1.0f), 0.5f, 0.25f, 2.0f);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 1.0f), 0.5f, 0.25f, 2.0f);
 	tbPrismaticJointDef def = tbDefaultPrismaticJointDef();
 	def.base.bodyIdA = ground;
 	def.base.bodyIdB = box;
@@ -244,10 +202,10 @@ Test(joint, revolute_limit_holds_under_load)
 	const float lower = -0.3f, g = 10.0f;
 	for (int method = 0; method < tb_solverMethodCount; ++method)
 	{
-		tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -g));
+		tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -g));
 		tbWorld_SetSolverMethod(world, (tbSolverMethod)method, 8, 3);
-		tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-		tbBodyId beam = MakeBox(world, tbMakeVec2(1.0f, 0.0f), 1.0f, 0.1f, 10.0f);
+		tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+		tbBodyId beam = CreateBox(world, tb_dynamicBody, tbMakeVec2(1.0f, 0.0f), 1.0f, 0.1f, 10.0f);
 		tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
 		def.base.bodyIdA = ground;
 		def.base.bodyIdB = beam;
@@ -257,7 +215,7 @@ Test(joint, revolute_limit_holds_under_load)
 		def.upperAngle = -lower;
 		tbJointId hinge = tbCreateRevoluteJoint(world, &def);
 
-		tbBodyId ball = MakeDisc(world, tbMakeVec2(2.0f, -0.5f), 0.25f, 20.0f);
+		tbBodyId ball = CreateDiscOfMass(world, tbMakeVec2(2.0f, -0.5f), 0.25f, 20.0f);
 		tbBody_SetLinearDamping(ball, 3.0f);
 		tbDistanceJointDef rope = tbDefaultDistanceJointDef();
 		rope.base.bodyIdA = beam;
@@ -298,9 +256,9 @@ Test(joint, revolute_limit_holds_under_load)
 Test(joint, wheel_suspension_frequency)
 {
 	const float f = 4.0f;
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId chassis = MakeStatic(world, tb_vec2_zero);
-	tbBodyId wheel = MakeDisc(world, tbMakeVec2(0.0f, 0.05f), 0.4f, 5.0f);
+	tbWorldId world = CreateWorld(tbVec2_zero);
+	tbBodyId chassis = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId wheel = CreateDiscOfMass(world, tbMakeVec2(0.0f, 0.05f), 0.4f, 5.0f);
 	tbWheelJointDef def = tbDefaultWheelJointDef();
 	def.base.bodyIdA = chassis;
 	def.base.bodyIdB = wheel;
@@ -337,8 +295,8 @@ Test(joint, weld_cantilever_sag)
 		tbWorldDef worldDef = tbDefaultWorldDef();
 		worldDef.enableJointTrees = trees != 0;
 		tbWorldId world = tbCreateWorld(&worldDef);
-		tbBodyId wall = MakeStatic(world, tb_vec2_zero);
-		tbBodyId beam = MakeBox(world, tbMakeVec2(0.5f * L, 0.0f), 0.5f * L, 0.1f, 5.0f);
+		tbBodyId wall = CreateBody(world, tb_staticBody, tbVec2_zero);
+		tbBodyId beam = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.5f * L, 0.0f), 0.5f * L, 0.1f, 5.0f);
 		tbWeldJointDef def = tbDefaultWeldJointDef();
 		def.base.bodyIdA = wall;
 		def.base.bodyIdB = beam;
@@ -371,9 +329,9 @@ Test(joint, weld_cantilever_sag)
 // drives the box at the target velocity against gravity (force cap far above m·g): within 1 %.
 Test(joint, motor_joint_reaches_target)
 {
-	tbWorldId world = MakeWorld(tb_vec2_zero);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-	tbBodyId box = MakeBox(world, tbMakeVec2(0.0f, 0.0f), 0.5f, 0.5f, 1.0f);
+	tbWorldId world = CreateWorld(tbVec2_zero);
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 0.0f), 0.5f, 0.5f, 1.0f);
 	tbMotorJointDef def = tbDefaultMotorJointDef();
 	def.base.bodyIdA = ground;
 	def.base.bodyIdB = box;
@@ -418,9 +376,9 @@ Test(joint, motor_joint_reaches_target)
 // bob. The soft row settles to its load within rounding: 0.1 %.
 Test(joint, constraint_force_holds_the_weight)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-	tbBodyId bob = MakeDisc(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 3.0f);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId bob = CreateDiscOfMass(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 3.0f);
 	tbBody_EnableSleep(bob, false); // events come from awake joints only
 	tbDistanceJointDef def = tbDefaultDistanceJointDef();
 	def.base.bodyIdA = ground;
@@ -450,12 +408,12 @@ Test(joint, constraint_force_holds_the_weight)
 
 Test(joint, bad_input_is_refused_without_change, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbWorldId other = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
-	tbBodyId stranger = MakeDisc(other, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
-	tbBodyId dead = MakeDisc(world, tbMakeVec2(3.0f, 0.0f), 0.1f, 1.0f);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbWorldId other = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId body = CreateDiscOfMass(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
+	tbBodyId stranger = CreateDiscOfMass(other, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
+	tbBodyId dead = CreateDiscOfMass(world, tbMakeVec2(3.0f, 0.0f), 0.1f, 1.0f);
 	tbDestroyBody(dead);
 
 	tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
@@ -553,9 +511,9 @@ Test(joint, bad_input_is_refused_without_change, .init = SetupErrors, .fini = Te
 // float sums), and everything stays finite. Without the guard the test fails in its first steps.
 Test(joint, anchors_far_apart_keep_positions_finite)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-	tbBodyId body = MakeDisc(world, tbMakeVec2(0.0f, 6.0f), 0.1f, 0.1f);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId body = CreateDiscOfMass(world, tbMakeVec2(0.0f, 6.0f), 0.1f, 0.1f);
 	tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
 	def.base.bodyIdA = ground;
 	def.base.bodyIdB = body;
@@ -565,11 +523,11 @@ Test(joint, anchors_far_apart_keep_positions_finite)
 	cr_assert(tbJoint_IsValid(joint));
 	float dt = 1.0f / 60.0f;
 	float maxStep = 16.0f * tbWorld_GetMaximumLinearSpeed(world) * dt;
-	tbVec2 previous = tbBody_GetWorldCenterOfMass(body);
+	tbVec2 previous = tbBody_GetWorldCenter(body);
 	for (int i = 0; i < 20; ++i)
 	{
 		tbWorld_Step(world, dt, 4);
-		tbVec2 c = tbBody_GetWorldCenterOfMass(body);
+		tbVec2 c = tbBody_GetWorldCenter(body);
 		cr_assert(tbIsValidVec2(c) && tbIsValidFloat(tbBody_GetAngularVelocity(body)),
 				  "step %d: centre (%g, %g), spin %g", i, c.x, c.y, tbBody_GetAngularVelocity(body));
 		cr_expect(tbDistance(c, previous) <= maxStep * 1.001f, "step %d moved %g m (bound %g m)", i,
@@ -581,10 +539,10 @@ Test(joint, anchors_far_apart_keep_positions_finite)
 
 Test(joint, destroying_a_body_makes_its_joint_ids_stale, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
-	tbBodyId a = MakeDisc(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
-	tbBodyId b = MakeDisc(world, tbMakeVec2(0.0f, -2.0f), 0.1f, 1.0f);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId a = CreateDiscOfMass(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
+	tbBodyId b = CreateDiscOfMass(world, tbMakeVec2(0.0f, -2.0f), 0.1f, 1.0f);
 	tbDistanceJointDef def = tbDefaultDistanceJointDef();
 	def.base.bodyIdA = ground;
 	def.base.bodyIdB = a;
@@ -632,7 +590,7 @@ static void MakeHangingChain(tbWorldId world, tbBodyId anchorBody, tbVec2 anchor
 	for (int i = 0; i < count; ++i)
 	{
 		tbVec2 pivot = {anchor.x, anchor.y - 0.5f * (float)i};
-		links[i] = MakeBox(world, tbMakeVec2(pivot.x, pivot.y - 0.25f), 0.05f, 0.25f, 1.0f);
+		links[i] = CreateBox(world, tb_dynamicBody, tbMakeVec2(pivot.x, pivot.y - 0.25f), 0.05f, 0.25f, 1.0f);
 		tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
 		def.base.bodyIdA = previous;
 		def.base.bodyIdB = links[i];
@@ -648,8 +606,8 @@ static void MakeHangingChain(tbWorldId world, tbBodyId anchorBody, tbVec2 anchor
 // static body links nothing): it sleeps on.
 Test(joint, joined_bodies_sleep_and_wake_together)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
 	tbBodyId left[4], right[4];
 	MakeHangingChain(world, ground, tbMakeVec2(0.0f, 0.0f), 4, left);
 	MakeHangingChain(world, ground, tbMakeVec2(3.0f, 0.0f), 4, right);
@@ -686,8 +644,8 @@ Test(joint, joined_bodies_sleep_and_wake_together)
 // and the chain stays awake with its link.
 Test(joint, a_body_put_to_sleep_by_hand_is_woken_by_its_awake_partner)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
 	tbBodyId links[4];
 	MakeHangingChain(world, ground, tbMakeVec2(0.0f, 0.0f), 4, links);
 	tbBody_SetLinearVelocity(links[3], tbMakeVec2(2.0f, 0.0f)); // swinging: nothing rests
@@ -714,7 +672,7 @@ Test(joint, a_body_put_to_sleep_by_hand_is_woken_by_its_awake_partner)
 // acceleration; the tolerance is float rounding of 60 steps).
 Test(joint, tree_of_very_different_bodies_falls_freely)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	bodyDef.type = tb_dynamicBody;
 	bodyDef.position = tbMakeVec2(0.0f, 6.0f);
@@ -752,15 +710,15 @@ Test(joint, collide_connected_filters_contacts)
 {
 	for (int collide = 0; collide < 2; ++collide)
 	{
-		tbWorldId world = MakeWorld(tb_vec2_zero);
-		tbBodyId a = MakeBox(world, tbMakeVec2(0.0f, 0.0f), 0.5f, 0.5f, 1.0f);
-		tbBodyId b = MakeBox(world, tbMakeVec2(0.6f, 0.0f), 0.5f, 0.5f, 1.0f);
+		tbWorldId world = CreateWorld(tbVec2_zero);
+		tbBodyId a = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 0.0f), 0.5f, 0.5f, 1.0f);
+		tbBodyId b = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.6f, 0.0f), 0.5f, 0.5f, 1.0f);
 		tbWorld_Step(world, DT, SUB_STEPS); // a contact exists before the joint (and pushed them)
 		cr_assert(tbWorld_GetCounters(world).touchingCount > 0);
-		tbBody_SetTransform(a, tbMakeVec2(0.0f, 0.0f), tb_rot_identity);
-		tbBody_SetTransform(b, tbMakeVec2(0.6f, 0.0f), tb_rot_identity);
-		tbBody_SetLinearVelocity(a, tb_vec2_zero);
-		tbBody_SetLinearVelocity(b, tb_vec2_zero);
+		tbBody_SetTransform(a, tbMakeVec2(0.0f, 0.0f), tbRot_identity);
+		tbBody_SetTransform(b, tbMakeVec2(0.6f, 0.0f), tbRot_identity);
+		tbBody_SetLinearVelocity(a, tbVec2_zero);
+		tbBody_SetLinearVelocity(b, tbVec2_zero);
 		tbBody_SetAngularVelocity(a, 0.0f);
 		tbBody_SetAngularVelocity(b, 0.0f);
 		tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
@@ -819,17 +777,17 @@ static uint64_t RunJointedScene(tbBroadPhaseMethod method, int steps)
 	tbWorldId world = tbCreateWorld(&worldDef);
 	tbBodyId bodies[64];
 	int n = 0;
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbSegment floor = {{-20.0f, 0.0f}, {20.0f, 0.0f}};
 	tbCreateSegmentShape(ground, &shapeDef, &floor);
 
 	// Cart: a box on two motorised wheels.
-	tbBodyId cart = MakeBox(world, tbMakeVec2(0.0f, 1.0f), 1.0f, 0.2f, 2.0f);
+	tbBodyId cart = CreateBox(world, tb_dynamicBody, tbMakeVec2(0.0f, 1.0f), 1.0f, 0.2f, 2.0f);
 	bodies[n++] = cart;
 	for (int side = -1; side <= 1; side += 2)
 	{
-		tbBodyId wheel = MakeDisc(world, tbMakeVec2(0.7f * (float)side, 0.4f), 0.3f, 1.0f);
+		tbBodyId wheel = CreateDiscOfMass(world, tbMakeVec2(0.7f * (float)side, 0.4f), 0.3f, 1.0f);
 		bodies[n++] = wheel;
 		tbWheelJointDef def = tbDefaultWheelJointDef();
 		def.base.bodyIdA = cart;
@@ -854,7 +812,7 @@ static uint64_t RunJointedScene(tbBroadPhaseMethod method, int steps)
 	}
 	tbBody_SetLinearVelocity(chain[7], tbMakeVec2(-5.0f, 0.0f));
 	// Piston on a prismatic joint with a spring and limits.
-	tbBodyId piston = MakeBox(world, tbMakeVec2(-4.0f, 2.0f), 0.3f, 0.3f, 1.0f);
+	tbBodyId piston = CreateBox(world, tb_dynamicBody, tbMakeVec2(-4.0f, 2.0f), 0.3f, 0.3f, 1.0f);
 	bodies[n++] = piston;
 	tbPrismaticJointDef prismatic = tbDefaultPrismaticJointDef();
 	prismatic.base.bodyIdA = ground;
@@ -869,8 +827,8 @@ static uint64_t RunJointedScene(tbBroadPhaseMethod method, int steps)
 	prismatic.upperTranslation = 1.0f;
 	tbCreatePrismaticJoint(world, &prismatic);
 	// A welded pair with soft weld, and a spring to the ground.
-	tbBodyId a = MakeBox(world, tbMakeVec2(-2.0f, 3.0f), 0.4f, 0.2f, 1.0f);
-	tbBodyId b = MakeBox(world, tbMakeVec2(-1.2f, 3.0f), 0.4f, 0.2f, 1.0f);
+	tbBodyId a = CreateBox(world, tb_dynamicBody, tbMakeVec2(-2.0f, 3.0f), 0.4f, 0.2f, 1.0f);
+	tbBodyId b = CreateBox(world, tb_dynamicBody, tbMakeVec2(-1.2f, 3.0f), 0.4f, 0.2f, 1.0f);
 	bodies[n++] = a;
 	bodies[n++] = b;
 	tbWeldJointDef weld = tbDefaultWeldJointDef();
@@ -891,7 +849,7 @@ static uint64_t RunJointedScene(tbBroadPhaseMethod method, int steps)
 	spring.dampingRatio = 0.2f;
 	tbCreateDistanceJoint(world, &spring);
 	// A box dragged by a motor joint, and a filter joint between two overlapping boxes.
-	tbBodyId dragged = MakeBox(world, tbMakeVec2(6.0f, 1.0f), 0.3f, 0.3f, 1.0f);
+	tbBodyId dragged = CreateBox(world, tb_dynamicBody, tbMakeVec2(6.0f, 1.0f), 0.3f, 0.3f, 1.0f);
 	bodies[n++] = dragged;
 	tbMotorJointDef motor = tbDefaultMotorJointDef();
 	motor.base.bodyIdA = ground;
@@ -901,8 +859,8 @@ static uint64_t RunJointedScene(tbBroadPhaseMethod method, int steps)
 	motor.linearDampingRatio = 0.7f;
 	motor.maxSpringForce = 50.0f;
 	tbCreateMotorJoint(world, &motor);
-	tbBodyId f1 = MakeBox(world, tbMakeVec2(8.0f, 0.5f), 0.5f, 0.5f, 1.0f);
-	tbBodyId f2 = MakeBox(world, tbMakeVec2(8.5f, 0.5f), 0.5f, 0.5f, 1.0f);
+	tbBodyId f1 = CreateBox(world, tb_dynamicBody, tbMakeVec2(8.0f, 0.5f), 0.5f, 0.5f, 1.0f);
+	tbBodyId f2 = CreateBox(world, tb_dynamicBody, tbMakeVec2(8.5f, 0.5f), 0.5f, 0.5f, 1.0f);
 	bodies[n++] = f1;
 	bodies[n++] = f2;
 	tbFilterJointDef filter = tbDefaultFilterJointDef();
@@ -911,8 +869,8 @@ static uint64_t RunJointedScene(tbBroadPhaseMethod method, int steps)
 	tbCreateFilterJoint(world, &filter);
 	for (int i = 0; i < 6; ++i)
 	{
-		bodies[n++] = MakeBox(world, tbMakeVec2(-1.0f + 0.5f * (float)i, 0.25f + 0.6f * (float)(i % 2)), 0.25f, 0.25f,
-							  1.0f);
+		tbVec2 position = tbMakeVec2(-1.0f + 0.5f * (float)i, 0.25f + 0.6f * (float)(i % 2));
+		bodies[n++] = CreateBox(world, tb_dynamicBody, position, 0.25f, 0.25f, 1.0f);
 	}
 
 	for (int i = 0; i < steps; ++i)
@@ -963,7 +921,7 @@ static float SwingBallAndChain(int subSteps, bool trees, int steps)
 	tbWorldDef worldDef = tbDefaultWorldDef();
 	worldDef.enableJointTrees = trees;
 	tbWorldId world = tbCreateWorld(&worldDef);
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
 	const int count = 30;
 	const float hx = 0.25f, top = 20.0f;
 	tbCapsule capsule = {{-hx, 0.0f}, {hx, 0.0f}, 0.05f};
@@ -1063,8 +1021,8 @@ static tbJointId Pin(tbWorldId world, tbBodyId a, tbBodyId b, tbVec2 pivot)
 // pin of the bridge opens 6.5 cm).
 Test(joint, trees_handle_bridges_loops_ragdolls_and_degenerate_blocks)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId ground = MakeStatic(world, tb_vec2_zero);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbSegment floor = {{-30.0f, 0.0f}, {30.0f, 0.0f}};
 	tbCreateSegmentShape(ground, &shapeDef, &floor);
@@ -1097,12 +1055,12 @@ Test(joint, trees_handle_bridges_loops_ragdolls_and_degenerate_blocks)
 		previous = plank;
 	}
 	joints[n++] = Pin(world, previous, ground, pivot);
-	bodies[m++] = MakeBox(world, tbMakeVec2(-5.5f, 5.0f), 0.5f, 0.5f, 50.0f);
+	bodies[m++] = CreateBox(world, tb_dynamicBody, tbMakeVec2(-5.5f, 5.0f), 0.5f, 0.5f, 50.0f);
 
 	// Four-bar linkage: ground pivots at x = 3 and x = 5, a coupler between the cranks.
-	tbBodyId crankA = MakeBox(world, tbMakeVec2(3.0f, 4.0f), 0.05f, 1.0f, 1.0f);
-	tbBodyId crankB = MakeBox(world, tbMakeVec2(5.0f, 4.0f), 0.05f, 1.0f, 1.0f);
-	tbBodyId coupler = MakeBox(world, tbMakeVec2(4.0f, 3.0f), 1.0f, 0.05f, 1.0f);
+	tbBodyId crankA = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 4.0f), 0.05f, 1.0f, 1.0f);
+	tbBodyId crankB = CreateBox(world, tb_dynamicBody, tbMakeVec2(5.0f, 4.0f), 0.05f, 1.0f, 1.0f);
+	tbBodyId coupler = CreateBox(world, tb_dynamicBody, tbMakeVec2(4.0f, 3.0f), 1.0f, 0.05f, 1.0f);
 	bodies[m++] = crankA;
 	bodies[m++] = crankB;
 	bodies[m++] = coupler;
@@ -1113,12 +1071,14 @@ Test(joint, trees_handle_bridges_loops_ragdolls_and_degenerate_blocks)
 	tbBody_SetAngularVelocity(crankA, 2.0f);
 
 	// Ragdoll-like tree: a torso with two two-segment limbs on limited hinges, dropped from 3 m.
-	tbBodyId torso = MakeBox(world, tbMakeVec2(10.0f, 3.0f), 0.3f, 0.6f, 1.0f);
+	tbBodyId torso = CreateBox(world, tb_dynamicBody, tbMakeVec2(10.0f, 3.0f), 0.3f, 0.6f, 1.0f);
 	bodies[m++] = torso;
 	for (int side = -1; side <= 1; side += 2)
 	{
-		tbBodyId upper = MakeBox(world, tbMakeVec2(10.0f + 0.15f * (float)side, 2.1f), 0.08f, 0.3f, 1.0f);
-		tbBodyId lower = MakeBox(world, tbMakeVec2(10.0f + 0.15f * (float)side, 1.5f), 0.08f, 0.3f, 1.0f);
+		tbBodyId upper =
+			CreateBox(world, tb_dynamicBody, tbMakeVec2(10.0f + 0.15f * (float)side, 2.1f), 0.08f, 0.3f, 1.0f);
+		tbBodyId lower =
+			CreateBox(world, tb_dynamicBody, tbMakeVec2(10.0f + 0.15f * (float)side, 1.5f), 0.08f, 0.3f, 1.0f);
 		bodies[m++] = upper;
 		bodies[m++] = lower;
 		tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
@@ -1164,7 +1124,7 @@ Test(joint, trees_handle_bridges_loops_ragdolls_and_degenerate_blocks)
 	kinematicDef.position = tbMakeVec2(20.0f, 5.0f);
 	kinematicDef.linearVelocity = tbMakeVec2(1.0f, 0.0f);
 	tbBodyId cart = tbCreateBody(world, &kinematicDef);
-	tbBodyId bob = MakeDisc(world, tbMakeVec2(21.0f, 5.0f), 0.1f, 1.0f);
+	tbBodyId bob = CreateDiscOfMass(world, tbMakeVec2(21.0f, 5.0f), 0.1f, 1.0f);
 	bodies[m++] = bob;
 	joints[n++] = Pin(world, cart, bob, tbMakeVec2(20.0f, 5.0f));
 
@@ -1266,9 +1226,9 @@ Test(joint, ragdoll_pile_falls_asleep)
 // Each kind refuses a bad definition with one message naming the field, and creates nothing.
 Test(joint, every_kind_refuses_a_bad_definition, .init = SetupErrors, .fini = TeardownErrors)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId a = MakeDisc(world, tbMakeVec2(0.0f, 0.0f), 0.1f, 1.0f);
-	tbBodyId b = MakeDisc(world, tbMakeVec2(1.0f, 0.0f), 0.1f, 1.0f);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId a = CreateDiscOfMass(world, tbMakeVec2(0.0f, 0.0f), 0.1f, 1.0f);
+	tbBodyId b = CreateDiscOfMass(world, tbMakeVec2(1.0f, 0.0f), 0.1f, 1.0f);
 	int before = s_errors;
 
 	tbDistanceJointDef distance = tbDefaultDistanceJointDef();
@@ -1343,7 +1303,7 @@ Test(joint, every_kind_refuses_a_bad_definition, .init = SetupErrors, .fini = Te
 
 	// A locked world refuses: create from inside a query callback is not possible here, so check
 	// the stale world instead.
-	tbWorldId stale = MakeWorld(tb_vec2_zero);
+	tbWorldId stale = CreateWorld(tbVec2_zero);
 	tbDestroyWorld(stale);
 	before = s_errors;
 	tbFilterJointDef filter = tbDefaultFilterJointDef();
@@ -1361,9 +1321,9 @@ Test(joint, every_kind_refuses_a_bad_definition, .init = SetupErrors, .fini = Te
 // what the definition said.
 Test(joint, setters_and_getters_round_trip)
 {
-	tbWorldId world = MakeWorld(tbMakeVec2(0.0f, -10.0f));
-	tbBodyId a = MakeDisc(world, tbMakeVec2(0.0f, 0.0f), 0.1f, 1.0f);
-	tbBodyId b = MakeDisc(world, tbMakeVec2(1.0f, 0.0f), 0.1f, 1.0f);
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId a = CreateDiscOfMass(world, tbMakeVec2(0.0f, 0.0f), 0.1f, 1.0f);
+	tbBodyId b = CreateDiscOfMass(world, tbMakeVec2(1.0f, 0.0f), 0.1f, 1.0f);
 	int tag = 7;
 
 	tbRevoluteJointDef rd = tbDefaultRevoluteJointDef();

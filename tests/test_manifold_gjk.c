@@ -12,18 +12,12 @@
 
 #include "collide_world.h"
 #include "tumble/collision.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <stdio.h>
 
 static uint32_t lcgState = 987654321u;
-
-static float randomFloat(float lower, float upper)
-{
-	lcgState = 1664525u * lcgState + 1013904223u;
-	float unit = (float)(lcgState >> 8) * (1.0f / 16777216.0f);
-	return lower + (upper - lower) * unit;
-}
 
 // Random convex polygon with a radius of about `size` metres (3 to 8 random points on a ring).
 static tbPolygon randomPolygon(float size)
@@ -31,11 +25,11 @@ static tbPolygon randomPolygon(float size)
 	for (;;)
 	{
 		tbVec2 points[TB_MAX_POLYGON_VERTICES];
-		int count = 3 + (int)randomFloat(0.0f, 5.999f);
+		int count = 3 + (int)RandomFloat(&lcgState, 0.0f, 5.999f);
 		for (int i = 0; i < count; ++i)
 		{
-			float angle = randomFloat(-TB_PI, TB_PI);
-			float r = size * randomFloat(0.3f, 1.0f);
+			float angle = RandomFloat(&lcgState, -TB_PI, TB_PI);
+			float r = size * RandomFloat(&lcgState, 0.3f, 1.0f);
 			points[i] = tbMakeVec2(r * cosf(angle), r * sinf(angle));
 		}
 		tbHull hull = tbComputeHull(points, count);
@@ -194,8 +188,8 @@ Test(manifold_gjk, box_on_box)
 	// two points at B's bottom corners, separation −0.01, normal +y, midway points
 	tbPolygon ground = tbMakeBox(2.0f, 0.5f);
 	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbTransform xfA = {{0.0f, 0.0f}, tb_rot_identity};
-	tbTransform xfB = {{0.3f, 0.99f}, tb_rot_identity};
+	tbTransform xfA = {{0.0f, 0.0f}, tbRot_identity};
+	tbTransform xfB = {{0.3f, 0.99f}, tbRot_identity};
 	tbManifold m = WorldCollidePolygonsGJK(&ground, xfA, &box, xfB);
 	cr_assert_eq(m.pointCount, 2);
 	cr_assert_float_eq(m.normal.x, 0.0f, 1e-6f);
@@ -217,9 +211,9 @@ Test(manifold_gjk, box_on_box)
 	cr_assert_eq(m2.points[1].id, m.points[1].id);
 
 	// far apart: no points; just within the speculative distance: points with positive separation
-	tbTransform apart = {{0.3f, 1.5f}, tb_rot_identity};
+	tbTransform apart = {{0.3f, 1.5f}, tbRot_identity};
 	cr_assert_eq(WorldCollidePolygonsGJK(&ground, xfA, &box, apart).pointCount, 0);
-	tbTransform near = {{0.3f, 1.01f}, tb_rot_identity};
+	tbTransform near = {{0.3f, 1.01f}, tbRot_identity};
 	tbManifold m3 = WorldCollidePolygonsGJK(&ground, xfA, &box, near);
 	cr_assert_eq(m3.pointCount, 2);
 	cr_assert_float_eq(m3.points[0].separation, 0.01f, 1e-6f);
@@ -234,7 +228,7 @@ Test(manifold_gjk, rounded_and_flipped)
 	tbPolygon a = tbMakePolygon(&hullA, 0.05f);
 	tbPolygon b = tbMakePolygon(&hullB, 0.05f);
 	tbTransform xfA = {{0.0f, 0.0f}, tbMakeRot(0.2f)}; // A tilted: only one corner reaches B
-	tbTransform xfB = {{0.0f, -0.8f}, tb_rot_identity};
+	tbTransform xfB = {{0.0f, -0.8f}, tbRot_identity};
 	tbManifold m = WorldCollidePolygonsGJK(&a, xfA, &b, xfB);
 	cr_assert(m.pointCount >= 1);
 	cr_assert_float_eq(m.normal.y, -1.0f, 1e-6f);
@@ -268,17 +262,18 @@ Test(manifold_gjk, sat_agreement)
 	int worstAngleCase = -1, worstSeparationCase = -1;
 	for (int i = 0; i < 12000; ++i)
 	{
-		float sizeA = 0.05f * powf(200.0f, randomFloat(0.0f, 1.0f));
-		float sizeB = 0.05f * powf(200.0f, randomFloat(0.0f, 1.0f));
+		float sizeA = 0.05f * powf(200.0f, RandomFloat(&lcgState, 0.0f, 1.0f));
+		float sizeB = 0.05f * powf(200.0f, RandomFloat(&lcgState, 0.0f, 1.0f));
 		tbPolygon a = randomPolygon(sizeA);
 		tbPolygon b = randomPolygon(sizeB);
-		tbTransform xfA = {{randomFloat(-5.0f, 5.0f), randomFloat(-5.0f, 5.0f)}, tbMakeRot(randomFloat(-TB_PI, TB_PI))};
-		tbRot qB = tbMakeRot(randomFloat(-TB_PI, TB_PI));
+		tbTransform xfA = {{RandomFloat(&lcgState, -5.0f, 5.0f), RandomFloat(&lcgState, -5.0f, 5.0f)},
+						   tbMakeRot(RandomFloat(&lcgState, -TB_PI, TB_PI))};
+		tbRot qB = tbMakeRot(RandomFloat(&lcgState, -TB_PI, TB_PI));
 
 		// move B along u from the touching offset: in by `overlap` (negative: apart)
-		tbVec2 u = tbRotateVector(tbMakeRot(randomFloat(-TB_PI, TB_PI)), tbMakeVec2(1.0f, 0.0f));
+		tbVec2 u = tbRotateVector(tbMakeRot(RandomFloat(&lcgState, -TB_PI, TB_PI)), tbMakeVec2(1.0f, 0.0f));
 		float smaller = fminf(thickness(&a), thickness(&b));
-		float overlap = randomFloat(-0.03f, 0.5f * smaller);
+		float overlap = RandomFloat(&lcgState, -0.03f, 0.5f * smaller);
 		float touching = contactOffset(&a, xfA, &b, qB, u);
 		tbTransform xfB = placeB(&a, xfA, &b, qB, u, touching - overlap);
 

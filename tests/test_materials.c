@@ -5,6 +5,7 @@
 #include <criterion/criterion.h>
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 #include <math.h>
 #include <string.h>
@@ -14,35 +15,9 @@ static const float s_dt = 1.0f / 60.0f;
 /// A static box of half extents (50, 0.5) whose top face is y = 0, with the given material.
 static tbShapeId MakeGround(tbWorldId world, const tbSurfaceMaterial* material)
 {
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.position = (tbVec2){0.0f, -0.5f};
-	tbBodyId ground = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	shapeDef.material = *material;
-	tbPolygon box = tbMakeBox(50.0f, 0.5f);
-	return tbCreatePolygonShape(ground, &shapeDef, &box);
-}
-
-static tbBodyId MakeBox(tbWorldId world, tbVec2 position, tbVec2 velocity, float friction)
-{
-	tbBodyDef bodyDef = tbDefaultBodyDef();
-	bodyDef.type = tb_dynamicBody;
-	bodyDef.position = position;
-	bodyDef.linearVelocity = velocity;
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	shapeDef.material.friction = friction;
-	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbCreatePolygonShape(body, &shapeDef, &box);
-	return body;
-}
-
-static void Step(tbWorldId world, int steps)
-{
-	for (int i = 0; i < steps; ++i)
-	{
-		tbWorld_Step(world, s_dt, 4);
-	}
+	return CreateGround(world, (tbVec2){0.0f, -0.5f}, 50.0f, 0.5f, &shapeDef);
 }
 
 // A conveyor belt: friction drives what rests on the belt to the belt's tangent speed. The
@@ -55,8 +30,8 @@ Test(materials, box_on_a_conveyor_reaches_the_belt_speed)
 	tbSurfaceMaterial belt = tbDefaultSurfaceMaterial();
 	belt.tangentSpeed = 2.0f;
 	MakeGround(world, &belt);
-	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
-	Step(world, 120);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
+	StepWorld(world, 120, s_dt, 4);
 	tbVec2 v = tbBody_GetLinearVelocity(box);
 	cr_expect(fabsf(v.x - 2.0f) <= 0.02f, "box moves at %.4f m/s on a 2 m/s belt", (double)v.x);
 	cr_expect(fabsf(v.y) <= 0.01f, "vertical speed %.4f", (double)v.y);
@@ -71,18 +46,18 @@ Test(materials, changing_the_belt_at_run_time_reaches_existing_contacts)
 	tbSurfaceMaterial belt = tbDefaultSurfaceMaterial();
 	belt.tangentSpeed = 2.0f;
 	tbShapeId beltShape = MakeGround(world, &belt);
-	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
-	Step(world, 60);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
+	StepWorld(world, 60, s_dt, 4);
 	belt.tangentSpeed = -1.0f;
 	cr_assert(tbShape_SetSurfaceMaterial(beltShape, &belt));
-	Step(world, 120);
+	StepWorld(world, 120, s_dt, 4);
 	float vx = tbBody_GetLinearVelocity(box).x;
 	cr_expect(fabsf(vx + 1.0f) <= 0.01f, "box moves at %.4f m/s on a belt reversed to -1 m/s", (double)vx);
 	cr_expect_eq(tbShape_GetSurfaceMaterial(beltShape).tangentSpeed, -1.0f);
 
 	// Friction set to 0 on the belt: nothing drives the box any more, it keeps its speed.
 	cr_assert(tbShape_SetFriction(beltShape, 0.0f));
-	Step(world, 60);
+	StepWorld(world, 60, s_dt, 4);
 	float coast = tbBody_GetLinearVelocity(box).x;
 	cr_expect(fabsf(coast - vx) <= 1e-3f, "frictionless belt: %.4f m/s, was %.4f", (double)coast, (double)vx);
 	tbDestroyWorld(world);
@@ -101,12 +76,12 @@ Test(materials, a_belt_started_under_a_resting_box_drives_it)
 	tbWorldId world = tbCreateWorld(&worldDef);
 	tbSurfaceMaterial belt = tbDefaultSurfaceMaterial();
 	tbShapeId beltShape = MakeGround(world, &belt);
-	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
-	Step(world, 120);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
+	StepWorld(world, 120, s_dt, 4);
 	cr_assert(fabsf(tbBody_GetLinearVelocity(box).x) <= 1e-4f, "the box rests before the belt starts");
 	belt.tangentSpeed = 2.0f;
 	cr_assert(tbShape_SetSurfaceMaterial(beltShape, &belt));
-	Step(world, 120);
+	StepWorld(world, 120, s_dt, 4);
 	float vx = tbBody_GetLinearVelocity(box).x;
 	cr_expect(fabsf(vx - 2.0f) <= 0.02f, "box moves at %.4f m/s on a belt started at 2 m/s", (double)vx);
 	tbDestroyWorld(world);
@@ -134,15 +109,15 @@ static float MeasureRollingDeceleration(tbWorldDef worldDef, float c, float* sli
 	tbBodyId ball = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
 	shapeDef.material.rollingResistance = c;
-	tbCircle circle = {tb_vec2_zero, radius};
+	tbCircle circle = {tbVec2_zero, radius};
 	tbShapeId ballShape = tbCreateCircleShape(ball, &shapeDef, &circle);
 	cr_assert_eq(tbShape_GetSurfaceMaterial(ballShape).rollingResistance, c);
-	Step(world, 30);
+	StepWorld(world, 30, s_dt, 4);
 	float v1 = tbBody_GetLinearVelocity(ball).x;
-	Step(world, 60);
+	StepWorld(world, 60, s_dt, 4);
 	float v2 = tbBody_GetLinearVelocity(ball).x;
 	*slip = fabsf(v2 + tbBody_GetAngularVelocity(ball) * radius);
-	Step(world, 240);
+	StepWorld(world, 240, s_dt, 4);
 	*finalSpeed = fabsf(tbBody_GetLinearVelocity(ball).x);
 	tbDestroyWorld(world);
 	return (v1 - v2) / (60.0f * s_dt);
@@ -206,13 +181,13 @@ Test(materials, motion_locks_hold_their_axes)
 
 	// rotation locked: spun, it never turns.
 	bodyDef.position = (tbVec2){10.0f, 5.0f};
-	bodyDef.linearVelocity = tb_vec2_zero;
+	bodyDef.linearVelocity = tbVec2_zero;
 	bodyDef.angularVelocity = 5.0f;
 	bodyDef.motionLocks = (tbMotionLocks){false, false, true};
 	tbBodyId lockedZ = tbCreateBody(world, &bodyDef);
 	tbCreatePolygonShape(lockedZ, &shapeDef, &box);
 
-	Step(world, 60);
+	StepWorld(world, 60, s_dt, 4);
 	tbVec2 px = tbBody_GetPosition(lockedX);
 	cr_expect_eq(px.x, 1.0f, "x-locked body at x = %.7f", (double)px.x);
 	cr_expect_eq(tbBody_GetLinearVelocity(lockedX).x, 0.0f);
@@ -232,7 +207,7 @@ Test(materials, motion_locks_hold_their_axes)
 	tbMotionLocks locks = tbBody_GetMotionLocks(lockedY);
 	cr_expect(locks.linearX && !locks.linearY && !locks.angularZ);
 	float x = tbBody_GetPosition(lockedY).x;
-	Step(world, 30);
+	StepWorld(world, 30, s_dt, 4);
 	cr_expect_eq(tbBody_GetPosition(lockedY).x, x);
 	cr_expect(tbBody_GetPosition(lockedY).y < 4.0f, "unlocked in y, it fell to %.3f", (double)tbBody_GetPosition(lockedY).y);
 	tbDestroyWorld(world);
@@ -269,13 +244,13 @@ Test(materials, user_material_ids_and_custom_colours)
 	tbSurfaceMaterial ground = tbDefaultSurfaceMaterial();
 	ground.userMaterialId = 0x100000000ull; // above 32 bits
 	tbShapeId groundShape = MakeGround(world, &ground);
-	tbBodyId box = MakeBox(world, (tbVec2){0.0f, 0.5f}, tb_vec2_zero, 0.6f);
+	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	tbShapeId boxShape;
 	cr_assert_eq(tbBody_GetShapes(box, &boxShape, 1), 1);
 	tbShape_SetUserMaterial(boxShape, 7u);
 	cr_expect_eq(tbShape_GetUserMaterial(boxShape), 7u);
 	cr_expect_eq(tbShape_GetUserMaterial(groundShape), 0x100000000ull);
-	Step(world, 2);
+	StepWorld(world, 2, s_dt, 4);
 	cr_expect_eq(s_seenMaterials[0], 7u);
 	cr_expect_eq(s_seenMaterials[1], 0x100000000ull);
 
@@ -320,7 +295,7 @@ Test(materials, bad_materials_and_locks_are_refused_without_change, .init = Setu
 			tbBodyId body = tbCreateBody(world, &bodyDef);
 			tbShapeDef shapeDef = tbDefaultShapeDef();
 			shapeDef.material = bad;
-			tbCircle circle = {tb_vec2_zero, 0.5f};
+			tbCircle circle = {tbVec2_zero, 0.5f};
 			before = s_errors;
 			tbShapeId none = tbCreateCircleShape(body, &shapeDef, &circle);
 			cr_expect_not(tbShape_IsValid(none));

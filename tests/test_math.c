@@ -128,12 +128,12 @@ Test(math, integrate_rotation_is_third_order)
 
 Test(math, normalize_is_never_nan)
 {
-	tbVec2 zero = tbNormalize(tb_vec2_zero);
+	tbVec2 zero = tbNormalize(tbVec2_zero);
 	cr_expect(zero.x == 0.0f && zero.y == 0.0f);
 	tbVec2 tiny = tbNormalize(tbMakeVec2(1e-30f, -1e-30f));
 	cr_expect(tiny.x == 0.0f && tiny.y == 0.0f);
 	float length = -1.0f;
-	tbVec2 n = tbGetLengthAndNormalize(&length, tb_vec2_zero);
+	tbVec2 n = tbGetLengthAndNormalize(&length, tbVec2_zero);
 	cr_expect(n.x == 0.0f && n.y == 0.0f && length == 0.0f);
 	// 3-4-5 triangle: exact up to one rounding of 0.6 and 0.8.
 	n = tbGetLengthAndNormalize(&length, tbMakeVec2(3.0f, -4.0f));

@@ -91,7 +91,7 @@ Test(mover, mover_planes_against_every_shape_kind)
 	tbCapsule mover = {{0.0f, 0.45f}, {0.0f, 1.45f}, 0.5f};
 	tbGeometry shapes[4];
 	shapes[0].type = tb_polygonShape;
-	shapes[0].polygon = tbMakeOffsetBox(2.0f, 0.5f, (tbVec2){0.0f, -0.5f}, tb_rot_identity); // top y = 0
+	shapes[0].polygon = tbMakeOffsetBox(2.0f, 0.5f, (tbVec2){0.0f, -0.5f}, tbRot_identity); // top y = 0
 	shapes[1].type = tb_circleShape;
 	shapes[1].circle = (tbCircle){{0.0f, -1.0f}, 1.0f}; // top y = 0
 	shapes[2].type = tb_segmentShape;
@@ -100,7 +100,7 @@ Test(mover, mover_planes_against_every_shape_kind)
 	shapes[3].capsule = (tbCapsule){{-2.0f, -0.25f}, {2.0f, -0.25f}, 0.25f}; // top y = 0
 	for (int i = 0; i < 4; ++i)
 	{
-		tbPlaneResult r = tbCollideMover(&mover, shapes + i, tb_transform_identity);
+		tbPlaneResult r = tbCollideMover(&mover, shapes + i, tbTransform_identity);
 		cr_expect(r.hit, "shape %d: no plane", i);
 		cr_expect_float_eq(r.plane.normal.x, 0.0f, 1e-5f, "shape %d", i);
 		cr_expect_float_eq(r.plane.normal.y, 1.0f, 1e-5f, "shape %d", i);
@@ -109,9 +109,9 @@ Test(mover, mover_planes_against_every_shape_kind)
 	}
 	// Out of reach: no plane.
 	tbCapsule high = {{0.0f, 0.6f}, {0.0f, 1.6f}, 0.5f};
-	cr_expect_not(tbCollideMover(&high, shapes, tb_transform_identity).hit);
+	cr_expect_not(tbCollideMover(&high, shapes, tbTransform_identity).hit);
 	// The shape's transform places it: the box lifted by 0.1 m gives offset 0.15.
-	tbTransform lifted = {{0.0f, 0.1f}, tb_rot_identity};
+	tbTransform lifted = {{0.0f, 0.1f}, tbRot_identity};
 	cr_expect_float_eq(tbCollideMover(&mover, shapes, lifted).plane.offset, 0.15f, 1e-5f);
 }
 
@@ -124,9 +124,9 @@ static tbWorldId MakeLevel(void)
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	tbBodyId ground = tbCreateBody(world, &bodyDef);
 	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbPolygon floor = tbMakeOffsetBox(20.0f, 0.5f, (tbVec2){10.0f, -0.5f}, tb_rot_identity);
+	tbPolygon floor = tbMakeOffsetBox(20.0f, 0.5f, (tbVec2){10.0f, -0.5f}, tbRot_identity);
 	tbCreatePolygonShape(ground, &shapeDef, &floor);
-	tbPolygon wall = tbMakeOffsetBox(0.5f, 1.5f, (tbVec2){10.5f, 1.5f}, tb_rot_identity);
+	tbPolygon wall = tbMakeOffsetBox(0.5f, 1.5f, (tbVec2){10.5f, 1.5f}, tbRot_identity);
 	tbCreatePolygonShape(ground, &shapeDef, &wall);
 	tbSegment ramp = {{15.0f, 0.0f}, {15.0f + 10.0f * cosf(TB_PI / 6.0f), 10.0f * sinf(TB_PI / 6.0f)}};
 	tbCreateSegmentShape(ground, &shapeDef, &ramp);
@@ -270,7 +270,7 @@ Test(mover, bad_mover_input_is_refused, .init = SetupErrors, .fini = TeardownErr
 	ExpectError(before, "tbClipVector", "planes");
 	cr_expect_eq(v.x, 1.0f);
 	before = s_errors;
-	tbPlaneResult none = tbCollideMover(NULL, NULL, tb_transform_identity);
+	tbPlaneResult none = tbCollideMover(NULL, NULL, tbTransform_identity);
 	ExpectError(before, "tbCollideMover", "mover");
 	cr_expect_not(none.hit);
 	tbDestroyWorld(world);

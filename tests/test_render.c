@@ -103,8 +103,8 @@ static const uint8_t* Pixel(const RenderImage* image, int i, int j)
 Test(render, rounded_polygon_follows_its_outline)
 {
 	Scene* scene = Scene_Create();
-	int body = Scene_AddBody(scene, tb_staticBody, tb_vec2_zero, 0.0f);
-	tbGeometry geometry = Scene_MakeBoxGeometry(1.0f, 1.0f, tb_vec2_zero, 0.0f);
+	int body = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
+	tbGeometry geometry = Scene_MakeBoxGeometry(1.0f, 1.0f, tbVec2_zero, 0.0f);
 	geometry.polygon = tbMakeRoundedBox(1.0f, 1.0f, 0.5f);
 	Scene_AddGeometry(scene, body, &geometry, 1.0f, 0.6f);
 	SceneWorld world = Scene_BuildWorld(scene, NULL);

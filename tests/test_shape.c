@@ -97,7 +97,7 @@ Test(shape, event_flags_switch_at_run_time)
 	tbShape_EnableContactEvents(shape, true);
 	tbBody_EnableHitEvents(body, true);
 	cr_assert(tbShape_AreContactEventsEnabled(shape) && tbShape_AreHitEventsEnabled(shape));
-	cr_assert(tbBody_SetTransform(body, tbMakeVec2(0.0f, 2.5f), tb_rot_identity));
+	cr_assert(tbBody_SetTransform(body, tbMakeVec2(0.0f, 2.5f), tbRot_identity));
 	for (int step = 0; step < 90; ++step)
 	{
 		tbWorld_Step(world, TIME_STEP, 4);

@@ -47,7 +47,7 @@ static tbSweep makeSweep(tbVec2 localCenter, tbVec2 c1, tbVec2 c2, float angle1,
 
 static tbSweep staticSweep(tbVec2 center)
 {
-	return makeSweep(tb_vec2_zero, center, center, 0.0f, 0.0f);
+	return makeSweep(tbVec2_zero, center, center, 0.0f, 0.0f);
 }
 
 static bool isFiniteOutput(tbTOIOutput output)
@@ -114,8 +114,8 @@ static CirclePair headOnPair(float radiusA, float radiusB, tbVec2 startB, tbVec2
 	CirclePair pair;
 	pair.circleA = (tbCircle){{0.0f, 0.0f}, radiusA};
 	pair.circleB = (tbCircle){{0.0f, 0.0f}, radiusB};
-	pair.sweepA = staticSweep(tb_vec2_zero);
-	pair.sweepB = makeSweep(tb_vec2_zero, startB, endB, 0.0f, 0.0f);
+	pair.sweepA = staticSweep(tbVec2_zero);
+	pair.sweepB = makeSweep(tbVec2_zero, startB, endB, 0.0f, 0.0f);
 	pair.maxFraction = 1.0f;
 	pair.target = TB_TOI_TARGET_SEPARATION;
 	return pair;
@@ -279,8 +279,8 @@ Test(toi, circles_at_rest_relative_to_each_other)
 	// Δv = 0: both still, then both moving with the same velocity. No root: separated, fraction = maxFraction.
 	CirclePair still = headOnPair(0.5f, 0.5f, tbMakeVec2(3.0f, 0.0f), tbMakeVec2(3.0f, 0.0f));
 	CirclePair together = still;
-	together.sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, tbMakeVec2(5.0f, 1.0f), 0.0f, 0.0f);
-	together.sweepB = makeSweep(tb_vec2_zero, tbMakeVec2(3.0f, 0.0f), tbMakeVec2(8.0f, 1.0f), 0.0f, 0.0f);
+	together.sweepA = makeSweep(tbVec2_zero, tbVec2_zero, tbMakeVec2(5.0f, 1.0f), 0.0f, 0.0f);
+	together.sweepB = makeSweep(tbVec2_zero, tbMakeVec2(3.0f, 0.0f), tbMakeVec2(8.0f, 1.0f), 0.0f, 0.0f);
 	CirclePair* pairs[2] = {&still, &together};
 	for (int i = 0; i < 2; ++i)
 	{
@@ -299,7 +299,7 @@ Test(toi, circles_at_rest_relative_to_each_other)
 	cr_assert_float_eq(quadraticTOI(&overlapping).fraction, 0.0f, 0.0f);
 
 	// Coincident centres: the normal has no direction but stays finite and unit length.
-	CirclePair coincident = headOnPair(0.5f, 0.5f, tb_vec2_zero, tb_vec2_zero);
+	CirclePair coincident = headOnPair(0.5f, 0.5f, tbVec2_zero, tbVec2_zero);
 	tbTOIOutput output = quadraticTOI(&coincident);
 	cr_assert_eq(output.state, tb_toiStateOverlapped);
 	cr_assert(isFiniteOutput(output));
@@ -486,8 +486,8 @@ static tbTOIInput makeTOIInput(tbShapeProxy proxyA, tbSweep sweepA, tbShapeProxy
 Test(toi, conservative_box_box_with_rotation)
 {
 	// A 1 × 1 box turning a quarter turn while a 2 × 0.5 box comes at it turning the other way.
-	tbSweep sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, tbMakeVec2(0.5f, 0.0f), 0.0f, 1.5f);
-	tbSweep sweepB = makeSweep(tb_vec2_zero, tbMakeVec2(4.0f, 0.5f), tbMakeVec2(0.5f, 0.2f), 0.3f, -0.7f);
+	tbSweep sweepA = makeSweep(tbVec2_zero, tbVec2_zero, tbMakeVec2(0.5f, 0.0f), 0.0f, 1.5f);
+	tbSweep sweepB = makeSweep(tbVec2_zero, tbMakeVec2(4.0f, 0.5f), tbMakeVec2(0.5f, 0.2f), 0.3f, -0.7f);
 	tbTOIInput input = makeTOIInput(boxProxy(0.5f, 0.5f, 0.0f), sweepA, boxProxy(1.0f, 0.25f, 0.0f), sweepB);
 	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "box-box");
 
@@ -500,8 +500,8 @@ Test(toi, conservative_capsule_polygon)
 {
 	tbVec2 capsule[2] = {{-0.6f, 0.0f}, {0.6f, 0.0f}};
 	tbVec2 triangle[3] = {{-0.5f, -0.4f}, {0.5f, -0.4f}, {0.0f, 0.6f}};
-	tbSweep sweepA = makeSweep(tb_vec2_zero, tbMakeVec2(-3.0f, 1.0f), tbMakeVec2(1.0f, -0.5f), 0.0f, 2.0f);
-	tbSweep sweepB = staticSweep(tb_vec2_zero);
+	tbSweep sweepA = makeSweep(tbVec2_zero, tbMakeVec2(-3.0f, 1.0f), tbMakeVec2(1.0f, -0.5f), 0.0f, 2.0f);
+	tbSweep sweepB = staticSweep(tbVec2_zero);
 	tbTOIInput input = makeTOIInput(tbMakeProxy(capsule, 2, 0.2f), sweepA, tbMakeProxy(triangle, 3, 0.0f), sweepB);
 	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "capsule-polygon");
 }
@@ -510,8 +510,8 @@ Test(toi, conservative_segment_circle)
 {
 	tbVec2 segment[2] = {{-2.0f, 0.0f}, {2.0f, 0.0f}};
 	tbVec2 center = {0.0f, 0.0f};
-	tbSweep sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, tb_vec2_zero, 0.0f, 1.0f);
-	tbSweep sweepB = makeSweep(tb_vec2_zero, tbMakeVec2(1.5f, 2.0f), tbMakeVec2(1.2f, -1.0f), 0.0f, 0.0f);
+	tbSweep sweepA = makeSweep(tbVec2_zero, tbVec2_zero, tbVec2_zero, 0.0f, 1.0f);
+	tbSweep sweepB = makeSweep(tbVec2_zero, tbMakeVec2(1.5f, 2.0f), tbMakeVec2(1.2f, -1.0f), 0.0f, 0.0f);
 	tbTOIInput input = makeTOIInput(tbMakeProxy(segment, 2, 0.0f), sweepA, tbMakeProxy(&center, 1, 0.3f), sweepB);
 	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "segment-circle");
 }
@@ -519,14 +519,14 @@ Test(toi, conservative_segment_circle)
 Test(toi, conservative_rounded_polygon)
 {
 	tbSweep sweepA = makeSweep(tbMakeVec2(0.1f, 0.0f), tbMakeVec2(-2.0f, 0.0f), tbMakeVec2(0.5f, 0.3f), 0.2f, 1.2f);
-	tbSweep sweepB = makeSweep(tb_vec2_zero, tbMakeVec2(1.0f, 0.0f), tbMakeVec2(0.8f, 0.0f), 0.0f, -0.5f);
+	tbSweep sweepB = makeSweep(tbVec2_zero, tbMakeVec2(1.0f, 0.0f), tbMakeVec2(0.8f, 0.0f), 0.0f, -0.5f);
 	tbTOIInput input = makeTOIInput(boxProxy(0.4f, 0.3f, 0.1f), sweepA, boxProxy(0.3f, 0.6f, 0.05f), sweepB);
 	checkHitProperty(&input, TB_TOI_TARGET_SEPARATION, tbTimeOfImpact(&input), "rounded polygons");
 }
 
 Test(toi, conservative_overlap_at_start)
 {
-	tbTOIInput input = makeTOIInput(boxProxy(0.5f, 0.5f, 0.0f), staticSweep(tb_vec2_zero), boxProxy(0.5f, 0.5f, 0.0f),
+	tbTOIInput input = makeTOIInput(boxProxy(0.5f, 0.5f, 0.0f), staticSweep(tbVec2_zero), boxProxy(0.5f, 0.5f, 0.0f),
 									staticSweep(tbMakeVec2(0.8f, 0.1f)));
 	tbTOIOutput output = tbTimeOfImpact(&input);
 	cr_assert_eq(output.state, tb_toiStateOverlapped);
@@ -543,7 +543,7 @@ static tbTOIInput spinningBoxLaunch(uint32_t* seed)
 	tbTOIInput input;
 	input.proxyA = boxProxy(0.05f, 10.0f, 0.0f);
 	input.proxyB = boxProxy(2.0f, 0.05f, 0.0f);
-	input.sweepA = staticSweep(tb_vec2_zero);
+	input.sweepA = staticSweep(tbVec2_zero);
 	input.maxFraction = 1.0f;
 	for (;;)
 	{
@@ -552,7 +552,7 @@ static tbTOIInput spinningBoxLaunch(uint32_t* seed)
 		float angle = lcgRange(seed, -3.1416f, 3.1416f);
 		tbVec2 start = {lcgRange(seed, -1.35f, -0.06f), lcgRange(seed, -2.0f, 2.0f)};
 		tbVec2 travel = tbMulSV(100.0f * timeStep, tbMakeVec2(cosf(heading), sinf(heading)));
-		input.sweepB = makeSweep(tb_vec2_zero, start, tbAdd(start, travel), angle, angle + omega * timeStep);
+		input.sweepB = makeSweep(tbVec2_zero, start, tbAdd(start, travel), angle, angle + omega * timeStep);
 		if (sweptSeparation(&input, 0.0f) > 0.01f)
 		{
 			return input;
@@ -658,12 +658,12 @@ static tbTOIInput circleAndTurningLongBox(float* target)
 	tbTOIInput input;
 	input.proxyA = tbMakeProxy(&center, 1, 0.0f);
 	input.proxyB = boxProxy(0x1.d2c6e4p+0f, 0x1.dba546p+1f, 0.0f); // hx 1.82334733, hy 3.71598125
-	input.sweepA.localCenter = tb_vec2_zero;
+	input.sweepA.localCenter = tbVec2_zero;
 	input.sweepA.c1 = tbMakeVec2(0x1.a7b158p+1f, -0x1.202726p+1f); // (3.3101, -2.25119)
 	input.sweepA.c2 = tbMakeVec2(0x1.9f86e4p+1f, -0x1.0d9892p+1f); // (3.2463, -2.10622)
 	input.sweepA.q1 = rotation(0x1.ff5572p-1f, -0x1.a1c596p-5f);	   // angle -0.0510197
 	input.sweepA.q2 = rotation(0x1.ffde92p-1f, -0x1.720572p-6f);	   // angle -0.0225862
-	input.sweepB.localCenter = tb_vec2_zero;
+	input.sweepB.localCenter = tbVec2_zero;
 	input.sweepB.c1 = tbMakeVec2(0x1.58017cp+2f, -0x1.8c56e4p+2f); // (5.37509, -6.1928)
 	input.sweepB.c2 = tbMakeVec2(0x1.8c95fp+2f, 0x1.dd5cap+0f);	   // (6.19665, 1.86469)
 	input.sweepB.q1 = rotation(-0x1.346958p-1f, 0x1.98b046p-1f);   // angle 2.21726
@@ -684,7 +684,7 @@ static tbTOIInput turningLongBoxAndPassingTriangle(float* target)
 	tbTOIInput input;
 	input.proxyA = boxProxy(0x1.8369eap-3f, 0x1.935b62p+1f, 0.0f); // hx 0.189166859, hy 3.15122628
 	input.proxyB = tbMakeProxy(triangle, 3, 0.0f);
-	input.sweepA.localCenter = tb_vec2_zero;
+	input.sweepA.localCenter = tbVec2_zero;
 	input.sweepA.c1 = tbMakeVec2(-0x1.111486p+2f, -0x1.9af3a2p+1f); // (-4.26688, -3.21056)
 	input.sweepA.c2 = tbMakeVec2(-0x1.15b94ep+2f, -0x1.bcc7aep+1f); // (-4.33944, -3.47484)
 	input.sweepA.q1 = rotation(0x1.b7407cp-2f, 0x1.ce809cp-1f);		// angle 1.12746
@@ -781,8 +781,8 @@ static tbTOIInput turningLongFaceSweep(uint32_t* seed)
 	tbVec2 aim = tbRotateVector(qA, tbMakeVec2(0.0f, lcgRange(seed, -halfLength, halfLength)));
 	tbVec2 travel = tbMulSV(lcgRange(seed, 2.0f, 10.0f), tbNormalize(tbSub(aim, start)));
 	float angleB = lcgRange(seed, -3.0f, 3.0f);
-	input.sweepA = makeSweep(tb_vec2_zero, tb_vec2_zero, tb_vec2_zero, angleA, angleA + turnA);
-	input.sweepB = makeSweep(tb_vec2_zero, start, tbAdd(start, travel), angleB, angleB + lcgRange(seed, -1.0f, 1.0f));
+	input.sweepA = makeSweep(tbVec2_zero, tbVec2_zero, tbVec2_zero, angleA, angleA + turnA);
+	input.sweepB = makeSweep(tbVec2_zero, start, tbAdd(start, travel), angleB, angleB + lcgRange(seed, -1.0f, 1.0f));
 	input.maxFraction = 1.0f;
 	return input;
 }

@@ -103,7 +103,9 @@ TB_API int tbInternalAssert(const char* condition, const char* fileName, int lin
 TB_API bool tbSetLengthUnitsPerMeter(float lengthUnits);
 TB_API float tbGetLengthUnitsPerMeter(void);
 
-/// Milliseconds and ticks for profiling. Not used by the simulation itself.
+/// Ticks and milliseconds for profiling: tbGetTicks is a cheap counter read (the processor's
+/// time-stamp counter where it is invariant, else nanoseconds of a monotonic clock); take
+/// differences of ticks through tbGetMilliseconds. Not used by the simulation itself.
 TB_API uint64_t tbGetTicks(void);
 TB_API float tbGetMilliseconds(uint64_t ticks);
 

@@ -79,11 +79,12 @@ typedef struct tbAABB
 	tbVec2 upperBound;
 } tbAABB;
 
-static const tbVec2 tb_vec2_zero = {0.0f, 0.0f};
+static const tbVec2 tbVec2_zero = {0.0f, 0.0f};
+static const tbRot tbRot_identity = {1.0f, 0.0f};
+static const tbTransform tbTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
+static const tbMat22 tbMat22_zero = {{0.0f, 0.0f}, {0.0f, 0.0f}};
 static const tbPos tbPos_zero = {0.0f, 0.0f};
-static const tbRot tb_rot_identity = {1.0f, 0.0f};
-static const tbTransform tb_transform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
-static const tbMat22 tb_mat22_zero = {{0.0f, 0.0f}, {0.0f, 0.0f}};
+static const tbWorldTransform tbWorldTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
 
 /// True for a finite float (neither NaN nor infinity).
 TB_INLINE bool tbIsValidFloat(float a)
@@ -97,7 +98,7 @@ TB_INLINE bool tbIsValidVec2(tbVec2 v)
 }
 
 /// A valid rotation is finite and normalised to 1e-4 (after tbNormalizeRot it is to float rounding).
-TB_INLINE bool tbIsValidRot(tbRot q)
+TB_INLINE bool tbIsValidRotation(tbRot q)
 {
 	if (tbIsValidFloat(q.c) == false || tbIsValidFloat(q.s) == false)
 	{
@@ -287,7 +288,7 @@ TB_INLINE tbVec2 tbNormalize(tbVec2 v)
 	float length = tbLength(v);
 	if (length < FLT_EPSILON)
 	{
-		return tb_vec2_zero;
+		return tbVec2_zero;
 	}
 	float inv = 1.0f / length;
 	tbVec2 n = {inv * v.x, inv * v.y};
@@ -306,7 +307,7 @@ TB_INLINE tbVec2 tbGetLengthAndNormalize(float* length, tbVec2 v)
 	*length = tbLength(v);
 	if (*length < FLT_EPSILON)
 	{
-		return tb_vec2_zero;
+		return tbVec2_zero;
 	}
 	float inv = 1.0f / *length;
 	tbVec2 n = {inv * v.x, inv * v.y};
@@ -466,7 +467,7 @@ TB_INLINE tbTransform tbInvMulTransforms(tbTransform A, tbTransform B)
 
 TB_INLINE bool tbIsValidTransform(tbTransform t)
 {
-	return tbIsValidVec2(t.p) && tbIsValidRot(t.q);
+	return tbIsValidVec2(t.p) && tbIsValidRotation(t.q);
 }
 
 TB_INLINE tbVec2 tbMulMV(tbMat22 A, tbVec2 v)
@@ -555,12 +556,7 @@ TB_INLINE bool tbIsValidAABB(tbAABB a)
 	return d.x >= 0.0f && d.y >= 0.0f && tbIsValidVec2(a.lowerBound) && tbIsValidVec2(a.upperBound);
 }
 
-// --- Box2D v3.2's names for the same things, and its smaller helpers ---------------------------
-
-static const tbVec2 tbVec2_zero = {0.0f, 0.0f};
-static const tbRot tbRot_identity = {1.0f, 0.0f};
-static const tbTransform tbTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
-static const tbWorldTransform tbWorldTransform_identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
+// --- Box2D v3.2's smaller helpers --------------------------------------------------------------
 
 TB_INLINE int tbAbsInt(int a)
 {
@@ -585,7 +581,7 @@ TB_INLINE tbRot tbMakeRotFromUnitVector(tbVec2 unitVector)
 	return q;
 }
 
-/// cos² + sin² within 6e-4 of 1 (tbIsValidRot also asks for finite numbers).
+/// cos² + sin² within 6e-4 of 1 (tbIsValidRotation also asks for finite numbers).
 TB_INLINE bool tbIsNormalizedRot(tbRot q)
 {
 	float d = q.c * q.c + q.s * q.s - 1.0f;
@@ -608,7 +604,6 @@ TB_INLINE float tbComputeAngularVelocity(tbRot q1, tbRot q2, float inv_h)
 
 /// The rotation taking unit vector v1 to unit vector v2: cos = v1·v2, sin = v1 × v2.
 TB_API tbRot tbComputeRotationBetweenUnitVectors(tbVec2 v1, tbVec2 v2);
-TB_API bool tbIsValidRotation(tbRot q);
 TB_API bool tbIsValidPlane(tbPlane plane);
 TB_API bool tbIsValidPosition(tbPos p);
 TB_API bool tbIsValidWorldTransform(tbWorldTransform t);

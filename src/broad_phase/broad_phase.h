@@ -17,6 +17,8 @@
 #include "sort_and_sweep.h"
 #include "spatial_hash.h"
 
+#include "core/task.h"
+
 #include "tumble/constants.h"
 #include "tumble/types.h"
 
@@ -38,7 +40,7 @@ typedef struct tbBroadPhase
 	// Pairs found by the last UpdatePairs (sorted, unique), with the optional pair filter.
 	tbPairList pairList;
 	// Pairs each worker found (tree method on workers), merged into pairList before the sort.
-	tbPairList workerPairs[2 * TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
+	tbPairList workerPairs[TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
 
 	// Method state. Only the selected method's state is live.
 	tbDynamicTree staticTree;
@@ -85,7 +87,7 @@ void tbBroadPhase_UpdatePairs(tbBroadPhase* bp);
 
 /// Runs task over items [0, itemCount) on up to workerCount workers and returns when all ran
 /// (the world's tbParallelFor, handed in so that the broad phase needs no world).
-typedef void tbRangeRunnerFcn(tbTaskCallback* task, int itemCount, int minRange, void* taskContext,
+typedef void tbRangeRunnerFcn(tbRangeTask* task, int itemCount, int minRange, void* taskContext,
 							  void* runnerContext);
 
 /// The same, the queries of moved proxies (tree and spatial hash) spread over workers (each worker
@@ -116,7 +118,7 @@ static inline bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKey
 
 /// Visit proxies overlapping aabb whose category bits share a bit with maskBits (callback gets
 /// proxy key and shape index; return false to stop).
-void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
+tbTreeStats tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 						void* context);
 
 /// tbBroadPhase_Query restricted to static proxies (continuous collision of non-bullets, which
@@ -126,7 +128,7 @@ void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t mask
 							  void* context);
 
 /// Ray cast over the proxies (callback as for the tree).
-void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
+tbTreeStats tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
 						  tbProxyRayCastFcn* callback, void* context);
 
 /// Height of the movable tree, or 0 for other methods.

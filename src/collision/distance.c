@@ -176,7 +176,7 @@ tbShapeProxy tbMakeOffsetProxy(const tbVec2* points, int count, float radius, tb
 	{
 		return proxy;
 	}
-	if (tbIsValidRot(rotation) == false)
+	if (tbIsValidRotation(rotation) == false)
 	{
 		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot", (double)rotation.c,
 					  (double)rotation.s);
@@ -221,7 +221,7 @@ tbShapeProxy tbMakeShapeProxy(const tbGeometry* shape)
 			return tbMakeProxy(shape->polygon.vertices, shape->polygon.count, shape->polygon.radius);
 		default:
 			TB_ASSERT(false);
-			return tbMakeProxy(&tb_vec2_zero, 1, 0.0f);
+			return tbMakeProxy(&tbVec2_zero, 1, 0.0f);
 	}
 }
 
@@ -563,8 +563,8 @@ static tbVec2 tbSearchDirection(const tbSimplex* simplex)
 // Closest points on A and B from the barycentric weights: pA = Σ aᵢ·wAᵢ, pB = Σ aᵢ·wBᵢ.
 static void tbWitnessPoints(tbVec2* pointA, tbVec2* pointB, tbSimplex* simplex)
 {
-	tbVec2 a = tb_vec2_zero;
-	tbVec2 b = tb_vec2_zero;
+	tbVec2 a = tbVec2_zero;
+	tbVec2 b = tbVec2_zero;
 	for (int i = 0; i < simplex->count; ++i)
 	{
 		const tbSimplexVertex* vertex = tbSimplexVertexAt(simplex, i);
@@ -588,7 +588,7 @@ static tbVec2 tbSimplexNormal(const tbSimplex* simplex)
 		tbVec2 n = tbNormalize(tbLeftPerp(tbSub(simplex->v2.w, simplex->v1.w)));
 		return tbDot(n, simplex->v1.w) < 0.0f ? tbNeg(n) : n;
 	}
-	return tb_vec2_zero;
+	return tbVec2_zero;
 }
 
 static bool tbIsRepeatedSupport(const tbSimplexVertex* saved, int savedCount, int indexA, int indexB)
@@ -805,7 +805,7 @@ tbCastOutput tbShapeCast(const tbShapeCastPairInput* input)
 	target = tbMaxFloat(target, TB_CAST_TOLERANCE);
 
 	tbSimplexCache cache = {0};
-	tbVec2 offset = tb_vec2_zero; // B's displacement λ·r so far
+	tbVec2 offset = tbVec2_zero; // B's displacement λ·r so far
 	float fraction = 0.0f;
 
 	for (int iteration = 1; iteration <= TB_TOI_MAX_ITERATIONS; ++iteration)
@@ -821,9 +821,9 @@ tbCastOutput tbShapeCast(const tbShapeCastPairInput* input)
 		{
 			if (iteration == 1)
 			{
-				return tbMakeInitialOverlap(&distance, tb_transform_identity, proxyA->radius, proxyB.radius);
+				return tbMakeInitialOverlap(&distance, tbTransform_identity, proxyA->radius, proxyB.radius);
 			}
-			return tbMakeCastHit(&distance, tb_transform_identity, proxyA->radius, fraction, iteration);
+			return tbMakeCastHit(&distance, tbTransform_identity, proxyA->radius, fraction, iteration);
 		}
 
 		// closing speed along the normal; convexity of d(λ) makes the tangent step conservative
@@ -865,7 +865,7 @@ static tbCastOutput tbShapeCastAgainst(const char* f, const tbShapeProxy* proxyA
 	tbShapeCastPairInput pair;
 	pair.proxyA = *proxyA;
 	pair.proxyB = input->proxy;
-	pair.transform = tb_transform_identity;
+	pair.transform = tbTransform_identity;
 	pair.translationB = input->translation;
 	pair.maxFraction = input->maxFraction;
 	pair.canEncroach = input->canEncroach;
@@ -912,7 +912,7 @@ tbCastOutput tbShapeCastCircle(const tbCircle* shape, const tbShapeCastInput* in
 tbCastOutput tbShapeCastCapsule(const tbCapsule* shape, const tbShapeCastInput* input)
 {
 	const char* f = "tbShapeCastCapsule";
-	tbVec2 points[2] = {tb_vec2_zero, tb_vec2_zero};
+	tbVec2 points[2] = {tbVec2_zero, tbVec2_zero};
 	if (shape != NULL)
 	{
 		points[0] = shape->center1;
@@ -924,7 +924,7 @@ tbCastOutput tbShapeCastCapsule(const tbCapsule* shape, const tbShapeCastInput* 
 tbCastOutput tbShapeCastSegment(const tbSegment* shape, const tbShapeCastInput* input)
 {
 	const char* f = "tbShapeCastSegment";
-	tbVec2 points[2] = {tb_vec2_zero, tb_vec2_zero};
+	tbVec2 points[2] = {tbVec2_zero, tbVec2_zero};
 	if (shape != NULL)
 	{
 		points[0] = shape->point1;

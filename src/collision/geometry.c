@@ -40,14 +40,14 @@ static tbPolygon tbEmptyPolygon(void)
 // Centroid of a convex polygon's area (triangle fan about the vertex average; Ericson §3.4).
 static tbVec2 tbComputePolygonCentroid(const tbVec2* vertices, int count)
 {
-	tbVec2 origin = tb_vec2_zero;
+	tbVec2 origin = tbVec2_zero;
 	for (int i = 0; i < count; ++i)
 	{
 		origin = tbAdd(origin, vertices[i]);
 	}
 	origin = tbMulSV(1.0f / (float)count, origin);
 
-	tbVec2 weighted = tb_vec2_zero;
+	tbVec2 weighted = tbVec2_zero;
 	float area = 0.0f;
 	for (int i = 0; i < count; ++i)
 	{
@@ -109,7 +109,7 @@ static bool tbCheckOffset(const char* f, const char* positionName, tbVec2 positi
 	{
 		return false;
 	}
-	if (tbIsValidRot(rotation) == false)
+	if (tbIsValidRotation(rotation) == false)
 	{
 		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot", (double)rotation.c,
 					  (double)rotation.s);
@@ -162,7 +162,7 @@ static tbPolygon tbMakeAlignedBox(float hx, float hy, float radius)
 	box.normals[2] = tbMakeVec2(0.0f, 1.0f);
 	box.normals[3] = tbMakeVec2(-1.0f, 0.0f);
 	box.radius = radius;
-	box.centroid = tb_vec2_zero;
+	box.centroid = tbVec2_zero;
 	return box;
 }
 
@@ -380,7 +380,7 @@ tbMassData tbComputePolygonMass(const tbPolygon* shape, float density)
 		return empty;
 	}
 
-	tbVec2 origin = tb_vec2_zero;
+	tbVec2 origin = tbVec2_zero;
 	for (int i = 0; i < shape->count; ++i)
 	{
 		origin = tbAdd(origin, shape->vertices[i]);
@@ -497,7 +497,7 @@ static tbAABB tbShapeBox(const tbGeometry* shape, tbTransform transform)
 #if defined(TUMBLE_DOUBLE_PRECISION)
 // Large-world build: the box is found about the shape's own position in float (its extent is
 // small) and moved out in double, rounded outwards, so it contains the shape at any distance.
-#define TB_WORLD_BOX(box, shape, transform) tbOffsetAABB(box(shape, (tbTransform){tb_vec2_zero, (transform).q}), (transform).p)
+#define TB_WORLD_BOX(box, shape, transform) tbOffsetAABB(box(shape, (tbTransform){tbVec2_zero, (transform).q}), (transform).p)
 #else
 #define TB_WORLD_BOX(box, shape, transform) box(shape, transform)
 #endif

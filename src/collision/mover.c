@@ -23,7 +23,7 @@ static float tbCoreProxy(const tbGeometry* shape, tbShapeProxy* proxy)
 
 tbPlaneResult tbCollideMover(const tbCapsule* mover, const tbGeometry* shape, tbTransform transform)
 {
-	tbPlaneResult result = {{tb_vec2_zero, 0.0f}, tb_vec2_zero, false};
+	tbPlaneResult result = {{tbVec2_zero, 0.0f}, tbVec2_zero, false};
 	if (mover == NULL || shape == NULL)
 	{
 		tbReportError("tbCollideMover", "mover and shape must not be NULL");
@@ -36,7 +36,7 @@ tbPlaneResult tbCollideMover(const tbCapsule* mover, const tbGeometry* shape, tb
 	float shapeRadius = tbCoreProxy(shape, &core);
 	tbVec2 centers[2] = {mover->center1, mover->center2};
 	tbShapeProxy segment = tbMakeProxy(centers, 2, 0.0f);
-	tbDistanceOutput output = tbShapeDistanceBetween(&core, transform, &segment, tb_transform_identity, false, NULL, NULL);
+	tbDistanceOutput output = tbShapeDistanceBetween(&core, transform, &segment, tbTransform_identity, false, NULL, NULL);
 	float reach = mover->radius + shapeRadius;
 	// Cores that overlap have no normal: the mover is too deep inside to be pushed out sensibly.
 	if (output.distance > reach || output.distance <= 0.0f)

@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200112L
-// Allocation with a live byte count, the error hook, the assert hook and timing.
+// Allocation with a live byte count, the error hook and the assert hook.
 #include "core.h"
 
 #include "tumble/constants.h"
@@ -9,13 +9,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #if !defined(_WIN32)
 #include <sched.h>
 #endif
 
-// The two calls the C standard does not give portably: aligned allocation (MSVC's C runtime has no
-// aligned_alloc) and a monotonic clock (clock_gettime is POSIX). Everything else here is C17.
+// The call the C standard does not give portably: aligned allocation (MSVC's C runtime has no
+// aligned_alloc). Everything else here is C17; the clock is in timer.c.
 #if defined(_WIN32)
 #include <malloc.h>
 #include <windows.h>
@@ -230,38 +229,6 @@ int tbInternalAssert(const char* condition, const char* fileName, int lineNumber
 	}
 	fprintf(stderr, "tumble assertion failed: %s, %s:%d\n", condition, fileName, lineNumber);
 	abort();
-}
-
-/// Nanoseconds of a monotonic clock.
-uint64_t tbGetTicks(void)
-{
-#if defined(_WIN32)
-	LARGE_INTEGER counter, frequency;
-	QueryPerformanceCounter(&counter);
-	QueryPerformanceFrequency(&frequency);
-	return (uint64_t)((double)counter.QuadPart * (1e9 / (double)frequency.QuadPart));
-#else
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (uint64_t)ts.tv_sec * 1000000000ull + (uint64_t)ts.tv_nsec;
-#endif
-}
-
-float tbGetMilliseconds(uint64_t ticks)
-{
-	return (float)((double)(tbGetTicks() - ticks) * 1e-6);
-}
-
-float tbGetMillisecondsAndReset(uint64_t* ticks)
-{
-	if (tbCheckPointer("tbGetMillisecondsAndReset", "ticks", ticks) == false)
-	{
-		return 0.0f;
-	}
-	uint64_t now = tbGetTicks();
-	float ms = (float)((double)(now - *ticks) * 1e-6);
-	*ticks = now;
-	return ms;
 }
 
 void tbYield(void)

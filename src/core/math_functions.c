@@ -46,11 +46,6 @@ tbRot tbComputeRotationBetweenUnitVectors(tbVec2 v1, tbVec2 v2)
 	return tbNormalizeRot(q);
 }
 
-bool tbIsValidRotation(tbRot q)
-{
-	return tbIsValidRot(q);
-}
-
 bool tbIsValidPlane(tbPlane plane)
 {
 	return tbIsValidVec2(plane.normal) && tbIsNormalized(plane.normal) && tbIsValidFloat(plane.offset);

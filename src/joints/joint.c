@@ -55,8 +55,8 @@ static tbJointDef tbDefaultJointDef(void)
 {
 	tbJointDef def;
 	memset(&def, 0, sizeof(def));
-	def.localFrameA = tb_transform_identity;
-	def.localFrameB = tb_transform_identity;
+	def.localFrameA = tbTransform_identity;
+	def.localFrameB = tbTransform_identity;
 	def.forceThreshold = FLT_MAX;
 	def.torqueThreshold = FLT_MAX;
 	def.constraintHertz = 60.0f;
@@ -277,7 +277,7 @@ static bool tbCheckFrame(const char* f, const char* name, tbTransform frame)
 						 "the body", name, (double)frame.p.x, (double)frame.p.y, (double)TB_MAX_COORDINATE);
 		return false;
 	}
-	if (tbIsValidRot(frame.q) == false)
+	if (tbIsValidRotation(frame.q) == false)
 	{
 		tbReportError(f, "%s.q is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", name,
 					  (double)frame.q.c, (double)frame.q.s);
@@ -589,13 +589,13 @@ bool tbJoint_SetLocalFrameB(tbJointId jointId, tbTransform localFrame)
 tbTransform tbJoint_GetLocalFrameA(tbJointId jointId)
 {
 	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetLocalFrameA", NULL, -1, false);
-	return joint != NULL ? joint->localFrameA : tb_transform_identity;
+	return joint != NULL ? joint->localFrameA : tbTransform_identity;
 }
 
 tbTransform tbJoint_GetLocalFrameB(tbJointId jointId)
 {
 	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetLocalFrameB", NULL, -1, false);
-	return joint != NULL ? joint->localFrameB : tb_transform_identity;
+	return joint != NULL ? joint->localFrameB : tbTransform_identity;
 }
 
 void tbJoint_SetCollideConnected(tbJointId jointId, bool shouldCollide)
@@ -655,7 +655,7 @@ void tbJoint_WakeBodies(tbJointId jointId)
 
 static void tbGetJointReaction(const tbWorld* world, const tbJoint* joint, float inv_h, tbVec2* force, float* torque)
 {
-	*force = tb_vec2_zero;
+	*force = tbVec2_zero;
 	*torque = 0.0f;
 	switch (joint->type)
 	{
@@ -692,7 +692,7 @@ tbVec2 tbJoint_GetConstraintForce(tbJointId jointId)
 {
 	tbWorld* world;
 	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetConstraintForce", &world, -1, false);
-	tbVec2 force = tb_vec2_zero;
+	tbVec2 force = tbVec2_zero;
 	float torque = 0.0f;
 	if (joint != NULL)
 	{
@@ -705,7 +705,7 @@ float tbJoint_GetConstraintTorque(tbJointId jointId)
 {
 	tbWorld* world;
 	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_GetConstraintTorque", &world, -1, false);
-	tbVec2 force = tb_vec2_zero;
+	tbVec2 force = tbVec2_zero;
 	float torque = 0.0f;
 	if (joint != NULL)
 	{

@@ -73,8 +73,8 @@ void tbPrepareMotorJoint(tbJoint* joint, const tbStepContext* context)
 	m->angularMass = k > 0.0f ? 1.0f / k : 0.0f;
 	if (context->enableWarmStarting == false)
 	{
-		m->linearVelocityImpulse = tb_vec2_zero;
-		m->linearSpringImpulse = tb_vec2_zero;
+		m->linearVelocityImpulse = tbVec2_zero;
+		m->linearSpringImpulse = tbVec2_zero;
 		m->angularVelocityImpulse = 0.0f;
 		m->angularSpringImpulse = 0.0f;
 	}
@@ -209,7 +209,7 @@ bool tbMotorJoint_SetLinearVelocity(tbJointId jointId, tbVec2 velocity)
 tbVec2 tbMotorJoint_GetLinearVelocity(tbJointId jointId)
 {
 	tbJoint* joint = tbGetMotor(jointId, "tbMotorJoint_GetLinearVelocity", NULL, false);
-	return joint != NULL ? joint->motor.linearVelocity : tb_vec2_zero;
+	return joint != NULL ? joint->motor.linearVelocity : tbVec2_zero;
 }
 
 bool tbMotorJoint_SetAngularVelocity(tbJointId jointId, float velocity)

@@ -65,7 +65,7 @@ void tbPrepareMoverJoint(tbJoint* joint, const tbStepContext* context)
 	m->linearMass = k > 0.0f ? 1.0f / k : 0.0f;
 	if (context->enableWarmStarting == false)
 	{
-		m->linearVelocityImpulse = tb_vec2_zero;
+		m->linearVelocityImpulse = tbVec2_zero;
 	}
 }
 
@@ -84,7 +84,7 @@ static bool tbMoverIsOff(tbMoverJoint* m)
 	{
 		return false;
 	}
-	m->linearVelocityImpulse = tb_vec2_zero;
+	m->linearVelocityImpulse = tbVec2_zero;
 	return true;
 }
 
@@ -161,7 +161,7 @@ bool tbMoverJoint_SetLinearVelocity(tbJointId jointId, tbVec2 velocity)
 tbVec2 tbMoverJoint_GetLinearVelocity(tbJointId jointId)
 {
 	tbJoint* joint = tbGetMover(jointId, "tbMoverJoint_GetLinearVelocity", NULL, false);
-	return joint != NULL ? joint->mover.linearVelocity : tb_vec2_zero;
+	return joint != NULL ? joint->mover.linearVelocity : tbVec2_zero;
 }
 
 bool tbMoverJoint_SetMaxVelocityForce(tbJointId jointId, tbVec2 maxForce)
@@ -181,5 +181,5 @@ bool tbMoverJoint_SetMaxVelocityForce(tbJointId jointId, tbVec2 maxForce)
 tbVec2 tbMoverJoint_GetMaxVelocityForce(tbJointId jointId)
 {
 	tbJoint* joint = tbGetMover(jointId, "tbMoverJoint_GetMaxVelocityForce", NULL, false);
-	return joint != NULL ? joint->mover.maxVelocityForce : tb_vec2_zero;
+	return joint != NULL ? joint->mover.maxVelocityForce : tbVec2_zero;
 }

@@ -70,7 +70,7 @@ void tbPreparePrismaticJoint(tbJoint* joint, const tbStepContext* context)
 	p->springSoftness = tbMakeSoftness(p->hertz, p->dampingRatio, context->h);
 	if (context->enableWarmStarting == false)
 	{
-		p->impulse = tb_vec2_zero;
+		p->impulse = tbVec2_zero;
 		p->springImpulse = 0.0f;
 		p->motorImpulse = 0.0f;
 		p->lowerImpulse = 0.0f;
@@ -197,7 +197,7 @@ void tbSolvePrismaticJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	float mA = joint->invMassA, mB = joint->invMassB, iA = joint->invIA, iB = joint->invIB;
 	tbVec2 Cdot = {tbDot(g.perp, tbSub(b.vB, b.vA)) + g.s2 * b.wB - g.s1 * b.wA, b.wB - b.wA};
 	tbSoftness soft = {0.0f, 1.0f, 0.0f};
-	tbVec2 bias = tb_vec2_zero;
+	tbVec2 bias = tbVec2_zero;
 	if (useBias)
 	{
 		soft = joint->constraintSoftness;

@@ -94,7 +94,7 @@ void tbPrepareRevoluteJoint(tbJoint* joint, const tbStepContext* context)
 	r->springSoftness = tbMakeSoftness(r->hertz, r->dampingRatio, context->h);
 	if (context->enableWarmStarting == false)
 	{
-		r->linearImpulse = tb_vec2_zero;
+		r->linearImpulse = tbVec2_zero;
 		r->springImpulse = 0.0f;
 		r->motorImpulse = 0.0f;
 		r->lowerImpulse = 0.0f;

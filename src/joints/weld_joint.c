@@ -60,7 +60,7 @@ void tbPrepareWeldJoint(tbJoint* joint, const tbStepContext* context)
 											  : joint->constraintSoftness;
 	if (context->enableWarmStarting == false)
 	{
-		w->linearImpulse = tb_vec2_zero;
+		w->linearImpulse = tbVec2_zero;
 		w->angularImpulse = 0.0f;
 	}
 }

@@ -145,7 +145,7 @@ static void tbIntegratedVelocity(const tbStepContext* context, int index, tbVec2
 {
 	if (index >= context->bodyCount)
 	{
-		*v = tb_vec2_zero;
+		*v = tbVec2_zero;
 		*w = 0.0f;
 		return;
 	}
@@ -195,8 +195,8 @@ static float tbGravityApproach(const tbStepContext* context, int indexA, float i
 							   tbVec2 normal)
 {
 	tbVec2 gravity = context->world->def.gravity;
-	tbVec2 gA = invMassA > 0.0f ? tbMulSV(context->masses[indexA].gravityScale, gravity) : tb_vec2_zero;
-	tbVec2 gB = invMassB > 0.0f ? tbMulSV(context->masses[indexB].gravityScale, gravity) : tb_vec2_zero;
+	tbVec2 gA = invMassA > 0.0f ? tbMulSV(context->masses[indexA].gravityScale, gravity) : tbVec2_zero;
+	tbVec2 gB = invMassB > 0.0f ? tbMulSV(context->masses[indexB].gravityScale, gravity) : tbVec2_zero;
 	return tbDot(tbSub(gB, gA), normal);
 }
 
@@ -499,7 +499,7 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 
 	bool deep = false;
 	float relativeVelocity[2] = {0.0f, 0.0f};
-	tbVec2 anchorA[2] = {tb_vec2_zero, tb_vec2_zero}, anchorB[2] = {tb_vec2_zero, tb_vec2_zero};
+	tbVec2 anchorA[2] = {tbVec2_zero, tbVec2_zero}, anchorB[2] = {tbVec2_zero, tbVec2_zero};
 	float normalImpulse[2] = {0.0f, 0.0f}, tangentImpulse[2] = {0.0f, 0.0f};
 	for (int j = 0; j < 2; ++j)
 	{

@@ -29,7 +29,7 @@ static tbVec2 tbClampHugeSpeed(tbVec2 v, float maxSpeed)
 	float scale = tbMaxFloat(tbAbsFloat(x), tbAbsFloat(y));
 	if (scale == 0.0f)
 	{
-		return tb_vec2_zero;
+		return tbVec2_zero;
 	}
 	tbVec2 scaled = tbMakeVec2(x / scale, y / scale); // largest component ±1: |scaled| in [1, √2]
 	float length = tbLength(scaled);

@@ -73,8 +73,8 @@ static void tbGatherBodiesTask(int start, int end, uint32_t workerIndex, void* t
 		sb->angularVelocity = body->fixedRotation ? 0.0f : body->angularVelocity;
 		tbClampSpeeds(context, sb); // a body set to 3e38 m/s approaches its contacts at the clamped speed
 		sb->padding = 0.0f;
-		sb->deltaPosition = tb_vec2_zero;
-		sb->deltaRotation = tb_rot_identity;
+		sb->deltaPosition = tbVec2_zero;
+		sb->deltaRotation = tbRot_identity;
 
 		if (context->linearLocks != NULL)
 		{
@@ -100,7 +100,7 @@ static void tbGatherBodiesTask(int start, int end, uint32_t workerIndex, void* t
 		}
 		else
 		{
-			m->linearDelta = tb_vec2_zero;
+			m->linearDelta = tbVec2_zero;
 			m->angularDelta = 0.0f;
 			m->linearDamping = 1.0f;
 			m->angularDamping = 1.0f;
@@ -114,7 +114,7 @@ static void tbGatherBodies(tbStepContext* context)
 	// The stand-in for static and non-awake bodies: at rest, never moves.
 	tbSolverBody* fixed = context->bodies + context->bodyCount;
 	memset(fixed, 0, sizeof(*fixed));
-	fixed->deltaRotation = tb_rot_identity;
+	fixed->deltaRotation = tbRot_identity;
 	memset(context->masses + context->bodyCount, 0, sizeof(tbSolverMass));
 }
 
@@ -150,7 +150,7 @@ static void tbScatterBodiesTask(int start, int end, uint32_t workerIndex, void* 
 		tbRot q = tbNormalizeRot(tbMulRot(sb->deltaRotation, body->rotation0));
 		body->transform.q = q;
 		body->transform.p = tbOffsetPos(body->center, tbNeg(tbRotateVector(q, body->localCenter)));
-		body->force = tb_vec2_zero;
+		body->force = tbVec2_zero;
 		body->torque = 0.0f;
 		if (task->markFast)
 		{
@@ -209,11 +209,23 @@ static void tbMethodSubStep(tbStepContext* context)
 	}
 }
 
+/// A step with nothing to solve (a zero time step, or nothing awake): no body moves, no joint is
+/// solved and none reports an event. The joints keep the last solve's impulses and 1/h, whose
+/// product is the force they report.
+static void tbSkipSolve(tbWorld* world)
+{
+	world->cache.solverJointCount = 0;
+	world->cache.jointTreeCount = 0;
+	world->cache.jointTreeNodeCount = 0;
+	world->events.jointEventCount = 0;
+}
+
 void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 {
-	if (timeStep <= 0.0f)
+	if (timeStep <= 0.0f || world->awakeBodyCount == 0)
 	{
-		return; // a zero step moves nothing (the world may step with 0 to refresh contacts)
+		tbSkipSolve(world); // a zero step moves nothing (the world may step with 0 to refresh contacts)
+		return;
 	}
 	subStepCount = tbMaxInt(subStepCount, 1);
 

@@ -284,8 +284,6 @@ typedef struct tbStepContext
 /// Adds the milliseconds since *ticks to a part of the step's profile and starts the next part.
 static inline void tbProfileLap(float* part, uint64_t* ticks)
 {
-	uint64_t now = tbGetTicks();
-	*part += (float)((double)(now - *ticks) * 1e-6);
-	*ticks = now;
+	*part += tbGetMillisecondsAndReset(ticks);
 }
 

@@ -21,7 +21,7 @@ tbBodyDef tbDefaultBodyDef(void)
 	tbBodyDef def;
 	memset(&def, 0, sizeof(def));
 	def.type = tb_staticBody;
-	def.rotation = tb_rot_identity;
+	def.rotation = tbRot_identity;
 	def.gravityScale = 1.0f;
 	def.sleepThreshold = TB_LINEAR_SLEEP_TOLERANCE;
 	def.safetyFactor = TB_CONTINUOUS_FRACTION;
@@ -95,7 +95,7 @@ static bool tbCheckBodyDef(const tbBodyDef* def)
 		tbReportError(f, "def->type is %d; use tb_staticBody, tb_kinematicBody or tb_dynamicBody", (int)def->type);
 		return false;
 	}
-	if (tbIsValidRot(def->rotation) == false)
+	if (tbIsValidRotation(def->rotation) == false)
 	{
 		tbReportError(f, "def->rotation is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)",
 					  (double)def->rotation.c, (double)def->rotation.s);
@@ -172,9 +172,9 @@ void tbSleepBody(tbWorld* world, tbBody* body)
 		return;
 	}
 	tbRemoveFromAwakeSet(world, body);
-	body->linearVelocity = tb_vec2_zero;
+	body->linearVelocity = tbVec2_zero;
 	body->angularVelocity = 0.0f;
-	body->force = tb_vec2_zero;
+	body->force = tbVec2_zero;
 	body->torque = 0.0f;
 }
 
@@ -214,11 +214,11 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	world->kinematicBodyCount += def->type == tb_kinematicBody ? 1 : 0;
 	world->staticBodyCount += def->type == tb_staticBody ? 1 : 0;
 	body->transform.p = def->position;
-	body->transform.q = tbNormalizeRot(def->rotation);
+	body->transform.q = def->rotation; // checked a unit rotation (tbCheckBodyDef); kept as given, read back exactly
 	body->center = def->position;
 	body->center0 = def->position;
 	body->rotation0 = body->transform.q;
-	body->linearVelocity = def->type == tb_staticBody ? tb_vec2_zero : def->linearVelocity;
+	body->linearVelocity = def->type == tb_staticBody ? tbVec2_zero : def->linearVelocity;
 	body->angularVelocity = def->type == tb_staticBody ? 0.0f : def->angularVelocity;
 	body->linearDamping = def->linearDamping;
 	body->angularDamping = def->angularDamping;
@@ -424,7 +424,7 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 	body->invMass = 0.0f;
 	body->inertia = 0.0f;
 	body->invInertia = 0.0f;
-	body->localCenter = tb_vec2_zero;
+	body->localCenter = tbVec2_zero;
 	if (body->type != tb_dynamicBody)
 	{
 		body->center = tbTransformWorldPoint(body->transform, body->localCenter);
@@ -434,7 +434,7 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 	}
 	// Accumulate mass and first moment, then inertia about the origin by the parallel-axis theorem.
 	float rotationalInertia = 0.0f;
-	tbVec2 localCenter = tb_vec2_zero;
+	tbVec2 localCenter = tbVec2_zero;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
 		const tbShape* shape = world->shapes + id;
@@ -465,7 +465,7 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 		// 1/FLT_MAX and the centre ∞ · (mass · centre) became ∞ · 0 = NaN.
 		body->mass = 1.0f;
 		body->invMass = 1.0f;
-		localCenter = tb_vec2_zero;
+		localCenter = tbVec2_zero;
 		rotationalInertia = 0.0f;
 	}
 	if (rotationalInertia > 0.0f && body->fixedRotation == false)
@@ -519,7 +519,7 @@ bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
 	body->type = (uint8_t)type;
 	if (type == tb_staticBody)
 	{
-		body->linearVelocity = tb_vec2_zero;
+		body->linearVelocity = tbVec2_zero;
 		body->angularVelocity = 0.0f;
 	}
 	else
@@ -592,7 +592,7 @@ tbPos tbBody_GetPosition(tbBodyId bodyId)
 tbRot tbBody_GetRotation(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetRotation", NULL, false);
-	return body != NULL ? body->transform.q : tb_rot_identity;
+	return body != NULL ? body->transform.q : tbRot_identity;
 }
 
 float tbBody_GetAngle(tbBodyId bodyId)
@@ -636,14 +636,14 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbPos position, tbRot rotation)
 	{
 		return false;
 	}
-	if (tbIsValidRot(rotation) == false)
+	if (tbIsValidRotation(rotation) == false)
 	{
 		tbReportError(f, "rotation is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", (double)rotation.c,
 					  (double)rotation.s);
 		return false;
 	}
 	body->transform.p = position;
-	body->transform.q = tbNormalizeRot(rotation);
+	body->transform.q = rotation; // as given (a unit rotation to within tbIsValidRotation's bound): it reads back exactly
 	body->center = tbTransformWorldPoint(body->transform, body->localCenter);
 	body->center0 = body->center;
 	body->rotation0 = body->transform.q;
@@ -656,7 +656,7 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbPos position, tbRot rotation)
 tbVec2 tbBody_GetLocalPoint(tbBodyId bodyId, tbPos worldPoint)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalPoint", NULL, false);
-	return body != NULL ? tbInvTransformWorldPoint(body->transform, worldPoint) : tb_vec2_zero;
+	return body != NULL ? tbInvTransformWorldPoint(body->transform, worldPoint) : tbVec2_zero;
 }
 
 tbPos tbBody_GetWorldPoint(tbBodyId bodyId, tbVec2 localPoint)
@@ -668,19 +668,19 @@ tbPos tbBody_GetWorldPoint(tbBodyId bodyId, tbVec2 localPoint)
 tbVec2 tbBody_GetLocalVector(tbBodyId bodyId, tbVec2 worldVector)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalVector", NULL, false);
-	return body != NULL ? tbInvRotateVector(body->transform.q, worldVector) : tb_vec2_zero;
+	return body != NULL ? tbInvRotateVector(body->transform.q, worldVector) : tbVec2_zero;
 }
 
 tbVec2 tbBody_GetWorldVector(tbBodyId bodyId, tbVec2 localVector)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldVector", NULL, false);
-	return body != NULL ? tbRotateVector(body->transform.q, localVector) : tb_vec2_zero;
+	return body != NULL ? tbRotateVector(body->transform.q, localVector) : tbVec2_zero;
 }
 
 tbVec2 tbBody_GetLinearVelocity(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLinearVelocity", NULL, false);
-	return body != NULL ? body->linearVelocity : tb_vec2_zero;
+	return body != NULL ? body->linearVelocity : tbVec2_zero;
 }
 
 float tbBody_GetAngularVelocity(tbBodyId bodyId)
@@ -755,7 +755,7 @@ bool tbBody_SetTargetTransform(tbBodyId bodyId, tbWorldTransform target, float t
 	{
 		return false;
 	}
-	if (tbIsValidRot(target.q) == false)
+	if (tbIsValidRotation(target.q) == false)
 	{
 		tbReportError(f, "target.q is (%g, %g), not a unit rotation; make it with tbMakeRot(angle)", (double)target.q.c,
 					  (double)target.q.s);
@@ -924,7 +924,7 @@ bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
 	{
 		return false;
 	}
-	return tbApplyBodyImpulse(bodyId, f, tb_vec2_zero, NULL, impulse, wake);
+	return tbApplyBodyImpulse(bodyId, f, tbVec2_zero, NULL, impulse, wake);
 }
 
 float tbBody_GetMass(tbBodyId bodyId)
@@ -939,22 +939,10 @@ float tbBody_GetRotationalInertia(tbBodyId bodyId)
 	return body != NULL ? body->inertia : 0.0f;
 }
 
-tbVec2 tbBody_GetLocalCenterOfMass(tbBodyId bodyId)
-{
-	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalCenterOfMass", NULL, false);
-	return body != NULL ? body->localCenter : tb_vec2_zero;
-}
-
-tbPos tbBody_GetWorldCenterOfMass(tbBodyId bodyId)
-{
-	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetWorldCenterOfMass", NULL, false);
-	return body != NULL ? body->center : tbPos_zero;
-}
-
 tbVec2 tbBody_GetLocalCenter(tbBodyId bodyId)
 {
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_GetLocalCenter", NULL, false);
-	return body != NULL ? body->localCenter : tb_vec2_zero;
+	return body != NULL ? body->localCenter : tbVec2_zero;
 }
 
 tbPos tbBody_GetWorldCenter(tbBodyId bodyId)
@@ -984,7 +972,7 @@ bool tbBody_SetMassData(tbBodyId bodyId, tbMassData massData)
 	body->mass = massData.mass >= FLT_MIN ? massData.mass : 1.0f;
 	body->invMass = 1.0f / body->mass;
 	tbSetBodyInertia(body, body->fixedRotation ? 0.0f : massData.rotationalInertia);
-	body->localCenter = massData.mass >= FLT_MIN ? massData.center : tb_vec2_zero;
+	body->localCenter = massData.mass >= FLT_MIN ? massData.center : tbVec2_zero;
 	body->center = tbTransformWorldPoint(body->transform, body->localCenter);
 	body->center0 = body->center;
 	tbKeepOriginVelocity(body, oldCenter);
@@ -1200,7 +1188,7 @@ void tbBody_ClearForces(tbBodyId bodyId)
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_ClearForces", NULL, false);
 	if (body != NULL)
 	{
-		body->force = tb_vec2_zero;
+		body->force = tbVec2_zero;
 		body->torque = 0.0f;
 	}
 }
@@ -1211,7 +1199,7 @@ tbVec2 tbBody_GetWorldPointVelocity(tbBodyId bodyId, tbPos worldPoint)
 	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, false);
 	if (body == NULL || tbCheckFinitePosition(f, "worldPoint", worldPoint) == false)
 	{
-		return tb_vec2_zero;
+		return tbVec2_zero;
 	}
 	tbVec2 r = tbSubPos(worldPoint, body->center);
 	return tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, r));
@@ -1223,7 +1211,7 @@ tbVec2 tbBody_GetLocalPointVelocity(tbBodyId bodyId, tbVec2 localPoint)
 	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, false);
 	if (body == NULL || tbCheckVec2(f, "localPoint", localPoint) == false)
 	{
-		return tb_vec2_zero;
+		return tbVec2_zero;
 	}
 	tbVec2 r = tbRotateVector(body->transform.q, tbSub(localPoint, body->localCenter));
 	return tbAdd(body->linearVelocity, tbCrossSV(body->angularVelocity, r));

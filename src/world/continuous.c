@@ -284,7 +284,7 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 		c->fraction = output.fraction;
 		c->coreHit = core;
 		c->normal = output.normal;
-		c->otherVelocity = otherBody->awakeIndex != TB_NULL_INDEX ? otherBody->linearVelocity : tb_vec2_zero;
+		c->otherVelocity = otherBody->awakeIndex != TB_NULL_INDEX ? otherBody->linearVelocity : tbVec2_zero;
 	}
 	return true;
 }
@@ -370,7 +370,7 @@ typedef struct tbContinuousTaskContext
 {
 	tbWorld* world;
 	const int* bodies;
-	tbToiCounters counters[2 * TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
+	tbToiCounters counters[TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
 } tbContinuousTaskContext;
 
 static void tbContinuousTask(int start, int end, uint32_t workerIndex, void* context)

@@ -97,7 +97,7 @@ static bool tbExplosionCallback(int proxyKey, int shapeIndex, void* context)
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = tbMakeProxy(&centre, 1, 0.0f);
-	input.transform = tb_transform_identity; // the centre is in the shape's frame already
+	input.transform = tbTransform_identity; // the centre is in the shape's frame already
 	input.useRadii = true;
 	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL, 0);
 	float radius = c->def.radius, falloff = c->def.falloff;

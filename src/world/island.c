@@ -365,9 +365,9 @@ static void tbPutBodyToSleep(tbWorld* world, tbBody* body)
 		world->events.moveEvents[body->awakeIndex].fellAsleep = true;
 	}
 	body->isMarked = true;
-	body->linearVelocity = tb_vec2_zero;
+	body->linearVelocity = tbVec2_zero;
 	body->angularVelocity = 0.0f;
-	body->force = tb_vec2_zero;
+	body->force = tbVec2_zero;
 	body->torque = 0.0f;
 }
 

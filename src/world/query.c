@@ -100,26 +100,26 @@ static tbQueryContext tbMakeQueryContext(tbWorld* world, tbQueryFilter filter, v
 	return q;
 }
 
-bool tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn,
+tbTreeStats tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn,
 						 void* context)
 {
 	const char* f = "tbWorld_OverlapAABB";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPosition(f, "origin", origin) == false)
 	{
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	if (tbIsValidAABB(aabb) == false)
 	{
 		tbReportError(f, "aabb is not finite or has lowerBound > upperBound; pass a valid box");
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
 	tbEnterQuery(world);
-	tbBroadPhase_Query(&world->broadPhase, tbOffsetAABB(aabb, origin), filter.maskBits, tbAABBQueryCallback, &q);
+	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbOffsetAABB(aabb, origin), filter.maskBits, tbAABBQueryCallback, &q);
 	tbLeaveQuery(world);
-	return true;
+	return stats;
 }
 
 static bool tbPointQueryCallback(int proxyKey, int shapeIndex, void* context)
@@ -150,7 +150,7 @@ bool tbWorld_OverlapPoint(tbWorldId worldId, tbPos point, tbQueryFilter filter, 
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
 	q.point = point;
-	tbAABB box = tbOffsetAABB((tbAABB){tb_vec2_zero, tb_vec2_zero}, point); // contains the point
+	tbAABB box = tbOffsetAABB((tbAABB){tbVec2_zero, tbVec2_zero}, point); // contains the point
 	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbPointQueryCallback, &q);
 	tbLeaveQuery(world);
@@ -169,7 +169,7 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = q->proxy;
-	tbWorldTransform frame = {q->base, tb_rot_identity};
+	tbWorldTransform frame = {q->base, tbRot_identity};
 	input.transform = tbInvMulWorldTransforms(q->world->bodies[shape->bodyId].transform, frame);
 	input.useRadii = true;
 	tbDistanceOutput output = tbShapeDistance(&input, NULL, NULL, 0);
@@ -180,23 +180,23 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
 }
 
-bool tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
+tbTreeStats tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
 						  tbOverlapResultFcn* fcn, void* context)
 {
 	const char* f = "tbWorld_OverlapShape";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckQueryShape(f, origin, proxy) == false)
 	{
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
 	q.proxy = *proxy;
 	q.base = origin;
 	tbEnterQuery(world);
-	tbBroadPhase_Query(&world->broadPhase, tbProxyBox(origin, proxy), filter.maskBits, tbShapeQueryCallback, &q);
+	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbProxyBox(origin, proxy), filter.maskBits, tbShapeQueryCallback, &q);
 	tbLeaveQuery(world);
-	return true;
+	return stats;
 }
 
 static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int shapeIndex, void* context)
@@ -231,23 +231,23 @@ static bool tbCheckWorldRay(const char* f, tbPos origin, tbVec2 translation)
 	return tbCheckPosition(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
 }
 
-bool tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
+tbTreeStats tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
 					 void* context)
 {
 	const char* f = "tbWorld_CastRay";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckWorldRay(f, origin, translation) == false)
 	{
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.castFcn = fcn;
 	q.point = origin; // each shape is hit from the exact origin; the broad phase walks a float one
 	tbRayCastInput input = {tbToVec2(origin), translation, 1.0f};
 	tbEnterQuery(world);
-	tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
+	tbTreeStats stats = tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
 	tbLeaveQuery(world);
-	return true;
+	return stats;
 }
 
 static float tbClosestCallback(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
@@ -282,7 +282,7 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 	tbShapeProxy proxyA = tbMakeShapeProxy(&shape->geometry);
 	tbTransform xfA = tbToRelativeTransform(q->world->bodies[shape->bodyId].transform, q->base);
 	tbCastOutput output =
-		tbShapeCastBetween(&proxyA, xfA, &q->proxy, tb_transform_identity, q->translation, q->maxFraction, false);
+		tbShapeCastBetween(&proxyA, xfA, &q->proxy, tbTransform_identity, q->translation, q->maxFraction, false);
 	if (output.hit == false)
 	{
 		return true;
@@ -300,7 +300,7 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 	return true;
 }
 
-bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbVec2 translation,
+tbTreeStats tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbVec2 translation,
 					   tbQueryFilter filter, tbCastResultFcn* fcn, void* context)
 {
 	const char* f = "tbWorld_CastShape";
@@ -308,7 +308,7 @@ bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* prox
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckQueryShape(f, origin, proxy) == false ||
 		tbCheckVec2(f, "translation", translation) == false)
 	{
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.castFcn = fcn;
@@ -320,9 +320,9 @@ bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* prox
 	tbAABB box = tbProxyBox(origin, proxy);
 	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
 	tbEnterQuery(world);
-	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);
+	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);
 	tbLeaveQuery(world);
-	return true;
+	return stats;
 }
 
 // --- Character movers (mover.c has the planes and their solver) ------------------------------
@@ -420,7 +420,7 @@ static bool tbMoverCastCallback(int proxyKey, int shapeIndex, void* context)
 	tbShapeProxy proxyB = tbMakeProxy(centers, 2, m->mover->radius);
 	// canEncroach: the plane solver keeps the slop; the sweep may use it
 	tbCastOutput output = tbShapeCastBetween(&proxyA, tbRelativeTransform(m->q.world, shape, m->origin), &proxyB,
-											 tb_transform_identity, m->q.translation, m->fraction, true);
+											 tbTransform_identity, m->q.translation, m->fraction, true);
 	// Shapes the mover starts in (fraction 0) are left to the planes: ignoring them lets a mover
 	// pressed into a wall move away from it.
 	if (output.hit && output.fraction > 0.0f && output.fraction < m->fraction)

@@ -17,8 +17,8 @@ tbShapeDef tbDefaultShapeDef(void)
 	def.material = tbDefaultSurfaceMaterial();
 	def.density = 1.0f;
 	def.filter = tbDefaultFilter();
-	def.enableSensorEvents = true;
-	def.enableContactEvents = true;
+	// Events are off unless asked for (Box2D v3.2's defaults): a contact reports begin and end when
+	// either shape enables contact events, a sensor a visitor when both enable sensor events.
 	def.updateBodyMass = true;
 	def.internalValue = TB_SHAPE_DEF_MAGIC;
 	return def;
@@ -210,7 +210,7 @@ bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
 	bool moved = false;
 	float margin = body->type == tb_staticBody ? 0.0f
 											  : tbMinFloat(TB_AABB_MARGIN, TB_AABB_MARGIN_FRACTION * body->maxExtent);
-	tbVec2 d = tb_vec2_zero;
+	tbVec2 d = tbVec2_zero;
 	float pad = 0.0f;
 	bool turning = false;
 	tbWorldTransform end = body->transform;
@@ -218,13 +218,13 @@ bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
 	{
 		float dt = world->stepTime;
 		float cap = tbSpeculativeReach(body);
-		tbVec2 g = body->type == tb_dynamicBody ? tbMulSV(body->gravityScale, world->def.gravity) : tb_vec2_zero;
+		tbVec2 g = body->type == tb_dynamicBody ? tbMulSV(body->gravityScale, world->def.gravity) : tbVec2_zero;
 		d = tbMulSV(dt, tbMulAdd(body->linearVelocity, dt, g));
 		float length = tbLength(d);
 		// NaN-safe: a non-finite displacement is replaced by none (the step rejects nothing here).
 		// That includes an infinite one (gravity × gravityScale beyond FLT_MAX), which scaled down
 		// to the reach would give 0 · ∞ = NaN in the box.
-		d = length <= cap ? d : (length > cap && length <= FLT_MAX ? tbMulSV(cap / length, d) : tb_vec2_zero);
+		d = length <= cap ? d : (length > cap && length <= FLT_MAX ? tbMulSV(cap / length, d) : tbVec2_zero);
 		float turn = body->angularVelocity * dt;
 		float arc = tbAbsFloat(turn) * body->maxExtent;
 		pad = tbMinFloat(arc, cap);
@@ -1094,8 +1094,8 @@ tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target)
 	// Distance from the shape (A, in its body frame) to a point proxy (B) placed at the target:
 	// GJK's witness on A is the closest point (on the rounded surface with useRadii).
 	tbWorldTransform transform = world->bodies[shape->bodyId].transform;
-	tbWorldTransform at = {target, tb_rot_identity};
-	tbVec2 origin = tb_vec2_zero;
+	tbWorldTransform at = {target, tbRot_identity};
+	tbVec2 origin = tbVec2_zero;
 	tbDistanceInput input;
 	input.proxyA = tbMakeShapeProxy(&shape->geometry);
 	input.proxyB = tbMakeProxy(&origin, 1, 0.0f);
@@ -1135,13 +1135,6 @@ tbWorldCastOutput tbShape_RayCast(tbShapeId shapeId, tbPos origin, tbVec2 transl
 		output.hit = true;
 	}
 	return output;
-}
-
-tbMassData tbShape_GetMassData(tbShapeId shapeId)
-{
-	tbMassData md = {0};
-	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_GetMassData", NULL, false);
-	return shape != NULL ? tbComputeShapeMass(&shape->geometry, shape->density) : md;
 }
 
 tbMassData tbShape_ComputeMassData(tbShapeId shapeId)

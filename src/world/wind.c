@@ -94,7 +94,7 @@ static void tbWindOnShape(const tbShape* shape, const tbBody* body, tbVec2 wind,
 {
 	const tbGeometry* g = &shape->geometry;
 	tbFlow flow = tbFlowAt(shape, body, wind, drag);
-	*force = tb_vec2_zero;
+	*force = tbVec2_zero;
 	*torque = 0.0f;
 	if (flow.pressure == 0.0f)
 	{

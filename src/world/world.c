@@ -512,6 +512,16 @@ static void tbRecordMaxCapacity(tbWorld* world)
 	c->contactCount = tbMaxInt(c->contactCount, world->contactPool.count);
 }
 
+/// What every step ends with, a pause too: counters, the broad-phase vote, the step arena.
+static void tbFinishStep(tbWorld* world, uint64_t stepTicks)
+{
+	tbUpdateCounters(world);
+	tbUpdateAutoBroadPhase(world);
+	tbArenaReset(&world->stepArena);
+	world->profile.step = tbGetMilliseconds(stepTicks);
+	world->locked = false;
+}
+
 /// The step: each stage is a function in the file of its concept, run top to bottom.
 bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 {
@@ -521,11 +531,13 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	{
 		return false;
 	}
-	if (tbIsValidFloat(timeStep) == false || timeStep < TB_MIN_TIME_STEP || timeStep > TB_MAX_TIME_STEP)
+	// 0 is a pause (Box2D v3.2's): contacts and their events update, nothing moves.
+	if (tbIsValidFloat(timeStep) == false || (timeStep != 0.0f && timeStep < TB_MIN_TIME_STEP) ||
+		timeStep > TB_MAX_TIME_STEP)
 	{
-		tbReportError(f, "timeStep is %g (must be TB_MIN_TIME_STEP = %g s to TB_MAX_TIME_STEP = %g s); pass the "
-						 "frame time in seconds, e.g. 1/60, and step a longer span in several calls", (double)timeStep,
-					  (double)TB_MIN_TIME_STEP, (double)TB_MAX_TIME_STEP);
+		tbReportError(f, "timeStep is %g (must be 0, a pause, or TB_MIN_TIME_STEP = %g s to TB_MAX_TIME_STEP = %g s); "
+						 "pass the frame time in seconds, e.g. 1/60, and step a longer span in several calls",
+					  (double)timeStep, (double)TB_MIN_TIME_STEP, (double)TB_MAX_TIME_STEP);
 		return false;
 	}
 	if (subStepCount < 1 || subStepCount > TB_MAX_SUB_STEPS)
@@ -550,49 +562,37 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	memset(&world->counters, 0, sizeof(world->counters));
 	world->counters.byteCount = byteCount;
 
+	// Each stage's time is the lap since the last (one clock read a stage).
 	uint64_t stepTicks = tbGetTicks();
-	uint64_t t = tbGetTicks();
+	uint64_t t = stepTicks;
 	tbUpdatePairsStage(world);
-	world->profile.pairs = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.pairs = tbGetMillisecondsAndReset(&t);
 	tbCollideStage(world);
-	world->profile.collide = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.collide = tbGetMillisecondsAndReset(&t);
 	tbIslandStage(world);
-	world->profile.islands = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.islands = tbGetMillisecondsAndReset(&t);
+	if (timeStep == 0.0f)
+	{
+		tbSolveStage(world, timeStep, subStepCount); // solves nothing; clears the last step's joint events
+		tbFinishStep(world, stepTicks);				 // a pause: no body moves, sleeps or reports a move
+		return true;
+	}
 	tbSolveStage(world, timeStep, subStepCount);
-	world->profile.solve = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.solve = tbGetMillisecondsAndReset(&t);
 	tbContinuousStage(world);
-	world->profile.continuous = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.continuous = tbGetMillisecondsAndReset(&t);
 	int beyondBounds = tbFinalizeStage(world, timeStep);
-	world->profile.finalize = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.finalize = tbGetMillisecondsAndReset(&t);
 	tbReportHitEvents(world);
-	world->profile.events = tbGetMilliseconds(t);
-
-	t = tbGetTicks();
+	world->profile.events = tbGetMillisecondsAndReset(&t);
 	tbSleepStage(world, timeStep);
-	world->profile.sleep = tbGetMilliseconds(t);
-
+	world->profile.sleep = tbGetMillisecondsAndReset(&t);
 	if (beyondBounds > 0)
 	{
 		tbDisableBodiesBeyondBounds(world);
 	}
 
-	tbUpdateCounters(world);
-	tbUpdateAutoBroadPhase(world);
-	tbArenaReset(&world->stepArena);
-	world->profile.step = tbGetMilliseconds(stepTicks);
-	world->locked = false;
+	tbFinishStep(world, stepTicks);
 	return true;
 }
 
@@ -679,7 +679,7 @@ bool tbWorld_SetGravity(tbWorldId worldId, tbVec2 gravity)
 tbVec2 tbWorld_GetGravity(tbWorldId worldId)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_GetGravity");
-	return world != NULL ? world->def.gravity : tb_vec2_zero;
+	return world != NULL ? world->def.gravity : tbVec2_zero;
 }
 
 void tbWorld_EnableSleeping(tbWorldId worldId, bool flag)
