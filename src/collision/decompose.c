@@ -465,7 +465,10 @@ static bool tbTriangulateFaces(tbDecomposer* d)
 {
 	tbPairReflexCorners(d);
 	int n = d->n;
-	memset(d->visited, 0, (size_t)n * sizeof(bool));
+	for (int i = 0; i < n; ++i)
+	{
+		d->visited[i] = false; // a loop, not memset: GCC (-Wstringop-overflow) doubted the size
+	}
 	d->triCount = 0;
 	for (int start = 0; start < n; ++start)
 	{
@@ -731,6 +734,15 @@ int tbDecomposePolygon(const tbVec2* points, int count, tbPolygon* pieces, int c
 	if (d.n < 3)
 	{
 		tbReportError(f, "the outline has no area; pass at least three points not on one line");
+	}
+	else if (d.n < count && tbIsSimple(p, d.n) == false)
+	{
+		// Welding a point onto the chord of its neighbours moved an edge by up to the slop, across
+		// another edge: a spike or slot narrower than that, which pieces would cover from outside.
+		tbReportError(f, "the outline has spikes or slots narrower than %g m, which its pieces cannot follow "
+						 "(points within TB_LINEAR_SLOP of the chord of their neighbours are welded away); widen "
+						 "or remove them",
+					  (double)TB_LINEAR_SLOP);
 	}
 	else if (tbTriangulateFaces(&d) == false)
 	{
