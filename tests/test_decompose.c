@@ -528,7 +528,8 @@ static double LargestExcursion(const tbVec2* outline, int n, int count)
 			for (int s = 0; s < 64; ++s)
 			{
 				double t = (double)s / 64.0;
-				largest = fmax(largest, OutsideBy(a.x + t * ((double)b.x - a.x), a.y + t * ((double)b.y - a.y), outline, n));
+				double qx = a.x + t * ((double)b.x - a.x), qy = a.y + t * ((double)b.y - a.y);
+				largest = fmax(largest, OutsideBy(qx, qy, outline, n));
 			}
 		}
 	}
@@ -591,4 +592,68 @@ Test(decompose, welded_points_do_not_carry_a_side_beyond_the_slop)
 	cr_assert(pieces > 0);
 	double excursion = LargestExcursion(outline, count, pieces);
 	cr_assert(excursion <= TB_LINEAR_SLOP * 1.001, "a piece leaves the outline by %.3g m", excursion);
+}
+
+// A hexagon 1 km across whose sides are runs of points a few millimetres off straight (the
+// outline fuzz_decompose found). Ear clipping judged a vertex 7 micrometres from an ear's edge
+// 546 m long to be outside the ear by float rounding, cut the ear across it, and the triangles
+// that followed covered a sliver outside the outline, 14 mm at its widest; the containment test
+// is now computed in double. Allowed: the slop of the welded points plus that of a straightened
+// corner.
+Test(decompose, an_ear_is_not_cut_across_a_vertex_rounding_hides)
+{
+	static const tbVec2 outline[48] = {
+		{672.134094f, -41.9607811f}, {612.986816f, -7.80053711f}, {553.825134f, 26.3348122f},
+		{494.672913f, 60.4864006f}, {435.529999f, 94.6542206f}, {376.377716f, 128.805801f},
+		{317.222931f, 162.953064f}, {258.068146f, 197.100311f}, {198.910858f, 231.243225f},
+		{139.758606f, 265.394806f}, {80.606308f, 299.546387f}, {21.4546471f, 333.699066f},
+		{-37.6982422f, 367.849579f}, {-96.8505325f, 402.00116f}, {-156.002838f, 436.15274f},
+		{-215.150696f, 470.311859f}, {-274.302368f, 504.464569f}, {-274.301086f, 436.161377f},
+		{-274.29361f, 367.858246f}, {-274.301086f, 299.555084f}, {-274.301086f, 231.251923f},
+		{-274.30484f, 162.948715f}, {-274.293579f, 94.6455383f}, {-274.30484f, 26.3423805f},
+		{-274.30484f, -41.9607811f}, {-274.303589f, -110.263947f}, {-274.309814f, -178.567108f},
+		{-274.308563f, -246.870285f}, {-274.292297f, -315.173492f}, {-274.292267f, -383.476654f},
+		{-274.30603f, -451.779816f}, {-274.308563f, -520.082947f}, {-274.302277f, -588.386108f},
+		{-215.153137f, -554.229065f}, {-156.002747f, -520.07428f}, {-96.850441f, -485.922699f},
+		{-37.6981812f, -451.771118f}, {21.4540844f, -417.619507f}, {80.6126175f, -383.47876f},
+		{139.758652f, -349.316315f}, {198.914673f, -315.171234f}, {258.067566f, -281.020721f},
+		{317.224213f, -246.876724f}, {376.376526f, -212.725128f}, {435.528778f, -178.573547f},
+		{494.672272f, -144.406784f}, {553.824524f, -110.255188f}, {612.976807f, -76.1036072f},
+	};
+	int count = tbDecomposePolygon(outline, 48, s_pieces, MAX_PIECES);
+	cr_assert(count > 0);
+	double excursion = LargestExcursion(outline, 48, count);
+	cr_assert(excursion <= 2.0 * TB_LINEAR_SLOP, "a piece leaves the outline by %.3g m", excursion);
+}
+
+// A crescent 2.5 m across with a needle half a metre long and a few millimetres wide on its inner
+// side (the outline fuzz_decompose found). Welding a point of the needle onto the chord of its
+// neighbours moved one side across the other: the welded outline crossed itself, and ear clipping
+// covered the crossing with a triangle reaching 12 mm outside the outline. The welded outline is
+// now checked again and such an outline refused, naming the reason.
+Test(decompose, welds_that_cross_an_edge_are_refused, .init = SetupErrors, .fini = TeardownErrors)
+{
+	static const tbVec2 outline[50] = {
+		{-48.6391983f, -100.175919f}, {-48.670433f, -100.320511f}, {-48.7195396f, -100.460045f},
+		{-48.7857513f, -100.592331f}, {-48.8680191f, -100.715271f}, {-48.9650459f, -100.826927f},
+		{-49.0753021f, -100.925545f}, {-49.1970482f, -101.009567f}, {-49.3283653f, -101.077667f},
+		{-49.4671822f, -101.128769f}, {-49.6113129f, -101.162079f}, {-49.7584763f, -101.177055f},
+		{-49.9063568f, -101.173462f}, {-50.0526237f, -101.151375f}, {-50.1949692f, -101.111122f},
+		{-50.3311462f, -101.053352f}, {-50.4590073f, -100.978966f}, {-50.5765381f, -100.889137f},
+		{-50.6818848f, -100.785294f}, {-50.7733879f, -100.66906f}, {-50.8495979f, -100.542282f},
+		{-50.909317f, -100.406944f}, {-50.9516068f, -100.26519f}, {-50.9757919f, -100.119255f},
+		{-50.9814987f, -99.9714432f}, {-50.9686356f, -99.8240814f}, {-52.5786629f, -99.2153931f},
+		{-51.6028671f, -99.3304749f}, {-49.9802971f, -99.9077377f}, {-49.9588737f, -99.8750534f},
+		{-49.9934311f, -99.8032074f}, {-49.9235611f, -99.8409195f}, {-49.9019966f, -99.8267899f},
+		{-49.4039154f, -99.5999985f}, {-49.8558388f, -99.8078384f}, {-49.8313446f, -99.8028488f},
+		{-49.8064194f, -99.8009644f}, {-49.7814522f, -99.8022156f}, {-49.7568398f, -99.8065948f},
+		{-49.7329712f, -99.8140182f}, {-49.7102203f, -99.824379f}, {-49.6889496f, -99.8375015f},
+		{-49.6694908f, -99.8531952f}, {-49.6521492f, -99.8712006f}, {-49.6372032f, -99.8912354f},
+		{-49.6248856f, -99.9129868f}, {-49.6153946f, -99.9361115f}, {-49.6088715f, -99.9602432f},
+		{-49.6054306f, -99.9850082f}, {-49.605114f, -100.010002f},
+	};
+	int before = s_errors;
+	int count = tbDecomposePolygon(outline, 50, s_pieces, MAX_PIECES);
+	cr_assert_eq(count, 0, "%d pieces", count);
+	ExpectError(before, "tbDecomposePolygon", "narrower than");
 }

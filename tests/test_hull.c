@@ -213,6 +213,31 @@ Test(hull, rejects_collinear_points)
 	cr_expect_eq(tbComputeHull(vertical, 3).count, 0);
 }
 
+// Three points a few centimetres apart and one a million metres away on both axes: quickhull
+// kept all four, but checked again in float the small turns are lost to rounding, and
+// tbValidateHull (so tbMakePolygon) refused the hull tbComputeHull had returned;
+// tbDecomposePolygon then wrote a piece of 0 vertices (found by fuzz/fuzz_decompose.c). A hull is
+// now returned only if it is valid.
+Test(hull, a_hull_lost_to_rounding_is_not_returned)
+{
+	tbVec2 points[4] = {{-0.0123419305f, -0.036303062f},
+						{-1000000.0f, -1000000.0f},
+						{-0.0212976839f, 0.0318848565f},
+						{0.0254818574f, -0.0185136516f}};
+	tbHull hull = tbComputeHull(points, 4);
+	cr_expect(hull.count == 0 || tbValidateHull(&hull), "a hull of %d points that tbValidateHull refuses",
+			  hull.count);
+	silenceErrors();
+	tbPolygon pieces[2];
+	int count = tbDecomposePolygon(points, 4, pieces, 2);
+	for (int i = 0; i < count; ++i)
+	{
+		cr_expect(pieces[i].count >= 3, "piece %d has %d vertices", i, pieces[i].count);
+	}
+	cr_expect_eq(s_errors, count == 0 ? 1 : 0, "%d pieces and %d errors", count, s_errors);
+	restoreErrors();
+}
+
 Test(hull, rejects_non_finite_points)
 {
 	silenceErrors();

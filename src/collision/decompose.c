@@ -159,10 +159,22 @@ static bool tbIsSimple(const tbVec2* p, int n)
 	return true;
 }
 
-/// Point strictly inside (or on an edge of) the counter-clockwise triangle abc.
+/// tbCross3 in double: for float points the differences are exact and the products rounded some
+/// 2^29 times finer than in float, whose rounding is of the order of the coordinates squared times
+/// FLT_EPSILON (centimetres squared on a side of hundreds of metres).
+static double tbCross3Exact(tbVec2 a, tbVec2 b, tbVec2 c)
+{
+	double ux = (double)b.x - a.x, uy = (double)b.y - a.y;
+	double vx = (double)c.x - b.x, vy = (double)c.y - b.y;
+	return ux * vy - uy * vx;
+}
+
+/// Point strictly inside (or on an edge of) the counter-clockwise triangle abc. Exact: a vertex a
+/// few micrometres from an ear's edge hundreds of metres long was judged outside by rounding, the
+/// ear cut across it, and the triangles that followed covered ground outside the outline.
 static bool tbInTriangle(tbVec2 p, tbVec2 a, tbVec2 b, tbVec2 c)
 {
-	return tbCross3(a, b, p) >= 0.0f && tbCross3(b, c, p) >= 0.0f && tbCross3(c, a, p) >= 0.0f;
+	return tbCross3Exact(a, b, p) >= 0.0 && tbCross3Exact(b, c, p) >= 0.0 && tbCross3Exact(c, a, p) >= 0.0;
 }
 
 /// Is v (between a and c) an ear: a convex corner whose triangle holds no other outline vertex?
@@ -453,7 +465,10 @@ static bool tbTriangulateFaces(tbDecomposer* d)
 {
 	tbPairReflexCorners(d);
 	int n = d->n;
-	memset(d->visited, 0, (size_t)n * sizeof(bool));
+	for (int i = 0; i < n; ++i)
+	{
+		d->visited[i] = false; // a loop, not memset: GCC (-Wstringop-overflow) doubted the size
+	}
 	d->triCount = 0;
 	for (int start = 0; start < n; ++start)
 	{
@@ -719,6 +734,15 @@ int tbDecomposePolygon(const tbVec2* points, int count, tbPolygon* pieces, int c
 	if (d.n < 3)
 	{
 		tbReportError(f, "the outline has no area; pass at least three points not on one line");
+	}
+	else if (d.n < count && tbIsSimple(p, d.n) == false)
+	{
+		// Welding a point onto the chord of its neighbours moved an edge by up to the slop, across
+		// another edge: a spike or slot narrower than that, which pieces would cover from outside.
+		tbReportError(f, "the outline has spikes or slots narrower than %g m, which its pieces cannot follow "
+						 "(points within TB_LINEAR_SLOP of the chord of their neighbours are welded away); widen "
+						 "or remove them",
+					  (double)TB_LINEAR_SLOP);
 	}
 	else if (tbTriangulateFaces(&d) == false)
 	{

@@ -233,6 +233,13 @@ tbHull tbComputeHull(const tbVec2* points, int count)
 
 	m = tbRemoveCollinear(hull.points, m);
 	hull.count = m >= 3 ? m : 0;
+	// Points that span more than float's precision (one a million metres from others a few
+	// centimetres apart) can leave turns that rounding hides when the hull is checked again: no
+	// hull then, rather than one that tbValidateHull, and so tbMakePolygon, refuses.
+	if (hull.count > 0 && tbValidateHull(&hull) == false)
+	{
+		hull.count = 0;
+	}
 	return hull;
 }
 

@@ -134,7 +134,12 @@ void tbDrawMoverJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoi
 	tbVec2 cB = tbToVec2(tbTransformWorldPoint(b->transform, b->localCenter));
 	draw->DrawSegment(cA, cB, tb_colorTree, draw->context);
 	tbVec2 tip = tbMulAdd(cB, 0.1f * joint->drawScale, joint->mover.linearVelocity);
-	draw->DrawSegment(cB, tip, tb_colorJoint, draw->context);
+	// Both factors are only checked finite (and non-negative): their product may overflow, and an
+	// arrow to infinity is not drawn.
+	if (tbIsValidVec2(tip))
+	{
+		draw->DrawSegment(cB, tip, tb_colorJoint, draw->context);
+	}
 }
 
 // --- getters and setters -----------------------------------------------------------------------
