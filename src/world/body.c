@@ -303,9 +303,7 @@ static void tbUpdateSpeculativeReach(tbBody* body)
 	body->speculativeReach = tbMaxFloat(TB_SPECULATIVE_REACH, body->safetyFactor * body->minExtent);
 }
 
-/// Extents used by continuous collision: the smallest distance from the centre of mass to the
-/// surface (a conservative "thickness") and the largest distance to any point of any shape.
-static void tbComputeExtents(tbWorld* world, tbBody* body)
+void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtentOut, float* maxExtentOut)
 {
 	float minExtent = TB_HUGE, maxExtent = 0.0f;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
@@ -329,8 +327,14 @@ static void tbComputeExtents(tbWorld* world, tbBody* body)
 			maxExtent = tbMaxFloat(maxExtent, tbDistance(proxy.points[i], body->localCenter) + proxy.radius);
 		}
 	}
-	body->minExtent = minExtent < TB_HUGE ? minExtent : 0.0f;
-	body->maxExtent = maxExtent;
+	*minExtentOut = minExtent < TB_HUGE ? minExtent : 0.0f;
+	*maxExtentOut = maxExtent;
+}
+
+/// Extents used by continuous collision (tbComputeBodyExtents) and the reach that follows from them.
+static void tbComputeExtents(tbWorld* world, tbBody* body)
+{
+	tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
 	tbUpdateSpeculativeReach(body);
 }
 

@@ -73,6 +73,10 @@ tbBody* tbGetBodyChecked(tbBodyId id, const char* function, tbWorld** world, boo
 tbBodyId tbMakeBodyId(const tbWorld* world, int bodyId);
 
 void tbUpdateBodyMass(tbWorld* world, tbBody* body);
+/// Extents used by continuous collision: the smallest distance from the centre of mass to the
+/// surface (a conservative "thickness") and the largest distance to any point of any shape, over
+/// the body's shapes in list order (writes nothing: snapshot.c predicts the stored values with it).
+void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtent, float* maxExtent);
 void tbWakeBody(tbWorld* world, tbBody* body);
 /// Close the holes bodies that left the awake set left in it; the step starts with it.
 void tbCompactAwakeSet(tbWorld* world);

@@ -424,6 +424,16 @@ static void tbFreeWorldArrays(tbWorld* w)
 	tbFreeChains(w);
 }
 
+void tbFreeWorldContents(tbWorld* world)
+{
+	tbBroadPhase_Destroy(&world->broadPhase);
+	tbHashSet_Destroy(&world->pairSet);
+	tbFreeWorldArrays(world);
+	tbFree(world->snapshotNames, world->snapshotNamesSize);
+	world->snapshotNames = NULL;
+	world->snapshotNamesSize = 0;
+}
+
 void tbDestroyWorld(tbWorldId worldId)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, "tbDestroyWorld");
@@ -440,9 +450,7 @@ void tbDestroyWorld(tbWorldId worldId)
 												   sizeof(tbBody), offsetof(tbBody, generation));
 	s_shapeGenerations[slot] = tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapePool.highWater,
 													sizeof(tbShape), offsetof(tbShape, generation));
-	tbBroadPhase_Destroy(&world->broadPhase);
-	tbHashSet_Destroy(&world->pairSet);
-	tbFreeWorldArrays(world);
+	tbFreeWorldContents(world);
 	s_worlds[world->worldId] = NULL;
 	tbFree(world, (int)sizeof(tbWorld));
 }

@@ -129,10 +129,17 @@ typedef struct tbWorld
 	tbProfile profile;
 	tbCounters counters;
 	void* userData;
+	/// The names of the bodies of a restored snapshot (snapshot.c): copies the world owns, where a
+	/// body's name is otherwise the game's string (tbBodyDef::name, not copied).
+	char* snapshotNames;
+	int snapshotNamesSize;
 } tbWorld;
 
 /// The world for an id, or NULL (reports an error naming `function` when the id is stale or null).
 tbWorld* tbGetWorldChecked(tbWorldId id, const char* function);
+/// Free everything a world holds but the world itself (tbDestroyWorld; a snapshot's restore frees the
+/// state it replaces with it).
+void tbFreeWorldContents(tbWorld* world);
 /// The world by index (no checks).
 tbWorld* tbGetWorldFromIndex(int index);
 
