@@ -13,6 +13,7 @@
 
 #include "tumble/tumble.h"
 
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +23,7 @@ typedef struct Sweep
 	tbWorldId* worlds;
 	tbBodyId* balls;
 	int count;
+	atomic_int next; ///< the next world to step, claimed by whichever thread is free
 } Sweep;
 
 static tbWorldId CreatePyramidWorld(float ballSpeed, tbBodyId* ball)
@@ -54,11 +56,11 @@ static tbWorldId CreatePyramidWorld(float ballSpeed, tbBodyId* ball)
 	return world;
 }
 
-static void StepWorldsTask(int start, int end, uint32_t workerIndex, void* context)
+/// One thread's part of a round: step worlds until none is left to claim.
+static void StepWorldsTask(void* context)
 {
-	(void)workerIndex;
 	Sweep* sweep = context;
-	for (int i = start; i < end; ++i)
+	for (int i = atomic_fetch_add(&sweep->next, 1); i < sweep->count; i = atomic_fetch_add(&sweep->next, 1))
 	{
 		tbWorld_Step(sweep->worlds[i], 1.0f / 60.0f, 4);
 	}
@@ -80,17 +82,19 @@ static double Run(int worldCount, int steps, int workers, tbVec2* finalPositions
 	uint64_t start = tbGetTicks();
 	for (int s = 0; s < steps; ++s)
 	{
-		if (tasks != NULL)
+		atomic_store(&sweep.next, 0);
+		void* handles[TB_MAX_WORKERS];
+		for (int w = 1; w < workers && tasks != NULL; ++w)
 		{
-			void* handle = TaskSystem_Enqueue(StepWorldsTask, worldCount, 1, &sweep, tasks);
-			if (handle != NULL)
-			{
-				TaskSystem_Finish(handle, tasks);
-			}
+			handles[w] = TaskSystem_Enqueue(StepWorldsTask, &sweep, tasks);
 		}
-		else
+		StepWorldsTask(&sweep);
+		for (int w = 1; w < workers && tasks != NULL; ++w)
 		{
-			StepWorldsTask(0, worldCount, 0, &sweep);
+			if (handles[w] != NULL)
+			{
+				TaskSystem_Finish(handles[w], tasks);
+			}
 		}
 	}
 	double seconds = (double)tbGetMilliseconds(start) / 1000.0;

@@ -482,6 +482,13 @@ tbWorldDef Scene_MakeWorldDef(const Scene* scene, const SceneOverrides* override
 			def.finishTask = TaskSystem_Finish;
 			def.userTaskContext = overrides->tasks;
 		}
+		else if (overrides->enqueueTask != NULL)
+		{
+			def.workerCount = overrides->workerCount;
+			def.enqueueTask = overrides->enqueueTask;
+			def.finishTask = overrides->finishTask;
+			def.userTaskContext = overrides->userTaskContext;
+		}
 	}
 	return def;
 }

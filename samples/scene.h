@@ -257,6 +257,12 @@ typedef struct SceneOverrides
 	bool pointFriction;		///< true: a friction row per manifold point (tbWorldDef::enableCentralFriction off)
 	bool impactPropagation; ///< true: tbWorldDef::enableImpactPropagation (Newton's cradle)
 	struct TaskSystem* tasks; ///< non-null: the world runs on its workers (task_system.h)
+	/// Another task system (when tasks is NULL and enqueueTask is set): its callbacks, context and
+	/// worker count go into the world definition as they are.
+	tbEnqueueTaskCallback* enqueueTask;
+	tbFinishTaskCallback* finishTask;
+	void* userTaskContext;
+	int workerCount;
 } SceneOverrides;
 
 /// World definition for the scene: defaults, then the scene's gravity, sleep and methods, then overrides.

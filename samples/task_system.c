@@ -1,59 +1,48 @@
-// Reference task system (see task_system.h). Threads wait for a task by spinning briefly on its
-// generation counter (a step issues its tasks microseconds apart), then sleep on a condition
-// variable. The ranges are cut into one share per worker, each with an atomic counter: worker w
-// claims from share w first, then from the others', so a range is run exactly once, by whichever
-// thread gets to it first; completions are counted to know when the task is done.
+// Reference task system (see task_system.h): a pool of threads and a queue of callbacks. The
+// library cuts its loops into ranges and hands each worker one task whose context says which
+// worker it is, so the system only runs callbacks, once each, in any order.
 //
-// The one task record is reused, so a thread late from the last task must not read it while the
-// next is written. The generation works as a sequence lock: odd while the caller writes a task,
-// even once it is published. A thread announces itself (busy) before it reads a published task and
-// checks that the generation did not move meanwhile; the caller makes the generation odd, then
-// waits until no thread is busy, before it writes.
+// Enqueue puts a task in the next free slot of a ring and wakes the threads; a thread takes the
+// oldest waiting task. Finish waits for one task: while it has not been taken, the caller takes
+// waiting tasks itself (so a step never waits on threads that are busy elsewhere), then it spins
+// until the task is done. Threads spin a while for the next task (a step enqueues its loops
+// microseconds apart) before they sleep on a condition variable.
 #include "task_system.h"
 
 #include <pthread.h>
 #include <sched.h>
-#include <stdalign.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define TASK_SPIN_ROUNDS 4000
+#define TASK_SLOTS 256
 
-/// The ranges of one worker's share: the next to claim, on a line of its own (every claim writes it).
-typedef struct Share
-{
-	alignas(64) atomic_int next;
-	int end;
-} Share;
-
-typedef struct Task
+typedef struct Slot
 {
 	tbTaskCallback* callback;
 	void* context;
-	int itemCount;
-	int rangeSize;
-	int rangeCount;
-	int shareCount;
-	Share shares[TB_MAX_WORKERS];
-	alignas(64) atomic_int doneRanges;
-} Task;
+	atomic_int state; ///< a SlotState
+} Slot;
 
-typedef struct Thread
+enum SlotState
 {
-	TaskSystem* system;
-	pthread_t handle;
-	uint32_t workerIndex;
-} Thread;
+	slotFree,
+	slotWaiting, ///< enqueued, not yet taken
+	slotRunning,
+	slotDone, ///< run; freed by TaskSystem_Finish
+};
 
 struct TaskSystem
 {
 	int workerCount;
-	Thread threads[TB_MAX_WORKERS];
+	pthread_t threads[TB_MAX_WORKERS];
 	int threadCount;
-	Task task;
-	atomic_uint generation; ///< odd while a task is written, even when published
-	atomic_int busy;		///< threads reading or running the published task
+	Slot slots[TASK_SLOTS];
+	int head; ///< next slot to enqueue into (the caller's; under lock)
+	int tail; ///< oldest slot that may be waiting (under lock)
+	atomic_int waiting;	 ///< tasks enqueued and not yet taken
+	atomic_int sleeping; ///< threads asleep on the condition variable (the rest spin)
 	atomic_bool quit;
 	pthread_mutex_t lock;
 	pthread_cond_t wake;
@@ -67,75 +56,69 @@ static inline void Pause(void)
 #endif
 }
 
-/// Claim and run ranges of the current task until none is left. The ranges are cut into one
-/// contiguous share per worker; worker w starts on share w, then helps with the others in turn. Loop
-/// after loop over the same items (bodies, contacts in id order) a worker so takes the same items,
-/// and finds them and what the step's other stages wrote for them in its own cache; the library's
-/// sub-step stages start worker w at w/n of each stage likewise (solver_workers.c).
-static void RunRanges(Task* task, uint32_t workerIndex)
+/// Take the oldest waiting task, or NULL when none waits.
+static Slot* TakeTask(TaskSystem* system)
 {
-	for (int k = 0; k < task->shareCount; ++k)
+	Slot* taken = NULL;
+	pthread_mutex_lock(&system->lock);
+	while (system->tail != system->head)
 	{
-		Share* share = task->shares + ((int)workerIndex + k) % task->shareCount;
-		for (;;)
+		Slot* slot = system->slots + system->tail;
+		system->tail = (system->tail + 1) % TASK_SLOTS;
+		int expected = slotWaiting;
+		if (atomic_compare_exchange_strong(&slot->state, &expected, slotRunning))
 		{
-			int range = atomic_fetch_add_explicit(&share->next, 1, memory_order_acq_rel);
-			if (range >= share->end)
-			{
-				break;
-			}
-			int start = range * task->rangeSize;
-			int end = start + task->rangeSize < task->itemCount ? start + task->rangeSize : task->itemCount;
-			task->callback(start, end, workerIndex, task->context);
-			atomic_fetch_add_explicit(&task->doneRanges, 1, memory_order_acq_rel);
+			atomic_fetch_sub(&system->waiting, 1);
+			taken = slot;
+			break;
 		}
 	}
+	pthread_mutex_unlock(&system->lock);
+	return taken;
 }
 
-static unsigned WaitForTask(TaskSystem* system, unsigned seen)
+static void RunTask(Slot* slot)
+{
+	slot->callback(slot->context);
+	atomic_store_explicit(&slot->state, slotDone, memory_order_release);
+}
+
+/// Wait until a task waits or the system quits: spin first, then sleep.
+static void WaitForWork(TaskSystem* system)
 {
 	for (int i = 0; i < TASK_SPIN_ROUNDS; ++i)
 	{
-		unsigned now = atomic_load_explicit(&system->generation, memory_order_acquire);
-		if (now != seen || atomic_load_explicit(&system->quit, memory_order_acquire))
+		if (atomic_load(&system->waiting) > 0 || atomic_load(&system->quit))
 		{
-			return now;
+			return;
 		}
 		Pause();
 	}
 	pthread_mutex_lock(&system->lock);
-	unsigned now = atomic_load_explicit(&system->generation, memory_order_acquire);
-	while (now == seen && atomic_load_explicit(&system->quit, memory_order_acquire) == false)
+	atomic_fetch_add(&system->sleeping, 1);
+	while (atomic_load(&system->waiting) == 0 && atomic_load(&system->quit) == false)
 	{
 		pthread_cond_wait(&system->wake, &system->lock);
-		now = atomic_load_explicit(&system->generation, memory_order_acquire);
 	}
+	atomic_fetch_sub(&system->sleeping, 1);
 	pthread_mutex_unlock(&system->lock);
-	return now;
 }
 
 static void* ThreadMain(void* argument)
 {
-	Thread* thread = argument;
-	TaskSystem* system = thread->system;
-	unsigned seen = atomic_load_explicit(&system->generation, memory_order_acquire);
+	TaskSystem* system = argument;
 	for (;;)
 	{
-		seen = WaitForTask(system, seen);
-		if (atomic_load_explicit(&system->quit, memory_order_acquire))
+		WaitForWork(system);
+		if (atomic_load(&system->quit))
 		{
 			return NULL;
 		}
-		if (seen & 1u)
+		Slot* slot = TakeTask(system);
+		if (slot != NULL)
 		{
-			continue; // being written: wait for it to be published
+			RunTask(slot);
 		}
-		atomic_fetch_add_explicit(&system->busy, 1, memory_order_seq_cst);
-		if (atomic_load_explicit(&system->generation, memory_order_seq_cst) == seen)
-		{
-			RunRanges(&system->task, thread->workerIndex);
-		}
-		atomic_fetch_sub_explicit(&system->busy, 1, memory_order_release);
 	}
 }
 
@@ -145,33 +128,26 @@ TaskSystem* TaskSystem_Create(int workerCount)
 	{
 		return NULL;
 	}
-	size_t bytes = (sizeof(TaskSystem) + 63) / 64 * 64; // aligned_alloc: a multiple of the alignment,
-	TaskSystem* system = aligned_alloc(64, bytes);		  // which the shares' lines need (alignas)
+	TaskSystem* system = calloc(1, sizeof(TaskSystem));
 	if (system == NULL)
 	{
 		return NULL;
 	}
-	memset(system, 0, bytes);
 	system->workerCount = workerCount;
-	atomic_init(&system->generation, 0u);
-	atomic_init(&system->busy, 0);
-	atomic_init(&system->quit, false);
-	for (int w = 0; w < TB_MAX_WORKERS; ++w)
+	for (int i = 0; i < TASK_SLOTS; ++i)
 	{
-		atomic_init(&system->task.shares[w].next, 0);
+		atomic_init(&system->slots[i].state, slotFree);
 	}
-	atomic_init(&system->task.doneRanges, 0);
+	atomic_init(&system->waiting, 0);
+	atomic_init(&system->sleeping, 0);
+	atomic_init(&system->quit, false);
 	pthread_mutex_init(&system->lock, NULL);
 	pthread_cond_init(&system->wake, NULL);
 	for (int i = 0; i < workerCount - 1; ++i)
 	{
-		Thread* thread = system->threads + i;
-		thread->system = system;
-		thread->workerIndex = (uint32_t)(i + 1);
-		if (pthread_create(&thread->handle, NULL, ThreadMain, thread) != 0)
+		if (pthread_create(system->threads + i, NULL, ThreadMain, system) != 0)
 		{
-			TaskSystem_Destroy(system);
-			return NULL;
+			break;
 		}
 		system->threadCount += 1;
 	}
@@ -185,71 +161,71 @@ void TaskSystem_Destroy(TaskSystem* system)
 		return;
 	}
 	pthread_mutex_lock(&system->lock);
-	atomic_store_explicit(&system->quit, true, memory_order_release);
+	atomic_store(&system->quit, true);
 	pthread_cond_broadcast(&system->wake);
 	pthread_mutex_unlock(&system->lock);
 	for (int i = 0; i < system->threadCount; ++i)
 	{
-		pthread_join(system->threads[i].handle, NULL);
+		pthread_join(system->threads[i], NULL);
 	}
-	pthread_cond_destroy(&system->wake);
 	pthread_mutex_destroy(&system->lock);
+	pthread_cond_destroy(&system->wake);
 	free(system);
 }
 
 int TaskSystem_WorkerCount(const TaskSystem* system)
 {
-	return system->workerCount;
+	return system != NULL ? system->workerCount : 1;
 }
 
-void* TaskSystem_Enqueue(tbTaskCallback* callback, int itemCount, int minRange, void* taskContext, void* userContext)
+void* TaskSystem_Enqueue(tbTaskCallback* callback, void* taskContext, void* userContext)
 {
 	TaskSystem* system = userContext;
-	if (system->threadCount == 0 || itemCount <= 0)
+	pthread_mutex_lock(&system->lock);
+	Slot* slot = system->slots + system->head;
+	bool room = system->threadCount > 0 && atomic_load(&slot->state) == slotFree;
+	if (room)
 	{
-		if (itemCount > 0)
+		slot->callback = callback;
+		slot->context = taskContext;
+		atomic_store(&slot->state, slotWaiting);
+		system->head = (system->head + 1) % TASK_SLOTS;
+		atomic_fetch_add(&system->waiting, 1);
+		if (atomic_load(&system->sleeping) > 0)
 		{
-			callback(0, itemCount, 0, taskContext);
+			pthread_cond_signal(&system->wake); // spinning threads see `waiting` without it
 		}
+	}
+	pthread_mutex_unlock(&system->lock);
+	if (room == false)
+	{
+		callback(taskContext); // no thread, or every slot in use: run it here
 		return NULL;
 	}
-	// Four ranges per worker (at least minRange items each): uneven items even out as workers that
-	// finish early take more ranges.
-	int workers = 4 * system->workerCount;
-	int rangeSize = (itemCount + workers - 1) / workers;
-	rangeSize = rangeSize < minRange ? minRange : rangeSize;
-	Task* task = &system->task;
-	atomic_fetch_add_explicit(&system->generation, 1u, memory_order_seq_cst); // odd: writing
-	while (atomic_load_explicit(&system->busy, memory_order_seq_cst) != 0)
-	{
-		Pause(); // a thread is leaving the last task
-	}
-	task->callback = callback;
-	task->context = taskContext;
-	task->itemCount = itemCount;
-	task->rangeSize = rangeSize;
-	task->rangeCount = (itemCount + rangeSize - 1) / rangeSize;
-	task->shareCount = system->workerCount;
-	for (int w = 0; w < task->shareCount; ++w)
-	{
-		atomic_store_explicit(&task->shares[w].next, w * task->rangeCount / task->shareCount, memory_order_relaxed);
-		task->shares[w].end = (w + 1) * task->rangeCount / task->shareCount;
-	}
-	atomic_store_explicit(&task->doneRanges, 0, memory_order_relaxed);
-	pthread_mutex_lock(&system->lock);
-	atomic_fetch_add_explicit(&system->generation, 1u, memory_order_release); // even: published
-	pthread_cond_broadcast(&system->wake);
-	pthread_mutex_unlock(&system->lock);
-	return task;
+	return slot;
 }
 
 void TaskSystem_Finish(void* userTask, void* userContext)
 {
-	(void)userContext;
-	Task* task = userTask;
-	RunRanges(task, 0);
-	while (atomic_load_explicit(&task->doneRanges, memory_order_acquire) < task->rangeCount)
+	TaskSystem* system = userContext;
+	Slot* slot = userTask;
+	int rounds = 0;
+	while (atomic_load_explicit(&slot->state, memory_order_acquire) != slotDone)
 	{
-		sched_yield(); // the last ranges are running on other threads
+		Slot* other = atomic_load(&system->waiting) > 0 ? TakeTask(system) : NULL;
+		if (other != NULL)
+		{
+			RunTask(other); // perhaps this very task: nobody had taken it yet
+			continue;
+		}
+		if (++rounds < TASK_SPIN_ROUNDS)
+		{
+			Pause();
+		}
+		else
+		{
+			sched_yield();
+		}
 	}
+	atomic_store_explicit(&slot->state, slotFree, memory_order_release);
 }

@@ -1,6 +1,7 @@
-// A small reference task system for tbWorldDef's enqueueTask/finishTask: a fixed pool of
-// workerCount − 1 threads (POSIX threads) plus the calling thread. The library itself creates no
-// threads; a game passes its own task system instead. One task runs at a time per system.
+// A small reference task system for tbWorldDef's enqueueTask/finishTask (Box2D v3.2's interface):
+// a pool of workerCount − 1 threads (POSIX threads) and a queue of callbacks; the calling thread
+// runs waiting tasks while it finishes one. The library itself creates no threads; a game passes
+// its own task system instead (any that runs a callback once per enqueue).
 //
 //   TaskSystem* tasks = TaskSystem_Create(4);
 //   def.workerCount = TaskSystem_WorkerCount(tasks);
@@ -22,10 +23,10 @@ TaskSystem* TaskSystem_Create(int workerCount);
 void TaskSystem_Destroy(TaskSystem* system);
 int TaskSystem_WorkerCount(const TaskSystem* system);
 
-/// tbEnqueueTaskCallback: splits the items into ranges the pool's threads start on at once; the
-/// caller joins in TaskSystem_Finish (as worker 0).
-void* TaskSystem_Enqueue(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* userContext);
-/// tbFinishTaskCallback: runs ranges no thread has taken yet, then waits for the rest.
+/// tbEnqueueTaskCallback: queues task(taskContext) for the pool's threads; runs it at once and
+/// returns NULL when the pool has no thread or no free slot.
+void* TaskSystem_Enqueue(tbTaskCallback* task, void* taskContext, void* userContext);
+/// tbFinishTaskCallback: runs waiting tasks until this one has run, then frees its slot.
 void TaskSystem_Finish(void* userTask, void* userContext);
 
 #ifdef __cplusplus

@@ -341,10 +341,15 @@ Test(constraint_graph, no_constraints_no_blocks)
 // Island partitions (constraint_graph.c, tbCutPartitions): with workers, separate runs of the
 // solver bodies become partitions, each colour's blocks holding one run's contacts after another.
 
-static void* NeverCalledEnqueue(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* userContext)
+static void* NeverCalledEnqueue(tbTaskCallback* task, void* taskContext, void* userContext)
 {
-	(void)task, (void)itemCount, (void)minRange, (void)taskContext, (void)userContext;
+	(void)task, (void)taskContext, (void)userContext;
 	return NULL;
+}
+
+static void NeverCalledFinish(void* userTask, void* userContext)
+{
+	(void)userTask, (void)userContext;
 }
 
 /// Two chains on the ground: bodies [0, firstRun) and [firstRun, 20), each body also on the static
@@ -372,7 +377,8 @@ static void ColorForTwoWorkers(tbStepContext* context, tbWorld* world, tbContact
 							   int linkA, int linkB)
 {
 	memset(world, 0, sizeof(*world));
-	world->def.enqueueTask = NeverCalledEnqueue; // only its presence counts: the colouring calls no task
+	world->def.enqueueTask = NeverCalledEnqueue; // only their presence counts: the colouring calls no task
+	world->def.finishTask = NeverCalledFinish;
 	world->def.workerCount = 2;
 	world->def.solver = tb_solverSoft;
 	memset(context, 0, sizeof(*context));

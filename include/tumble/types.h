@@ -71,20 +71,19 @@ typedef void tbPreSolveFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* m
 /// run on several workers at once when the world has task callbacks.
 typedef bool tbPreContinuousFcn(tbShapeId shapeIdA, tbShapeId shapeIdB, tbPos point, tbVec2 normal, void* context);
 
-/// Tasks (Box2D v3.2's grammar): the game's task system runs parts of the step on its worker
-/// threads. A task covers items [startIndex, endIndex); workerIndex is in [0, workerCount) and no
-/// two items running at the same time share one.
-typedef void tbTaskCallback(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext);
+/// Tasks (Box2D v3.2's interface): the game's task system runs parts of the step on its worker
+/// threads. A task is one call of `task(taskContext)`, run exactly once per enqueue with the
+/// taskContext given; the library splits the work itself and gives each task its worker index, so
+/// the task system only runs callbacks.
+typedef void tbTaskCallback(void* taskContext);
 
-/// Run `task` over items [0, itemCount) split into ranges of at least minRange items, on up to
-/// workerCount workers (the calling thread may be one of them), and return a handle for
-/// finishTask; or run it all before returning and return NULL. The world's solver enqueues
-/// workerCount − 1 items that must run at the same time as the caller (they wait on each other):
-/// a system that has at least workerCount − 1 threads besides the caller does that.
-typedef void* tbEnqueueTaskCallback(tbTaskCallback* task, int itemCount, int minRange, void* taskContext,
-									void* userContext);
+/// Start `task(taskContext)` on a worker and return a handle for finishTask; or run it before
+/// returning and return NULL (then finishTask is not called). The tasks a step enqueues at once
+/// (at most workerCount − 1) need not all run at the same time: the calling thread can do all the
+/// work alone, so a system with fewer threads, or one that runs tasks in order, still finishes.
+typedef void* tbEnqueueTaskCallback(tbTaskCallback* task, void* taskContext, void* userContext);
 
-/// Wait until a task from enqueueTask has run every item.
+/// Wait until the task behind `userTask` (from enqueueTask) has run.
 typedef void tbFinishTaskCallback(void* userTask, void* userContext);
 
 /// World definition: start from tbDefaultWorldDef().

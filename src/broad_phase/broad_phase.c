@@ -154,7 +154,7 @@ void tbBroadPhase_Destroy(tbBroadPhase* bp)
 	tbFree(bp->table.proxies, bp->table.capacity * (int)sizeof(tbBroadProxy));
 	tbFree(bp->moveBuffer, bp->moveCapacity * (int)sizeof(int));
 	tbPairList_Destroy(&bp->pairList);
-	for (int i = 0; i < 2 * TB_MAX_WORKERS; ++i)
+	for (int i = 0; i < TB_MAX_WORKERS; ++i)
 	{
 		tbPairList_Destroy(bp->workerPairs + i);
 	}

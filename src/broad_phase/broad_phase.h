@@ -17,6 +17,8 @@
 #include "sort_and_sweep.h"
 #include "spatial_hash.h"
 
+#include "core/task.h"
+
 #include "tumble/constants.h"
 #include "tumble/types.h"
 
@@ -38,7 +40,7 @@ typedef struct tbBroadPhase
 	// Pairs found by the last UpdatePairs (sorted, unique), with the optional pair filter.
 	tbPairList pairList;
 	// Pairs each worker found (tree method on workers), merged into pairList before the sort.
-	tbPairList workerPairs[2 * TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
+	tbPairList workerPairs[TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
 
 	// Method state. Only the selected method's state is live.
 	tbDynamicTree staticTree;
@@ -85,7 +87,7 @@ void tbBroadPhase_UpdatePairs(tbBroadPhase* bp);
 
 /// Runs task over items [0, itemCount) on up to workerCount workers and returns when all ran
 /// (the world's tbParallelFor, handed in so that the broad phase needs no world).
-typedef void tbRangeRunnerFcn(tbTaskCallback* task, int itemCount, int minRange, void* taskContext,
+typedef void tbRangeRunnerFcn(tbRangeTask* task, int itemCount, int minRange, void* taskContext,
 							  void* runnerContext);
 
 /// The same, the queries of moved proxies (tree and spatial hash) spread over workers (each worker

@@ -1,11 +1,22 @@
-// Tasks: the step hands ranges of independent items (contacts to collide, bodies to integrate,
+// Tasks: the step hands loops over independent items (contacts to collide, bodies to integrate,
 // blocks of one graph colour) to the game's task system. Results never depend on how the items
 // are split or which worker runs them: every item writes only its own data, and whatever is
 // appended or summed is done afterwards on the caller in item order.
+//
+// The game's system only runs callbacks (Box2D v3.2's interface: task(taskContext), once per
+// enqueue). A loop is cut here into ranges, and the ranges into one contiguous share per worker;
+// worker w claims ranges from share w first, then from the others' in turn. Loop after loop over
+// the same items (bodies, contacts in id order) a worker so takes the same items and finds them,
+// and what the step's other stages wrote for them, in its own cache; the solver's stages start
+// worker w at w/n of each stage likewise (solver_workers.c). The caller is worker 0 and enqueues
+// one task for each other worker. Since every worker claims from every share once its own is
+// done, the caller alone finishes the loop when the system runs none of the tasks before it is
+// asked to finish them (fewer threads, tasks run in order, or run inline by enqueue).
 #include "task.h"
 
 #include "core.h"
 
+#include <stdalign.h>
 #include <stdatomic.h>
 
 #if defined(__SSE2__) || defined(_M_X64)
@@ -25,119 +36,164 @@
 /// Spin rounds before a waiting worker starts yielding its time slice.
 #define TB_SPINS_BEFORE_YIELD 2000
 
+/// Ranges a loop is cut into per worker: uneven items even out as workers that finish early take
+/// ranges from the others' shares.
+#define TB_RANGES_PER_WORKER 4
+
+/// One worker's share of a loop's ranges: the next to claim, on a cache line of its own (every
+/// claim writes it).
+typedef struct tbShare
+{
+	alignas(64) atomic_int next;
+	int end;
+} tbShare;
+
+typedef struct tbLoop
+{
+	tbRangeTask* task;
+	void* context;
+	int itemCount;
+	int rangeSize;
+	int shareCount;
+	tbShare shares[TB_MAX_WORKERS];
+} tbLoop;
+
+/// The context of one worker's task: the loop and the worker's index.
+typedef struct tbLoopWorker
+{
+	tbLoop* loop;
+	uint32_t workerIndex;
+} tbLoopWorker;
+
 int tbWorkerCount(const tbWorldDef* def)
 {
-	return def->enqueueTask != NULL ? def->workerCount : 1;
+	return def->enqueueTask != NULL && def->finishTask != NULL ? def->workerCount : 1;
 }
 
 int tbWorkerSlotCount(const tbWorldDef* def)
 {
-	return 2 * tbWorkerCount(def);
+	return tbWorkerCount(def);
 }
 
-// The task callback's contract (types.h) gives every range a worker index in [0, workerCount), and
-// the step's per-worker buffers are indexed by it. A task system that hands out a larger one (a
-// pool of more threads than tbWorld_SetWorkerCount allows) would write past them, so the library's
-// tasks run through this guard: a valid index passes straight on; a range with an invalid one
-// borrows a spare slot [workerCount, 2·workerCount) for its duration (a bit mask, claimed by
-// compare-and-swap; with every spare lent out it waits for one), and the caller reports the broken
-// contract once the task is done. Sums and pair lists do not depend on which slot a range used.
-typedef struct tbTaskGuard
+/// Claim and run ranges until none is left: the worker's own share, then the others' in turn.
+static void tbRunShares(tbLoop* loop, uint32_t workerIndex)
 {
-	tbTaskCallback* task;
-	void* context;
-	uint32_t workers;
-	atomic_uint_fast64_t spares; ///< bit s: spare slot workers + s is free
-	atomic_uint badIndex;		 ///< the first invalid index seen + 1, or 0
-} tbTaskGuard;
-
-static void tbGuardedTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
-{
-	tbTaskGuard* guard = context;
-	if (workerIndex < guard->workers)
+	for (int k = 0; k < loop->shareCount; ++k)
 	{
-		guard->task(startIndex, endIndex, workerIndex, guard->context);
-		return;
-	}
-	unsigned int none = 0u;
-	atomic_compare_exchange_strong(&guard->badIndex, &none, workerIndex + 1u);
-	int rounds = 0;
-	uint_fast64_t free = atomic_load(&guard->spares);
-	for (;;)
-	{
-		if (free == 0u)
+		tbShare* share = loop->shares + ((int)workerIndex + k) % loop->shareCount;
+		for (;;)
 		{
-			tbSpinPause(&rounds);
-			free = atomic_load(&guard->spares);
-		}
-		else if (atomic_compare_exchange_weak(&guard->spares, &free, free & (free - 1u)))
-		{
-			break;
+			int range = atomic_fetch_add_explicit(&share->next, 1, memory_order_relaxed);
+			if (range >= share->end)
+			{
+				break;
+			}
+			int start = range * loop->rangeSize;
+			int end = tbMinInt(start + loop->rangeSize, loop->itemCount);
+			loop->task(start, end, workerIndex, loop->context);
 		}
 	}
-	int spare = tbLowestSetBit(free);
-	guard->task(startIndex, endIndex, guard->workers + (uint32_t)spare, guard->context);
-	atomic_fetch_or(&guard->spares, (uint_fast64_t)1u << spare);
 }
 
-static void tbInitTaskGuard(tbTaskGuard* guard, tbTaskCallback* task, void* context, int workers)
+static void tbLoopTask(void* taskContext)
 {
-	guard->task = task;
-	guard->context = context;
-	guard->workers = (uint32_t)workers;
-	atomic_init(&guard->spares, workers >= 64 ? ~(uint_fast64_t)0u : ((uint_fast64_t)1u << workers) - 1u);
-	atomic_init(&guard->badIndex, 0u);
+	tbLoopWorker* worker = taskContext;
+	tbRunShares(worker->loop, worker->workerIndex);
 }
 
-static void tbFinishGuardedTask(const tbWorldDef* def, void* handle, tbTaskGuard* guard)
+static void tbInitLoop(tbLoop* loop, tbRangeTask* task, void* context, int itemCount, int minRange, int workers)
 {
-	if (handle != NULL)
+	int rangeSize = tbMaxInt((itemCount + TB_RANGES_PER_WORKER * workers - 1) / (TB_RANGES_PER_WORKER * workers),
+							 tbMaxInt(minRange, 1));
+	int rangeCount = (itemCount + rangeSize - 1) / rangeSize;
+	loop->task = task;
+	loop->context = context;
+	loop->itemCount = itemCount;
+	loop->rangeSize = rangeSize;
+	loop->shareCount = tbMinInt(workers, rangeCount);
+	for (int w = 0; w < loop->shareCount; ++w)
 	{
-		def->finishTask(handle, def->userTaskContext);
-	}
-	unsigned int bad = atomic_load(&guard->badIndex);
-	if (bad != 0u)
-	{
-		tbReportError("tbWorld_Step",
-					  "the task system gave worker index %u, outside [0, workerCount = %u): the range ran in a spare "
-					  "slot; give indices below tbWorldDef::workerCount (tbWorld_SetWorkerCount)",
-					  bad - 1u, guard->workers);
+		atomic_init(&loop->shares[w].next, w * rangeCount / loop->shareCount);
+		loop->shares[w].end = (w + 1) * rangeCount / loop->shareCount;
 	}
 }
 
-void tbParallelFor(const tbWorldDef* def, tbTaskCallback* task, int itemCount, int minRange, void* context)
+/// Enqueue a task for each worker but the caller's (handles[w], NULL when it ran inline).
+static void tbStartHelpers(const tbWorldDef* def, tbLoop* loop, tbLoopWorker* workers, void** handles)
 {
-	if (itemCount <= 0)
+	for (int w = 1; w < loop->shareCount; ++w)
 	{
-		return;
+		workers[w] = (tbLoopWorker){loop, (uint32_t)w};
+		handles[w] = def->enqueueTask(tbLoopTask, workers + w, def->userTaskContext);
 	}
-	int workers = tbWorkerCount(def);
-	if (workers <= 1 || itemCount <= minRange)
-	{
-		task(0, itemCount, 0, context);
-		return;
-	}
-	tbTaskGuard guard;
-	tbInitTaskGuard(&guard, task, context, workers);
-	void* handle = def->enqueueTask(tbGuardedTask, itemCount, minRange, &guard, def->userTaskContext);
-	tbFinishGuardedTask(def, handle, &guard);
 }
 
-void tbParallelForAlongside(const tbWorldDef* def, tbTaskCallback* task, int itemCount, int minRange, void* context,
+static void tbJoinHelpers(const tbWorldDef* def, const tbLoop* loop, void** handles)
+{
+	for (int w = 1; w < loop->shareCount; ++w)
+	{
+		if (handles[w] != NULL)
+		{
+			def->finishTask(handles[w], def->userTaskContext);
+		}
+	}
+}
+
+void tbParallelFor(const tbWorldDef* def, tbRangeTask* task, int itemCount, int minRange, void* context)
+{
+	tbParallelForAlongside(def, task, itemCount, minRange, context, NULL, NULL);
+}
+
+void tbParallelForAlongside(const tbWorldDef* def, tbRangeTask* task, int itemCount, int minRange, void* context,
 							void (*alongside)(void*), void* alongsideContext)
 {
 	int workers = tbWorkerCount(def);
 	if (workers <= 1 || itemCount <= minRange)
 	{
-		alongside(alongsideContext);
-		tbParallelFor(def, task, itemCount, minRange, context);
+		if (alongside != NULL)
+		{
+			alongside(alongsideContext);
+		}
+		if (itemCount > 0)
+		{
+			task(0, itemCount, 0, context);
+		}
 		return;
 	}
-	tbTaskGuard guard;
-	tbInitTaskGuard(&guard, task, context, workers);
-	void* handle = def->enqueueTask(tbGuardedTask, itemCount, minRange, &guard, def->userTaskContext);
-	alongside(alongsideContext);
-	tbFinishGuardedTask(def, handle, &guard);
+	tbLoop loop;
+	tbInitLoop(&loop, task, context, itemCount, minRange, workers);
+	tbLoopWorker helpers[TB_MAX_WORKERS];
+	void* handles[TB_MAX_WORKERS];
+	tbStartHelpers(def, &loop, helpers, handles);
+	if (alongside != NULL)
+	{
+		alongside(alongsideContext);
+	}
+	tbRunShares(&loop, 0);
+	tbJoinHelpers(def, &loop, handles);
+}
+
+void tbRunOnWorkers(const tbWorldDef* def, tbTaskCallback* task, void* contexts, int contextSize, int count)
+{
+	void* handles[TB_MAX_WORKERS];
+	bool onWorkers = tbWorkerCount(def) > 1;
+	for (int i = 1; i < count; ++i)
+	{
+		void* part = (char*)contexts + (size_t)i * (size_t)contextSize;
+		handles[i] = onWorkers ? def->enqueueTask(task, part, def->userTaskContext) : NULL;
+		if (onWorkers == false)
+		{
+			task(part); // no task system: the caller runs the parts one after another (they wait on no one)
+		}
+	}
+	task(contexts);
+	for (int i = 1; i < count; ++i)
+	{
+		if (handles[i] != NULL)
+		{
+			def->finishTask(handles[i], def->userTaskContext);
+		}
+	}
 }
 
 void tbSpinPause(int* rounds)

@@ -376,36 +376,38 @@ static void tbRunPartition(tbStageProgram* p, int partition)
 	}
 }
 
-static void tbPartitionTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
+/// One worker's part of the program: a partition, or a share of the stages (tbParticipate).
+typedef struct tbProgramPart
 {
-	(void)workerIndex;
-	for (int i = startIndex; i < endIndex; ++i)
-	{
-		tbRunPartition(context, i + 1); // partition 0 is the caller's
-	}
+	tbStageProgram* program;
+	int index; ///< the partition, or the worker index
+} tbProgramPart;
+
+static void tbPartitionTask(void* taskContext)
+{
+	tbProgramPart* part = taskContext;
+	tbRunPartition(part->program, part->index);
 }
 
 /// The partitions' programs side by side: the caller runs partition 0 and the workers the others.
 static void tbRunPartitions(tbStageProgram* p)
 {
 	tbWorld* world = p->context->world;
-	int others = p->context->partitionCount - 1;
-	void* handle = world->def.enqueueTask(tbPartitionTask, others, 1, p, world->def.userTaskContext);
-	tbRunPartition(p, 0);
-	if (handle != NULL)
+	tbProgramPart parts[TB_MAX_WORKERS];
+	int count = p->context->partitionCount;
+	for (int i = 0; i < count; ++i)
 	{
-		world->def.finishTask(handle, world->def.userTaskContext);
+		parts[i] = (tbProgramPart){p, i};
 	}
+	tbRunOnWorkers(&world->def, tbPartitionTask, parts, (int)sizeof(tbProgramPart), count);
 	// The wait for the last partition goes to the last stage's part of the profile.
 	tbProfileLap(tbStageProfilePart(&world->profile, p->stages + p->stageCount - 1), &p->context->lapTicks);
 }
 
-static void tbHelperTask(int startIndex, int endIndex, uint32_t workerIndex, void* context)
+static void tbHelperTask(void* taskContext)
 {
-	for (int i = startIndex; i < endIndex; ++i)
-	{
-		tbParticipate(context, workerIndex);
-	}
+	tbProgramPart* part = taskContext;
+	tbParticipate(part->program, (uint32_t)part->index);
 }
 
 bool tbSolveSubStepsOnWorkers(tbStepContext* context)
@@ -453,11 +455,11 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 	{
 		atomic_init(program.shareClaims + i, 0);
 	}
-	void* handle = world->def.enqueueTask(tbHelperTask, workers - 1, 1, &program, world->def.userTaskContext);
-	tbParticipate(&program, 0);
-	if (handle != NULL)
+	tbProgramPart parts[TB_MAX_WORKERS];
+	for (int w = 0; w < workers; ++w)
 	{
-		world->def.finishTask(handle, world->def.userTaskContext);
+		parts[w] = (tbProgramPart){&program, w};
 	}
+	tbRunOnWorkers(&world->def, tbHelperTask, parts, (int)sizeof(tbProgramPart), workers);
 	return true; // the stages go with the step arena
 }

@@ -351,7 +351,7 @@ void tbContactPairPrefetch(int shapeIdA, int shapeIdB, void* context)
 	tbHashSet_Prefetch(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB));
 }
 
-static void tbRunOnWorkers(tbTaskCallback* task, int itemCount, int minRange, void* taskContext, void* world)
+static void tbRunPairQueries(tbRangeTask* task, int itemCount, int minRange, void* taskContext, void* world)
 {
 	tbParallelFor(&((tbWorld*)world)->def, task, itemCount, minRange, taskContext);
 }
@@ -365,7 +365,7 @@ void tbUpdatePairsStage(tbWorld* world)
 	// query the world.
 	int workers = tbWorkerCount(&world->def);
 	bool deferRefresh = workers > 1 && world->preSolveFcn == NULL;
-	tbBroadPhase_UpdatePairsOnWorkers(bp, tbRunOnWorkers, world, workers, tbWorkerSlotCount(&world->def), deferRefresh);
+	tbBroadPhase_UpdatePairsOnWorkers(bp, tbRunPairQueries, world, workers, tbWorkerSlotCount(&world->def), deferRefresh);
 	world->counters.pairCandidates = bp->pairList.count;
 	// Every pair passed tbContactPairFilter as it was found, and the pairs are unique: each
 	// becomes a contact.
@@ -1064,7 +1064,7 @@ void tbCollideStage(tbWorld* world)
 	{
 		world->cache.collideKeys[world->cache.collideKeyCount].step = world->stepIndex - 2u;
 	}
-	int slots = tbWorkerSlotCount(&world->def); // task.h: the spare slots too
+	int slots = tbWorkerSlotCount(&world->def);
 	char* tallyBytes = tbArenaAlloc(&world->stepArena, (slots + 1) * (int)sizeof(tbCollideTally));
 	world->cache.collideTallies = (tbCollideTally*)(((uintptr_t)tallyBytes + 63) & ~(uintptr_t)63);
 	memset(world->cache.collideTallies, 0, (size_t)slots * sizeof(tbCollideTally));

@@ -370,7 +370,7 @@ typedef struct tbContinuousTaskContext
 {
 	tbWorld* world;
 	const int* bodies;
-	tbToiCounters counters[2 * TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
+	tbToiCounters counters[TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
 } tbContinuousTaskContext;
 
 static void tbContinuousTask(int start, int end, uint32_t workerIndex, void* context)
