@@ -335,7 +335,7 @@ static bool tbCheckRadius(const char* f, const char* name, float radius)
 /// tbMakeBox) has edges shorter than that. Tolerances are relative to the polygon's size:
 /// an edge shorter than 1e-6 × size is a duplicate, and |sin| < 1e-6 between neighbouring edges is
 /// collinear; a normal must be unit (1e-3) and perpendicular to its edge (1e-3).
-static bool tbIsConvexPolygon(const tbPolygon* p)
+bool tbIsConvexPolygon(const tbPolygon* p)
 {
 	float size = 0.0f;
 	for (int i = 0; i < p->count; ++i)

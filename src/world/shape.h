@@ -78,6 +78,9 @@ tbShapeId tbMakeShapeId(const tbWorld* world, int shapeId);
 void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body);
 void tbDestroyShapeProxy(tbWorld* world, tbShape* shape);
 bool tbShouldShapesCollide(tbFilter a, tbFilter b);
+/// The polygon is strictly convex and counter-clockwise and its normals match its edges (reports
+/// nothing: tbCheckGeometry reports, snapshot.c checks an image's polygons with it).
+bool tbIsConvexPolygon(const tbPolygon* p);
 /// Check user geometry (finite, positive radii, valid polygon); reports an error naming `f`.
 bool tbCheckGeometry(const char* f, const tbGeometry* geometry);
 /// A surface material's values are usable (finite; friction, restitution, rolling resistance ≥ 0),

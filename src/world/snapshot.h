@@ -1,14 +1,14 @@
 // Internal: what the tests and the fuzz harness need of the snapshot format (snapshot.c describes
-// it): the header's size and the checksum that guards the bytes after it.
+// it): the header's size and the checksum that guards the image.
 #pragma once
 
 #include <stdint.h>
 
-/// Bytes of a snapshot image's header; the checksum covers the image from byte 24 (the world's
-/// identity at 24..31 included) to its end.
+/// Bytes of a snapshot image's header; the checksum (bytes 16..23) covers every other byte of the
+/// image: the header's first 16 bytes and everything from byte 24 to the end.
 #define TB_SNAPSHOT_HEADER_SIZE 32
 
-/// The checksum of an image of `size` bytes, as its header holds it (bytes 16..23).
+/// The checksum of an image of `size` bytes (at least the header), as its header holds it.
 uint64_t tbSnapshotChecksum(const uint8_t* image, int size);
 
 /// Write the checksum of an image into its header: for tests and the fuzz harness, which change
