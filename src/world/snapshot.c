@@ -748,8 +748,9 @@ static void tbWritePool(tbEncoder* e, const tbIdPool* pool, const void* slots, s
 }
 
 /// The pool's slots as the image describes them (tb_slot*), and each slot's generation offset, in
-/// arrays the caller frees (highWater entries). Slots that retire (`retires`: 16-bit generations)
-/// are those whose offset reached 65,535; the rest that are not free are in use.
+/// arrays the caller frees (highWater + 1 entries). Slots that retire (`retires`: 16-bit
+/// generations) are those whose offset reached 65,535; the rest that are not free are in use. The
+/// pool is set only when the whole of it was read (a world freed half-read walks its pools).
 static bool tbReadPool(tbDecoder* d, tbIdPool* pool, uint8_t** slotsOut, uint32_t** generationsOut, bool retires,
 					   const char* what)
 {
@@ -768,22 +769,17 @@ static bool tbReadPool(tbDecoder* d, tbIdPool* pool, uint8_t** slotsOut, uint32_
 	}
 	uint8_t* slots = tbAlloc(highWater + 1);
 	uint32_t* generations = tbAlloc((highWater + 1) * (int)sizeof(uint32_t));
+	int* freeIds = freeCount > 0 ? tbAlloc(freeCount * (int)sizeof(int)) : NULL;
 	memset(slots, tb_slotLive, (size_t)highWater + 1);
-	*slotsOut = slots;
-	*generationsOut = generations;
-	pool->highWater = highWater;
-	pool->freeCount = freeCount;
-	pool->freeCapacity = freeCount;
-	pool->freeIds = freeCount > 0 ? tbAlloc(freeCount * (int)sizeof(int)) : NULL;
 	for (int i = 0; i < freeCount && r->failed == false; ++i)
 	{
 		int id = tbGetIndex(r, highWater, "a free id");
 		if (r->failed == false && slots[id] != tb_slotLive)
 		{
-			return tbFail(r, "its %s pool lists id %d as free twice", what, id);
+			tbFail(r, "its %s pool lists id %d as free twice", what, id);
 		}
 		slots[id] = tb_slotFree;
-		pool->freeIds[i] = id;
+		freeIds[i] = id;
 	}
 	int live = 0;
 	for (int i = 0; i < highWater && r->failed == false; ++i)
@@ -791,21 +787,34 @@ static bool tbReadPool(tbDecoder* d, tbIdPool* pool, uint8_t** slotsOut, uint32_
 		uint32_t generation = tbGetUInt(r);
 		if (retires && generation > UINT16_MAX)
 		{
-			return tbFail(r, "a %s generation is %u (16 bits)", what, generation);
+			tbFail(r, "a %s generation is %u (16 bits)", what, generation);
 		}
 		generations[i] = generation;
 		if (retires && generation == UINT16_MAX)
 		{
 			if (slots[i] == tb_slotFree)
 			{
-				return tbFail(r, "%s slot %d is both free and retired", what, i);
+				tbFail(r, "%s slot %d is both free and retired", what, i);
 			}
 			slots[i] = tb_slotRetired;
 		}
 		live += slots[i] == tb_slotLive ? 1 : 0;
 	}
+	if (r->failed)
+	{
+		tbFree(slots, highWater + 1);
+		tbFree(generations, (highWater + 1) * (int)sizeof(uint32_t));
+		tbFree(freeIds, freeCount * (int)sizeof(int));
+		return false;
+	}
+	*slotsOut = slots;
+	*generationsOut = generations;
+	pool->highWater = highWater;
+	pool->freeIds = freeIds;
+	pool->freeCount = freeCount;
+	pool->freeCapacity = freeCount;
 	pool->count = live;
-	return r->failed == false;
+	return true;
 }
 
 static void tbFreeSlots(uint8_t** slots, uint32_t** generations, int highWater)
@@ -1591,14 +1600,13 @@ static bool tbReadChains(tbDecoder* d)
 	uint32_t* generations;
 	if (tbReadPool(d, &world->chainPool, &slots, &generations, true, "chain") == false)
 	{
-		tbFreeSlots(&slots, &generations, world->chainPool.highWater);
 		return false;
 	}
 	int highWater = world->chainPool.highWater;
 	TB_ARRAY_RESERVE(world->chains, world->chainCapacity, highWater);
-	memset(world->chains, 0, (size_t)world->chainCapacity * sizeof(tbChain));
 	for (int i = 0; i < highWater; ++i)
 	{
+		memset(world->chains + i, 0, sizeof(tbChain));
 		world->chains[i].generation = (uint16_t)generations[i];
 	}
 	// Which chain claims each shape (−1: none yet).
@@ -2042,7 +2050,6 @@ static bool tbReadContacts(tbDecoder* d)
 	uint32_t* generations;
 	if (tbReadPool(d, &world->contactPool, &slots, &generations, false, "contact") == false)
 	{
-		tbFreeSlots(&slots, &generations, world->contactPool.highWater);
 		return false;
 	}
 	int highWater = world->contactPool.highWater;
@@ -2395,7 +2402,6 @@ static bool tbReadJoints(tbDecoder* d)
 	uint32_t* generations;
 	if (tbReadPool(d, &world->jointPool, &slots, &generations, true, "joint") == false)
 	{
-		tbFreeSlots(&slots, &generations, world->jointPool.highWater);
 		return false;
 	}
 	int highWater = world->jointPool.highWater;
