@@ -530,11 +530,22 @@ enum
 	tb_slotRead = 3,	///< in use, record read
 };
 
+/// Shapes that share a geometry, or a density, material and filter, share one entry of a dictionary
+/// (a pile of a few kinds of crate): an entry is written once, then named by its index.
+typedef struct tbDictionary
+{
+	int* entries; ///< the shape that holds each entry, in the order entries were made
+	int count, capacity;
+	int* slots; ///< writing: hash slots, each an entry index + 1 (0 empty); a power of two of them
+	int slotCount;
+} tbDictionary;
+
 typedef struct tbDecoder
 {
 	tbReader r;
 	tbWorld* world; ///< the world being built (not registered)
-	const tbShape* previousShape;
+	tbDictionary geometries;
+	tbDictionary materials;
 	uint8_t* bodySlots;
 	uint8_t* shapeSlots;
 	uint8_t* shapeBoxes; ///< per shape slot: its tight box stored (1), its fat box stored (2)
@@ -547,7 +558,8 @@ typedef struct tbEncoder
 	tbWriter w;
 	const tbWorld* world;
 	const tbWorld* mixer; ///< the world with the default material mixing (contact predictions)
-	const tbShape* previousShape;
+	tbDictionary geometries;
+	tbDictionary materials;
 } tbEncoder;
 
 // --------------------------------------------------------------------------------------------
@@ -847,7 +859,8 @@ enum
 	tb_bodyOriginStored = 1 << 13,
 	tb_bodyExtentsStored = 1 << 14,
 	tb_bodyReachStored = 1 << 15,
-	tb_bodyAll = (1 << 16) - 1,
+	tb_bodyStartStored = 1 << 16, ///< the pose at the start of the last step differs from the pose now
+	tb_bodyAll = (1 << 17) - 1,
 };
 
 enum
@@ -860,13 +873,10 @@ enum
 	tb_shapeCustomFiltering = 1 << 7,
 	tb_shapePreSolveEvents = 1 << 8,
 	tb_shapeProxyMoved = 1 << 9,
-	tb_shapeSameGeometry = 1 << 10, ///< the geometry of the shape written before it
-	tb_shapePolygonStored = 1 << 11, ///< normals and centroid written (not tbMakePolygon's)
-	tb_shapeBoxStored = 1 << 12,
-	tb_shapeFatStored = 1 << 13, ///< the fat box differs from the tight one
-	tb_shapeFilterStored = 1 << 14,
-	tb_shapeMaterialStored = 1 << 15, ///< density and material differ from the previous shape's
-	tb_shapeAll = (1 << 16) - 1,
+	tb_shapePolygonStored = 1 << 10, ///< normals and centroid written (not tbMakePolygon's)
+	tb_shapeBoxStored = 1 << 11,
+	tb_shapeFatStored = 1 << 12, ///< the fat box differs from the tight one
+	tb_shapeAll = (1 << 13) - 1,
 };
 
 /// The body floats that are mostly their defaults: velocities, forces, sleep time, parameters.
@@ -974,14 +984,6 @@ static bool tbSameGeometry(const tbGeometry* a, const tbGeometry* b)
 	}
 }
 
-#define TB_MATERIAL_FLOATS 5
-
-static void tbMaterialFloats(float density, const tbSurfaceMaterial* m, float v[TB_MATERIAL_FLOATS])
-{
-	float values[TB_MATERIAL_FLOATS] = {density, m->friction, m->restitution, m->rollingResistance, m->tangentSpeed};
-	memcpy(v, values, sizeof(values));
-}
-
 static bool tbSameMaterial(const tbSurfaceMaterial* a, const tbSurfaceMaterial* b)
 {
 	return tbSameFloat(a->friction, b->friction) && tbSameFloat(a->restitution, b->restitution) &&
@@ -989,18 +991,80 @@ static bool tbSameMaterial(const tbSurfaceMaterial* a, const tbSurfaceMaterial* 
 		   a->userMaterialId == b->userMaterialId && a->customColor == b->customColor;
 }
 
-/// The density and material a shape is compared with: the previous shape's, or the defaults.
-static void tbMaterialBase(const tbShape* previous, float* density, tbSurfaceMaterial* material)
+static bool tbSameMaterialBlock(const tbShape* a, const tbShape* b)
 {
-	if (previous != NULL)
+	return tbSameFloat(a->density, b->density) && tbSameMaterial(&a->material, &b->material) &&
+		   a->filter.categoryBits == b->filter.categoryBits && a->filter.maskBits == b->filter.maskBits &&
+		   a->filter.groupIndex == b->filter.groupIndex;
+}
+
+static uint64_t tbHashBytes(uint64_t h, const void* data, size_t count)
+{
+	const uint8_t* bytes = data;
+	for (size_t i = 0; i < count; ++i)
 	{
-		*density = previous->density;
-		*material = previous->material;
-		return;
+		h = (h ^ bytes[i]) * 1099511628211ull; // FNV-1a
 	}
-	tbShapeDef def = tbDefaultShapeDef();
-	*density = def.density;
-	*material = def.material;
+	return h;
+}
+
+static uint64_t tbHashGeometry(const tbGeometry* g)
+{
+	uint64_t h = tbHashBytes(14695981039346656037ull, &g->type, sizeof(g->type));
+	switch (g->type)
+	{
+		case tb_circleShape:
+			return tbHashBytes(h, &g->circle, sizeof(tbCircle));
+		case tb_capsuleShape:
+			return tbHashBytes(h, &g->capsule, sizeof(tbCapsule));
+		case tb_segmentShape:
+			return tbHashBytes(h, &g->segment, sizeof(tbSegment));
+		case tb_chainSegmentShape:
+			return tbHashBytes(h, &g->chainSegment, sizeof(tbChainSegment));
+		default:
+			h = tbHashBytes(h, g->polygon.vertices, (size_t)g->polygon.count * sizeof(tbVec2));
+			return tbHashBytes(h, &g->polygon.radius, sizeof(float));
+	}
+}
+
+static uint64_t tbHashMaterialBlock(const tbShape* shape)
+{
+	uint64_t h = tbHashBytes(14695981039346656037ull, &shape->density, sizeof(float));
+	h = tbHashBytes(h, &shape->material.friction, 4 * sizeof(float));
+	h = tbHashBytes(h, &shape->material.userMaterialId, sizeof(uint64_t));
+	h = tbHashBytes(h, &shape->filter.categoryBits, sizeof(uint64_t));
+	return tbHashBytes(h, &shape->filter.maskBits, sizeof(uint64_t));
+}
+
+static void tbDictionaryFree(tbDictionary* d)
+{
+	TB_ARRAY_FREE(d->entries, d->capacity);
+	tbFree(d->slots, d->slotCount * (int)sizeof(int));
+	memset(d, 0, sizeof(*d));
+}
+
+/// The entry equal to `shape`'s geometry (materials: its density, material and filter), or −1 after
+/// making it the next entry.
+static int tbDictionaryFind(tbDictionary* d, const tbWorld* world, int shapeId, bool materials)
+{
+	const tbShape* shape = world->shapes + shapeId;
+	uint64_t h = materials ? tbHashMaterialBlock(shape) : tbHashGeometry(&shape->geometry);
+	int mask = d->slotCount - 1;
+	for (int slot = (int)(h & (uint64_t)mask);; slot = (slot + 1) & mask)
+	{
+		int entry = d->slots[slot] - 1;
+		if (entry < 0)
+		{
+			d->slots[slot] = d->count + 1;
+			TB_ARRAY_PUSH(d->entries, d->count, d->capacity, shapeId);
+			return -1;
+		}
+		const tbShape* other = world->shapes + d->entries[entry];
+		if (materials ? tbSameMaterialBlock(shape, other) : tbSameGeometry(&shape->geometry, &other->geometry))
+		{
+			return entry;
+		}
+	}
 }
 
 static void tbWriteGeometry(tbWriter* w, const tbGeometry* g, bool polygonStored)
@@ -1046,6 +1110,14 @@ static void tbWriteGeometry(tbWriter* w, const tbGeometry* g, bool polygonStored
 	}
 }
 
+#define TB_MATERIAL_FLOATS 5
+
+static void tbMaterialFloats(float density, const tbSurfaceMaterial* m, float v[TB_MATERIAL_FLOATS])
+{
+	float values[TB_MATERIAL_FLOATS] = {density, m->friction, m->restitution, m->rollingResistance, m->tangentSpeed};
+	memcpy(v, values, sizeof(values));
+}
+
 static void tbWriteShape(tbEncoder* e, int id, const tbShape* shape, const tbBody* body)
 {
 	tbWriter* w = &e->w;
@@ -1054,10 +1126,9 @@ static void tbWriteShape(tbEncoder* e, int id, const tbShape* shape, const tbBod
 			 (shape->enableContactEvents ? tb_shapeContactEvents : 0u) | (shape->enableHitEvents ? tb_shapeHitEvents : 0u) |
 			 (shape->enableCustomFiltering ? tb_shapeCustomFiltering : 0u) |
 			 (shape->enablePreSolveEvents ? tb_shapePreSolveEvents : 0u) | (shape->proxyMoved ? tb_shapeProxyMoved : 0u);
-	bool sameGeometry = e->previousShape != NULL && tbSameGeometry(&shape->geometry, &e->previousShape->geometry);
-	flags |= sameGeometry ? tb_shapeSameGeometry : 0u;
+	int geometryEntry = tbDictionaryFind(&e->geometries, e->world, id, false);
 	bool polygonStored = false;
-	if (shape->geometry.type == tb_polygonShape && sameGeometry == false)
+	if (shape->geometry.type == tb_polygonShape && geometryEntry < 0)
 	{
 		tbPolygon remade;
 		polygonStored = tbRemakePolygon(&shape->geometry.polygon, &remade) == false ||
@@ -1067,39 +1138,30 @@ static void tbWriteShape(tbEncoder* e, int id, const tbShape* shape, const tbBod
 	tbAABB box = tbComputeShapeAABBInternal(shape, body->transform);
 	flags |= tbSameAABB(box, shape->aabb) ? 0u : tb_shapeBoxStored;
 	flags |= tbSameAABB(shape->fatAABB, shape->aabb) ? 0u : tb_shapeFatStored;
-	tbFilter filter = tbDefaultFilter();
-	bool filterStored = shape->filter.categoryBits != filter.categoryBits || shape->filter.maskBits != filter.maskBits ||
-						shape->filter.groupIndex != filter.groupIndex;
-	flags |= filterStored ? tb_shapeFilterStored : 0u;
-	float density;
-	tbSurfaceMaterial material;
-	tbMaterialBase(e->previousShape, &density, &material);
-	bool materialStored = tbSameFloat(density, shape->density) == false || tbSameMaterial(&material, &shape->material) == false;
-	flags |= materialStored ? tb_shapeMaterialStored : 0u;
+	int materialEntry = tbDictionaryFind(&e->materials, e->world, id, true);
 
 	tbPutUInt(w, (uint32_t)id);
 	tbPutUInt(w, flags);
-	if (sameGeometry == false)
+	tbPutUInt(w, (uint32_t)(geometryEntry + 1)); // 0: a new geometry follows
+	if (geometryEntry < 0)
 	{
 		tbWriteGeometry(w, &shape->geometry, polygonStored);
 	}
-	if (filterStored)
+	tbPutUInt(w, (uint32_t)(materialEntry + 1));
+	if (materialEntry < 0)
 	{
-		tbPutU64(w, shape->filter.categoryBits ^ filter.categoryBits);
-		tbPutU64(w, shape->filter.maskBits ^ filter.maskBits);
-		tbPutInt(w, shape->filter.groupIndex);
-	}
-	if (materialStored)
-	{
+		tbShapeDef def = tbDefaultShapeDef();
 		float values[TB_MATERIAL_FLOATS], defaults[TB_MATERIAL_FLOATS];
 		tbMaterialFloats(shape->density, &shape->material, values);
-		tbMaterialFloats(density, &material, defaults);
+		tbMaterialFloats(def.density, &def.material, defaults);
 		tbPutFloatsOver(w, values, defaults, TB_MATERIAL_FLOATS);
 		tbPutU64(w, shape->material.userMaterialId);
 		tbPutUInt(w, shape->material.customColor);
+		tbPutU64(w, shape->filter.categoryBits ^ def.filter.categoryBits);
+		tbPutU64(w, shape->filter.maskBits ^ def.filter.maskBits);
+		tbPutInt(w, shape->filter.groupIndex);
 	}
 	tbPutInt(w, shape->proxyKey);
-	e->previousShape = shape;
 }
 
 static void tbWriteBody(tbEncoder* e, const tbBody* body)
@@ -1118,6 +1180,9 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 	tbComputeBodyExtents(world, body, &minExtent, &maxExtent);
 	bool extentsStored = tbSameFloat(minExtent, body->minExtent) == false || tbSameFloat(maxExtent, body->maxExtent) == false;
 	bool reachStored = tbSameFloat(tbPredictReach(body), body->speculativeReach) == false;
+	bool startStored = tbSamePos(body->center0, body->center) == false || tbSameFloat(body->rotation0.c, body->transform.q.c) == false ||
+					   tbSameFloat(body->rotation0.s, body->transform.q.s) == false;
+	flags |= startStored ? tb_bodyStartStored : 0u;
 	flags |= (massStored ? tb_bodyMassStored : 0u) | (originStored ? tb_bodyOriginStored : 0u) |
 			 (extentsStored ? tb_bodyExtentsStored : 0u) | (reachStored ? tb_bodyReachStored : 0u);
 	tbPutUInt(w, flags);
@@ -1159,6 +1224,11 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 	{
 		tbPutFloat(w, body->speculativeReach);
 	}
+	if (startStored)
+	{
+		tbPutPos(w, body->center0);
+		tbPutRot(w, body->rotation0);
+	}
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
 		const tbShape* shape = world->shapes + id;
@@ -1176,6 +1246,19 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 static void tbWriteBodies(tbEncoder* e)
 {
 	const tbWorld* world = e->world;
+	int slotCount = 16;
+	while (slotCount < 2 * world->shapePool.count)
+	{
+		slotCount *= 2;
+	}
+	tbDictionary* dictionaries[2] = {&e->geometries, &e->materials};
+	for (int k = 0; k < 2; ++k)
+	{
+		memset(dictionaries[k], 0, sizeof(tbDictionary));
+		dictionaries[k]->slots = tbAlloc(slotCount * (int)sizeof(int));
+		dictionaries[k]->slotCount = slotCount;
+		memset(dictionaries[k]->slots, 0, (size_t)slotCount * sizeof(int));
+	}
 	tbWritePool(e, &world->bodyPool, world->bodies, sizeof(tbBody), offsetof(tbBody, generation), 2,
 				world->bodyGenerationBase);
 	tbWritePool(e, &world->shapePool, world->shapes, sizeof(tbShape), offsetof(tbShape, generation), 2,
@@ -1187,6 +1270,8 @@ static void tbWriteBodies(tbEncoder* e)
 			tbWriteBody(e, world->bodies + i);
 		}
 	}
+	tbDictionaryFree(&e->geometries);
+	tbDictionaryFree(&e->materials);
 }
 
 // Reading. Geometry is checked as tbCreateShape checks it (without reporting: the restore reports
@@ -1334,36 +1419,53 @@ static bool tbReadShape(tbDecoder* d, int bodyIndex, int* shapeIdOut)
 	shape->enablePreSolveEvents = (flags & tb_shapePreSolveEvents) != 0;
 	shape->proxyMoved = (flags & tb_shapeProxyMoved) != 0;
 	d->shapeBoxes[id] = (uint8_t)(((flags & tb_shapeBoxStored) ? 1u : 0u) | ((flags & tb_shapeFatStored) ? 2u : 0u));
-	if (flags & tb_shapeSameGeometry)
+	// A dictionary entry's value was checked when it was first read.
+	int geometryEntry = (int)tbGetUInt(r) - 1;
+	if (r->failed == false && geometryEntry >= d->geometries.count)
 	{
-		if (d->previousShape == NULL || d->previousShape->geometry.type != (tbShapeType)type)
+		return tbFail(r, "shape %d names geometry %d of %d", id, geometryEntry, d->geometries.count);
+	}
+	if (geometryEntry >= 0)
+	{
+		const tbShape* other = world->shapes + d->geometries.entries[geometryEntry];
+		if (other->geometry.type != (tbShapeType)type)
 		{
-			return tbFail(r, "shape %d repeats the geometry of a shape that is not there", id);
+			return tbFail(r, "shape %d names a geometry of another type", id);
 		}
-		shape->geometry = d->previousShape->geometry;
+		shape->geometry = other->geometry;
 	}
 	else if (tbReadGeometry(d, &shape->geometry, (tbShapeType)type, (flags & tb_shapePolygonStored) != 0) == false)
 	{
 		return false;
 	}
-	if (tbIsValidGeometry(&shape->geometry) == false)
+	else if (tbIsValidGeometry(&shape->geometry) == false)
 	{
 		return tbFail(r, "shape %d has invalid geometry (not finite, beyond TB_MAX_COORDINATE, too short, or a polygon "
 						 "that is not convex)", id);
 	}
-	shape->filter = tbDefaultFilter();
-	if (flags & tb_shapeFilterStored)
+	else
 	{
-		shape->filter.categoryBits ^= tbGetU64(r);
-		shape->filter.maskBits ^= tbGetU64(r);
-		shape->filter.groupIndex = tbGetInt(r);
+		TB_ARRAY_PUSH(d->geometries.entries, d->geometries.count, d->geometries.capacity, id);
 	}
-	tbMaterialBase(d->previousShape, &shape->density, &shape->material);
-	if (flags & tb_shapeMaterialStored)
+	int materialEntry = (int)tbGetUInt(r) - 1;
+	if (r->failed == false && materialEntry >= d->materials.count)
 	{
+		return tbFail(r, "shape %d names material %d of %d", id, materialEntry, d->materials.count);
+	}
+	if (materialEntry >= 0)
+	{
+		const tbShape* other = world->shapes + d->materials.entries[materialEntry];
+		shape->density = other->density;
+		shape->material = other->material;
+		shape->filter = other->filter;
+	}
+	else
+	{
+		tbShapeDef def = tbDefaultShapeDef();
 		float values[TB_MATERIAL_FLOATS], defaults[TB_MATERIAL_FLOATS];
-		tbMaterialFloats(shape->density, &shape->material, defaults);
+		tbMaterialFloats(def.density, &def.material, defaults);
 		tbGetFloatsOver(r, values, defaults, TB_MATERIAL_FLOATS, "a shape's material");
+		shape->material = def.material;
 		shape->density = values[0];
 		shape->material.friction = values[1];
 		shape->material.restitution = values[2];
@@ -1371,6 +1473,10 @@ static bool tbReadShape(tbDecoder* d, int bodyIndex, int* shapeIdOut)
 		shape->material.tangentSpeed = values[4];
 		shape->material.userMaterialId = tbGetU64(r);
 		shape->material.customColor = tbGetUInt(r);
+		shape->filter.categoryBits = def.filter.categoryBits ^ tbGetU64(r);
+		shape->filter.maskBits = def.filter.maskBits ^ tbGetU64(r);
+		shape->filter.groupIndex = tbGetInt(r);
+		TB_ARRAY_PUSH(d->materials.entries, d->materials.count, d->materials.capacity, id);
 	}
 	shape->proxyKey = tbGetInt(r);
 	if (r->failed)
@@ -1392,7 +1498,6 @@ static bool tbReadShape(tbDecoder* d, int bodyIndex, int* shapeIdOut)
 	{
 		return tbFail(r, "shape %d has proxy key %d", id, shape->proxyKey);
 	}
-	d->previousShape = shape;
 	return true;
 }
 
@@ -1536,8 +1641,8 @@ static bool tbReadBody(tbDecoder* d, int index)
 	{
 		return tbFail(r, "body %d has a negative extent or reach", index);
 	}
-	body->center0 = body->center;
-	body->rotation0 = body->transform.q;
+	body->center0 = (flags & tb_bodyStartStored) ? tbGetPos(r, "a body's start pose") : body->center;
+	body->rotation0 = (flags & tb_bodyStartStored) ? tbGetRot(r, "a body's start pose") : body->transform.q;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX && r->failed == false; id = world->shapes[id].nextShapeId)
 	{
 		tbShape* shape = world->shapes + id;
@@ -1713,8 +1818,109 @@ enum
 	tb_contactMaterialsStored = 1 << 2, ///< not the default mixing of its shapes' materials
 	tb_contactSimplexStored = 1 << 3,
 	tb_contactHitStored = 1 << 4,
-	tb_contactInfoAll = (1 << 5) - 1,
+	tb_contactPointsPredicted = 1 << 5, ///< the anchors (recycled: and points, separations) are remade
+	tb_contactFramePredicted = 1 << 6,	///< the recycling base (recycled: the normal) is remade
+	tb_contactInfoAll = (1 << 7) - 1,
 };
+
+// Where a manifold's points and recycling base come from (contact.c): the narrow phase ran with the
+// bodies at their poses at the start of the step (the pose a body's start pose keeps: centre0 and
+// rotation0, its origin as the last scatter wrote it), computing the points and, from them, the
+// anchors and the base; or it recycled the base, moving the points with the bodies. Either way
+// anchors, base, and for a recycled manifold its normal, points and separations, are functions of
+// what else the image holds, and are written only where recomputing them would not give the same
+// bits (a manifold made outside the collide stage, the large-world build's rounded points).
+
+/// A body's pose when its contacts were last collided: its start pose.
+typedef struct tbStartPose
+{
+	tbWorldTransform transform;
+	tbPos center;
+} tbStartPose;
+
+static tbStartPose tbStartPoseOf(const tbBody* body)
+{
+	tbStartPose pose;
+	pose.center = body->center0;
+	pose.transform.q = body->rotation0;
+	bool unmoved = tbSamePos(body->center0, body->center) && tbSameFloat(body->rotation0.c, body->transform.q.c) &&
+				   tbSameFloat(body->rotation0.s, body->transform.q.s);
+	// The origin the scatter stage wrote at the end of the step before (solver.c), or the origin now.
+	pose.transform.p = unmoved ? body->transform.p
+							   : tbOffsetPos(body->center0, tbNeg(tbRotateVector(body->rotation0, body->localCenter)));
+	return pose;
+}
+
+/// The manifold's last narrow phase recycled its base (contact.c), and the base is still there.
+static bool tbIsRecycledManifold(uint32_t flags)
+{
+	const uint32_t both = tb_contactRecycled | tb_contactRecyclable;
+	return (flags & both) == both;
+}
+
+/// tbComputeManifold's anchors of a computed manifold's points.
+static void tbRemakeAnchors(tbManifold* m, tbStartPose a, tbStartPose b)
+{
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		tbPos point = tbToPos(m->points[i].point);
+		m->points[i].anchorA = tbSubPos(point, a.center);
+		m->points[i].anchorB = tbSubPos(point, b.center);
+	}
+}
+
+/// tbStoreManifoldBase's base of a computed manifold (its margin aside).
+static void tbRemakeBase(tbManifoldBase* base, const tbManifold* m, tbStartPose a, tbStartPose b)
+{
+	base->relative = tbInvMulWorldTransforms(a.transform, b.transform);
+	base->normalA = tbInvRotateVector(a.transform.q, m->normal);
+	base->normalB = tbInvRotateVector(b.transform.q, m->normal);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		tbPos point = tbToPos(m->points[i].point);
+		base->pointA[i] = tbInvTransformWorldPoint(a.transform, point);
+		base->pointB[i] = tbInvTransformWorldPoint(b.transform, point);
+		base->separation[i] = m->points[i].separation;
+	}
+}
+
+/// tbRecycleManifold's normal of a recycled manifold.
+static tbVec2 tbRemakeRecycledNormal(const tbManifoldBase* base, tbStartPose a, tbStartPose b)
+{
+	return tbNormalize(tbAdd(tbRotateVector(a.transform.q, base->normalA), tbRotateVector(b.transform.q, base->normalB)));
+}
+
+/// tbRecycleManifold's points, separations and anchors of a recycled manifold (its normal set).
+static void tbRemakeRecycledPoints(tbManifold* m, const tbManifoldBase* base, tbStartPose a, tbStartPose b)
+{
+	tbWorldTransform xfA = a.transform, xfB = b.transform;
+	tbVec2 dp = tbSubPos(xfB.p, xfA.p);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		tbManifoldPoint* mp = m->points + i;
+		tbVec2 rA = tbRotateVector(xfA.q, base->pointA[i]);
+		tbVec2 rB = tbRotateVector(xfB.q, base->pointB[i]);
+		tbVec2 gap = tbAdd(dp, tbSub(rB, rA));
+		mp->separation = base->separation[i] + tbDot(gap, m->normal);
+		tbPos pointA = tbOffsetPos(xfA.p, rA);
+		mp->point = tbToVec2(tbOffsetPos(pointA, tbMulSV(0.5f, gap)));
+		mp->anchorA = tbSubPos(pointA, a.center);
+		mp->anchorB = tbSubPos(tbOffsetPos(xfB.p, rB), b.center);
+	}
+}
+
+static bool tbSameBase(const tbManifoldBase* a, const tbManifoldBase* b, int pointCount)
+{
+	bool same = tbSameVec2(a->relative.p, b->relative.p) && tbSameFloat(a->relative.q.c, b->relative.q.c) &&
+				tbSameFloat(a->relative.q.s, b->relative.q.s) && tbSameVec2(a->normalA, b->normalA) &&
+				tbSameVec2(a->normalB, b->normalB);
+	for (int i = 0; same && i < pointCount; ++i)
+	{
+		same = tbSameVec2(a->pointA[i], b->pointA[i]) && tbSameVec2(a->pointB[i], b->pointB[i]) &&
+			   tbSameFloat(a->separation[i], b->separation[i]);
+	}
+	return same;
+}
 
 /// A manifold point's floats, all mostly zero but the point and anchors.
 #define TB_POINT_FLOATS 11
@@ -1734,9 +1940,51 @@ static bool tbSimplexIsEmpty(const tbSimplexCache* c)
 	return memcmp(c, &empty, sizeof(empty)) == 0;
 }
 
+/// Which of a point's TB_POINT_FLOATS are remade rather than written: the anchors of a computed
+/// manifold; the point, anchors and separation of a recycled one.
+static bool tbIsRemadeFloat(int index, bool recycled, bool predicted)
+{
+	return predicted && ((index >= 2 && index <= 5) || (recycled && (index < 2 || index == 6)));
+}
+
+static void tbPutBase(tbWriter* w, const tbManifoldBase* b, int pointCount)
+{
+	tbPutVec2(w, b->relative.p);
+	tbPutRot(w, b->relative.q);
+	tbPutVec2(w, b->normalA);
+	tbPutVec2(w, b->normalB);
+	for (int i = 0; i < pointCount; ++i)
+	{
+		tbPutVec2(w, b->pointA[i]);
+		tbPutVec2(w, b->pointB[i]);
+		tbPutFloat(w, b->separation[i]);
+	}
+}
+
+static void tbPutPoints(tbWriter* w, const tbManifold* m, bool recycled, bool predicted)
+{
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		const tbManifoldPoint* p = m->points + i;
+		float values[TB_POINT_FLOATS], kept[TB_POINT_FLOATS];
+		tbPointFloats(p, values);
+		int count = 0;
+		for (int k = 0; k < TB_POINT_FLOATS; ++k)
+		{
+			if (tbIsRemadeFloat(k, recycled, predicted) == false)
+			{
+				kept[count++] = values[k];
+			}
+		}
+		tbPutFloatsOver(w, kept, NULL, count);
+		tbPutUInt(w, (uint32_t)p->id << 1 | (p->persisted ? 1u : 0u));
+	}
+}
+
 static void tbWriteContact(tbEncoder* e, const tbContact* contact)
 {
 	tbWriter* w = &e->w;
+	const tbWorld* world = e->world;
 	const tbManifold* m = &contact->manifold;
 	tbContact mixed = *contact;
 	tbMixContactMaterials(e->mixer, &mixed);
@@ -1746,8 +1994,46 @@ static void tbWriteContact(tbEncoder* e, const tbContact* contact)
 						   tbSameFloat(mixed.tangentSpeed, contact->tangentSpeed) == false;
 	bool simplexStored = tbSimplexIsEmpty(&contact->cache) == false;
 	bool hitStored = contact->hitSpeed != 0.0f || contact->hitPoint.x != 0.0f || contact->hitPoint.y != 0.0f;
+
+	// What recomputing from the bodies' start poses gives, compared bit for bit with what is there.
+	tbStartPose a = tbStartPoseOf(world->bodies + contact->edges[0].bodyId);
+	tbStartPose b = tbStartPoseOf(world->bodies + contact->edges[1].bodyId);
+	bool recycled = tbIsRecycledManifold(contact->flags);
+	bool recyclable = (contact->flags & tb_contactRecyclable) != 0;
+	tbManifold remade = *m;
+	bool framePredicted = false;
+	if (recycled)
+	{
+		remade.normal = tbRemakeRecycledNormal(&contact->base, a, b);
+		framePredicted = tbSameVec2(remade.normal, m->normal);
+		remade.normal = m->normal; // the points move along the normal the manifold holds
+		tbRemakeRecycledPoints(&remade, &contact->base, a, b);
+	}
+	else
+	{
+		tbRemakeAnchors(&remade, a, b);
+		if (recyclable)
+		{
+			tbManifoldBase base = contact->base;
+			tbRemakeBase(&base, m, a, b);
+			framePredicted = tbSameBase(&base, &contact->base, m->pointCount);
+		}
+	}
+	bool pointsPredicted = m->pointCount > 0;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		float values[TB_POINT_FLOATS], again[TB_POINT_FLOATS];
+		tbPointFloats(m->points + i, values);
+		tbPointFloats(remade.points + i, again);
+		for (int k = 0; k < TB_POINT_FLOATS; ++k)
+		{
+			pointsPredicted = pointsPredicted && (tbIsRemadeFloat(k, recycled, true) == false || tbSameFloat(values[k], again[k]));
+		}
+	}
+
 	uint32_t info = (uint32_t)m->pointCount | (materialsStored ? tb_contactMaterialsStored : 0u) |
-					(simplexStored ? tb_contactSimplexStored : 0u) | (hitStored ? tb_contactHitStored : 0u);
+					(simplexStored ? tb_contactSimplexStored : 0u) | (hitStored ? tb_contactHitStored : 0u) |
+					(pointsPredicted ? tb_contactPointsPredicted : 0u) | (framePredicted ? tb_contactFramePredicted : 0u);
 	tbPutUInt(w, (uint32_t)contact->shapeIdA);
 	tbPutUInt(w, (uint32_t)contact->shapeIdB);
 	tbPutU8(w, contact->flags);
@@ -1766,30 +2052,27 @@ static void tbWriteContact(tbEncoder* e, const tbContact* contact)
 		tbPutFloat(w, contact->rollingResistance);
 		tbPutFloat(w, contact->tangentSpeed);
 	}
-	float head[3] = {m->normal.x, m->normal.y, m->rollingImpulse};
-	tbPutFloatsOver(w, head, NULL, 3);
-	for (int i = 0; i < m->pointCount; ++i)
+	if (recycled)
 	{
-		const tbManifoldPoint* p = m->points + i;
-		float values[TB_POINT_FLOATS];
-		tbPointFloats(p, values);
-		tbPutFloatsOver(w, values, NULL, TB_POINT_FLOATS);
-		tbPutUInt(w, (uint32_t)p->id << 1 | (p->persisted ? 1u : 0u));
+		tbPutBase(w, &contact->base, m->pointCount);
+		tbPutFloat(w, contact->base.margin);
+		float head[3] = {m->normal.x, m->normal.y, m->rollingImpulse};
+		tbPutFloatsOver(w, framePredicted ? head + 2 : head, NULL, framePredicted ? 1 : 3);
+		tbPutPoints(w, m, true, pointsPredicted);
 	}
-	if (contact->flags & tb_contactRecyclable)
+	else
 	{
-		const tbManifoldBase* b = &contact->base;
-		tbPutVec2(w, b->relative.p);
-		tbPutRot(w, b->relative.q);
-		tbPutVec2(w, b->normalA);
-		tbPutVec2(w, b->normalB);
-		for (int i = 0; i < m->pointCount; ++i)
+		float head[3] = {m->normal.x, m->normal.y, m->rollingImpulse};
+		tbPutFloatsOver(w, head, NULL, 3);
+		tbPutPoints(w, m, false, pointsPredicted);
+		if (recyclable)
 		{
-			tbPutVec2(w, b->pointA[i]);
-			tbPutVec2(w, b->pointB[i]);
-			tbPutFloat(w, b->separation[i]);
+			if (framePredicted == false)
+			{
+				tbPutBase(w, &contact->base, m->pointCount);
+			}
+			tbPutFloat(w, contact->base.margin);
 		}
-		tbPutFloat(w, b->margin);
 	}
 	if (hitStored)
 	{
@@ -1843,6 +2126,59 @@ static int tbProxyPointCount(const tbShape* shape)
 		default:
 			return 2;
 	}
+}
+
+static void tbGetBase(tbReader* r, tbManifoldBase* base, int pointCount)
+{
+	const char* what = "a contact's recycling base";
+	base->relative.p = tbGetVec2(r, what);
+	base->relative.q = tbGetRot(r, what);
+	base->normalA = tbGetVec2(r, what);
+	base->normalB = tbGetVec2(r, what);
+	for (int i = 0; i < pointCount; ++i)
+	{
+		base->pointA[i] = tbGetVec2(r, what);
+		base->pointB[i] = tbGetVec2(r, what);
+		base->separation[i] = tbGetFloat(r, what);
+	}
+}
+
+/// A manifold's points as tbPutPoints wrote them (the remade floats left zero).
+static bool tbGetPoints(tbDecoder* d, tbManifold* m, bool recycled, bool predicted, int id)
+{
+	tbReader* r = &d->r;
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		float kept[TB_POINT_FLOATS], values[TB_POINT_FLOATS];
+		int count = 0;
+		for (int k = 0; k < TB_POINT_FLOATS; ++k)
+		{
+			count += tbIsRemadeFloat(k, recycled, predicted) ? 0 : 1;
+		}
+		tbGetFloatsOver(r, kept, NULL, count, "a manifold point");
+		count = 0;
+		for (int k = 0; k < TB_POINT_FLOATS; ++k)
+		{
+			values[k] = tbIsRemadeFloat(k, recycled, predicted) ? 0.0f : kept[count++];
+		}
+		tbManifoldPoint* p = m->points + i;
+		p->point = tbMakeVec2(values[0], values[1]);
+		p->anchorA = tbMakeVec2(values[2], values[3]);
+		p->anchorB = tbMakeVec2(values[4], values[5]);
+		p->separation = values[6];
+		p->normalImpulse = values[7];
+		p->tangentImpulse = values[8];
+		p->maxNormalImpulse = values[9];
+		p->normalVelocity = values[10];
+		uint32_t idBits = tbGetUInt(r);
+		if (r->failed == false && idBits > 0x1FFFFu)
+		{
+			return tbFail(r, "contact %d has a feature id beyond 16 bits", id);
+		}
+		p->id = (uint16_t)(idBits >> 1);
+		p->persisted = (idBits & 1u) != 0;
+	}
+	return r->failed == false;
 }
 
 static bool tbReadContact(tbDecoder* d, int id)
@@ -1919,50 +2255,76 @@ static bool tbReadContact(tbDecoder* d, int id)
 	}
 	tbManifold* m = &contact->manifold;
 	m->pointCount = (int)(info & tb_contactPointBits);
-	float head[3];
-	tbGetFloatsOver(r, head, NULL, 3, "a contact's normal");
-	m->normal = tbMakeVec2(head[0], head[1]);
-	m->rollingImpulse = head[2];
-	for (int i = 0; i < m->pointCount; ++i)
+	tbStartPose poseA = tbStartPoseOf(world->bodies + contact->edges[0].bodyId);
+	tbStartPose poseB = tbStartPoseOf(world->bodies + contact->edges[1].bodyId);
+	bool recycled = tbIsRecycledManifold(flags);
+	bool pointsPredicted = (info & tb_contactPointsPredicted) != 0;
+	bool framePredicted = (info & tb_contactFramePredicted) != 0;
+	if ((pointsPredicted && m->pointCount == 0) ||
+		(framePredicted && (flags & tb_contactRecyclable) == 0))
 	{
-		tbManifoldPoint* p = m->points + i;
-		float values[TB_POINT_FLOATS];
-		tbGetFloatsOver(r, values, NULL, TB_POINT_FLOATS, "a manifold point");
-		p->point = tbMakeVec2(values[0], values[1]);
-		p->anchorA = tbMakeVec2(values[2], values[3]);
-		p->anchorB = tbMakeVec2(values[4], values[5]);
-		p->separation = values[6];
-		p->normalImpulse = values[7];
-		p->tangentImpulse = values[8];
-		p->maxNormalImpulse = values[9];
-		p->normalVelocity = values[10];
-		uint32_t idBits = tbGetUInt(r);
-		if (r->failed == false && idBits > 0x1FFFFu)
-		{
-			return tbFail(r, "contact %d has a feature id beyond 16 bits", id);
-		}
-		p->id = (uint16_t)(idBits >> 1);
-		p->persisted = (idBits & 1u) != 0;
+		return tbFail(r, "contact %d says it remakes what it does not have", id);
 	}
-	if (flags & tb_contactRecyclable)
+	if (recycled)
 	{
-		tbManifoldBase* base = &contact->base;
-		base->relative.p = tbGetVec2(r, "a contact's recycling base");
-		base->relative.q = tbGetRot(r, "a contact's recycling base");
-		base->normalA = tbGetVec2(r, "a contact's recycling base");
-		base->normalB = tbGetVec2(r, "a contact's recycling base");
-		for (int i = 0; i < m->pointCount; ++i)
+		tbGetBase(r, &contact->base, m->pointCount);
+		contact->base.margin = tbGetFloat(r, "a contact's recycling base");
+		float head[3];
+		tbGetFloatsOver(r, framePredicted ? head + 2 : head, NULL, framePredicted ? 1 : 3, "a contact's normal");
+		m->normal = framePredicted ? tbRemakeRecycledNormal(&contact->base, poseA, poseB) : tbMakeVec2(head[0], head[1]);
+		m->rollingImpulse = head[2];
+		tbGetPoints(d, m, true, pointsPredicted, id);
+		if (pointsPredicted)
 		{
-			base->pointA[i] = tbGetVec2(r, "a contact's recycling base");
-			base->pointB[i] = tbGetVec2(r, "a contact's recycling base");
-			base->separation[i] = tbGetFloat(r, "a contact's recycling base");
+			tbRemakeRecycledPoints(m, &contact->base, poseA, poseB);
 		}
-		base->margin = tbGetFloat(r, "a contact's recycling base");
+	}
+	else
+	{
+		float head[3];
+		tbGetFloatsOver(r, head, NULL, 3, "a contact's normal");
+		m->normal = tbMakeVec2(head[0], head[1]);
+		m->rollingImpulse = head[2];
+		tbGetPoints(d, m, false, pointsPredicted, id);
+		if (pointsPredicted)
+		{
+			tbRemakeAnchors(m, poseA, poseB);
+		}
+		if (flags & tb_contactRecyclable)
+		{
+			if (framePredicted)
+			{
+				tbRemakeBase(&contact->base, m, poseA, poseB);
+			}
+			else
+			{
+				tbGetBase(r, &contact->base, m->pointCount);
+			}
+			contact->base.margin = tbGetFloat(r, "a contact's recycling base");
+		}
 	}
 	if (info & tb_contactHitStored)
 	{
 		contact->hitSpeed = tbGetFloat(r, "a contact's hit speed");
 		contact->hitPoint = tbGetVec2(r, "a contact's hit point");
+	}
+	// Remade values are finite when their inputs are, but not always: a start pose far from the
+	// bodies' poses now could overflow them.
+	for (int i = 0; r->failed == false && i < m->pointCount; ++i)
+	{
+		float values[TB_POINT_FLOATS];
+		tbPointFloats(m->points + i, values);
+		for (int k = 0; k < TB_POINT_FLOATS; ++k)
+		{
+			if (tbIsValidFloat(values[k]) == false)
+			{
+				return tbFail(r, "contact %d's remade manifold is not finite", id);
+			}
+		}
+	}
+	if (r->failed == false && tbIsValidVec2(m->normal) == false)
+	{
+		return tbFail(r, "contact %d's remade normal is not finite", id);
 	}
 	return r->failed == false;
 }
@@ -3193,6 +3555,8 @@ static void tbFreeDecoder(tbDecoder* d)
 	tbFree(d->shapeBoxes, shapes + 1);
 	tbFree(d->nameLengths, (bodies + 1) * (int)sizeof(int));
 	tbFree(d->nameSources, (bodies + 1) * (int)sizeof(const char*));
+	tbDictionaryFree(&d->geometries);
+	tbDictionaryFree(&d->materials);
 }
 
 /// The step cache of a world that has not stepped since it was restored: every version differs
