@@ -200,6 +200,14 @@ static void tbPutInt(tbWriter* w, int value)
 	tbPutU64(w, zigzag);
 }
 
+/// An id as its difference from a nearby one (the last id of its kind written): ids written in
+/// order are close, and their differences fit a byte.
+static void tbPutDelta(tbWriter* w, int64_t value, int64_t previous)
+{
+	int64_t d = value - previous;
+	tbPutU64(w, d < 0 ? ((~(uint64_t)d) << 1) | 1u : (uint64_t)d << 1);
+}
+
 static void tbPutFloat(tbWriter* w, float value)
 {
 	uint32_t bits;
@@ -383,6 +391,24 @@ static int tbGetInt(tbReader* r)
 	return (zigzag & 1u) != 0 ? -(int)half - 1 : (int)half;
 }
 
+/// tbPutDelta's id: in [lower, limit), or fails naming `what`.
+static int tbGetDelta(tbReader* r, int64_t previous, int lower, int limit, const char* what)
+{
+	uint64_t zigzag = tbGetU64(r);
+	uint64_t half = zigzag >> 1;
+	if (r->failed || half > ((uint64_t)1 << 40))
+	{
+		return r->failed ? lower : (tbFail(r, "%s is out of range", what), lower);
+	}
+	int64_t value = previous + ((zigzag & 1u) != 0 ? -(int64_t)half - 1 : (int64_t)half);
+	if (value < lower || value >= limit)
+	{
+		tbFail(r, "%s is %lld, out of range (%d to %d)", what, (long long)value, lower, limit - 1);
+		return lower;
+	}
+	return (int)value;
+}
+
 /// A non-negative int below `limit`, or fails naming `what`.
 static int tbGetIndex(tbReader* r, int limit, const char* what)
 {
@@ -546,6 +572,8 @@ typedef struct tbDecoder
 	tbWorld* world; ///< the world being built (not registered)
 	tbDictionary geometries;
 	tbDictionary materials;
+	int lastShape;
+	int lastContactShape;
 	uint8_t* bodySlots;
 	uint8_t* shapeSlots;
 	uint8_t* shapeBoxes; ///< per shape slot: its tight box stored (1), its fat box stored (2)
@@ -560,6 +588,8 @@ typedef struct tbEncoder
 	const tbWorld* mixer; ///< the world with the default material mixing (contact predictions)
 	tbDictionary geometries;
 	tbDictionary materials;
+	int lastShape;	 ///< the last shape id written (ids are written as differences)
+	int lastContactShape;
 } tbEncoder;
 
 // --------------------------------------------------------------------------------------------
@@ -875,26 +905,29 @@ enum
 	tb_shapeProxyMoved = 1 << 9,
 	tb_shapePolygonStored = 1 << 10, ///< normals and centroid written (not tbMakePolygon's)
 	tb_shapeBoxStored = 1 << 11,
-	tb_shapeFatStored = 1 << 12, ///< the fat box differs from the tight one
-	tb_shapeAll = (1 << 13) - 1,
+	tb_shapeFatStored = 1 << 12, ///< the fat box is written (neither the tight box nor a remade one)
+	tb_shapeFatRemade = 1 << 13, ///< the fat box is the one the last finalize made (tbRemadeFatAABB)
+	tb_shapeAll = (1 << 14) - 1,
 };
 
-/// The body floats that are mostly their defaults: velocities, forces, sleep time, parameters.
-#define TB_BODY_FLOATS 12
+/// The body floats that are mostly their defaults (velocities, rotation, sleep time, forces,
+/// parameters), the most often changed first so that their mask fits a byte.
+#define TB_BODY_FLOATS 14
 
 static void tbBodyFloats(const tbBody* b, float v[TB_BODY_FLOATS])
 {
-	float values[TB_BODY_FLOATS] = {b->linearVelocity.x, b->linearVelocity.y, b->angularVelocity, b->force.x,
-									b->force.y,			 b->torque,			  b->sleepTime,		  b->gravityScale,
-									b->linearDamping,	 b->angularDamping,	  b->sleepThreshold,  b->safetyFactor};
+	float values[TB_BODY_FLOATS] = {b->linearVelocity.x, b->linearVelocity.y, b->angularVelocity, b->transform.q.c,
+									b->transform.q.s,	 b->sleepTime,		  b->force.x,		  b->force.y,
+									b->torque,			 b->gravityScale,	  b->linearDamping,	  b->angularDamping,
+									b->sleepThreshold,	 b->safetyFactor};
 	memcpy(v, values, sizeof(values));
 }
 
 static void tbBodyFloatDefaults(float v[TB_BODY_FLOATS])
 {
 	tbBodyDef def = tbDefaultBodyDef();
-	float values[TB_BODY_FLOATS] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, def.gravityScale, def.linearDamping,
-									def.angularDamping, def.sleepThreshold, def.safetyFactor};
+	float values[TB_BODY_FLOATS] = {0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, def.gravityScale,
+									def.linearDamping, def.angularDamping, def.sleepThreshold, def.safetyFactor};
 	memcpy(v, values, sizeof(values));
 }
 
@@ -1118,6 +1151,18 @@ static void tbMaterialFloats(float density, const tbSurfaceMaterial* m, float v[
 	memcpy(v, values, sizeof(values));
 }
 
+/// How a shape's fat box is written: as its tight box (static shapes), as the one the last finalize
+/// made (shapes that moved), or as it is.
+static uint32_t tbFatBoxFlag(const tbWorld* world, const tbBody* body, const tbShape* shape)
+{
+	if (tbSameAABB(shape->fatAABB, shape->aabb))
+	{
+		return 0u;
+	}
+	return tbSameAABB(shape->fatAABB, tbRemadeFatAABB(world, body, shape)) ? (uint32_t)tb_shapeFatRemade
+																		 : (uint32_t)tb_shapeFatStored;
+}
+
 static void tbWriteShape(tbEncoder* e, int id, const tbShape* shape, const tbBody* body)
 {
 	tbWriter* w = &e->w;
@@ -1137,10 +1182,11 @@ static void tbWriteShape(tbEncoder* e, int id, const tbShape* shape, const tbBod
 	flags |= polygonStored ? tb_shapePolygonStored : 0u;
 	tbAABB box = tbComputeShapeAABBInternal(shape, body->transform);
 	flags |= tbSameAABB(box, shape->aabb) ? 0u : tb_shapeBoxStored;
-	flags |= tbSameAABB(shape->fatAABB, shape->aabb) ? 0u : tb_shapeFatStored;
+	flags |= tbFatBoxFlag(e->world, body, shape);
 	int materialEntry = tbDictionaryFind(&e->materials, e->world, id, true);
 
-	tbPutUInt(w, (uint32_t)id);
+	tbPutDelta(w, id, e->lastShape + 1);
+	e->lastShape = id;
 	tbPutUInt(w, flags);
 	tbPutUInt(w, (uint32_t)(geometryEntry + 1)); // 0: a new geometry follows
 	if (geometryEntry < 0)
@@ -1161,7 +1207,7 @@ static void tbWriteShape(tbEncoder* e, int id, const tbShape* shape, const tbBod
 		tbPutU64(w, shape->filter.maskBits ^ def.filter.maskBits);
 		tbPutInt(w, shape->filter.groupIndex);
 	}
-	tbPutInt(w, shape->proxyKey);
+	tbPutDelta(w, shape->proxyKey, id); // a shape's proxy key is most often its id
 }
 
 static void tbWriteBody(tbEncoder* e, const tbBody* body)
@@ -1187,7 +1233,6 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 			 (extentsStored ? tb_bodyExtentsStored : 0u) | (reachStored ? tb_bodyReachStored : 0u);
 	tbPutUInt(w, flags);
 	tbPutPos(w, body->center);
-	tbPutRot(w, body->transform.q);
 	float values[TB_BODY_FLOATS], defaults[TB_BODY_FLOATS];
 	tbBodyFloats(body, values);
 	tbBodyFloatDefaults(defaults);
@@ -1236,7 +1281,7 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 		{
 			tbPutAABB(w, shape->aabb);
 		}
-		if (tbSameAABB(shape->fatAABB, shape->aabb) == false)
+		if (tbFatBoxFlag(world, body, shape) == tb_shapeFatStored)
 		{
 			tbPutAABB(w, shape->fatAABB);
 		}
@@ -1391,7 +1436,8 @@ static bool tbReadShape(tbDecoder* d, int bodyIndex, int* shapeIdOut)
 {
 	tbReader* r = &d->r;
 	tbWorld* world = d->world;
-	int id = tbGetIndex(r, world->shapePool.highWater, "a body's shape id");
+	int id = tbGetDelta(r, d->lastShape + 1, 0, world->shapePool.highWater, "a body's shape id");
+	d->lastShape = id;
 	if (r->failed)
 	{
 		return false;
@@ -1418,7 +1464,12 @@ static bool tbReadShape(tbDecoder* d, int bodyIndex, int* shapeIdOut)
 	shape->enableCustomFiltering = (flags & tb_shapeCustomFiltering) != 0;
 	shape->enablePreSolveEvents = (flags & tb_shapePreSolveEvents) != 0;
 	shape->proxyMoved = (flags & tb_shapeProxyMoved) != 0;
-	d->shapeBoxes[id] = (uint8_t)(((flags & tb_shapeBoxStored) ? 1u : 0u) | ((flags & tb_shapeFatStored) ? 2u : 0u));
+	if ((flags & tb_shapeFatStored) && (flags & tb_shapeFatRemade))
+	{
+		return tbFail(r, "shape %d has its fat box both written and remade", id);
+	}
+	d->shapeBoxes[id] = (uint8_t)(((flags & tb_shapeBoxStored) ? 1u : 0u) | ((flags & tb_shapeFatStored) ? 2u : 0u) |
+								  ((flags & tb_shapeFatRemade) ? 4u : 0u));
 	// A dictionary entry's value was checked when it was first read.
 	int geometryEntry = (int)tbGetUInt(r) - 1;
 	if (r->failed == false && geometryEntry >= d->geometries.count)
@@ -1478,7 +1529,7 @@ static bool tbReadShape(tbDecoder* d, int bodyIndex, int* shapeIdOut)
 		shape->filter.groupIndex = tbGetInt(r);
 		TB_ARRAY_PUSH(d->materials.entries, d->materials.count, d->materials.capacity, id);
 	}
-	shape->proxyKey = tbGetInt(r);
+	shape->proxyKey = tbGetDelta(r, id, TB_NULL_INDEX, INT32_MAX, "a shape's proxy key");
 	if (r->failed)
 	{
 		return false;
@@ -1531,23 +1582,28 @@ static bool tbReadBody(tbDecoder* d, int index)
 	body->enableContactRecycling = (flags & tb_bodyNoRecycling) == 0;
 	body->isMarked = (flags & tb_bodyMarked) != 0;
 	body->center = tbGetPos(r, "a body's centre of mass");
-	body->transform.q = tbGetRot(r, "a body's rotation");
 	float values[TB_BODY_FLOATS], defaults[TB_BODY_FLOATS];
 	tbBodyFloatDefaults(defaults);
-	tbGetFloatsOver(r, values, defaults, TB_BODY_FLOATS, "a body's velocity, force or parameter");
+	tbGetFloatsOver(r, values, defaults, TB_BODY_FLOATS, "a body's velocity, rotation, force or parameter");
 	body->linearVelocity = tbMakeVec2(values[0], values[1]);
 	body->angularVelocity = values[2];
-	body->force = tbMakeVec2(values[3], values[4]);
-	body->torque = values[5];
-	body->sleepTime = values[6];
-	body->gravityScale = values[7];
-	body->linearDamping = values[8];
-	body->angularDamping = values[9];
-	body->sleepThreshold = values[10];
-	body->safetyFactor = values[11];
+	body->transform.q = (tbRot){values[3], values[4]};
+	body->sleepTime = values[5];
+	body->force = tbMakeVec2(values[6], values[7]);
+	body->torque = values[8];
+	body->gravityScale = values[9];
+	body->linearDamping = values[10];
+	body->angularDamping = values[11];
+	body->sleepThreshold = values[12];
+	body->safetyFactor = values[13];
 	if (r->failed)
 	{
 		return false;
+	}
+	if (tbIsValidRotation(body->transform.q) == false)
+	{
+		return tbFail(r, "body %d's rotation is (%g, %g), not a unit rotation", index, (double)body->transform.q.c,
+					  (double)body->transform.q.s);
 	}
 	if ((body->isDisabled == false && tbIsPosition(body->center) == false) || tbIsNonNegative(body->sleepTime) == false ||
 		tbIsNonNegative(body->linearDamping) == false || tbIsNonNegative(body->angularDamping) == false ||
@@ -1648,7 +1704,13 @@ static bool tbReadBody(tbDecoder* d, int index)
 		tbShape* shape = world->shapes + id;
 		uint8_t stored = d->shapeBoxes[id];
 		shape->aabb = (stored & 1u) ? tbGetAABB(r, "a shape's box") : tbComputeShapeAABBInternal(shape, body->transform);
-		shape->fatAABB = (stored & 2u) ? tbGetAABB(r, "a shape's fat box") : shape->aabb;
+		shape->fatAABB = (stored & 2u) ? tbGetAABB(r, "a shape's fat box")
+									   : ((stored & 4u) ? tbRemadeFatAABB(world, body, shape) : shape->aabb);
+		if (r->failed == false && (tbIsValidVec2(shape->fatAABB.lowerBound) == false ||
+								   tbIsValidVec2(shape->fatAABB.upperBound) == false))
+		{
+			return tbFail(r, "shape %d's remade fat box is not finite", id);
+		}
 	}
 	return r->failed == false;
 }
@@ -2034,8 +2096,9 @@ static void tbWriteContact(tbEncoder* e, const tbContact* contact)
 	uint32_t info = (uint32_t)m->pointCount | (materialsStored ? tb_contactMaterialsStored : 0u) |
 					(simplexStored ? tb_contactSimplexStored : 0u) | (hitStored ? tb_contactHitStored : 0u) |
 					(pointsPredicted ? tb_contactPointsPredicted : 0u) | (framePredicted ? tb_contactFramePredicted : 0u);
-	tbPutUInt(w, (uint32_t)contact->shapeIdA);
-	tbPutUInt(w, (uint32_t)contact->shapeIdB);
+	tbPutDelta(w, contact->shapeIdA, e->lastContactShape);
+	tbPutDelta(w, contact->shapeIdB, contact->shapeIdA);
+	e->lastContactShape = contact->shapeIdA;
 	tbPutU8(w, contact->flags);
 	tbPutUInt(w, info);
 	tbPutUInt(w, contact->touchingSteps);
@@ -2092,9 +2155,11 @@ static void tbWriteContactLists(tbEncoder* e)
 			continue;
 		}
 		tbPutUInt(&e->w, (uint32_t)body->contactCount);
+		int previous = 0;
 		for (int key = body->headContactKey; key != TB_NULL_INDEX; key = world->contacts[key >> 1].edges[key & 1].nextKey)
 		{
-			tbPutUInt(&e->w, (uint32_t)key);
+			tbPutDelta(&e->w, key, previous);
+			previous = key;
 		}
 	}
 }
@@ -2190,8 +2255,9 @@ static bool tbReadContact(tbDecoder* d, int id)
 	memset(contact, 0, sizeof(*contact));
 	contact->generation = generation;
 	int shapeCount = world->shapePool.highWater;
-	int a = tbGetIndex(r, shapeCount, "a contact's shape");
-	int b = tbGetIndex(r, shapeCount, "a contact's shape");
+	int a = tbGetDelta(r, d->lastContactShape, 0, shapeCount, "a contact's shape");
+	int b = tbGetDelta(r, a, 0, shapeCount, "a contact's shape");
+	d->lastContactShape = a;
 	uint32_t flags = tbGetU8(r);
 	uint32_t info = tbGetUInt(r);
 	uint32_t touchingSteps = tbGetUInt(r);
@@ -2353,7 +2419,8 @@ static bool tbReadEdgeLists(tbDecoder* d, bool joints)
 		int previous = TB_NULL_INDEX;
 		for (int k = 0; k < count && r->failed == false; ++k)
 		{
-			int key = tbGetIndex(r, 2 * highWater, joints ? "a body's joint key" : "a body's contact key");
+			int key = tbGetDelta(r, previous == TB_NULL_INDEX ? 0 : previous, 0, 2 * highWater,
+								 joints ? "a body's joint key" : "a body's contact key");
 			if (r->failed)
 			{
 				break;
@@ -2641,9 +2708,11 @@ static void tbWriteJoints(tbEncoder* e)
 			continue;
 		}
 		tbPutUInt(&e->w, (uint32_t)body->jointCount);
+		int previous = 0;
 		for (int key = body->headJointKey; key != TB_NULL_INDEX; key = w->joints[key >> 1].edges[key & 1].nextKey)
 		{
-			tbPutUInt(&e->w, (uint32_t)key);
+			tbPutDelta(&e->w, key, previous);
+			previous = key;
 		}
 	}
 }
@@ -2792,11 +2861,13 @@ static void tbWriteAwake(tbEncoder* e)
 {
 	const tbWorld* world = e->world;
 	tbPutUInt(&e->w, (uint32_t)tbAwakeBodyCount(world));
+	int previous = 0;
 	for (int i = 0; i < world->awakeBodyCount; ++i)
 	{
 		if (world->awakeBodies[i] != TB_NULL_INDEX)
 		{
-			tbPutUInt(&e->w, (uint32_t)world->awakeBodies[i]); // holes closed, as the next step does first
+			tbPutDelta(&e->w, world->awakeBodies[i], previous); // holes closed, as the next step does first
+			previous = world->awakeBodies[i];
 		}
 	}
 }
@@ -2812,9 +2883,11 @@ static bool tbReadAwake(tbDecoder* d)
 		return false;
 	}
 	TB_ARRAY_RESERVE(world->awakeBodies, world->awakeBodyCapacity, count);
+	int previous = 0;
 	for (int i = 0; i < count && r->failed == false; ++i)
 	{
-		int id = tbGetIndex(r, world->bodyPool.highWater, "an awake body");
+		int id = tbGetDelta(r, previous, 0, world->bodyPool.highWater, "an awake body");
+		previous = id;
 		tbBody* body = world->bodies + id;
 		if (r->failed == false &&
 			(body->inUse == false || body->type == tb_staticBody || body->isDisabled || body->awakeIndex != TB_NULL_INDEX))
