@@ -153,19 +153,29 @@ void tbSnapshotSeal(uint8_t* image, int size)
 }
 
 // --------------------------------------------------------------------------------------------
-// Writing: one pass counts the bytes (data NULL), a second writes them into the caller's buffer.
+// Writing: counting only (data NULL: the size query), or into a buffer that grows, copied into the
+// caller's when it fits (one pass, and nothing written into a buffer that is too small).
 
 typedef struct tbWriter
 {
 	uint8_t* data;
 	int64_t size;
+	int64_t capacity;
 } tbWriter;
 
 static void tbPutBytes(tbWriter* w, const void* bytes, int count)
 {
-	if (w->data != NULL)
+	int64_t needed = w->size + count;
+	if (w->data != NULL && needed > w->capacity && needed <= INT32_MAX)
 	{
-		memcpy(w->data + w->size, bytes, (size_t)count);
+		int64_t grown = 2 * w->capacity < needed ? needed : 2 * w->capacity;
+		grown = grown > INT32_MAX ? INT32_MAX : grown;
+		w->data = tbGrowAlloc(w->data, (int)w->capacity, (int)grown);
+		w->capacity = grown;
+	}
+	if (w->data != NULL && needed <= w->capacity)
+	{
+		memcpy(w->data + w->size, bytes, (size_t)count); // beyond an int of bytes: counted only
 	}
 	w->size += count;
 }
@@ -178,6 +188,11 @@ static void tbPutU8(tbWriter* w, uint32_t value)
 
 static void tbPutU64(tbWriter* w, uint64_t value)
 {
+	if (value < 0x80u && w->data != NULL && w->size < w->capacity)
+	{
+		w->data[w->size++] = (uint8_t)value; // most numbers fit a byte
+		return;
+	}
 	uint8_t bytes[10];
 	int n = 0;
 	do
@@ -350,6 +365,10 @@ static uint32_t tbGetU8(tbReader* r)
 
 static uint64_t tbGetU64(tbReader* r)
 {
+	if (r->failed == false && r->offset < r->size && r->data[r->offset] < 0x80u)
+	{
+		return r->data[r->offset++]; // most numbers fit a byte
+	}
 	uint64_t value = 0;
 	for (int shift = 0; shift < 64; shift += 7)
 	{
@@ -436,8 +455,16 @@ static int tbGetCount(tbReader* r, int bytesEach, const char* what)
 
 static float tbGetRawFloat(tbReader* r)
 {
-	uint8_t bytes[4];
-	tbGetBytes(r, bytes, 4);
+	uint8_t bytes[4] = {0, 0, 0, 0};
+	if (r->failed == false && tbRemaining(r) >= 4)
+	{
+		memcpy(bytes, r->data + r->offset, 4);
+		r->offset += 4;
+	}
+	else
+	{
+		tbGetBytes(r, bytes, 4);
+	}
 	uint32_t bits = tbLoadU32(bytes);
 	float value;
 	memcpy(&value, &bits, sizeof(value));
@@ -547,6 +574,9 @@ static bool tbIsNonNegative(float value)
 // The two sides of a restore: the image being read and the world being built from it (a world no
 // one can reach until the whole image has been checked).
 
+/// The body floats written as a mask and the ones that differ from their defaults (tbBodyFloats).
+#define TB_BODY_FLOATS 14
+
 /// A slot of a pool as the image describes it.
 enum
 {
@@ -574,6 +604,7 @@ typedef struct tbDecoder
 	tbDictionary materials;
 	int lastShape;
 	int lastContactShape;
+	float bodyDefaults[TB_BODY_FLOATS]; ///< tbBodyFloatDefaults, made once
 	uint8_t* bodySlots;
 	uint8_t* shapeSlots;
 	uint8_t* shapeBoxes; ///< per shape slot: its tight box stored (1), its fat box stored (2)
@@ -590,6 +621,7 @@ typedef struct tbEncoder
 	tbDictionary materials;
 	int lastShape;	 ///< the last shape id written (ids are written as differences)
 	int lastContactShape;
+	float bodyDefaults[TB_BODY_FLOATS]; ///< tbBodyFloatDefaults, made once
 } tbEncoder;
 
 // --------------------------------------------------------------------------------------------
@@ -912,7 +944,6 @@ enum
 
 /// The body floats that are mostly their defaults (velocities, rotation, sleep time, forces,
 /// parameters), the most often changed first so that their mask fits a byte.
-#define TB_BODY_FLOATS 14
 
 static void tbBodyFloats(const tbBody* b, float v[TB_BODY_FLOATS])
 {
@@ -1031,14 +1062,22 @@ static bool tbSameMaterialBlock(const tbShape* a, const tbShape* b)
 		   a->filter.groupIndex == b->filter.groupIndex;
 }
 
+/// A hash of bytes for the dictionaries, four at a time (FNV-1a's step on 32-bit words).
 static uint64_t tbHashBytes(uint64_t h, const void* data, size_t count)
 {
 	const uint8_t* bytes = data;
-	for (size_t i = 0; i < count; ++i)
+	size_t i = 0;
+	for (; i + 4 <= count; i += 4)
 	{
-		h = (h ^ bytes[i]) * 1099511628211ull; // FNV-1a
+		uint32_t word;
+		memcpy(&word, bytes + i, 4);
+		h = (h ^ word) * 1099511628211ull;
 	}
-	return h;
+	for (; i < count; ++i)
+	{
+		h = (h ^ bytes[i]) * 1099511628211ull;
+	}
+	return h ^ (h >> 29);
 }
 
 static uint64_t tbHashGeometry(const tbGeometry* g)
@@ -1233,10 +1272,9 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 			 (extentsStored ? tb_bodyExtentsStored : 0u) | (reachStored ? tb_bodyReachStored : 0u);
 	tbPutUInt(w, flags);
 	tbPutPos(w, body->center);
-	float values[TB_BODY_FLOATS], defaults[TB_BODY_FLOATS];
+	float values[TB_BODY_FLOATS];
 	tbBodyFloats(body, values);
-	tbBodyFloatDefaults(defaults);
-	tbPutFloatsOver(w, values, defaults, TB_BODY_FLOATS);
+	tbPutFloatsOver(w, values, e->bodyDefaults, TB_BODY_FLOATS);
 	if (body->name != NULL)
 	{
 		int length = (int)strlen(body->name);
@@ -1582,9 +1620,8 @@ static bool tbReadBody(tbDecoder* d, int index)
 	body->enableContactRecycling = (flags & tb_bodyNoRecycling) == 0;
 	body->isMarked = (flags & tb_bodyMarked) != 0;
 	body->center = tbGetPos(r, "a body's centre of mass");
-	float values[TB_BODY_FLOATS], defaults[TB_BODY_FLOATS];
-	tbBodyFloatDefaults(defaults);
-	tbGetFloatsOver(r, values, defaults, TB_BODY_FLOATS, "a body's velocity, rotation, force or parameter");
+	float values[TB_BODY_FLOATS];
+	tbGetFloatsOver(r, values, d->bodyDefaults, TB_BODY_FLOATS, "a body's velocity, rotation, force or parameter");
 	body->linearVelocity = tbMakeVec2(values[0], values[1]);
 	body->angularVelocity = values[2];
 	body->transform.q = (tbRot){values[3], values[4]};
@@ -3504,6 +3541,7 @@ static void tbEncodeWorld(tbEncoder* e)
 	uint8_t header[TB_SNAPSHOT_HEADER_SIZE];
 	memset(header, 0, sizeof(header));
 	tbPutBytes(&e->w, header, TB_SNAPSHOT_HEADER_SIZE); // filled in by tbWorld_Snapshot
+	tbBodyFloatDefaults(e->bodyDefaults);
 	tbWriteSettings(e);
 	tbWriteBodies(e);
 	tbWriteChains(e);
@@ -3660,6 +3698,7 @@ static tbWorld* tbDecodeWorld(tbReader* r)
 	memset(&d, 0, sizeof(d));
 	d.r = *r;
 	d.world = tbNewStagingWorld();
+	tbBodyFloatDefaults(d.bodyDefaults);
 	bool ok = tbReadSettings(&d) && tbReadBodies(&d) && tbReadChains(&d) && tbReadContacts(&d) && tbReadJoints(&d) &&
 			  tbReadAwake(&d) && tbReadBroadPhase(&d) && tbReadEvents(&d);
 	if (ok && d.r.offset != d.r.size)
@@ -3853,36 +3892,38 @@ int tbWorld_Snapshot(tbWorldId worldId, uint8_t* image, int capacity)
 	memset(&e, 0, sizeof(e));
 	e.world = world;
 	e.mixer = mixer;
+	if (image != NULL)
+	{
+		e.w.capacity = capacity > 0 ? capacity : 4096; // a first guess: the caller's buffer's size
+		e.w.data = tbAlloc((int)e.w.capacity);
+	}
 	tbEncodeWorld(&e);
+	tbFree(mixer, (int)sizeof(tbWorld));
 	int64_t size = e.w.size;
 	if (size > INT32_MAX)
 	{
-		tbFree(mixer, (int)sizeof(tbWorld));
+		tbFree(e.w.data, (int)e.w.capacity);
 		tbReportError(f, "the world's image would be %lld bytes, beyond what an int counts", (long long)size);
 		return 0;
 	}
 	if (image != NULL && size <= capacity)
 	{
-		memset(&e, 0, sizeof(e));
-		e.world = world;
-		e.mixer = mixer;
-		e.w.data = image;
-		tbEncodeWorld(&e);
-		TB_ASSERT(e.w.size == size);
-		memcpy(image, "TBSN", 4);
-		tbStoreU16(image + 4, TB_SNAPSHOT_VERSION);
-		image[6] = (uint8_t)TB_SNAPSHOT_PRECISION;
-		image[7] = (uint8_t)TB_SNAPSHOT_HEADER_SIZE;
-		tbStoreU32(image + 8, (uint32_t)size);
+		uint8_t* out = e.w.data;
+		memcpy(out, "TBSN", 4);
+		tbStoreU16(out + 4, TB_SNAPSHOT_VERSION);
+		out[6] = (uint8_t)TB_SNAPSHOT_PRECISION;
+		out[7] = (uint8_t)TB_SNAPSHOT_HEADER_SIZE;
+		tbStoreU32(out + 8, (uint32_t)size);
 		float units = tbGetLengthUnitsPerMeter();
 		uint32_t unitBits;
 		memcpy(&unitBits, &units, sizeof(unitBits));
-		tbStoreU32(image + 12, unitBits);
-		tbStoreU32(image + 24, world->stepIndex);
-		tbStoreU32(image + 28, (uint32_t)world->bodyPool.count);
-		tbSnapshotSeal(image, (int)size);
+		tbStoreU32(out + 12, unitBits);
+		tbStoreU32(out + 24, world->stepIndex);
+		tbStoreU32(out + 28, (uint32_t)world->bodyPool.count);
+		tbSnapshotSeal(out, (int)size);
+		memcpy(image, out, (size_t)size);
 	}
-	tbFree(mixer, (int)sizeof(tbWorld));
+	tbFree(e.w.data, (int)e.w.capacity);
 	return (int)size;
 }
 
