@@ -606,3 +606,33 @@ Test(snapshot, empty_world_and_every_broad_phase)
 	}
 	cr_assert(hashes[1] == hashes[0] && hashes[2] == hashes[0] && hashes[3] == hashes[0]);
 }
+
+Test(snapshot, ids_made_after_a_snapshot_stay_stale_in_the_next_world_of_the_slot)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	tbBodyId first = tbCreateBody(world, &bodyDef);
+	Image start = TakeSnapshot(world);
+	// After the snapshot: the body's slot serves another body, under the next generation.
+	tbDestroyBody(first);
+	tbBodyId later = tbCreateBody(world, &bodyDef);
+	cr_assert_eq(later.index1, first.index1);
+	cr_assert_neq(later.generation, first.generation);
+	cr_assert(tbWorld_Restore(world, start.bytes, start.size));
+	cr_assert(tbBody_IsValid(first));
+	cr_assert_not(tbBody_IsValid(later));
+	tbDestroyWorld(world);
+
+	// A new world in the same world slot starts past every generation the old one handed out,
+	// rolled back or not: `later` names none of its bodies.
+	tbWorldId next = tbCreateWorld(&def);
+	cr_assert_eq(next.index1, world.index1);
+	tbBodyId fresh = tbCreateBody(next, &bodyDef);
+	cr_assert_eq(fresh.index1, later.index1);
+	cr_assert_not(tbBody_IsValid(later));
+	cr_assert_not(tbBody_IsValid(first));
+	cr_assert(tbBody_IsValid(fresh));
+	free(start.bytes);
+	tbDestroyWorld(next);
+}

@@ -3825,6 +3825,7 @@ static void tbApplyGenerations(tbWorld* world)
 /// callbacks (what Box2D v3.2's in-place restore keeps).
 static void tbAdoptWorld(tbWorld* target, tbWorld* staged)
 {
+	tbNoteGenerationPeaks(target); // ids made since the snapshot stay out of the next world in this slot
 	tbWorld kept = *target;
 	tbFreeWorldContents(target);
 	*target = *staged;
@@ -3833,6 +3834,8 @@ static void tbAdoptWorld(tbWorld* target, tbWorld* staged)
 	target->generation = kept.generation;
 	target->bodyGenerationBase = kept.bodyGenerationBase;
 	target->shapeGenerationBase = kept.shapeGenerationBase;
+	target->bodyGenerationPeak = kept.bodyGenerationPeak;
+	target->shapeGenerationPeak = kept.shapeGenerationPeak;
 	target->def.frictionCallback = kept.def.frictionCallback;
 	target->def.restitutionCallback = kept.def.restitutionCallback;
 	target->def.workerCount = kept.def.workerCount;

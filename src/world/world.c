@@ -424,6 +424,18 @@ static void tbFreeWorldArrays(tbWorld* w)
 	tbFreeChains(w);
 }
 
+void tbNoteGenerationPeaks(tbWorld* world)
+{
+	uint16_t body = (uint16_t)(tbLargestGeneration(world->bodyGenerationBase, world->bodies, world->bodyPool.highWater,
+												   sizeof(tbBody), offsetof(tbBody, generation)) -
+							   world->bodyGenerationBase);
+	uint16_t shape = (uint16_t)(tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapePool.highWater,
+													sizeof(tbShape), offsetof(tbShape, generation)) -
+								world->shapeGenerationBase);
+	world->bodyGenerationPeak = body > world->bodyGenerationPeak ? body : world->bodyGenerationPeak;
+	world->shapeGenerationPeak = shape > world->shapeGenerationPeak ? shape : world->shapeGenerationPeak;
+}
+
 void tbFreeWorldContents(tbWorld* world)
 {
 	tbBroadPhase_Destroy(&world->broadPhase);
@@ -446,10 +458,9 @@ void tbDestroyWorld(tbWorldId worldId)
 		return;
 	}
 	int slot = world->worldId;
-	s_bodyGenerations[slot] = tbLargestGeneration(world->bodyGenerationBase, world->bodies, world->bodyPool.highWater,
-												   sizeof(tbBody), offsetof(tbBody, generation));
-	s_shapeGenerations[slot] = tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapePool.highWater,
-													sizeof(tbShape), offsetof(tbShape, generation));
+	tbNoteGenerationPeaks(world);
+	s_bodyGenerations[slot] = (uint16_t)(world->bodyGenerationBase + world->bodyGenerationPeak);
+	s_shapeGenerations[slot] = (uint16_t)(world->shapeGenerationBase + world->shapeGenerationPeak);
 	tbFreeWorldContents(world);
 	s_worlds[world->worldId] = NULL;
 	tbFree(world, (int)sizeof(tbWorld));

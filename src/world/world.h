@@ -64,6 +64,11 @@ typedef struct tbWorld
 	// destroyed world never matches an object of a new world that took its slot.
 	uint16_t bodyGenerationBase;
 	uint16_t shapeGenerationBase;
+	/// The largest body and shape generations this world handed out, counted from the bases, as
+	/// they were before a restore took the slots back to older ones (tbNoteGenerationPeaks): the
+	/// next world in the slot starts past them too.
+	uint16_t bodyGenerationPeak;
+	uint16_t shapeGenerationPeak;
 	bool locked; ///< true during the step: the API refuses every change
 	/// Query callbacks running (nested queries count): the API refuses what would change the
 	/// broad phase being walked (create, destroy, SetTransform, SetType, filters, collideConnected)
@@ -140,6 +145,9 @@ tbWorld* tbGetWorldChecked(tbWorldId id, const char* function);
 /// Free everything a world holds but the world itself (tbDestroyWorld; a snapshot's restore frees the
 /// state it replaces with it).
 void tbFreeWorldContents(tbWorld* world);
+/// Remember the largest generations the world's body and shape slots hold (a restore is about to
+/// replace them with older ones).
+void tbNoteGenerationPeaks(tbWorld* world);
 /// The world by index (no checks).
 tbWorld* tbGetWorldFromIndex(int index);
 
