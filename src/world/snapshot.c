@@ -18,29 +18,34 @@
 // What it leaves out is recomputed bit for bit on restore, or provably unread before the step
 // rewrites it:
 // - derived values, each stored only when recomputing it would not give the same bits (a flag says
-//   which): a body's mass properties (tbComputeBodyMass), origin (from its centre of mass), extents
-//   and speculative reach; a shape's tight box; a polygon's normals and centroid (tbMakePolygon on
-//   its vertices); a contact's mixed materials (the default mixing); a tree node's box, category
-//   bits and height (from its children); a proxy's box, bits and type (from its shape);
+//   which, so a prediction that misses costs bytes, never correctness): a body's mass properties
+//   (tbComputeBodyMass), origin (from its centre of mass), extents and speculative reach; a shape's
+//   tight box and, when the last finalize re-made it, its fat box; a polygon's normals and centroid
+//   (tbMakePolygon on its vertices); a contact's mixed materials (the default mixing), its anchors
+//   and recycling base, or for a recycled manifold its normal, points and separations (what the
+//   narrow phase made of them at the bodies' start-of-step poses, which the image keeps); a tree
+//   node's box, category bits and height (from its children); a proxy's box, bits and shape;
 // - lists rebuilt from what is stored: the pair set, each contact's bodies, the counts of kinematic
 //   and static bodies, static proxies, linear locks and contacts wanting hit events;
 // - the step cache (step_cache.h): every stage either rebuilds its lists or keeps the last step's,
 //   and keeping is allowed only when the rebuild would give the same lists, so a restored world
 //   starts with the cache invalidated (versions that match no stamp) and rebuilds;
-// - per-step scratch: a body's solver index and start-of-step pose (written for every awake body
-//   before the step reads them), a contact's gather stamp (set to one no coming step uses), a
-//   joint's solver view (written by its preparation), the step arena, the last step's events.
+// - per-step scratch: a body's solver index (written for every awake body before it is read), a
+//   contact's gather stamp (set to one no coming step uses), a joint's solver view (written by its
+//   preparation), the step arena, the last step's events.
 //
 // Format (little-endian). A 32-byte header: "TBSN", version (2 bytes), precision (1: the build's
 // tbPos in doubles), header size, image size (4), length units per metre (float), a checksum (8),
 // the step index and the live body count (4 each, for tools). The checksum (64-bit, MurmurHash3's
 // mixing, Appleby) covers every byte but its own. Then the sections in the order written below, in
-// varints (LEB128; signed values zigzag-coded) and raw floats; groups of floats that are mostly
-// their defaults (velocities, forces, impulses, parameters) are written as a mask of the ones that
-// differ, then those. Nothing in the image is trusted: a restore decodes it into a separate world,
-// checks every count against the bytes left, every index, list and tree for range, uniqueness and
-// cycles, and every value as the API would (finite, in range, valid geometry), and only then
-// replaces the world's contents; a refused image leaves the world as it was.
+// varints (LEB128; signed values zigzag-coded; ids as differences from the id written before) and
+// raw floats; groups of floats that are mostly their defaults (velocities, forces, impulses,
+// parameters) are written as a mask of the ones that differ, then those; shapes name their
+// geometry and their material from dictionaries, each entry written once. Nothing in the image is
+// trusted: a restore decodes it into a separate world, checks every count against the bytes left,
+// every index, list and tree for range, uniqueness and cycles, and every value as the API would
+// (finite, in range, valid geometry), and only then replaces the world's contents; a refused image
+// leaves the world as it was.
 #include "snapshot.h"
 
 #include "body.h"
@@ -574,6 +579,10 @@ static bool tbIsNonNegative(float value)
 // The two sides of a restore: the image being read and the world being built from it (a world no
 // one can reach until the whole image has been checked).
 
+/// The largest value an image may give a counter the step adds to or multiplies (the broad phase's
+/// 16 × enlarged count, the vote's sums): far beyond what any run reaches, far below an overflow.
+#define TB_SNAPSHOT_COUNTER_MAX (1 << 26)
+
 /// The body floats written as a mask and the ones that differ from their defaults (tbBodyFloats).
 #define TB_BODY_FLOATS 14
 
@@ -760,10 +769,11 @@ static bool tbReadSettings(tbDecoder* d)
 	world->stepIndex = tbGetUInt(r);
 	world->stepTime = tbGetFloat(r, "the last time step");
 	world->jointInvH = tbGetFloat(r, "the joints' inverse sub-step");
-	world->broadPhaseVote.windowSteps = tbGetCountValue(r, INT32_MAX, "the broad-phase vote");
-	world->broadPhaseVote.movedProxies = tbGetCountValue(r, INT32_MAX, "the broad-phase vote");
-	world->broadPhaseVote.fastBodies = tbGetCountValue(r, INT32_MAX, "the broad-phase vote");
-	world->broadPhaseVote.votes = tbGetCountValue(r, INT32_MAX, "the broad-phase vote");
+	// Counters the step adds to: bounded well below where an int would overflow.
+	world->broadPhaseVote.windowSteps = tbGetCountValue(r, TB_SNAPSHOT_COUNTER_MAX, "the broad-phase vote");
+	world->broadPhaseVote.movedProxies = tbGetCountValue(r, TB_SNAPSHOT_COUNTER_MAX, "the broad-phase vote");
+	world->broadPhaseVote.fastBodies = tbGetCountValue(r, TB_SNAPSHOT_COUNTER_MAX, "the broad-phase vote");
+	world->broadPhaseVote.votes = tbGetCountValue(r, TB_SNAPSHOT_COUNTER_MAX, "the broad-phase vote");
 	if (r->failed)
 	{
 		return false;
@@ -3415,8 +3425,8 @@ static bool tbReadBroadPhase(tbDecoder* d)
 		bp->moveBuffer[i] = key;
 		bp->moveCount = i + 1;
 	}
-	bp->staticInsertCount = tbGetCountValue(r, INT32_MAX, "the static insert count");
-	bp->enlargedCount = tbGetCountValue(r, INT32_MAX, "the enlarged count");
+	bp->staticInsertCount = tbGetCountValue(r, TB_SNAPSHOT_COUNTER_MAX, "the static insert count");
+	bp->enlargedCount = tbGetCountValue(r, TB_SNAPSHOT_COUNTER_MAX, "the enlarged count");
 	if (r->failed)
 	{
 		return false;
@@ -3426,7 +3436,7 @@ static bool tbReadBroadPhase(tbDecoder* d)
 		tbSpatialHashState state;
 		state.cellSize = tbGetFloat(r, "the spatial hash's cell size");
 		uint32_t dirty = tbGetU8(r);
-		state.updateCount = tbGetCountValue(r, INT32_MAX, "the spatial hash's update count");
+		state.updateCount = tbGetCountValue(r, TB_SNAPSHOT_COUNTER_MAX, "the spatial hash's update count");
 		state.staticDirty = dirty != 0;
 		if (r->failed == false && (dirty > 1u || (state.cellSize != 0.0f && !(state.cellSize > 1e-3f && state.cellSize < 1e6f))))
 		{
