@@ -4,10 +4,12 @@
 #include "peers.h"
 
 #include <box2d/box2d.h>
+#include <box2d/constants.h>
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 // The living instances of one spawner (see SpawnedInstances in scene.h): a ring of `capacity`
 // instances of `bodiesPer` bodies. Their joints are found from the bodies when they go.
@@ -503,6 +505,11 @@ PeerCounters PeerBox2D3_GetCounters(PeerWorld* peer)
 	return result;
 }
 
+void PeerBox2D3_SetSubSteps(PeerWorld* peer, int subSteps)
+{
+	peer->subSteps = subSteps > 0 ? subSteps : peer->scene->subSteps;
+}
+
 StageProfile PeerBox2D3_GetProfile(PeerWorld* peer)
 {
 	b2Profile p = b2World_GetProfile(peer->world);
@@ -540,4 +547,262 @@ void PeerBox2D3_Destroy(PeerWorld* peer)
 	}
 	free(peer->spawned);
 	free(peer);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The collision layer alone (see peers.h). Inputs are converted once; the passes call v3's public
+// functions the way its world does, so what a pass costs is v3's routine and a loop around it.
+
+static b2Transform ToB2TransformPose(tbTransform t)
+{
+	return (b2Transform){ToB2(t.p), {t.q.c, t.q.s}};
+}
+
+struct PeerPolygonPairs
+{
+	b2Polygon* a;
+	b2Polygon* b;
+	b2Transform* xfA;
+	b2Transform* xfB;
+	int count;
+};
+
+PeerPolygonPairs* PeerBox2D3_CreatePolygonPairs(const tbPolygon* a, const tbTransform* xfA, const tbPolygon* b,
+												const tbTransform* xfB, int count)
+{
+	PeerPolygonPairs* pairs = calloc(1, sizeof(PeerPolygonPairs));
+	pairs->a = malloc(sizeof(b2Polygon) * (size_t)count);
+	pairs->b = malloc(sizeof(b2Polygon) * (size_t)count);
+	pairs->xfA = malloc(sizeof(b2Transform) * (size_t)count);
+	pairs->xfB = malloc(sizeof(b2Transform) * (size_t)count);
+	pairs->count = count;
+	for (int i = 0; i < count; ++i)
+	{
+		pairs->a[i] = ToB2Polygon(a + i);
+		pairs->b[i] = ToB2Polygon(b + i);
+		pairs->xfA[i] = ToB2TransformPose(xfA[i]);
+		pairs->xfB[i] = ToB2TransformPose(xfB[i]);
+	}
+	return pairs;
+}
+
+PeerManifold PeerBox2D3_CollidePolygonPair(const PeerPolygonPairs* pairs, int i)
+{
+	b2Transform xf = b2InvMulTransforms(pairs->xfA[i], pairs->xfB[i]);
+	b2LocalManifold m = b2CollidePolygons(pairs->a + i, pairs->b + i, xf);
+	b2Vec2 n = b2RotateVector(pairs->xfA[i].q, m.normal);
+	PeerManifold result = {{n.x, n.y}, 0.0f, m.pointCount};
+	for (int k = 0; k < m.pointCount; ++k)
+	{
+		result.depth = fmaxf(result.depth, -m.points[k].separation);
+	}
+	return result;
+}
+
+float PeerBox2D3_CollidePolygonPass(const PeerPolygonPairs* pairs)
+{
+	float sum = 0.0f;
+	for (int i = 0; i < pairs->count; ++i)
+	{
+		b2Transform xf = b2InvMulTransforms(pairs->xfA[i], pairs->xfB[i]);
+		b2LocalManifold m = b2CollidePolygons(pairs->a + i, pairs->b + i, xf);
+		sum += b2RotateVector(pairs->xfA[i].q, m.normal).x;
+	}
+	return sum;
+}
+
+void PeerBox2D3_DestroyPolygonPairs(PeerPolygonPairs* pairs)
+{
+	if (pairs != NULL)
+	{
+		free(pairs->a);
+		free(pairs->b);
+		free(pairs->xfA);
+		free(pairs->xfB);
+		free(pairs);
+	}
+}
+
+struct PeerTOICases
+{
+	b2TOIInput* inputs;
+	int count;
+};
+
+static b2ShapeProxy ToB2Proxy(const tbShapeProxy* proxy)
+{
+	b2Vec2 points[B2_MAX_POLYGON_VERTICES];
+	int count = proxy->count < B2_MAX_POLYGON_VERTICES ? proxy->count : B2_MAX_POLYGON_VERTICES;
+	for (int i = 0; i < count; ++i)
+	{
+		points[i] = ToB2(proxy->points[i]);
+	}
+	return b2MakeProxy(points, count, proxy->radius);
+}
+
+static b2Sweep ToB2Sweep(const tbSweep* s)
+{
+	return (b2Sweep){ToB2(s->localCenter), ToB2(s->c1), ToB2(s->c2), {s->q1.c, s->q1.s}, {s->q2.c, s->q2.s}};
+}
+
+PeerTOICases* PeerBox2D3_CreateTOICases(const tbShapeProxy* a, const tbSweep* sweepA, const tbShapeProxy* b,
+										const tbSweep* sweepB, int count)
+{
+	PeerTOICases* cases = calloc(1, sizeof(PeerTOICases));
+	cases->inputs = malloc(sizeof(b2TOIInput) * (size_t)count);
+	cases->count = count;
+	for (int i = 0; i < count; ++i)
+	{
+		cases->inputs[i] = (b2TOIInput){ToB2Proxy(a + i), ToB2Proxy(b + i), ToB2Sweep(sweepA + i), ToB2Sweep(sweepB + i), 1.0f};
+	}
+	return cases;
+}
+
+float PeerBox2D3_TimeOfImpactPass(const PeerTOICases* cases, float* fractions, bool* hits)
+{
+	float sum = 0.0f;
+	for (int i = 0; i < cases->count; ++i)
+	{
+		b2TOIOutput out = b2TimeOfImpact(cases->inputs + i);
+		sum += out.fraction;
+		if (fractions != NULL)
+		{
+			fractions[i] = out.fraction;
+		}
+		if (hits != NULL)
+		{
+			hits[i] = out.state == b2_toiStateHit;
+		}
+	}
+	return sum;
+}
+
+float PeerBox2D3_TOITargetSeparation(float radiusA, float radiusB)
+{
+	float total = radiusA + radiusB;
+	return fmaxf(B2_LINEAR_SLOP, total - B2_LINEAR_SLOP) - total;
+}
+
+void PeerBox2D3_DestroyTOICases(PeerTOICases* cases)
+{
+	if (cases != NULL)
+	{
+		free(cases->inputs);
+		free(cases);
+	}
+}
+
+typedef struct PeerPair
+{
+	int a, b;
+} PeerPair;
+
+struct PeerTree
+{
+	b2DynamicTree tree;
+	unsigned char* moved; // by proxy id: moved since the last pair update
+	int* moveList;		  // the moved proxies' ids, in the order they moved
+	int moveCount;
+	int capacity;
+	PeerPair* pairs;
+	int pairCount;
+	int pairCapacity;
+	int queryProxy; // the proxy whose box is being queried
+};
+
+PeerTree* PeerBox2D3_CreateTree(int proxyCapacity)
+{
+	PeerTree* tree = calloc(1, sizeof(PeerTree));
+	tree->tree = b2DynamicTree_Create(proxyCapacity);
+	tree->capacity = proxyCapacity > 16 ? proxyCapacity : 16;
+	tree->moved = calloc((size_t)tree->capacity, 1);
+	tree->moveList = malloc(sizeof(int) * (size_t)tree->capacity);
+	tree->pairCapacity = 4 * tree->capacity;
+	tree->pairs = malloc(sizeof(PeerPair) * (size_t)tree->pairCapacity);
+	return tree;
+}
+
+static void BufferMove(PeerTree* tree, int proxyId)
+{
+	if (proxyId >= tree->capacity)
+	{
+		int capacity = 2 * proxyId;
+		tree->moved = realloc(tree->moved, (size_t)capacity);
+		memset(tree->moved + tree->capacity, 0, (size_t)(capacity - tree->capacity));
+		tree->moveList = realloc(tree->moveList, sizeof(int) * (size_t)capacity);
+		tree->capacity = capacity;
+	}
+	if (tree->moved[proxyId] == 0)
+	{
+		tree->moved[proxyId] = 1;
+		tree->moveList[tree->moveCount++] = proxyId;
+	}
+}
+
+int PeerBox2D3_TreeCreateProxy(PeerTree* tree, tbAABB fatAABB)
+{
+	b2AABB box = {ToB2(fatAABB.lowerBound), ToB2(fatAABB.upperBound)};
+	int proxyId = b2DynamicTree_CreateProxy(&tree->tree, box, B2_DEFAULT_CATEGORY_BITS, 0);
+	BufferMove(tree, proxyId);
+	return proxyId;
+}
+
+void PeerBox2D3_TreeMoveProxy(PeerTree* tree, int proxyId, tbAABB fatAABB)
+{
+	b2AABB box = {ToB2(fatAABB.lowerBound), ToB2(fatAABB.upperBound)};
+	b2DynamicTree_EnlargeProxy(&tree->tree, proxyId, box);
+	BufferMove(tree, proxyId);
+}
+
+static bool PairQuery(int proxyId, uint64_t userData, void* context)
+{
+	(void)userData;
+	PeerTree* tree = context;
+	int queryProxy = tree->queryProxy;
+	// Not with itself, and a pair of two moved proxies only from the higher id (v3's rule).
+	if (proxyId == queryProxy || (proxyId < queryProxy && tree->moved[proxyId]))
+	{
+		return true;
+	}
+	if (tree->pairCount == tree->pairCapacity)
+	{
+		tree->pairCapacity *= 2;
+		tree->pairs = realloc(tree->pairs, sizeof(PeerPair) * (size_t)tree->pairCapacity);
+	}
+	tree->pairs[tree->pairCount++] = (PeerPair){proxyId < queryProxy ? proxyId : queryProxy,
+												proxyId < queryProxy ? queryProxy : proxyId};
+	return true;
+}
+
+int PeerBox2D3_TreeUpdatePairs(PeerTree* tree)
+{
+	tree->pairCount = 0;
+	for (int i = 0; i < tree->moveCount; ++i)
+	{
+		tree->queryProxy = tree->moveList[i];
+		b2AABB box = b2DynamicTree_GetAABB(&tree->tree, tree->queryProxy);
+		b2DynamicTree_Query(&tree->tree, box, B2_DEFAULT_MASK_BITS, PairQuery, tree);
+	}
+	if (tree->moveCount > 0)
+	{
+		b2DynamicTree_Rebuild(&tree->tree, false);
+	}
+	for (int i = 0; i < tree->moveCount; ++i)
+	{
+		tree->moved[tree->moveList[i]] = 0;
+	}
+	tree->moveCount = 0;
+	return tree->pairCount;
+}
+
+void PeerBox2D3_DestroyTree(PeerTree* tree)
+{
+	if (tree != NULL)
+	{
+		b2DynamicTree_Destroy(&tree->tree);
+		free(tree->moved);
+		free(tree->moveList);
+		free(tree->pairs);
+		free(tree);
+	}
 }

@@ -113,6 +113,59 @@ PeerBody PeerBox2D3_GetBody(PeerWorld* world, int bodyIndex);
 PeerCounters PeerBox2D3_GetCounters(PeerWorld* world);
 StageProfile PeerBox2D3_GetProfile(PeerWorld* world);
 void PeerBox2D3_Destroy(PeerWorld* world);
+/// Sub-steps of this world from now on (the solver chart's cost-against-error points; 0 keeps the scene's).
+void PeerBox2D3_SetSubSteps(PeerWorld* world, int subSteps);
+
+// Box2D v3's collision layer alone, for the charts that time Tumble's routines on the same inputs
+// (tumble-bench narrowphase-chart and toi-chart, tumble-bench-broadphase). Each set of inputs is
+// converted to v3's types once, outside the clock; a pass runs v3's own function over every item
+// and returns a sum of its results, so that the caller times the pass and nothing is optimised away.
+
+/// A manifold read back in world terms: the normal from A to B and the deepest penetration
+/// (m, > 0 when the cores overlap), as the narrow-phase chart measures Tumble's.
+typedef struct PeerManifold
+{
+	tbVec2 normal;
+	float depth;
+	int pointCount;
+} PeerManifold;
+
+typedef struct PeerPolygonPairs PeerPolygonPairs;
+/// `count` polygon pairs (A's polygon and pose, B's) for b2CollidePolygons.
+PeerPolygonPairs* PeerBox2D3_CreatePolygonPairs(const tbPolygon* a, const tbTransform* xfA, const tbPolygon* b,
+												const tbTransform* xfB, int count);
+/// Pair i's manifold, in the world frame.
+PeerManifold PeerBox2D3_CollidePolygonPair(const PeerPolygonPairs* pairs, int i);
+/// Every pair once, as a world collides one: B's pose in A's frame, b2CollidePolygons, the normal
+/// turned into the world. Returns the sum of the normals' x.
+float PeerBox2D3_CollidePolygonPass(const PeerPolygonPairs* pairs);
+void PeerBox2D3_DestroyPolygonPairs(PeerPolygonPairs* pairs);
+
+typedef struct PeerTOICases PeerTOICases;
+/// `count` time-of-impact queries: two proxies (points and radius) and two sweeps each.
+PeerTOICases* PeerBox2D3_CreateTOICases(const tbShapeProxy* a, const tbSweep* sweepA, const tbShapeProxy* b,
+										const tbSweep* sweepB, int count);
+/// Every query once with b2TimeOfImpact (maximum fraction 1): writes each one's fraction and
+/// whether it hit (fractions and hits may be NULL). Returns the sum of the fractions.
+float PeerBox2D3_TimeOfImpactPass(const PeerTOICases* cases, float* fractions, bool* hits);
+/// The surface separation v3's time of impact stops at for these two radii: its target is the
+/// core distance max(slop, rA + rB − slop), so circles end overlapping by the slop and polygons
+/// without radius end the slop apart.
+float PeerBox2D3_TOITargetSeparation(float radiusA, float radiusB);
+void PeerBox2D3_DestroyTOICases(PeerTOICases* cases);
+
+/// v3's broad phase without a world: its b2DynamicTree of fat boxes kept the way a v3 world keeps
+/// its tree of moving proxies. A proxy whose box is re-made is enlarged in place and remembered
+/// as moved; the pair update queries the tree with every moved proxy's box (a pair of two moved
+/// proxies found once, from the higher id, as v3 does), then rebuilds the enlarged part of the
+/// tree (b2DynamicTree_Rebuild, not a full build), as v3's step does beside its narrow phase.
+typedef struct PeerTree PeerTree;
+PeerTree* PeerBox2D3_CreateTree(int proxyCapacity);
+int PeerBox2D3_TreeCreateProxy(PeerTree* tree, tbAABB fatAABB);
+void PeerBox2D3_TreeMoveProxy(PeerTree* tree, int proxyId, tbAABB fatAABB);
+/// Returns the number of pairs found (every overlapping pair with a moved member, once).
+int PeerBox2D3_TreeUpdatePairs(PeerTree* tree);
+void PeerBox2D3_DestroyTree(PeerTree* tree);
 
 /// Chipmunk 7: 10 iterations, collision slop 0.01 m (its default 0.1 m is ten box skins),
 /// spatial hash by default (cell = median dynamic shape size) or the BBTree (useTree),

@@ -155,6 +155,7 @@ typedef Result SceneFunction(const Config* config);
 #define OVERLAP_SECONDS 2
 #define SLOPE_SECONDS 10
 #define CRADLE_SECONDS 3
+#define TALL_STACK_SECONDS 60
 
 // Touching stack of 20 (catalogue touching_stack: 1 m boxes, friction 0.6, centres 0.5 + i).
 // Pass: the top box within 0.1 m of its rigid height 19.5 m, here also within
@@ -180,6 +181,112 @@ static Result RunTouchingStack(const Config* config)
 	else
 	{
 		snprintf(r.detail, sizeof(r.detail), "top sinks %.3f m, slides %.2f m", (double)sink, (double)(p.x - start.x));
+	}
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+	return r;
+}
+
+// A column of `count` unit boxes (density 1) on the catalogue's ground (a 200 m slab, top face
+// y = 0, friction 0.6), `gap` metres apart, x alternating ±`wobble`: the catalogue's touching and
+// dropped stacks (samples/catalogue.c) with other heights.
+static Scene* BuildColumn(int count, float gap, float wobble, float friction)
+{
+	Scene* scene = Scene_Create();
+	scene->enableSleep = false;
+	int ground = Scene_AddBody(scene, tb_staticBody, (tbVec2){0.0f, -1.0f}, 0.0f);
+	tbGeometry slab = Scene_MakeBoxGeometry(100.0f, 1.0f, tbVec2_zero, 0.0f);
+	Scene_AddGeometry(scene, ground, &slab, 1.0f, 0.6f);
+	tbGeometry box = Scene_MakeBoxGeometry(0.5f, 0.5f, tbVec2_zero, 0.0f);
+	for (int i = 0; i < count; ++i)
+	{
+		float x = (i % 2 == 0) ? wobble : -wobble;
+		float y = 0.5f + 0.5f * gap + (1.0f + gap) * (float)i;
+		int body = Scene_AddBody(scene, tb_dynamicBody, (tbVec2){x, y}, 0.0f);
+		Scene_AddGeometry(scene, body, &box, 1.0f, friction);
+	}
+	return scene;
+}
+
+/// Largest |angle| over the dynamic bodies (rad).
+static float LargestTurn(const SceneWorld* world)
+{
+	float turn = 0.0f;
+	for (int i = 0; i < world->bodyCount; ++i)
+	{
+		if (tbBody_GetType(world->bodyIds[i]) == tb_dynamicBody)
+		{
+			turn = fmaxf(turn, fabsf(tbRot_GetAngle(tbBody_GetRotation(world->bodyIds[i]))));
+		}
+	}
+	return turn;
+}
+
+// Touching stack of 40 (the stress set-up: 1 m boxes resting exactly on each other, friction 0.6,
+// centres 0.5 + i). Pass, as for 20: the top box within 0.1 m of its rigid height 39.5 m and of
+// x = 0, here after 60 s. Box2D v3 sinks it 0.54 m. A column of soft contacts holds its height only
+// to the springs' sag (g/ω² per unit of load, summed down the column) and stands only while its
+// contacts keep their lever arms (src/world/contact.c, manifold recycling): it is the scene that
+// buckles when they turn with the boxes.
+static Result RunTouchingStack40(const Config* config)
+{
+	Scene* scene = BuildColumn(40, 0.0f, 0.0f, 0.6f);
+	SceneWorld world = BuildWorld(scene, config);
+	int top = scene->bodyCount - 1;
+	tbVec2 start = scene->bodies[top].position;
+	for (int i = 0; i < TALL_STACK_SECONDS * 60; ++i)
+	{
+		Step(&world, config);
+	}
+	tbVec2 p = tbBody_GetPosition(world.bodyIds[top]);
+	float sink = start.y - p.y;
+	float error = fmaxf(fabsf(sink), fabsf(p.x - start.x));
+	Result r = {error < 0.1f, sink, "m", ""};
+	if (sink > 1.0f)
+	{
+		snprintf(r.detail, sizeof(r.detail), "toppled (top at x %.2f, y %.2f)", (double)p.x, (double)p.y);
+	}
+	else
+	{
+		snprintf(r.detail, sizeof(r.detail), "top sinks %.3f m, slides %.3f m", (double)sink, (double)(p.x - start.x));
+	}
+	SceneWorld_Destroy(&world);
+	Scene_Destroy(scene);
+	return r;
+}
+
+// Dropped stack of 30 (the stress set-up: 1 m boxes, friction 0.3, centres y = 0.55 + 1.1 i with
+// 0.1 m gaps, x alternating ±0.01). Pass: every box turned < 0.1 rad, the top box within 0.1 m of
+// where it was at t = 1 s, kinetic energy < 1e-3 J; judged here after 60 s, not 10 s. Box2D v3
+// holds it with the top 0.5 m from its t = 1 s place. Thirty boxes are still landing at 1 s (the
+// top is below its resting height then), so the drift includes the end of the landing.
+static Result RunDroppedStack30(const Config* config)
+{
+	Scene* scene = BuildColumn(30, 0.1f, 0.01f, 0.3f);
+	SceneWorld world = BuildWorld(scene, config);
+	int top = scene->bodyCount - 1;
+	tbVec2 atOne = scene->bodies[top].position;
+	for (int i = 0; i < TALL_STACK_SECONDS * 60; ++i)
+	{
+		Step(&world, config);
+		if (i == 59)
+		{
+			atOne = tbBody_GetPosition(world.bodyIds[top]);
+		}
+	}
+	tbVec2 p = tbBody_GetPosition(world.bodyIds[top]);
+	float drift = tbDistance(p, atOne);
+	float turn = LargestTurn(&world);
+	float energy = SceneWorld_KineticEnergy(&world);
+	Result r = {turn < 0.1f && drift < 0.1f && energy < 1e-3f, drift, "m", ""};
+	if (turn >= 0.1f && p.y < 20.0f)
+	{
+		snprintf(r.detail, sizeof(r.detail), "toppled (top at x %.2f, y %.2f)", (double)p.x, (double)p.y);
+	}
+	else
+	{
+		snprintf(r.detail, sizeof(r.detail), "drift %.3f m (x %.3f), turn %.3f rad, KE %.1e J", (double)drift,
+				 (double)p.x, (double)turn, (double)energy);
 	}
 	SceneWorld_Destroy(&world);
 	Scene_Destroy(scene);
@@ -480,6 +587,8 @@ typedef struct SceneEntry
 
 static const SceneEntry s_scenes[] = {
 	{"touching_stack_20", "stack 20", RunTouchingStack},
+	{"touching_stack_40", "stack 40", RunTouchingStack40},
+	{"dropped_stack_30", "dropped 30", RunDroppedStack30},
 	{"pyramid_20", "pyramid 20", RunPyramid},
 	{"mass_ratio_100", "mass 1:100", RunMassRatio100},
 	{"mass_ratio_1000", "mass 1:1000", RunMassRatio1000},
@@ -689,6 +798,13 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 			   "among the chain. With impact propagation (`tbWorldDef.enableImpactPropagation`: bouncing contacts\n"
 			   "take their impacts one pair at a time before the solve, docs/methods.md) the last ball leaves at\n"
 			   "1.00 v0 and the others stay at 0.00 v0 (`tests/test_solver.c`).\n");
+	fprintf(f, "\nThe tall stacks fail by the criteria, not by falling. The 40-stack stands (soft, 4 sub-steps and up)\n"
+			   "but its top sinks by the soft contacts' sag, the springs' resting depths summed down the column, which\n"
+			   "grows as n² and which no stiffness under the quarter-sub-step-rate cap brings below 0.1 m at 4\n"
+			   "sub-steps (Box2D v3: 0.54 m). The dropped 30 stands with every box within a few mrad of upright, but\n"
+			   "its top is still landing at t = 1 s and the column keeps a slow sway (top x within about 0.25 m,\n"
+			   "a period of some 16 s); Box2D v3 drifts 0.5 m. Both toppled within 20 s while recycled manifolds\n"
+			   "turned their lever arms with the bodies (docs/methods.md, manifold recycling).\n");
 	fprintf(f, "\nFor scale (measured peers): Box2D v3's soft contacts sink a touching stack of 20 by 0.13 m, its last\n"
 			   "cradle ball leaves at 1.4 of 2.71 m/s (0.52 v0), and it lets a heavy box on small ones sink 0.08–0.2 m.\n");
 
@@ -698,6 +814,11 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 			"| stack 20 | catalogue `touching_stack`: 20 boxes of 1 m resting exactly on each other (the *touching*"
 			" stack, not the dropped one), friction 0.6 | %d s | top box within 0.1 m of its rigid height 19.5 m and "
 			"of x = 0 (cell: how far it sank) |\n"
+			"| stack 40 | the same with 40 boxes (centres 0.5 + i) | %d s | top box within 0.1 m of its rigid height "
+			"39.5 m and of x = 0 (Box2D v3 sinks 0.54 m) |\n"
+			"| dropped 30 | 30 boxes of 1 m, friction 0.3, centres y = 0.55 + 1.1 i (0.1 m gaps), x alternating "
+			"±0.01 | %d s | every box turned < 0.1 rad, top box within 0.1 m of its t = 1 s position, kinetic energy "
+			"< 1e-3 J, at the end (Box2D v3: top 0.5 m from its t = 1 s place) |\n"
 			"| pyramid 20 | catalogue `pyramid`: base 20, 210 boxes, friction 0.6, sleep off | %d s | top box drift"
 			" < 0.1 m and kinetic energy < 1e-2 J at the end |\n"
 			"| mass 1:100, 1:1000 | catalogue `mass_ratio`: two 1 m boxes on the ground, the top one 100× denser "
@@ -717,11 +838,12 @@ static void WriteMarkdown(FILE* f, const Config* configs, Result results[CONFIG_
 			"< 1 mm |\n"
 			"| Newton's cradle | catalogue `newtons_cradle` (set-up: 5 balls r 0.5, e = 1, striker at "
 			"v0 = 2.71 m/s, no gravity, no friction) | %d s | last ball ≥ 0.9 v0, every other ball ≤ 0.1 v0 |\n",
-			STACK_SECONDS, PYRAMID_SECONDS, MASS_RATIO_SECONDS, CARD_SECONDS, CONFINED_SECONDS, OVERLAP_SECONDS,
+			STACK_SECONDS, TALL_STACK_SECONDS, TALL_STACK_SECONDS, PYRAMID_SECONDS, MASS_RATIO_SECONDS, CARD_SECONDS, CONFINED_SECONDS, OVERLAP_SECONDS,
 			SLOPE_SECONDS, CRADLE_SECONDS);
 	fprintf(f, "\nDurations are shortened from the usual 10 s where the scene is settled or costly (pyramid and"
 			   "\nconfined 5 s, as their criteria are stated at 5 s; overlap recovery 2 s; cradle 3 s, the last ball"
-			   "\nleaves at about 0.75 s).\n");
+			   "\nleaves at about 0.75 s). The tall stacks run 60 s: a column that buckles leans slowly at first"
+			   "\n(the top's lean doubling every second or so), and a dropped one should be at rest long before.\n");
 	WriteSweep(f, sweep);
 }
 

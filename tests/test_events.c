@@ -21,6 +21,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+/// The default shape definition with contact and sensor events on: Box2D v3.2's defaults have them
+/// off, and these tests are about the events.
+static const tbShapeDef* EventDef(void)
+{
+	static tbShapeDef def;
+	def = tbDefaultShapeDef();
+	def.enableContactEvents = true;
+	def.enableSensorEvents = true;
+	return &def;
+}
+
 #define TIME_STEP (1.0f / 60.0f)
 #define SUB_STEPS 4
 #define GRAVITY 10.0f
@@ -67,11 +78,11 @@ static int StepUntilAsleep(tbWorldId world, tbBodyId body, int maxSteps)
 Test(events, contact_begin_touch_on_landing)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	const float radius = 0.5f;
 	const double y0 = radius + 1.0;
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, tbVec2_zero, radius, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, tbVec2_zero, radius, EventDef(), &ball);
 
 	// Expected step: first k with gap(k − 1) < TB_SPECULATIVE_DISTANCE.
 	int expected = -1;
@@ -123,9 +134,9 @@ Test(events, contact_begin_touch_on_landing)
 Test(events, contact_end_touch_when_lifted)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f}, tbVec2_zero, 0.5f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.5f}, tbVec2_zero, 0.5f, EventDef(), &ball);
 	int begins = 0;
 	for (int step = 0; step < 20; ++step)
 	{
@@ -153,8 +164,8 @@ Test(events, contact_end_touch_when_lifted)
 Test(events, hit_event_above_threshold)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
-	tbShapeDef def = tbDefaultShapeDef();
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
+	tbShapeDef def = *EventDef();
 	def.enableHitEvents = true;
 	tbBodyId ball;
 	const float drop = 2.0f;
@@ -189,8 +200,8 @@ Test(events, no_hit_event_below_threshold)
 	for (int variant = 0; variant < 2; ++variant)
 	{
 		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-		CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
-		tbShapeDef def = tbDefaultShapeDef();
+		CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
+		tbShapeDef def = *EventDef();
 		def.enableHitEvents = variant == 0;
 		if (variant == 0)
 		{
@@ -225,7 +236,7 @@ Test(events, sensor_begin_end_ball_falls_through)
 	tbBodyDef sensorBodyDef = tbDefaultBodyDef();
 	sensorBodyDef.position = (tbVec2){0.0f, 5.0f};
 	tbBodyId sensorBody = tbCreateBody(world, &sensorBodyDef);
-	tbShapeDef sensorDef = tbDefaultShapeDef();
+	tbShapeDef sensorDef = *EventDef();
 	sensorDef.isSensor = true;
 	sensorDef.enableSensorEvents = true;
 	tbPolygon box = tbMakeBox(1.0f, 0.5f);
@@ -234,7 +245,7 @@ Test(events, sensor_begin_end_ball_falls_through)
 	const float radius = 0.25f;
 	const double y0 = 8.0;
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, tbVec2_zero, radius, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, (float)y0}, tbVec2_zero, radius, EventDef(), &ball);
 
 	int beginStep = -1, endStep = -1;
 	const float top = 5.5f, bottom = 4.5f;
@@ -287,7 +298,7 @@ Test(events, sensor_begin_end_ball_falls_through)
 Test(events, body_move_events_for_awake_bodies)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	tbBodyId boxes[3];
 	for (int i = 0; i < 3; ++i)
 	{
@@ -326,7 +337,7 @@ Test(events, body_move_events_for_awake_bodies)
 Test(events, fell_asleep_event_after_time_to_sleep)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	int minSteps = (int)floorf(TB_TIME_TO_SLEEP / TIME_STEP);
 	int step = StepUntilAsleep(world, box, 120);
@@ -350,7 +361,7 @@ Test(events, one_body_that_may_not_sleep_keeps_its_island_awake)
 	for (int keeper = 0; keeper < 6; ++keeper)
 	{
 		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-		CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+		CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 		tbBodyId row[6];
 		for (int i = 0; i < 6; ++i)
 		{
@@ -379,7 +390,7 @@ static tbBodyId CreateKinematicBox(tbWorldId world, tbVec2 position, float hx, f
 	bodyDef.position = position;
 	bodyDef.linearVelocity = velocity;
 	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbShapeDef def = tbDefaultShapeDef();
+	tbShapeDef def = *EventDef();
 	def.material.friction = 0.0f;
 	tbPolygon box = tbMakeBox(hx, hy);
 	tbCreatePolygonShape(body, &def, &box);
@@ -454,13 +465,13 @@ Test(events, rested_kinematic_body_sleeps_with_the_last_island_it_touches)
 Test(events, sleeping_box_woken_by_landing_ball)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	cr_assert(StepUntilAsleep(world, box, 120) > 0);
 	cr_assert_not(tbBody_IsAwake(box));
 
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 2.25f}, tbVec2_zero, 0.25f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 2.25f}, tbVec2_zero, 0.25f, EventDef(), &ball);
 	int beginStep = -1, wokenStep = -1;
 	for (int step = 1; step <= 60; ++step)
 	{
@@ -491,7 +502,7 @@ Test(events, sleeping_box_woken_by_landing_ball)
 Test(events, impulse_wakes_sleeping_body)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	cr_assert(StepUntilAsleep(world, box, 120) > 0);
 	cr_assert_not(tbBody_IsAwake(box));
@@ -513,10 +524,10 @@ Test(events, impulse_wakes_sleeping_body)
 static float DropWithFilters(tbFilter groundFilter, tbFilter ballFilter, int* beginsOut)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	tbShapeDef groundDef = tbDefaultShapeDef();
+	tbShapeDef groundDef = *EventDef();
 	groundDef.filter = groundFilter;
 	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, &groundDef);
-	tbShapeDef ballDef = tbDefaultShapeDef();
+	tbShapeDef ballDef = *EventDef();
 	ballDef.filter = ballFilter;
 	tbBodyId ball;
 	CreateBall(world, (tbVec2){0.0f, 1.5f}, tbVec2_zero, 0.5f, &ballDef, &ball);
@@ -591,13 +602,13 @@ Test(events, one_landing_gives_one_hit_event_with_its_begin_event)
 	for (int shapeKind = 0; shapeKind < 2; ++shapeKind)
 	{
 		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-		tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+		tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 		const float drop = 2.0f, half = 0.5f;
 		tbBodyDef bodyDef = tbDefaultBodyDef();
 		bodyDef.type = tb_dynamicBody;
 		bodyDef.position = (tbVec2){0.0f, half + drop};
 		tbBodyId body = tbCreateBody(world, &bodyDef);
-		tbShapeDef def = tbDefaultShapeDef();
+		tbShapeDef def = *EventDef();
 		def.enableHitEvents = true;
 		tbPolygon box = tbMakeSquare(half);
 		tbCircle circle = {{0.0f, 0.0f}, half};
@@ -637,7 +648,7 @@ static tbShapeId CreateStaticSensor(tbWorldId world)
 	tbBodyDef sensorBodyDef = tbDefaultBodyDef();
 	sensorBodyDef.position = (tbVec2){0.0f, 5.0f};
 	tbBodyId sensorBody = tbCreateBody(world, &sensorBodyDef);
-	tbShapeDef sensorDef = tbDefaultShapeDef();
+	tbShapeDef sensorDef = *EventDef();
 	sensorDef.isSensor = true;
 	sensorDef.enableSensorEvents = true;
 	tbPolygon box = tbMakeBox(1.0f, 0.5f);
@@ -652,11 +663,11 @@ Test(events, sensor_ignores_a_visitor_that_disables_sensor_events)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeId sensor = CreateStaticSensor(world);
-	tbShapeDef quiet = tbDefaultShapeDef();
+	tbShapeDef quiet = *EventDef();
 	quiet.enableSensorEvents = false;
 	tbBodyId quietBall, seenBall;
 	tbShapeId quietShape = CreateBall(world, (tbVec2){-0.5f, 8.0f}, tbVec2_zero, 0.25f, &quiet, &quietBall);
-	tbShapeId seenShape = CreateBall(world, (tbVec2){0.5f, 8.0f}, tbVec2_zero, 0.25f, NULL, &seenBall);
+	tbShapeId seenShape = CreateBall(world, (tbVec2){0.5f, 8.0f}, tbVec2_zero, 0.25f, EventDef(), &seenBall);
 	int begins = 0, ends = 0;
 	for (int step = 0; step < 90; ++step)
 	{
@@ -694,7 +705,7 @@ Test(events, kinematic_body_passing_a_static_sensor_is_reported)
 	liftDef.position = (tbVec2){0.0f, 3.0f};
 	liftDef.linearVelocity = (tbVec2){0.0f, 2.0f};
 	tbBodyId lift = tbCreateBody(world, &liftDef);
-	tbShapeDef def = tbDefaultShapeDef();
+	tbShapeDef def = *EventDef();
 	tbPolygon box = tbMakeSquare(0.25f);
 	tbShapeId liftShape = tbCreatePolygonShape(lift, &def, &box);
 	int beginStep = -1, endStep = -1;
@@ -731,7 +742,7 @@ Test(events, kinematic_body_passing_a_static_sensor_is_reported)
 Test(events, contact_data_of_a_resting_box)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
-	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, NULL);
+	tbShapeId ground = CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, EventDef());
 	tbBodyId box = CreateBox(world, tb_dynamicBody, (tbVec2){0.0f, 0.5f}, 0.5f, 0.5f, 1.0f);
 	tbShapeId boxShape;
 	cr_assert_eq(tbBody_GetShapes(box, &boxShape, 1), 1);
@@ -784,7 +795,7 @@ Test(events, sensor_data_lists_visitors)
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
 	tbShapeId sensor = CreateStaticSensor(world);
 	tbBodyId ball;
-	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 6.0f}, tbVec2_zero, 0.25f, NULL, &ball);
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 6.0f}, tbVec2_zero, 0.25f, EventDef(), &ball);
 	tbShapeId visitors[4];
 	int inside = 0;
 	for (int step = 0; step < 90; ++step)
@@ -802,4 +813,90 @@ Test(events, sensor_data_lists_visitors)
 	cr_assert_eq(tbShape_GetSensorData(sensor, visitors, 4), 0, "the ball has left");
 	cr_assert_eq(tbShape_GetSensorData(ballShape, visitors, 4), 0, "a non-sensor has no visitors");
 	tbDestroyWorld(world);
+}
+
+/// Begin events of a world where a 1 m box lands on the ground from 0.5 m, counted over 1 s.
+static int CountLandingBegins(bool groundEvents, bool boxEvents)
+{
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+	tbShapeDef groundDef = tbDefaultShapeDef();
+	groundDef.enableContactEvents = groundEvents;
+	CreateGround(world, (tbVec2){0.0f, -1.0f}, 20.0f, 1.0f, &groundDef);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = (tbVec2){0.0f, 1.0f};
+	tbBodyId box = tbCreateBody(world, &bodyDef);
+	tbShapeDef boxDef = tbDefaultShapeDef();
+	boxDef.enableContactEvents = boxEvents;
+	tbPolygon square = tbMakeSquare(0.5f);
+	tbCreatePolygonShape(box, &boxDef, &square);
+	int begins = 0;
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+		begins += tbWorld_GetContactEvents(world).beginCount;
+	}
+	tbDestroyWorld(world);
+	return begins;
+}
+
+// Box2D v3.2's rule: a contact reports begin and end when either of its shapes enables contact
+// events, and shapes default to off. One landing is one begin event whichever shape asks.
+Test(events, contact_events_when_either_shape_enables_them)
+{
+	cr_expect_eq(CountLandingBegins(false, false), 0, "the defaults report nothing");
+	cr_expect_eq(CountLandingBegins(true, false), 1);
+	cr_expect_eq(CountLandingBegins(false, true), 1);
+	cr_expect_eq(CountLandingBegins(true, true), 1);
+	tbShapeDef def = tbDefaultShapeDef();
+	cr_expect(def.enableContactEvents == false && def.enableSensorEvents == false && def.enableHitEvents == false);
+}
+
+// Two sensors that overlap see each other (Box2D v3.2 reports a sensor visiting a sensor): a
+// sensor disc falls through a static sensor box; each reports the other once on the way in and
+// once on the way out. With sensor events off on either shape, nothing is reported.
+Test(events, overlapping_sensors_see_each_other)
+{
+	for (int k = 0; k < 2; ++k)
+	{
+		tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
+		tbBodyDef groundDef = tbDefaultBodyDef();
+		tbBodyId ground = tbCreateBody(world, &groundDef);
+		tbShapeDef zoneDef = tbDefaultShapeDef();
+		zoneDef.isSensor = true;
+		zoneDef.enableSensorEvents = true;
+		tbPolygon zone = tbMakeBox(2.0f, 0.5f);
+		tbShapeId zoneShape = tbCreatePolygonShape(ground, &zoneDef, &zone);
+		tbBodyDef bodyDef = tbDefaultBodyDef();
+		bodyDef.type = tb_dynamicBody;
+		bodyDef.position = (tbVec2){0.0f, 3.0f};
+		tbBodyId ball = tbCreateBody(world, &bodyDef);
+		tbShapeDef ballDef = tbDefaultShapeDef();
+		ballDef.isSensor = true;
+		ballDef.enableSensorEvents = k == 0;
+		tbCircle circle = {{0.0f, 0.0f}, 0.25f};
+		tbShapeId ballShape = tbCreateCircleShape(ball, &ballDef, &circle);
+		int zoneSeesBall = 0, ballSeesZone = 0, ends = 0;
+		for (int i = 0; i < 120; ++i) // 2 s: it falls 20 m, through the zone and out below
+		{
+			tbWorld_Step(world, 1.0f / 60.0f, 4);
+			tbSensorEvents e = tbWorld_GetSensorEvents(world);
+			for (int j = 0; j < e.beginCount; ++j)
+			{
+				zoneSeesBall += TB_ID_EQUALS(e.beginEvents[j].sensorShapeId, zoneShape) &&
+										TB_ID_EQUALS(e.beginEvents[j].visitorShapeId, ballShape)
+									? 1
+									: 0;
+				ballSeesZone += TB_ID_EQUALS(e.beginEvents[j].sensorShapeId, ballShape) &&
+										TB_ID_EQUALS(e.beginEvents[j].visitorShapeId, zoneShape)
+									? 1
+									: 0;
+			}
+			ends += e.endCount;
+		}
+		cr_expect_eq(zoneSeesBall, k == 0 ? 1 : 0, "events %s", k == 0 ? "on" : "off");
+		cr_expect_eq(ballSeesZone, k == 0 ? 1 : 0);
+		cr_expect_eq(ends, k == 0 ? 2 : 0);
+		tbDestroyWorld(world);
+	}
 }

@@ -10,6 +10,7 @@
 // --- error recording --------------------------------------------------------------------------
 
 #include "error_recorder.h"
+#include "test_helpers.h"
 
 // --- a small world ----------------------------------------------------------------------------
 
@@ -335,7 +336,7 @@ Test(bad_input, step_rejected, .init = SetupErrors, .fini = TeardownErrors)
 {
 	Fixture f = MakeFixture();
 	int n = s_errors;
-	cr_assert_not(tbWorld_Step(f.world, 0.0f, 4));
+	cr_assert_not(tbWorld_Step(f.world, 1e-12f, 4));
 	ExpectError(n, "tbWorld_Step", "timeStep");
 	cr_assert_not(tbWorld_Step(f.world, -1.0f / 60.0f, 4));
 	ExpectError(n + 1, "tbWorld_Step", "timeStep");
@@ -920,5 +921,31 @@ Test(world, a_contact_made_or_lost_between_steady_steps_is_seen)
 	}
 	float beside = (float)tbBody_GetPosition(mover).y;
 	cr_expect(fabsf(beside - 1.0f) < 0.05f, "the box moved away lands on the ground at y = %.4f m (1 expected)", (double)beside);
+	tbDestroyWorld(world);
+}
+
+// A zero time step is a pause (Box2D v3.2's): no error, no body moves, and contacts still update
+// with their events. A ball resting on the ground, another created touching it between steps:
+// the pause reports the new contact's begin event and moves neither ball.
+Test(world, zero_time_step_updates_contacts_and_moves_nothing, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	tbShapeDef events = tbDefaultShapeDef();
+	events.enableContactEvents = true;
+	CreateGround(world, tbMakeVec2(0.0f, -1.0f), 20.0f, 1.0f, &events);
+	tbBodyId ball;
+	CreateBall(world, tbMakeVec2(0.0f, 0.5f), tbMakeVec2(0.0f, 0.0f), 0.5f, &events, &ball);
+	StepWorld(world, 30, 1.0f / 60.0f, 4);
+	tbBodyId second;
+	CreateBall(world, tbMakeVec2(3.0f, 0.5f), tbMakeVec2(0.0f, 0.0f), 0.5f, &events, &second);
+	tbTransform before = tbBody_GetTransform(ball), beforeSecond = tbBody_GetTransform(second);
+	int n = s_errors;
+	cr_assert(tbWorld_Step(world, 0.0f, 4));
+	cr_expect_eq(s_errors, n);
+	cr_expect_eq(tbWorld_GetContactEvents(world).beginCount, 1, "the new ball's contact begins in the pause");
+	tbTransform after = tbBody_GetTransform(ball), afterSecond = tbBody_GetTransform(second);
+	cr_expect(memcmp(&before, &after, sizeof(before)) == 0 && memcmp(&beforeSecond, &afterSecond, sizeof(before)) == 0);
+	cr_expect_eq(tbWorld_GetBodyEvents(world).moveCount, 0);
 	tbDestroyWorld(world);
 }

@@ -677,7 +677,7 @@ TB_API int tbDynamicTree_Rebuild(tbDynamicTree* tree, bool fullBuild);
 
 TB_API uint64_t tbDynamicTree_GetUserData(const tbDynamicTree* tree, int proxyId);
 TB_API tbAABB tbDynamicTree_GetAABB(const tbDynamicTree* tree, int proxyId);
-TB_API uint64_t tbDynamicTree_GetCategoryBits(const tbDynamicTree* tree, int proxyId);
+TB_API uint64_t tbDynamicTree_GetCategoryBits(tbDynamicTree* tree, int proxyId);
 
 /// Node boxes for debug drawing: calls fcn for every node with its depth.
 typedef void tbTreeNodeFcn(tbAABB aabb, int depth, bool isLeaf, void* context);

@@ -63,8 +63,8 @@ extern float tb_lengthUnitsPerMeter;
 #define TB_RECYCLE_DISTANCE TB_SPECULATIVE_DISTANCE
 
 /// Manifold recycling angle, 2 degrees in radians (the angular slop): largest relative rotation of
-/// the two bodies for which the normal may be carried along. The recycled normal bisects the two
-/// bodies' rotations, so its direction is off by at most half this (1 degree).
+/// the two bodies for which a manifold is carried along. The recycled manifold keeps its normal and
+/// lever arms (contact.c, tbRecycleManifold, which also bounds each body's own turn).
 #define TB_RECYCLE_ANGLE TB_ANGULAR_SLOP
 
 /// Maximum position correction per step of the non-linear Gauss–Seidel pass, 0.2 m × units:

@@ -38,7 +38,7 @@ TB_API bool tbWorld_IsValid(tbWorldId worldId);
 /// changes nothing when an argument is bad (time step ≤ 0 or not finite, sub-steps < 1).
 TB_API bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount);
 
-TB_API void tbWorld_Draw(tbWorldId worldId, const tbDebugDraw* draw);
+TB_API void tbWorld_Draw(tbWorldId worldId, tbDebugDraw* draw);
 
 TB_API tbBodyEvents tbWorld_GetBodyEvents(tbWorldId worldId);
 TB_API tbSensorEvents tbWorld_GetSensorEvents(tbWorldId worldId);
@@ -192,9 +192,13 @@ typedef struct tbRayResult
 	bool hit;
 } tbRayResult;
 
+/// The four queries below return what they visited (tbTreeStats, as Box2D v3.2's do: nodes and
+/// leaves of the broad phase's trees; with the other broad-phase methods, no nodes and the proxies
+/// offered as leaves). A refused call (stale world, non-finite input, no callback) visits nothing.
+///
 /// Shapes whose fat boxes overlap aabb, the box measured from origin (Box2D v3.2's form: near the
 /// origin pass tbPos_zero and a world box).
-TB_API bool tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tbQueryFilter filter,
+TB_API tbTreeStats tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tbQueryFilter filter,
 								tbOverlapResultFcn* fcn, void* context);
 /// Apply an explosion's impulses (tbExplosionDef) to the dynamic bodies it reaches, waking them.
 /// Refused (error hook, nothing changed) during the step and for a NULL def, a non-finite or
@@ -220,16 +224,16 @@ TB_API bool tbWorld_OverlapPoint(tbWorldId worldId, tbPos point, tbQueryFilter f
 								 void* context);
 /// Shapes overlapping the shape proxy (tbMakeProxy, tbMakeOffsetProxy), its points measured from
 /// origin (near the origin pass tbPos_zero and world points).
-TB_API bool tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
+TB_API tbTreeStats tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
 								 tbOverlapResultFcn* fcn, void* context);
 /// Every shape hit by the ray origin → origin + translation, in no particular order, clipped by the callback.
-TB_API bool tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter,
+TB_API tbTreeStats tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter,
 							tbCastResultFcn* fcn, void* context);
 /// The closest hit.
 TB_API tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter);
 /// Every shape hit by a shape proxy (points measured from origin) moving by translation (GJK shape
 /// cast); the callback's points are world positions.
-TB_API bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbVec2 translation,
+TB_API tbTreeStats tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbVec2 translation,
 							  tbQueryFilter filter, tbCastResultFcn* fcn, void* context);
 /// Sweep a capsule mover (relative to origin) along translation; returns the fraction it can go
 /// (1: all the way). Shapes it already overlaps at the start are ignored, so a mover pressed into

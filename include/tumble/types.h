@@ -259,8 +259,8 @@ typedef struct tbShapeDef
 	float density;		 ///< kg/m², ≥ 0, default 1
 	tbFilter filter;
 	bool isSensor;			   ///< reports overlaps, no response
-	bool enableSensorEvents;   ///< default true; a sensor reports a visitor only when both shapes enable it
-	bool enableContactEvents;  ///< default true
+	bool enableSensorEvents;   ///< default false; a sensor reports a visitor (a sensor too) only when both enable it
+	bool enableContactEvents;  ///< default false; begin/end events when either shape of a contact enables them
 	bool enableHitEvents;	   ///< default false; one event per impact, with its begin-touch event or after it
 	bool updateBodyMass;	   ///< recompute the body's mass, default true
 	bool enableCustomFiltering; ///< ask the world's custom filter about this shape's pairs, default false

@@ -599,31 +599,61 @@ static bool tbUserQueryCallback(int treeProxyId, uint64_t userData, void* contex
 	return c->stopped == false;
 }
 
-void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
-						void* context)
+static tbTreeStats tbAddTreeStats(tbTreeStats a, tbTreeStats b)
 {
+	return (tbTreeStats){a.nodeVisits + b.nodeVisits, a.leafVisits + b.leafVisits};
+}
+
+/// The methods without a tree count the proxies they offer a query as its leaf visits.
+typedef struct tbCountingQuery
+{
+	tbProxyQueryFcn* queryCallback;
+	tbProxyRayCastFcn* rayCallback;
+	void* userContext;
+	int offered;
+} tbCountingQuery;
+
+static bool tbCountingQueryCallback(int key, int shapeIndex, void* context)
+{
+	tbCountingQuery* c = context;
+	c->offered += 1;
+	return c->queryCallback(key, shapeIndex, c->userContext);
+}
+
+static float tbCountingRayCallback(const tbRayCastInput* input, int key, int shapeIndex, void* context)
+{
+	tbCountingQuery* c = context;
+	c->offered += 1;
+	return c->rayCallback(input, key, shapeIndex, c->userContext);
+}
+
+tbTreeStats tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
+							   void* context)
+{
+	if (bp->method == tb_broadPhaseTree)
+	{
+		tbUserQueryContext c = {bp, maskBits, callback, NULL, context, 0.0f, false};
+		tbTreeStats stats = tbDynamicTree_Query(&bp->staticTree, aabb, maskBits, tbUserQueryCallback, &c);
+		if (c.stopped == false)
+		{
+			stats = tbAddTreeStats(stats, tbDynamicTree_Query(&bp->movableTree, aabb, maskBits, tbUserQueryCallback, &c));
+		}
+		return stats;
+	}
+	tbCountingQuery c = {callback, NULL, context, 0};
 	switch (bp->method)
 	{
-		case tb_broadPhaseTree:
-		{
-			tbUserQueryContext c = {bp, maskBits, callback, NULL, context, 0.0f, false};
-			tbDynamicTree_Query(&bp->staticTree, aabb, maskBits, tbUserQueryCallback, &c);
-			if (c.stopped == false)
-			{
-				tbDynamicTree_Query(&bp->movableTree, aabb, maskBits, tbUserQueryCallback, &c);
-			}
-			break;
-		}
 		case tb_broadPhaseSortAndSweep:
-			tbSortAndSweep_Query(&bp->table, aabb, maskBits, callback, context);
+			tbSortAndSweep_Query(&bp->table, aabb, maskBits, tbCountingQueryCallback, &c);
 			break;
 		case tb_broadPhaseSpatialHash:
-			tbSpatialHash_Query(bp->hash, &bp->table, aabb, maskBits, false, callback, context);
+			tbSpatialHash_Query(bp->hash, &bp->table, aabb, maskBits, false, tbCountingQueryCallback, &c);
 			break;
 		default:
-			tbBruteForce_Query(&bp->table, aabb, maskBits, callback, context);
+			tbBruteForce_Query(&bp->table, aabb, maskBits, tbCountingQueryCallback, &c);
 			break;
 	}
+	return (tbTreeStats){0, c.offered};
 }
 
 /// Table scans (sort-and-sweep, brute force) see every proxy: pass on the static ones only.
@@ -684,34 +714,37 @@ static float tbUserRayCastCallback(const tbRayCastInput* input, int treeProxyId,
 	return value;
 }
 
-void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
-						  tbProxyRayCastFcn* callback, void* context)
+tbTreeStats tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
+								 tbProxyRayCastFcn* callback, void* context)
 {
+	if (bp->method == tb_broadPhaseTree)
+	{
+		tbUserQueryContext c = {bp, maskBits, NULL, callback, context, input->maxFraction, false};
+		tbTreeStats stats = tbDynamicTree_RayCast(&bp->staticTree, input, maskBits, tbUserRayCastCallback, &c);
+		if (c.stopped == false)
+		{
+			// The movable tree sees the ray as clipped by hits in the static tree.
+			tbRayCastInput clipped = *input;
+			clipped.maxFraction = c.maxFraction;
+			stats = tbAddTreeStats(stats,
+								   tbDynamicTree_RayCast(&bp->movableTree, &clipped, maskBits, tbUserRayCastCallback, &c));
+		}
+		return stats;
+	}
+	tbCountingQuery c = {NULL, callback, context, 0};
 	switch (bp->method)
 	{
-		case tb_broadPhaseTree:
-		{
-			tbUserQueryContext c = {bp, maskBits, NULL, callback, context, input->maxFraction, false};
-			tbDynamicTree_RayCast(&bp->staticTree, input, maskBits, tbUserRayCastCallback, &c);
-			if (c.stopped == false)
-			{
-				// The movable tree sees the ray as clipped by hits in the static tree.
-				tbRayCastInput clipped = *input;
-				clipped.maxFraction = c.maxFraction;
-				tbDynamicTree_RayCast(&bp->movableTree, &clipped, maskBits, tbUserRayCastCallback, &c);
-			}
-			break;
-		}
 		case tb_broadPhaseSortAndSweep:
-			tbSortAndSweep_RayCast(&bp->table, input, maskBits, callback, context);
+			tbSortAndSweep_RayCast(&bp->table, input, maskBits, tbCountingRayCallback, &c);
 			break;
 		case tb_broadPhaseSpatialHash:
-			tbSpatialHash_RayCast(&bp->table, input, maskBits, callback, context);
+			tbSpatialHash_RayCast(&bp->table, input, maskBits, tbCountingRayCallback, &c);
 			break;
 		default:
-			tbBruteForce_RayCast(&bp->table, input, maskBits, callback, context);
+			tbBruteForce_RayCast(&bp->table, input, maskBits, tbCountingRayCallback, &c);
 			break;
 	}
+	return (tbTreeStats){0, c.offered};
 }
 
 void tbBroadPhase_RebuildStaticTree(tbBroadPhase* bp)

@@ -121,7 +121,7 @@ static inline bool tbBroadPhase_TestOverlap(const tbBroadPhase* bp, int proxyKey
 
 /// Visit proxies overlapping aabb whose category bits share a bit with maskBits (callback gets
 /// proxy key and shape index; return false to stop).
-void tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
+tbTreeStats tbBroadPhase_Query(const tbBroadPhase* bp, tbAABB aabb, uint64_t maskBits, tbProxyQueryFcn* callback,
 						void* context);
 
 /// tbBroadPhase_Query restricted to static proxies (continuous collision of non-bullets, which
@@ -131,7 +131,7 @@ void tbBroadPhase_QueryStatic(const tbBroadPhase* bp, tbAABB aabb, uint64_t mask
 							  void* context);
 
 /// Ray cast over the proxies (callback as for the tree).
-void tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
+tbTreeStats tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* input, uint64_t maskBits,
 						  tbProxyRayCastFcn* callback, void* context);
 
 /// Height of the movable tree, or 0 for other methods.

@@ -1097,7 +1097,7 @@ tbAABB tbDynamicTree_GetAABB(const tbDynamicTree* tree, int proxyId)
 	return tree->nodes[proxyId].aabb;
 }
 
-uint64_t tbDynamicTree_GetCategoryBits(const tbDynamicTree* tree, int proxyId)
+uint64_t tbDynamicTree_GetCategoryBits(tbDynamicTree* tree, int proxyId)
 {
 	TB_ASSERT(0 <= proxyId && proxyId < tree->nodeCapacity);
 	return tree->nodes[proxyId].categoryBits;

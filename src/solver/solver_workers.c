@@ -23,8 +23,7 @@
 // stage list alone (tbRunPartition): no claims and no barrier per stage, and no body's state moves
 // between the workers' caches. Results are the same bit for bit. A step has a stage per colour
 // and pass in every sub-step, each ending at a barrier where the workers wait for the slowest;
-// with separate piles (many_pyramids) partitions take that waiting out of the step
-// (docs/performance.md, "Island partitions").
+// with separate piles (many_pyramids) partitions take that waiting out of the step.
 #include "solver_workers.h"
 
 #include "contact_solver.h"

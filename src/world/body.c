@@ -214,7 +214,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	world->kinematicBodyCount += def->type == tb_kinematicBody ? 1 : 0;
 	world->staticBodyCount += def->type == tb_staticBody ? 1 : 0;
 	body->transform.p = def->position;
-	body->transform.q = tbNormalizeRot(def->rotation);
+	body->transform.q = def->rotation; // checked a unit rotation (tbCheckBodyDef); kept as given, read back exactly
 	body->center = def->position;
 	body->center0 = def->position;
 	body->rotation0 = body->transform.q;
@@ -659,7 +659,7 @@ bool tbBody_SetTransform(tbBodyId bodyId, tbPos position, tbRot rotation)
 		return false;
 	}
 	body->transform.p = position;
-	body->transform.q = tbNormalizeRot(rotation);
+	body->transform.q = rotation; // as given (a unit rotation to within tbIsValidRotation's bound): it reads back exactly
 	body->center = tbTransformWorldPoint(body->transform, body->localCenter);
 	body->center0 = body->center;
 	body->rotation0 = body->transform.q;

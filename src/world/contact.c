@@ -156,9 +156,9 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	{
 		contact->flags |= tb_contactSensor;
 	}
-	if (a->enableContactEvents && b->enableContactEvents)
+	if (a->enableContactEvents || b->enableContactEvents)
 	{
-		contact->flags |= tb_contactEnableEvents;
+		contact->flags |= tb_contactEnableEvents; // either shape asks (Box2D v3.2's rule)
 	}
 	if (a->enableHitEvents || b->enableHitEvents)
 	{
@@ -184,27 +184,30 @@ static bool tbSensorEventsEnabled(const tbWorld* world, int sensor, int visitor)
 /// End events of the step go to the event arrays; those of a change between steps (the world is
 /// unlocked) wait in the pending arrays for the next step, so they are neither cleared unseen at its
 /// start nor pushed into an array the user may be reading.
+static void tbPushSensorEndEvent(tbWorld* world, int sensor, int visitor)
+{
+	if (world->shapes[sensor].isSensor == false || tbSensorEventsEnabled(world, sensor, visitor) == false)
+	{
+		return;
+	}
+	tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
+	if (world->locked)
+	{
+		TB_ARRAY_PUSH(world->events.sensorEndEvents, world->events.sensorEndCount, world->events.sensorEndCapacity, e);
+	}
+	else
+	{
+		TB_ARRAY_PUSH(world->events.pendingSensorEndEvents, world->events.pendingSensorEndCount,
+					  world->events.pendingSensorEndCapacity, e);
+	}
+}
+
 static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 {
 	if (contact->flags & tb_contactSensor)
 	{
-		const tbShape* a = world->shapes + contact->shapeIdA;
-		bool aIsSensor = a->isSensor;
-		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
-		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
-		if (tbSensorEventsEnabled(world, sensor, visitor))
-		{
-			tbSensorEndTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
-			if (world->locked)
-			{
-				TB_ARRAY_PUSH(world->events.sensorEndEvents, world->events.sensorEndCount, world->events.sensorEndCapacity, e);
-			}
-			else
-			{
-				TB_ARRAY_PUSH(world->events.pendingSensorEndEvents, world->events.pendingSensorEndCount,
-							  world->events.pendingSensorEndCapacity, e);
-			}
-		}
+		tbPushSensorEndEvent(world, contact->shapeIdA, contact->shapeIdB);
+		tbPushSensorEndEvent(world, contact->shapeIdB, contact->shapeIdA);
 	}
 	else if (contact->flags & tb_contactEnableEvents)
 	{
@@ -312,10 +315,6 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	if ((bodyA->jointCount | bodyB->jointCount) != 0 && tbJointBlocksCollision(world, a->bodyId, b->bodyId))
 	{
 		return false; // a joint between them forbids it (collideConnected false)
-	}
-	if (a->isSensor && b->isSensor)
-	{
-		return false;
 	}
 	if (tbShouldShapesCollide(a->filter, b->filter) == false)
 	{
@@ -534,18 +533,28 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 ///   surfaces there and the separation becomes s = s0 + (xB − xA)·n. This is the solver's own
 ///   sub-step update (contact_solver.c, baseSeparation) carried across steps; its error is second
 ///   order, |xB − xA|·|n − n_true| plus s0·Δθ²/2;
-/// - the normal turns with the bodies: it is a face normal (only polygon and segment pairs are
-///   recycled, tbHasMaterialFeatures), turning with A when the face is A's and with B when it is
-///   B's; not knowing which, the recycled normal bisects A's and B's turns (normalised mean of the
-///   two frame normals), off by at most half the relative turn;
-/// - the anchors are the material points xA − cA and xB − cB, as the solver would rotate them.
+/// - the normal and the anchors (the lever arms of the contact's impulses) stay as the narrow phase
+///   gave them, in the world orientation of that moment, and do not turn with the bodies (Box2D v3
+///   keeps them the same way). This is what lets a tall column of soft contacts stand: a soft
+///   contact lets the boxes of a stack rock by F/(m_eff·ω²), and lever arms that turned with that
+///   rocking would shift every load towards the lean by the turn times the box height, the
+///   destabilising moment of a column under its own weight. The rocking stiffness of a face is
+///   m_eff·ω²·w²/2 for a face of width w, whatever the load, so against turning arms a column
+///   buckles once its weight times its height outgrows that (the buckling load of a chain of
+///   rotational springs: about 21 unit boxes at the settled stiffness, tests/test_stability.c);
+///   Box2D v3's columns buckle the same way with its recycling off. The arms are off by at most
+///   each body's turn since the narrow phase times the arm, which is bounded below;
+///   the normal, a face normal (only polygon and segment pairs are recycled,
+///   tbHasMaterialFeatures), is off by at most its face's turn, under the same bound.
 /// When to recycle: a feature pair not in the manifold was at least margin0 (the speculative margin
 /// then) apart and has closed by at most the relative motion δ since (tbMovedLessThan); in this
 /// step it closes by at most margin − TB_SPECULATIVE_DISTANCE more. So while
 ///     δ < min(recycleDistance, margin0 − margin + TB_SPECULATIVE_DISTANCE)
 /// no feature the narrow phase would add can reach contact during the step (a faster approach than
-/// when the manifold was made shrinks the allowance to nothing), and the relative turn must stay
-/// below TB_RECYCLE_ANGLE so that the normal stays within a degree. What is lost: a speculative
+/// when the manifold was made shrinks the allowance to nothing); the relative turn must stay below
+/// TB_RECYCLE_ANGLE and each body's own turn below the angle of TB_RECYCLE_COS_BODY_TURN, so that the
+/// kept normal and lever arms stay within a few degrees (a pair turning together, a box on a drum,
+/// gets new ones). What is lost: a speculative
 /// point for a feature coming within the margin (caught later, before it touches), and the
 /// clipping against face ends (a point stays while a box slides less than δ past an edge). Bodies
 /// that were swept by continuous collision last step always get a new manifold.
@@ -555,6 +564,13 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 /// by their tight boxes before any narrow phase, and the test itself costs about what it saves.
 // cos(TB_RECYCLE_ANGLE) = cos(2°), rounded to float.
 #define TB_RECYCLE_COS_ANGLE 0.99939083f
+
+// cos(5°), rounded to float: how far each body may turn on its own while its contacts keep their
+// normal and lever arms. A tall column rocks further than the 2° of the relative bound at its top
+// while it stands (its boxes turn together, each little against its neighbours); a new manifold
+// there would take the lean into the arms and start the buckling the kept arms prevent. Box2D v3
+// allows about 11°; 5° keeps a kept arm within 0.09 of its length of the true one.
+#define TB_RECYCLE_COS_BODY_TURN 0.99619470f
 
 /// recycleDistance is the world's (TB_RECYCLE_DISTANCE by default, tbWorld_SetContactRecycleDistance).
 static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin,
@@ -578,8 +594,15 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 	{
 		return false;
 	}
+	// Each body's own turn since the narrow phase: its frame normal now against the kept normal,
+	// which is that frame normal as it was then (the manifold's normal is not changed while recycled).
 	tbManifold* m = &contact->manifold;
-	m->normal = tbNormalize(tbAdd(tbRotateVector(xfA.q, base->normalA), tbRotateVector(xfB.q, base->normalB)));
+	float cosA = tbDot(tbRotateVector(xfA.q, base->normalA), m->normal);
+	float cosB = tbDot(tbRotateVector(xfB.q, base->normalB), m->normal);
+	if (!(tbMinFloat(cosA, cosB) > TB_RECYCLE_COS_BODY_TURN))
+	{
+		return false;
+	}
 	// xB − xA from the origin offset and the rotated local points: no large world coordinates are
 	// subtracted, so far from the origin the difference keeps its precision.
 	tbVec2 dp = tbSubPos(xfB.p, xfA.p);
@@ -592,9 +615,7 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 		mp->separation = base->separation[i] + tbDot(gap, m->normal);
 		tbPos pointA = tbOffsetPos(xfA.p, rA);
 		mp->point = tbToVec2(tbOffsetPos(pointA, tbMulSV(0.5f, gap)));
-		mp->anchorA = tbSubPos(pointA, bodyA->center);
-		mp->anchorB = tbSubPos(tbOffsetPos(xfB.p, rB), bodyB->center);
-		mp->persisted = true;
+		mp->persisted = true; // anchors kept: see above
 	}
 	return true;
 }
@@ -779,18 +800,22 @@ int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 	return (result & tb_collideBeginEvent) != 0 ? 1 : ((result & tb_collideEndEvent) != 0 ? -1 : 0);
 }
 
+static void tbPushSensorBeginEvent(tbWorld* world, int sensor, int visitor)
+{
+	if (world->shapes[sensor].isSensor && tbSensorEventsEnabled(world, sensor, visitor))
+	{
+		tbSensorBeginTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
+		TB_ARRAY_PUSH(world->events.sensorBeginEvents, world->events.sensorBeginCount, world->events.sensorBeginCapacity, e);
+	}
+}
+
 static void tbPushBeginEvent(tbWorld* world, const tbContact* contact)
 {
 	if (contact->flags & tb_contactSensor)
 	{
-		bool aIsSensor = world->shapes[contact->shapeIdA].isSensor;
-		int sensor = aIsSensor ? contact->shapeIdA : contact->shapeIdB;
-		int visitor = aIsSensor ? contact->shapeIdB : contact->shapeIdA;
-		if (tbSensorEventsEnabled(world, sensor, visitor))
-		{
-			tbSensorBeginTouchEvent e = {tbMakeShapeId(world, sensor), tbMakeShapeId(world, visitor)};
-			TB_ARRAY_PUSH(world->events.sensorBeginEvents, world->events.sensorBeginCount, world->events.sensorBeginCapacity, e);
-		}
+		// Each sensor of the pair reports the other shape: two sensors overlapping see each other.
+		tbPushSensorBeginEvent(world, contact->shapeIdA, contact->shapeIdB);
+		tbPushSensorBeginEvent(world, contact->shapeIdB, contact->shapeIdA);
 	}
 	else if (contact->flags & tb_contactEnableEvents)
 	{
@@ -1333,7 +1358,7 @@ static void tbRefreshContactEventFlags(tbWorld* world, tbContact* contact)
 	const tbShape* b = world->shapes + contact->shapeIdB;
 	world->hitContactCount -= (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
 	contact->flags &= ~(uint32_t)(tb_contactEnableEvents | tb_contactEnableHits | tb_contactEnablePreSolve);
-	contact->flags |= a->enableContactEvents && b->enableContactEvents ? (uint32_t)tb_contactEnableEvents : 0u;
+	contact->flags |= a->enableContactEvents || b->enableContactEvents ? (uint32_t)tb_contactEnableEvents : 0u;
 	contact->flags |= a->enableHitEvents || b->enableHitEvents ? (uint32_t)tb_contactEnableHits : 0u;
 	contact->flags |= a->enablePreSolveEvents || b->enablePreSolveEvents ? (uint32_t)tb_contactEnablePreSolve : 0u;
 	world->hitContactCount += (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;

@@ -136,7 +136,7 @@ static void tbDrawContacts(tbWorld* world, const tbDebugDraw* draw)
 	}
 }
 
-void tbWorld_Draw(tbWorldId worldId, const tbDebugDraw* draw)
+void tbWorld_Draw(tbWorldId worldId, tbDebugDraw* draw)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, "tbWorld_Draw");
 	if (world == NULL || tbCheckPointer("tbWorld_Draw", "draw", draw) == false)

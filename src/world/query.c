@@ -100,26 +100,26 @@ static tbQueryContext tbMakeQueryContext(tbWorld* world, tbQueryFilter filter, v
 	return q;
 }
 
-bool tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn,
+tbTreeStats tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tbQueryFilter filter, tbOverlapResultFcn* fcn,
 						 void* context)
 {
 	const char* f = "tbWorld_OverlapAABB";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckPosition(f, "origin", origin) == false)
 	{
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	if (tbIsValidAABB(aabb) == false)
 	{
 		tbReportError(f, "aabb is not finite or has lowerBound > upperBound; pass a valid box");
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
 	tbEnterQuery(world);
-	tbBroadPhase_Query(&world->broadPhase, tbOffsetAABB(aabb, origin), filter.maskBits, tbAABBQueryCallback, &q);
+	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbOffsetAABB(aabb, origin), filter.maskBits, tbAABBQueryCallback, &q);
 	tbLeaveQuery(world);
-	return true;
+	return stats;
 }
 
 static bool tbPointQueryCallback(int proxyKey, int shapeIndex, void* context)
@@ -180,23 +180,23 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
 }
 
-bool tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
+tbTreeStats tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
 						  tbOverlapResultFcn* fcn, void* context)
 {
 	const char* f = "tbWorld_OverlapShape";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckQueryShape(f, origin, proxy) == false)
 	{
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
 	q.proxy = *proxy;
 	q.base = origin;
 	tbEnterQuery(world);
-	tbBroadPhase_Query(&world->broadPhase, tbProxyBox(origin, proxy), filter.maskBits, tbShapeQueryCallback, &q);
+	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbProxyBox(origin, proxy), filter.maskBits, tbShapeQueryCallback, &q);
 	tbLeaveQuery(world);
-	return true;
+	return stats;
 }
 
 static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int shapeIndex, void* context)
@@ -231,23 +231,23 @@ static bool tbCheckWorldRay(const char* f, tbPos origin, tbVec2 translation)
 	return tbCheckPosition(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
 }
 
-bool tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
+tbTreeStats tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
 					 void* context)
 {
 	const char* f = "tbWorld_CastRay";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckWorldRay(f, origin, translation) == false)
 	{
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.castFcn = fcn;
 	q.point = origin; // each shape is hit from the exact origin; the broad phase walks a float one
 	tbRayCastInput input = {tbToVec2(origin), translation, 1.0f};
 	tbEnterQuery(world);
-	tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
+	tbTreeStats stats = tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
 	tbLeaveQuery(world);
-	return true;
+	return stats;
 }
 
 static float tbClosestCallback(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
@@ -300,7 +300,7 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 	return true;
 }
 
-bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbVec2 translation,
+tbTreeStats tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbVec2 translation,
 					   tbQueryFilter filter, tbCastResultFcn* fcn, void* context)
 {
 	const char* f = "tbWorld_CastShape";
@@ -308,7 +308,7 @@ bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* prox
 	if (tbCheckQueryWorld(world, f, fcn != NULL) == false || tbCheckQueryShape(f, origin, proxy) == false ||
 		tbCheckVec2(f, "translation", translation) == false)
 	{
-		return false;
+		return (tbTreeStats){0, 0};
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.castFcn = fcn;
@@ -320,9 +320,9 @@ bool tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* prox
 	tbAABB box = tbProxyBox(origin, proxy);
 	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
 	tbEnterQuery(world);
-	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);
+	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);
 	tbLeaveQuery(world);
-	return true;
+	return stats;
 }
 
 // --- Character movers (mover.c has the planes and their solver) ------------------------------

@@ -17,8 +17,8 @@ tbShapeDef tbDefaultShapeDef(void)
 	def.material = tbDefaultSurfaceMaterial();
 	def.density = 1.0f;
 	def.filter = tbDefaultFilter();
-	def.enableSensorEvents = true;
-	def.enableContactEvents = true;
+	// Events are off unless asked for (Box2D v3.2's defaults): a contact reports begin and end when
+	// either shape enables contact events, a sensor a visitor when both enable sensor events.
 	def.updateBodyMass = true;
 	def.internalValue = TB_SHAPE_DEF_MAGIC;
 	return def;

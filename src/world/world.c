@@ -522,6 +522,16 @@ static void tbRecordMaxCapacity(tbWorld* world)
 	c->contactCount = tbMaxInt(c->contactCount, world->contactPool.count);
 }
 
+/// What every step ends with, a pause too: counters, the broad-phase vote, the step arena.
+static void tbFinishStep(tbWorld* world, uint64_t stepTicks)
+{
+	tbUpdateCounters(world);
+	tbUpdateAutoBroadPhase(world);
+	tbArenaReset(&world->stepArena);
+	world->profile.step = tbGetMilliseconds(stepTicks);
+	world->locked = false;
+}
+
 /// The step: each stage is a function in the file of its concept, run top to bottom.
 bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 {
@@ -531,11 +541,13 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	{
 		return false;
 	}
-	if (tbIsValidFloat(timeStep) == false || timeStep < TB_MIN_TIME_STEP || timeStep > TB_MAX_TIME_STEP)
+	// 0 is a pause (Box2D v3.2's): contacts and their events update, nothing moves.
+	if (tbIsValidFloat(timeStep) == false || (timeStep != 0.0f && timeStep < TB_MIN_TIME_STEP) ||
+		timeStep > TB_MAX_TIME_STEP)
 	{
-		tbReportError(f, "timeStep is %g (must be TB_MIN_TIME_STEP = %g s to TB_MAX_TIME_STEP = %g s); pass the "
-						 "frame time in seconds, e.g. 1/60, and step a longer span in several calls", (double)timeStep,
-					  (double)TB_MIN_TIME_STEP, (double)TB_MAX_TIME_STEP);
+		tbReportError(f, "timeStep is %g (must be 0, a pause, or TB_MIN_TIME_STEP = %g s to TB_MAX_TIME_STEP = %g s); "
+						 "pass the frame time in seconds, e.g. 1/60, and step a longer span in several calls",
+					  (double)timeStep, (double)TB_MIN_TIME_STEP, (double)TB_MAX_TIME_STEP);
 		return false;
 	}
 	if (subStepCount < 1 || subStepCount > TB_MAX_SUB_STEPS)
@@ -569,6 +581,12 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	world->profile.collide = tbGetMillisecondsAndReset(&t);
 	tbIslandStage(world);
 	world->profile.islands = tbGetMillisecondsAndReset(&t);
+	if (timeStep == 0.0f)
+	{
+		tbSolveStage(world, timeStep, subStepCount); // solves nothing; clears the last step's joint events
+		tbFinishStep(world, stepTicks);				 // a pause: no body moves, sleeps or reports a move
+		return true;
+	}
 	tbSolveStage(world, timeStep, subStepCount);
 	world->profile.solve = tbGetMillisecondsAndReset(&t);
 	tbContinuousStage(world);
@@ -584,11 +602,7 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 		tbDisableBodiesBeyondBounds(world);
 	}
 
-	tbUpdateCounters(world);
-	tbUpdateAutoBroadPhase(world);
-	tbArenaReset(&world->stepArena);
-	world->profile.step = tbGetMilliseconds(stepTicks);
-	world->locked = false;
+	tbFinishStep(world, stepTicks);
 	return true;
 }
 
