@@ -22,8 +22,8 @@
 //   (tbComputeBodyMass), origin (from its centre of mass), extents and speculative reach; a shape's
 //   tight box and, when the last finalize re-made it, its fat box; a polygon's normals and centroid
 //   (tbMakePolygon on its vertices); a contact's mixed materials (the default mixing), its anchors
-//   and recycling base, or for a recycled manifold its normal, points and separations (what the
-//   narrow phase made of them at the bodies' start-of-step poses, which the image keeps); a tree
+//   and recycling base, or for a recycled manifold its points and separations (what the narrow
+//   phase made of them at the bodies' start-of-step poses, which the image keeps); a tree
 //   node's box, category bits and height (from its children); a proxy's box, bits and shape;
 // - lists rebuilt from what is stored: the pair set, each contact's bodies, the counts of kinematic
 //   and static bodies, static proxies, linear locks and contacts wanting hit events;
@@ -1927,18 +1927,19 @@ enum
 	tb_contactMaterialsStored = 1 << 2, ///< not the default mixing of its shapes' materials
 	tb_contactSimplexStored = 1 << 3,
 	tb_contactHitStored = 1 << 4,
-	tb_contactPointsPredicted = 1 << 5, ///< the anchors (recycled: and points, separations) are remade
-	tb_contactFramePredicted = 1 << 6,	///< the recycling base (recycled: the normal) is remade
+	tb_contactPointsPredicted = 1 << 5, ///< the anchors (recycled: the points and separations) are remade
+	tb_contactFramePredicted = 1 << 6,	///< the recycling base of a computed manifold is remade
 	tb_contactInfoAll = (1 << 7) - 1,
 };
 
 // Where a manifold's points and recycling base come from (contact.c): the narrow phase ran with the
 // bodies at their poses at the start of the step (the pose a body's start pose keeps: centre0 and
 // rotation0, its origin as the last scatter wrote it), computing the points and, from them, the
-// anchors and the base; or it recycled the base, moving the points with the bodies. Either way
-// anchors, base, and for a recycled manifold its normal, points and separations, are functions of
-// what else the image holds, and are written only where recomputing them would not give the same
-// bits (a manifold made outside the collide stage, the large-world build's rounded points).
+// anchors and the base; or it recycled the base, moving the points with the bodies and keeping the
+// normal and anchors. Either way the anchors and base of a computed manifold, and the points and
+// separations of a recycled one, are functions of what else the image holds, and are written only
+// where recomputing them would not give the same bits (a manifold made outside the collide stage,
+// the large-world build's rounded points).
 
 /// A body's pose when its contacts were last collided: its start pose.
 typedef struct tbStartPose
@@ -1993,13 +1994,8 @@ static void tbRemakeBase(tbManifoldBase* base, const tbManifold* m, tbStartPose 
 	}
 }
 
-/// tbRecycleManifold's normal of a recycled manifold.
-static tbVec2 tbRemakeRecycledNormal(const tbManifoldBase* base, tbStartPose a, tbStartPose b)
-{
-	return tbNormalize(tbAdd(tbRotateVector(a.transform.q, base->normalA), tbRotateVector(b.transform.q, base->normalB)));
-}
-
-/// tbRecycleManifold's points, separations and anchors of a recycled manifold (its normal set).
+/// tbRecycleManifold's points and separations of a recycled manifold (its normal and anchors are
+/// the ones the narrow phase gave it, kept while it is recycled).
 static void tbRemakeRecycledPoints(tbManifold* m, const tbManifoldBase* base, tbStartPose a, tbStartPose b)
 {
 	tbWorldTransform xfA = a.transform, xfB = b.transform;
@@ -2013,8 +2009,6 @@ static void tbRemakeRecycledPoints(tbManifold* m, const tbManifoldBase* base, tb
 		mp->separation = base->separation[i] + tbDot(gap, m->normal);
 		tbPos pointA = tbOffsetPos(xfA.p, rA);
 		mp->point = tbToVec2(tbOffsetPos(pointA, tbMulSV(0.5f, gap)));
-		mp->anchorA = tbSubPos(pointA, a.center);
-		mp->anchorB = tbSubPos(tbOffsetPos(xfB.p, rB), b.center);
 	}
 }
 
@@ -2050,10 +2044,10 @@ static bool tbSimplexIsEmpty(const tbSimplexCache* c)
 }
 
 /// Which of a point's TB_POINT_FLOATS are remade rather than written: the anchors of a computed
-/// manifold; the point, anchors and separation of a recycled one.
+/// manifold; the point and separation of a recycled one.
 static bool tbIsRemadeFloat(int index, bool recycled, bool predicted)
 {
-	return predicted && ((index >= 2 && index <= 5) || (recycled && (index < 2 || index == 6)));
+	return predicted && (recycled ? (index < 2 || index == 6) : (index >= 2 && index <= 5));
 }
 
 static void tbPutBase(tbWriter* w, const tbManifoldBase* b, int pointCount)
@@ -2113,9 +2107,6 @@ static void tbWriteContact(tbEncoder* e, const tbContact* contact)
 	bool framePredicted = false;
 	if (recycled)
 	{
-		remade.normal = tbRemakeRecycledNormal(&contact->base, a, b);
-		framePredicted = tbSameVec2(remade.normal, m->normal);
-		remade.normal = m->normal; // the points move along the normal the manifold holds
 		tbRemakeRecycledPoints(&remade, &contact->base, a, b);
 	}
 	else
@@ -2167,7 +2158,7 @@ static void tbWriteContact(tbEncoder* e, const tbContact* contact)
 		tbPutBase(w, &contact->base, m->pointCount);
 		tbPutFloat(w, contact->base.margin);
 		float head[3] = {m->normal.x, m->normal.y, m->rollingImpulse};
-		tbPutFloatsOver(w, framePredicted ? head + 2 : head, NULL, framePredicted ? 1 : 3);
+		tbPutFloatsOver(w, head, NULL, 3);
 		tbPutPoints(w, m, true, pointsPredicted);
 	}
 	else
@@ -2373,8 +2364,7 @@ static bool tbReadContact(tbDecoder* d, int id)
 	bool recycled = tbIsRecycledManifold(flags);
 	bool pointsPredicted = (info & tb_contactPointsPredicted) != 0;
 	bool framePredicted = (info & tb_contactFramePredicted) != 0;
-	if ((pointsPredicted && m->pointCount == 0) ||
-		(framePredicted && (flags & tb_contactRecyclable) == 0))
+	if ((pointsPredicted && m->pointCount == 0) || (framePredicted && ((flags & tb_contactRecyclable) == 0 || recycled)))
 	{
 		return tbFail(r, "contact %d says it remakes what it does not have", id);
 	}
@@ -2383,8 +2373,8 @@ static bool tbReadContact(tbDecoder* d, int id)
 		tbGetBase(r, &contact->base, m->pointCount);
 		contact->base.margin = tbGetFloat(r, "a contact's recycling base");
 		float head[3];
-		tbGetFloatsOver(r, framePredicted ? head + 2 : head, NULL, framePredicted ? 1 : 3, "a contact's normal");
-		m->normal = framePredicted ? tbRemakeRecycledNormal(&contact->base, poseA, poseB) : tbMakeVec2(head[0], head[1]);
+		tbGetFloatsOver(r, head, NULL, 3, "a contact's normal");
+		m->normal = tbMakeVec2(head[0], head[1]);
 		m->rollingImpulse = head[2];
 		tbGetPoints(d, m, true, pointsPredicted, id);
 		if (pointsPredicted)
