@@ -3,18 +3,23 @@
 #   scripts/fuzz.sh [SECONDS_PER_HARNESS] [HARNESS...]
 # FUZZ_SEED=N fixes libFuzzer's random seed (the test command uses 1, so a CI run explores the
 # same inputs as the last one did, and a red run can be reproduced).
-# Defaults: 60 s each for fuzz_collision, fuzz_world and fuzz_scene, one process at a time (one
-# core). New inputs go to build/fuzz/corpus/<harness>; the committed seeds in
-# fuzz/corpus/<harness> are read, never written. A finding stops the harness with the crashing
-# input saved as build/fuzz/<harness>-crash-* and this script exits non-zero.
+# FUZZ_JOBS=N runs N harnesses at a time (default 2: the CI machine has two cores, and each
+# harness is one process on one core).
+# Defaults: 60 s each for fuzz_collision, fuzz_world, fuzz_scene, fuzz_api and fuzz_decompose.
+# New inputs go to build/fuzz/corpus/<harness>; the committed seeds in fuzz/corpus/<harness> are
+# read, never written. Each harness writes its log to build/fuzz/<harness>.log, printed whole once
+# the harness is done (so the logs of harnesses running side by side do not interleave). A finding
+# stops its harness with the crashing input saved as build/fuzz/<harness>-crash-*, and this script
+# exits non-zero once every harness has run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
-	harnesses=(fuzz_collision fuzz_world fuzz_scene)
+	harnesses=(fuzz_collision fuzz_world fuzz_scene fuzz_api fuzz_decompose)
 fi
+jobs="${FUZZ_JOBS:-2}"
 if ! command -v clang >/dev/null; then
 	if [ "$(id -u)" = 0 ]; then
 		apt-get install -y clang
@@ -27,13 +32,69 @@ scripts/install-deps.sh test
 CC=clang CXX=clang++ cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUMBLE_FUZZ=ON \
 	-DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF -DTUMBLE_BUILD_TOOLS=OFF -DTUMBLE_BUILD_SAMPLES=OFF >/dev/null
 cmake --build build/fuzz -j"$(nproc)" --target "${harnesses[@]}"
-status=0
-for harness in "${harnesses[@]}"; do
+
+# Options a harness needs beyond the common ones.
+extra_options() {
+	case "$1" in
+		# A call sequence needs length to reach deep states: mutate at full length from the start
+		# rather than growing inputs slowly from a few bytes.
+		fuzz_api) echo "-max_len=4096 -len_control=0" ;;
+		*) echo "" ;;
+	esac
+}
+
+# Start one harness in the background; its pid goes to pids[], its name to names[].
+pids=()
+names=()
+start() {
+	local harness="$1"
 	mkdir -p "build/fuzz/corpus/$harness"
-	echo "== $harness for ${seconds} s"
-	seed=()
+	local seed=()
 	[ -n "${FUZZ_SEED:-}" ] && seed=(-seed="$FUZZ_SEED")
-	(cd build/fuzz && "./fuzz/$harness" -max_total_time="$seconds" "${seed[@]}" -print_final_stats=1 -artifact_prefix="$harness-" \
-		"corpus/$harness" "../../fuzz/corpus/$harness") || status=1
+	local options
+	read -r -a options <<<"$(extra_options "$harness")"
+	echo "== $harness: started for ${seconds} s (log: build/fuzz/$harness.log)"
+	(cd build/fuzz && exec "./fuzz/$harness" -max_total_time="$seconds" "${seed[@]}" "${options[@]}" \
+		-print_final_stats=1 -artifact_prefix="$harness-" "corpus/$harness" "../../fuzz/corpus/$harness") \
+		>"build/fuzz/$harness.log" 2>&1 &
+	pids+=($!)
+	names+=("$harness")
+}
+
+# Wait for any running harness to end, print its log and status, and drop it from the lists.
+status=0
+finish_one() {
+	while true; do
+		for i in "${!pids[@]}"; do
+			if ! kill -0 "${pids[$i]}" 2>/dev/null; then
+				local code=0
+				wait "${pids[$i]}" || code=$?
+				local harness="${names[$i]}"
+				echo "== $harness: log"
+				cat "build/fuzz/$harness.log"
+				if [ "$code" -eq 0 ]; then
+					echo "== $harness: passed"
+				else
+					echo "== $harness: FAILED (exit status $code; the input is build/fuzz/$harness-crash-* or -timeout-*)"
+					status=1
+				fi
+				unset 'pids[i]' 'names[i]'
+				pids=("${pids[@]}")
+				names=("${names[@]}")
+				return
+			fi
+		done
+		sleep 1
+	done
+}
+
+for harness in "${harnesses[@]}"; do
+	while [ ${#pids[@]} -ge "$jobs" ]; do
+		finish_one
+	done
+	start "$harness"
+done
+while [ ${#pids[@]} -gt 0 ]; do
+	finish_one
 done
 exit $status

@@ -276,3 +276,69 @@ Test(callbacks, a_deep_overlap_from_pre_solve_stays_under_the_speed_limit, .init
 		tbDestroyWorld(world);
 	}
 }
+
+typedef struct FarContext
+{
+	int field; ///< 0: anchors, 1: impulses, 2: both
+	int calls;
+} FarContext;
+
+static void WriteFarAnchorsAndImpulses(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* manifold, void* context)
+{
+	(void)shapeIdA;
+	(void)shapeIdB;
+	FarContext* c = context;
+	c->calls += 1;
+	for (int i = 0; i < manifold->pointCount; ++i)
+	{
+		if (c->field != 1)
+		{
+			manifold->points[i].anchorA = tbMakeVec2(1e30f, 0.0f);
+		}
+		if (c->field != 0)
+		{
+			manifold->points[i].normalImpulse = -1e30f;
+			manifold->points[i].tangentImpulse = 1e30f;
+		}
+	}
+}
+
+// Anchors finite but 1e30 m from the body (no manifold point can be farther from its body than the
+// body's extent plus the speculative margin), impulses set to ±1e30 N·s (warm starting applies
+// them at the anchors), and both. Each was accepted, and a callback doing both left the ball's
+// position NaN with every solver (found by fuzz/fuzz_api.c). Each is now reported and undone: the
+// ball rests at y = 0.25 ± 0.01 as in the tests above.
+Test(callbacks, far_anchors_and_changed_impulses_from_pre_solve_are_refused, .init = SetupErrors,
+	 .fini = TeardownErrors)
+{
+	tbSolverMethod methods[3] = {tb_solverSoft, tb_solverBaumgarte, tb_solverNGS};
+	for (int field = 0; field < 3; ++field)
+	{
+		for (int k = 0; k < 3; ++k)
+		{
+			tbWorldDef worldDef = tbDefaultWorldDef();
+			worldDef.solver = methods[k];
+			tbWorldId world = tbCreateWorld(&worldDef);
+			tbShapeDef groundDef = tbDefaultShapeDef();
+			CreateStaticBox(world, tbMakeVec2(0.0f, -1.0f), 20.0f, 1.0f, &groundDef);
+			tbShapeDef ballDef = tbDefaultShapeDef();
+			ballDef.enablePreSolveEvents = true;
+			tbBodyId ball;
+			CreateBall(world, tbMakeVec2(0.0f, 0.5f), tbMakeVec2(0.0f, 0.0f), 0.25f, &ballDef, &ball);
+			FarContext context = {field, 0};
+			tbWorld_SetPreSolveCallback(world, WriteFarAnchorsAndImpulses, NULL, &context);
+			int before = s_errors;
+			for (int step = 0; step < 60; ++step)
+			{
+				tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+			}
+			cr_assert(context.calls > 0);
+			cr_assert(s_errors > before, "field %d solver %d: no error", field, k);
+			cr_assert(strstr(s_lastError, field == 0 ? "anchor" : "impulse") != NULL, "'%s'", s_lastError);
+			tbVec2 p = tbBody_GetPosition(ball);
+			cr_assert(fabsf(p.y - 0.25f) < 0.01f && fabsf(p.x) < 0.01f, "field %d solver %d: ball at (%g, %g)", field,
+					  k, (double)p.x, (double)p.y);
+			tbDestroyWorld(world);
+		}
+	}
+}

@@ -495,3 +495,100 @@ Test(decompose, a_point_repeated_anywhere_is_refused, .init = SetupErrors, .fini
 	cr_assert_eq(tbDecomposePolygon(pinched, 6, s_pieces, MAX_PIECES), 0);
 	ExpectError(before, "tbDecomposePolygon", "points[1] and points[4]");
 }
+
+/// How far q lies outside the outline: 0 inside, else its distance to the nearest edge.
+static double OutsideBy(double qx, double qy, const tbVec2* p, int n)
+{
+	tbVec2 q = {(float)qx, (float)qy};
+	if (PointInOutline(q, p, n))
+	{
+		return 0.0;
+	}
+	double nearest = INFINITY;
+	for (int i = 0, j = n - 1; i < n; j = i++)
+	{
+		double ex = (double)p[i].x - p[j].x, ey = (double)p[i].y - p[j].y;
+		double dx = qx - p[j].x, dy = qy - p[j].y;
+		double t = fmax(0.0, fmin(1.0, (dx * ex + dy * ey) / (ex * ex + ey * ey)));
+		nearest = fmin(nearest, hypot(dx - t * ex, dy - t * ey));
+	}
+	return nearest;
+}
+
+/// The farthest a piece's boundary lies outside the outline (sampled at 64 points per edge).
+static double LargestExcursion(const tbVec2* outline, int n, int count)
+{
+	double largest = 0.0;
+	for (int i = 0; i < count; ++i)
+	{
+		const tbPolygon* piece = s_pieces + i;
+		for (int k = 0; k < piece->count; ++k)
+		{
+			tbVec2 a = piece->vertices[k], b = piece->vertices[(k + 1) % piece->count];
+			for (int s = 0; s < 64; ++s)
+			{
+				double t = (double)s / 64.0;
+				largest = fmax(largest, OutsideBy(a.x + t * ((double)b.x - a.x), a.y + t * ((double)b.y - a.y), outline, n));
+			}
+		}
+	}
+	return largest;
+}
+
+// A square 1.4 km on a side with a notch 1 cm deep (twice the slop) in the middle of each side.
+// A corner counts as straight to rounding within 1e-5 of its chord's length, which on these
+// 1.4 km chords was 1.4 cm: the notches were dropped as straight and the pieces spanned them, 1 cm
+// outside the outline. Straight now also means within TB_LINEAR_SLOP of the chord.
+Test(decompose, a_notch_deeper_than_the_slop_on_a_long_side_is_not_spanned)
+{
+	tbVec2 outline[8];
+	for (int i = 0; i < 4; ++i)
+	{
+		float angle = 0.5f * 3.14159265f * (float)i, next = angle + 0.5f * 3.14159265f;
+		tbVec2 corner = {1000.0f * cosf(angle), 1000.0f * sinf(angle)};
+		tbVec2 mid = tbMulSV(0.5f, tbAdd(corner, tbMakeVec2(1000.0f * cosf(next), 1000.0f * sinf(next))));
+		outline[2 * i] = corner;
+		outline[2 * i + 1] = tbMulAdd(mid, 0.01f, tbNormalize(tbNeg(mid)));
+	}
+	int count = tbDecomposePolygon(outline, 8, s_pieces, MAX_PIECES);
+	cr_assert(count > 0);
+	double excursion = LargestExcursion(outline, 8, count);
+	cr_assert(excursion <= TB_LINEAR_SLOP, "a piece leaves the outline by %.3g m", excursion);
+}
+
+// A box whose bottom side is a run of 257 points 10 cm apart, each lifted from the chord of the
+// points two levels up (midpoint displacement) by 0.8 of the slop: every point is within the slop
+// of the chord of its neighbours when it is tested, and the points pile up to several slops above
+// the side's end-to-end chord. Dropped one after another against their neighbours alone, they
+// carried the chord up to the top of the pile: a piece spanning the whole side, centimetres
+// outside the outline. A point is now dropped only when the points dropped before it between the
+// same corners stay within the slop of the chord too.
+Test(decompose, welded_points_do_not_carry_a_side_beyond_the_slop)
+{
+	enum
+	{
+		side = 257,
+		count = side + 2
+	};
+	static tbVec2 outline[count];
+	double height[side];
+	height[0] = 0.0;
+	height[side - 1] = 0.0;
+	for (int step = (side - 1) / 2; step >= 1; step /= 2)
+	{
+		for (int i = step; i < side - 1; i += 2 * step)
+		{
+			height[i] = 0.5 * (height[i - step] + height[i + step]) + 0.8 * TB_LINEAR_SLOP;
+		}
+	}
+	for (int i = 0; i < side; ++i)
+	{
+		outline[i] = tbMakeVec2(0.1f * (float)i, (float)height[i]); // inward: the box lies above
+	}
+	outline[side] = tbMakeVec2(0.1f * (float)(side - 1), 5.0f);
+	outline[side + 1] = tbMakeVec2(0.0f, 5.0f);
+	int pieces = tbDecomposePolygon(outline, count, s_pieces, MAX_PIECES);
+	cr_assert(pieces > 0);
+	double excursion = LargestExcursion(outline, count, pieces);
+	cr_assert(excursion <= TB_LINEAR_SLOP * 1.001, "a piece leaves the outline by %.3g m", excursion);
+}

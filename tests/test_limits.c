@@ -329,6 +329,47 @@ Test(world_limits, gravity_near_float_max_clamped_and_positions_finite, .init = 
 	tbDestroyWorld(world);
 }
 
+// The same gravity on a body with a shape: its predicted displacement for the broad-phase box,
+// dt·(v + dt·g), is infinite, and scaling it down to the speculative reach gave 0 · ∞ = NaN, a box
+// of NaN in the broad phase (found by fuzz/fuzz_api.c). The box now stays finite and queries find
+// the shape.
+static bool CountFound(tbShapeId shapeId, void* context)
+{
+	(void)shapeId;
+	*(int*)context += 1;
+	return true;
+}
+
+Test(world_limits, infinite_gravity_leaves_broad_phase_boxes_finite, .init = SetupHooks, .fini = TeardownHooks)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, -3e38f);
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.gravityScale = 10.0f; // 3e39: infinite in float
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon box = tbMakeBox(0.5f, 0.5f);
+	tbCreatePolygonShape(body, &shapeDef, &box);
+	for (int i = 0; i < 3; ++i)
+	{
+		cr_assert(tbWorld_Step(world, 1.0f / 60.0f, 4));
+		ExpectFiniteBody(body, i);
+		tbAABB bounds = tbWorld_GetBounds(world);
+		cr_assert(isfinite(bounds.lowerBound.x) && isfinite(bounds.lowerBound.y) && isfinite(bounds.upperBound.x) &&
+					  isfinite(bounds.upperBound.y),
+				  "step %d: broad-phase bounds (%g, %g)-(%g, %g)", i, (double)bounds.lowerBound.x,
+				  (double)bounds.lowerBound.y, (double)bounds.upperBound.x, (double)bounds.upperBound.y);
+		tbVec2 p = tbBody_GetPosition(body);
+		tbAABB around = {{p.x - 1.0f, p.y - 1.0f}, {p.x + 1.0f, p.y + 1.0f}};
+		int found = 0;
+		tbWorld_OverlapAABB(world, tbPos_zero, around, tbDefaultQueryFilter(), CountFound, &found);
+		cr_assert_eq(found, 1, "step %d: the query around the body found %d shapes", i, found);
+	}
+	tbDestroyWorld(world);
+}
+
 Test(world_limits, density_overflowing_mass_refused, .init = SetupHooks, .fini = TeardownHooks)
 {
 	// Before: density 3e38 on a 2 m × 2 m box gave an infinite mass and NaN positions.

@@ -614,15 +614,28 @@ Test(snapshot, ids_made_after_a_snapshot_stay_stale_in_the_next_world_of_the_slo
 	tbWorldId world = tbCreateWorld(&def);
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	tbBodyId first = tbCreateBody(world, &bodyDef);
+	tbBodyId anchor = tbCreateBody(world, &bodyDef);
+	bodyDef.type = tb_dynamicBody;
+	tbBodyId swing = tbCreateBody(world, &bodyDef);
+	tbRevoluteJointDef jointDef = tbDefaultRevoluteJointDef();
+	jointDef.base.bodyIdA = anchor;
+	jointDef.base.bodyIdB = swing;
+	tbJointId firstJoint = tbCreateRevoluteJoint(world, &jointDef);
 	Image start = TakeSnapshot(world);
-	// After the snapshot: the body's slot serves another body, under the next generation.
+	// After the snapshot: the body's slot serves another body, the joint's another joint, each
+	// under the next generation.
 	tbDestroyBody(first);
+	bodyDef.type = tb_staticBody;
 	tbBodyId later = tbCreateBody(world, &bodyDef);
 	cr_assert_eq(later.index1, first.index1);
 	cr_assert_neq(later.generation, first.generation);
+	tbDestroyJoint(firstJoint);
+	tbJointId laterJoint = tbCreateRevoluteJoint(world, &jointDef);
+	cr_assert_eq(laterJoint.index1, firstJoint.index1);
 	cr_assert(tbWorld_Restore(world, start.bytes, start.size));
-	cr_assert(tbBody_IsValid(first));
+	cr_assert(tbBody_IsValid(first) && tbJoint_IsValid(firstJoint));
 	cr_assert_not(tbBody_IsValid(later));
+	cr_assert_not(tbJoint_IsValid(laterJoint));
 	tbDestroyWorld(world);
 
 	// A new world in the same world slot starts past every generation the old one handed out,
@@ -630,10 +643,17 @@ Test(snapshot, ids_made_after_a_snapshot_stay_stale_in_the_next_world_of_the_slo
 	tbWorldId next = tbCreateWorld(&def);
 	cr_assert_eq(next.index1, world.index1);
 	tbBodyId fresh = tbCreateBody(next, &bodyDef);
+	tbBodyId other = tbCreateBody(next, &bodyDef);
+	bodyDef.type = tb_dynamicBody;
+	jointDef.base.bodyIdA = other;
+	jointDef.base.bodyIdB = tbCreateBody(next, &bodyDef);
+	tbJointId freshJoint = tbCreateRevoluteJoint(next, &jointDef);
 	cr_assert_eq(fresh.index1, later.index1);
+	cr_assert_eq(freshJoint.index1, laterJoint.index1);
 	cr_assert_not(tbBody_IsValid(later));
 	cr_assert_not(tbBody_IsValid(first));
-	cr_assert(tbBody_IsValid(fresh));
+	cr_assert_not(tbJoint_IsValid(laterJoint));
+	cr_assert(tbBody_IsValid(fresh) && tbJoint_IsValid(freshJoint));
 	free(start.bytes);
 	tbDestroyWorld(next);
 }

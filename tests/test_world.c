@@ -474,6 +474,50 @@ Test(handles, ids_of_a_destroyed_world_refused_in_its_successor, .init = SetupEr
 	}
 }
 
+// The same for joints and chains: their slots took no generation from the world that used the
+// slot before, so a joint or chain id kept from a destroyed world named the first joint or chain
+// of its successor (found by fuzz/fuzz_api.c).
+Test(handles, joint_and_chain_ids_of_a_destroyed_world_refused_in_its_successor, .init = SetupErrors,
+	 .fini = TeardownErrors)
+{
+	static const tbVec2 ground[4] = {{3.0f, 0.0f}, {1.0f, 0.0f}, {-1.0f, 0.0f}, {-3.0f, 0.0f}};
+	tbWorldDef def = tbDefaultWorldDef();
+	tbJointId oldJoint = TB_NULL_JOINT_ID;
+	tbChainId oldChain = TB_NULL_CHAIN_ID;
+	for (int round = 0; round < 3; ++round)
+	{
+		tbWorldId world = tbCreateWorld(&def);
+		tbBodyId a = MakeBall(world, tbMakeVec2(0.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+		tbBodyId b = MakeBall(world, tbMakeVec2(1.0f, 0.0f), tbMakeVec2(0.0f, 0.0f));
+		tbRevoluteJointDef jointDef = tbDefaultRevoluteJointDef();
+		jointDef.base.bodyIdA = a;
+		jointDef.base.bodyIdB = b;
+		tbJointId joint = tbCreateRevoluteJoint(world, &jointDef);
+		tbChainDef chainDef = tbDefaultChainDef();
+		chainDef.points = ground;
+		chainDef.count = 4;
+		tbChainId chain = tbCreateChain(a, &chainDef);
+		cr_assert(tbJoint_IsValid(joint) && tbChain_IsValid(chain));
+		if (round > 0)
+		{
+			cr_assert_eq(joint.index1, oldJoint.index1, "the new joint takes the old one's slot");
+			cr_assert_eq(chain.index1, oldChain.index1, "the new chain takes the old one's slot");
+			cr_assert_not(tbJoint_IsValid(oldJoint));
+			cr_assert_not(tbChain_IsValid(oldChain));
+			int n = s_errors;
+			tbDestroyJoint(oldJoint);
+			tbDestroyChain(oldChain);
+			cr_assert_eq(s_errors, n + 2, "the stale ids are refused");
+			cr_assert(tbJoint_IsValid(joint) && tbChain_IsValid(chain));
+		}
+		oldJoint = joint;
+		oldChain = chain;
+		tbDestroyWorld(world);
+		cr_assert_not(tbJoint_IsValid(joint));
+		cr_assert_not(tbChain_IsValid(chain));
+	}
+}
+
 Test(handles, worlds_side_by_side)
 {
 	// Two worlds with different gravity evolve independently: after 1 s of free fall from rest

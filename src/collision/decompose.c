@@ -21,9 +21,9 @@
 //
 // Input: 3 to TB_MAX_DECOMPOSE_POINTS points in either winding, no two consecutive points closer
 // than TB_LINEAR_SLOP, no edge crossing another (checked, O(n²)), non-zero area. Points within
-// TB_LINEAR_SLOP of the chord of their neighbours are dropped first, as tbComputeHull drops them
-// from a convex outline (each drop changes the area by half the chord times that distance, under
-// 0.0025 m² per metre of chord). Corners that are straight to rounding (a diagonal's end on a
+// TB_LINEAR_SLOP of the chord of the corners kept either side of them are dropped first, as
+// tbComputeHull drops them from a convex outline (each drop changes the area by half the chord
+// times that distance, under 0.0025 m² per metre of chord). Corners that are straight to rounding (a diagonal's end on a
 // straight run) are dropped from the pieces, exactly; corners nearly straight but within the slop
 // are never made (thin ears are cut last, such merges refused), because the pieces' hulls would
 // drop them and open a gap; a thin ear that must be cut all the same (no fat ear left: corners
@@ -98,11 +98,15 @@ static float tbOutsideChord(tbVec2 a, tbVec2 b, tbVec2 c)
 	return length > 0.0f ? tbCross(tbSub(c, a), tbSub(b, a)) / -length : 0.0f;
 }
 
-/// Corner b is straight to rounding: within 1e-5 of the chord's length from the chord a→c.
+/// Corner b is straight to rounding: within 1e-5 of the chord's length from the chord a→c, and
+/// never farther than TB_LINEAR_SLOP from it. On a chord longer than 500 m the relative bound alone
+/// would call a notch deeper than the slop straight, and a piece spanning it would leave the outline.
 static bool tbIsStraight(tbVec2 a, tbVec2 b, tbVec2 c)
 {
 	tbVec2 chord = tbSub(c, a);
-	return tbAbsFloat(tbCross(chord, tbSub(b, a))) <= 1e-5f * tbDot(chord, chord);
+	float lengthSquared = tbDot(chord, chord);
+	float tolerance = tbMinFloat(1e-5f * lengthSquared, TB_LINEAR_SLOP * sqrtf(lengthSquared));
+	return tbAbsFloat(tbCross(chord, tbSub(b, a))) <= tolerance;
 }
 
 /// A corner a piece may have: convex by at least the slop (its hull keeps it) or straight.
@@ -303,26 +307,52 @@ static bool tbTryMerge(const tbVec2* pts, tbPiece* p, tbPiece* q, int i, int j)
 	return true;
 }
 
-/// Drop points within TB_LINEAR_SLOP of the chord of their neighbours, as tbComputeHull does for
-/// a convex outline: the pieces' hulls would drop them anyway and leave a gap beside them.
-static int tbDropCollinear(tbVec2* p, int n)
+/// Is every outline point strictly between corners a and c (going forward) within TB_LINEAR_SLOP
+/// of the chord a→c?
+static bool tbSpanNearChord(const tbVec2* p, int n, int a, int c)
 {
-	int kept = n;
-	for (bool changed = true; changed && kept > 3;)
+	for (int j = (a + 1) % n; j != c; j = (j + 1) % n)
+	{
+		if (tbAbsFloat(tbOutsideChord(p[a], p[j], p[c])) >= TB_LINEAR_SLOP)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/// Drop points within TB_LINEAR_SLOP of the chord of the corners kept either side of them, as
+/// tbComputeHull does for a convex outline: the pieces' hulls would drop them anyway and leave a
+/// gap beside them. A point goes only if the points dropped before it between the same two corners
+/// stay within the slop of their chord too: tested against its neighbours alone, one drop after
+/// another could carry the chord several slops away from the outline, and a piece outside it.
+/// `kept` is scratch for n indices; the corners left are moved to the front of p, in order, and
+/// counted.
+static int tbDropCollinear(tbVec2* p, int n, int* kept)
+{
+	for (int i = 0; i < n; ++i)
+	{
+		kept[i] = i;
+	}
+	int count = n;
+	for (bool changed = true; changed && count > 3;)
 	{
 		changed = false;
-		for (int i = 0; i < kept && kept > 3; ++i)
+		for (int i = 0; i < count && count > 3; ++i)
 		{
-			tbVec2 a = p[(i + kept - 1) % kept], b = p[i], c = p[(i + 1) % kept];
-			if (tbAbsFloat(tbOutsideChord(a, b, c)) < TB_LINEAR_SLOP)
+			if (tbSpanNearChord(p, n, kept[(i + count - 1) % count], kept[(i + 1) % count]))
 			{
-				memmove(p + i, p + i + 1, (size_t)(kept - i - 1) * sizeof(tbVec2));
-				kept -= 1;
+				memmove(kept + i, kept + i + 1, (size_t)(count - i - 1) * sizeof(int));
+				count -= 1;
 				changed = true;
 			}
 		}
 	}
-	return kept;
+	for (int k = 0; k < count; ++k)
+	{
+		p[k] = p[kept[k]]; // kept[k] >= k: no point is overwritten before it is read
+	}
+	return count;
 }
 
 /// Does the diagonal v→w leave corner v keepable on both sides (v reflex)?
@@ -684,7 +714,7 @@ int tbDecomposePolygon(const tbVec2* points, int count, tbPolygon* pieces, int c
 		p[i] = area2 >= 0.0 ? points[i] : points[count - 1 - i];
 	}
 	d.p = p;
-	d.n = tbDropCollinear(p, count);
+	d.n = tbDropCollinear(p, count, d.next);
 	int result = 0;
 	if (d.n < 3)
 	{

@@ -398,6 +398,7 @@ static int tbAllocJointSlot(tbWorld* world)
 	{
 		TB_ARRAY_RESERVE(world->joints, world->jointCapacity, id + 1);
 		memset(world->joints + id, 0, sizeof(tbJoint));
+		world->joints[id].generation = world->jointGenerationBase;
 	}
 	return id;
 }
@@ -471,7 +472,7 @@ static void tbDestroyJointInternal(tbWorld* world, int jointId, bool refindPairs
 	tbWakeBody(world, a);
 	tbWakeBody(world, b);
 	joint->inUse = false;
-	tbIdPool_Release(&world->jointPool, jointId, &joint->generation, 0);
+	tbIdPool_Release(&world->jointPool, jointId, &joint->generation, world->jointGenerationBase);
 }
 
 void tbDestroyJoint(tbJointId jointId)

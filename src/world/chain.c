@@ -140,6 +140,7 @@ static int tbAllocChainSlot(tbWorld* world)
 	{
 		TB_ARRAY_RESERVE(world->chains, world->chainCapacity, index + 1);
 		memset(world->chains + index, 0, sizeof(tbChain));
+		world->chains[index].generation = world->chainGenerationBase;
 	}
 	return index;
 }
@@ -213,7 +214,7 @@ static void tbRemoveChain(tbWorld* world, int index, bool removeShapes)
 	chain->shapeIds = NULL;
 	chain->materials = NULL;
 	chain->inUse = false;
-	tbIdPool_Release(&world->chainPool, index, &chain->generation, 0);
+	tbIdPool_Release(&world->chainPool, index, &chain->generation, world->chainGenerationBase);
 }
 
 void tbDestroyChain(tbChainId chainId)

@@ -681,31 +681,60 @@ static float tbDeepestOverlap(const tbShape* a, const tbShape* b)
 	return tbMinFloat(tbLength(da), tbLength(db));
 }
 
+/// A point the pre-solve callback kept carries the impulses the solver accumulated for its feature:
+/// the callback may move, drop or deepen points, not change what warm starting will apply.
+static bool tbKeepsImpulses(const tbManifoldPoint* point, const tbManifold* before)
+{
+	for (int j = 0; j < before->pointCount; ++j)
+	{
+		const tbManifoldPoint* old = before->points + j;
+		if (old->id == point->id)
+		{
+			return point->normalImpulse == old->normalImpulse && point->tangentImpulse == old->tangentImpulse &&
+				   point->maxNormalImpulse == old->maxNormalImpulse && point->normalVelocity == old->normalVelocity;
+		}
+	}
+	return false;
+}
+
 /// The user's pre-solve callback on a touching contact (tbPreSolveFcn). What it may do is bounded:
-/// no more points than it was given, a finite unit normal, finite anchors, and separations no
-/// deeper than the two shapes could overlap (a deeper one would be an overlap the solver pushes
-/// out of at speeds no contact can ask for); anything else is reported and the manifold restored.
-/// A manifold it changed is not recycled next step (the recycled one would carry its change along
-/// instead of asking again).
+/// no more points than it was given, a finite unit normal, anchors within reach of their bodies
+/// (a manifold point lies within the speculative margin of both shapes: an anchor farther than
+/// twice that beyond the body's extent is none it could have), separations no deeper than the two
+/// shapes could overlap (a deeper one would be an overlap the solver pushes out of at speeds no
+/// contact can ask for), and the impulses of each point as the solver left them (warm starting
+/// applies them at the anchors: a huge one overflows the velocities); anything else is reported
+/// and the manifold restored. A manifold it changed is not recycled next step (the recycled one
+/// would carry its change along instead of asking again).
 static void tbCallPreSolve(tbWorld* world, tbContact* contact)
 {
 	tbManifold before = contact->manifold;
 	tbManifold* m = &contact->manifold;
 	world->preSolveFcn(tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB), m,
 					   world->preSolveContext);
-	bool valid = tbIsValidVec2(m->normal) && tbAbsFloat(tbLength(m->normal) - 1.0f) < 1e-3f;
+	bool valid = tbIsValidVec2(m->normal) && tbAbsFloat(tbLength(m->normal) - 1.0f) < 1e-3f &&
+				 m->rollingImpulse == before.rollingImpulse;
 	m->pointCount = tbMinInt(tbMaxInt(m->pointCount, 0), before.pointCount);
-	float deepest = -tbDeepestOverlap(world->shapes + contact->shapeIdA, world->shapes + contact->shapeIdB);
+	const tbShape* a = world->shapes + contact->shapeIdA;
+	const tbShape* b = world->shapes + contact->shapeIdB;
+	const tbBody* bodyA = world->bodies + a->bodyId;
+	const tbBody* bodyB = world->bodies + b->bodyId;
+	float deepest = -tbDeepestOverlap(a, b);
+	float margin = tbSpeculativeMargin(world, bodyA, bodyB);
+	float reachA = bodyA->maxExtent + 2.0f * margin, reachB = bodyB->maxExtent + 2.0f * margin;
 	for (int i = 0; i < m->pointCount; ++i)
 	{
-		valid = valid && tbIsValidFloat(m->points[i].separation) && m->points[i].separation >= deepest &&
-				tbIsValidVec2(m->points[i].anchorA) && tbIsValidVec2(m->points[i].anchorB);
+		const tbManifoldPoint* point = m->points + i;
+		valid = valid && tbIsValidFloat(point->separation) && point->separation >= deepest &&
+				tbIsValidVec2(point->anchorA) && tbIsValidVec2(point->anchorB) && tbLength(point->anchorA) <= reachA &&
+				tbLength(point->anchorB) <= reachB && tbKeepsImpulses(point, &before);
 	}
 	if (valid == false)
 	{
-		tbReportError("tbPreSolveFcn", "the callback left a non-finite or non-unit normal, a non-finite anchor, or a "
-									   "separation below %g m (deeper than the two shapes can overlap); the manifold "
-									   "is restored (set pointCount to 0 to disable the contact)",
+		tbReportError("tbPreSolveFcn",
+					  "the callback left a non-finite or non-unit normal, an anchor that is not finite or beyond its "
+					  "body's reach, a separation below %g m (deeper than the two shapes can overlap), or changed an "
+					  "impulse; the manifold is restored (set pointCount to 0 to disable the contact)",
 					  (double)deepest);
 		*m = before;
 		return;

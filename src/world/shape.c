@@ -233,7 +233,9 @@ static tbShapeSweep tbBodySweep(const tbWorld* world, const tbBody* body)
 		tbVec2 d = tbMulSV(dt, tbMulAdd(body->linearVelocity, dt, g));
 		float length = tbLength(d);
 		// NaN-safe: a non-finite displacement is replaced by none (the step rejects nothing here).
-		s.d = length > cap ? tbMulSV(cap / length, d) : (length <= cap ? d : tbVec2_zero);
+		// That includes an infinite one (gravity × gravityScale beyond FLT_MAX), which scaled down
+		// to the reach would give 0 · ∞ = NaN in the box.
+		s.d = length <= cap ? d : (length > cap && length <= FLT_MAX ? tbMulSV(cap / length, d) : tbVec2_zero);
 		float turn = body->angularVelocity * dt;
 		float arc = tbAbsFloat(turn) * body->maxExtent;
 		s.pad = tbMinFloat(arc, cap);

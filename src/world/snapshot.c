@@ -1776,7 +1776,8 @@ static void tbChainMaterialFloats(const tbSurfaceMaterial* m, float v[TB_CHAIN_M
 static void tbWriteChains(tbEncoder* e)
 {
 	const tbWorld* world = e->world;
-	tbWritePool(e, &world->chainPool, world->chains, sizeof(tbChain), offsetof(tbChain, generation), 2, 0);
+	tbWritePool(e, &world->chainPool, world->chains, sizeof(tbChain), offsetof(tbChain, generation), 2,
+				world->chainGenerationBase);
 	tbSurfaceMaterial base = tbDefaultSurfaceMaterial();
 	float defaults[TB_CHAIN_MATERIAL_FLOATS];
 	tbChainMaterialFloats(&base, defaults);
@@ -1821,7 +1822,7 @@ static bool tbReadChains(tbDecoder* d)
 	for (int i = 0; i < highWater; ++i)
 	{
 		memset(world->chains + i, 0, sizeof(tbChain));
-		world->chains[i].generation = (uint16_t)generations[i];
+		world->chains[i].generation = (uint16_t)generations[i]; // the base is added on adoption
 	}
 	// Which chain claims each shape (−1: none yet).
 	int shapeCount = world->shapePool.highWater;
@@ -2694,7 +2695,8 @@ static void tbJointFloatDefaults(float v[TB_JOINT_FLOATS])
 static void tbWriteJoints(tbEncoder* e)
 {
 	const tbWorld* world = e->world;
-	tbWritePool(e, &world->jointPool, world->joints, sizeof(tbJoint), offsetof(tbJoint, generation), 2, 0);
+	tbWritePool(e, &world->jointPool, world->joints, sizeof(tbJoint), offsetof(tbJoint, generation), 2,
+				world->jointGenerationBase);
 	float defaults[TB_JOINT_FLOATS];
 	tbJointFloatDefaults(defaults);
 	for (int i = 0; i < world->jointPool.highWater; ++i)
@@ -2877,7 +2879,7 @@ static bool tbReadJoints(tbDecoder* d)
 	for (int i = 0; i < highWater; ++i)
 	{
 		memset(world->joints + i, 0, sizeof(tbJoint));
-		world->joints[i].generation = (uint16_t)generations[i];
+		world->joints[i].generation = (uint16_t)generations[i]; // the base is added on adoption
 	}
 	for (int i = 0; i < highWater && r->failed == false; ++i)
 	{
@@ -3794,6 +3796,14 @@ static void tbApplyGenerations(tbWorld* world)
 	{
 		world->shapes[i].generation = (uint16_t)(world->shapes[i].generation + world->shapeGenerationBase);
 	}
+	for (int i = 0; i < world->jointPool.highWater; ++i)
+	{
+		world->joints[i].generation = (uint16_t)(world->joints[i].generation + world->jointGenerationBase);
+	}
+	for (int i = 0; i < world->chainPool.highWater; ++i)
+	{
+		world->chains[i].generation = (uint16_t)(world->chains[i].generation + world->chainGenerationBase);
+	}
 	for (int i = 0; i < world->contactPool.highWater; ++i)
 	{
 		world->contacts[i].generation += (uint32_t)world->generation << 16;
@@ -3834,8 +3844,9 @@ static void tbAdoptWorld(tbWorld* target, tbWorld* staged)
 	target->generation = kept.generation;
 	target->bodyGenerationBase = kept.bodyGenerationBase;
 	target->shapeGenerationBase = kept.shapeGenerationBase;
-	target->bodyGenerationPeak = kept.bodyGenerationPeak;
-	target->shapeGenerationPeak = kept.shapeGenerationPeak;
+	target->jointGenerationBase = kept.jointGenerationBase;
+	target->chainGenerationBase = kept.chainGenerationBase;
+	memcpy(target->generationPeaks, kept.generationPeaks, sizeof(kept.generationPeaks));
 	target->def.frictionCallback = kept.def.frictionCallback;
 	target->def.restitutionCallback = kept.def.restitutionCallback;
 	target->def.workerCount = kept.def.workerCount;

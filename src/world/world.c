@@ -22,10 +22,13 @@
 
 static tbWorld* s_worlds[TB_MAX_WORLDS];
 static uint16_t s_worldGenerations[TB_MAX_WORLDS];
-// Per world slot: the largest body and shape generations handed out by the worlds that used the
-// slot (see tbWorld::bodyGenerationBase). Generations wrap at 2^16, like every generation.
+// Per world slot: the largest body, shape, joint and chain generations handed out by the worlds
+// that used the slot (see tbWorld::bodyGenerationBase). Generations wrap at 2^16, like every
+// generation.
 static uint16_t s_bodyGenerations[TB_MAX_WORLDS];
 static uint16_t s_shapeGenerations[TB_MAX_WORLDS];
+static uint16_t s_jointGenerations[TB_MAX_WORLDS];
+static uint16_t s_chainGenerations[TB_MAX_WORLDS];
 
 #define TB_WORLD_DEF_MAGIC 0x7B3A1C01
 
@@ -364,6 +367,8 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	// One past every generation the slot's earlier worlds handed out.
 	world->bodyGenerationBase = (uint16_t)(s_bodyGenerations[slot] + 1);
 	world->shapeGenerationBase = (uint16_t)(s_shapeGenerations[slot] + 1);
+	world->jointGenerationBase = (uint16_t)(s_jointGenerations[slot] + 1);
+	world->chainGenerationBase = (uint16_t)(s_chainGenerations[slot] + 1);
 	world->userData = def->userData;
 	tbHashSet_Create(&world->pairSet, 64);
 	tbBroadPhase_Create(&world->broadPhase, tbResolveBroadPhase(def->broadPhase));
@@ -426,14 +431,21 @@ static void tbFreeWorldArrays(tbWorld* w)
 
 void tbNoteGenerationPeaks(tbWorld* world)
 {
-	uint16_t body = (uint16_t)(tbLargestGeneration(world->bodyGenerationBase, world->bodies, world->bodyPool.highWater,
-												   sizeof(tbBody), offsetof(tbBody, generation)) -
-							   world->bodyGenerationBase);
-	uint16_t shape = (uint16_t)(tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapePool.highWater,
-													sizeof(tbShape), offsetof(tbShape, generation)) -
-								world->shapeGenerationBase);
-	world->bodyGenerationPeak = body > world->bodyGenerationPeak ? body : world->bodyGenerationPeak;
-	world->shapeGenerationPeak = shape > world->shapeGenerationPeak ? shape : world->shapeGenerationPeak;
+	const uint16_t bases[4] = {world->bodyGenerationBase, world->shapeGenerationBase, world->jointGenerationBase,
+							   world->chainGenerationBase};
+	const uint16_t largest[4] = {
+		tbLargestGeneration(bases[0], world->bodies, world->bodyPool.highWater, sizeof(tbBody), offsetof(tbBody, generation)),
+		tbLargestGeneration(bases[1], world->shapes, world->shapePool.highWater, sizeof(tbShape),
+							offsetof(tbShape, generation)),
+		tbLargestGeneration(bases[2], world->joints, world->jointPool.highWater, sizeof(tbJoint),
+							offsetof(tbJoint, generation)),
+		tbLargestGeneration(bases[3], world->chains, world->chainPool.highWater, sizeof(tbChain),
+							offsetof(tbChain, generation))};
+	for (int k = 0; k < 4; ++k)
+	{
+		uint16_t peak = (uint16_t)(largest[k] - bases[k]);
+		world->generationPeaks[k] = peak > world->generationPeaks[k] ? peak : world->generationPeaks[k];
+	}
 }
 
 void tbFreeWorldContents(tbWorld* world)
@@ -459,8 +471,10 @@ void tbDestroyWorld(tbWorldId worldId)
 	}
 	int slot = world->worldId;
 	tbNoteGenerationPeaks(world);
-	s_bodyGenerations[slot] = (uint16_t)(world->bodyGenerationBase + world->bodyGenerationPeak);
-	s_shapeGenerations[slot] = (uint16_t)(world->shapeGenerationBase + world->shapeGenerationPeak);
+	s_bodyGenerations[slot] = (uint16_t)(world->bodyGenerationBase + world->generationPeaks[0]);
+	s_shapeGenerations[slot] = (uint16_t)(world->shapeGenerationBase + world->generationPeaks[1]);
+	s_jointGenerations[slot] = (uint16_t)(world->jointGenerationBase + world->generationPeaks[2]);
+	s_chainGenerations[slot] = (uint16_t)(world->chainGenerationBase + world->generationPeaks[3]);
 	tbFreeWorldContents(world);
 	s_worlds[world->worldId] = NULL;
 	tbFree(world, (int)sizeof(tbWorld));

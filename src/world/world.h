@@ -59,16 +59,17 @@ typedef struct tbWorld
 	tbWorldDef def; ///< methods and tuning in force (auto resolved where it must be)
 	uint16_t worldId;
 	uint16_t generation;
-	// First generation of a body or shape slot used for the first time in this world: one past the
-	// largest generation any earlier world in the same slot handed out, so an id kept from a
-	// destroyed world never matches an object of a new world that took its slot.
+	// First generation of a body, shape, joint or chain slot used for the first time in this world:
+	// one past the largest generation any earlier world in the same slot handed out, so an id kept
+	// from a destroyed world never matches an object of a new world that took its slot.
 	uint16_t bodyGenerationBase;
 	uint16_t shapeGenerationBase;
-	/// The largest body and shape generations this world handed out, counted from the bases, as
-	/// they were before a restore took the slots back to older ones (tbNoteGenerationPeaks): the
-	/// next world in the slot starts past them too.
-	uint16_t bodyGenerationPeak;
-	uint16_t shapeGenerationPeak;
+	uint16_t jointGenerationBase;
+	uint16_t chainGenerationBase;
+	/// The largest generations this world handed out, counted from the bases (body, shape, joint,
+	/// chain), as they were before a restore took the slots back to older ones
+	/// (tbNoteGenerationPeaks): the next world in the slot starts past them too.
+	uint16_t generationPeaks[4];
 	bool locked; ///< true during the step: the API refuses every change
 	/// Query callbacks running (nested queries count): the API refuses what would change the
 	/// broad phase being walked (create, destroy, SetTransform, SetType, filters, collideConnected)
@@ -145,8 +146,8 @@ tbWorld* tbGetWorldChecked(tbWorldId id, const char* function);
 /// Free everything a world holds but the world itself (tbDestroyWorld; a snapshot's restore frees the
 /// state it replaces with it).
 void tbFreeWorldContents(tbWorld* world);
-/// Remember the largest generations the world's body and shape slots hold (a restore is about to
-/// replace them with older ones).
+/// Remember the largest generations the world's body, shape, joint and chain slots hold (a restore
+/// is about to replace them with older ones).
 void tbNoteGenerationPeaks(tbWorld* world);
 /// The world by index (no checks).
 tbWorld* tbGetWorldFromIndex(int index);
