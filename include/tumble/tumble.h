@@ -126,6 +126,42 @@ TB_API void tbWorld_RebuildStaticTree(tbWorldId worldId);
 /// over the values' bytes. 0 for a refused id.
 TB_API uint64_t tbWorld_GetStateHash(tbWorldId worldId);
 
+// Snapshots (Box2D v3.2's snapshot group) ---------------------------------------------------
+
+/// Write the world's whole simulation state into image, a byte array the caller owns: pass NULL and
+/// 0 first to learn the size, then a buffer of at least that size. Returns the size the image needs;
+/// when it exceeds capacity nothing is written. Call between steps: a locked world (from inside the
+/// step, e.g. a pre-solve callback) returns 0. The image holds what the next steps read (bodies,
+/// shapes, chains, contacts with their manifolds and warm-start impulses, joints and their
+/// impulses, the id pools with their free lists and generations, the awake list, the broad phase,
+/// settings and the step index), so a world restored from it steps on bit for bit as the world it
+/// was taken from. Not stored: host wiring (task system, worker count, user data of the world,
+/// bodies, shapes and joints, callbacks) and the last step's events. An image starts with a header
+/// (magic "TBSN", format version, float or double-precision build, size, length units, checksum)
+/// and is only read by a build of the same precision in the same length units. Refused (0, error
+/// hook): stale id, locked world, NULL image with a non-zero capacity, negative capacity.
+TB_API int tbWorld_Snapshot(tbWorldId worldId, uint8_t* image, int capacity);
+
+/// Restore the world in place from an image of size bytes made by tbWorld_Snapshot. The world keeps
+/// its id and its host wiring (task system, worker count, world user data, custom filter, pre-solve,
+/// friction and restitution callbacks); ids of bodies, shapes, joints and chains that existed when
+/// the image was taken are valid again and name the same objects, ids made since are refused (until
+/// the same objects are made again: the next body created gets the id it got after the snapshot was
+/// taken), and body, shape and joint user data read NULL (as in Box2D v3.2). The whole image is
+/// checked before anything changes: a refused image (truncated, corrupt: wrong checksum, made by
+/// another format version, precision or length unit, or holding anything out of range) leaves the
+/// world exactly as it was (Box2D v3.2 may leave it unusable). Returns false (error hook naming what
+/// was wrong) for those, a stale id, a NULL image, a negative size, or a locked world (during the
+/// step or inside a query callback).
+TB_API bool tbWorld_Restore(tbWorldId worldId, const uint8_t* image, int size);
+
+/// A new world (a new id, its host wiring the defaults of tbDefaultWorldDef) holding the state of an
+/// image made by tbWorld_Snapshot: it steps on bit for bit as the world the image was taken from.
+/// workerCount: 1 to TB_MAX_WORKERS, or 0 for 1 (without a task system every worker's share runs on
+/// the caller). Ids from the original world do not name its objects. Returns TB_NULL_WORLD_ID (error
+/// hook) for an image tbWorld_Restore refuses, a workerCount out of range, or TB_MAX_WORLDS worlds.
+TB_API tbWorldId tbCreateWorldFromSnapshot(const uint8_t* image, int size, int workerCount);
+
 /// Write the bytes each of the world's arrays holds, and their total, to tumble_memory.txt in
 /// the current directory (Box2D v3.2 writes box2d_memory.txt). Refused (error hook): stale id;
 /// a file that cannot be opened is reported too.

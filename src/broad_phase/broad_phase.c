@@ -29,9 +29,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/// Bit set in every tree leaf of the broad phase so pair queries (mask = this bit) see all proxies.
-#define TB_PAIR_QUERY_BIT (UINT64_C(1) << 63)
-
 /// Static inserts since the last rebuild that trigger a static-tree rebuild: at least 16 and at
 /// least half the static tree (a rebuild is O(n log n); small trickles are inserted one by one).
 #define TB_STATIC_REBUILD_MIN 16

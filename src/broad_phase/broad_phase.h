@@ -22,6 +22,9 @@
 #include "tumble/constants.h"
 #include "tumble/types.h"
 
+/// Bit set in every tree leaf of the broad phase so pair queries (mask = this bit) see all proxies
+/// (broad_phase.c says why; a snapshot predicts a leaf's bits with it).
+#define TB_PAIR_QUERY_BIT (UINT64_C(1) << 63)
 
 typedef struct tbBroadPhase
 {

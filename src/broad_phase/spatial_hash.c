@@ -291,6 +291,24 @@ void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash)
 	hash->staticDirty = true;
 }
 
+tbSpatialHashState tbSpatialHash_GetState(const tbSpatialHash* hash)
+{
+	tbSpatialHashState state = {hash->cellSize, hash->staticDirty, hash->updateCount};
+	return state;
+}
+
+void tbSpatialHash_SetState(tbSpatialHash* hash, const tbProxyTable* table, tbSpatialHashState state)
+{
+	hash->cellSize = state.cellSize;
+	hash->invCellSize = state.cellSize > 0.0f ? 1.0f / state.cellSize : 0.0f;
+	hash->staticDirty = state.staticDirty;
+	hash->updateCount = state.updateCount;
+	if (hash->staticDirty == false && hash->cellSize > 0.0f)
+	{
+		tbGrid_Build(&hash->staticGrid, hash, table, true);
+	}
+}
+
 // --------------------------------------------------------------------------------------------
 // Pairs
 

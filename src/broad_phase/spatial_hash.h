@@ -31,5 +31,20 @@ void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, t
 void tbSpatialHash_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
 						   tbProxyRayCastFcn* callback, void* context);
 
+/// What a spatial hash carries from one update to the next besides the proxy table (a world's
+/// snapshot stores it): the cell size, whether the static grid must be rebuilt, and the update
+/// count that times the cell size's re-check. The grids themselves follow from these and the table.
+typedef struct tbSpatialHashState
+{
+	float cellSize; ///< 0 before the first update
+	bool staticDirty;
+	int updateCount;
+} tbSpatialHashState;
+
+tbSpatialHashState tbSpatialHash_GetState(const tbSpatialHash* hash);
+/// Take a state (a restored snapshot's): a current static grid is built again from the table, the
+/// same grid, since it depends only on the cell size and the static proxies.
+void tbSpatialHash_SetState(tbSpatialHash* hash, const tbProxyTable* table, tbSpatialHashState state);
+
 /// The static grid, when current, holds every small static proxy in every cell its box covers.
 bool tbSpatialHash_Validate(const tbSpatialHash* hash, const tbProxyTable* table);

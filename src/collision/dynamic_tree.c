@@ -37,6 +37,8 @@
 // Category bits: leaves store their shape's bits, internal nodes the OR of their children's, so a
 // query with a mask skips a subtree that holds no matching category.
 
+#include "dynamic_tree_node.h"
+
 #include "core/core.h"
 
 #include "tumble/collision.h"
@@ -44,22 +46,6 @@
 #include <float.h>
 #include <stdlib.h>
 #include <string.h>
-
-/// One node: a leaf (height 0, no children) holds a proxy; an internal node has two children.
-/// A free node has height −1 and links the free list through `parent`. 48 bytes.
-typedef struct tbTreeNode
-{
-	tbAABB aabb;		   ///< fat box of a leaf, union of the children for an internal node
-	uint64_t categoryBits; ///< leaf: the proxy's bits; internal: OR of the children
-	uint64_t userData;	   ///< leaf payload returned to queries
-	int parent;			   ///< parent node, or next free node when free
-	int child1;			   ///< TB_NULL_NODE for a leaf
-	int child2;
-	int16_t height;	  ///< 0 for a leaf, 1 + max(children) for an internal node, −1 when free
-	int16_t enlarged; ///< a leaf grown in place since the last rebuild, or an ancestor of one
-} tbTreeNode;
-
-_Static_assert(sizeof(tbTreeNode) == 48, "tree node is 48 bytes");
 
 /// One leaf as the binned SAH rebuild moves it around: everything the partition reads and swaps
 /// in one 32-byte record, so a swap is one record, not four arrays.

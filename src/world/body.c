@@ -303,9 +303,7 @@ static void tbUpdateSpeculativeReach(tbBody* body)
 	body->speculativeReach = tbMaxFloat(TB_SPECULATIVE_REACH, body->safetyFactor * body->minExtent);
 }
 
-/// Extents used by continuous collision: the smallest distance from the centre of mass to the
-/// surface (a conservative "thickness") and the largest distance to any point of any shape.
-static void tbComputeExtents(tbWorld* world, tbBody* body)
+void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtentOut, float* maxExtentOut)
 {
 	float minExtent = TB_HUGE, maxExtent = 0.0f;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
@@ -329,8 +327,14 @@ static void tbComputeExtents(tbWorld* world, tbBody* body)
 			maxExtent = tbMaxFloat(maxExtent, tbDistance(proxy.points[i], body->localCenter) + proxy.radius);
 		}
 	}
-	body->minExtent = minExtent < TB_HUGE ? minExtent : 0.0f;
-	body->maxExtent = maxExtent;
+	*minExtentOut = minExtent < TB_HUGE ? minExtent : 0.0f;
+	*maxExtentOut = maxExtent;
+}
+
+/// Extents used by continuous collision (tbComputeBodyExtents) and the reach that follows from them.
+static void tbComputeExtents(tbWorld* world, tbBody* body)
+{
+	tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
 	tbUpdateSpeculativeReach(body);
 }
 
@@ -355,10 +359,18 @@ static void tbKeepOriginVelocity(tbBody* body, tbPos oldCenter)
 // A rotational inertia below FLT_MIN counts as none (the body does not turn, as with fixed
 // rotation): 1/I would overflow to ∞ below 1/FLT_MAX ≈ 2.9e-39 kg m², or be a subnormal's rounding
 // noise, and ∞ · 0 in a contact with no lever arm gives NaN.
+static void tbSetMassInertia(tbBodyMass* mass, float inertia)
+{
+	mass->inertia = inertia >= FLT_MIN ? inertia : 0.0f;
+	mass->invInertia = mass->inertia > 0.0f ? 1.0f / mass->inertia : 0.0f;
+}
+
 static void tbSetBodyInertia(tbBody* body, float inertia)
 {
-	body->inertia = inertia >= FLT_MIN ? inertia : 0.0f;
-	body->invInertia = body->inertia > 0.0f ? 1.0f / body->inertia : 0.0f;
+	tbBodyMass mass;
+	tbSetMassInertia(&mass, inertia);
+	body->inertia = mass.inertia;
+	body->invInertia = mass.invInertia;
 }
 
 static float tbSaturateToFloat(double value)
@@ -366,13 +378,14 @@ static float tbSaturateToFloat(double value)
 	return value < (double)FLT_MAX ? (float)value : FLT_MAX;
 }
 
-// The float sums of tbUpdateBodyMass overflowed (each shape's own mass and inertia are finite,
+// The float sums of tbComputeBodyMass overflowed (each shape's own mass and inertia are finite,
 // tbCreateShape checks that, but their sum or a mass × centre product was not). Redo them in
 // double, which cannot overflow for any number of float-sized terms, and saturate the mass and
 // the rotational inertia at FLT_MAX: the body then barely responds to impulses, as an enormous
 // mass should, and everything stays finite.
-static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbPos oldCenter)
+static tbBodyMass tbSaturatedBodyMass(const tbWorld* world, const tbBody* body)
 {
+	tbBodyMass result = {0.0f, 0.0f, 0.0f, 0.0f, {0.0f, 0.0f}};
 	double mass = 0.0, cx = 0.0, cy = 0.0, inertia = 0.0;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
@@ -386,17 +399,65 @@ static void tbSaturateBodyMass(tbWorld* world, tbBody* body, tbPos oldCenter)
 	}
 	cx /= mass;
 	cy /= mass;
-	body->mass = tbSaturateToFloat(mass);
-	body->invMass = 1.0f / body->mass;
-	body->localCenter = tbMakeVec2((float)cx, (float)cy);
+	result.mass = tbSaturateToFloat(mass);
+	result.invMass = 1.0f / result.mass;
+	result.localCenter = tbMakeVec2((float)cx, (float)cy);
 	if (body->fixedRotation == false)
 	{
-		tbSetBodyInertia(body, tbSaturateToFloat(inertia - mass * (cx * cx + cy * cy)));
+		tbSetMassInertia(&result, tbSaturateToFloat(inertia - mass * (cx * cx + cy * cy)));
 	}
-	body->center = tbTransformWorldPoint(body->transform, body->localCenter);
-	body->center0 = body->center;
-	tbKeepOriginVelocity(body, oldCenter);
-	tbComputeExtents(world, body);
+	return result;
+}
+
+tbBodyMass tbComputeBodyMass(const tbWorld* world, const tbBody* body)
+{
+	tbBodyMass result = {0.0f, 0.0f, 0.0f, 0.0f, {0.0f, 0.0f}};
+	if (body->type != tb_dynamicBody)
+	{
+		return result;
+	}
+	// Accumulate mass and first moment, then inertia about the origin by the parallel-axis theorem.
+	float rotationalInertia = 0.0f;
+	tbVec2 localCenter = tbVec2_zero;
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		const tbShape* shape = world->shapes + id;
+		if (shape->density == 0.0f)
+		{
+			continue;
+		}
+		tbMassData md = tbComputeShapeMass(&shape->geometry, shape->density);
+		result.mass += md.mass;
+		localCenter = tbMulAdd(localCenter, md.mass, md.center);
+		rotationalInertia += md.rotationalInertia + md.mass * tbDot(md.center, md.center);
+	}
+	if (tbIsValidFloat(result.mass) == false || tbIsValidVec2(localCenter) == false ||
+		tbIsValidFloat(rotationalInertia) == false)
+	{
+		return tbSaturatedBodyMass(world, body);
+	}
+	if (result.mass >= FLT_MIN)
+	{
+		result.invMass = 1.0f / result.mass;
+		localCenter = tbMulSV(result.invMass, localCenter);
+	}
+	else
+	{
+		// A dynamic body without mass behaves as 1 kg at its origin so that it still falls. A mass
+		// below FLT_MIN (a 1e-20 m circle: π·1e-40 kg) counts as none: 1/mass overflows to ∞ below
+		// 1/FLT_MAX and the centre ∞ · (mass · centre) became ∞ · 0 = NaN.
+		result.mass = 1.0f;
+		result.invMass = 1.0f;
+		localCenter = tbVec2_zero;
+		rotationalInertia = 0.0f;
+	}
+	if (rotationalInertia > 0.0f && body->fixedRotation == false)
+	{
+		// Shift the inertia from the body origin to the centre of mass.
+		tbSetMassInertia(&result, rotationalInertia - result.mass * tbDot(localCenter, localCenter));
+	}
+	result.localCenter = localCenter;
+	return result;
 }
 
 // The accumulated impulses of a body's contacts were found for its old mass: warm starting would
@@ -420,62 +481,17 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body)
 {
 	tbRestartBodyContacts(world, body);
 	tbPos oldCenter = body->center;
-	body->mass = 0.0f;
-	body->invMass = 0.0f;
-	body->inertia = 0.0f;
-	body->invInertia = 0.0f;
-	body->localCenter = tbVec2_zero;
-	if (body->type != tb_dynamicBody)
+	tbBodyMass mass = tbComputeBodyMass(world, body);
+	body->mass = mass.mass;
+	body->invMass = mass.invMass;
+	body->inertia = mass.inertia;
+	body->invInertia = mass.invInertia;
+	body->localCenter = mass.localCenter;
+	body->center = tbTransformWorldPoint(body->transform, body->localCenter);
+	if (body->type == tb_dynamicBody)
 	{
-		body->center = tbTransformWorldPoint(body->transform, body->localCenter);
-		tbKeepOriginVelocity(body, oldCenter);
-		tbComputeExtents(world, body);
-		return;
+		body->center0 = body->center;
 	}
-	// Accumulate mass and first moment, then inertia about the origin by the parallel-axis theorem.
-	float rotationalInertia = 0.0f;
-	tbVec2 localCenter = tbVec2_zero;
-	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
-	{
-		const tbShape* shape = world->shapes + id;
-		if (shape->density == 0.0f)
-		{
-			continue;
-		}
-		tbMassData md = tbComputeShapeMass(&shape->geometry, shape->density);
-		body->mass += md.mass;
-		localCenter = tbMulAdd(localCenter, md.mass, md.center);
-		rotationalInertia += md.rotationalInertia + md.mass * tbDot(md.center, md.center);
-	}
-	if (tbIsValidFloat(body->mass) == false || tbIsValidVec2(localCenter) == false ||
-		tbIsValidFloat(rotationalInertia) == false)
-	{
-		tbSaturateBodyMass(world, body, oldCenter);
-		return;
-	}
-	if (body->mass >= FLT_MIN)
-	{
-		body->invMass = 1.0f / body->mass;
-		localCenter = tbMulSV(body->invMass, localCenter);
-	}
-	else
-	{
-		// A dynamic body without mass behaves as 1 kg at its origin so that it still falls. A mass
-		// below FLT_MIN (a 1e-20 m circle: π·1e-40 kg) counts as none: 1/mass overflows to ∞ below
-		// 1/FLT_MAX and the centre ∞ · (mass · centre) became ∞ · 0 = NaN.
-		body->mass = 1.0f;
-		body->invMass = 1.0f;
-		localCenter = tbVec2_zero;
-		rotationalInertia = 0.0f;
-	}
-	if (rotationalInertia > 0.0f && body->fixedRotation == false)
-	{
-		// Shift the inertia from the body origin to the centre of mass.
-		tbSetBodyInertia(body, rotationalInertia - body->mass * tbDot(localCenter, localCenter));
-	}
-	body->localCenter = localCenter;
-	body->center = tbTransformWorldPoint(body->transform, localCenter);
-	body->center0 = body->center;
 	tbKeepOriginVelocity(body, oldCenter);
 	tbComputeExtents(world, body);
 }

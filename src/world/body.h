@@ -72,7 +72,24 @@ typedef struct tbBody
 tbBody* tbGetBodyChecked(tbBodyId id, const char* function, tbWorld** world, bool mutating);
 tbBodyId tbMakeBodyId(const tbWorld* world, int bodyId);
 
+/// A body's mass properties as its shapes give them (tbUpdateBodyMass): none for a static or
+/// kinematic body; a dynamic body without mass weighs 1 kg at its origin.
+typedef struct tbBodyMass
+{
+	float mass, invMass;
+	float inertia, invInertia; ///< about the centre of mass
+	tbVec2 localCenter;
+} tbBodyMass;
+
+/// Reads the body's shapes and fixed rotation, writes nothing (snapshot.c predicts the stored
+/// mass with it).
+tbBodyMass tbComputeBodyMass(const tbWorld* world, const tbBody* body);
+/// Apply tbComputeBodyMass: the centre moves, the origin keeps its velocity, contacts restart.
 void tbUpdateBodyMass(tbWorld* world, tbBody* body);
+/// Extents used by continuous collision: the smallest distance from the centre of mass to the
+/// surface (a conservative "thickness") and the largest distance to any point of any shape, over
+/// the body's shapes in list order (writes nothing: snapshot.c predicts the stored values with it).
+void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtent, float* maxExtent);
 void tbWakeBody(tbWorld* world, tbBody* body);
 /// Close the holes bodies that left the awake set left in it; the step starts with it.
 void tbCompactAwakeSet(tbWorld* world);

@@ -205,52 +205,82 @@ static float tbTurnPad(float maxExtent, float turn)
 	return maxExtent * (sagitta + tbAbsFloat(turn) * t2 / 3.0f);
 }
 
-bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
+/// How a body's shapes sweep over the next step (tbComputeBodyShapeBoxes): each shape's tight box
+/// displaced by d, or its boxes at the start and the predicted end pose when turning, grown by pad;
+/// a re-made fat box is that sweep grown by margin.
+typedef struct tbShapeSweep
 {
-	bool moved = false;
-	float margin = body->type == tb_staticBody ? 0.0f
-											  : tbMinFloat(TB_AABB_MARGIN, TB_AABB_MARGIN_FRACTION * body->maxExtent);
-	tbVec2 d = tbVec2_zero;
-	float pad = 0.0f;
-	bool turning = false;
-	tbWorldTransform end = body->transform;
+	tbVec2 d;
+	float pad;
+	float margin;
+	bool turning;
+	tbWorldTransform end;
+} tbShapeSweep;
+
+static tbShapeSweep tbBodySweep(const tbWorld* world, const tbBody* body)
+{
+	tbShapeSweep s;
+	s.margin = body->type == tb_staticBody ? 0.0f : tbMinFloat(TB_AABB_MARGIN, TB_AABB_MARGIN_FRACTION * body->maxExtent);
+	s.d = tbVec2_zero;
+	s.pad = 0.0f;
+	s.turning = false;
+	s.end = body->transform;
 	if (body->type != tb_staticBody)
 	{
 		float dt = world->stepTime;
 		float cap = tbSpeculativeReach(body);
 		tbVec2 g = body->type == tb_dynamicBody ? tbMulSV(body->gravityScale, world->def.gravity) : tbVec2_zero;
-		d = tbMulSV(dt, tbMulAdd(body->linearVelocity, dt, g));
+		tbVec2 d = tbMulSV(dt, tbMulAdd(body->linearVelocity, dt, g));
 		float length = tbLength(d);
 		// NaN-safe: a non-finite displacement is replaced by none (the step rejects nothing here).
 		// That includes an infinite one (gravity × gravityScale beyond FLT_MAX), which scaled down
 		// to the reach would give 0 · ∞ = NaN in the box.
-		d = length <= cap ? d : (length > cap && length <= FLT_MAX ? tbMulSV(cap / length, d) : tbVec2_zero);
+		s.d = length <= cap ? d : (length > cap && length <= FLT_MAX ? tbMulSV(cap / length, d) : tbVec2_zero);
 		float turn = body->angularVelocity * dt;
 		float arc = tbAbsFloat(turn) * body->maxExtent;
-		pad = tbMinFloat(arc, cap);
+		s.pad = tbMinFloat(arc, cap);
 		// The margin is hysteresis for a body that stays inside its box for a while; one that moves
 		// farther than the margin in a step gets a new box every step anyway, and the margin only
 		// makes it overlap more boxes (bodies falling together, as in the washer, then keep many
 		// more contacts, for nothing; docs/methods.md, "Broad-phase boxes").
-		margin = length > margin ? 0.0f : margin;
+		s.margin = length > s.margin ? 0.0f : s.margin;
 		// A turn of at most half a radian whose arc is within the reach: bounded exactly (a larger
 		// one keeps the arc, which is then close to the exact bound anyway).
 		if (arc > TB_LINEAR_SLOP && arc <= cap && tbAbsFloat(turn) <= 0.5f)
 		{
-			turning = true;
-			end = tbPredictedTransform(body, d, turn);
-			pad = tbTurnPad(body->maxExtent, turn);
+			s.turning = true;
+			s.end = tbPredictedTransform(body, s.d, turn);
+			s.pad = tbTurnPad(body->maxExtent, turn);
 		}
 	}
+	return s;
+}
+
+/// The box a shape with tight box `aabb` sweeps over the next step.
+static tbAABB tbShapeSweepBox(const tbShape* shape, tbAABB aabb, const tbShapeSweep* s)
+{
+	return s->turning ? tbAABB_Fatten(tbAABB_Union(aabb, tbComputeShapeAABBInternal(shape, s->end)), s->pad)
+					  : tbSweepBox(aabb, s->d, s->pad);
+}
+
+tbAABB tbRemadeFatAABB(const tbWorld* world, const tbBody* body, const tbShape* shape)
+{
+	tbShapeSweep s = tbBodySweep(world, body);
+	return tbAABB_Fatten(tbShapeSweepBox(shape, shape->aabb, &s), s.margin);
+}
+
+bool tbComputeBodyShapeBoxes(const tbWorld* world, tbBody* body, bool forceMove)
+{
+	bool moved = false;
+	tbShapeSweep s = tbBodySweep(world, body);
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
 		tbShape* shape = world->shapes + id;
 		shape->aabb = tbComputeShapeAABBInternal(shape, body->transform);
-		tbAABB sweep = turning ? tbAABB_Fatten(tbAABB_Union(shape->aabb, tbComputeShapeAABBInternal(shape, end)), pad)
-							   : tbSweepBox(shape->aabb, d, pad);
+		tbAABB sweep = tbShapeSweepBox(shape, shape->aabb, &s);
 		if (shape->proxyKey != TB_NULL_INDEX && (forceMove || tbAABB_Contains(shape->fatAABB, sweep) == false))
 		{
-			shape->fatAABB = tbAABB_Fatten(sweep, margin);
+			shape->fatAABB = tbAABB_Fatten(sweep, s.margin);
 			shape->proxyMoved = true;
 			moved = true;
 		}
@@ -337,7 +367,7 @@ static bool tbCheckRadius(const char* f, const char* name, float radius)
 /// tbMakeBox) has edges shorter than that. Tolerances are relative to the polygon's size:
 /// an edge shorter than 1e-6 × size is a duplicate, and |sin| < 1e-6 between neighbouring edges is
 /// collinear; a normal must be unit (1e-3) and perpendicular to its edge (1e-3).
-static bool tbIsConvexPolygon(const tbPolygon* p)
+bool tbIsConvexPolygon(const tbPolygon* p)
 {
 	float size = 0.0f;
 	for (int i = 0; i < p->count; ++i)

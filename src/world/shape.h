@@ -67,6 +67,10 @@ _Static_assert(sizeof(((tbShape*)0)->chainSegment) == sizeof(((tbGeometry*)0)->c
 /// Tight world box of the shape placed by `transform`.
 tbAABB tbComputeShapeAABBInternal(const tbShape* shape, tbWorldTransform transform);
 
+/// The fat box the finalize stage makes for the shape now, from its body's pose and velocity, when
+/// the shape's sweep leaves its fat box (shape.c; a snapshot predicts a stored fat box with it).
+tbAABB tbRemadeFatAABB(const tbWorld* world, const tbBody* body, const tbShape* shape);
+
 /// The shape's world box enlarged by `extra` (m) on every side: the broad-phase (fat) box.
 tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, float extra);
 
@@ -78,6 +82,9 @@ tbShapeId tbMakeShapeId(const tbWorld* world, int shapeId);
 void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body);
 void tbDestroyShapeProxy(tbWorld* world, tbShape* shape);
 bool tbShouldShapesCollide(tbFilter a, tbFilter b);
+/// The polygon is strictly convex and counter-clockwise and its normals match its edges (reports
+/// nothing: tbCheckGeometry reports, snapshot.c checks an image's polygons with it).
+bool tbIsConvexPolygon(const tbPolygon* p);
 /// Check user geometry (finite, positive radii, valid polygon); reports an error naming `f`.
 bool tbCheckGeometry(const char* f, const tbGeometry* geometry);
 /// A surface material's values are usable (finite; friction, restitution, rolling resistance ≥ 0),

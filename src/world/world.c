@@ -429,6 +429,35 @@ static void tbFreeWorldArrays(tbWorld* w)
 	tbFreeChains(w);
 }
 
+void tbNoteGenerationPeaks(tbWorld* world)
+{
+	const uint16_t bases[4] = {world->bodyGenerationBase, world->shapeGenerationBase, world->jointGenerationBase,
+							   world->chainGenerationBase};
+	const uint16_t largest[4] = {
+		tbLargestGeneration(bases[0], world->bodies, world->bodyPool.highWater, sizeof(tbBody), offsetof(tbBody, generation)),
+		tbLargestGeneration(bases[1], world->shapes, world->shapePool.highWater, sizeof(tbShape),
+							offsetof(tbShape, generation)),
+		tbLargestGeneration(bases[2], world->joints, world->jointPool.highWater, sizeof(tbJoint),
+							offsetof(tbJoint, generation)),
+		tbLargestGeneration(bases[3], world->chains, world->chainPool.highWater, sizeof(tbChain),
+							offsetof(tbChain, generation))};
+	for (int k = 0; k < 4; ++k)
+	{
+		uint16_t peak = (uint16_t)(largest[k] - bases[k]);
+		world->generationPeaks[k] = peak > world->generationPeaks[k] ? peak : world->generationPeaks[k];
+	}
+}
+
+void tbFreeWorldContents(tbWorld* world)
+{
+	tbBroadPhase_Destroy(&world->broadPhase);
+	tbHashSet_Destroy(&world->pairSet);
+	tbFreeWorldArrays(world);
+	tbFree(world->snapshotNames, world->snapshotNamesSize);
+	world->snapshotNames = NULL;
+	world->snapshotNamesSize = 0;
+}
+
 void tbDestroyWorld(tbWorldId worldId)
 {
 	tbWorld* world = tbGetWorldChecked(worldId, "tbDestroyWorld");
@@ -441,17 +470,12 @@ void tbDestroyWorld(tbWorldId worldId)
 		return;
 	}
 	int slot = world->worldId;
-	s_bodyGenerations[slot] = tbLargestGeneration(world->bodyGenerationBase, world->bodies, world->bodyPool.highWater,
-												   sizeof(tbBody), offsetof(tbBody, generation));
-	s_shapeGenerations[slot] = tbLargestGeneration(world->shapeGenerationBase, world->shapes, world->shapePool.highWater,
-													sizeof(tbShape), offsetof(tbShape, generation));
-	s_jointGenerations[slot] = tbLargestGeneration(world->jointGenerationBase, world->joints, world->jointPool.highWater,
-												   sizeof(tbJoint), offsetof(tbJoint, generation));
-	s_chainGenerations[slot] = tbLargestGeneration(world->chainGenerationBase, world->chains, world->chainPool.highWater,
-												   sizeof(tbChain), offsetof(tbChain, generation));
-	tbBroadPhase_Destroy(&world->broadPhase);
-	tbHashSet_Destroy(&world->pairSet);
-	tbFreeWorldArrays(world);
+	tbNoteGenerationPeaks(world);
+	s_bodyGenerations[slot] = (uint16_t)(world->bodyGenerationBase + world->generationPeaks[0]);
+	s_shapeGenerations[slot] = (uint16_t)(world->shapeGenerationBase + world->generationPeaks[1]);
+	s_jointGenerations[slot] = (uint16_t)(world->jointGenerationBase + world->generationPeaks[2]);
+	s_chainGenerations[slot] = (uint16_t)(world->chainGenerationBase + world->generationPeaks[3]);
+	tbFreeWorldContents(world);
 	s_worlds[world->worldId] = NULL;
 	tbFree(world, (int)sizeof(tbWorld));
 }

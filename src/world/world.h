@@ -66,6 +66,10 @@ typedef struct tbWorld
 	uint16_t shapeGenerationBase;
 	uint16_t jointGenerationBase;
 	uint16_t chainGenerationBase;
+	/// The largest generations this world handed out, counted from the bases (body, shape, joint,
+	/// chain), as they were before a restore took the slots back to older ones
+	/// (tbNoteGenerationPeaks): the next world in the slot starts past them too.
+	uint16_t generationPeaks[4];
 	bool locked; ///< true during the step: the API refuses every change
 	/// Query callbacks running (nested queries count): the API refuses what would change the
 	/// broad phase being walked (create, destroy, SetTransform, SetType, filters, collideConnected)
@@ -131,10 +135,20 @@ typedef struct tbWorld
 	tbProfile profile;
 	tbCounters counters;
 	void* userData;
+	/// The names of the bodies of a restored snapshot (snapshot.c): copies the world owns, where a
+	/// body's name is otherwise the game's string (tbBodyDef::name, not copied).
+	char* snapshotNames;
+	int snapshotNamesSize;
 } tbWorld;
 
 /// The world for an id, or NULL (reports an error naming `function` when the id is stale or null).
 tbWorld* tbGetWorldChecked(tbWorldId id, const char* function);
+/// Free everything a world holds but the world itself (tbDestroyWorld; a snapshot's restore frees the
+/// state it replaces with it).
+void tbFreeWorldContents(tbWorld* world);
+/// Remember the largest generations the world's body, shape, joint and chain slots hold (a restore
+/// is about to replace them with older ones).
+void tbNoteGenerationPeaks(tbWorld* world);
 /// The world by index (no checks).
 tbWorld* tbGetWorldFromIndex(int index);
 
