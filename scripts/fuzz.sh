@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Build the libFuzzer harnesses (clang, ASan + UBSan) and run each for a bounded time.
 #   scripts/fuzz.sh [SECONDS_PER_HARNESS] [HARNESS...]
-# FUZZ_SEED=N fixes libFuzzer's random seed (the test command uses 1, so a CI run explores the
-# same inputs as the last one did, and a red run can be reproduced).
+# FUZZ_SEED=N fixes libFuzzer's random seed (the test command uses 1): the order of the inputs is
+# fixed, how many run in the time depends on the machine, so a longer run replays a red one.
 # FUZZ_JOBS=N runs N harnesses at a time (default 2: the CI machine has two cores, and each
 # harness is one process on one core).
-# Defaults: 60 s each for fuzz_collision, fuzz_world, fuzz_scene, fuzz_api and fuzz_decompose.
+# Defaults: 60 s each for fuzz_collision, fuzz_world, fuzz_scene, fuzz_api, fuzz_decompose and
+# fuzz_snapshot.
 # New inputs go to build/fuzz/corpus/<harness>; the committed seeds in fuzz/corpus/<harness> are
 # read, never written. Each harness writes its log to build/fuzz/<harness>.log, printed whole once
 # the harness is done (so the logs of harnesses running side by side do not interleave). A finding
@@ -17,7 +18,7 @@ seconds="${1:-60}"
 shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
-	harnesses=(fuzz_collision fuzz_world fuzz_scene fuzz_api fuzz_decompose)
+	harnesses=(fuzz_collision fuzz_world fuzz_scene fuzz_api fuzz_decompose fuzz_snapshot)
 fi
 jobs="${FUZZ_JOBS:-2}"
 if ! command -v clang >/dev/null; then
