@@ -2,7 +2,7 @@
 # Build Tumble with AddressSanitizer, UndefinedBehaviorSanitizer and warnings as errors, then run
 # every test under ctest; then the large-world build (double-precision positions) and its tests;
 # then the AVX2 build's bit-identity tests (where the processor has AVX2); then run each fuzz
-# harness for 50 s (scripts/fuzz.sh, clang libFuzzer), so that a change that makes a harness crash
+# harness for 60 s (scripts/fuzz.sh, clang libFuzzer), so that a change that makes a harness crash
 # fails here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,4 +25,4 @@ if grep -qw avx2 /proc/cpuinfo 2>/dev/null; then
 else
 	echo "run-tests: no AVX2 on this processor: the TUMBLE_AVX2 build is not tested"
 fi
-FUZZ_SEED=1 scripts/fuzz.sh 50
+FUZZ_SEED=1 scripts/fuzz.sh 60
