@@ -597,6 +597,7 @@ typedef struct tbProfile
 	float finalize;	  ///< sleep timers, bounding boxes, proxies moved, move events
 	float events;	  ///< hit events gathered (0 when no contact enables them)
 	float sleep;	  ///< islands put to sleep
+	float sensors;	  ///< sensor overlaps on the final poses, sensor events (0 with no sensor contact)
 
 	// The parts of `solve`, named as Box2D v3.2's profile names them so that the two compare part
 	// by part; the sub-step parts are summed over the sub-steps. With workers the sub-step parts

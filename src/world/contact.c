@@ -155,6 +155,7 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	if (a->isSensor || b->isSensor)
 	{
 		contact->flags |= tb_contactSensor;
+		world->sensorContactCount += 1;
 	}
 	if (a->enableContactEvents || b->enableContactEvents)
 	{
@@ -240,6 +241,7 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 		tbWakeBody(world, world->bodies + contact->edges[1].bodyId);
 	}
 	world->hitContactCount -= (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
+	world->sensorContactCount -= (contact->flags & tb_contactSensor) != 0 ? 1 : 0;
 	contact->inUse = false;
 	contact->flags = 0;
 	contact->generation += 1;
@@ -821,6 +823,7 @@ static void tbCountCollideResult(tbWorld* world, uint32_t result)
 	world->counters.satManifolds += (result & tb_collideSAT) != 0 ? 1 : 0;
 }
 
+
 int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 {
 	uint32_t result = tbCollideContact(world, contact);
@@ -1003,7 +1006,13 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 		const tbShape* b = world->shapes + contact->shapeIdB;
 		bool overlap = tbBroadPhase_TestOverlap(bp, a->proxyKey, b->proxyKey);
 		uint32_t result = tb_collideDestroy;
-		if (overlap)
+		if (overlap && (contact->flags & tb_contactSensor) != 0)
+		{
+			// A sensor's overlap is decided from the poses this step makes (tbSensorStage); here
+			// only whether the pair lives on.
+			result = (contact->flags & tb_contactReported) != 0 ? (uint32_t)tb_collideReported : 0u;
+		}
+		else if (overlap)
 		{
 			// The flags the caller's serial walk needs ride along, so it need not load the contact.
 			result = tbCollideContact(world, contact);
@@ -1151,6 +1160,18 @@ void tbCollideStage(tbWorld* world)
 	}
 }
 
+/// Sensor events by sensor shape, then visitor shape (slot indices: unique among live shapes).
+static int tbCompareSensorEvents(const void* a, const void* b)
+{
+	const tbSensorBeginTouchEvent* x = a;
+	const tbSensorBeginTouchEvent* y = b;
+	if (x->sensorShapeId.index1 != y->sensorShapeId.index1)
+	{
+		return x->sensorShapeId.index1 < y->sensorShapeId.index1 ? -1 : 1;
+	}
+	return x->visitorShapeId.index1 < y->visitorShapeId.index1 ? -1 : (x->visitorShapeId.index1 > y->visitorShapeId.index1);
+}
+
 /// Hit events: one per impact, in the step its contact begins to touch or later. A solved contact
 /// whose point approached faster than the world's threshold and took a normal impulse holds that
 /// impact (the fastest seen, kept in contact->hitSpeed); it is reported once the contact is within
@@ -1194,6 +1215,47 @@ void tbReportHitEvents(tbWorld* world)
 			TB_ARRAY_PUSH(world->events.hitEvents, world->events.hitCount, world->events.hitCapacity, event);
 		}
 	}
+}
+
+/// Sensor events in the step their overlap changes (Box2D v3.2 reports them "without delay"):
+/// the collide stage runs on the poses the last step left, so a sensor judged there would see an
+/// overlap one step after the step that made it. Here, after the poses are final, each sensor
+/// contact of the step is collided again and its begin or end event pushed. A sensor never wakes
+/// a body (v3.2's rule too). The step's sensor events are put in (sensor, visitor) order, so that
+/// they do not depend on contact ids, which differ between engines and after a snapshot.
+void tbSensorStage(tbWorld* world)
+{
+	if (world->sensorContactCount == 0)
+	{
+		return; // no sensor in contact with anything: nothing to walk
+	}
+	int beginFirst = world->events.sensorBeginCount;
+	int endFirst = world->events.sensorEndCount;
+	const int* ids = world->cache.stepContacts;
+	for (int i = 0; i < world->cache.stepContactCount; ++i)
+	{
+		tbContact* contact = world->contacts + ids[i];
+		if ((contact->flags & tb_contactSensor) == 0)
+		{
+			continue;
+		}
+		uint32_t result = tbCollideContact(world, contact);
+		tbCountCollideResult(world, result);
+		if (result & tb_collideBeginEvent)
+		{
+			tbPushBeginEvent(world, contact);
+		}
+		else if (result & tb_collideEndEvent)
+		{
+			tbPushEndEvent(world, contact);
+		}
+	}
+	// Begin and end events share their layout (two shape ids): one comparator serves both.
+	_Static_assert(sizeof(tbSensorBeginTouchEvent) == sizeof(tbSensorEndTouchEvent), "sensor events differ in layout");
+	qsort(world->events.sensorBeginEvents + beginFirst, (size_t)(world->events.sensorBeginCount - beginFirst),
+		  sizeof(tbSensorBeginTouchEvent), tbCompareSensorEvents);
+	qsort(world->events.sensorEndEvents + endFirst, (size_t)(world->events.sensorEndCount - endFirst),
+		  sizeof(tbSensorEndTouchEvent), tbCompareSensorEvents);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -21,7 +21,7 @@ enum tbContactFlags
 {
 	tb_contactTouching = 0x01,		///< the manifold has points (solver, islands, waking); sensors: overlap
 	tb_contactSensor = 0x02,		///< one shape is a sensor: overlap only, no response
-	tb_contactEnableEvents = 0x04,	///< both shapes want begin/end events
+	tb_contactEnableEvents = 0x04,	///< either shape wants begin/end events
 	tb_contactEnableHits = 0x08,	///< either shape wants hit events
 	/// Begin/end events and counters.touchingCount: a point's separation is below the fixed
 	/// TB_SPECULATIVE_DISTANCE (sensors: the shapes overlap). The manifold itself may hold points
@@ -138,3 +138,5 @@ void tbUpdatePairsStage(tbWorld* world);
 void tbCollideStage(tbWorld* world);
 /// After the solve: the impacts of the step become hit events.
 void tbReportHitEvents(tbWorld* world);
+/// The sensor stage: sensor contacts collided on the step's final poses, their events.
+void tbSensorStage(tbWorld* world);

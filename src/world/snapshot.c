@@ -2537,6 +2537,7 @@ static bool tbReadContacts(tbDecoder* d)
 		const tbContact* contact = world->contacts + i;
 		world->cache.contactBodies[i] = (tbBodyPair){contact->edges[0].bodyId, contact->edges[1].bodyId};
 		world->hitContactCount += (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
+		world->sensorContactCount += (contact->flags & tb_contactSensor) != 0 ? 1 : 0;
 		if (tbHashSet_Add(&world->pairSet, tbShapePairKey(contact->shapeIdA, contact->shapeIdB)))
 		{
 			tbFail(r, "two contacts join shapes %d and %d", contact->shapeIdA, contact->shapeIdB);

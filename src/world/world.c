@@ -598,7 +598,8 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	if (timeStep == 0.0f)
 	{
 		tbSolveStage(world, timeStep, subStepCount); // solves nothing; clears the last step's joint events
-		tbFinishStep(world, stepTicks);				 // a pause: no body moves, sleeps or reports a move
+		tbSensorStage(world);
+		tbFinishStep(world, stepTicks); // a pause: no body moves, sleeps or reports a move
 		return true;
 	}
 	tbSolveStage(world, timeStep, subStepCount);
@@ -609,6 +610,8 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	world->profile.finalize = tbGetMillisecondsAndReset(&t);
 	tbReportHitEvents(world);
 	world->profile.events = tbGetMillisecondsAndReset(&t);
+	tbSensorStage(world);
+	world->profile.sensors = tbGetMillisecondsAndReset(&t);
 	tbSleepStage(world, timeStep);
 	world->profile.sleep = tbGetMillisecondsAndReset(&t);
 	if (beyondBounds > 0)

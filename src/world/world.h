@@ -104,6 +104,7 @@ typedef struct tbWorld
 	int staticProxyCount;	///< broad-phase proxies of static shapes (the rest are movable)
 	int linearLockCount;	///< bodies with a linear motion lock (the solver skips the locks when 0)
 	int hitContactCount;	///< contacts with tb_contactEnableHits (hit events are gathered only when > 0)
+	int sensorContactCount; ///< contacts with tb_contactSensor (the sensor stage runs only when > 0)
 
 	tbHashSet pairSet; ///< shape pairs that have a contact
 	tbBroadPhase broadPhase;
