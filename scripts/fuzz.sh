@@ -54,9 +54,12 @@ start() {
 	[ -n "${FUZZ_SEED:-}" ] && seed=(-seed="$FUZZ_SEED")
 	local options
 	read -r -a options <<<"$(extra_options "$harness")"
+	# The committed seeds, where the harness has any (libFuzzer stops on a missing directory).
+	local seeds=()
+	[ -d "fuzz/corpus/$harness" ] && seeds=("../../fuzz/corpus/$harness")
 	echo "== $harness: started for ${seconds} s (log: build/fuzz/$harness.log)"
 	(cd build/fuzz && exec "./fuzz/$harness" -max_total_time="$seconds" "${seed[@]}" "${options[@]}" \
-		-print_final_stats=1 -artifact_prefix="$harness-" "corpus/$harness" "../../fuzz/corpus/$harness") \
+		-print_final_stats=1 -artifact_prefix="$harness-" "corpus/$harness" "${seeds[@]}") \
 		>"build/fuzz/$harness.log" 2>&1 &
 	pids+=($!)
 	names+=("$harness")
