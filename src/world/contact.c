@@ -249,9 +249,6 @@ void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies)
 	tbIdPool_Free(&world->contactPool, contactId);
 }
 
-/// Should a broad-phase pair become a contact? Same body, no dynamic body (unless one shape is a
-/// sensor: a kinematic door or lift passing a static or kinematic sensor is reported), filtered
-/// out, or an existing contact: no. Static proxies never pair with each other.
 /// What the narrow phase of one contact found (tbCollideContact), acted on in contact order.
 enum tbCollideResult
 {
@@ -296,6 +293,10 @@ static bool tbIsSegmentKind(tbShapeType type)
 	return type == tb_segmentShape || type == tb_chainSegmentShape;
 }
 
+/// Should a broad-phase pair become a contact? Same body, no dynamic body (unless a shape is a
+/// sensor: a kinematic door or lift passing a static or kinematic sensor is reported, and a sensor
+/// carried through another sees it), filtered out, or an existing contact: no. Static proxies never
+/// pair with each other.
 static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeIdB)
 {
 	const tbShape* a = world->shapes + shapeIdA;
@@ -310,7 +311,7 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	}
 	const tbBody* bodyA = world->bodies + a->bodyId;
 	const tbBody* bodyB = world->bodies + b->bodyId;
-	if (bodyA->type != tb_dynamicBody && bodyB->type != tb_dynamicBody && a->isSensor == b->isSensor)
+	if (bodyA->type != tb_dynamicBody && bodyB->type != tb_dynamicBody && a->isSensor == false && b->isSensor == false)
 	{
 		return false;
 	}
@@ -1308,10 +1309,15 @@ static int tbCollectContacts(const tbWorld* world, const tbBody* body, int shape
 		{
 			continue;
 		}
+		int visitorId = contact->shapeIdA == shapeId ? contact->shapeIdB : contact->shapeIdA;
+		if (sensors && tbSensorEventsEnabled(world, shapeId, visitorId) == false)
+		{
+			continue; // a sensor lists the visitors it reports (Box2D v3.2: both shapes enable sensor events)
+		}
 		int i = count++;
 		if (sensors)
 		{
-			tbShapeId visitor = tbMakeShapeId(world, contact->shapeIdA == shapeId ? contact->shapeIdB : contact->shapeIdA);
+			tbShapeId visitor = tbMakeShapeId(world, visitorId);
 			for (; i > 0 && visitors[i - 1].index1 > visitor.index1; --i)
 			{
 				visitors[i] = visitors[i - 1];
@@ -1442,32 +1448,35 @@ tbContactData tbContact_GetData(tbContactId contactId)
 // ---------------------------------------------------------------------------------------------
 // Event flags changed at run time
 
-/// The event flags a contact takes from its shapes (as at creation, tbCreateContact).
-static void tbRefreshContactEventFlags(tbWorld* world, tbContact* contact)
+/// The hit-event flag a contact takes from its shapes, read again when a shape's changes.
+static void tbRefreshContactHitFlag(tbWorld* world, tbContact* contact)
 {
 	const tbShape* a = world->shapes + contact->shapeIdA;
 	const tbShape* b = world->shapes + contact->shapeIdB;
 	world->hitContactCount -= (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
-	contact->flags &= ~(uint32_t)(tb_contactEnableEvents | tb_contactEnableHits | tb_contactEnablePreSolve);
-	contact->flags |= a->enableContactEvents || b->enableContactEvents ? (uint32_t)tb_contactEnableEvents : 0u;
+	contact->flags &= ~(uint32_t)tb_contactEnableHits;
 	contact->flags |= a->enableHitEvents || b->enableHitEvents ? (uint32_t)tb_contactEnableHits : 0u;
-	contact->flags |= a->enablePreSolveEvents || b->enablePreSolveEvents ? (uint32_t)tb_contactEnablePreSolve : 0u;
 	world->hitContactCount += (contact->flags & tb_contactEnableHits) != 0 ? 1 : 0;
 }
 
+/// Box2D v3.2's rules for a flag changed at run time: contact and pre-solve events are decided
+/// when a contact is made (tbCreateContact), so a contact that began reporting also reports its
+/// end, and one made before pre-solve was enabled is not passed to the callback; sensor events are
+/// read whenever overlaps are judged; hit events when an impact is reported, so the contacts of
+/// the shape take the new hit flag now.
 void tbSetShapeEventFlag(tbWorld* world, tbShape* shape, tbShapeEventKind kind, bool flag)
 {
 	switch (kind)
 	{
 		case tb_shapeEventContacts:
-			shape->enableContactEvents = flag;
-			break;
+			shape->enableContactEvents = flag; // contacts made from now on
+			return;
 		case tb_shapeEventHits:
 			shape->enableHitEvents = flag;
 			break;
 		case tb_shapeEventPreSolve:
-			shape->enablePreSolveEvents = flag;
-			break;
+			shape->enablePreSolveEvents = flag; // contacts made from now on
+			return;
 		default:
 			shape->enableSensorEvents = flag; // read when events are made: no contact holds it
 			return;
@@ -1480,7 +1489,7 @@ void tbSetShapeEventFlag(tbWorld* world, tbShape* shape, tbShapeEventKind kind, 
 		key = contact->edges[key & 1].nextKey;
 		if (contact->shapeIdA == shapeId || contact->shapeIdB == shapeId)
 		{
-			tbRefreshContactEventFlags(world, contact);
+			tbRefreshContactHitFlag(world, contact);
 		}
 	}
 }

@@ -1,0 +1,21 @@
+# Run a program and compare what it prints with a file, or with what a second program prints.
+#   cmake -DPROGRAM=exe -DEXPECTED=file.txt -P compare.cmake
+#   cmake -DPROGRAM=exe -DPEER=exe -P compare.cmake
+execute_process(COMMAND ${PROGRAM} OUTPUT_VARIABLE output RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+	message(FATAL_ERROR "${PROGRAM} ended with status ${status}; it printed:\n${output}")
+endif()
+if(PEER)
+	execute_process(COMMAND ${PEER} OUTPUT_VARIABLE expected RESULT_VARIABLE peerStatus)
+	if(NOT peerStatus EQUAL 0)
+		message(FATAL_ERROR "${PEER} ended with status ${peerStatus}")
+	endif()
+	set(source "${PEER}")
+else()
+	file(READ ${EXPECTED} expected)
+	set(source "${EXPECTED}")
+endif()
+if(NOT output STREQUAL expected)
+	message(FATAL_ERROR "${PROGRAM} printed:\n${output}\nBox2D v3.2 prints (${source}):\n${expected}")
+endif()
+message(STATUS "same output as Box2D v3.2 (${source})")
