@@ -1253,10 +1253,17 @@ void tbSensorStage(tbWorld* world)
 	}
 	// Begin and end events share their layout (two shape ids): one comparator serves both.
 	_Static_assert(sizeof(tbSensorBeginTouchEvent) == sizeof(tbSensorEndTouchEvent), "sensor events differ in layout");
-	qsort(world->events.sensorBeginEvents + beginFirst, (size_t)(world->events.sensorBeginCount - beginFirst),
-		  sizeof(tbSensorBeginTouchEvent), tbCompareSensorEvents);
-	qsort(world->events.sensorEndEvents + endFirst, (size_t)(world->events.sensorEndCount - endFirst),
-		  sizeof(tbSensorEndTouchEvent), tbCompareSensorEvents);
+	// Sorted only when there are two or more: an array never pushed to is NULL.
+	if (world->events.sensorBeginCount - beginFirst > 1)
+	{
+		qsort(world->events.sensorBeginEvents + beginFirst, (size_t)(world->events.sensorBeginCount - beginFirst),
+			  sizeof(tbSensorBeginTouchEvent), tbCompareSensorEvents);
+	}
+	if (world->events.sensorEndCount - endFirst > 1)
+	{
+		qsort(world->events.sensorEndEvents + endFirst, (size_t)(world->events.sensorEndCount - endFirst),
+			  sizeof(tbSensorEndTouchEvent), tbCompareSensorEvents);
+	}
 }
 
 // ---------------------------------------------------------------------------------------------
