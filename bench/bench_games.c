@@ -8,7 +8,7 @@
 // is the median over the rounds, and the ratio is Tumble's median over v3's.
 //
 //   tumble-bench-games [--steps N] [--rounds R] [--scene NAME[,NAME...]] [--csv FILE]
-//                      [--memory-csv FILE] [--no-memory] [--tumble-only] [--list]
+//                      [--memory-csv FILE] [--no-memory] [--tumble-only] [--list] [--trace NAME]
 //   tumble-bench-games --sweep [--sweep-max N] [--rounds R] [--csv FILE]
 //
 // --scene keeps the scenes whose names contain one of the given words. After the table comes a
@@ -316,22 +316,30 @@ static int RunSweep(const GameEngine** engines, int engineCount, const Options* 
 			{
 				int e = (k + r) % engineCount;
 				const GameScene* scene = engines[e]->sweep;
-				GameOptions options = {sizes[i], NULL};
-				Game* game = scene->create(&options);
-				double start = GameClockSeconds();
-				for (int s = 0; s < awakeSteps; ++s)
+				// Small worlds step in microseconds: they are made and timed several times a round.
+				int reps = sizes[i] >= 300 ? 1 : (300 / sizes[i] < 20 ? 300 / sizes[i] : 20);
+				double awakeSeconds = 0.0, asleepSeconds = 0.0;
+				for (int rep = 0; rep < reps; ++rep)
 				{
-					scene->step(game);
+					GameOptions options = {sizes[i], NULL};
+					Game* game = scene->create(&options);
+					double start = GameClockSeconds();
+					for (int s = 0; s < awakeSteps; ++s)
+					{
+						scene->step(game);
+					}
+					awakeSeconds += GameClockSeconds() - start;
+					left[i][e] = engines[e]->settle(game, GAME_SETTLE_STEPS);
+					start = GameClockSeconds();
+					for (int s = 0; s < asleepSteps; ++s)
+					{
+						scene->step(game);
+					}
+					asleepSeconds += GameClockSeconds() - start;
+					scene->destroy(game);
 				}
-				awake[i][e][r] = 1e6 * (GameClockSeconds() - start) / awakeSteps;
-				left[i][e] = engines[e]->settle(game, GAME_SETTLE_STEPS);
-				start = GameClockSeconds();
-				for (int s = 0; s < asleepSteps; ++s)
-				{
-					scene->step(game);
-				}
-				asleep[i][e][r] = 1e6 * (GameClockSeconds() - start) / asleepSteps;
-				scene->destroy(game);
+				awake[i][e][r] = 1e6 * awakeSeconds / (reps * awakeSteps);
+				asleep[i][e][r] = 1e6 * asleepSeconds / (reps * asleepSteps);
 			}
 		}
 		fprintf(stderr, "sweep round %d of %d done\n", r + 1, o->rounds);
@@ -355,10 +363,58 @@ static int RunSweep(const GameEngine** engines, int engineCount, const Options* 
 	return 0;
 }
 
+// --trace NAME: the end state of one scene every 60 frames on each engine, side by side (untimed;
+// for checking that a scene plays the same game on both engines).
+static int Trace(const GameEngine** engines, int engineCount, const char* name, int steps)
+{
+	int s = 0;
+	while (s < engines[0]->sceneCount && strcmp(engines[0]->scenes[s].name, name) != 0)
+	{
+		++s;
+	}
+	if (s == engines[0]->sceneCount)
+	{
+		fprintf(stderr, "no scene %s (see --list)\n", name);
+		return 1;
+	}
+	Game* games[MAX_ENGINES];
+	TaskSystem* tasks = TaskSystem_Create(2);
+	for (int e = 0; e < engineCount; ++e)
+	{
+		GameOptions options = {engines[e]->scenes[s].param, tasks};
+		games[e] = engines[e]->scenes[s].create(&options);
+	}
+	for (int step = 0; step <= steps; ++step)
+	{
+		if (step % 60 == 0)
+		{
+			printf("%5d", step);
+			for (int e = 0; e < engineCount; ++e)
+			{
+				GameStats st = engines[e]->scenes[s].stats(games[e]);
+				printf(" | %s awake %d touching %d events %lld at %.2f, %.2f", engines[e]->name, st.awake, st.touching,
+					   (long long)st.events, st.x, st.y);
+			}
+			printf("\n");
+		}
+		for (int e = 0; e < engineCount && step < steps; ++e)
+		{
+			engines[e]->scenes[s].step(games[e]);
+		}
+	}
+	for (int e = 0; e < engineCount; ++e)
+	{
+		engines[e]->scenes[s].destroy(games[e]);
+	}
+	TaskSystem_Destroy(tasks);
+	return 0;
+}
+
 int main(int argc, char** argv)
 {
 	Options o = {0, 3, NULL, NULL, NULL, true, false, false, 20000};
 	bool list = false;
+	const char* trace = NULL;
 	for (int i = 1; i < argc; ++i)
 	{
 		const char* a = argv[i];
@@ -399,6 +455,10 @@ int main(int argc, char** argv)
 		{
 			o.sweep = true;
 		}
+		else if (strcmp(a, "--trace") == 0 && next != NULL)
+		{
+			trace = argv[++i];
+		}
 		else if (strcmp(a, "--list") == 0)
 		{
 			list = true;
@@ -431,6 +491,10 @@ int main(int argc, char** argv)
 		}
 		return 0;
 	}
+	if (trace != NULL)
+	{
+		return Trace(engines, engineCount, trace, o.steps > 0 ? o.steps : 600);
+	}
 	// Hooks first: every allocation either engine makes goes through them, so each block is freed
 	// by the hook that made it.
 	for (int e = 0; e < engineCount; ++e)
@@ -443,6 +507,7 @@ int main(int argc, char** argv)
 		printf(" %s", engines[e]->name);
 	}
 	printf("; frame 1/60 s, 4 sub-steps, sleep on\n");
+	fflush(stdout);
 	if (o.sweep)
 	{
 		return RunSweep(engines, engineCount, &o);
