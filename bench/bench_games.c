@@ -147,7 +147,12 @@ static const char* CheckStates(const GameScene* scene, const GameStats* t, const
 		}
 	}
 #undef ADD
-	return used == 0 ? "ok" : text;
+	if (used == 0)
+	{
+		return "ok";
+	}
+	text[(used < size ? used : size) - 1] = '\0'; // the last word's space (or the end of a full buffer)
+	return text;
 }
 
 static void Usage(void)
@@ -304,7 +309,7 @@ static int RunSweep(const GameEngine** engines, int engineCount, const Options* 
 	{
 		sizeCount = (int)(sizeof(sizes) / sizeof(sizes[0])),
 		awakeSteps = 120,
-		asleepSteps = 60
+		asleepSteps = 600
 	};
 	double awake[sizeCount][MAX_ENGINES][MAX_ROUNDS], asleep[sizeCount][MAX_ENGINES][MAX_ROUNDS];
 	int left[sizeCount][MAX_ENGINES];
