@@ -194,14 +194,14 @@ static int RunScenes(const GameEngine** engines, int engineCount, const Options*
 	FILE* csv = o->csv != NULL ? fopen(o->csv, "w") : NULL;
 	if (csv != NULL)
 	{
-		fprintf(csv, "scene,steps,rounds,tumble_us,box2d3_us,ratio,bodies_tumble,bodies_box2d3,awake_tumble,awake_box2d3,"
+		fprintf(csv, "scene,steps,rounds,tumble_us,box2d3_us,ratio,ratio_low,ratio_high,bodies_tumble,bodies_box2d3,awake_tumble,awake_box2d3,"
 					 "touching_tumble,touching_box2d3,joints_tumble,joints_box2d3,events_tumble,events_box2d3,"
 					 "x_tumble,y_tumble,x_box2d3,y_box2d3,check\n");
 	}
 	printf("Game-scale scenes: µs per step, median of %d rounds (engines interleaved in one process); Tumble ÷ v3: "
 		   "median of the rounds' ratios\n\n",
 		   o->rounds);
-	printf("| scene | steps | Tumble µs | v3.2 µs | Tumble ÷ v3 | end state |\n|---|---|---|---|---|---|\n");
+	printf("| scene | steps | Tumble µs | v3.2 µs | Tumble ÷ v3 | rounds' ratios | end state |\n|---|---|---|---|---|---|---|\n");
 	for (int s = 0; s < sceneCount; ++s)
 	{
 		const GameScene* scene = first->scenes + s;
@@ -227,20 +227,27 @@ static int RunScenes(const GameEngine** engines, int engineCount, const Options*
 			ratios[r] = engineCount > 1 ? T(s, 0, r) / T(s, 1, r) : NAN;
 		}
 		double ratio = Median(ratios, o->rounds);
+		double low = ratios[0], high = ratios[0]; // the rounds' spread, to read the median against
+		for (int r = 1; r < o->rounds; ++r)
+		{
+			low = fmin(low, ratios[r]);
+			high = fmax(high, ratios[r]);
+		}
 		if (engineCount > 1)
 		{
-			printf("| %s | %d | %.2f | %.2f | **%.2f** | %s |\n", scene->name, steps, median[0], median[1], ratio, check);
+			printf("| %s | %d | %.2f | %.2f | **%.2f** | %.2f–%.2f | %s |\n", scene->name, steps, median[0], median[1], ratio, low,
+				   high, check);
 		}
 		else
 		{
-			printf("| %s | %d | %.2f | — | — | — |\n", scene->name, steps, median[0]);
+			printf("| %s | %d | %.2f | — | — | — | — |\n", scene->name, steps, median[0]);
 		}
 		if (csv != NULL)
 		{
 			GameStats none = {0, 0, 0, 0, 0, NAN, NAN};
 			const GameStats* w = v != NULL ? v : &none;
-			fprintf(csv, "%s,%d,%d,%.4f,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%d,%d,%lld,%lld,%.4f,%.4f,%.4f,%.4f,%s\n", scene->name, steps,
-					o->rounds, median[0], median[1], ratio, t->bodies, w->bodies, t->awake, w->awake, t->touching, w->touching,
+			fprintf(csv, "%s,%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%d,%d,%lld,%lld,%.4f,%.4f,%.4f,%.4f,%s\n", scene->name,
+					steps, o->rounds, median[0], median[1], ratio, low, high, t->bodies, w->bodies, t->awake, w->awake, t->touching, w->touching,
 					t->joints, w->joints, (long long)t->events, (long long)w->events, t->x, t->y, w->x, w->y, check);
 		}
 	}
