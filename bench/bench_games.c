@@ -201,7 +201,7 @@ static int RunScenes(const GameEngine** engines, int engineCount, const Options*
 	printf("Game-scale scenes: µs per step, median of %d rounds (engines interleaved in one process); Tumble ÷ v3: "
 		   "median of the rounds' ratios\n\n",
 		   o->rounds);
-	printf("| scene | steps | Tumble µs | v3.2 µs | Tumble ÷ v3 | rounds' ratios | end state |\n|---|---|---|---|---|---|---|\n");
+	printf("| scene | steps | Tumble µs | v3.2 µs | Tumble ÷ v3 | range over rounds | end state |\n|---|---|---|---|---|---|---|\n");
 	for (int s = 0; s < sceneCount; ++s)
 	{
 		const GameScene* scene = first->scenes + s;

@@ -224,7 +224,7 @@ awk -F, 'BEGIN { name["awake_only"] = "10 awake boxes alone"; name["with_10000_s
 # when its CSVs are there (a results folder from before the program has none).
 [[ -s "$RESULTS/games.csv" ]] && awk -F, 'function f(v) { return v == "nan" || v == "-nan" ? "—" : sprintf("%.2f", v) }
 	function commas(n) { n = sprintf("%d", n); while (n ~ /[0-9][0-9][0-9][0-9]/) sub(/[0-9][0-9][0-9]$/, ",&", n); return n }
-	NR == 1 { print "| scene (steps) | Tumble µs | v3.2 µs | **Tumble ÷ v3** | rounds' ratios | bodies | awake Tumble / v3 | touching Tumble / v3 | end-state check |"
+	NR == 1 { print "| scene (steps) | Tumble µs | v3.2 µs | **Tumble ÷ v3** | range over rounds | bodies | awake Tumble / v3 | touching Tumble / v3 | end-state check |"
 		print "|---|---|---|---|---|---|---|---|---|" }
 	NR > 1 { printf "| %s (%s) | %s | %s | **%s** | %s–%s | %s | %s / %s | %s / %s | %s |\n", $1, commas($2), f($4), f($5), f($6), f($7), f($8),
 		commas($9), commas($11), commas($12), commas($13), commas($14), $23 }' "$RESULTS/games.csv" >"$RESULTS/games.md"
