@@ -111,6 +111,7 @@ struct Game
 	BodyId ground;
 	void* taskSystem;
 	float rollingResistance; // of the round mixed bodies
+	int workers;			 // the many-worlds scene: each world's worker count
 	GameStats batchStats; // the many-worlds scene: batches already destroyed
 };
 
@@ -955,8 +956,7 @@ static Game* CreateWorlds(const GameOptions* options, int workers)
 {
 	Game* g = NewGame(8, options);
 	g->worlds = calloc(WORLD_BATCH, sizeof(WorldId));
-	g->param = options->param;
-	g->jointCount = workers; // carries the worker count to run (no scene here has joints)
+	g->workers = workers;
 	return g;
 }
 
@@ -980,8 +980,7 @@ static void StepWorlds(Game* g)
 
 static double RunWorlds(Game* g, int steps)
 {
-	int workers = g->jointCount;
-	g->jointCount = 0;
+	int workers = g->workers;
 	double seconds = 0.0;
 	for (int first = 0; first < g->param; first += WORLD_BATCH)
 	{
