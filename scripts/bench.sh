@@ -49,7 +49,7 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 	cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DTUMBLE_SANITIZE=OFF \
 		-DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_TOOLS=OFF -DTUMBLE_BUILD_SAMPLES=OFF -DTUMBLE_BUILD_BENCH=ON \
 		"${PEER_ARGS[@]}" >/dev/null
-	cmake --build "$BUILD_DIR" -j 2 --target tumble-bench tumble-bench-broadphase >/dev/null
+	cmake --build "$BUILD_DIR" -j 2 --target tumble-bench tumble-bench-broadphase tumble-bench-games >/dev/null
 	BENCH="$BUILD_DIR/bench/tumble-bench"
 	quiet() { grep --line-buffered -v '^Initializing cpSpace\|^Compile with' || true; }
 
@@ -81,6 +81,10 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 	"$BENCH" tunnel-chart --csv "$RESULTS/tunnel.csv" 2>&1 | quiet >/dev/null
 	echo "== broad-phase chart"
 	"$BUILD_DIR/bench/tumble-bench-broadphase" | awk '/^method,bodies,sizes,ms_per_step/{on=1} on && NF' >"$RESULTS/broadphase.csv"
+	echo "== game-scale scenes: Tumble and Box2D v3.2, one source compiled twice, in one process"
+	"$BUILD_DIR/bench/tumble-bench-games" --rounds "$REPEAT" "${STEPS_ARGS[@]}" --csv "$RESULTS/games.csv" \
+		--memory-csv "$RESULTS/games_memory.csv" | tee "$RESULTS/games.txt"
+	"$BUILD_DIR/bench/tumble-bench-games" --sweep --rounds "$REPEAT" --csv "$RESULTS/games_sweep.csv"
 	{
 		echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)"
 		echo "duration: $(( ($(date +%s) - started) / 60 )) min"
@@ -136,6 +140,7 @@ plot solver.gp perf_solver.png DATA=solver.csv
 plot broadphase.gp perf_broadphase.png DATA=broadphase.csv
 plot narrowphase.gp perf_narrowphase.png DATA=narrowphase.csv
 plot continuous.gp perf_continuous.png TOI=toi.csv TUNNEL=tunnel.csv
+plot games_sweep.gp perf_games_sweep.png DATA=games_sweep.csv
 
 # ---------------------------------------------------------------------------------------------
 # The page's tables, as markdown, from the same CSVs
@@ -215,9 +220,27 @@ awk -F, 'BEGIN { name["awake_only"] = "10 awake boxes alone"; name["with_10000_s
 	$1 == "ratio" { ratio = $5 } END { printf "\n10 awake bodies beside 10,000 asleep cost %.2f× the 10 alone.\n", ratio }' \
 	"$RESULTS/sleep.csv" >"$RESULTS/sleep.md"
 
+# <!-- games -->, <!-- games_memory -->, <!-- games_sweep -->: tumble-bench-games (µs a step, medians),
+# when its CSVs are there (a results folder from before the program has none).
+[[ -s "$RESULTS/games.csv" ]] && awk -F, 'function f(v) { return v == "nan" || v == "-nan" ? "—" : sprintf("%.2f", v) }
+	function commas(n) { n = sprintf("%d", n); while (n ~ /[0-9][0-9][0-9][0-9]/) sub(/[0-9][0-9][0-9]$/, ",&", n); return n }
+	NR == 1 { print "| scene (steps) | Tumble µs | v3.2 µs | **Tumble ÷ v3** | range over rounds | bodies | awake Tumble / v3 | touching Tumble / v3 | end-state check |"
+		print "|---|---|---|---|---|---|---|---|---|" }
+	NR > 1 { printf "| %s (%s) | %s | %s | **%s** | %s–%s | %s | %s / %s | %s / %s | %s |\n", $1, commas($2), f($4), f($5), f($6), f($7), f($8),
+		commas($9), commas($11), commas($12), commas($13), commas($14), $23 }' "$RESULTS/games.csv" >"$RESULTS/games.md"
+[[ -s "$RESULTS/games_memory.csv" ]] && awk -F, 'NR == 1 { print "| engine | body | shape (circle) | contact (touching) | joint (revolute) |"; print "|---|---|---|---|---|" }
+	NR > 1 { printf "| %s | %.0f | %.0f | %.0f | %.0f |\n", $1 == "tumble" ? "Tumble" : "Box2D v3.2", $3, $4, $5, $6 }' \
+	"$RESULTS/games_memory.csv" >"$RESULTS/games_memory.md"
+[[ -s "$RESULTS/games_sweep.csv" ]] && awk -F, 'function f(v) { return v == "nan" || v == "-nan" ? "—" : sprintf("%.2f", v) }
+	NR == 1 { print "| bodies | awake: Tumble µs | v3.2 µs | **Tumble ÷ v3** | asleep: Tumble µs | v3.2 µs | **Tumble ÷ v3** |"
+		print "|---|---|---|---|---|---|---|" }
+	NR > 1 { printf "| %s | %s | %s | **%s** | %s | %s | **%s** |\n", $1, f($2), f($3), f($4), f($5), f($6), f($7) }' \
+	"$RESULTS/games_sweep.csv" >"$RESULTS/games_sweep.md"
+true # the guards above leave a false status when a CSV is missing
+
 # Splice each table into the page between its markers (the markers stay, so the next run finds them).
 if [[ -f "$PAGE" ]]; then
-	for name in run race workers profile solver narrowphase toi broadphase sleep; do
+	for name in run race workers profile solver narrowphase toi broadphase sleep games games_memory games_sweep; do
 		[[ -s "$RESULTS/$name.md" ]] || continue
 		awk -v name="$name" -v file="$RESULTS/$name.md" '
 			$0 == "<!-- " name " -->" { print; while ((getline line < file) > 0) print line; skip = 1; next }
