@@ -295,20 +295,22 @@ static void RunMemory(const GameEngine** engines, int engineCount, const char* p
 	printf("\nBytes per object from each engine's allocator hook (%d of each; arrays grow by doubling, so spare "
 		   "capacity counts):\n\n",
 		   count);
-	printf("| engine | body | shape (circle) | contact (touching) | joint (revolute) |\n|---|---|---|---|---|\n");
+	printf("| engine | body | shape (circle) | contact (touching) | joint (revolute) | joint_grid peak | many_pyramids peak |\n"
+		   "|---|---|---|---|---|---|---|\n");
 	FILE* csv = path != NULL ? fopen(path, "w") : NULL;
 	if (csv != NULL)
 	{
-		fprintf(csv, "engine,count,body,shape,contact,joint,contacts\n");
+		fprintf(csv, "engine,count,body,shape,contact,joint,contacts,joint_grid_peak,many_pyramids_peak\n");
 	}
 	for (int e = 0; e < engineCount; ++e)
 	{
 		GameMemory m = engines[e]->measureMemory(count);
-		printf("| %s | %.0f | %.0f | %.0f | %.0f |\n", engines[e]->name, m.body, m.shape, m.contact, m.joint);
+		printf("| %s | %.0f | %.0f | %.0f | %.0f | %.1f MB | %.1f MB |\n", engines[e]->name, m.body, m.shape, m.contact,
+			   m.joint, (double)m.jointGridPeak / 1e6, (double)m.manyPyramidsPeak / 1e6);
 		if (csv != NULL)
 		{
-			fprintf(csv, "%s,%d,%.1f,%.1f,%.1f,%.1f,%d\n", engines[e]->name, m.count, m.body, m.shape, m.contact, m.joint,
-					m.contacts);
+			fprintf(csv, "%s,%d,%.1f,%.1f,%.1f,%.1f,%d,%lld,%lld\n", engines[e]->name, m.count, m.body, m.shape, m.contact,
+					m.joint, m.contacts, (long long)m.jointGridPeak, (long long)m.manyPyramidsPeak);
 		}
 	}
 	if (csv != NULL)

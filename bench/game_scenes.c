@@ -1058,6 +1058,7 @@ static const GameScene sweepScene = {"sweep", 1, 120, 0.0, false, CreateFalling,
 // (v3.1's shapes), so each engine gets its own pair of signatures below.
 
 static atomic_llong liveBytes;
+static atomic_llong peakBytes; ///< the most liveBytes has been since the last reset
 
 static void* CountingAlloc(size_t size, int alignment)
 {
@@ -1068,7 +1069,12 @@ static void* CountingAlloc(size_t size, int alignment)
 		return NULL;
 	}
 	*(size_t*)block = size;
-	atomic_fetch_add(&liveBytes, (long long)size);
+	long long live = atomic_fetch_add(&liveBytes, (long long)size) + (long long)size;
+	long long peak = atomic_load(&peakBytes);
+	while (live > peak && atomic_compare_exchange_weak(&peakBytes, &peak, live) == false)
+	{
+		// another thread raised the peak meanwhile: peak holds its value, compare again
+	}
 	return block + 64;
 }
 
@@ -1112,6 +1118,105 @@ static void InstallAllocator(void)
 static int64_t LiveBytes(void)
 {
 	return (int64_t)atomic_load(&liveBytes);
+}
+
+// Peak memory of two of Box2D v3's benchmark scenes, set up here as v3's benchmark describes
+// them, while each is built and stepped 60 frames with sleep off: the allocator's high-water mark
+// above what was live before, so the figure is the engine's own (a benchmark program that also
+// holds a scene description would add that to its resident set).
+
+/// A 100 × 100 grid of circles (radius 0.4, 1 m apart) joined to the neighbour above and to the
+/// left by revolute joints, hung from seven static circles in the middle of the top row.
+static void BuildJointGrid(WorldId world)
+{
+	const int n = 100;
+	BodyId* bodies = malloc((size_t)(n * n) * sizeof(BodyId));
+	P(ShapeDef) sd = GameShapeDef(1.0f, 0.6f);
+	sd.filter.categoryBits = 2;
+	sd.filter.maskBits = ~(uint64_t)2;
+	P(Circle) circle = {V(0.0f, 0.0f), 0.4f};
+	for (int column = 0; column < n; ++column)
+	{
+		for (int row = 0; row < n; ++row)
+		{
+			bool anchor = row == 0 && column >= n / 2 - 3 && column <= n / 2 + 3;
+			P(BodyDef) bd = GameBodyDef(anchor ? K(staticBody) : K(dynamicBody), V((float)column, -(float)row), 0.0f);
+			BodyId body = P(CreateBody)(world, &bd);
+			P(CreateCircleShape)(body, &sd, &circle);
+			P(RevoluteJointDef) jd = P(DefaultRevoluteJointDef)();
+			if (row > 0)
+			{
+				jd.base.bodyIdA = bodies[column * n + row - 1];
+				jd.base.bodyIdB = body;
+				jd.base.localFrameA.p = V(0.0f, -0.5f);
+				jd.base.localFrameB.p = V(0.0f, 0.5f);
+				P(CreateRevoluteJoint)(world, &jd);
+			}
+			if (column > 0)
+			{
+				jd.base.bodyIdA = bodies[(column - 1) * n + row];
+				jd.base.bodyIdB = body;
+				jd.base.localFrameA.p = V(0.5f, 0.0f);
+				jd.base.localFrameB.p = V(-0.5f, 0.0f);
+				P(CreateRevoluteJoint)(world, &jd);
+			}
+			bodies[column * n + row] = body;
+		}
+	}
+	free(bodies);
+}
+
+/// 20 rows of 20 pyramids, each of 55 unit boxes (a base of 10), on 20 floors one above another.
+static void BuildManyPyramids(WorldId world)
+{
+	const int base = 10, rows = 20, columns = 20;
+	const float floorGap = (float)(base + 1), floorWidth = (float)(columns * (base + 1));
+	P(BodyDef) gd = GameBodyDef(K(staticBody), V(0.0f, 0.0f), 0.0f);
+	BodyId ground = P(CreateBody)(world, &gd);
+	P(ShapeDef) sd = GameShapeDef(1.0f, 0.6f);
+	P(Polygon) box = P(MakeBox)(0.5f, 0.5f);
+	for (int r = 0; r < rows; ++r)
+	{
+		float y = floorGap * (float)r;
+		P(Segment) floor = {V(-0.5f * floorWidth, y), V(0.5f * floorWidth, y)};
+		P(CreateSegmentShape)(ground, &sd, &floor);
+		for (int c = 0; c < columns; ++c)
+		{
+			float left = -0.5f * floorWidth + (float)(c * (base + 1)) + 1.0f;
+			for (int level = 0; level < base; ++level)
+			{
+				for (int i = 0; i < base - level; ++i)
+				{
+					Vec2 p = V(left + 0.5f * (float)level + (float)i, y + 0.5f + (float)level);
+					P(BodyDef) bd = GameBodyDef(K(dynamicBody), p, 0.0f);
+					BodyId body = P(CreateBody)(world, &bd);
+					P(CreatePolygonShape)(body, &sd, &box);
+				}
+			}
+		}
+	}
+}
+
+static int64_t ScenePeakBytes(void (*build)(WorldId world))
+{
+	P(WorldDef) def = GameWorldDef();
+	def.enableSleep = false;
+	int64_t before = LiveBytes();
+	atomic_store(&peakBytes, (long long)before);
+	WorldId world = P(CreateWorld)(&def);
+	build(world);
+	for (int i = 0; i < 60; ++i)
+	{
+		P(World_Step)(world, GAME_DT, GAME_SUBSTEPS);
+	}
+	P(DestroyWorld)(world);
+	return (int64_t)atomic_load(&peakBytes) - before;
+}
+
+static void MeasureScenePeaks(GameMemory* m)
+{
+	m->jointGridPeak = ScenePeakBytes(BuildJointGrid);
+	m->manyPyramidsPeak = ScenePeakBytes(BuildManyPyramids);
 }
 
 // Bodies, shapes and joints: made far apart (no contacts), counted before and after each kind.
@@ -1183,6 +1288,7 @@ static GameMemory MeasureMemory(int count)
 	free(bodies);
 	m.contacts = touching;
 	m.contact = touching > 0 ? (double)(grown[1] - grown[0]) / touching : NAN;
+	MeasureScenePeaks(&m);
 	return m;
 }
 

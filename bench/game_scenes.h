@@ -58,6 +58,9 @@ typedef struct GameMemory
 	int count;
 	double body, shape, contact, joint;
 	int contacts; ///< touching contacts in the contact measurement
+	/// Allocator high-water marks (bytes) of Box2D v3's joint_grid and many_pyramids benchmark
+	/// scenes, built and stepped 60 frames.
+	int64_t jointGridPeak, manyPyramidsPeak;
 } GameMemory;
 
 typedef struct GameEngine

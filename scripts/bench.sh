@@ -228,8 +228,8 @@ awk -F, 'BEGIN { name["awake_only"] = "10 awake boxes alone"; name["with_10000_s
 		print "|---|---|---|---|---|---|---|---|---|" }
 	NR > 1 { printf "| %s (%s) | %s | %s | **%s** | %s–%s | %s | %s / %s | %s / %s | %s |\n", $1, commas($2), f($4), f($5), f($6), f($7), f($8),
 		commas($9), commas($11), commas($12), commas($13), commas($14), $23 }' "$RESULTS/games.csv" >"$RESULTS/games.md"
-[[ -s "$RESULTS/games_memory.csv" ]] && awk -F, 'NR == 1 { print "| engine | body | shape (circle) | contact (touching) | joint (revolute) |"; print "|---|---|---|---|---|" }
-	NR > 1 { printf "| %s | %.0f | %.0f | %.0f | %.0f |\n", $1 == "tumble" ? "Tumble" : "Box2D v3.2", $3, $4, $5, $6 }' \
+[[ -s "$RESULTS/games_memory.csv" ]] && awk -F, 'NR == 1 { print "| engine | body | shape (circle) | contact (touching) | joint (revolute) | joint_grid peak | many_pyramids peak |"; print "|---|---|---|---|---|---|---|" }
+	NR > 1 { printf "| %s | %.0f | %.0f | %.0f | %.0f | %.1f MB | %.1f MB |\n", $1 == "tumble" ? "Tumble" : "Box2D v3.2", $3, $4, $5, $6, $8 / 1e6, $9 / 1e6 }' \
 	"$RESULTS/games_memory.csv" >"$RESULTS/games_memory.md"
 [[ -s "$RESULTS/games_sweep.csv" ]] && awk -F, 'function f(v) { return v == "nan" || v == "-nan" ? "—" : sprintf("%.2f", v) }
 	NR == 1 { print "| bodies | awake: Tumble µs | v3.2 µs | **Tumble ÷ v3** | asleep: Tumble µs | v3.2 µs | **Tumble ÷ v3** |"
