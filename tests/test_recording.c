@@ -744,10 +744,12 @@ Test(recording, player_seeks_both_ways_on_the_recorded_trajectory, .init = Setup
 	cr_assert_eq(tbRecPlayer_GetKeyframeInterval(player), 10);
 	cr_assert_eq(tbRecPlayer_GetKeyframeBytes(player), 0);
 
-	// The bodies of the snapshot (ground, paddle) and then in creation order.
-	cr_assert_eq(tbRecPlayer_GetBodyCount(player), 2);
+	// The bodies of the snapshot (ground, paddle), then those created before the first step.
+	cr_assert_eq(tbRecPlayer_GetFrame(player), 0);
+	cr_assert_eq(tbRecPlayer_GetBodyCount(player), 5);
 	cr_assert(tbBody_IsValid(tbRecPlayer_GetBodyId(player, 0)));
-	cr_assert(TB_IS_NULL(tbRecPlayer_GetBodyId(player, 2)));
+	cr_assert(tbBody_IsValid(tbRecPlayer_GetBodyId(player, 4)));
+	cr_assert(TB_IS_NULL(tbRecPlayer_GetBodyId(player, 5)));
 
 	int targets[8] = {500, 120, 121, 599, 0, 600, 333, 45};
 	for (int k = 0; k < 8; ++k)

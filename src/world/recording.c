@@ -46,14 +46,16 @@ typedef struct tbRecOp
 	const char* kinds;
 } tbRecOp;
 
+/// By opcode; a gap in the numbering is an opcode no record may hold.
 static const tbRecOp s_ops[] = {
-	{NULL, ""},
-#define TB_REC_OP(code, Name, kinds, ret, call) {"tb" #Name, kinds},
+	[0] = {NULL, NULL},
+#define TB_REC_OP(code, Name, kinds, ret, call) [code] = {"tb" #Name, kinds},
 #include "recording_ops.h"
 #undef TB_REC_OP
 };
 
 #define TB_REC_OP_COUNT ((int)(sizeof(s_ops) / sizeof(s_ops[0])))
+_Static_assert(TB_REC_OP_COUNT <= tb_recStep, "API opcodes stay below those of steps and stops");
 
 /// Recordings attached to a world: while none is, a recorded call costs one test.
 static _Atomic int s_recordingCount = 0;
@@ -68,8 +70,8 @@ static _Thread_local struct
 
 const char* tbRecordingOpName(int op)
 {
-	// The table holds names without the underscore the API puts after the object ("tbBodySetType"
-	// for tbBody_SetType): the names as the calls report them are kept apart.
+	// "tb" and the name in recording_ops.h: the API name without its underscore ("tbBodySetType"
+	// for tbBody_SetType), which tbSameCall allows for.
 	return op > 0 && op < TB_REC_OP_COUNT ? s_ops[op].function : NULL;
 }
 
@@ -173,8 +175,9 @@ static const char* tbHeaderProblem(const uint8_t* data, int size, char* message,
 	}
 	else if (data[6] != TB_RECORDING_PRECISION)
 	{
-		snprintf(message, capacity, "the recording was made by a %s build; this one is %s",
-				 data[6] != 0 ? "double-precision" : "float", TB_RECORDING_PRECISION != 0 ? "double-precision" : "float");
+		const char* made = data[6] != 0 ? "double-precision" : "float";
+		const char* here = TB_RECORDING_PRECISION != 0 ? "double-precision" : "float";
+		snprintf(message, capacity, "the recording was made by a %s build; this one is %s", made, here);
 	}
 	else if (tbLoadU32(data + 8) != (uint32_t)size)
 	{

@@ -50,9 +50,9 @@ struct tbRecording
 };
 
 /// Record an API call at its entry (before any check): the call's opcode, then a pointer to each
-/// argument (pointer arguments as they are), in an array so each converts to a const void*. A call that reports an error through tbReportError
-/// under its own name takes its record back (tbRecordingTakeBack), so a recording holds only the
-/// calls that were accepted, which replay the same way.
+/// argument (pointer arguments as they are), in an array so that each converts to a const void*.
+/// A call that reports an error through tbReportError under its own name takes its record back
+/// (recording.c), so a recording holds only the calls that were accepted, which replay the same way.
 #define TB_RECORD(Name, ...) tbRecordCall(tb_rec##Name, (const void* const[]){__VA_ARGS__})
 void tbRecordCall(int op, const void* const* args);
 

@@ -289,7 +289,8 @@ _Static_assert(offsetof(tbDistanceJointDef, base) == 0 && offsetof(tbWheelJointD
 				   offsetof(tbWeldJointDef, base) == 0,
 			   "joint definitions start with their common part");
 
-#define TB_STRUCT(k, table, T, byPointer, isJoint, def) {k, table, TB_COUNT(table), (int)sizeof(T), byPointer, isJoint, def}
+#define TB_STRUCT(k, table, T, byPointer, isJoint, def)                                                               \
+	{k, table, TB_COUNT(table), (int)sizeof(T), byPointer, isJoint, def}
 #define TB_JOINT(k, table, T) TB_STRUCT(k, table, T, true, true, tbDefault##T)
 static const tbRecStruct s_structs[] = {
 	TB_STRUCT('M', s_massData, tbMassData, false, false, tbZero),

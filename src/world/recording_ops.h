@@ -15,7 +15,8 @@ TB_REC_OP(8, WorldSetMaximumLinearSpeed, "Wf", NONE, tbWorld_SetMaximumLinearSpe
 TB_REC_OP(9, WorldSetBroadPhaseMethod, "Wi", NONE, tbWorld_SetBroadPhaseMethod(world, (tbBroadPhaseMethod)a[1].i))
 TB_REC_OP(10, WorldSetNarrowPhaseMethod, "Wi", NONE, tbWorld_SetNarrowPhaseMethod(world, (tbNarrowPhaseMethod)a[1].i))
 TB_REC_OP(11, WorldSetContinuousMethod, "Wi", NONE, tbWorld_SetContinuousMethod(world, (tbContinuousMethod)a[1].i))
-TB_REC_OP(12, WorldSetSolverMethod, "Wiii", NONE, tbWorld_SetSolverMethod(world, (tbSolverMethod)a[1].i, a[2].i, a[3].i))
+TB_REC_OP(12, WorldSetSolverMethod, "Wiii", NONE,
+		  tbWorld_SetSolverMethod(world, (tbSolverMethod)a[1].i, a[2].i, a[3].i))
 TB_REC_OP(13, WorldEnableManifoldRecycling, "W?", NONE, tbWorld_EnableManifoldRecycling(world, a[1].b))
 TB_REC_OP(14, WorldEnableCentralFriction, "W?", NONE, tbWorld_EnableCentralFriction(world, a[1].b))
 TB_REC_OP(15, WorldSetContactRecycleDistance, "Wf", NONE, tbWorld_SetContactRecycleDistance(world, a[1].f))
@@ -55,12 +56,18 @@ TB_REC_OP(48, BodySetMotionLocks, "bL", NONE, tbBody_SetMotionLocks(a[0].body, a
 TB_REC_OP(49, BodySetName, "bn", NONE, tbBody_SetName(a[0].body, a[1].name))
 TB_REC_OP(50, BodyDisable, "b", NONE, tbBody_Disable(a[0].body))
 TB_REC_OP(51, BodyEnable, "b", NONE, tbBody_Enable(a[0].body))
-TB_REC_OP(52, CreateCircleShape, "bHC", SHAPE, tbCreateCircleShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], circle)))
-TB_REC_OP(53, CreateCapsuleShape, "bHK", SHAPE, tbCreateCapsuleShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], capsule)))
-TB_REC_OP(54, CreatePolygonShape, "bHP", SHAPE, tbCreatePolygonShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], polygon)))
-TB_REC_OP(55, CreateChainSegmentShape, "bHQ", SHAPE, tbCreateChainSegmentShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], chainSegment)))
-TB_REC_OP(56, CreateSegmentShape, "bHG", SHAPE, tbCreateSegmentShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], segment)))
-TB_REC_OP(57, CreateShape, "bHY", SHAPE, tbCreateShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], geometry)))
+TB_REC_OP(52, CreateCircleShape, "bHC", SHAPE,
+		  tbCreateCircleShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], circle)))
+TB_REC_OP(53, CreateCapsuleShape, "bHK", SHAPE,
+		  tbCreateCapsuleShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], capsule)))
+TB_REC_OP(54, CreatePolygonShape, "bHP", SHAPE,
+		  tbCreatePolygonShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], polygon)))
+TB_REC_OP(55, CreateChainSegmentShape, "bHQ", SHAPE,
+		  tbCreateChainSegmentShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], chainSegment)))
+TB_REC_OP(56, CreateSegmentShape, "bHG", SHAPE,
+		  tbCreateSegmentShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], segment)))
+TB_REC_OP(57, CreateShape, "bHY", SHAPE,
+		  tbCreateShape(a[0].body, TB_REC_POINTER(a[1], shapeDef), TB_REC_POINTER(a[2], geometry)))
 TB_REC_OP(58, DestroyShape, "s?", NONE, tbDestroyShape(a[0].shape, a[1].b))
 TB_REC_OP(59, ShapeSetCircle, "sC", NONE, tbShape_SetCircle(a[0].shape, TB_REC_POINTER(a[1], circle)))
 TB_REC_OP(60, ShapeSetCapsule, "sK", NONE, tbShape_SetCapsule(a[0].shape, TB_REC_POINTER(a[1], capsule)))
@@ -74,13 +81,15 @@ TB_REC_OP(67, ShapeEnablePreSolveEvents, "s?", NONE, tbShape_EnablePreSolveEvent
 TB_REC_OP(68, ShapeSetDensity, "sf?", NONE, tbShape_SetDensity(a[0].shape, a[1].f, a[2].b))
 TB_REC_OP(69, ShapeSetFriction, "sf", NONE, tbShape_SetFriction(a[0].shape, a[1].f))
 TB_REC_OP(70, ShapeSetRestitution, "sf", NONE, tbShape_SetRestitution(a[0].shape, a[1].f))
-TB_REC_OP(71, ShapeSetSurfaceMaterial, "sT", NONE, tbShape_SetSurfaceMaterial(a[0].shape, TB_REC_POINTER(a[1], material)))
+TB_REC_OP(71, ShapeSetSurfaceMaterial, "sT", NONE,
+		  tbShape_SetSurfaceMaterial(a[0].shape, TB_REC_POINTER(a[1], material)))
 TB_REC_OP(72, ShapeSetUserMaterial, "su", NONE, tbShape_SetUserMaterial(a[0].shape, a[1].u))
 TB_REC_OP(73, ShapeSetFilter, "sF", NONE, tbShape_SetFilter(a[0].shape, a[1].filter))
 TB_REC_OP(74, ShapeApplyWind, "svff?", NONE, tbShape_ApplyWind(a[0].shape, a[1].v, a[2].f, a[3].f, a[4].b))
 TB_REC_OP(75, CreateChain, "bN", CHAIN, tbCreateChain(a[0].body, TB_REC_POINTER(a[1], chainDef)))
 TB_REC_OP(76, DestroyChain, "c", NONE, tbDestroyChain(a[0].chain))
-TB_REC_OP(77, ChainSetSurfaceMaterial, "cTi", NONE, tbChain_SetSurfaceMaterial(a[0].chain, TB_REC_POINTER(a[1], material), a[2].i))
+TB_REC_OP(77, ChainSetSurfaceMaterial, "cTi", NONE,
+		  tbChain_SetSurfaceMaterial(a[0].chain, TB_REC_POINTER(a[1], material), a[2].i))
 TB_REC_OP(78, DestroyJoint, "j", NONE, tbDestroyJoint(a[0].joint))
 TB_REC_OP(79, JointSetLocalFrameA, "jx", NONE, tbJoint_SetLocalFrameA(a[0].joint, a[1].x))
 TB_REC_OP(80, JointSetLocalFrameB, "jx", NONE, tbJoint_SetLocalFrameB(a[0].joint, a[1].x))
@@ -92,7 +101,8 @@ TB_REC_OP(85, JointSetTorqueThreshold, "jf", NONE, tbJoint_SetTorqueThreshold(a[
 TB_REC_OP(86, CreateDistanceJoint, "W0", JOINT, tbCreateDistanceJoint(world, TB_REC_POINTER(a[1], distance)))
 TB_REC_OP(87, DistanceJointSetLength, "jf", NONE, tbDistanceJoint_SetLength(a[0].joint, a[1].f))
 TB_REC_OP(88, DistanceJointEnableSpring, "j?", NONE, tbDistanceJoint_EnableSpring(a[0].joint, a[1].b))
-TB_REC_OP(89, DistanceJointSetSpringForceRange, "jff", NONE, tbDistanceJoint_SetSpringForceRange(a[0].joint, a[1].f, a[2].f))
+TB_REC_OP(89, DistanceJointSetSpringForceRange, "jff", NONE,
+		  tbDistanceJoint_SetSpringForceRange(a[0].joint, a[1].f, a[2].f))
 TB_REC_OP(90, DistanceJointSetSpringHertz, "jf", NONE, tbDistanceJoint_SetSpringHertz(a[0].joint, a[1].f))
 TB_REC_OP(91, DistanceJointSetSpringDampingRatio, "jf", NONE, tbDistanceJoint_SetSpringDampingRatio(a[0].joint, a[1].f))
 TB_REC_OP(92, DistanceJointEnableLimit, "j?", NONE, tbDistanceJoint_EnableLimit(a[0].joint, a[1].b))
@@ -122,8 +132,10 @@ TB_REC_OP(115, PogoJointSetSpringDampingRatio, "jf", NONE, tbPogoJoint_SetSpring
 TB_REC_OP(116, CreatePrismaticJoint, "W5", JOINT, tbCreatePrismaticJoint(world, TB_REC_POINTER(a[1], prismatic)))
 TB_REC_OP(117, PrismaticJointEnableSpring, "j?", NONE, tbPrismaticJoint_EnableSpring(a[0].joint, a[1].b))
 TB_REC_OP(118, PrismaticJointSetSpringHertz, "jf", NONE, tbPrismaticJoint_SetSpringHertz(a[0].joint, a[1].f))
-TB_REC_OP(119, PrismaticJointSetSpringDampingRatio, "jf", NONE, tbPrismaticJoint_SetSpringDampingRatio(a[0].joint, a[1].f))
-TB_REC_OP(120, PrismaticJointSetTargetTranslation, "jf", NONE, tbPrismaticJoint_SetTargetTranslation(a[0].joint, a[1].f))
+TB_REC_OP(119, PrismaticJointSetSpringDampingRatio, "jf", NONE,
+		  tbPrismaticJoint_SetSpringDampingRatio(a[0].joint, a[1].f))
+TB_REC_OP(120, PrismaticJointSetTargetTranslation, "jf", NONE,
+		  tbPrismaticJoint_SetTargetTranslation(a[0].joint, a[1].f))
 TB_REC_OP(121, PrismaticJointEnableLimit, "j?", NONE, tbPrismaticJoint_EnableLimit(a[0].joint, a[1].b))
 TB_REC_OP(122, PrismaticJointSetLimits, "jff", NONE, tbPrismaticJoint_SetLimits(a[0].joint, a[1].f, a[2].f))
 TB_REC_OP(123, PrismaticJointEnableMotor, "j?", NONE, tbPrismaticJoint_EnableMotor(a[0].joint, a[1].b))
@@ -132,7 +144,8 @@ TB_REC_OP(125, PrismaticJointSetMaxMotorForce, "jf", NONE, tbPrismaticJoint_SetM
 TB_REC_OP(126, CreateRevoluteJoint, "W6", JOINT, tbCreateRevoluteJoint(world, TB_REC_POINTER(a[1], revolute)))
 TB_REC_OP(127, RevoluteJointEnableSpring, "j?", NONE, tbRevoluteJoint_EnableSpring(a[0].joint, a[1].b))
 TB_REC_OP(128, RevoluteJointSetSpringHertz, "jf", NONE, tbRevoluteJoint_SetSpringHertz(a[0].joint, a[1].f))
-TB_REC_OP(129, RevoluteJointSetSpringDampingRatio, "jf", NONE, tbRevoluteJoint_SetSpringDampingRatio(a[0].joint, a[1].f))
+TB_REC_OP(129, RevoluteJointSetSpringDampingRatio, "jf", NONE,
+		  tbRevoluteJoint_SetSpringDampingRatio(a[0].joint, a[1].f))
 TB_REC_OP(130, RevoluteJointSetTargetAngle, "jf", NONE, tbRevoluteJoint_SetTargetAngle(a[0].joint, a[1].f))
 TB_REC_OP(131, RevoluteJointEnableLimit, "j?", NONE, tbRevoluteJoint_EnableLimit(a[0].joint, a[1].b))
 TB_REC_OP(132, RevoluteJointSetLimits, "jff", NONE, tbRevoluteJoint_SetLimits(a[0].joint, a[1].f, a[2].f))

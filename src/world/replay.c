@@ -85,6 +85,8 @@ static bool tbScanRecords(const char* f, const uint8_t* data, int size, tbReplay
 	return true;
 }
 
+static bool tbPlayCalls(tbReplay* replay, const char* f);
+
 void tbReplayReserveBodies(tbReplay* replay, int count)
 {
 	if (count > replay->bodyCapacity)
@@ -142,6 +144,7 @@ bool tbReplayOpen(tbReplay* replay, const char* f, const uint8_t* data, int size
 	replay->cursor = replay->info.recordsStart;
 	replay->divergeFrame = -1;
 	tbListSnapshotBodies(replay);
+	tbPlayCalls(replay, f); // up to the first step, as Box2D v3.2's player opens
 	return true;
 }
 
@@ -154,6 +157,7 @@ void tbReplayRestart(tbReplay* replay)
 	replay->divergeFrame = -1;
 	replay->failed = false;
 	tbListSnapshotBodies(replay);
+	tbPlayCalls(replay, "tbRecPlayer_Restart");
 }
 
 void tbReplayClose(tbReplay* replay)
@@ -324,25 +328,33 @@ static void tbPlayStep(tbReplay* replay, const uint8_t* payload)
 	}
 }
 
-bool tbReplayStep(tbReplay* replay, const char* f)
+/// Play the calls up to the next step record (or the end); false after one could not be played.
+static bool tbPlayCalls(tbReplay* replay, const char* f)
 {
-	while (replay->failed == false && replay->cursor < replay->size)
+	while (replay->failed == false && replay->cursor < replay->size && replay->data[replay->cursor] != tb_recStep)
 	{
 		const uint8_t* record = replay->data + replay->cursor;
 		int op = record[0];
 		int payloadSize = (int)tbLoadU32(record + 1); // in range: tbScanRecords checked every frame
 		replay->cursor += TB_RECORD_FRAME_SIZE + payloadSize;
-		if (op == tb_recStep)
-		{
-			tbPlayStep(replay, record + TB_RECORD_FRAME_SIZE);
-			return true;
-		}
 		if (op != tb_recStop && tbPlayCall(replay, f, op, record + TB_RECORD_FRAME_SIZE, payloadSize) == false)
 		{
 			replay->failed = true;
 		}
 	}
-	return false;
+	return replay->failed == false;
+}
+
+bool tbReplayStep(tbReplay* replay, const char* f)
+{
+	if (tbPlayCalls(replay, f) == false || replay->cursor >= replay->size)
+	{
+		return false;
+	}
+	const uint8_t* record = replay->data + replay->cursor;
+	replay->cursor += TB_RECORD_FRAME_SIZE + (int)tbLoadU32(record + 1);
+	tbPlayStep(replay, record + TB_RECORD_FRAME_SIZE);
+	return true;
 }
 
 bool tbValidateReplay(const void* data, int size, int workerCount)

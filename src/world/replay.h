@@ -37,14 +37,16 @@ typedef struct tbReplay
 bool tbReplayCheck(const char* function, const uint8_t* data, int size, tbReplayInfo* info);
 
 /// Check the bytes and walk their records (reporting the first problem to `function`), then make
-/// the replay world from the snapshot. False when refused; the replay then holds nothing.
+/// the replay world from the snapshot and play the calls made before the first step. False when
+/// refused; the replay then holds nothing.
 bool tbReplayOpen(tbReplay* replay, const char* function, const uint8_t* data, int size, int workerCount);
 
 /// Play the calls up to the next step and take it. False at the end or after a record that could
 /// not be played (reported to `function`).
 bool tbReplayStep(tbReplay* replay, const char* function);
 
-/// Back to the snapshot the recording starts from, in the same world.
+/// Back to the snapshot the recording starts from, in the same world, and the calls before the
+/// first step played again.
 void tbReplayRestart(tbReplay* replay);
 
 /// Free the world and the body list.
