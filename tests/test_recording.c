@@ -85,6 +85,8 @@ typedef struct Session
 	tbBodyId spawned[64];
 	int spawnedCount, destroyedCount;
 	int refusedCalls; ///< calls the script made that were refused (not recorded)
+	tbRayResult ray;  ///< the last ray of Look
+	int overlaps;	  ///< shapes the last overlap of Look found
 } Session;
 
 static tbBodyId Body(tbWorldId world, tbBodyType type, float x, float y)
@@ -316,6 +318,34 @@ static void TuneLater(Session* s, int i)
 	}
 }
 
+static bool CountOverlap(tbShapeId shapeId, void* context)
+{
+	(void)shapeId;
+	*(int*)context += 1;
+	return true;
+}
+
+/// Queries every 10 steps (recorded for the player, changing nothing).
+static void Look(Session* s, int i)
+{
+	if (i % 10 != 3)
+	{
+		return;
+	}
+	tbPos above = tbBody_GetPosition(s->crate);
+	above.y += 5.0f;
+	s->ray = tbWorld_CastRayClosest(s->world, above, (tbVec2){0.0f, -20.0f}, tbDefaultQueryFilter());
+	tbAABB box = {{-3.0f, -3.0f}, {3.0f, 3.0f}};
+	s->overlaps = 0;
+	tbPos centre = tbBody_GetPosition(s->crate);
+	tbWorld_OverlapAABB(s->world, centre, box, tbDefaultQueryFilter(), CountOverlap, &s->overlaps);
+	tbShapeId shapes[2];
+	if (tbBody_GetShapes(s->wheel, shapes, 2) > 0)
+	{
+		tbShape_TestPoint(shapes[0], tbBody_GetPosition(s->wheel));
+	}
+}
+
 /// Calls the API refuses: nothing of them may reach the recording.
 static void Refused(Session* s, int i)
 {
@@ -341,10 +371,15 @@ static void RunSession(Session* s, int steps, uint64_t* hashes)
 		Tune(s, i);
 		TuneLater(s, i);
 		Refused(s, i);
+		Look(s, i);
 		cr_assert(tbWorld_Step(s->world, REC_DT, REC_SUBSTEPS));
 		hashes[i] = tbWorld_GetStateHash(s->world);
 	}
 }
+
+/// The last ray and overlap count of the last session recorded (Look, at i = 593).
+static tbRayResult s_lastRay;
+static int s_lastOverlaps;
 
 /// A world, a recording of a session of REC_STEPS steps in it, and the hash after each step.
 static tbRecording* RecordSession(int workerCount, uint64_t* hashes)
@@ -360,6 +395,8 @@ static tbRecording* RecordSession(int workerCount, uint64_t* hashes)
 	int errors = s_errors;
 	RunSession(&s, REC_STEPS, hashes);
 	cr_assert_eq(s_errors - errors, s.refusedCalls, "the script's refused calls: %d errors", s_errors - errors);
+	s_lastRay = s.ray;
+	s_lastOverlaps = s.overlaps;
 	tbWorld_StopRecording(s.world);
 	tbDestroyWorld(s.world);
 	return recording;
@@ -730,6 +767,14 @@ Test(recording, a_changed_input_is_found_at_its_step, .init = SetupErrors, .fini
 // ---------------------------------------------------------------------------------------------
 // The player
 
+static void CountSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+{
+	(void)p1;
+	(void)p2;
+	(void)color;
+	*(int*)context += 1;
+}
+
 Test(recording, player_seeks_both_ways_on_the_recorded_trajectory, .init = SetupErrors, .fini = TeardownErrors)
 {
 	tbRecording* recording = RecordSession(1, s_hashes);
@@ -787,17 +832,41 @@ Test(recording, player_seeks_both_ways_on_the_recorded_trajectory, .init = Setup
 	cr_assert_eq(tbWorld_GetStateHash(world), s_hashes[76]);
 	cr_assert(tbRecPlayer_StepFrame(player));
 
-	// Queries are not recorded: every frame has none.
-	cr_assert_eq(tbRecPlayer_GetFrameQueryCount(player), 0);
-	int before = s_errors;
-	tbRecQueryInfo query = tbRecPlayer_GetFrameQuery(player, 0);
-	tbRecQueryHit hit = tbRecPlayer_GetFrameQueryHit(player, 0, 0);
-	cr_assert_eq(s_errors, before + 2);
-	cr_assert_eq(query.hitCount, 0);
-	cr_assert_eq(hit.fraction, 0.0f);
+	// The queries of a frame: those made before its step, with what their callbacks were told.
+	tbRecPlayer_Restart(player);
+	tbRecPlayer_SeekFrame(player, 594); // its queries came at i = 593, before the step to 594
+	cr_assert_eq(tbRecPlayer_GetFrameQueryCount(player), 3);
+	tbRecQueryInfo ray = tbRecPlayer_GetFrameQuery(player, 0);
+	cr_assert_eq(ray.type, tb_recQueryCastRayClosest);
+	cr_assert_eq(ray.translation.y, -20.0f);
+	cr_assert_geq(ray.hitCount, 1);
+	tbRecQueryHit hit = tbRecPlayer_GetFrameQueryHit(player, 0, ray.hitCount - 1);
+	cr_assert(tbShape_IsValid(hit.shape));
+	cr_assert_eq(hit.shape.index1, s_lastRay.shapeId.index1, "the closest hit is the ray's last result");
+	cr_assert_eq(hit.fraction, s_lastRay.fraction);
+	cr_assert_eq(hit.point.y, s_lastRay.point.y);
+	tbRecQueryInfo overlap = tbRecPlayer_GetFrameQuery(player, 1);
+	cr_assert_eq(overlap.type, tb_recQueryOverlapAABB);
+	cr_assert_eq(overlap.hitCount, s_lastOverlaps);
+	cr_assert_eq(overlap.aabb.upperBound.x, 3.0f);
+	tbRecQueryInfo test = tbRecPlayer_GetFrameQuery(player, 2);
+	cr_assert_eq(test.type, tb_recQueryShapeTestPoint);
+	cr_assert(tbShape_IsValid(test.shape));
+	cr_assert_eq(test.hitCount, 1, "the wheel's centre is inside the wheel");
+	int segments = 0;
 	tbDebugDraw draw = tbDefaultDebugDraw();
+	draw.DrawSegment = CountSegment;
+	draw.context = &segments;
 	tbRecPlayer_DrawFrameQueries(player, &draw, -1);
-	cr_assert_eq(s_errors, before + 2);
+	cr_assert_geq(segments, 2, "the ray and a hit's normal");
+	tbRecPlayer_DrawFrameQueries(player, &draw, 2);
+	cr_assert(tbRecPlayer_StepFrame(player));
+	cr_assert_eq(tbRecPlayer_GetFrameQueryCount(player), 0, "no queries before the step to 595");
+	int before = s_errors;
+	tbRecPlayer_GetFrameQuery(player, 0);
+	tbRecPlayer_GetFrameQueryHit(player, 0, 0);
+	tbRecPlayer_DrawFrameQueries(player, &draw, 0);
+	cr_assert_eq(s_errors, before + 3);
 	tbRecPlayer_Destroy(player);
 	cr_assert_eq(tbGetByteCount(), 0);
 }

@@ -148,11 +148,12 @@ TB_API int tbRecording_GetSize(const tbRecording* recording);
 
 /// Start recording the world into an empty recording buffer: a snapshot of the world as it is now
 /// (tbWorld_Snapshot), then every call that changes the world (creations, destructions, setters,
-/// forces, impulses, explosions, world settings) and every step with the state hash it ended on
-/// (tbWorld_GetStateHash). Callbacks (custom filter, pre-solve, friction and restitution mixing)
-/// and user data are host wiring, not recorded. Refused (error hook, nothing changes): stale id,
-/// NULL or non-empty recording, a recording another world uses, a world already recording, a
-/// locked world (during the step or inside a query callback).
+/// forces, impulses, explosions, world settings), the spatial queries with their results (for the
+/// player to show), and every step with the state hash it ended on (tbWorld_GetStateHash).
+/// Callbacks (custom filter, pre-solve, friction and restitution mixing) and user data are host
+/// wiring, not recorded. Refused (error hook, nothing changes): stale id, NULL or non-empty
+/// recording, a recording another world uses, a world already recording, a locked world (during
+/// the step or inside a query callback).
 TB_API void tbWorld_StartRecording(tbWorldId worldId, tbRecording* recording);
 
 /// Stop recording. The buffer keeps its bytes; save and destroy it yourself. Refused (error hook)
@@ -810,8 +811,10 @@ TB_API size_t tbRecPlayer_GetKeyframeBytes(const tbRecPlayer* player);
 /// Free the player, its world and its copy of the recording. NULL is ignored.
 TB_API void tbRecPlayer_Destroy(tbRecPlayer* player);
 
-/// Draw the spatial queries recorded in the frame replayed last (after tbWorld_Draw); queryIndex
-/// -1 draws them all. Tumble records no queries (they change nothing), so a frame has none.
+/// Draw the spatial queries recorded before the step of the frame replayed last (after
+/// tbWorld_Draw): each query's box, ray or sweep, and each result's point and normal. queryIndex:
+/// one query, or -1 for all. NULL draw functions are skipped. Refused (error hook) for an index out
+/// of range.
 TB_API void tbRecPlayer_DrawFrameQueries(tbRecPlayer* player, tbDebugDraw* draw, int queryIndex);
 
 /// The kind of a recorded spatial query (Box2D v3.2's list).
@@ -849,7 +852,9 @@ typedef struct tbRecQueryHit
 	float fraction;
 } tbRecQueryHit;
 
-/// Number of spatial queries recorded in the frame replayed last (0: Tumble records none).
+/// Number of spatial queries recorded before the step of the frame replayed last (before the first
+/// step, until the first StepFrame). Queries change nothing: replay shows them, it does not run them.
+/// A seek backwards that restores a keyframe starts with none.
 TB_API int tbRecPlayer_GetFrameQueryCount(const tbRecPlayer* player);
 
 /// A recorded query of the frame replayed last; a zeroed one (error hook) for an index out of range.

@@ -9,8 +9,8 @@
 // off the new spacing go, so the memory stays under the budget and the spacing stays regular
 // (a backward seek replays at most one interval).
 //
-// Spatial queries change nothing and are not recorded (recording.c), so a frame has no queries to
-// show: the query accessors answer for an empty list.
+// The spatial queries recorded before a frame's step are kept with the frame (replay.c) for the
+// accessors and the drawing below; they are not run again, as they change nothing.
 #include "replay.h"
 
 #include "core/core.h"
@@ -132,6 +132,9 @@ static void tbRestoreKeyframe(tbRecPlayer* player, const tbKeyframe* k)
 	r->cursor = k->cursor;
 	r->divergeFrame = k->divergeFrame;
 	r->failed = false;
+	r->queryCount = 0; // the queries before a keyframe's step are not kept with it
+	r->hitCount = 0;
+	r->queriesStale = false;
 	tbReplayReserveBodies(r, k->bodyCount);
 	if (k->bodyCount > 0)
 	{
@@ -319,42 +322,115 @@ size_t tbRecPlayer_GetKeyframeBytes(const tbRecPlayer* player)
 	return tbCheckPlayer(player, "tbRecPlayer_GetKeyframeBytes") ? player->keyframeBytes : 0;
 }
 
+/// A box given relative to an origin, as four corners (in float: drawing is in float).
+static void tbDrawBox(tbDebugDraw* draw, tbAABB box, tbPos origin, uint32_t color)
+{
+	tbAABB b = tbOffsetAABB(box, origin);
+	tbVec2 corners[4] = {b.lowerBound, {b.upperBound.x, b.lowerBound.y}, b.upperBound,
+						 {b.lowerBound.x, b.upperBound.y}};
+	if (draw->DrawPolygon != NULL)
+	{
+		draw->DrawPolygon(corners, 4, color, draw->context);
+	}
+}
+
+/// A query: its box (overlaps, casts, movers), its ray or sweep, and a point and normal a result.
+static void tbDrawQuery(tbDebugDraw* draw, const tbReplay* r, const tbReplayQuery* q)
+{
+	const tbRecQueryInfo* info = &q->info;
+	tbVec2 start = tbToVec2(info->origin);
+	bool ray = info->type == tb_recQueryCastRay || info->type == tb_recQueryCastRayClosest ||
+			   info->type == tb_recQueryShapeRayCast;
+	bool point = info->type == tb_recQueryShapeTestPoint;
+	if (ray == false && point == false)
+	{
+		tbDrawBox(draw, info->aabb, info->origin, tb_colorYellow);
+	}
+	if (point && draw->DrawPoint != NULL)
+	{
+		draw->DrawPoint(start, 6.0f, tb_colorYellow, draw->context);
+	}
+	if ((info->translation.x != 0.0f || info->translation.y != 0.0f) && draw->DrawSegment != NULL)
+	{
+		draw->DrawSegment(start, tbAdd(start, info->translation), tb_colorYellow, draw->context);
+	}
+	for (int i = 0; i < info->hitCount; ++i)
+	{
+		const tbRecQueryHit* hit = r->hits + q->firstHit + i;
+		tbVec2 p = tbToVec2(hit->point);
+		if (draw->DrawPoint != NULL)
+		{
+			draw->DrawPoint(p, 5.0f, tb_colorOrangeRed, draw->context);
+		}
+		if ((hit->normal.x != 0.0f || hit->normal.y != 0.0f) && draw->DrawSegment != NULL)
+		{
+			draw->DrawSegment(p, tbMulAdd(p, 0.5f, hit->normal), tb_colorOrangeRed, draw->context);
+		}
+	}
+}
+
 void tbRecPlayer_DrawFrameQueries(tbRecPlayer* player, tbDebugDraw* draw, int queryIndex)
 {
-	(void)queryIndex; // no frame holds queries: nothing to draw
-	if (tbCheckPlayer(player, "tbRecPlayer_DrawFrameQueries"))
+	const char* f = "tbRecPlayer_DrawFrameQueries";
+	if (tbCheckPlayer(player, f) == false || tbCheckPointer(f, "draw", draw) == false)
 	{
-		tbCheckPointer("tbRecPlayer_DrawFrameQueries", "draw", draw);
+		return;
+	}
+	const tbReplay* r = &player->replay;
+	if (queryIndex < -1 || queryIndex >= r->queryCount)
+	{
+		tbReportError(f, "queryIndex is %d; pass -1 (all) or 0 to %d, the frame's queries", queryIndex,
+					  r->queryCount - 1);
+		return;
+	}
+	int first = queryIndex >= 0 ? queryIndex : 0;
+	int last = queryIndex >= 0 ? queryIndex + 1 : r->queryCount;
+	for (int i = first; i < last; ++i)
+	{
+		tbDrawQuery(draw, r, r->queries + i);
 	}
 }
 
 int tbRecPlayer_GetFrameQueryCount(const tbRecPlayer* player)
 {
-	tbCheckPlayer(player, "tbRecPlayer_GetFrameQueryCount");
-	return 0;
+	return tbCheckPlayer(player, "tbRecPlayer_GetFrameQueryCount") ? player->replay.queryCount : 0;
 }
 
 tbRecQueryInfo tbRecPlayer_GetFrameQuery(const tbRecPlayer* player, int index)
 {
+	const char* f = "tbRecPlayer_GetFrameQuery";
 	tbRecQueryInfo info;
 	memset(&info, 0, sizeof(info));
-	if (tbCheckPlayer(player, "tbRecPlayer_GetFrameQuery"))
+	if (tbCheckPlayer(player, f) == false)
 	{
-		tbReportError("tbRecPlayer_GetFrameQuery", "index is %d; the frame has no queries (count 0)", index);
+		return info;
 	}
-	return info;
+	if (index < 0 || index >= player->replay.queryCount)
+	{
+		tbReportError(f, "index is %d; the frame has %d queries", index, player->replay.queryCount);
+		return info;
+	}
+	return player->replay.queries[index].info;
 }
 
 tbRecQueryHit tbRecPlayer_GetFrameQueryHit(const tbRecPlayer* player, int queryIndex, int hitIndex)
 {
+	const char* f = "tbRecPlayer_GetFrameQueryHit";
 	tbRecQueryHit hit;
 	memset(&hit, 0, sizeof(hit));
-	if (tbCheckPlayer(player, "tbRecPlayer_GetFrameQueryHit"))
+	if (tbCheckPlayer(player, f) == false)
 	{
-		tbReportError("tbRecPlayer_GetFrameQueryHit", "queryIndex is %d (hitIndex %d); the frame has no queries",
-					  queryIndex, hitIndex);
+		return hit;
 	}
-	return hit;
+	const tbReplay* r = &player->replay;
+	if (queryIndex < 0 || queryIndex >= r->queryCount || hitIndex < 0 ||
+		hitIndex >= r->queries[queryIndex].info.hitCount)
+	{
+		tbReportError(f, "queryIndex %d, hitIndex %d: the frame has %d queries (and each its hitCount results)",
+					  queryIndex, hitIndex, r->queryCount);
+		return hit;
+	}
+	return r->hits[r->queries[queryIndex].firstHit + hitIndex];
 }
 
 int tbRecPlayer_GetBodyCount(const tbRecPlayer* player)

@@ -5,7 +5,8 @@
 // state the next steps read); then, in the order they are made, the calls that change the world
 // (recording_ops.h: creations, destructions, setters, forces, impulses, explosions, wind, world
 // settings) and each step with the state hash it ended on (tbWorld_GetStateHash), which replay
-// compares to find the first step that differs. Host wiring (callbacks, user data, the task
+// compares to find the first step that differs; spatial queries too, with their results, for a
+// viewer to show (recording_queries.c). Host wiring (callbacks, user data, the task
 // system) is not state and is not recorded, as in snapshots. A call is recorded at its entry,
 // before it checks anything, and taken back when it reports an error under its own name: the
 // error hook sees every refusal (core's error observer), so the record never holds a refused call
@@ -16,7 +17,8 @@
 // snapshot's size (4) and the steps recorded (4). Then the snapshot image (its own header and
 // checksum), then records: an opcode (1 byte), the payload's size (4), the payload. An API call's
 // payload is its arguments in the order of its prototype (recording_args.c); a step's is dt,
-// sub-steps and the hash; the stop record's is the union of the world's bounds over the steps. The
+// sub-steps and the hash; a query's is described in recording_queries.c; the stop record's is the
+// union of the world's bounds over the steps. The
 // checksum is 64-bit FNV-1a (Fowler, Noll, Vo) over the snapshot and records, then over the
 // header's other bytes, so one changed byte anywhere always fails it. The buffer is a sealed
 // recording after every record: the payload hash is kept up to the last record, the only one a
@@ -245,6 +247,14 @@ static void tbEndRecord(tbRecording* rec, tbRecBytes* out, int start)
 	rec->size = out->size;
 	rec->capacity = out->capacity;
 	tbReseal(rec);
+}
+
+void tbRecordingAppend(tbRecording* rec, int op, const uint8_t* payload, int size)
+{
+	tbRecBytes out;
+	int start = tbBeginRecord(rec, &out, op);
+	tbRecPutBytes(&out, payload, size);
+	tbEndRecord(rec, &out, start);
 }
 
 /// The world an argument of kind `kind` names (a world id or an object's id), or NULL.

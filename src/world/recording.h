@@ -4,6 +4,7 @@
 
 #include "tumble/tumble.h"
 
+#include <stdatomic.h>
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -21,7 +22,8 @@ struct tbWorld;
 /// recording_ops.h.
 enum
 {
-	tb_recStep = 253, ///< dt, sub-steps, then the state hash the step ended on
+	tb_recQuery = 252, ///< a spatial query and its results (recording_queries.c), for the player to show
+	tb_recStep = 253,  ///< dt, sub-steps, then the state hash the step ended on
 	tb_recStop = 254, ///< the union of the world's bounds over the recorded steps
 };
 
@@ -47,6 +49,7 @@ struct tbRecording
 	int hashedSize;		  ///< bytes the payload hash covers: all but the last record, which an error may take back
 	tbAABB bounds;		  ///< union of the world's bounds after each recorded step
 	bool haveBounds;
+	atomic_flag queryLock; ///< queries may run on several threads at once: one writes at a time
 };
 
 /// Record an API call at its entry (before any check): the call's opcode, then a pointer to each
@@ -58,6 +61,9 @@ void tbRecordCall(int op, const void* const* args);
 
 /// After a step of a recording world: the step's record with the hash it ended on.
 void tbRecordStep(struct tbWorld* world, float timeStep, int subStepCount);
+
+/// Append a whole record (a query's, whose payload was built aside while the query ran).
+void tbRecordingAppend(tbRecording* recording, int op, const uint8_t* payload, int size);
 
 /// A world that is destroyed while recording stops first.
 void tbRecordingDetach(struct tbWorld* world);
@@ -78,6 +84,7 @@ const char* tbRecordingOpName(int op);
 const char* tbRecordingOpKinds(int op);
 
 // Arguments (recording_args.c) ---------------------------------------------------------------
+
 
 /// A growable byte array the encoder appends to.
 typedef struct tbRecBytes
@@ -165,3 +172,28 @@ void tbRecArgsFree(tbRecArgReader* r);
 /// The id fields of an argument of kind `kind` (a joint definition's bodies), for replay.c to map.
 /// Fills ids with pointers to them and returns how many (at most 2).
 int tbRecArgBodyIds(char kind, tbRecArg* arg, tbBodyId* ids[2]);
+
+// Queries (recording_queries.c) ----------------------------------------------------------------
+
+/// A spatial query being recorded: begun by the query, told each result its callback reports,
+/// written as one record when the query ends. Queries change nothing, so replay does not run them
+/// again: the player shows them, frame by frame.
+typedef struct tbQueryLog
+{
+	struct tbRecording* recording;
+	tbRecQueryInfo info;
+	tbRecBytes hits;
+	int hitCount;
+} tbQueryLog;
+
+/// The log of a query of the world (info: its kind and inputs, ids as the world's), or NULL when
+/// the world is not recording (or is stepping). Every function below takes a NULL log.
+tbQueryLog* tbQueryLogBegin(tbQueryLog* log, const struct tbWorld* world, const tbRecQueryInfo* info);
+void tbQueryLogHit(tbQueryLog* log, tbShapeId shape, tbPos point, tbVec2 normal, float fraction);
+void tbQueryLogEnd(tbQueryLog* log);
+
+/// Decode a query record's payload into info and up to hitCapacity hits (ids as recorded: index
+/// only); false when it does not decode or holds more hits. A payload of n bytes holds fewer than
+/// n / TB_QUERY_HIT_MIN_BYTES hits.
+#define TB_QUERY_HIT_MIN_BYTES 20
+bool tbQueryLogRead(const uint8_t* payload, int size, tbRecQueryInfo* info, tbRecQueryHit* hits, int hitCapacity);

@@ -62,7 +62,7 @@ static bool tbScanRecords(const char* f, const uint8_t* data, int size, tbReplay
 		int op = data[offset];
 		uint32_t payload = tbLoadU32(data + offset + 1);
 		int fixed = tbFixedPayload(op);
-		bool known = fixed >= 0 || tbRecordingOpName(op) != NULL;
+		bool known = fixed >= 0 || op == tb_recQuery || tbRecordingOpName(op) != NULL;
 		if (known == false || payload > (uint32_t)(size - offset - TB_RECORD_FRAME_SIZE) ||
 			(fixed >= 0 && payload != (uint32_t)fixed))
 		{
@@ -156,6 +156,9 @@ void tbReplayRestart(tbReplay* replay)
 	replay->frame = 0;
 	replay->divergeFrame = -1;
 	replay->failed = false;
+	replay->queryCount = 0;
+	replay->hitCount = 0;
+	replay->queriesStale = false;
 	tbListSnapshotBodies(replay);
 	tbPlayCalls(replay, "tbRecPlayer_Restart");
 }
@@ -167,6 +170,8 @@ void tbReplayClose(tbReplay* replay)
 		tbDestroyWorld(replay->world);
 	}
 	tbFree(replay->bodies, replay->bodyCapacity * (int)sizeof(tbBodyId));
+	tbFree(replay->queries, replay->queryCapacity * (int)sizeof(tbReplayQuery));
+	tbFree(replay->hits, replay->hitCapacity * (int)sizeof(tbRecQueryHit));
 	memset(replay, 0, sizeof(*replay));
 }
 
@@ -328,6 +333,60 @@ static void tbPlayStep(tbReplay* replay, const uint8_t* payload)
 	}
 }
 
+/// The query list grown to hold queryCount queries and hitCount hits.
+static void tbReserveQueries(tbReplay* replay, int queryCount, int hitCount)
+{
+	if (queryCount > replay->queryCapacity)
+	{
+		int capacity = queryCount > 2 * replay->queryCapacity ? queryCount : 2 * replay->queryCapacity;
+		replay->queries = tbGrowAlloc(replay->queries, replay->queryCapacity * (int)sizeof(tbReplayQuery),
+									  capacity * (int)sizeof(tbReplayQuery));
+		replay->queryCapacity = capacity;
+	}
+	if (hitCount > replay->hitCapacity)
+	{
+		int capacity = hitCount > 2 * replay->hitCapacity ? hitCount : 2 * replay->hitCapacity;
+		replay->hits = tbGrowAlloc(replay->hits, replay->hitCapacity * (int)sizeof(tbRecQueryHit),
+								   capacity * (int)sizeof(tbRecQueryHit));
+		replay->hitCapacity = capacity;
+	}
+}
+
+/// A recorded shape id as the replay world's, or null when its slot holds nothing now.
+static tbShapeId tbMapShape(const tbWorld* world, tbShapeId id)
+{
+	tbBodyId asBody = {id.index1, 0, 0};
+	if (tbMapId(world, 's', &asBody) == false)
+	{
+		return TB_NULL_SHAPE_ID;
+	}
+	return (tbShapeId){asBody.index1, asBody.world0, asBody.generation};
+}
+
+/// Keep a query record for the frame; false after reporting one that does not decode.
+static bool tbKeepQuery(tbReplay* replay, const char* f, const uint8_t* payload, int size)
+{
+	int room = size / TB_QUERY_HIT_MIN_BYTES + 1;
+	tbReserveQueries(replay, replay->queryCount + 1, replay->hitCount + room);
+	tbReplayQuery* q = replay->queries + replay->queryCount;
+	tbRecQueryHit* hits = replay->hits + replay->hitCount;
+	if (tbQueryLogRead(payload, size, &q->info, hits, room) == false)
+	{
+		tbReportError(f, "the query record before step %d does not decode (corrupt recording)", replay->frame + 1);
+		return false;
+	}
+	const tbWorld* world = tbGetWorldFromIndex(replay->world.index1 - 1);
+	q->info.shape = tbMapShape(world, q->info.shape);
+	for (int i = 0; i < q->info.hitCount; ++i)
+	{
+		hits[i].shape = tbMapShape(world, hits[i].shape);
+	}
+	q->firstHit = replay->hitCount;
+	replay->queryCount += 1;
+	replay->hitCount += q->info.hitCount;
+	return true;
+}
+
 /// Play the calls up to the next step record (or the end); false after one could not be played.
 static bool tbPlayCalls(tbReplay* replay, const char* f)
 {
@@ -337,16 +396,23 @@ static bool tbPlayCalls(tbReplay* replay, const char* f)
 		int op = record[0];
 		int payloadSize = (int)tbLoadU32(record + 1); // in range: tbScanRecords checked every frame
 		replay->cursor += TB_RECORD_FRAME_SIZE + payloadSize;
-		if (op != tb_recStop && tbPlayCall(replay, f, op, record + TB_RECORD_FRAME_SIZE, payloadSize) == false)
-		{
-			replay->failed = true;
-		}
+		const uint8_t* payload = record + TB_RECORD_FRAME_SIZE;
+		bool ok = op == tb_recStop ? true
+			: op == tb_recQuery	   ? tbKeepQuery(replay, f, payload, payloadSize)
+								   : tbPlayCall(replay, f, op, payload, payloadSize);
+		replay->failed = ok == false;
 	}
 	return replay->failed == false;
 }
 
 bool tbReplayStep(tbReplay* replay, const char* f)
 {
+	if (replay->queriesStale)
+	{
+		replay->queryCount = 0;
+		replay->hitCount = 0;
+		replay->queriesStale = false;
+	}
 	if (tbPlayCalls(replay, f) == false || replay->cursor >= replay->size)
 	{
 		return false;
@@ -354,6 +420,7 @@ bool tbReplayStep(tbReplay* replay, const char* f)
 	const uint8_t* record = replay->data + replay->cursor;
 	replay->cursor += TB_RECORD_FRAME_SIZE + (int)tbLoadU32(record + 1);
 	tbPlayStep(replay, record + TB_RECORD_FRAME_SIZE);
+	replay->queriesStale = true;
 	return true;
 }
 

@@ -16,6 +16,13 @@ typedef struct tbReplayInfo
 	int recordsStart; ///< the first record's offset (after the snapshot)
 } tbReplayInfo;
 
+/// A recorded query of the frame being shown, and where its results start in the hit list.
+typedef struct tbReplayQuery
+{
+	tbRecQueryInfo info;
+	int firstHit;
+} tbReplayQuery;
+
 /// A recording being played into its world. The bytes belong to the caller and must outlive it.
 typedef struct tbReplay
 {
@@ -30,6 +37,14 @@ typedef struct tbReplay
 	/// Bodies in creation order (the snapshot's in id order first); destroyed ones null.
 	tbBodyId* bodies;
 	int bodyCount, bodyCapacity;
+	/// The queries recorded before the step replayed last (before the first step until then), with
+	/// their results, ids mapped to the replay world. Stale once the step is taken: the next frame's
+	/// replace them.
+	tbReplayQuery* queries;
+	int queryCount, queryCapacity;
+	tbRecQueryHit* hits;
+	int hitCount, hitCapacity;
+	bool queriesStale;
 } tbReplay;
 
 /// Check a recording's bytes (recording.c's checks) and walk its records' frames, filling info;

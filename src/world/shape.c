@@ -1124,6 +1124,26 @@ tbAABB tbShape_GetAABB(tbShapeId shapeId)
 	return shape != NULL ? tbComputeShapeAABBInternal(shape, world->bodies[shape->bodyId].transform) : empty;
 }
 
+/// A shape's own test in the world's recording (a query of the player's frame): its one result, if any,
+/// at the point (a hit's point for a ray: the origin moved by the fraction).
+static void tbRecordShapeTest(const tbWorld* world, tbRecQueryType type, tbShapeId shapeId, tbPos origin,
+							  tbVec2 translation, bool hit, tbVec2 normal, float fraction)
+{
+	tbRecQueryInfo info;
+	memset(&info, 0, sizeof(info));
+	info.type = type;
+	info.origin = origin;
+	info.translation = translation;
+	info.shape = shapeId;
+	tbQueryLog log;
+	tbQueryLog* record = tbQueryLogBegin(&log, world, &info);
+	if (hit)
+	{
+		tbQueryLogHit(record, shapeId, tbOffsetPos(origin, tbMulSV(fraction, translation)), normal, fraction);
+	}
+	tbQueryLogEnd(record);
+}
+
 bool tbShape_TestPoint(tbShapeId shapeId, tbPos point)
 {
 	tbWorld* world;
@@ -1133,7 +1153,9 @@ bool tbShape_TestPoint(tbShapeId shapeId, tbPos point)
 		return false;
 	}
 	tbVec2 local = tbInvTransformWorldPoint(world->bodies[shape->bodyId].transform, point);
-	return tbPointInShape(&shape->geometry, local);
+	bool inside = tbPointInShape(&shape->geometry, local);
+	tbRecordShapeTest(world, tb_recQueryShapeTestPoint, shapeId, point, tbVec2_zero, inside, tbVec2_zero, 0.0f);
+	return inside;
 }
 
 tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target)
@@ -1187,6 +1209,8 @@ tbWorldCastOutput tbShape_RayCast(tbShapeId shapeId, tbPos origin, tbVec2 transl
 		output.iterations = hit.iterations;
 		output.hit = true;
 	}
+	tbRecordShapeTest(world, tb_recQueryShapeRayCast, shapeId, origin, translation, output.hit, output.normal,
+					  output.fraction);
 	return output;
 }
 
