@@ -672,6 +672,18 @@ Test(recording, bad_calls_are_refused_and_change_nothing, .init = SetupErrors, .
 	tbRecPlayer_Destroy(NULL);
 	tbDestroyRecording(NULL);
 
+	// A player whose world the game destroyed stops, reported.
+	tbRecPlayer* player = tbRecPlayer_Create(tbRecording_GetData(recording), tbRecording_GetSize(recording), 0);
+	cr_assert_not_null(player);
+	tbDestroyWorld(tbRecPlayer_GetWorldId(player));
+	before = s_errors;
+	cr_assert_not(tbRecPlayer_StepFrame(player));
+	ExpectError(before, "tbRecPlayer_StepFrame", "destroyed");
+	cr_assert(tbRecPlayer_IsAtEnd(player));
+	tbRecPlayer_Restart(player);
+	tbRecPlayer_SeekFrame(player, 1);
+	tbRecPlayer_Destroy(player);
+
 	// A world destroyed while recording stops first; the recording stays whole.
 	tbRecording* live = tbCreateRecording(0);
 	tbWorld_StartRecording(other, live);

@@ -127,7 +127,11 @@ static void tbTakeKeyframe(tbRecPlayer* player)
 static void tbRestoreKeyframe(tbRecPlayer* player, const tbKeyframe* k)
 {
 	tbReplay* r = &player->replay;
-	tbWorld_Restore(r->world, k->image, k->imageSize);
+	if (tbWorld_Restore(r->world, k->image, k->imageSize) == false)
+	{
+		r->failed = true; // the game destroyed the replay world (reported)
+		return;
+	}
 	r->frame = k->frame;
 	r->cursor = k->cursor;
 	r->divergeFrame = k->divergeFrame;

@@ -86,6 +86,7 @@ static bool tbScanRecords(const char* f, const uint8_t* data, int size, tbReplay
 }
 
 static bool tbPlayCalls(tbReplay* replay, const char* f);
+static bool tbReplayWorldLives(tbReplay* replay, const char* f);
 
 void tbReplayReserveBodies(tbReplay* replay, int count)
 {
@@ -150,6 +151,11 @@ bool tbReplayOpen(tbReplay* replay, const char* f, const uint8_t* data, int size
 
 void tbReplayRestart(tbReplay* replay)
 {
+	if (tbWorld_IsValid(replay->world) == false)
+	{
+		tbReplayWorldLives(replay, "tbRecPlayer_Restart");
+		return;
+	}
 	int snapshotSize = (int)tbLoadU32(replay->data + 24);
 	tbWorld_Restore(replay->world, replay->data + TB_RECORDING_HEADER_SIZE, snapshotSize);
 	replay->cursor = replay->info.recordsStart;
@@ -405,8 +411,23 @@ static bool tbPlayCalls(tbReplay* replay, const char* f)
 	return replay->failed == false;
 }
 
+/// The replay world is the player's: a game that destroyed it stops the replay, reported.
+static bool tbReplayWorldLives(tbReplay* replay, const char* f)
+{
+	if (replay->failed == false && tbWorld_IsValid(replay->world) == false)
+	{
+		tbReportError(f, "the replay world was destroyed; destroy the player instead");
+		replay->failed = true;
+	}
+	return replay->failed == false;
+}
+
 bool tbReplayStep(tbReplay* replay, const char* f)
 {
+	if (tbReplayWorldLives(replay, f) == false)
+	{
+		return false;
+	}
 	if (replay->queriesStale)
 	{
 		replay->queryCount = 0;
