@@ -126,6 +126,49 @@ TB_API void tbWorld_RebuildStaticTree(tbWorldId worldId);
 /// over the values' bytes. 0 for a refused id.
 TB_API uint64_t tbWorld_GetStateHash(tbWorldId worldId);
 
+// Recording (Box2D v3.2's recording group) -------------------------------------------------
+
+/// A recording buffer (opaque): the bytes of a recorded session, which a world appends to while it
+/// records. Create one, hand it to tbWorld_StartRecording, then save its bytes and destroy it.
+typedef struct tbRecording tbRecording;
+
+/// A new, empty recording buffer. It grows as needed; byteCapacity sizes it up front (0: a small
+/// default). Returns NULL (error hook) for a negative byteCapacity. Free with tbDestroyRecording.
+TB_API tbRecording* tbCreateRecording(int byteCapacity);
+
+/// Free a recording buffer. A world still recording into it stops first. NULL is ignored.
+TB_API void tbDestroyRecording(tbRecording* recording);
+
+/// The recorded bytes (a sealed recording: header, checksum and all), to save or send. Valid until
+/// the world records more or the buffer is destroyed. NULL (error hook) for a NULL recording.
+TB_API const uint8_t* tbRecording_GetData(const tbRecording* recording);
+
+/// Number of recorded bytes (0 before tbWorld_StartRecording).
+TB_API int tbRecording_GetSize(const tbRecording* recording);
+
+/// Start recording the world into an empty recording buffer: a snapshot of the world as it is now
+/// (tbWorld_Snapshot), then every call that changes the world (creations, destructions, setters,
+/// forces, impulses, explosions, world settings), the spatial queries with their results (for the
+/// player to show), and every step with the state hash it ended on (tbWorld_GetStateHash).
+/// Callbacks (custom filter, pre-solve, friction and restitution mixing) and user data are host
+/// wiring, not recorded. Refused (error hook, nothing changes): stale id, NULL or non-empty
+/// recording, a recording another world uses, a world already recording, a locked world (during
+/// the step or inside a query callback).
+TB_API void tbWorld_StartRecording(tbWorldId worldId, tbRecording* recording);
+
+/// Stop recording. The buffer keeps its bytes; save and destroy it yourself. Refused (error hook)
+/// for a stale id or a world that is not recording.
+TB_API void tbWorld_StopRecording(tbWorldId worldId);
+
+/// Write a recording's bytes to a file. Returns false (error hook) when it cannot be written.
+TB_API bool tbSaveRecordingToFile(const tbRecording* recording, const char* path);
+
+/// Read a recording from a file into a new recording buffer (free it with tbDestroyRecording).
+/// The file is checked as tbRecPlayer_Create checks bytes (header, version, precision, length
+/// units, size, checksum); returns NULL (error hook naming the problem) for a missing, unreadable,
+/// truncated or corrupt file.
+TB_API tbRecording* tbLoadRecordingFromFile(const char* path);
+
 // Snapshots (Box2D v3.2's snapshot group) ---------------------------------------------------
 
 /// Write the world's whole simulation state into image, a byte array the caller owns: pass NULL and
@@ -687,6 +730,146 @@ TB_API float tbWheelJoint_GetMotorSpeed(tbJointId jointId);
 TB_API bool tbWheelJoint_SetMaxMotorTorque(tbJointId jointId, float torque);
 TB_API float tbWheelJoint_GetMaxMotorTorque(tbJointId jointId);
 TB_API float tbWheelJoint_GetMotorTorque(tbJointId jointId);
+
+
+// Replay (Box2D v3.2's replay group) ------------------------------------------------------
+
+/// Replay a recording (the bytes of tbRecording_GetData or a loaded file) in a new world on
+/// workerCount workers (0 or 1: on the caller) and compare the state hash after every step with
+/// the one recorded. Returns true when every step reproduced; false when the recording is refused
+/// (error hook naming the problem) or the replay diverged (error hook naming the first step whose
+/// hash differs).
+TB_API bool tbValidateReplay(const void* data, int size, int workerCount);
+
+/// A replay player (opaque): plays a recording step by step in a world of its own.
+typedef struct tbRecPlayer tbRecPlayer;
+
+/// What a recording holds, read once when the player opens it.
+typedef struct tbRecPlayerInfo
+{
+	int frameCount;	   ///< steps recorded
+	int workerCount;   ///< workers of the replay world
+	float timeStep;	   ///< time step of the first recorded step (s)
+	int subStepCount;  ///< sub-steps of the first recorded step
+	float lengthScale; ///< length units per metre the recording was made in
+	tbAABB bounds;	   ///< union of the world's bounds over the recorded steps (zero if no step)
+} tbRecPlayerInfo;
+
+/// Open a recording for playback: the player copies the bytes (the caller may free them), checks
+/// them (header, version, precision, length units, size, checksum), and makes the replay world from
+/// the recording's snapshot, before the first step. Returns NULL (error hook naming the problem)
+/// for NULL data, a negative size, a refused recording or a workerCount out of range.
+TB_API tbRecPlayer* tbRecPlayer_Create(const void* data, int size, int workerCount);
+
+/// Replay the calls up to the next recorded step and take it. Returns true when a step ran, false
+/// at the end of the recording (or after a malformed record, reported through the error hook).
+TB_API bool tbRecPlayer_StepFrame(tbRecPlayer* player);
+
+/// The replay world's id (the same across restarts and seeks).
+TB_API tbWorldId tbRecPlayer_GetWorldId(const tbRecPlayer* player);
+
+/// Back to the state before the first step, in the same world.
+TB_API void tbRecPlayer_Restart(tbRecPlayer* player);
+
+/// Go to the state after targetFrame steps (clamped to 0 and the frame count). Backwards, the player
+/// restores the nearest keyframe before the target and replays from there.
+TB_API void tbRecPlayer_SeekFrame(tbRecPlayer* player, int targetFrame);
+
+/// Steps replayed so far.
+TB_API int tbRecPlayer_GetFrame(const tbRecPlayer* player);
+
+/// What the recording holds (frame count, time step, sub-steps, length scale, bounds).
+TB_API tbRecPlayerInfo tbRecPlayer_GetInfo(const tbRecPlayer* player);
+
+/// True once every recorded step has been replayed.
+TB_API bool tbRecPlayer_IsAtEnd(const tbRecPlayer* player);
+
+/// True once a replayed step ended on a state hash other than the recorded one.
+TB_API bool tbRecPlayer_HasDiverged(const tbRecPlayer* player);
+
+/// The first step (1 for the first) whose state hash differed from the recorded one, or -1.
+TB_API int tbRecPlayer_GetDivergeFrame(const tbRecPlayer* player);
+
+/// Keyframes: snapshots the player takes while playing forward, so a backward seek replays from
+/// the nearest one instead of from the start. budgetBytes caps their memory (the spacing doubles
+/// to stay under it); minIntervalFrames is the finest spacing. 0 (or a negative interval) keeps a
+/// value. Clears the keyframes taken so far.
+TB_API void tbRecPlayer_SetKeyframePolicy(tbRecPlayer* player, size_t budgetBytes, int minIntervalFrames);
+
+/// The keyframe memory budget (bytes).
+TB_API size_t tbRecPlayer_GetKeyframeBudget(const tbRecPlayer* player);
+
+/// The finest keyframe spacing (frames).
+TB_API int tbRecPlayer_GetKeyframeMinInterval(const tbRecPlayer* player);
+
+/// The keyframe spacing now (frames): the finest, doubled each time the budget was reached.
+TB_API int tbRecPlayer_GetKeyframeInterval(const tbRecPlayer* player);
+
+/// Bytes the keyframes hold now.
+TB_API size_t tbRecPlayer_GetKeyframeBytes(const tbRecPlayer* player);
+
+/// Free the player, its world and its copy of the recording. NULL is ignored.
+TB_API void tbRecPlayer_Destroy(tbRecPlayer* player);
+
+/// Draw the spatial queries recorded before the step of the frame replayed last (after
+/// tbWorld_Draw): each query's box, ray or sweep, and each result's point and normal. queryIndex:
+/// one query, or -1 for all. NULL draw functions are skipped. Refused (error hook) for an index out
+/// of range.
+TB_API void tbRecPlayer_DrawFrameQueries(tbRecPlayer* player, tbDebugDraw* draw, int queryIndex);
+
+/// The kind of a recorded spatial query (Box2D v3.2's list).
+typedef enum tbRecQueryType
+{
+	tb_recQueryOverlapAABB,
+	tb_recQueryOverlapShape,
+	tb_recQueryCastRay,
+	tb_recQueryCastShape,
+	tb_recQueryCollideMover,
+	tb_recQueryCastRayClosest,
+	tb_recQueryCastMover,
+	tb_recQueryShapeTestPoint,
+	tb_recQueryShapeRayCast,
+} tbRecQueryType;
+
+/// A recorded spatial query.
+typedef struct tbRecQueryInfo
+{
+	tbRecQueryType type;
+	tbQueryFilter filter; ///< zero for the shape's own tests
+	tbAABB aabb;		  ///< overlap box, relative to origin
+	tbPos origin;		  ///< where the query starts
+	tbVec2 translation;	  ///< of a ray or a cast
+	tbShapeId shape;	  ///< the shape tested, for the shape's own tests
+	int hitCount;		  ///< results recorded
+} tbRecQueryInfo;
+
+/// One result of a recorded spatial query.
+typedef struct tbRecQueryHit
+{
+	tbShapeId shape;
+	tbPos point;
+	tbVec2 normal;
+	float fraction;
+} tbRecQueryHit;
+
+/// Number of spatial queries recorded before the step of the frame replayed last (before the first
+/// step, until the first StepFrame). Queries change nothing: replay shows them, it does not run them.
+/// A seek backwards that restores a keyframe starts with none.
+TB_API int tbRecPlayer_GetFrameQueryCount(const tbRecPlayer* player);
+
+/// A recorded query of the frame replayed last; a zeroed one (error hook) for an index out of range.
+TB_API tbRecQueryInfo tbRecPlayer_GetFrameQuery(const tbRecPlayer* player, int index);
+
+/// A result of a recorded query; a zeroed one (error hook) for an index out of range.
+TB_API tbRecQueryHit tbRecPlayer_GetFrameQueryHit(const tbRecPlayer* player, int queryIndex, int hitIndex);
+
+/// Bodies created so far in the replay, destroyed ones included: the span of creation ordinals
+/// (bodies of the recording's snapshot first, in id order). Only grows as the replay goes forward.
+TB_API int tbRecPlayer_GetBodyCount(const tbRecPlayer* player);
+
+/// The body of a creation ordinal; tb_nullBodyId once destroyed, not yet created at this frame, or
+/// out of range.
+TB_API tbBodyId tbRecPlayer_GetBodyId(const tbRecPlayer* player, int index);
 
 #ifdef __cplusplus
 }

@@ -44,6 +44,8 @@ static tbFreeFcn* s_freeFcn = NULL;
 static _Atomic int64_t s_byteCount = 0;
 static _Atomic int s_errorCount = 0;
 static tbErrorFcn* s_errorFcn = NULL;
+// Told of every refused call before the game's hook (a recording takes the call's record back).
+static tbErrorObserver* s_errorObserver = NULL;
 static void* s_errorContext = NULL;
 static tbAssertFcn* s_assertFcn = NULL;
 static tbLogFcn* s_logFcn = NULL;
@@ -163,6 +165,11 @@ int tbGetErrorCount(void)
 	return atomic_load(&s_errorCount);
 }
 
+void tbSetErrorObserver(tbErrorObserver* observer)
+{
+	s_errorObserver = observer;
+}
+
 void tbReportError(const char* function, const char* format, ...)
 {
 	char message[512];
@@ -172,6 +179,10 @@ void tbReportError(const char* function, const char* format, ...)
 	vsnprintf(message + n, sizeof(message) - (size_t)n, format, args);
 	va_end(args);
 	atomic_fetch_add(&s_errorCount, 1);
+	if (s_errorObserver != NULL)
+	{
+		s_errorObserver(function);
+	}
 	tbErrorFcn* fcn = s_errorFcn != NULL ? s_errorFcn : tbDefaultErrorFcn;
 	fcn(message, s_errorContext);
 }

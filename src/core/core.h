@@ -39,6 +39,11 @@ void tbSetLengthUnits(float lengthUnits);
 /// Report a rejected call: "function: message". Formats like printf.
 void tbReportError(const char* function, const char* format, ...) TB_PRINTF_FORMAT(2, 3);
 
+/// Told the function's name of every error reported, before the error hook: the world layer's
+/// recordings use it to drop the record of a call that was refused (core cannot call upward).
+typedef void tbErrorObserver(const char* function);
+void tbSetErrorObserver(tbErrorObserver* observer);
+
 /// Checks that report an error naming function and argument, returning false when bad.
 bool tbCheckFloat(const char* function, const char* name, float value);
 bool tbCheckNonNegative(const char* function, const char* name, float value);

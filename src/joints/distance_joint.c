@@ -19,6 +19,7 @@
 #include "joint.h"
 
 #include "tumble/constants.h"
+#include "world/recording.h"
 
 static tbJoint* tbGetDistance(tbJointId id, const char* f, tbWorld** world, bool mutating)
 {
@@ -47,6 +48,7 @@ static void tbSetLengthRange(tbDistanceJoint* d, float minLength, float maxLengt
 
 tbJointId tbCreateDistanceJoint(tbWorldId worldId, const tbDistanceJointDef* def)
 {
+	TB_RECORD(CreateDistanceJoint, &worldId, def);
 	const char* f = "tbCreateDistanceJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultDistanceJointDef") == false ||
@@ -251,6 +253,7 @@ void tbDrawDistanceJoint(const tbDebugDraw* draw, const tbWorld* world, const tb
 
 bool tbDistanceJoint_SetLength(tbJointId jointId, float length)
 {
+	TB_RECORD(DistanceJointSetLength, &jointId, &length);
 	const char* f = "tbDistanceJoint_SetLength";
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, f, &world, true);
@@ -274,6 +277,7 @@ float tbDistanceJoint_GetLength(tbJointId jointId)
 
 void tbDistanceJoint_EnableSpring(tbJointId jointId, bool enableSpring)
 {
+	TB_RECORD(DistanceJointEnableSpring, &jointId, &enableSpring);
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, "tbDistanceJoint_EnableSpring", &world, true);
 	if (joint != NULL && joint->distance.enableSpring != enableSpring)
@@ -292,6 +296,7 @@ bool tbDistanceJoint_IsSpringEnabled(tbJointId jointId)
 
 bool tbDistanceJoint_SetSpringForceRange(tbJointId jointId, float lowerForce, float upperForce)
 {
+	TB_RECORD(DistanceJointSetSpringForceRange, &jointId, &lowerForce, &upperForce);
 	const char* f = "tbDistanceJoint_SetSpringForceRange";
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, f, &world, true);
@@ -320,6 +325,7 @@ void tbDistanceJoint_GetSpringForceRange(tbJointId jointId, float* lowerForce, f
 
 bool tbDistanceJoint_SetSpringHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(DistanceJointSetSpringHertz, &jointId, &hertz);
 	const char* f = "tbDistanceJoint_SetSpringHertz";
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, f, &world, true);
@@ -340,6 +346,7 @@ float tbDistanceJoint_GetSpringHertz(tbJointId jointId)
 
 bool tbDistanceJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio)
 {
+	TB_RECORD(DistanceJointSetSpringDampingRatio, &jointId, &dampingRatio);
 	const char* f = "tbDistanceJoint_SetSpringDampingRatio";
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, f, &world, true);
@@ -360,6 +367,7 @@ float tbDistanceJoint_GetSpringDampingRatio(tbJointId jointId)
 
 void tbDistanceJoint_EnableLimit(tbJointId jointId, bool enableLimit)
 {
+	TB_RECORD(DistanceJointEnableLimit, &jointId, &enableLimit);
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, "tbDistanceJoint_EnableLimit", &world, true);
 	if (joint != NULL && joint->distance.enableLimit != enableLimit)
@@ -379,6 +387,7 @@ bool tbDistanceJoint_IsLimitEnabled(tbJointId jointId)
 
 bool tbDistanceJoint_SetLengthRange(tbJointId jointId, float minLength, float maxLength)
 {
+	TB_RECORD(DistanceJointSetLengthRange, &jointId, &minLength, &maxLength);
 	const char* f = "tbDistanceJoint_SetLengthRange";
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, f, &world, true);
@@ -420,6 +429,7 @@ float tbDistanceJoint_GetCurrentLength(tbJointId jointId)
 
 void tbDistanceJoint_EnableMotor(tbJointId jointId, bool enableMotor)
 {
+	TB_RECORD(DistanceJointEnableMotor, &jointId, &enableMotor);
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, "tbDistanceJoint_EnableMotor", &world, true);
 	if (joint != NULL && joint->distance.enableMotor != enableMotor)
@@ -438,6 +448,7 @@ bool tbDistanceJoint_IsMotorEnabled(tbJointId jointId)
 
 bool tbDistanceJoint_SetMotorSpeed(tbJointId jointId, float motorSpeed)
 {
+	TB_RECORD(DistanceJointSetMotorSpeed, &jointId, &motorSpeed);
 	const char* f = "tbDistanceJoint_SetMotorSpeed";
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, f, &world, true);
@@ -458,6 +469,7 @@ float tbDistanceJoint_GetMotorSpeed(tbJointId jointId)
 
 bool tbDistanceJoint_SetMaxMotorForce(tbJointId jointId, float force)
 {
+	TB_RECORD(DistanceJointSetMaxMotorForce, &jointId, &force);
 	const char* f = "tbDistanceJoint_SetMaxMotorForce";
 	tbWorld* world;
 	tbJoint* joint = tbGetDistance(jointId, f, &world, true);

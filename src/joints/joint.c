@@ -44,6 +44,7 @@
 #include "joint.h"
 
 #include "core/array.h"
+#include "world/recording.h"
 
 #include <float.h>
 #include <string.h>
@@ -477,6 +478,7 @@ static void tbDestroyJointInternal(tbWorld* world, int jointId, bool refindPairs
 
 void tbDestroyJoint(tbJointId jointId)
 {
+	TB_RECORD(DestroyJoint, &jointId);
 	tbWorld* world;
 	tbJoint* joint = tbGetJointChecked(jointId, "tbDestroyJoint", &world, -1, true);
 	if (joint != NULL && tbStructureLocked(world, "tbDestroyJoint", "destroy joints") == false)
@@ -510,6 +512,7 @@ void tbFreeJoints(tbWorld* world)
 
 tbJointId tbCreateFilterJoint(tbWorldId worldId, const tbFilterJointDef* def)
 {
+	TB_RECORD(CreateFilterJoint, &worldId, def);
 	const char* f = "tbCreateFilterJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultFilterJointDef") == false)
@@ -578,11 +581,13 @@ static bool tbSetLocalFrame(tbJointId jointId, tbTransform frame, int edge, cons
 
 bool tbJoint_SetLocalFrameA(tbJointId jointId, tbTransform localFrame)
 {
+	TB_RECORD(JointSetLocalFrameA, &jointId, &localFrame);
 	return tbSetLocalFrame(jointId, localFrame, 0, "tbJoint_SetLocalFrameA");
 }
 
 bool tbJoint_SetLocalFrameB(tbJointId jointId, tbTransform localFrame)
 {
+	TB_RECORD(JointSetLocalFrameB, &jointId, &localFrame);
 	return tbSetLocalFrame(jointId, localFrame, 1, "tbJoint_SetLocalFrameB");
 }
 
@@ -600,6 +605,7 @@ tbTransform tbJoint_GetLocalFrameB(tbJointId jointId)
 
 void tbJoint_SetCollideConnected(tbJointId jointId, bool shouldCollide)
 {
+	TB_RECORD(JointSetCollideConnected, &jointId, &shouldCollide);
 	tbWorld* world;
 	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_SetCollideConnected", &world, -1, true);
 	if (joint == NULL || joint->collideConnected == shouldCollide ||
@@ -645,6 +651,7 @@ void* tbJoint_GetUserData(tbJointId jointId)
 
 void tbJoint_WakeBodies(tbJointId jointId)
 {
+	TB_RECORD(JointWakeBodies, &jointId);
 	tbWorld* world;
 	tbJoint* joint = tbGetJointChecked(jointId, "tbJoint_WakeBodies", &world, -1, true);
 	if (joint != NULL)
@@ -767,6 +774,7 @@ float tbJoint_GetAngularSeparation(tbJointId jointId)
 
 bool tbJoint_SetConstraintTuning(tbJointId jointId, float hertz, float dampingRatio)
 {
+	TB_RECORD(JointSetConstraintTuning, &jointId, &hertz, &dampingRatio);
 	const char* f = "tbJoint_SetConstraintTuning";
 	tbWorld* world;
 	tbJoint* joint = tbGetJointChecked(jointId, f, &world, -1, true);
@@ -796,6 +804,7 @@ void tbJoint_GetConstraintTuning(tbJointId jointId, float* hertz, float* damping
 
 bool tbJoint_SetForceThreshold(tbJointId jointId, float threshold)
 {
+	TB_RECORD(JointSetForceThreshold, &jointId, &threshold);
 	const char* f = "tbJoint_SetForceThreshold";
 	tbJoint* joint = tbGetJointChecked(jointId, f, NULL, -1, true);
 	if (joint == NULL || tbCheckNonNegative(f, "threshold", threshold) == false)
@@ -814,6 +823,7 @@ float tbJoint_GetForceThreshold(tbJointId jointId)
 
 bool tbJoint_SetTorqueThreshold(tbJointId jointId, float threshold)
 {
+	TB_RECORD(JointSetTorqueThreshold, &jointId, &threshold);
 	const char* f = "tbJoint_SetTorqueThreshold";
 	tbJoint* joint = tbGetJointChecked(jointId, f, NULL, -1, true);
 	if (joint == NULL || tbCheckNonNegative(f, "threshold", threshold) == false)

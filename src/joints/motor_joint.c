@@ -14,6 +14,7 @@
 // every pass: these are user forces, not constraints with a position error to relax.
 // Reference: Catto, "Soft Constraints", GDC 2011; Box2D v3.2's motor joint.
 #include "joint.h"
+#include "world/recording.h"
 
 static tbJoint* tbGetMotor(tbJointId id, const char* f, tbWorld** world, bool mutating)
 {
@@ -36,6 +37,7 @@ static bool tbCheckMotorDef(const char* f, const tbMotorJointDef* def)
 
 tbJointId tbCreateMotorJoint(tbWorldId worldId, const tbMotorJointDef* def)
 {
+	TB_RECORD(CreateMotorJoint, &worldId, def);
 	const char* f = "tbCreateMotorJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultMotorJointDef") == false ||
@@ -194,6 +196,7 @@ void tbDrawMotorJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoi
 
 bool tbMotorJoint_SetLinearVelocity(tbJointId jointId, tbVec2 velocity)
 {
+	TB_RECORD(MotorJointSetLinearVelocity, &jointId, &velocity);
 	const char* f = "tbMotorJoint_SetLinearVelocity";
 	tbWorld* world;
 	tbJoint* joint = tbGetMotor(jointId, f, &world, true);
@@ -214,6 +217,7 @@ tbVec2 tbMotorJoint_GetLinearVelocity(tbJointId jointId)
 
 bool tbMotorJoint_SetAngularVelocity(tbJointId jointId, float velocity)
 {
+	TB_RECORD(MotorJointSetAngularVelocity, &jointId, &velocity);
 	const char* f = "tbMotorJoint_SetAngularVelocity";
 	tbWorld* world;
 	tbJoint* joint = tbGetMotor(jointId, f, &world, true);
@@ -254,6 +258,7 @@ static float tbGetMotorValue(tbJointId jointId, const char* f, size_t offset)
 
 bool tbMotorJoint_SetMaxVelocityForce(tbJointId jointId, float maxForce)
 {
+	TB_RECORD(MotorJointSetMaxVelocityForce, &jointId, &maxForce);
 	return tbSetMotorValue(jointId, "tbMotorJoint_SetMaxVelocityForce", "maxForce", maxForce,
 						   offsetof(tbMotorJoint, maxVelocityForce));
 }
@@ -265,6 +270,7 @@ float tbMotorJoint_GetMaxVelocityForce(tbJointId jointId)
 
 bool tbMotorJoint_SetMaxVelocityTorque(tbJointId jointId, float maxTorque)
 {
+	TB_RECORD(MotorJointSetMaxVelocityTorque, &jointId, &maxTorque);
 	return tbSetMotorValue(jointId, "tbMotorJoint_SetMaxVelocityTorque", "maxTorque", maxTorque,
 						   offsetof(tbMotorJoint, maxVelocityTorque));
 }
@@ -276,6 +282,7 @@ float tbMotorJoint_GetMaxVelocityTorque(tbJointId jointId)
 
 bool tbMotorJoint_SetLinearHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(MotorJointSetLinearHertz, &jointId, &hertz);
 	return tbSetMotorValue(jointId, "tbMotorJoint_SetLinearHertz", "hertz", hertz, offsetof(tbMotorJoint, linearHertz));
 }
 
@@ -286,6 +293,7 @@ float tbMotorJoint_GetLinearHertz(tbJointId jointId)
 
 bool tbMotorJoint_SetLinearDampingRatio(tbJointId jointId, float damping)
 {
+	TB_RECORD(MotorJointSetLinearDampingRatio, &jointId, &damping);
 	return tbSetMotorValue(jointId, "tbMotorJoint_SetLinearDampingRatio", "damping", damping,
 						   offsetof(tbMotorJoint, linearDampingRatio));
 }
@@ -297,6 +305,7 @@ float tbMotorJoint_GetLinearDampingRatio(tbJointId jointId)
 
 bool tbMotorJoint_SetAngularHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(MotorJointSetAngularHertz, &jointId, &hertz);
 	return tbSetMotorValue(jointId, "tbMotorJoint_SetAngularHertz", "hertz", hertz,
 						   offsetof(tbMotorJoint, angularHertz));
 }
@@ -308,6 +317,7 @@ float tbMotorJoint_GetAngularHertz(tbJointId jointId)
 
 bool tbMotorJoint_SetAngularDampingRatio(tbJointId jointId, float damping)
 {
+	TB_RECORD(MotorJointSetAngularDampingRatio, &jointId, &damping);
 	return tbSetMotorValue(jointId, "tbMotorJoint_SetAngularDampingRatio", "damping", damping,
 						   offsetof(tbMotorJoint, angularDampingRatio));
 }
@@ -319,6 +329,7 @@ float tbMotorJoint_GetAngularDampingRatio(tbJointId jointId)
 
 bool tbMotorJoint_SetMaxSpringForce(tbJointId jointId, float maxForce)
 {
+	TB_RECORD(MotorJointSetMaxSpringForce, &jointId, &maxForce);
 	return tbSetMotorValue(jointId, "tbMotorJoint_SetMaxSpringForce", "maxForce", maxForce,
 						   offsetof(tbMotorJoint, maxSpringForce));
 }
@@ -330,6 +341,7 @@ float tbMotorJoint_GetMaxSpringForce(tbJointId jointId)
 
 bool tbMotorJoint_SetMaxSpringTorque(tbJointId jointId, float maxTorque)
 {
+	TB_RECORD(MotorJointSetMaxSpringTorque, &jointId, &maxTorque);
 	return tbSetMotorValue(jointId, "tbMotorJoint_SetMaxSpringTorque", "maxTorque", maxTorque,
 						   offsetof(tbMotorJoint, maxSpringTorque));
 }

@@ -17,6 +17,7 @@
 // Reference: Catto, "Modeling and Solving Constraints", GDC 2009 (sequential impulses with
 // clamped accumulated impulses); Box2D v3.2's mover joint.
 #include "joint.h"
+#include "world/recording.h"
 
 static tbJoint* tbGetMover(tbJointId id, const char* f, tbWorld** world, bool mutating)
 {
@@ -37,6 +38,7 @@ static bool tbCheckForcePair(const char* f, const char* name, tbVec2 force)
 
 tbJointId tbCreateMoverJoint(tbWorldId worldId, const tbMoverJointDef* def)
 {
+	TB_RECORD(CreateMoverJoint, &worldId, def);
 	const char* f = "tbCreateMoverJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultMoverJointDef") == false ||
@@ -146,6 +148,7 @@ void tbDrawMoverJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoi
 
 bool tbMoverJoint_SetLinearVelocity(tbJointId jointId, tbVec2 velocity)
 {
+	TB_RECORD(MoverJointSetLinearVelocity, &jointId, &velocity);
 	const char* f = "tbMoverJoint_SetLinearVelocity";
 	tbWorld* world;
 	tbJoint* joint = tbGetMover(jointId, f, &world, true);
@@ -166,6 +169,7 @@ tbVec2 tbMoverJoint_GetLinearVelocity(tbJointId jointId)
 
 bool tbMoverJoint_SetMaxVelocityForce(tbJointId jointId, tbVec2 maxForce)
 {
+	TB_RECORD(MoverJointSetMaxVelocityForce, &jointId, &maxForce);
 	const char* f = "tbMoverJoint_SetMaxVelocityForce";
 	tbWorld* world;
 	tbJoint* joint = tbGetMover(jointId, f, &world, true);

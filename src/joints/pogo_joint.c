@@ -38,6 +38,7 @@
 // Reference: Catto, "Soft Constraints", GDC 2011 (implicit springs in a sub-stepped solver);
 // Box2D v3.2's pogo joint.
 #include "joint.h"
+#include "world/recording.h"
 
 static tbJoint* tbGetPogo(tbJointId id, const char* f, tbWorld** world, bool mutating)
 {
@@ -66,6 +67,7 @@ static bool tbCheckPogoDef(const char* f, const tbPogoJointDef* def)
 
 tbJointId tbCreatePogoJoint(tbWorldId worldId, const tbPogoJointDef* def)
 {
+	TB_RECORD(CreatePogoJoint, &worldId, def);
 	const char* f = "tbCreatePogoJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultPogoJointDef") == false ||
@@ -175,6 +177,7 @@ void tbDrawPogoJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoin
 
 bool tbPogoJoint_SetRestLength(tbJointId jointId, float length)
 {
+	TB_RECORD(PogoJointSetRestLength, &jointId, &length);
 	const char* f = "tbPogoJoint_SetRestLength";
 	tbWorld* world;
 	tbJoint* joint = tbGetPogo(jointId, f, &world, true);
@@ -195,6 +198,7 @@ float tbPogoJoint_GetRestLength(tbJointId jointId)
 
 bool tbPogoJoint_SetSpringHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(PogoJointSetSpringHertz, &jointId, &hertz);
 	const char* f = "tbPogoJoint_SetSpringHertz";
 	tbWorld* world;
 	tbJoint* joint = tbGetPogo(jointId, f, &world, true);
@@ -215,6 +219,7 @@ float tbPogoJoint_GetSpringHertz(tbJointId jointId)
 
 bool tbPogoJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio)
 {
+	TB_RECORD(PogoJointSetSpringDampingRatio, &jointId, &dampingRatio);
 	const char* f = "tbPogoJoint_SetSpringDampingRatio";
 	tbWorld* world;
 	tbJoint* joint = tbGetPogo(jointId, f, &world, true);

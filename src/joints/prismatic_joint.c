@@ -17,6 +17,7 @@
 // with speculation, as the revolute joint's angle limits.
 // Reference: Catto, "Modeling and Solving Constraints", GDC 2009; Box2D v3's prismatic joint.
 #include "joint.h"
+#include "world/recording.h"
 
 static tbJoint* tbGetPrismatic(tbJointId id, const char* f, tbWorld** world, bool mutating)
 {
@@ -36,6 +37,7 @@ static bool tbCheckPrismaticDef(const char* f, const tbPrismaticJointDef* def)
 
 tbJointId tbCreatePrismaticJoint(tbWorldId worldId, const tbPrismaticJointDef* def)
 {
+	TB_RECORD(CreatePrismaticJoint, &worldId, def);
 	const char* f = "tbCreatePrismaticJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultPrismaticJointDef") == false ||
@@ -272,6 +274,7 @@ void tbDrawPrismaticJoint(const tbDebugDraw* draw, const tbWorld* world, const t
 
 void tbPrismaticJoint_EnableSpring(tbJointId jointId, bool enableSpring)
 {
+	TB_RECORD(PrismaticJointEnableSpring, &jointId, &enableSpring);
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, "tbPrismaticJoint_EnableSpring", &world, true);
 	if (joint != NULL && joint->prismatic.enableSpring != enableSpring)
@@ -290,6 +293,7 @@ bool tbPrismaticJoint_IsSpringEnabled(tbJointId jointId)
 
 bool tbPrismaticJoint_SetSpringHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(PrismaticJointSetSpringHertz, &jointId, &hertz);
 	const char* f = "tbPrismaticJoint_SetSpringHertz";
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, f, &world, true);
@@ -310,6 +314,7 @@ float tbPrismaticJoint_GetSpringHertz(tbJointId jointId)
 
 bool tbPrismaticJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio)
 {
+	TB_RECORD(PrismaticJointSetSpringDampingRatio, &jointId, &dampingRatio);
 	const char* f = "tbPrismaticJoint_SetSpringDampingRatio";
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, f, &world, true);
@@ -330,6 +335,7 @@ float tbPrismaticJoint_GetSpringDampingRatio(tbJointId jointId)
 
 bool tbPrismaticJoint_SetTargetTranslation(tbJointId jointId, float translation)
 {
+	TB_RECORD(PrismaticJointSetTargetTranslation, &jointId, &translation);
 	const char* f = "tbPrismaticJoint_SetTargetTranslation";
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, f, &world, true);
@@ -350,6 +356,7 @@ float tbPrismaticJoint_GetTargetTranslation(tbJointId jointId)
 
 void tbPrismaticJoint_EnableLimit(tbJointId jointId, bool enableLimit)
 {
+	TB_RECORD(PrismaticJointEnableLimit, &jointId, &enableLimit);
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, "tbPrismaticJoint_EnableLimit", &world, true);
 	if (joint != NULL && joint->prismatic.enableLimit != enableLimit)
@@ -381,6 +388,7 @@ float tbPrismaticJoint_GetUpperLimit(tbJointId jointId)
 
 bool tbPrismaticJoint_SetLimits(tbJointId jointId, float lower, float upper)
 {
+	TB_RECORD(PrismaticJointSetLimits, &jointId, &lower, &upper);
 	const char* f = "tbPrismaticJoint_SetLimits";
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, f, &world, true);
@@ -396,6 +404,7 @@ bool tbPrismaticJoint_SetLimits(tbJointId jointId, float lower, float upper)
 
 void tbPrismaticJoint_EnableMotor(tbJointId jointId, bool enableMotor)
 {
+	TB_RECORD(PrismaticJointEnableMotor, &jointId, &enableMotor);
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, "tbPrismaticJoint_EnableMotor", &world, true);
 	if (joint != NULL && joint->prismatic.enableMotor != enableMotor)
@@ -414,6 +423,7 @@ bool tbPrismaticJoint_IsMotorEnabled(tbJointId jointId)
 
 bool tbPrismaticJoint_SetMotorSpeed(tbJointId jointId, float motorSpeed)
 {
+	TB_RECORD(PrismaticJointSetMotorSpeed, &jointId, &motorSpeed);
 	const char* f = "tbPrismaticJoint_SetMotorSpeed";
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, f, &world, true);
@@ -434,6 +444,7 @@ float tbPrismaticJoint_GetMotorSpeed(tbJointId jointId)
 
 bool tbPrismaticJoint_SetMaxMotorForce(tbJointId jointId, float force)
 {
+	TB_RECORD(PrismaticJointSetMaxMotorForce, &jointId, &force);
 	const char* f = "tbPrismaticJoint_SetMaxMotorForce";
 	tbWorld* world;
 	tbJoint* joint = tbGetPrismatic(jointId, f, &world, true);

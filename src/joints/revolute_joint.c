@@ -19,6 +19,7 @@
 // Order: spring, motor, limits, then the point constraint, which matters most, last.
 // Reference: Catto, "Modeling and Solving Constraints", GDC 2009; Box2D v3's revolute joint.
 #include "joint.h"
+#include "world/recording.h"
 
 static tbJoint* tbGetRevolute(tbJointId id, const char* f, tbWorld** world, bool mutating)
 {
@@ -58,6 +59,7 @@ static float tbClampLimitAngle(float angle)
 
 tbJointId tbCreateRevoluteJoint(tbWorldId worldId, const tbRevoluteJointDef* def)
 {
+	TB_RECORD(CreateRevoluteJoint, &worldId, def);
 	const char* f = "tbCreateRevoluteJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultRevoluteJointDef") == false ||
@@ -253,6 +255,7 @@ void tbDrawRevoluteJoint(const tbDebugDraw* draw, const tbWorld* world, const tb
 
 void tbRevoluteJoint_EnableSpring(tbJointId jointId, bool enableSpring)
 {
+	TB_RECORD(RevoluteJointEnableSpring, &jointId, &enableSpring);
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, "tbRevoluteJoint_EnableSpring", &world, true);
 	if (joint != NULL && joint->revolute.enableSpring != enableSpring)
@@ -271,6 +274,7 @@ bool tbRevoluteJoint_IsSpringEnabled(tbJointId jointId)
 
 bool tbRevoluteJoint_SetSpringHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(RevoluteJointSetSpringHertz, &jointId, &hertz);
 	const char* f = "tbRevoluteJoint_SetSpringHertz";
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, f, &world, true);
@@ -291,6 +295,7 @@ float tbRevoluteJoint_GetSpringHertz(tbJointId jointId)
 
 bool tbRevoluteJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio)
 {
+	TB_RECORD(RevoluteJointSetSpringDampingRatio, &jointId, &dampingRatio);
 	const char* f = "tbRevoluteJoint_SetSpringDampingRatio";
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, f, &world, true);
@@ -311,6 +316,7 @@ float tbRevoluteJoint_GetSpringDampingRatio(tbJointId jointId)
 
 bool tbRevoluteJoint_SetTargetAngle(tbJointId jointId, float angle)
 {
+	TB_RECORD(RevoluteJointSetTargetAngle, &jointId, &angle);
 	const char* f = "tbRevoluteJoint_SetTargetAngle";
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, f, &world, true);
@@ -342,6 +348,7 @@ float tbRevoluteJoint_GetAngle(tbJointId jointId)
 
 void tbRevoluteJoint_EnableLimit(tbJointId jointId, bool enableLimit)
 {
+	TB_RECORD(RevoluteJointEnableLimit, &jointId, &enableLimit);
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, "tbRevoluteJoint_EnableLimit", &world, true);
 	if (joint != NULL && joint->revolute.enableLimit != enableLimit)
@@ -373,6 +380,7 @@ float tbRevoluteJoint_GetUpperLimit(tbJointId jointId)
 
 bool tbRevoluteJoint_SetLimits(tbJointId jointId, float lower, float upper)
 {
+	TB_RECORD(RevoluteJointSetLimits, &jointId, &lower, &upper);
 	const char* f = "tbRevoluteJoint_SetLimits";
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, f, &world, true);
@@ -388,6 +396,7 @@ bool tbRevoluteJoint_SetLimits(tbJointId jointId, float lower, float upper)
 
 void tbRevoluteJoint_EnableMotor(tbJointId jointId, bool enableMotor)
 {
+	TB_RECORD(RevoluteJointEnableMotor, &jointId, &enableMotor);
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, "tbRevoluteJoint_EnableMotor", &world, true);
 	if (joint != NULL && joint->revolute.enableMotor != enableMotor)
@@ -406,6 +415,7 @@ bool tbRevoluteJoint_IsMotorEnabled(tbJointId jointId)
 
 bool tbRevoluteJoint_SetMotorSpeed(tbJointId jointId, float motorSpeed)
 {
+	TB_RECORD(RevoluteJointSetMotorSpeed, &jointId, &motorSpeed);
 	const char* f = "tbRevoluteJoint_SetMotorSpeed";
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, f, &world, true);
@@ -433,6 +443,7 @@ float tbRevoluteJoint_GetMotorTorque(tbJointId jointId)
 
 bool tbRevoluteJoint_SetMaxMotorTorque(tbJointId jointId, float torque)
 {
+	TB_RECORD(RevoluteJointSetMaxMotorTorque, &jointId, &torque);
 	const char* f = "tbRevoluteJoint_SetMaxMotorTorque";
 	tbWorld* world;
 	tbJoint* joint = tbGetRevolute(jointId, f, &world, true);

@@ -11,6 +11,7 @@
 // > 0 makes that row a spring (Catto, "Soft Constraints", GDC 2011) in every pass.
 // Reference: Catto, "Modeling and Solving Constraints", GDC 2009; Box2D v3's weld joint.
 #include "joint.h"
+#include "world/recording.h"
 
 static tbJoint* tbGetWeld(tbJointId id, const char* f, tbWorld** world, bool mutating)
 {
@@ -27,6 +28,7 @@ static bool tbCheckWeldDef(const char* f, const tbWeldJointDef* def)
 
 tbJointId tbCreateWeldJoint(tbWorldId worldId, const tbWeldJointDef* def)
 {
+	TB_RECORD(CreateWeldJoint, &worldId, def);
 	const char* f = "tbCreateWeldJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultWeldJointDef") == false ||
@@ -189,6 +191,7 @@ static float tbGetWeldValue(tbJointId jointId, const char* f, size_t offset)
 
 bool tbWeldJoint_SetLinearHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(WeldJointSetLinearHertz, &jointId, &hertz);
 	return tbSetWeldValue(jointId, "tbWeldJoint_SetLinearHertz", "hertz", hertz, offsetof(tbWeldJoint, linearHertz));
 }
 
@@ -199,6 +202,7 @@ float tbWeldJoint_GetLinearHertz(tbJointId jointId)
 
 bool tbWeldJoint_SetLinearDampingRatio(tbJointId jointId, float dampingRatio)
 {
+	TB_RECORD(WeldJointSetLinearDampingRatio, &jointId, &dampingRatio);
 	return tbSetWeldValue(jointId, "tbWeldJoint_SetLinearDampingRatio", "dampingRatio", dampingRatio,
 						  offsetof(tbWeldJoint, linearDampingRatio));
 }
@@ -210,6 +214,7 @@ float tbWeldJoint_GetLinearDampingRatio(tbJointId jointId)
 
 bool tbWeldJoint_SetAngularHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(WeldJointSetAngularHertz, &jointId, &hertz);
 	return tbSetWeldValue(jointId, "tbWeldJoint_SetAngularHertz", "hertz", hertz, offsetof(tbWeldJoint, angularHertz));
 }
 
@@ -220,6 +225,7 @@ float tbWeldJoint_GetAngularHertz(tbJointId jointId)
 
 bool tbWeldJoint_SetAngularDampingRatio(tbJointId jointId, float dampingRatio)
 {
+	TB_RECORD(WeldJointSetAngularDampingRatio, &jointId, &dampingRatio);
 	return tbSetWeldValue(jointId, "tbWeldJoint_SetAngularDampingRatio", "dampingRatio", dampingRatio,
 						  offsetof(tbWeldJoint, angularDampingRatio));
 }

@@ -12,6 +12,7 @@
 // Order: motor, spring, limits, then the point-on-line row, which matters most, last.
 // Reference: Catto, "Modeling and Solving Constraints", GDC 2009; Box2D v3's wheel joint.
 #include "joint.h"
+#include "world/recording.h"
 
 static tbJoint* tbGetWheel(tbJointId id, const char* f, tbWorld** world, bool mutating)
 {
@@ -30,6 +31,7 @@ static bool tbCheckWheelDef(const char* f, const tbWheelJointDef* def)
 
 tbJointId tbCreateWheelJoint(tbWorldId worldId, const tbWheelJointDef* def)
 {
+	TB_RECORD(CreateWheelJoint, &worldId, def);
 	const char* f = "tbCreateWheelJoint";
 	tbJointId id = TB_NULL_JOINT_ID;
 	if (tbCheckJointDefPointer(f, def, def != NULL ? def->internalValue : 0, "tbDefaultWheelJointDef") == false ||
@@ -182,6 +184,7 @@ void tbDrawWheelJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoi
 
 void tbWheelJoint_EnableSpring(tbJointId jointId, bool enableSpring)
 {
+	TB_RECORD(WheelJointEnableSpring, &jointId, &enableSpring);
 	tbWorld* world;
 	tbJoint* joint = tbGetWheel(jointId, "tbWheelJoint_EnableSpring", &world, true);
 	if (joint != NULL && joint->wheel.enableSpring != enableSpring)
@@ -200,6 +203,7 @@ bool tbWheelJoint_IsSpringEnabled(tbJointId jointId)
 
 bool tbWheelJoint_SetSpringHertz(tbJointId jointId, float hertz)
 {
+	TB_RECORD(WheelJointSetSpringHertz, &jointId, &hertz);
 	const char* f = "tbWheelJoint_SetSpringHertz";
 	tbWorld* world;
 	tbJoint* joint = tbGetWheel(jointId, f, &world, true);
@@ -220,6 +224,7 @@ float tbWheelJoint_GetSpringHertz(tbJointId jointId)
 
 bool tbWheelJoint_SetSpringDampingRatio(tbJointId jointId, float dampingRatio)
 {
+	TB_RECORD(WheelJointSetSpringDampingRatio, &jointId, &dampingRatio);
 	const char* f = "tbWheelJoint_SetSpringDampingRatio";
 	tbWorld* world;
 	tbJoint* joint = tbGetWheel(jointId, f, &world, true);
@@ -240,6 +245,7 @@ float tbWheelJoint_GetSpringDampingRatio(tbJointId jointId)
 
 void tbWheelJoint_EnableLimit(tbJointId jointId, bool enableLimit)
 {
+	TB_RECORD(WheelJointEnableLimit, &jointId, &enableLimit);
 	tbWorld* world;
 	tbJoint* joint = tbGetWheel(jointId, "tbWheelJoint_EnableLimit", &world, true);
 	if (joint != NULL && joint->wheel.enableLimit != enableLimit)
@@ -271,6 +277,7 @@ float tbWheelJoint_GetUpperLimit(tbJointId jointId)
 
 bool tbWheelJoint_SetLimits(tbJointId jointId, float lower, float upper)
 {
+	TB_RECORD(WheelJointSetLimits, &jointId, &lower, &upper);
 	const char* f = "tbWheelJoint_SetLimits";
 	tbWorld* world;
 	tbJoint* joint = tbGetWheel(jointId, f, &world, true);
@@ -286,6 +293,7 @@ bool tbWheelJoint_SetLimits(tbJointId jointId, float lower, float upper)
 
 void tbWheelJoint_EnableMotor(tbJointId jointId, bool enableMotor)
 {
+	TB_RECORD(WheelJointEnableMotor, &jointId, &enableMotor);
 	tbWorld* world;
 	tbJoint* joint = tbGetWheel(jointId, "tbWheelJoint_EnableMotor", &world, true);
 	if (joint != NULL && joint->wheel.enableMotor != enableMotor)
@@ -304,6 +312,7 @@ bool tbWheelJoint_IsMotorEnabled(tbJointId jointId)
 
 bool tbWheelJoint_SetMotorSpeed(tbJointId jointId, float motorSpeed)
 {
+	TB_RECORD(WheelJointSetMotorSpeed, &jointId, &motorSpeed);
 	const char* f = "tbWheelJoint_SetMotorSpeed";
 	tbWorld* world;
 	tbJoint* joint = tbGetWheel(jointId, f, &world, true);
@@ -324,6 +333,7 @@ float tbWheelJoint_GetMotorSpeed(tbJointId jointId)
 
 bool tbWheelJoint_SetMaxMotorTorque(tbJointId jointId, float torque)
 {
+	TB_RECORD(WheelJointSetMaxMotorTorque, &jointId, &torque);
 	const char* f = "tbWheelJoint_SetMaxMotorTorque";
 	tbWorld* world;
 	tbJoint* joint = tbGetWheel(jointId, f, &world, true);

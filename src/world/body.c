@@ -9,6 +9,7 @@
 #include "joints/joint.h"
 
 #include "core/array.h"
+#include "recording.h"
 
 #include <float.h>
 #include <math.h>
@@ -193,6 +194,7 @@ static int tbAllocBodySlot(tbWorld* world)
 
 tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 {
+	TB_RECORD(CreateBody, &worldId, def);
 	tbWorld* world = tbGetWorldChecked(worldId, "tbCreateBody");
 	if (world == NULL || tbCheckBodyDef(def) == false)
 	{
@@ -261,6 +263,7 @@ void tbDestroyBodyContacts(tbWorld* world, tbBody* body, bool wakeBodies)
 
 void tbDestroyBody(tbBodyId bodyId)
 {
+	TB_RECORD(DestroyBody, &bodyId);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbDestroyBody", &world, true);
 	if (body == NULL)
@@ -506,6 +509,7 @@ tbBodyType tbBody_GetType(tbBodyId bodyId)
 
 bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
 {
+	TB_RECORD(BodySetType, &bodyId, &type);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetType", &world, true);
 	if (body == NULL)
@@ -568,6 +572,7 @@ static void tbDisableBody(tbWorld* world, tbBody* body)
 
 void tbBody_Disable(tbBodyId bodyId)
 {
+	TB_RECORD(BodyDisable, &bodyId);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_Disable", &world, true);
 	if (body == NULL || body->isDisabled || tbStructureLocked(world, "tbBody_Disable", "disable bodies"))
@@ -579,6 +584,7 @@ void tbBody_Disable(tbBodyId bodyId)
 
 void tbBody_Enable(tbBodyId bodyId)
 {
+	TB_RECORD(BodyEnable, &bodyId);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_Enable", &world, true);
 	if (body == NULL || body->isDisabled == false || tbStructureLocked(world, "tbBody_Enable", "enable bodies"))
@@ -641,6 +647,7 @@ static void tbWakeTouchingBodies(tbWorld* world, const tbBody* body)
 
 bool tbBody_SetTransform(tbBodyId bodyId, tbPos position, tbRot rotation)
 {
+	TB_RECORD(BodySetTransform, &bodyId, &position, &rotation);
 	const char* f = "tbBody_SetTransform";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
@@ -707,6 +714,7 @@ float tbBody_GetAngularVelocity(tbBodyId bodyId)
 
 bool tbBody_SetLinearVelocity(tbBodyId bodyId, tbVec2 v)
 {
+	TB_RECORD(BodySetLinearVelocity, &bodyId, &v);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetLinearVelocity", &world, true);
 	if (body == NULL || tbCheckVec2("tbBody_SetLinearVelocity", "linearVelocity", v) == false)
@@ -727,6 +735,7 @@ bool tbBody_SetLinearVelocity(tbBodyId bodyId, tbVec2 v)
 
 bool tbBody_SetAngularVelocity(tbBodyId bodyId, float w)
 {
+	TB_RECORD(BodySetAngularVelocity, &bodyId, &w);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetAngularVelocity", &world, true);
 	if (body == NULL || tbCheckFloat("tbBody_SetAngularVelocity", "angularVelocity", w) == false)
@@ -764,6 +773,7 @@ static bool tbTargetVelocity(const tbBody* body, tbWorldTransform target, float 
 
 bool tbBody_SetTargetTransform(tbBodyId bodyId, tbWorldTransform target, float timeStep, bool wake)
 {
+	TB_RECORD(BodySetTargetTransform, &bodyId, &target, &timeStep, &wake);
 	const char* f = "tbBody_SetTargetTransform";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
@@ -824,6 +834,7 @@ static tbBody* tbGetDynamicForInput(tbBodyId bodyId, const char* f, bool wake, t
 
 bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbPos point, bool wake)
 {
+	TB_RECORD(BodyApplyForce, &bodyId, &force, &point, &wake);
 	const char* f = "tbBody_ApplyForce";
 	if (tbCheckVec2(f, "force", force) == false || tbCheckFinitePosition(f, "point", point) == false)
 	{
@@ -841,6 +852,7 @@ bool tbBody_ApplyForce(tbBodyId bodyId, tbVec2 force, tbPos point, bool wake)
 
 bool tbBody_ApplyForceToCenter(tbBodyId bodyId, tbVec2 force, bool wake)
 {
+	TB_RECORD(BodyApplyForceToCenter, &bodyId, &force, &wake);
 	const char* f = "tbBody_ApplyForceToCenter";
 	if (tbCheckVec2(f, "force", force) == false)
 	{
@@ -857,6 +869,7 @@ bool tbBody_ApplyForceToCenter(tbBodyId bodyId, tbVec2 force, bool wake)
 
 bool tbBody_ApplyTorque(tbBodyId bodyId, float torque, bool wake)
 {
+	TB_RECORD(BodyApplyTorque, &bodyId, &torque, &wake);
 	const char* f = "tbBody_ApplyTorque";
 	if (tbCheckFloat(f, "torque", torque) == false)
 	{
@@ -915,6 +928,7 @@ static bool tbApplyBodyImpulse(tbBodyId bodyId, const char* f, tbVec2 impulse, c
 
 bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbPos point, bool wake)
 {
+	TB_RECORD(BodyApplyLinearImpulse, &bodyId, &impulse, &point, &wake);
 	const char* f = "tbBody_ApplyLinearImpulse";
 	if (tbCheckVec2(f, "impulse", impulse) == false || tbCheckFinitePosition(f, "point", point) == false)
 	{
@@ -925,6 +939,7 @@ bool tbBody_ApplyLinearImpulse(tbBodyId bodyId, tbVec2 impulse, tbPos point, boo
 
 bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wake)
 {
+	TB_RECORD(BodyApplyLinearImpulseToCenter, &bodyId, &impulse, &wake);
 	const char* f = "tbBody_ApplyLinearImpulseToCenter";
 	if (tbCheckVec2(f, "impulse", impulse) == false)
 	{
@@ -935,6 +950,7 @@ bool tbBody_ApplyLinearImpulseToCenter(tbBodyId bodyId, tbVec2 impulse, bool wak
 
 bool tbBody_ApplyAngularImpulse(tbBodyId bodyId, float impulse, bool wake)
 {
+	TB_RECORD(BodyApplyAngularImpulse, &bodyId, &impulse, &wake);
 	const char* f = "tbBody_ApplyAngularImpulse";
 	if (tbCheckFloat(f, "impulse", impulse) == false)
 	{
@@ -969,6 +985,7 @@ tbPos tbBody_GetWorldCenter(tbBodyId bodyId)
 
 bool tbBody_SetMassData(tbBodyId bodyId, tbMassData massData)
 {
+	TB_RECORD(BodySetMassData, &bodyId, &massData);
 	const char* f = "tbBody_SetMassData";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
@@ -998,6 +1015,7 @@ bool tbBody_SetMassData(tbBodyId bodyId, tbMassData massData)
 
 void tbBody_ApplyMassFromShapes(tbBodyId bodyId)
 {
+	TB_RECORD(BodyApplyMassFromShapes, &bodyId);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_ApplyMassFromShapes", &world, true);
 	if (body != NULL)
@@ -1008,6 +1026,7 @@ void tbBody_ApplyMassFromShapes(tbBodyId bodyId)
 
 void tbBody_SetName(tbBodyId bodyId, const char* name)
 {
+	TB_RECORD(BodySetName, &bodyId, name);
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetName", NULL, false);
 	if (body != NULL)
 	{
@@ -1028,11 +1047,13 @@ static void tbEnableBodyShapeEvents(tbBodyId bodyId, const char* f, bool hits, b
 
 void tbBody_EnableContactEvents(tbBodyId bodyId, bool flag)
 {
+	TB_RECORD(BodyEnableContactEvents, &bodyId, &flag);
 	tbEnableBodyShapeEvents(bodyId, "tbBody_EnableContactEvents", false, flag);
 }
 
 void tbBody_EnableHitEvents(tbBodyId bodyId, bool flag)
 {
+	TB_RECORD(BodyEnableHitEvents, &bodyId, &flag);
 	tbEnableBodyShapeEvents(bodyId, "tbBody_EnableHitEvents", true, flag);
 }
 
@@ -1051,6 +1072,7 @@ tbMassData tbBody_GetMassData(tbBodyId bodyId)
 
 bool tbBody_SetLinearDamping(tbBodyId bodyId, float value)
 {
+	TB_RECORD(BodySetLinearDamping, &bodyId, &value);
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetLinearDamping", NULL, true);
 	if (body == NULL || tbCheckNonNegative("tbBody_SetLinearDamping", "linearDamping", value) == false)
 	{
@@ -1068,6 +1090,7 @@ float tbBody_GetLinearDamping(tbBodyId bodyId)
 
 bool tbBody_SetAngularDamping(tbBodyId bodyId, float value)
 {
+	TB_RECORD(BodySetAngularDamping, &bodyId, &value);
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetAngularDamping", NULL, true);
 	if (body == NULL || tbCheckNonNegative("tbBody_SetAngularDamping", "angularDamping", value) == false)
 	{
@@ -1085,6 +1108,7 @@ float tbBody_GetAngularDamping(tbBodyId bodyId)
 
 bool tbBody_SetGravityScale(tbBodyId bodyId, float value)
 {
+	TB_RECORD(BodySetGravityScale, &bodyId, &value);
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetGravityScale", NULL, true);
 	if (body == NULL || tbCheckFloat("tbBody_SetGravityScale", "gravityScale", value) == false)
 	{
@@ -1108,6 +1132,7 @@ bool tbBody_IsAwake(tbBodyId bodyId)
 
 void tbBody_WakeTouching(tbBodyId bodyId)
 {
+	TB_RECORD(BodyWakeTouching, &bodyId);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_WakeTouching", &world, true);
 	if (body == NULL)
@@ -1124,6 +1149,7 @@ void tbBody_WakeTouching(tbBodyId bodyId)
 
 void tbBody_SetAwake(tbBodyId bodyId, bool awake)
 {
+	TB_RECORD(BodySetAwake, &bodyId, &awake);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetAwake", &world, true);
 	if (body == NULL)
@@ -1142,6 +1168,7 @@ void tbBody_SetAwake(tbBodyId bodyId, bool awake)
 
 void tbBody_EnableSleep(tbBodyId bodyId, bool enableSleep)
 {
+	TB_RECORD(BodyEnableSleep, &bodyId, &enableSleep);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_EnableSleep", &world, true);
 	if (body != NULL)
@@ -1162,6 +1189,7 @@ bool tbBody_IsSleepEnabled(tbBodyId bodyId)
 
 bool tbBody_SetSleepThreshold(tbBodyId bodyId, float sleepThreshold)
 {
+	TB_RECORD(BodySetSleepThreshold, &bodyId, &sleepThreshold);
 	const char* f = "tbBody_SetSleepThreshold";
 	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, true);
 	if (body == NULL || tbCheckNonNegative(f, "sleepThreshold", sleepThreshold) == false)
@@ -1180,6 +1208,7 @@ float tbBody_GetSleepThreshold(tbBodyId bodyId)
 
 bool tbBody_SetSafetyFactor(tbBodyId bodyId, float safetyFactor)
 {
+	TB_RECORD(BodySetSafetyFactor, &bodyId, &safetyFactor);
 	const char* f = "tbBody_SetSafetyFactor";
 	tbBody* body = tbGetBodyChecked(bodyId, f, NULL, true);
 	if (body == NULL || tbCheckNonNegative(f, "safetyFactor", safetyFactor) == false)
@@ -1201,6 +1230,7 @@ float tbBody_GetSafetyFactor(tbBodyId bodyId)
 
 void tbBody_ClearForces(tbBodyId bodyId)
 {
+	TB_RECORD(BodyClearForces, &bodyId);
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_ClearForces", NULL, false);
 	if (body != NULL)
 	{
@@ -1241,6 +1271,7 @@ bool tbBody_IsBullet(tbBodyId bodyId)
 
 void tbBody_SetBullet(tbBodyId bodyId, bool flag)
 {
+	TB_RECORD(BodySetBullet, &bodyId, &flag);
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetBullet", NULL, true);
 	if (body != NULL)
 	{
@@ -1250,6 +1281,7 @@ void tbBody_SetBullet(tbBodyId bodyId, bool flag)
 
 void tbBody_SetFixedRotation(tbBodyId bodyId, bool flag)
 {
+	TB_RECORD(BodySetFixedRotation, &bodyId, &flag);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetFixedRotation", &world, true);
 	if (body != NULL && body->fixedRotation != flag)
@@ -1262,6 +1294,7 @@ void tbBody_SetFixedRotation(tbBodyId bodyId, bool flag)
 
 void tbBody_SetMotionLocks(tbBodyId bodyId, tbMotionLocks locks)
 {
+	TB_RECORD(BodySetMotionLocks, &bodyId, &locks);
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_SetMotionLocks", &world, true);
 	if (body == NULL)
@@ -1301,6 +1334,7 @@ tbMotionLocks tbBody_GetMotionLocks(tbBodyId bodyId)
 
 void tbBody_EnableContactRecycling(tbBodyId bodyId, bool flag)
 {
+	TB_RECORD(BodyEnableContactRecycling, &bodyId, &flag);
 	tbBody* body = tbGetBodyChecked(bodyId, "tbBody_EnableContactRecycling", NULL, true);
 	if (body != NULL)
 	{

@@ -8,6 +8,7 @@
 #include "world.h"
 
 #include "tumble/tumble.h"
+#include "recording.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -162,6 +163,7 @@ static tbChainSegment tbMakeChainSegment(const tbChainDef* def, int i, int chain
 
 tbChainId tbCreateChain(tbBodyId bodyId, const tbChainDef* def)
 {
+	TB_RECORD(CreateChain, &bodyId, def);
 	const char* f = "tbCreateChain";
 	tbWorld* world;
 	tbBody* body = tbGetBodyChecked(bodyId, f, &world, true);
@@ -219,6 +221,7 @@ static void tbRemoveChain(tbWorld* world, int index, bool removeShapes)
 
 void tbDestroyChain(tbChainId chainId)
 {
+	TB_RECORD(DestroyChain, &chainId);
 	tbWorld* world;
 	tbChain* chain = tbGetChainChecked(chainId, "tbDestroyChain", &world, true);
 	if (chain != NULL)
@@ -316,6 +319,7 @@ static bool tbCheckMaterialIndex(const char* f, const tbChain* chain, int materi
 
 bool tbChain_SetSurfaceMaterial(tbChainId chainId, const tbSurfaceMaterial* material, int materialIndex)
 {
+	TB_RECORD(ChainSetSurfaceMaterial, &chainId, material, &materialIndex);
 	const char* f = "tbChain_SetSurfaceMaterial";
 	tbWorld* world;
 	tbChain* chain = tbGetChainChecked(chainId, f, &world, false);

@@ -16,6 +16,7 @@
 
 #include "tumble/collision.h"
 #include "tumble/tumble.h"
+#include "recording.h"
 
 #include <float.h>
 
@@ -117,13 +118,18 @@ static bool tbExplosionCallback(int proxyKey, int shapeIndex, void* context)
 	float magnitude = c->def.impulsePerLength * tbProjectedWidth(&shape->geometry, tbLeftPerp(direction)) * scale;
 	tbVec2 impulse = tbMulSV(magnitude, tbRotateVector(xf.q, direction));
 	tbPos point = tbTransformWorldPoint(xf, struck);
-	// The public entry checks the result is finite and wakes the body.
+	// The public entry checks the result is finite and wakes the body. A recording holds the
+	// explosion, not its impulses (replaying both would push twice): it is set aside meanwhile.
+	struct tbRecording* recording = world->recording;
+	world->recording = NULL;
 	tbBody_ApplyLinearImpulse(tbMakeBodyId(world, shape->bodyId), impulse, point, true);
+	world->recording = recording;
 	return true;
 }
 
 void tbWorld_Explode(tbWorldId worldId, const tbExplosionDef* def)
 {
+	TB_RECORD(WorldExplode, &worldId, def);
 	const char* f = "tbWorld_Explode";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (world == NULL || tbCheckPointer(f, "def", def) == false)

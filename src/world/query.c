@@ -1,6 +1,7 @@
 // World queries: AABB overlap, point, shape overlap, ray casts and shape casts. All go through
 // the broad phase and respect the query filter (category of the query against the shape's mask
 // and the shape's category against the query's mask).
+#include "recording.h"
 #include "world.h"
 
 #include "collision/distance_internal.h"
@@ -26,6 +27,7 @@ typedef struct tbQueryContext
 	tbCastResultFcn* castFcn;
 	tbVec2 translation;
 	float maxFraction;
+	tbQueryLog* log; ///< the query's record while the world records, else NULL
 } tbQueryContext;
 
 static bool tbAABBQueryCallback(int proxyKey, int shapeIndex, void* context)
@@ -37,7 +39,9 @@ static bool tbAABBQueryCallback(int proxyKey, int shapeIndex, void* context)
 	{
 		return true;
 	}
-	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
+	tbShapeId id = tbMakeShapeId(q->world, shapeIndex);
+	tbQueryLogHit(q->log, id, q->point, tbVec2_zero, 0.0f);
+	return q->fcn(id, q->userContext);
 }
 
 /// While a query calls back, a callback that created or destroyed a body or shape, moved one
@@ -89,6 +93,27 @@ static tbAABB tbProxyBox(tbPos origin, const tbShapeProxy* proxy)
 	return tbOffsetAABB(tbMakeAABB(proxy->points, proxy->count, proxy->radius), origin);
 }
 
+/// The record of a query while the world records (recording_queries.c), else NULL: its kind and
+/// inputs as tbRecPlayer_GetFrameQuery tells them (the box relative to the origin).
+static tbQueryLog* tbLogQuery(tbQueryLog* log, const tbWorld* world, tbRecQueryType type, tbQueryFilter filter,
+							  tbPos origin, tbAABB box, tbVec2 translation)
+{
+	tbRecQueryInfo info;
+	memset(&info, 0, sizeof(info));
+	info.type = type;
+	info.filter = filter;
+	info.aabb = box;
+	info.origin = origin;
+	info.translation = translation;
+	return tbQueryLogBegin(log, world, &info);
+}
+
+static tbAABB tbCapsuleBox(const tbCapsule* c)
+{
+	tbVec2 r = {c->radius, c->radius};
+	return (tbAABB){tbSub(tbMin(c->center1, c->center2), r), tbAdd(tbMax(c->center1, c->center2), r)};
+}
+
 static tbQueryContext tbMakeQueryContext(tbWorld* world, tbQueryFilter filter, void* userContext)
 {
 	tbQueryContext q;
@@ -116,9 +141,13 @@ tbTreeStats tbWorld_OverlapAABB(tbWorldId worldId, tbPos origin, tbAABB aabb, tb
 	}
 	tbQueryContext q = tbMakeQueryContext(world, filter, context);
 	q.fcn = fcn;
+	q.point = origin; // what the record gives as each result's point
+	tbQueryLog log;
+	q.log = tbLogQuery(&log, world, tb_recQueryOverlapAABB, filter, origin, aabb, tbVec2_zero);
 	tbEnterQuery(world);
 	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbOffsetAABB(aabb, origin), filter.maskBits, tbAABBQueryCallback, &q);
 	tbLeaveQuery(world);
+	tbQueryLogEnd(q.log);
 	return stats;
 }
 
@@ -136,7 +165,9 @@ static bool tbPointQueryCallback(int proxyKey, int shapeIndex, void* context)
 	{
 		return true;
 	}
-	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
+	tbShapeId id = tbMakeShapeId(q->world, shapeIndex);
+	tbQueryLogHit(q->log, id, q->point, tbVec2_zero, 0.0f);
+	return q->fcn(id, q->userContext);
 }
 
 bool tbWorld_OverlapPoint(tbWorldId worldId, tbPos point, tbQueryFilter filter, tbOverlapResultFcn* fcn, void* context)
@@ -151,9 +182,13 @@ bool tbWorld_OverlapPoint(tbWorldId worldId, tbPos point, tbQueryFilter filter, 
 	q.fcn = fcn;
 	q.point = point;
 	tbAABB box = tbOffsetAABB((tbAABB){tbVec2_zero, tbVec2_zero}, point); // contains the point
+	tbQueryLog log; // recorded as the overlap of an empty box at the point (Box2D v3.2 has no point query)
+	q.log = tbLogQuery(&log, world, tb_recQueryOverlapAABB, filter, point, (tbAABB){tbVec2_zero, tbVec2_zero},
+					   tbVec2_zero);
 	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, box, filter.maskBits, tbPointQueryCallback, &q);
 	tbLeaveQuery(world);
+	tbQueryLogEnd(q.log);
 	return true;
 }
 
@@ -177,7 +212,9 @@ static bool tbShapeQueryCallback(int proxyKey, int shapeIndex, void* context)
 	{
 		return true;
 	}
-	return q->fcn(tbMakeShapeId(q->world, shapeIndex), q->userContext);
+	tbShapeId id = tbMakeShapeId(q->world, shapeIndex);
+	tbQueryLogHit(q->log, id, q->base, tbVec2_zero, 0.0f);
+	return q->fcn(id, q->userContext);
 }
 
 tbTreeStats tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeProxy* proxy, tbQueryFilter filter,
@@ -193,9 +230,13 @@ tbTreeStats tbWorld_OverlapShape(tbWorldId worldId, tbPos origin, const tbShapeP
 	q.fcn = fcn;
 	q.proxy = *proxy;
 	q.base = origin;
+	tbQueryLog log;
+	tbAABB box = tbMakeAABB(proxy->points, proxy->count, proxy->radius);
+	q.log = tbLogQuery(&log, world, tb_recQueryOverlapShape, filter, origin, box, tbVec2_zero);
 	tbEnterQuery(world);
 	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbProxyBox(origin, proxy), filter.maskBits, tbShapeQueryCallback, &q);
 	tbLeaveQuery(world);
+	tbQueryLogEnd(q.log);
 	return stats;
 }
 
@@ -219,7 +260,9 @@ static float tbRayCastCallback(const tbRayCastInput* input, int proxyKey, int sh
 	}
 	tbPos point = tbTransformWorldPoint(xf, output.point);
 	tbVec2 normal = tbRotateVector(xf.q, output.normal);
-	float result = q->castFcn(tbMakeShapeId(q->world, shapeIndex), point, normal, output.fraction, q->userContext);
+	tbShapeId id = tbMakeShapeId(q->world, shapeIndex);
+	tbQueryLogHit(q->log, id, point, normal, output.fraction);
+	float result = q->castFcn(id, point, normal, output.fraction, q->userContext);
 	// −1 ignores this shape: keep the current clip.
 	return result < 0.0f ? input->maxFraction : result;
 }
@@ -231,8 +274,9 @@ static bool tbCheckWorldRay(const char* f, tbPos origin, tbVec2 translation)
 	return tbCheckPosition(f, "origin", origin) && tbCheckVec2(f, "translation", translation);
 }
 
-tbTreeStats tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter, tbCastResultFcn* fcn,
-					 void* context)
+/// tbWorld_CastRay, recorded as a query of kind `type` (a ray or the closest hit of one).
+static tbTreeStats tbCastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter,
+							 tbCastResultFcn* fcn, void* context, tbRecQueryType type)
 {
 	const char* f = "tbWorld_CastRay";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
@@ -244,10 +288,19 @@ tbTreeStats tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation,
 	q.castFcn = fcn;
 	q.point = origin; // each shape is hit from the exact origin; the broad phase walks a float one
 	tbRayCastInput input = {tbToVec2(origin), translation, 1.0f};
+	tbQueryLog log;
+	q.log = tbLogQuery(&log, world, type, filter, origin, (tbAABB){tbVec2_zero, tbVec2_zero}, translation);
 	tbEnterQuery(world);
 	tbTreeStats stats = tbBroadPhase_RayCast(&world->broadPhase, &input, filter.maskBits, tbRayCastCallback, &q);
 	tbLeaveQuery(world);
+	tbQueryLogEnd(q.log);
 	return stats;
+}
+
+tbTreeStats tbWorld_CastRay(tbWorldId worldId, tbPos origin, tbVec2 translation, tbQueryFilter filter,
+							tbCastResultFcn* fcn, void* context)
+{
+	return tbCastRay(worldId, origin, translation, filter, fcn, context, tb_recQueryCastRay);
 }
 
 static float tbClosestCallback(tbShapeId shapeId, tbPos point, tbVec2 normal, float fraction, void* context)
@@ -265,7 +318,7 @@ tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbPos origin, tbVec2 trans
 {
 	tbRayResult result;
 	memset(&result, 0, sizeof(result));
-	tbWorld_CastRay(worldId, origin, translation, filter, tbClosestCallback, &result);
+	tbCastRay(worldId, origin, translation, filter, tbClosestCallback, &result, tb_recQueryCastRayClosest);
 	return result;
 }
 
@@ -287,8 +340,10 @@ static bool tbShapeCastCallback(int proxyKey, int shapeIndex, void* context)
 	{
 		return true;
 	}
-	float result = q->castFcn(tbMakeShapeId(q->world, shapeIndex), tbOffsetPos(q->base, output.point), output.normal,
-							  output.fraction, q->userContext);
+	tbShapeId id = tbMakeShapeId(q->world, shapeIndex);
+	tbPos point = tbOffsetPos(q->base, output.point);
+	tbQueryLogHit(q->log, id, point, output.normal, output.fraction);
+	float result = q->castFcn(id, point, output.normal, output.fraction, q->userContext);
 	if (result == 0.0f)
 	{
 		return false;
@@ -319,9 +374,13 @@ tbTreeStats tbWorld_CastShape(tbWorldId worldId, tbPos origin, const tbShapeProx
 	// Candidates: shapes whose boxes overlap the shape's box swept over the translation.
 	tbAABB box = tbProxyBox(origin, proxy);
 	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
+	tbQueryLog log;
+	tbAABB shapeBox = tbMakeAABB(proxy->points, proxy->count, proxy->radius);
+	q.log = tbLogQuery(&log, world, tb_recQueryCastShape, filter, origin, shapeBox, translation);
 	tbEnterQuery(world);
 	tbTreeStats stats = tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbShapeCastCallback, &q);
 	tbLeaveQuery(world);
+	tbQueryLogEnd(q.log);
 	return stats;
 }
 
@@ -382,7 +441,9 @@ static bool tbMoverPlaneCallback(int proxyKey, int shapeIndex, void* context)
 	{
 		return true;
 	}
-	return m->planeFcn(tbMakeShapeId(m->q.world, shapeIndex), &result, m->q.userContext);
+	tbShapeId id = tbMakeShapeId(m->q.world, shapeIndex);
+	tbQueryLogHit(m->q.log, id, tbOffsetPos(m->origin, result.point), result.plane.normal, 0.0f);
+	return m->planeFcn(id, &result, m->q.userContext);
 }
 
 bool tbWorld_CollideMover(tbWorldId worldId, tbPos origin, const tbCapsule* mover, tbQueryFilter filter,
@@ -400,9 +461,12 @@ bool tbWorld_CollideMover(tbWorldId worldId, tbPos origin, const tbCapsule* move
 	m.origin = origin;
 	m.mover = mover;
 	m.planeFcn = fcn;
+	tbQueryLog log;
+	m.q.log = tbLogQuery(&log, world, tb_recQueryCollideMover, filter, origin, tbCapsuleBox(mover), tbVec2_zero);
 	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, tbMoverBox(origin, mover), filter.maskBits, tbMoverPlaneCallback, &m);
 	tbLeaveQuery(world);
+	tbQueryLogEnd(m.q.log);
 	return true;
 }
 
@@ -448,8 +512,18 @@ float tbWorld_CastMover(tbWorldId worldId, tbPos origin, const tbCapsule* mover,
 	m.fraction = 1.0f;
 	tbAABB box = tbMoverBox(origin, mover);
 	tbAABB moved = {tbAdd(box.lowerBound, translation), tbAdd(box.upperBound, translation)};
+	tbQueryLog log;
+	tbAABB moverBox = tbCapsuleBox(mover);
+	tbQueryLog* record = tbLogQuery(&log, world, tb_recQueryCastMover, filter, origin, moverBox, translation);
 	tbEnterQuery(world);
 	tbBroadPhase_Query(&world->broadPhase, tbAABB_Union(box, moved), filter.maskBits, tbMoverCastCallback, &m);
 	tbLeaveQuery(world);
+	if (m.fraction < 1.0f)
+	{
+		// No callback: the one result is where the sweep stops (its shape is not kept).
+		tbQueryLogHit(record, TB_NULL_SHAPE_ID, tbOffsetPos(origin, tbMulSV(m.fraction, translation)), tbVec2_zero,
+					  m.fraction);
+	}
+	tbQueryLogEnd(record);
 	return m.fraction;
 }

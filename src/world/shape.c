@@ -5,6 +5,7 @@
 #include "core/array.h"
 
 #include "tumble/constants.h"
+#include "recording.h"
 
 #include <string.h>
 
@@ -559,6 +560,7 @@ int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeo
 
 tbShapeId tbCreateShape(tbBodyId bodyId, const tbShapeDef* def, const tbGeometry* geometry)
 {
+	TB_RECORD(CreateShape, &bodyId, def, geometry);
 	if (tbCheckPointer("tbCreateShape", "geometry", geometry) == false)
 	{
 		return TB_NULL_SHAPE_ID;
@@ -568,6 +570,7 @@ tbShapeId tbCreateShape(tbBodyId bodyId, const tbShapeDef* def, const tbGeometry
 
 tbShapeId tbCreateCircleShape(tbBodyId bodyId, const tbShapeDef* def, const tbCircle* circle)
 {
+	TB_RECORD(CreateCircleShape, &bodyId, def, circle);
 	if (tbCheckPointer("tbCreateCircleShape", "circle", circle) == false)
 	{
 		return TB_NULL_SHAPE_ID;
@@ -581,6 +584,7 @@ tbShapeId tbCreateCircleShape(tbBodyId bodyId, const tbShapeDef* def, const tbCi
 
 tbShapeId tbCreateCapsuleShape(tbBodyId bodyId, const tbShapeDef* def, const tbCapsule* capsule)
 {
+	TB_RECORD(CreateCapsuleShape, &bodyId, def, capsule);
 	if (tbCheckPointer("tbCreateCapsuleShape", "capsule", capsule) == false)
 	{
 		return TB_NULL_SHAPE_ID;
@@ -594,6 +598,7 @@ tbShapeId tbCreateCapsuleShape(tbBodyId bodyId, const tbShapeDef* def, const tbC
 
 tbShapeId tbCreatePolygonShape(tbBodyId bodyId, const tbShapeDef* def, const tbPolygon* polygon)
 {
+	TB_RECORD(CreatePolygonShape, &bodyId, def, polygon);
 	if (tbCheckPointer("tbCreatePolygonShape", "polygon", polygon) == false)
 	{
 		return TB_NULL_SHAPE_ID;
@@ -607,6 +612,7 @@ tbShapeId tbCreatePolygonShape(tbBodyId bodyId, const tbShapeDef* def, const tbP
 
 tbShapeId tbCreateChainSegmentShape(tbBodyId bodyId, const tbShapeDef* def, const tbChainSegment* chainSegment)
 {
+	TB_RECORD(CreateChainSegmentShape, &bodyId, def, chainSegment);
 	if (tbCheckPointer("tbCreateChainSegmentShape", "chainSegment", chainSegment) == false)
 	{
 		return TB_NULL_SHAPE_ID;
@@ -621,6 +627,7 @@ tbShapeId tbCreateChainSegmentShape(tbBodyId bodyId, const tbShapeDef* def, cons
 
 tbShapeId tbCreateSegmentShape(tbBodyId bodyId, const tbShapeDef* def, const tbSegment* segment)
 {
+	TB_RECORD(CreateSegmentShape, &bodyId, def, segment);
 	if (tbCheckPointer("tbCreateSegmentShape", "segment", segment) == false)
 	{
 		return TB_NULL_SHAPE_ID;
@@ -691,6 +698,7 @@ void tbRemoveShape(tbWorld* world, int id, bool updateBodyMass)
 
 void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)
 {
+	TB_RECORD(DestroyShape, &shapeId, &updateBodyMass);
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbDestroyShape", &world, true);
 	if (shape == NULL || tbIsChainOwned(shape, "tbDestroyShape") ||
@@ -813,6 +821,7 @@ static bool tbSetGeometry(tbShapeId shapeId, const tbGeometry* geometry, const c
 
 bool tbShape_SetCircle(tbShapeId shapeId, const tbCircle* circle)
 {
+	TB_RECORD(ShapeSetCircle, &shapeId, circle);
 	if (tbCheckPointer("tbShape_SetCircle", "circle", circle) == false)
 	{
 		return false;
@@ -826,6 +835,7 @@ bool tbShape_SetCircle(tbShapeId shapeId, const tbCircle* circle)
 
 bool tbShape_SetCapsule(tbShapeId shapeId, const tbCapsule* capsule)
 {
+	TB_RECORD(ShapeSetCapsule, &shapeId, capsule);
 	if (tbCheckPointer("tbShape_SetCapsule", "capsule", capsule) == false)
 	{
 		return false;
@@ -839,6 +849,7 @@ bool tbShape_SetCapsule(tbShapeId shapeId, const tbCapsule* capsule)
 
 bool tbShape_SetSegment(tbShapeId shapeId, const tbSegment* segment)
 {
+	TB_RECORD(ShapeSetSegment, &shapeId, segment);
 	if (tbCheckPointer("tbShape_SetSegment", "segment", segment) == false)
 	{
 		return false;
@@ -852,6 +863,7 @@ bool tbShape_SetSegment(tbShapeId shapeId, const tbSegment* segment)
 
 bool tbShape_SetChainSegment(tbShapeId shapeId, const tbChainSegment* chainSegment)
 {
+	TB_RECORD(ShapeSetChainSegment, &shapeId, chainSegment);
 	if (tbCheckPointer("tbShape_SetChainSegment", "chainSegment", chainSegment) == false)
 	{
 		return false;
@@ -866,6 +878,7 @@ bool tbShape_SetChainSegment(tbShapeId shapeId, const tbChainSegment* chainSegme
 
 bool tbShape_SetPolygon(tbShapeId shapeId, const tbPolygon* polygon)
 {
+	TB_RECORD(ShapeSetPolygon, &shapeId, polygon);
 	if (tbCheckPointer("tbShape_SetPolygon", "polygon", polygon) == false)
 	{
 		return false;
@@ -891,16 +904,19 @@ static void tbEnableShapeEvents(tbShapeId shapeId, const char* f, tbShapeEventKi
 
 void tbShape_EnableContactEvents(tbShapeId shapeId, bool flag)
 {
+	TB_RECORD(ShapeEnableContactEvents, &shapeId, &flag);
 	tbEnableShapeEvents(shapeId, "tbShape_EnableContactEvents", tb_shapeEventContacts, flag);
 }
 
 void tbShape_EnableHitEvents(tbShapeId shapeId, bool flag)
 {
+	TB_RECORD(ShapeEnableHitEvents, &shapeId, &flag);
 	tbEnableShapeEvents(shapeId, "tbShape_EnableHitEvents", tb_shapeEventHits, flag);
 }
 
 void tbShape_EnableSensorEvents(tbShapeId shapeId, bool flag)
 {
+	TB_RECORD(ShapeEnableSensorEvents, &shapeId, &flag);
 	tbEnableShapeEvents(shapeId, "tbShape_EnableSensorEvents", tb_shapeEventSensors, flag);
 }
 
@@ -924,6 +940,7 @@ bool tbShape_AreSensorEventsEnabled(tbShapeId shapeId)
 
 void tbShape_EnablePreSolveEvents(tbShapeId shapeId, bool flag)
 {
+	TB_RECORD(ShapeEnablePreSolveEvents, &shapeId, &flag);
 	tbEnableShapeEvents(shapeId, "tbShape_EnablePreSolveEvents", tb_shapeEventPreSolve, flag);
 }
 
@@ -941,6 +958,7 @@ bool tbShape_IsSensor(tbShapeId shapeId)
 
 bool tbShape_SetDensity(tbShapeId shapeId, float density, bool updateBodyMass)
 {
+	TB_RECORD(ShapeSetDensity, &shapeId, &density, &updateBodyMass);
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetDensity", &world, true);
 	if (shape == NULL || tbCheckNonNegative("tbShape_SetDensity", "density", density) == false ||
@@ -993,6 +1011,7 @@ static bool tbSetShapeMaterial(const char* f, tbShapeId shapeId, const tbSurface
 
 bool tbShape_SetSurfaceMaterial(tbShapeId shapeId, const tbSurfaceMaterial* material)
 {
+	TB_RECORD(ShapeSetSurfaceMaterial, &shapeId, material);
 	return tbSetShapeMaterial("tbShape_SetSurfaceMaterial", shapeId, material, "material");
 }
 
@@ -1004,6 +1023,7 @@ tbSurfaceMaterial tbShape_GetSurfaceMaterial(tbShapeId shapeId)
 
 bool tbShape_SetFriction(tbShapeId shapeId, float friction)
 {
+	TB_RECORD(ShapeSetFriction, &shapeId, &friction);
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetFriction", NULL, true);
 	if (shape == NULL)
 	{
@@ -1022,6 +1042,7 @@ float tbShape_GetFriction(tbShapeId shapeId)
 
 bool tbShape_SetRestitution(tbShapeId shapeId, float restitution)
 {
+	TB_RECORD(ShapeSetRestitution, &shapeId, &restitution);
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetRestitution", NULL, true);
 	if (shape == NULL)
 	{
@@ -1040,6 +1061,7 @@ float tbShape_GetRestitution(tbShapeId shapeId)
 
 void tbShape_SetUserMaterial(tbShapeId shapeId, uint64_t material)
 {
+	TB_RECORD(ShapeSetUserMaterial, &shapeId, &material);
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetUserMaterial", &world, true);
 	if (shape != NULL)
@@ -1063,6 +1085,7 @@ tbFilter tbShape_GetFilter(tbShapeId shapeId)
 
 bool tbShape_SetFilter(tbShapeId shapeId, tbFilter filter)
 {
+	TB_RECORD(ShapeSetFilter, &shapeId, &filter);
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, "tbShape_SetFilter", &world, true);
 	if (shape == NULL || tbStructureLocked(world, "tbShape_SetFilter", "change filters"))
@@ -1101,6 +1124,26 @@ tbAABB tbShape_GetAABB(tbShapeId shapeId)
 	return shape != NULL ? tbComputeShapeAABBInternal(shape, world->bodies[shape->bodyId].transform) : empty;
 }
 
+/// A shape's own test in the world's recording (a query of the player's frame): its one result, if any,
+/// at the point (a hit's point for a ray: the origin moved by the fraction).
+static void tbRecordShapeTest(const tbWorld* world, tbRecQueryType type, tbShapeId shapeId, tbPos origin,
+							  tbVec2 translation, bool hit, tbVec2 normal, float fraction)
+{
+	tbRecQueryInfo info;
+	memset(&info, 0, sizeof(info));
+	info.type = type;
+	info.origin = origin;
+	info.translation = translation;
+	info.shape = shapeId;
+	tbQueryLog log;
+	tbQueryLog* record = tbQueryLogBegin(&log, world, &info);
+	if (hit)
+	{
+		tbQueryLogHit(record, shapeId, tbOffsetPos(origin, tbMulSV(fraction, translation)), normal, fraction);
+	}
+	tbQueryLogEnd(record);
+}
+
 bool tbShape_TestPoint(tbShapeId shapeId, tbPos point)
 {
 	tbWorld* world;
@@ -1110,7 +1153,9 @@ bool tbShape_TestPoint(tbShapeId shapeId, tbPos point)
 		return false;
 	}
 	tbVec2 local = tbInvTransformWorldPoint(world->bodies[shape->bodyId].transform, point);
-	return tbPointInShape(&shape->geometry, local);
+	bool inside = tbPointInShape(&shape->geometry, local);
+	tbRecordShapeTest(world, tb_recQueryShapeTestPoint, shapeId, point, tbVec2_zero, inside, tbVec2_zero, 0.0f);
+	return inside;
 }
 
 tbPos tbShape_GetClosestPoint(tbShapeId shapeId, tbPos target)
@@ -1164,6 +1209,8 @@ tbWorldCastOutput tbShape_RayCast(tbShapeId shapeId, tbPos origin, tbVec2 transl
 		output.iterations = hit.iterations;
 		output.hit = true;
 	}
+	tbRecordShapeTest(world, tb_recQueryShapeRayCast, shapeId, origin, translation, output.hit, output.normal,
+					  output.fraction);
 	return output;
 }
 

@@ -3862,6 +3862,7 @@ static void tbAdoptWorld(tbWorld* target, tbWorld* staged)
 	target->preContinuousFcn = kept.preContinuousFcn;
 	target->preSolveContext = kept.preSolveContext;
 	target->userData = kept.userData;
+	target->recording = kept.recording;
 	target->locked = false;
 	target->queryDepth = 0;
 	memset(&target->profile, 0, sizeof(target->profile));
@@ -3975,6 +3976,12 @@ bool tbWorld_Restore(tbWorldId worldId, const uint8_t* image, int size)
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (world == NULL || tbStructureLocked(world, f, "restore snapshots"))
 	{
+		return false;
+	}
+	if (world->recording != NULL)
+	{
+		// A recording replays calls on the state it has seen: a jump to another state is not a call.
+		tbReportError(f, "the world is recording; stop the recording (tbWorld_StopRecording) before restoring");
 		return false;
 	}
 	tbWorld* staged = tbDecodeImage(f, image, size);

@@ -20,6 +20,7 @@
 //   (the rounding radius is ignored, as in v3).
 // Segments and chain segments are one-sided boundaries of no area: no wind.
 #include "world.h"
+#include "recording.h"
 
 /// Density of air at sea level and 15 °C (kg/m³, ISA), per cubed length unit (tbSetLengthUnitsPerMeter).
 #define TB_AIR_DENSITY (1.225f / (tbGetLengthUnitsPerMeter() * tbGetLengthUnitsPerMeter() * tbGetLengthUnitsPerMeter()))
@@ -117,6 +118,7 @@ static void tbWindOnShape(const tbShape* shape, const tbBody* body, tbVec2 wind,
 
 bool tbShape_ApplyWind(tbShapeId shapeId, tbVec2 wind, float drag, float lift, bool wake)
 {
+	TB_RECORD(ShapeApplyWind, &shapeId, &wind, &drag, &lift, &wake);
 	const char* f = "tbShape_ApplyWind";
 	tbWorld* world;
 	tbShape* shape = tbGetShapeChecked(shapeId, f, &world, true);

@@ -16,6 +16,7 @@
 
 #include "core/array.h"
 #include "core/sort.h"
+#include "recording.h"
 
 #include <stddef.h>
 #include <string.h>
@@ -469,6 +470,7 @@ void tbDestroyWorld(tbWorldId worldId)
 	{
 		return;
 	}
+	tbRecordingDetach(world);
 	int slot = world->worldId;
 	tbNoteGenerationPeaks(world);
 	s_bodyGenerations[slot] = (uint16_t)(world->bodyGenerationBase + world->generationPeaks[0]);
@@ -547,7 +549,7 @@ static void tbFinishStep(tbWorld* world, uint64_t stepTicks)
 }
 
 /// The step: each stage is a function in the file of its concept, run top to bottom.
-bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
+static bool tbStepWorld(tbWorldId worldId, float timeStep, int subStepCount)
 {
 	const char* f = "tbWorld_Step";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
@@ -623,6 +625,20 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	return true;
 }
 
+bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
+{
+	if (tbStepWorld(worldId, timeStep, subStepCount) == false)
+	{
+		return false;
+	}
+	tbWorld* world = tbGetWorldFromIndex(worldId.index1 - 1);
+	if (world->recording != NULL)
+	{
+		tbRecordStep(world, timeStep, subStepCount);
+	}
+	return true;
+}
+
 tbBodyEvents tbWorld_GetBodyEvents(tbWorldId worldId)
 {
 	tbBodyEvents events = {0};
@@ -693,6 +709,7 @@ static tbWorld* tbGetUnlockedWorld(tbWorldId worldId, const char* function)
 
 bool tbWorld_SetGravity(tbWorldId worldId, tbVec2 gravity)
 {
+	TB_RECORD(WorldSetGravity, &worldId, &gravity);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetGravity");
 	if (world == NULL || tbCheckVec2("tbWorld_SetGravity", "gravity", gravity) == false)
 	{
@@ -711,6 +728,7 @@ tbVec2 tbWorld_GetGravity(tbWorldId worldId)
 
 void tbWorld_EnableSleeping(tbWorldId worldId, bool flag)
 {
+	TB_RECORD(WorldEnableSleeping, &worldId, &flag);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableSleeping");
 	if (world == NULL)
 	{
@@ -738,6 +756,7 @@ bool tbWorld_IsSleepingEnabled(tbWorldId worldId)
 
 void tbWorld_EnableManifoldRecycling(tbWorldId worldId, bool flag)
 {
+	TB_RECORD(WorldEnableManifoldRecycling, &worldId, &flag);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableManifoldRecycling");
 	if (world != NULL)
 	{
@@ -747,6 +766,7 @@ void tbWorld_EnableManifoldRecycling(tbWorldId worldId, bool flag)
 
 void tbWorld_EnableCentralFriction(tbWorldId worldId, bool flag)
 {
+	TB_RECORD(WorldEnableCentralFriction, &worldId, &flag);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableCentralFriction");
 	if (world != NULL)
 	{
@@ -756,6 +776,7 @@ void tbWorld_EnableCentralFriction(tbWorldId worldId, bool flag)
 
 bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio, float pushSpeed)
 {
+	TB_RECORD(WorldSetContactTuning, &worldId, &hertz, &dampingRatio, &pushSpeed);
 	const char* f = "tbWorld_SetContactTuning";
 	tbWorld* world = tbGetUnlockedWorld(worldId, f);
 	if (world == NULL || tbCheckPositive(f, "hertz", hertz) == false ||
@@ -771,6 +792,7 @@ bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio
 
 bool tbWorld_SetContactRecycleDistance(tbWorldId worldId, float recycleDistance)
 {
+	TB_RECORD(WorldSetContactRecycleDistance, &worldId, &recycleDistance);
 	const char* f = "tbWorld_SetContactRecycleDistance";
 	tbWorld* world = tbGetUnlockedWorld(worldId, f);
 	if (world == NULL || tbCheckLength(f, "recycleDistance", recycleDistance, false) == false)
@@ -789,6 +811,7 @@ float tbWorld_GetContactRecycleDistance(tbWorldId worldId)
 
 void tbWorld_EnableSpeculative(tbWorldId worldId, bool flag)
 {
+	TB_RECORD(WorldEnableSpeculative, &worldId, &flag);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableSpeculative");
 	if (world != NULL)
 	{
@@ -836,6 +859,7 @@ tbCapacity tbWorld_GetMaxCapacity(tbWorldId worldId)
 
 void tbWorld_RebuildStaticTree(tbWorldId worldId)
 {
+	TB_RECORD(WorldRebuildStaticTree, &worldId);
 	const char* f = "tbWorld_RebuildStaticTree";
 	tbWorld* world = tbGetWorldChecked(worldId, f);
 	if (world != NULL && tbStructureLocked(world, f, "rebuild the static tree") == false)
@@ -846,6 +870,7 @@ void tbWorld_RebuildStaticTree(tbWorldId worldId)
 
 bool tbWorld_SetRestitutionThreshold(tbWorldId worldId, float value)
 {
+	TB_RECORD(WorldSetRestitutionThreshold, &worldId, &value);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetRestitutionThreshold");
 	if (world == NULL || tbCheckNonNegative("tbWorld_SetRestitutionThreshold", "value", value) == false)
 	{
@@ -869,6 +894,7 @@ float tbWorld_GetHitEventThreshold(tbWorldId worldId)
 
 bool tbWorld_SetHitEventThreshold(tbWorldId worldId, float value)
 {
+	TB_RECORD(WorldSetHitEventThreshold, &worldId, &value);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_SetHitEventThreshold");
 	if (world == NULL || tbCheckNonNegative("tbWorld_SetHitEventThreshold", "value", value) == false)
 	{
@@ -935,6 +961,7 @@ int tbWorld_GetAwakeBodyCount(tbWorldId worldId)
 
 void tbWorld_EnableWarmStarting(tbWorldId worldId, bool flag)
 {
+	TB_RECORD(WorldEnableWarmStarting, &worldId, &flag);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableWarmStarting");
 	if (world != NULL)
 	{
@@ -950,6 +977,7 @@ bool tbWorld_IsWarmStartingEnabled(tbWorldId worldId)
 
 void tbWorld_EnableContinuous(tbWorldId worldId, bool flag)
 {
+	TB_RECORD(WorldEnableContinuous, &worldId, &flag);
 	tbWorld* world = tbGetUnlockedWorld(worldId, "tbWorld_EnableContinuous");
 	if (world == NULL)
 	{
@@ -975,6 +1003,7 @@ bool tbWorld_IsContinuousEnabled(tbWorldId worldId)
 
 void tbWorld_SetMaximumLinearSpeed(tbWorldId worldId, float maximumLinearSpeed)
 {
+	TB_RECORD(WorldSetMaximumLinearSpeed, &worldId, &maximumLinearSpeed);
 	const char* f = "tbWorld_SetMaximumLinearSpeed";
 	tbWorld* world = tbGetUnlockedWorld(worldId, f);
 	if (world != NULL && tbCheckMaximumSpeed(f, maximumLinearSpeed))
@@ -997,6 +1026,7 @@ void* tbWorld_GetUserData(tbWorldId worldId)
 
 bool tbWorld_SetBroadPhaseMethod(tbWorldId worldId, tbBroadPhaseMethod method)
 {
+	TB_RECORD(WorldSetBroadPhaseMethod, &worldId, &method);
 	const char* f = "tbWorld_SetBroadPhaseMethod";
 	tbWorld* world = tbGetUnlockedWorld(worldId, f);
 	if (world == NULL)
@@ -1015,6 +1045,7 @@ bool tbWorld_SetBroadPhaseMethod(tbWorldId worldId, tbBroadPhaseMethod method)
 
 bool tbWorld_SetNarrowPhaseMethod(tbWorldId worldId, tbNarrowPhaseMethod method)
 {
+	TB_RECORD(WorldSetNarrowPhaseMethod, &worldId, &method);
 	const char* f = "tbWorld_SetNarrowPhaseMethod";
 	tbWorld* world = tbGetUnlockedWorld(worldId, f);
 	if (world == NULL)
@@ -1032,6 +1063,7 @@ bool tbWorld_SetNarrowPhaseMethod(tbWorldId worldId, tbNarrowPhaseMethod method)
 
 bool tbWorld_SetContinuousMethod(tbWorldId worldId, tbContinuousMethod method)
 {
+	TB_RECORD(WorldSetContinuousMethod, &worldId, &method);
 	const char* f = "tbWorld_SetContinuousMethod";
 	tbWorld* world = tbGetUnlockedWorld(worldId, f);
 	if (world == NULL)
@@ -1049,6 +1081,7 @@ bool tbWorld_SetContinuousMethod(tbWorldId worldId, tbContinuousMethod method)
 
 bool tbWorld_SetSolverMethod(tbWorldId worldId, tbSolverMethod method, int velocityIterations, int positionIterations)
 {
+	TB_RECORD(WorldSetSolverMethod, &worldId, &method, &velocityIterations, &positionIterations);
 	const char* f = "tbWorld_SetSolverMethod";
 	tbWorld* world = tbGetUnlockedWorld(worldId, f);
 	if (world == NULL)

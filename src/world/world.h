@@ -140,6 +140,8 @@ typedef struct tbWorld
 	/// body's name is otherwise the game's string (tbBodyDef::name, not copied).
 	char* snapshotNames;
 	int snapshotNamesSize;
+	/// The recording this world appends its calls and steps to (recording.c), or NULL.
+	struct tbRecording* recording;
 } tbWorld;
 
 /// The world for an id, or NULL (reports an error naming `function` when the id is stale or null).
