@@ -445,9 +445,13 @@ static void tbPutScalar(tbRecBytes* out, char kind, const void* value)
 			tbPutPos(out, value);
 			break;
 		case 'X':
-			tbPutPos(out, &((const tbWorldTransform*)value)->p);
-			tbPutFloats(out, &((const tbWorldTransform*)value)->q.c, 2);
+		{
+			const tbWorldTransform* xf = value;
+			tbPutPos(out, &xf->p);
+			float cs[2] = {xf->q.c, xf->q.s}; // an array: not a pointer past the member c
+			tbPutFloats(out, cs, 2);
 			break;
+		}
 		case 'n':
 			tbPutName(out, *(const char* const*)value);
 			break;
@@ -599,7 +603,11 @@ static void tbGetPos(tbRecArgReader* r, tbPos* p)
 	tbRecGetU64(r, bits + 1);
 	memcpy(p, bits, sizeof(bits));
 #else
-	tbGetFloats(r, &p->x, 2);
+	// Through an array: a pointer to x stepping on to y is, to the compiler, past the end of x.
+	float xy[2] = {0.0f, 0.0f};
+	tbGetFloats(r, xy, 2);
+	p->x = xy[0];
+	p->y = xy[1];
 #endif
 }
 
@@ -658,8 +666,15 @@ static bool tbGetScalar(tbRecArgReader* r, char kind, void* value)
 			tbGetPos(r, value);
 			return r->failed == false;
 		case 'X':
-			tbGetPos(r, &((tbWorldTransform*)value)->p);
-			return tbGetFloats(r, &((tbWorldTransform*)value)->q.c, 2);
+		{
+			tbWorldTransform* xf = value;
+			tbGetPos(r, &xf->p);
+			float cs[2] = {0.0f, 0.0f};
+			bool ok = tbGetFloats(r, cs, 2);
+			xf->q.c = cs[0];
+			xf->q.s = cs[1];
+			return ok;
+		}
 		case 'n':
 			return tbGetName(r, value);
 		default:
