@@ -127,8 +127,8 @@ static float MeasureRollingDeceleration(tbWorldDef worldDef, float c, float* sli
 // up to c·r·N against its rolling (c the larger coefficient, r the larger rounding radius, N the
 // normal force). Energy: d/dt(½mv² + ½Iω²) = −c·r·m·g·ω with ω = v/r and I = ½mr², so the disc
 // decelerates at a = c·g/(1 + I/(m·r²)) = (2/3)·c·g, then stops and stays stopped. Under every
-// solver method (the wide soft step sends such contacts to the scalar solver; the scalar soft
-// step, Baumgarte and NGS solve it the same way). The tolerance, 1 %, covers the sub-step
+// solver method (the wide soft step solves the row in its lanes, the scalar soft step, Baumgarte
+// and NGS one contact at a time, with the same arithmetic). The tolerance, 1 %, covers the sub-step
 // discretisation of the contact (measured: the soft step 1.3362 against 1.3333 m/s², 0.2 %; the
 // average is taken after 0.5 s, once the contact has settled).
 Test(materials, rolling_resistance_decelerates_a_rolling_disc_at_the_closed_form_rate)

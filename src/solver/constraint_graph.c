@@ -20,9 +20,11 @@
 // trailing zeros. Greedy colouring needs at most (largest degree + 1) colours, and a body in a pile
 // touches few others, so TB_GRAPH_COLOR_COUNT leaves room. Constraints that find no free colour
 // among TB_GRAPH_COLOR_COUNT (very crowded bodies: a body with many small neighbours) go to an
-// overflow list that the scalar solver handles after the colours, and so do contacts with rolling
-// resistance or a tangent speed (tbSurfaceMaterial): the wide blocks do not carry them, so that the
-// common contact pays nothing for them.
+// overflow list that the scalar solver handles after the colours, and so do contacts with a
+// tangent speed (a conveyor belt, tbSurfaceMaterial): the wide blocks do not carry it, so that the
+// common contact pays nothing for it. Rolling resistance, common on balls and wheels, is solved in
+// the lanes, its row kept beside the blocks (tbWideRolling) only in a step where some coloured
+// contact has it.
 //
 // Order. Gauss–Seidel results depend on the order, and the order here is colour by colour; the
 // colours are assigned greedily in the island stage's order (a hash of the contact id, island.c),
@@ -53,9 +55,10 @@
 
 // Colour of each constraint (or TB_GRAPH_COLOR_COUNT for overflow); counts per colour. A body takes
 // part when the constraint can change its velocity (tb_keyMovesA/B).
-static void tbAssignColors(const tbStepContext* context, uint32_t* bodyMasks, uint8_t* colors,
+static void tbAssignColors(tbStepContext* context, uint32_t* bodyMasks, uint8_t* colors,
 						   int counts[TB_GRAPH_COLOR_COUNT + 1])
 {
+	int rolling = 0;
 	const uint32_t allColors = TB_GRAPH_COLOR_COUNT == 32 ? ~0u : ((1u << TB_GRAPH_COLOR_COUNT) - 1u);
 	for (int i = 0; i < context->constraintCount; ++i)
 	{
@@ -66,7 +69,7 @@ static void tbAssignColors(const tbStepContext* context, uint32_t* bodyMasks, ui
 		uint32_t free = ~used & allColors;
 		if ((key.flags & tb_keyScalarOnly) != 0u)
 		{
-			free = 0u; // the wide blocks carry no surface extras: the scalar solver takes it
+			free = 0u; // the wide blocks carry no tangent speed: the scalar solver takes it
 		}
 
 		int color = TB_GRAPH_COLOR_COUNT;
@@ -85,7 +88,9 @@ static void tbAssignColors(const tbStepContext* context, uint32_t* bodyMasks, ui
 		}
 		colors[i] = (uint8_t)color;
 		counts[color] += 1;
+		rolling += color != TB_GRAPH_COLOR_COUNT && (key.flags & tb_keyRolling) != 0u ? 1 : 0;
 	}
+	context->rollingCount = rolling;
 }
 
 /// Contacts of colour k in partition p: n[k][p].
@@ -107,6 +112,7 @@ typedef struct tbContactColorCache
 	int capacity; ///< of the arrays
 	int bodyCount;
 	int bounceCount;		///< keys with tb_keyBounces among them
+	int rollingCount;		///< coloured keys with tb_keyRolling among them
 	tbContactKey* keysById; ///< context->keysById as coloured
 	int* slots;				///< world->cache.solverSlots
 	int* wideLocation;	///< the colouring's outputs: lane by solve slot,
@@ -188,6 +194,7 @@ static void tbKeepColors(const tbStepContext* context, const int counts[TB_GRAPH
 	cache->count = n;
 	cache->bodyCount = context->bodyCount;
 	cache->bounceCount = bounceCount;
+	cache->rollingCount = context->rollingCount;
 	if (cache->keysById != context->keysById) // a steady step recoloured for another worker count
 	{
 		memcpy(cache->keysById, context->keysById, sizeof(tbContactKey) * (size_t)n);
@@ -393,6 +400,7 @@ void tbColorConstraints(tbStepContext* context)
 		const tbContactColorCache* cache = context->world->cache.contactColorCache;
 		context->partitionCount = cache->partitionCount;
 		memcpy(context->partitionBodyStart, cache->partitionBodyStart, sizeof(context->partitionBodyStart));
+		context->rollingCount = cache->rollingCount;
 		tbLayOutColors(context, cache->counts, &cache->partitionCounts);
 		memcpy(context->wideLocation, cache->wideLocation, sizeof(int) * (size_t)n);
 		context->locationById = cache->locationById; // read only until the next colouring
@@ -498,6 +506,14 @@ static void tbLayOutColors(tbStepContext* context, const int counts[TB_GRAPH_COL
 	context->wideCount = blockCount;
 	context->overflowConstraints = (int*)((char*)context->wideMemory + wideBytes);
 	context->overflowCount = 0;
+	context->wideRolling = NULL;
+	if (context->rollingCount > 0 && blockCount > 0)
+	{
+		// Zeroed: a lane without rolling resistance (and a padding lane) must hold 0 everywhere.
+		int rollingBytes = (int)sizeof(tbWideRolling) * blockCount;
+		context->wideRolling = tbArenaAlloc(&context->world->stepArena, rollingBytes);
+		memset(context->wideRolling, 0, (size_t)rollingBytes);
+	}
 	context->colorCount = 0;
 	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
 	{
@@ -526,6 +542,7 @@ void tbReleaseColors(tbStepContext* context)
 		context->wideLocation = NULL;
 		context->locationById = NULL;
 		context->wideConstraints = NULL;
+		context->wideRolling = NULL;
 		context->wideCount = 0;
 		context->overflowCount = 0;
 	}

@@ -306,7 +306,8 @@ static tbContactKey tbMakeContactKey(const tbStepContext* context, const tbConta
 	bool dynamicB = key.indexB != context->bodyCount && world->bodies[bodyIdB].type == tb_dynamicBody;
 	flags |= dynamicA ? (uint32_t)tb_keyDynamicA : 0u;
 	flags |= dynamicB ? (uint32_t)tb_keyDynamicB : 0u;
-	flags |= contact->rollingResistance > 0.0f || contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
+	flags |= contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
+	flags |= contact->rollingResistance > 0.0f ? (uint32_t)tb_keyRolling : 0u;
 	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
 	key.flags = flags;
 	return key;
@@ -943,6 +944,19 @@ int tbPrepareWideLanes(tbStepContext* context, const tbLaneBatch* batch)
 	return rebound;
 }
 
+/// The rolling row of a coloured contact's lane (tbWideRolling), as tbPrepareConstraint prepares
+/// the scalar one.
+static void tbPrepareRollingLane(tbStepContext* context, const tbContact* contact, tbContactKey key, int location)
+{
+	tbWideRolling* rolling = context->wideRolling + location / TB_SIMD_WIDTH;
+	int lane = location % TB_SIMD_WIDTH;
+	float kRolling = context->masses[key.indexA].invI + context->masses[key.indexB].invI;
+	float warmScale = context->enableWarmStarting ? 1.0f : 0.0f;
+	tbSetLaneW(&rolling->resistance, lane, contact->rollingResistance);
+	tbSetLaneW(&rolling->mass, lane, kRolling > 0.0f ? 1.0f / kRolling : 0.0f);
+	tbSetLaneW(&rolling->impulse, lane, warmScale * contact->manifold.rollingImpulse);
+}
+
 typedef struct tbPrepareTaskContext
 {
 	tbStepContext* context;
@@ -1046,6 +1060,10 @@ static void tbPrepareContactsTask(int start, int end, uint32_t workerIndex, void
 		// Key and lane by contact-id order: both stream (by slot they were scattered loads).
 		tbContactKey key = context->keysById[i];
 		int location = context->locationById[i];
+		if (location >= 0 && (key.flags & tb_keyRolling) != 0u)
+		{
+			tbPrepareRollingLane(context, contact, key, location);
+		}
 		bool bounces = (key.flags & tb_keyBounces) != 0u;
 		if (location >= 0 && laneFastPath && (bounces == false || impactPropagation == false))
 		{
@@ -1548,7 +1566,10 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 		if (location >= 0)
 		{
 			tbLoadWideImpulses(context, location, manifold->pointCount, manifold->points);
-			manifold->rollingImpulse = 0.0f; // wide blocks hold no surface extras (constraint_graph.c)
+			manifold->rollingImpulse = context->wideRolling != NULL
+										   ? tbGetLaneW(&context->wideRolling[location / TB_SIMD_WIDTH].impulse,
+														location % TB_SIMD_WIDTH)
+										   : 0.0f;
 			continue;
 		}
 		const tbContactConstraint* c = context->constraints + index;

@@ -51,6 +51,10 @@ void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex)
 		c->points[j].tangentImpulse = tbGetLaneW(&ip->tangentImpulse, lane);
 		c->points[j].maxNormalImpulse = tbGetLaneW(&ip->maxNormalImpulse, lane);
 	}
+	if (context->wideRolling != NULL)
+	{
+		c->rollingImpulse = tbGetLaneW(&context->wideRolling[location / TB_SIMD_WIDTH].impulse, lane);
+	}
 	context->wideLocation[constraintIndex] = -1;
 }
 
@@ -173,13 +177,47 @@ static void tbZeroWideImpulses(tbStepContext* context)
 			c->impulses[j].normalImpulse = tbZeroW();
 			c->impulses[j].tangentImpulse = tbZeroW();
 		}
+		if (context->wideRolling != NULL)
+		{
+			context->wideRolling[i].impulse = tbZeroW();
+		}
 	}
+}
+
+/// Whether some lane of the block has rolling resistance (the rest of the row is then skipped).
+static TB_FORCE_INLINE bool tbBlockRolls(const tbWideRolling* rolling)
+{
+	return rolling != NULL && tbGreaterMaskW(rolling->resistance, tbZeroW()) != 0;
+}
+
+/// The rolling impulse's change of the bodies' spin, in the lanes that have rolling resistance only.
+static TB_FORCE_INLINE void tbApplyRollingW(tbWideBody* a, tbWideBody* b, const tbWideContactConstraint* c,
+											const tbWideRolling* rolling, tbFloatW impulse)
+{
+	tbFloatW zero = tbZeroW();
+	a->w = tbSelectGreaterW(rolling->resistance, zero, tbSubW(a->w, tbMulW(c->invIA, impulse)), a->w);
+	b->w = tbSelectGreaterW(rolling->resistance, zero, tbAddW(b->w, tbMulW(c->invIB, impulse)), b->w);
+}
+
+/// Rolling resistance, lane by lane as the scalar tbSolveConstraint: the impulse against the
+/// relative spin, its total bounded by rollingResistance × the points' normal impulses together.
+static TB_FORCE_INLINE void tbSolveRollingW(const tbWideContactConstraint* c, tbWideRolling* rolling, tbWideBody* a,
+											tbWideBody* b)
+{
+	tbFloatW minusOne = tbSplatW(-1.0f); // x·(−1) is −x exactly, the sign of a zero included
+	tbFloatW totalNormalImpulse = tbAddW(c->impulses[0].normalImpulse, c->impulses[1].normalImpulse);
+	tbFloatW maxImpulse = tbMulW(rolling->resistance, totalNormalImpulse);
+	tbFloatW impulse = tbMulW(tbMulW(rolling->mass, minusOne), tbSubW(b->w, a->w));
+	tbFloatW newImpulse = tbClampW(tbAddW(rolling->impulse, impulse), tbMulW(maxImpulse, minusOne), maxImpulse);
+	impulse = tbSubW(newImpulse, rolling->impulse);
+	rolling->impulse = tbSelectGreaterW(rolling->resistance, tbZeroW(), newImpulse, rolling->impulse);
+	tbApplyRollingW(a, b, c, rolling, impulse);
 }
 
 // `central`: the friction impulse is one, at the block's friction anchors (central friction,
 // contact_solver.c), applied after the points' normal impulses as the scalar warm start does.
-static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* c, tbSolverBody* bodies, bool shared,
-												 bool central)
+static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* c, const tbWideRolling* rolling,
+												 tbSolverBody* bodies, bool shared, bool central)
 {
 	tbWideBody a, b;
 	tbGatherVelocities(bodies, c->indexA, &a);
@@ -210,19 +248,25 @@ static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* 
 		tbApplyImpulseW(&a, &b, c, c->frictionAnchorAX, c->frictionAnchorAY, c->frictionAnchorBX, c->frictionAnchorBY,
 						tbMulW(impulse, tx), tbMulW(impulse, ty));
 	}
+	if (tbBlockRolls(rolling))
+	{
+		tbApplyRollingW(&a, &b, c, rolling, rolling->impulse); // after the points, as the scalar warm start
+	}
 	tbScatterPair(bodies, c, &a, &b, shared);
 }
 
 #define TB_WARM_START_WIDE_LOOP(SHARED, CENTRAL)                                                                       \
 	for (int i = start; i < end; ++i)                                                                                  \
 	{                                                                                                                  \
-		tbWarmStartWideBlock(context->wideConstraints + i, bodies, SHARED, CENTRAL);                                   \
+		tbWarmStartWideBlock(context->wideConstraints + i, rolling != NULL ? rolling + i : NULL, bodies, SHARED,         \
+							 CENTRAL);                                                                                 \
 	}
 
 // One loop per scatter kind and friction kind, so that no block tests them.
 void tbWarmStartWideRange(tbStepContext* context, int start, int end, bool shared)
 {
 	tbSolverBody* bodies = context->bodies;
+	const tbWideRolling* rolling = context->wideRolling;
 	if (context->centralFriction)
 	{
 		if (shared)
@@ -375,8 +419,8 @@ static TB_FORCE_INLINE void tbSolveCentralFrictionW(tbWideContactConstraint* c, 
 }
 
 // Normal impulses first, then friction against the fresh normal impulses (as the scalar solver).
-static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbSolverBody* bodies, const tbWidePass* pass,
-									tbBiasPolicy policy, bool shared, bool central)
+static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbWideRolling* rolling, tbSolverBody* bodies,
+									const tbWidePass* pass, tbBiasPolicy policy, bool shared, bool central)
 {
 	tbWideBody a = {0}, b = {0};
 	tbGatherVelocities(bodies, c->indexA, &a);
@@ -389,6 +433,10 @@ static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbSolve
 
 	tbSolveNormalW(c->points + 0, c->impulses + 0, c, &a, &b, pass, policy);
 	tbSolveNormalW(c->points + 1, c->impulses + 1, c, &a, &b, pass, policy);
+	if (tbBlockRolls(rolling))
+	{
+		tbSolveRollingW(c, rolling, &a, &b); // between normal and friction, as the scalar solver
+	}
 	tbFloatW tx = c->normalY;
 	tbFloatW ty = tbSubW(tbZeroW(), c->normalX);
 	if (central)
@@ -407,7 +455,8 @@ static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbSolve
 #define TB_SOLVE_WIDE_BLOCKS(POLICY, SHARED, CENTRAL)                                                                  \
 	for (int i = start; i < end; ++i)                                                                                  \
 	{                                                                                                                  \
-		tbSolveWideBlock(context->wideConstraints + i, context->bodies, &pass, POLICY, SHARED, CENTRAL);               \
+		tbSolveWideBlock(context->wideConstraints + i, rolling != NULL ? rolling + i : NULL, context->bodies, &pass,   \
+						 POLICY, SHARED, CENTRAL);                                                                     \
 	}
 
 // A loop per policy, scatter kind and friction kind: none of them is tested block by block.
@@ -441,6 +490,7 @@ void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, in
 	pass.minBaumgarteBias = tbSplatW(-context->maxLinearSpeed);
 	pass.slop = tbSplatW(TB_LINEAR_SLOP);
 	bool central = context->centralFriction;
+	tbWideRolling* rolling = context->wideRolling;
 	switch (policy)
 	{
 		case tb_biasSoft:

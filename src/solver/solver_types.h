@@ -199,6 +199,18 @@ typedef struct tbWideContactConstraint
 _Static_assert(sizeof(tbWideContactConstraint) == 152 * TB_SIMD_WIDTH,
 			   "tbWideContactConstraint is meant to be 152 bytes a lane (608 with four lanes)");
 
+/// The rolling-resistance row of a block's lanes (contact_solver.c: an angular impulse against the
+/// relative spin, bounded by rollingResistance × the normal impulse), one per block beside the
+/// blocks when some contact of the step has rolling resistance: most blocks have none, and the
+/// block itself keeps its size. A lane without rolling resistance has 0 in every field and is
+/// left untouched by the row (a select, so not even the sign of a zero changes).
+typedef struct tbWideRolling
+{
+	tbFloatW resistance; ///< rollingResistance, 0 in a lane without
+	tbFloatW mass;		 ///< 1/(invIA + invIB), 0 when neither body can turn
+	tbFloatW impulse;	 ///< accumulated over the step, warm started
+} tbWideRolling;
+
 /// Everything the pieces of one step share. Lives on the stack of tbSolveStage.
 typedef struct tbStepContext
 {
@@ -231,6 +243,8 @@ typedef struct tbStepContext
 	// blocks of TB_SIMD_WIDTH, and the constraints that found no colour, by index.
 	tbWideContactConstraint* wideConstraints;
 	int wideCount;
+	tbWideRolling* wideRolling; ///< one per block, zeroed; NULL when no coloured contact rolls (tb_keyRolling)
+	int rollingCount;			///< coloured contacts with tb_keyRolling
 	int* overflowConstraints;
 	int overflowCount;
 	int* wideLocation; ///< per constraint: block·TB_SIMD_WIDTH + lane, or −1 (overflow, or unpacked)

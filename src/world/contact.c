@@ -941,7 +941,8 @@ static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* co
 	bool movesB = dynamicB && (b->invMass > 0.0f || (b->fixedRotation == false && b->invInertia > 0.0f));
 	uint32_t flags = (movesA ? (uint32_t)tb_keyMovesA : 0u) | (movesB ? (uint32_t)tb_keyMovesB : 0u) |
 					 (dynamicA ? (uint32_t)tb_keyDynamicA : 0u) | (dynamicB ? (uint32_t)tb_keyDynamicB : 0u);
-	flags |= contact->rollingResistance > 0.0f || contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
+	flags |= contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
+	flags |= contact->rollingResistance > 0.0f ? (uint32_t)tb_keyRolling : 0u;
 	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
 	tbCollideKey* written = world->cache.collideKeys + contactId;
 	tbContactKey* key = &written->key;

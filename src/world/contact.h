@@ -88,8 +88,9 @@ typedef enum tbContactKeyFlag
 	tb_keyMovesB = 2,
 	tb_keyDynamicA = 4,	   ///< A is an awake dynamic body (picks the contact's softness)
 	tb_keyDynamicB = 8,
-	tb_keyScalarOnly = 16, ///< rolling resistance or tangent speed: the wide blocks do not carry them
+	tb_keyScalarOnly = 16, ///< tangent speed: the wide blocks do not carry it
 	tb_keyBounces = 32,	   ///< restitution > 0: the scalar constraint is kept for restitution
+	tb_keyRolling = 64,	   ///< rolling resistance: its lane's rolling row is kept beside the block
 } tbContactKeyFlag;
 
 /// Two body ids (contact.c's dense copy of each contact's bodies).
