@@ -418,8 +418,13 @@ typedef struct tbManifoldPoint
 	float tangentImpulse;	///< accumulated friction impulse (N·s); with central friction (the default) the
 							///< contact's one friction impulse, shared by the points in proportion to
 							///< their normal impulses
-	float maxNormalImpulse; ///< largest normal impulse of the last step (for hit events)
+	float totalNormalImpulse; ///< N·s, all the normal impulse the step applied (Box2D v3.2's): warm starts,
+							  ///< sub-step and relaxing changes and restitution summed over the sub-steps; 0
+							  ///< for a speculative point that never pushed. A resting body's points sum
+							  ///< to about its weight × the step's Δt
 	float normalVelocity;	///< relative normal velocity before the solve (m/s, < 0 approaching)
+	float baseSeparation;	///< m, the separation when the narrow phase last computed this point; kept
+							///< while the manifold is recycled (then `separation` is moved with the bodies)
 	uint16_t id;			///< feature id
 	bool persisted;			///< true if matched to a point of the previous step
 } tbManifoldPoint;

@@ -109,9 +109,14 @@ typedef struct tbWorldDef
 									///< contactHertz, at most ¼ of the sub-step rate; default 1.75
 	float contactDampingRatio;		///< soft contact damping ratio, default 10
 	bool contactHertzFollowsSubStep; ///< soft: stiffness = min(contactHertz·subSteps/4, ¼ sub-step rate)
-	float maxContactPushSpeed;		///< soft: m/s, largest speed at which overlap is pushed out, default 3
+	float contactSpeed;				///< m/s, largest speed at which overlap is pushed out (Box2D v3.2's name), default 3
 	float maximumLinearSpeed;		///< m/s, clamp on body speed, default 4000
 	bool enableSleep;				///< default true
+	bool enableContinuous;			///< default true; false: no time of impact, fast bodies may tunnel (as
+									///< tbWorld_EnableContinuous(false), which `continuous` is kept for)
+	bool enableContactSoftening;	///< soft: contacts between bodies of very different mass are softened
+									///< towards the lighter body's (Box2D v3.2's option, experimental there
+									///< too); static contacts are not. Default false
 	tbBroadPhaseMethod broadPhase;	///< default auto
 	tbNarrowPhaseMethod narrowPhase; ///< default auto
 	tbContinuousMethod continuous;	///< default: quadratic + conservative advancement
@@ -192,6 +197,11 @@ typedef struct tbBodyDef
 	bool enableContactRecycling; ///< default true; false: its contacts never reuse an old manifold
 								 ///< (tbWorldDef::enableManifoldRecycling), e.g. a character
 	bool isBullet;			///< swept against dynamic and kinematic bodies too (not bullets), default false
+	bool isEnabled;			///< default true; false: created disabled (tbBody_Disable), out of the broad
+							///< phase and the simulation until tbBody_Enable
+	bool allowFastRotation; ///< default false; true: no cap on the rotation per step (wheels; the cap is
+							///< what keeps continuous collision's rotation bound, so a fast-turning
+							///< long shape may tunnel)
 	int internalValue;
 } tbBodyDef;
 
@@ -265,6 +275,10 @@ typedef struct tbShapeDef
 	bool updateBodyMass;	   ///< recompute the body's mass, default true
 	bool enableCustomFiltering; ///< ask the world's custom filter about this shape's pairs, default false
 	bool enablePreSolveEvents;	///< call the world's pre-solve callback for this shape's contacts, default false
+	bool invokeContactCreation; ///< default true: a shape on a static body looks for the shapes it overlaps at
+								///< the next step, as a moving shape does; false: its contacts wait until
+								///< another shape moves across it (cheaper for large static worlds built
+								///< where nothing rests)
 	int internalValue;
 } tbShapeDef;
 
@@ -489,7 +503,9 @@ typedef struct tbWheelJointDef
 TB_API tbWheelJointDef tbDefaultWheelJointDef(void);
 
 // ---------------------------------------------------------------------------------------------
-// Events, read after the step. Arrays stay valid until the next step or world destruction.
+// Events, read after the step. Arrays stay valid until the next step or world destruction. The
+// arrays are not const, as in Box2D v3.2, so ported code that keeps them in plain pointers compiles;
+// the library does not read them back, so writing to them changes nothing.
 
 typedef struct tbContactBeginTouchEvent
 {
@@ -512,12 +528,15 @@ typedef struct tbContactEndTouchEvent
 {
 	tbShapeId shapeIdA;
 	tbShapeId shapeIdB;
+	tbContactId contactId; ///< the contact that stopped touching; still valid when it goes on overlapping
+						   ///< (tbContact_IsValid), invalid when it was destroyed with the pair
 } tbContactEndTouchEvent;
 
 typedef struct tbContactHitEvent
 {
 	tbShapeId shapeIdA;
 	tbShapeId shapeIdB;
+	tbContactId contactId; ///< the contact that was hit, for tbContact_GetData while it lives
 	tbPos point;
 	tbVec2 normal;
 	float approachSpeed; ///< m/s, > hitEventThreshold
@@ -525,9 +544,9 @@ typedef struct tbContactHitEvent
 
 typedef struct tbContactEvents
 {
-	const tbContactBeginTouchEvent* beginEvents;
-	const tbContactEndTouchEvent* endEvents;
-	const tbContactHitEvent* hitEvents;
+	tbContactBeginTouchEvent* beginEvents;
+	tbContactEndTouchEvent* endEvents;
+	tbContactHitEvent* hitEvents;
 	int beginCount;
 	int endCount;
 	int hitCount;
@@ -547,8 +566,8 @@ typedef struct tbSensorEndTouchEvent
 
 typedef struct tbSensorEvents
 {
-	const tbSensorBeginTouchEvent* beginEvents;
-	const tbSensorEndTouchEvent* endEvents;
+	tbSensorBeginTouchEvent* beginEvents;
+	tbSensorEndTouchEvent* endEvents;
 	int beginCount;
 	int endCount;
 } tbSensorEvents;
@@ -564,7 +583,7 @@ typedef struct tbBodyMoveEvent
 
 typedef struct tbBodyEvents
 {
-	const tbBodyMoveEvent* moveEvents;
+	tbBodyMoveEvent* moveEvents;
 	int moveCount;
 } tbBodyEvents;
 
@@ -578,7 +597,7 @@ typedef struct tbJointEvent
 
 typedef struct tbJointEvents
 {
-	const tbJointEvent* jointEvents;
+	tbJointEvent* jointEvents;
 	int count;
 } tbJointEvents;
 
@@ -792,6 +811,12 @@ typedef enum tbHexColor
 	tb_colorWhiteSmoke = 0xF5F5F5,
 	tb_colorYellow = 0xFFFF00,
 	tb_colorYellowGreen = 0x9ACD32,
+
+	// Box2D v3.2's own colours.
+	tb_colorBox2DRed = 0xDC3132,
+	tb_colorBox2DBlue = 0x30AEBF,
+	tb_colorBox2DGreen = 0x8CC924,
+	tb_colorBox2DYellow = 0xFFEE8C,
 } tbHexColor;
 
 /// The colour a debug view gives graph colour `index` of the contact solver (Box2D v3.2's

@@ -353,7 +353,7 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 		cp->baseSeparation = mp->separation - tbDot(tbSub(rB, rA), normal);
 		cp->normalImpulse = warmScale * mp->normalImpulse;
 		cp->tangentImpulse = warmScale * mp->tangentImpulse;
-		cp->maxNormalImpulse = 0.0f;
+		cp->totalNormalImpulse = 0.0f;
 
 		float kNormal = tbInverseEffectiveMass(c, rA, rB, normal);
 		float kTangent = tbInverseEffectiveMass(c, rA, rB, tangent);
@@ -513,7 +513,7 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 			tbSetLaneW(&wp->baseSeparation, lane, 0.0f);
 			tbSetLaneW(&block->impulses[j].normalImpulse, lane, 0.0f);
 			tbSetLaneW(&block->impulses[j].tangentImpulse, lane, 0.0f);
-			tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
+			tbSetLaneW(&block->impulses[j].totalNormalImpulse, lane, 0.0f);
 			tbSetLaneW(&wp->normalMass, lane, 0.0f);
 			tbSetLaneW(&wp->tangentMass, lane, 0.0f);
 			continue;
@@ -531,7 +531,7 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 		tbSetLaneW(&wp->baseSeparation, lane, baseSeparation);
 		tbSetLaneW(&block->impulses[j].normalImpulse, lane, warmScale * mp->normalImpulse);
 		tbSetLaneW(&block->impulses[j].tangentImpulse, lane, warmScale * mp->tangentImpulse);
-		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
+		tbSetLaneW(&block->impulses[j].totalNormalImpulse, lane, 0.0f);
 		tbSetLaneW(&wp->normalMass, lane, kNormal > 0.0f ? 1.0f / kNormal : 0.0f);
 		tbSetLaneW(&wp->tangentMass, lane, kTangent > 0.0f ? 1.0f / kTangent : 0.0f);
 		tbVec2 vA = tbAdd(sA->linearVelocity, tbCrossSV(sA->angularVelocity, rA));
@@ -604,7 +604,7 @@ enum
 	tb_anchorBX = 2,
 	tb_anchorBY = 3,
 	tb_pointSeparation = 0, ///< tbManifoldPoint from separation: separation, normalImpulse, tangentImpulse,
-	tb_pointNormalImpulse = 1, ///< then maxNormalImpulse (not used)
+	tb_pointNormalImpulse = 1, ///< then totalNormalImpulse (not used)
 	tb_pointTangentImpulse = 2,
 };
 
@@ -865,7 +865,7 @@ static int tbWriteBatchLane(const tbStepContext* context, const tbLaneBatch* bat
 		tbSetLaneW(&wp->baseSeparation, lane, p->baseSeparation[l]);
 		tbSetLaneW(&block->impulses[j].normalImpulse, lane, p->normalImpulse[l]);
 		tbSetLaneW(&block->impulses[j].tangentImpulse, lane, p->tangentImpulse[l]);
-		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
+		tbSetLaneW(&block->impulses[j].totalNormalImpulse, lane, 0.0f);
 		tbSetLaneW(&wp->normalMass, lane, p->normalMass[l]);
 		tbSetLaneW(&wp->tangentMass, lane, p->tangentMass[l]);
 		if (j < count)
@@ -1121,7 +1121,7 @@ static inline bool tbConstraintBounces(const tbStepContext* context, int i)
 	return context->constraints[i].restitution != 0.0f;
 }
 
-static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstraint* c, bool centralFriction)
+static void tbWarmStartConstraint(tbSolverBody* bodies, tbContactConstraint* c, bool centralFriction)
 {
 	tbSolverBody* sA = bodies + c->indexA;
 	tbSolverBody* sB = bodies + c->indexB;
@@ -1132,7 +1132,8 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 		// normal impulses at the points, the friction impulse at the centre of pressure
 		for (int j = 0; j < c->pointCount; ++j)
 		{
-			const tbContactConstraintPoint* cp = c->points + j;
+			tbContactConstraintPoint* cp = c->points + j;
+			cp->totalNormalImpulse += cp->normalImpulse; // the warm start applies it again
 			tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(cp->normalImpulse, normal));
 		}
 		if (c->pointCount > 0)
@@ -1145,7 +1146,8 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 	{
 		for (int j = 0; j < c->pointCount; ++j)
 		{
-			const tbContactConstraintPoint* cp = c->points + j;
+			tbContactConstraintPoint* cp = c->points + j;
+			cp->totalNormalImpulse += cp->normalImpulse; // the warm start applies it again
 			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
 			tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
 		}
@@ -1254,7 +1256,7 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 		float overlapImpulseScale = 0.0f;
 		if (policy == tb_biasSoft)
 		{
-			overlapBias = tbMaxFloat(c->softness.biasRate * s, -context->maxContactPushSpeed);
+			overlapBias = tbMaxFloat(c->softness.biasRate * s, -context->contactSpeed);
 			overlapMassScale = c->softness.massScale;
 			overlapImpulseScale = c->softness.impulseScale;
 		}
@@ -1275,7 +1277,7 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 		float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
 		impulse = newImpulse - cp->normalImpulse;
 		cp->normalImpulse = newImpulse;
-		cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
+		cp->totalNormalImpulse += impulse;
 
 		tbVec2 P = tbMulSV(impulse, normal);
 		vA = tbMulSub(vA, mA, P);
@@ -1483,7 +1485,7 @@ void tbApplyRestitution(tbStepContext* context)
 		{
 			tbContactConstraintPoint* cp = c->points + j;
 			// Only real impacts: fast enough and the point actually pushed during the step.
-			if (!(cp->relativeVelocity <= -threshold) || cp->maxNormalImpulse == 0.0f) // NaN: no impact
+			if (!(cp->relativeVelocity <= -threshold) || cp->totalNormalImpulse == 0.0f) // NaN: no impact
 			{
 				continue;
 			}
@@ -1494,7 +1496,7 @@ void tbApplyRestitution(tbStepContext* context)
 			float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
 			impulse = newImpulse - cp->normalImpulse;
 			cp->normalImpulse = newImpulse;
-			cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
+			cp->totalNormalImpulse += impulse;
 			tbApplyContactImpulse(sA, sB, c, rA, rB, tbMulSV(impulse, normal));
 		}
 	}
@@ -1558,7 +1560,7 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 			tbManifoldPoint* mp = manifold->points + j;
 			mp->normalImpulse = cp->normalImpulse;
 			mp->tangentImpulse = cp->tangentImpulse;
-			mp->maxNormalImpulse = cp->maxNormalImpulse;
+			mp->totalNormalImpulse = cp->totalNormalImpulse;
 		}
 		if (context->centralFriction && c->pointCount > 0)
 		{

@@ -106,7 +106,7 @@ void tbIntegratePositions(tbStepContext* context)
 void tbIntegratePositionsRange(tbStepContext* context, int start, int end)
 {
 	float h = context->h;
-	// Only joints can ask for unbounded speeds (contacts push out at most maxContactPushSpeed and
+	// Only joints can ask for unbounded speeds (contacts push out at most contactSpeed and
 	// rebound at most 2·maxLinearSpeed, docs/limits.md): a world without them skips the guard, a
 	// squared speed and two compares per body and sub-step that a pile of boxes never needs.
 	bool guard = context->world->jointPool.count > 0;

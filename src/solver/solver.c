@@ -236,7 +236,7 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	context.subStepCount = subStepCount;
 	context.h = timeStep / (float)subStepCount;
 	context.inv_h = 1.0f / context.h;
-	context.maxContactPushSpeed = world->def.maxContactPushSpeed;
+	context.contactSpeed = world->def.contactSpeed;
 	context.maxLinearSpeed = world->def.maximumLinearSpeed;
 	context.maxAngularSpeed = TB_MAX_ROTATION / timeStep;
 	context.enableWarmStarting = world->def.enableWarmStarting;

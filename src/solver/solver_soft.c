@@ -4,7 +4,7 @@
 // Overlap s < 0 is treated as a stiff spring-damper rather than a rigid constraint:
 //     C = s, Ċ = J·v, J = [−n, −rA × n, n, rB × n],
 //     m_eff = 1/(mA⁻¹ + mB⁻¹ + IA⁻¹(rA × n)² + IB⁻¹(rB × n)²),
-//     λ = −m_eff·massScale·(Ċ + max(biasRate·C, −maxContactPushSpeed)) − impulseScale·λ_acc.
+//     λ = −m_eff·massScale·(Ċ + max(biasRate·C, −contactSpeed)) − impulseScale·λ_acc.
 // Solving the spring implicitly over the sub-step h (ω = 2π·hertz, ζ = damping ratio) gives
 // biasRate = ω/(2ζ + hω), massScale = hω(2ζ + hω)/(1 + hω(2ζ + hω)), impulseScale = 1/(1 + hω(2ζ + hω))
 // (tbMakeSoftness). A spring whose period is ≥ 4 sub-steps stays stable however heavy the

@@ -654,7 +654,7 @@ static void tbSettingFloats(const tbWorldDef* d, float values[9])
 {
 	float v[9] = {d->gravity.x,			  d->gravity.y,			d->restitutionThreshold,
 				  d->hitEventThreshold,	  d->contactHertz,		d->settledHertzRatio,
-				  d->contactDampingRatio, d->maxContactPushSpeed, d->maximumLinearSpeed};
+				  d->contactDampingRatio, d->contactSpeed, d->maximumLinearSpeed};
 	memcpy(values, v, sizeof(v));
 }
 
@@ -741,7 +741,7 @@ static bool tbReadSettings(tbDecoder* d)
 	def->contactHertz = values[4];
 	def->settledHertzRatio = values[5];
 	def->contactDampingRatio = values[6];
-	def->maxContactPushSpeed = values[7];
+	def->contactSpeed = values[7];
 	def->maximumLinearSpeed = values[8];
 	uint32_t flags = tbGetUInt(r);
 	def->contactHertzFollowsSubStep = (flags & tb_settingSubStepHertz) != 0;
@@ -782,7 +782,7 @@ static bool tbReadSettings(tbDecoder* d)
 	if ((flags & ~(uint32_t)tb_settingAll) != 0 || tbIsNonNegative(def->restitutionThreshold) == false ||
 		tbIsNonNegative(def->hitEventThreshold) == false || !(def->contactHertz > 0.0f) ||
 		!(def->settledHertzRatio > 0.0f && def->settledHertzRatio <= 1000.0f) ||
-		tbIsNonNegative(def->contactDampingRatio) == false || !(def->maxContactPushSpeed > 0.0f) ||
+		tbIsNonNegative(def->contactDampingRatio) == false || !(def->contactSpeed > 0.0f) ||
 		!(def->maximumLinearSpeed > 0.0f && def->maximumLinearSpeed <= TB_MAX_LINEAR_SPEED) || def->velocityIterations < 1)
 	{
 		return tbFail(r, "its world settings are out of range (a threshold, stiffness, speed or iteration count the API "
@@ -2027,13 +2027,13 @@ static bool tbSameBase(const tbManifoldBase* a, const tbManifoldBase* b, int poi
 }
 
 /// A manifold point's floats, all mostly zero but the point and anchors.
-#define TB_POINT_FLOATS 11
+#define TB_POINT_FLOATS 12
 
 static void tbPointFloats(const tbManifoldPoint* p, float v[TB_POINT_FLOATS])
 {
 	float values[TB_POINT_FLOATS] = {p->point.x,	p->point.y,			p->anchorA.x,		p->anchorA.y,
 									 p->anchorB.x,	p->anchorB.y,		p->separation,		p->normalImpulse,
-									 p->tangentImpulse, p->maxNormalImpulse, p->normalVelocity};
+									 p->tangentImpulse, p->totalNormalImpulse, p->normalVelocity, p->baseSeparation};
 	memcpy(v, values, sizeof(values));
 }
 
@@ -2272,8 +2272,9 @@ static bool tbGetPoints(tbDecoder* d, tbManifold* m, bool recycled, bool predict
 		p->separation = values[6];
 		p->normalImpulse = values[7];
 		p->tangentImpulse = values[8];
-		p->maxNormalImpulse = values[9];
+		p->totalNormalImpulse = values[9];
 		p->normalVelocity = values[10];
+		p->baseSeparation = values[11];
 		uint32_t idBits = tbGetUInt(r);
 		if (r->failed == false && idBits > 0x1FFFFu)
 		{
@@ -3486,6 +3487,10 @@ static void tbWriteEvents(tbEncoder* e)
 	{
 		tbPutShapeId(e, events->pendingEndEvents[i].shapeIdA);
 		tbPutShapeId(e, events->pendingEndEvents[i].shapeIdB);
+		// The contact's slot and the generation's own part (the world's part, the high 16 bits, is
+		// the adopting world's, as for the contacts themselves).
+		tbPutUInt(&e->w, (uint32_t)events->pendingEndEvents[i].contactId.index1);
+		tbPutUInt(&e->w, events->pendingEndEvents[i].contactId.generation & 0xFFFFu);
 	}
 	tbPutUInt(&e->w, (uint32_t)events->pendingSensorEndCount);
 	for (int i = 0; i < events->pendingSensorEndCount; ++i)
@@ -3522,6 +3527,13 @@ static bool tbReadEvents(tbDecoder* d)
 		tbContactEndTouchEvent e;
 		e.shapeIdA = tbGetShapeId(r);
 		e.shapeIdB = tbGetShapeId(r);
+		uint32_t contactIndex1 = tbGetUInt(r);
+		uint32_t contactGeneration = tbGetUInt(r);
+		if (r->failed == false && (contactIndex1 > INT32_MAX || contactGeneration > UINT16_MAX))
+		{
+			tbFail(r, "an end event names contact slot %u generation %u", contactIndex1, contactGeneration);
+		}
+		e.contactId = (tbContactId){(int32_t)contactIndex1, 0, 0, contactGeneration};
 		TB_ARRAY_PUSH(events->pendingEndEvents, events->pendingEndCount, events->pendingEndCapacity, e);
 	}
 	count = tbGetCount(r, 4, "the pending sensor end events");
@@ -3811,6 +3823,9 @@ static void tbApplyGenerations(tbWorld* world)
 	tbEventBuffers* events = &world->events;
 	for (int i = 0; i < events->pendingEndCount; ++i)
 	{
+		tbContactId* contactId = &events->pendingEndEvents[i].contactId;
+		contactId->world0 = world->worldId;
+		contactId->generation = (contactId->generation & 0xFFFFu) + ((uint32_t)world->generation << 16);
 		tbShapeId* ids[2] = {&events->pendingEndEvents[i].shapeIdA, &events->pendingEndEvents[i].shapeIdB};
 		for (int k = 0; k < 2; ++k)
 		{

@@ -45,7 +45,7 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.contactDampingRatio = 10.0f;
 	def.settledHertzRatio = 1.75f;
 	def.contactHertzFollowsSubStep = false;
-	def.maxContactPushSpeed = 3.0f * units;
+	def.contactSpeed = 3.0f * units;
 	def.maximumLinearSpeed = tbMinFloat(4000.0f * units, TB_MAX_LINEAR_SPEED);
 	def.enableSleep = true;
 	def.broadPhase = tb_broadPhaseAuto;
@@ -214,7 +214,7 @@ static bool tbCheckWorldDef(const tbWorldDef* def)
 		   tbCheckNonNegative(f, "def->hitEventThreshold", def->hitEventThreshold) &&
 		   tbCheckPositive(f, "def->contactHertz", def->contactHertz) &&
 		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
-		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
+		   tbCheckPositive(f, "def->contactSpeed", def->contactSpeed) &&
 		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f) && tbCheckWorkers(def, f) &&
 		   tbCheckWorldCapacity(f, &def->capacity);
 }
@@ -762,7 +762,7 @@ bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio
 	}
 	world->def.contactHertz = hertz;
 	world->def.contactDampingRatio = dampingRatio;
-	world->def.maxContactPushSpeed = pushSpeed;
+	world->def.contactSpeed = pushSpeed;
 	return true;
 }
 
