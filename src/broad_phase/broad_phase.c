@@ -232,11 +232,20 @@ static int tbAllocateProxy(tbBroadPhase* bp)
 
 int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex, tbProxyType type)
 {
+	return tbBroadPhase_CreateProxyMarked(bp, fatAABB, categoryBits, shapeIndex, type, true);
+}
+
+int tbBroadPhase_CreateProxyMarked(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex,
+								   tbProxyType type, bool markMoved)
+{
 	int key = tbAllocateProxy(bp);
 	bp->table.proxies[key] = (tbBroadProxy){fatAABB, categoryBits, shapeIndex, type, -1, -1, false};
 	bp->table.count += 1;
 	tbAddToMethod(bp, key);
-	tbMarkMoved(bp, key);
+	if (markMoved)
+	{
+		tbMarkMoved(bp, key);
+	}
 	return key;
 }
 

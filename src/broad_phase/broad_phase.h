@@ -80,6 +80,11 @@ void tbBroadPhase_SetMethod(tbBroadPhase* bp, tbBroadPhaseMethod method);
 
 /// Add a proxy with a fat AABB; returns its key. The proxy counts as moved.
 int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex, tbProxyType type);
+
+/// The same, counted as moved only when `markMoved`: a proxy not counted is paired only once another
+/// proxy overlapping it moves (tbShapeDef::invokeContactCreation false on a static shape).
+int tbBroadPhase_CreateProxyMarked(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex,
+								   tbProxyType type, bool markMoved);
 void tbBroadPhase_DestroyProxy(tbBroadPhase* bp, int proxyKey);
 
 /// Replace a proxy's fat AABB; the proxy counts as moved.

@@ -153,7 +153,7 @@ static void tbIntegratedVelocity(const tbStepContext* context, int index, tbVec2
 	const tbSolverMotion* m = context->motions + index;
 	sb.linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb.linearVelocity, m->linearDelta));
 	sb.angularVelocity = m->angularDamping * (sb.angularVelocity + m->angularDelta);
-	tbClampSpeeds(context, &sb); // as the integration does (gravity 3e38 m/s²: 5e36 m/s after one step)
+	tbClampSpeeds(context, &sb, index); // as the integration does (gravity 3e38 m/s²: 5e36 m/s after one step)
 	*v = sb.linearVelocity;
 	*w = sb.angularVelocity;
 }
@@ -271,6 +271,25 @@ static inline tbSoftness tbSettledSoftness(const tbStepContext* context, tbSoftn
 	return softness;
 }
 
+/// Contact softening (tbWorldDef::enableContactSoftening, Box2D v3.2's experimental option): a pair
+/// of dynamic bodies gets its stiffness and damping ratio scaled by the lighter body's mass over the
+/// heavier's, at least one half, from softeningHertz. A light body on a heavy one then pushes the
+/// heavy one less hard out of overlap, which is where large mass ratios jitter. The pair does not
+/// settle (the settling ramp stiffens, the opposite of what was asked for).
+static inline tbSoftness tbSoftenedSoftness(const tbStepContext* context, float invMassA, float invMassB)
+{
+	float ratio = 1.0f;
+	if (invMassA < invMassB)
+	{
+		ratio = tbMaxFloat(0.5f, invMassA / invMassB); // A is the heavier: mB / mA
+	}
+	else if (invMassB < invMassA)
+	{
+		ratio = tbMaxFloat(0.5f, invMassB / invMassA);
+	}
+	return tbMakeSoftness(ratio * context->softeningHertz, ratio * context->dampingRatio, context->h);
+}
+
 static bool tbMovesBoth(float invMassA, float invIA, float invMassB, float invIB)
 {
 	return (invMassA > 0.0f || invIA > 0.0f) && (invMassB > 0.0f || invIB > 0.0f);
@@ -324,6 +343,11 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 	c->invIB = massB->invI;
 	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
 	c->softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+	bool softened = dynamicPair && context->contactSoftening;
+	if (softened)
+	{
+		c->softness = tbSoftenedSoftness(context, c->invMassA, c->invMassB);
+	}
 
 	const tbManifold* manifold = &contact->manifold;
 	tbVec2 normal = manifold->normal;
@@ -371,7 +395,7 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 		tbSetCentralFriction(c, tangent);
 	}
 
-	if (context->settleSteps > 0.0f)
+	if (context->settleSteps > 0.0f && softened == false)
 	{
 		tbSettleSoftness(context, c, contact->touchingSteps);
 	}
@@ -478,6 +502,11 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 	float invMassB = massB->invMass, invIB = massB->invI;
 	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
 	tbSoftness softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+	bool softened = dynamicPair && context->contactSoftening;
+	if (softened)
+	{
+		softness = tbSoftenedSoftness(context, invMassA, invMassB);
+	}
 
 	tbManifold* manifold = &contact->manifold;
 	tbVec2 normal = manifold->normal;
@@ -557,7 +586,7 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 		tbSetLaneW(&block->frictionAnchorBY, lane, row.anchorB.y);
 	}
 
-	if (context->settleSteps > 0.0f && tbMovesBoth(invMassA, invIA, invMassB, invIB) && deep == false)
+	if (context->settleSteps > 0.0f && softened == false && tbMovesBoth(invMassA, invIA, invMassB, invIB) && deep == false)
 	{
 		softness = tbSettledSoftness(context, softness, contact->touchingSteps);
 	}
@@ -886,8 +915,13 @@ static int tbWriteBatchLane(const tbStepContext* context, const tbLaneBatch* bat
 
 	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
 	tbSoftness softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+	bool softened = dynamicPair && context->contactSoftening;
+	if (softened)
+	{
+		softness = tbSoftenedSoftness(context, r->invMass[0][0][l], r->invMass[1][0][l]);
+	}
 	bool movesBoth = tbMovesBoth(r->invMass[0][0][l], r->invMass[0][1][l], r->invMass[1][0][l], r->invMass[1][1][l]);
-	if (context->settleSteps > 0.0f && movesBoth && (r->deep & (1 << l)) == 0)
+	if (context->settleSteps > 0.0f && softened == false && movesBoth && (r->deep & (1 << l)) == 0)
 	{
 		softness = tbSettledSoftness(context, softness, contact->touchingSteps);
 	}

@@ -108,6 +108,10 @@ void tbSoftPrepare(tbStepContext* context)
 	context->settleSteps = TB_SOFT_SETTLE_TIME / context->timeStep;
 	context->deepOverlap = TB_SOFT_DEEP_OVERLAP;
 	context->dampingRatio = def->contactDampingRatio;
+	// Box2D v3.2's contact softening caps the stiffness lower, at an eighth of the sub-step rate,
+	// before scaling it down by the mass ratio (contact_solver.c, tbSoftenedSoftness).
+	context->contactSoftening = def->enableContactSoftening;
+	context->softeningHertz = tbMinFloat(hertz, 0.125f * context->inv_h);
 }
 
 int tbSoftRelaxIterations(const tbStepContext* context, int subStepIndex)

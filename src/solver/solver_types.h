@@ -213,6 +213,8 @@ typedef struct tbStepContext
 	tbSolverMotion* motions;
 	tbSolverMass* masses; ///< bodyCount + 1, as bodies
 	uint8_t* linearLocks; ///< per solver body: 1 x locked, 2 y locked (motion locks); NULL when no body has one
+	uint8_t* fastRotation; ///< per solver body: 1 when its spin is not capped (tbBodyDef::allowFastRotation);
+						   ///< NULL when no body allows it
 	int bodyCount;
 
 	tbContactConstraint* constraints; ///< in the order of world->cache.solverContacts; with the wide
@@ -274,6 +276,8 @@ typedef struct tbStepContext
 	float settleSteps;			///< soft step: steps a new dynamic contact stays at contactHertz (0: no ramp)
 	float deepOverlap;			///< soft step: m, start-of-step overlap beyond which it stays at contactHertz
 	float dampingRatio;			///< soft step: of the ramped stiffness
+	bool contactSoftening;		///< soft step: tbWorldDef::enableContactSoftening (tbSoftenedSoftness)
+	float softeningHertz;		///< soft step: Hz, the softened pairs' stiffness before the mass ratio
 	float contactSpeed;	///< m/s
 	float maxLinearSpeed;		///< m/s
 	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step

@@ -647,7 +647,8 @@ enum
 	tb_settingRecycling = 1 << 6,
 	tb_settingImpactPropagation = 1 << 7,
 	tb_settingSpeculative = 1 << 8,
-	tb_settingAll = (1 << 9) - 1,
+	tb_settingContactSoftening = 1 << 9,
+	tb_settingAll = (1 << 10) - 1,
 };
 
 static void tbSettingFloats(const tbWorldDef* d, float values[9])
@@ -682,7 +683,8 @@ static void tbWriteSettings(tbEncoder* e)
 					 (d->enableCentralFriction ? tb_settingCentralFriction : 0u) |
 					 (d->enableManifoldRecycling ? tb_settingRecycling : 0u) |
 					 (d->enableImpactPropagation ? tb_settingImpactPropagation : 0u) |
-					 (world->enableSpeculative ? tb_settingSpeculative : 0u);
+					 (world->enableSpeculative ? tb_settingSpeculative : 0u) |
+					 (d->enableContactSoftening ? tb_settingContactSoftening : 0u);
 	tbPutUInt(&e->w, flags);
 	tbPutUInt(&e->w, (uint32_t)d->broadPhase);
 	tbPutUInt(&e->w, (uint32_t)d->narrowPhase);
@@ -753,12 +755,14 @@ static bool tbReadSettings(tbDecoder* d)
 	def->enableManifoldRecycling = (flags & tb_settingRecycling) != 0;
 	def->enableImpactPropagation = (flags & tb_settingImpactPropagation) != 0;
 	world->enableSpeculative = (flags & tb_settingSpeculative) != 0;
+	def->enableContactSoftening = (flags & tb_settingContactSoftening) != 0;
 	def->broadPhase = (tbBroadPhaseMethod)tbGetCountValue(r, tb_broadPhaseMethodCount - 1, "the broad-phase method");
 	def->narrowPhase = (tbNarrowPhaseMethod)tbGetCountValue(r, tb_narrowPhaseGJK, "the narrow-phase method");
 	def->continuous = (tbContinuousMethod)tbGetCountValue(r, tb_continuousMethodCount - 1, "the continuous method");
 	def->solver = (tbSolverMethod)tbGetCountValue(r, tb_solverMethodCount - 1, "the solver method");
 	world->continuousWhenEnabled =
 		(tbContinuousMethod)tbGetCountValue(r, tb_continuousMethodCount - 1, "the continuous method kept aside");
+	def->enableContinuous = def->continuous != tb_continuousOff; // one fact, held by the method
 	def->velocityIterations = tbGetCountValue(r, TB_MAX_ITERATIONS, "the velocity iterations");
 	def->positionIterations = tbGetCountValue(r, TB_MAX_ITERATIONS, "the position iterations");
 	def->relaxIterations = tbGetCountValue(r, TB_MAX_ITERATIONS, "the relax iterations");
@@ -932,7 +936,8 @@ enum
 	tb_bodyExtentsStored = 1 << 14,
 	tb_bodyReachStored = 1 << 15,
 	tb_bodyStartStored = 1 << 16, ///< the pose at the start of the last step differs from the pose now
-	tb_bodyAll = (1 << 17) - 1,
+	tb_bodyFastRotation = 1 << 17,
+	tb_bodyAll = (1 << 18) - 1,
 };
 
 enum
@@ -1267,6 +1272,7 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 	flags |= (body->enableSleep ? tb_bodySleep : 0u) | (body->fixedRotation ? tb_bodyFixedRotation : 0u) |
 			 (body->lockLinearX ? tb_bodyLockX : 0u) | (body->lockLinearY ? tb_bodyLockY : 0u) |
 			 (body->isBullet ? tb_bodyBullet : 0u) | (body->isDisabled ? tb_bodyDisabled : 0u) |
+			 (body->allowFastRotation ? tb_bodyFastRotation : 0u) |
 			 (body->isFast ? tb_bodyFast : 0u) | (body->enableContactRecycling ? 0u : tb_bodyNoRecycling) |
 			 (body->isMarked ? tb_bodyMarked : 0u) | (body->name != NULL ? tb_bodyNamed : 0u);
 	bool massStored = tbSameMass(body, tbComputeBodyMass(world, body)) == false;
@@ -1625,6 +1631,7 @@ static bool tbReadBody(tbDecoder* d, int index)
 	body->lockLinearX = (flags & tb_bodyLockX) != 0;
 	body->lockLinearY = (flags & tb_bodyLockY) != 0;
 	body->isBullet = (flags & tb_bodyBullet) != 0;
+	body->allowFastRotation = (flags & tb_bodyFastRotation) != 0;
 	body->isDisabled = (flags & tb_bodyDisabled) != 0;
 	body->isFast = (flags & tb_bodyFast) != 0;
 	body->enableContactRecycling = (flags & tb_bodyNoRecycling) == 0;
@@ -3623,6 +3630,7 @@ static bool tbReadBodies(tbDecoder* d)
 			world->kinematicBodyCount += body->type == tb_kinematicBody ? 1 : 0;
 			world->staticBodyCount += body->type == tb_staticBody ? 1 : 0;
 			world->linearLockCount += body->lockLinearX || body->lockLinearY ? 1 : 0;
+			world->fastRotationCount += body->allowFastRotation ? 1 : 0;
 		}
 	}
 	return r->failed == false;

@@ -48,6 +48,8 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.contactSpeed = 3.0f * units;
 	def.maximumLinearSpeed = tbMinFloat(4000.0f * units, TB_MAX_LINEAR_SPEED);
 	def.enableSleep = true;
+	def.enableContinuous = true;
+	def.enableContactSoftening = false;
 	def.broadPhase = tb_broadPhaseAuto;
 	def.narrowPhase = tb_narrowPhaseAuto;
 	def.continuous = tb_continuousDefault;
@@ -360,6 +362,14 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	tbWorld* world = tbAlloc((int)sizeof(tbWorld));
 	memset(world, 0, sizeof(tbWorld));
 	world->def = *def;
+	// enableContinuous is v3.2's switch, `continuous` Tumble's method: off by either is off, and the
+	// method is kept aside for tbWorld_EnableContinuous(true), as that function does.
+	world->continuousWhenEnabled = def->continuous != tb_continuousOff ? def->continuous : tb_continuousDefault;
+	if (def->enableContinuous == false)
+	{
+		world->def.continuous = tb_continuousOff;
+	}
+	world->def.enableContinuous = world->def.continuous != tb_continuousOff;
 	world->gravityLength = tbLength(def->gravity);
 	world->worldId = (uint16_t)slot;
 	world->generation = (uint16_t)(s_worldGenerations[slot] + 1);
@@ -962,6 +972,7 @@ void tbWorld_EnableContinuous(tbWorldId worldId, bool flag)
 	{
 		world->def.continuous = world->continuousWhenEnabled;
 	}
+	world->def.enableContinuous = world->def.continuous != tb_continuousOff;
 }
 
 bool tbWorld_IsContinuousEnabled(tbWorldId worldId)
@@ -1041,6 +1052,7 @@ bool tbWorld_SetContinuousMethod(tbWorldId worldId, tbContinuousMethod method)
 		return false;
 	}
 	world->def.continuous = method;
+	world->def.enableContinuous = method != tb_continuousOff;
 	return true;
 }
 
