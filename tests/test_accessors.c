@@ -308,15 +308,16 @@ typedef struct DrawCounts
 	int circles, segments, polygons;
 } DrawCounts;
 
-static void CountCircle(tbTransform transform, float radius, uint32_t color, void* context)
+static void CountCircle(tbWorldTransform transform, tbVec2 center, float radius, tbHexColor color, void* context)
 {
 	(void)transform;
+	(void)center;
 	(void)radius;
 	(void)color;
 	((DrawCounts*)context)->circles += 1;
 }
 
-static void CountSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+static void CountSegment(tbPos p1, tbPos p2, tbHexColor color, void* context)
 {
 	(void)p1;
 	(void)p2;
@@ -324,7 +325,7 @@ static void CountSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
 	((DrawCounts*)context)->segments += 1;
 }
 
-static void CountPolygon(tbTransform transform, const tbVec2* vertices, int count, float radius, uint32_t color,
+static void CountPolygon(tbWorldTransform transform, const tbVec2* vertices, int count, float radius, tbHexColor color,
 						 void* context)
 {
 	(void)transform;
@@ -348,9 +349,9 @@ Test(accessors, debug_draw_visits_every_shape)
 	tbCreateSegmentShape(ground, &shapeDef, &floor);
 	DrawCounts counts = {0, 0, 0};
 	tbDebugDraw draw = tbDefaultDebugDraw();
-	draw.DrawSolidCircle = CountCircle;
-	draw.DrawSegment = CountSegment;
-	draw.DrawSolidPolygon = CountPolygon;
+	draw.DrawSolidCircleFcn = CountCircle;
+	draw.DrawLineFcn = CountSegment;
+	draw.DrawSolidPolygonFcn = CountPolygon;
 	draw.drawShapes = true;
 	draw.drawJoints = false;
 	draw.context = &counts;

@@ -655,7 +655,7 @@ typedef struct tbCounters
 } tbCounters;
 
 // ---------------------------------------------------------------------------------------------
-// Debug drawing: the library walks the world and calls these. Any may be NULL.
+// Debug drawing
 
 typedef enum tbHexColor
 {
@@ -824,34 +824,57 @@ typedef enum tbHexColor
 /// (contacts solved one at a time). Another index is refused through the error hook (black).
 TB_API tbHexColor tbGetGraphColor(int index);
 
+/// Debug drawing (Box2D v3.2's b2DebugDraw): tbWorld_Draw walks the world and calls these with world
+/// coordinates (tbPos and tbWorldTransform: doubles in the large-world build). tbDefaultDebugDraw
+/// sets every function to one that draws nothing, so a game implements only the ones it wants; a
+/// function set to NULL is skipped.
 typedef struct tbDebugDraw
 {
-	/// Closed polygon outline (world vertices).
-	void (*DrawPolygon)(const tbVec2* vertices, int vertexCount, uint32_t color, void* context);
-	/// Filled polygon in its body frame, rounded by radius.
-	void (*DrawSolidPolygon)(tbTransform transform, const tbVec2* vertices, int vertexCount, float radius,
-							 uint32_t color, void* context);
+	/// Closed polygon outline, vertices in the frame of `transform`, counter-clockwise.
+	void (*DrawPolygonFcn)(tbWorldTransform transform, const tbVec2* vertices, int vertexCount, tbHexColor color,
+						   void* context);
+	/// Filled polygon, vertices in the frame of `transform`, rounded by radius.
+	void (*DrawSolidPolygonFcn)(tbWorldTransform transform, const tbVec2* vertices, int vertexCount, float radius,
+								tbHexColor color, void* context);
 	/// Circle outline.
-	void (*DrawCircle)(tbVec2 center, float radius, uint32_t color, void* context);
-	/// Filled circle with a radius line showing the rotation.
-	void (*DrawSolidCircle)(tbTransform transform, float radius, uint32_t color, void* context);
-	/// Filled capsule (world points).
-	void (*DrawSolidCapsule)(tbVec2 p1, tbVec2 p2, float radius, uint32_t color, void* context);
+	void (*DrawCircleFcn)(tbPos center, float radius, tbHexColor color, void* context);
+	/// Filled circle, its centre in the frame of `transform` (whose rotation shows the body's turn).
+	void (*DrawSolidCircleFcn)(tbWorldTransform transform, tbVec2 center, float radius, tbHexColor color, void* context);
+	/// Filled capsule.
+	void (*DrawSolidCapsuleFcn)(tbPos p1, tbPos p2, float radius, tbHexColor color, void* context);
 	/// Line segment.
-	void (*DrawSegment)(tbVec2 p1, tbVec2 p2, uint32_t color, void* context);
+	void (*DrawLineFcn)(tbPos p1, tbPos p2, tbHexColor color, void* context);
+	/// A frame's axes; the length is the game's to choose.
+	void (*DrawTransformFcn)(tbWorldTransform transform, void* context);
 	/// Point of a given size in pixels.
-	void (*DrawPoint)(tbVec2 p, float size, uint32_t color, void* context);
+	void (*DrawPointFcn)(tbPos p, float size, tbHexColor color, void* context);
+	/// Text at a world point.
+	void (*DrawStringFcn)(tbPos p, const char* s, tbHexColor color, void* context);
+	/// Axis-aligned box.
+	void (*DrawBoundsFcn)(tbAABB aabb, tbHexColor color, void* context);
 
-	/// Only shapes overlapping this box are drawn (when useDrawingBounds).
-	tbAABB drawingBounds;
-	bool useDrawingBounds;
-	bool drawShapes;
-	bool drawAABBs;
-	bool drawTree;
-	bool drawContacts;
-	bool drawContactNormals;
-	bool drawJoints; ///< anchors and links of joints, default true
-	void* context;
+	tbAABB drawingBounds; ///< only shapes whose fat boxes overlap this are drawn; default: everything
+	float forceScale;	  ///< m per N of the force lines (contact, friction and joint forces), default 1
+	float jointScale;	  ///< joints are drawn at their drawScale times this, default 1
+	bool drawContacts;	  ///< contact points: new (green), persisted (blue) and speculative (grey)
+	bool drawAnchorA;	  ///< contact points at body A's anchor (default: at body B's)
+	bool drawShapes;	  ///< default true
+	bool drawChainNormals; ///< each chain segment's outward normal from its middle
+	bool drawJoints;	   ///< anchors and links of joints
+	bool drawJointExtras;  ///< with drawJoints: each joint's constraint force at its anchor B
+	bool drawBounds;	   ///< the shapes' fat boxes (the broad phase's)
+	bool drawMass;		   ///< dynamic bodies: the centre of mass frame, its path this step, the mass
+	bool drawBodyNames;	   ///< the names of bodies that have one
+	bool drawGraphColors;  ///< contact points in their constraint graph colour (tbGetGraphColor), when the
+						   ///< last step coloured them
+	bool drawContactFeatures; ///< the feature id of each contact point
+	bool drawContactNormals;  ///< contact normals, with the separation
+	bool drawContactForces;	  ///< contact normal forces (totalNormalImpulse / Δt), with their value
+	bool drawFrictionForces;  ///< friction forces (tangentImpulse / sub-step), with their value
+	bool drawIslands;		  ///< the box of each island of awake bodies (joined by touching contacts and
+							  ///< joints)
+	bool drawTree;			  ///< Tumble: the broad phase's tree nodes
+	void* context;			  ///< passed to every function
 } tbDebugDraw;
 
 TB_API tbDebugDraw tbDefaultDebugDraw(void);

@@ -68,15 +68,6 @@ tbWorldDef tbDefaultWorldDef(void)
 	return def;
 }
 
-tbDebugDraw tbDefaultDebugDraw(void)
-{
-	tbDebugDraw draw;
-	memset(&draw, 0, sizeof(draw));
-	draw.drawShapes = true;
-	draw.drawJoints = true;
-	return draw;
-}
-
 tbWorld* tbGetWorldFromIndex(int index)
 {
 	return s_worlds[index];
