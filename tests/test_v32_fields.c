@@ -494,3 +494,237 @@ Test(v32_fields, free_hook_hears_the_allocated_size)
 	cr_expect(s_mismatches == 0, "%d frees with another size than allocated", s_mismatches);
 	cr_expect(s_blockCount == 0, "%d blocks not freed", s_blockCount);
 }
+
+// ---------------------------------------------------------------------------------------------
+// tbDebugDraw's fields
+
+typedef struct DrawLog
+{
+	int lines, points, strings, transforms, bounds, polygons;
+	float longestLine;		   ///< m
+	char lastString[64];
+	tbHexColor pointColors[64];
+	int pointColorCount;
+} DrawLog;
+
+static void LogLine(tbPos p1, tbPos p2, tbHexColor color, void* context)
+{
+	(void)color;
+	DrawLog* log = context;
+	log->lines += 1;
+	float length = tbDistance(tbToVec2(p1), tbToVec2(p2));
+	log->longestLine = length > log->longestLine ? length : log->longestLine;
+}
+
+static void LogPoint(tbPos p, float size, tbHexColor color, void* context)
+{
+	(void)p, (void)size;
+	DrawLog* log = context;
+	if (log->pointColorCount < 64)
+	{
+		log->pointColors[log->pointColorCount++] = color;
+	}
+	log->points += 1;
+}
+
+static void LogString(tbPos p, const char* s, tbHexColor color, void* context)
+{
+	(void)p, (void)color;
+	DrawLog* log = context;
+	log->strings += 1;
+	strncpy(log->lastString, s, sizeof(log->lastString) - 1);
+}
+
+static void LogTransform(tbWorldTransform transform, void* context)
+{
+	(void)transform;
+	((DrawLog*)context)->transforms += 1;
+}
+
+static void LogBounds(tbAABB box, tbHexColor color, void* context)
+{
+	(void)box, (void)color;
+	((DrawLog*)context)->bounds += 1;
+}
+
+static void LogPolygon(tbWorldTransform transform, const tbVec2* vertices, int count, float radius, tbHexColor color,
+					   void* context)
+{
+	(void)transform, (void)vertices, (void)count, (void)radius, (void)color;
+	((DrawLog*)context)->polygons += 1;
+}
+
+/// Only the functions and flags given: everything else off.
+static DrawLog DrawWith(tbWorldId world, tbDebugDraw draw)
+{
+	DrawLog log;
+	memset(&log, 0, sizeof(log));
+	draw.DrawLineFcn = LogLine;
+	draw.DrawPointFcn = LogPoint;
+	draw.DrawStringFcn = LogString;
+	draw.DrawTransformFcn = LogTransform;
+	draw.DrawBoundsFcn = LogBounds;
+	draw.DrawSolidPolygonFcn = LogPolygon;
+	draw.context = &log;
+	tbWorld_Draw(world, &draw);
+	return log;
+}
+
+static tbDebugDraw NothingDrawn(void)
+{
+	tbDebugDraw draw = tbDefaultDebugDraw();
+	draw.drawShapes = false;
+	return draw;
+}
+
+Test(v32_fields, debug_draw_defaults_are_box2d_v32s)
+{
+	tbDebugDraw d = tbDefaultDebugDraw();
+	cr_expect(d.DrawPolygonFcn != NULL && d.DrawSolidPolygonFcn != NULL && d.DrawCircleFcn != NULL &&
+			  d.DrawSolidCircleFcn != NULL && d.DrawSolidCapsuleFcn != NULL && d.DrawLineFcn != NULL &&
+			  d.DrawTransformFcn != NULL && d.DrawPointFcn != NULL && d.DrawStringFcn != NULL && d.DrawBoundsFcn != NULL);
+	cr_expect(d.drawingBounds.lowerBound.x == -FLT_MAX && d.drawingBounds.upperBound.y == FLT_MAX);
+	cr_expect(d.forceScale == 1.0f && d.jointScale == 1.0f);
+	cr_expect(d.drawShapes && d.drawJoints == false && d.drawJointExtras == false && d.drawBounds == false &&
+			  d.drawMass == false && d.drawBodyNames == false && d.drawContacts == false && d.drawGraphColors == false &&
+			  d.drawContactNormals == false && d.drawContactForces == false && d.drawFrictionForces == false &&
+			  d.drawContactFeatures == false && d.drawIslands == false && d.drawAnchorA == false &&
+			  d.drawChainNormals == false && d.context == NULL);
+}
+
+// Two boxes of 2 kg resting apart on the ground, one named: what each flag adds, counted.
+Test(v32_fields, debug_draw_flags_each_draw_what_they_name)
+{
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 10.0f, 0.5f, NULL);
+	tbBodyDef def = tbDefaultBodyDef();
+	def.type = tb_dynamicBody;
+	def.enableSleep = false;
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	shapeDef.density = 2.0f;
+	def.position = tbMakeVec2(-3.0f, 0.5f);
+	def.name = "left";
+	CreateBoxFromDef(world, &def, 0.5f, 0.5f, &shapeDef);
+	def.position = tbMakeVec2(3.0f, 0.5f);
+	def.name = NULL;
+	CreateBoxFromDef(world, &def, 0.5f, 0.5f, &shapeDef);
+	float dt = 1.0f / 60.0f;
+	StepWorld(world, 60, dt, 4);
+
+	tbDebugDraw draw = NothingDrawn();
+	DrawLog none = DrawWith(world, draw);
+	cr_expect(none.lines + none.points + none.strings + none.transforms + none.bounds + none.polygons == 0);
+
+	draw = NothingDrawn();
+	draw.drawShapes = true;
+	cr_expect(DrawWith(world, draw).polygons == 3);
+	draw.drawingBounds = (tbAABB){{-5.0f, 0.0f}, {-1.0f, 2.0f}}; // the left box and the ground
+	cr_expect(DrawWith(world, draw).polygons == 2);
+
+	draw = NothingDrawn();
+	draw.drawBounds = true;
+	cr_expect(DrawWith(world, draw).bounds == 3);
+
+	draw = NothingDrawn();
+	draw.drawMass = true;
+	DrawLog mass = DrawWith(world, draw);
+	cr_expect(mass.transforms == 2 && mass.strings == 2 && strcmp(mass.lastString, "2.00 kg") == 0, "'%s'",
+			  mass.lastString);
+
+	draw = NothingDrawn();
+	draw.drawBodyNames = true;
+	DrawLog names = DrawWith(world, draw);
+	cr_expect(names.strings == 1 && strcmp(names.lastString, "left") == 0);
+
+	// Two points on each box's bottom face; resting ones persisted (blue).
+	draw = NothingDrawn();
+	draw.drawContacts = true;
+	DrawLog contacts = DrawWith(world, draw);
+	cr_expect(contacts.points == 4);
+	for (int i = 0; i < contacts.pointColorCount; ++i)
+	{
+		cr_expect(contacts.pointColors[i] == tb_colorBlue);
+	}
+	// Graph colours: both contacts are with the ground (one colour each box may share).
+	draw.drawGraphColors = true;
+	DrawLog colors = DrawWith(world, draw);
+	cr_expect(colors.points == 4);
+	for (int i = 0; i < colors.pointColorCount; ++i)
+	{
+		bool isGraphColor = false;
+		for (int k = 0; k <= TB_GRAPH_COLOR_COUNT; ++k)
+		{
+			isGraphColor = isGraphColor || colors.pointColors[i] == tbGetGraphColor(k);
+		}
+		cr_expect(isGraphColor);
+	}
+
+	// Contact forces: each box's two lines sum to its weight, 20 N; with forceScale 0.1 m/N the
+	// longest line is at most 2 m and at least 1 m (the larger share of 20 N).
+	draw = NothingDrawn();
+	draw.drawContactForces = true;
+	draw.forceScale = 0.1f;
+	DrawLog forces = DrawWith(world, draw);
+	cr_expect(forces.lines == 4 && forces.strings == 4);
+	cr_expect(forces.longestLine >= 1.0f - 1e-3f && forces.longestLine <= 2.0f + 1e-3f, "longest %g m",
+			  (double)forces.longestLine);
+
+	draw = NothingDrawn();
+	draw.drawContactFeatures = true;
+	cr_expect(DrawWith(world, draw).strings == 4);
+	draw = NothingDrawn();
+	draw.drawContactNormals = true;
+	DrawLog normals = DrawWith(world, draw);
+	cr_expect(normals.lines == 4 && fabsf(normals.longestLine - 0.3f) < 1e-5f);
+	draw = NothingDrawn();
+	draw.drawFrictionForces = true;
+	cr_expect(DrawWith(world, draw).lines == 4);
+
+	// Islands: the two boxes touch only the ground, so two islands.
+	draw = NothingDrawn();
+	draw.drawIslands = true;
+	cr_expect(DrawWith(world, draw).bounds == 2);
+
+	// A NaN scale is refused.
+	draw = NothingDrawn();
+	draw.forceScale = NAN;
+	tbSetErrorCallback(RecordError, NULL);
+	int before = s_errors;
+	DrawWith(world, draw);
+	ExpectError(before, "tbWorld_Draw", "forceScale");
+	tbSetErrorCallback(NULL, NULL);
+	tbDestroyWorld(world);
+}
+
+// Joints: drawn only with drawJoints; their size follows jointScale; the extras add the constraint
+// force line (forceScale m/N) and its value.
+Test(v32_fields, debug_draw_joint_scale_and_extras)
+{
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId bob = CreateDiscOfMass(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 1.0f);
+	tbRevoluteJointDef def = tbDefaultRevoluteJointDef();
+	def.base.bodyIdA = ground;
+	def.base.bodyIdB = bob;
+	def.base.localFrameB.p = tbMakeVec2(0.0f, 1.0f);
+	tbCreateRevoluteJoint(world, &def);
+	StepWorld(world, 10, 1.0f / 60.0f, 4);
+
+	tbDebugDraw draw = NothingDrawn();
+	cr_expect(DrawWith(world, draw).lines == 0);
+	draw.drawJoints = true;
+	DrawLog one = DrawWith(world, draw);
+	draw.jointScale = 3.0f;
+	DrawLog three = DrawWith(world, draw);
+	cr_expect(one.lines > 0 && fabsf(three.longestLine - 3.0f * one.longestLine) < 1e-4f, "%g then %g",
+			  (double)one.longestLine, (double)three.longestLine);
+
+	// The pin holds the hanging 1 kg bob: 10 N, drawn 1 m long at 0.1 m/N.
+	draw.jointScale = 1.0f;
+	draw.drawJointExtras = true;
+	draw.forceScale = 0.1f;
+	DrawLog extras = DrawWith(world, draw);
+	cr_expect(extras.lines == one.lines + 1 && extras.strings == 1);
+	cr_expect(fabsf(extras.longestLine - 1.0f) < 0.02f, "force line %g m", (double)extras.longestLine);
+	tbDestroyWorld(world);
+}
