@@ -168,7 +168,7 @@ Test(accessors, world_switches_and_callbacks)
 	// The profile's stages are parts of the step (not a timing claim: only their sum is bounded).
 	tbProfile profile = tbWorld_GetProfile(world);
 	float parts = profile.pairs + profile.collide + profile.islands + profile.solve + profile.continuous +
-				  profile.finalize + profile.events + profile.sleep;
+				  profile.finalize + profile.hitEvents + profile.sleepIslands;
 	cr_assert(profile.solve > 0.0f && parts <= profile.step * 1.0001f + 1e-6f, "stages %g ms of a %g ms step",
 			  (double)parts, (double)profile.step);
 	// And the solve's parts are parts of the solve (each timed from the end of the one before).

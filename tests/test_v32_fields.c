@@ -365,7 +365,7 @@ Test(v32_fields, base_separation_is_the_narrow_phase_measure)
 			tbContactData data;
 			cr_assert(tbShape_GetContactData(ground, &data, 1) == 1);
 			const tbManifoldPoint* p = data.manifold.points;
-			int recycled = tbWorld_GetCounters(world).recycledManifolds;
+			int recycled = tbWorld_GetCounters(world).recycledContactCount;
 			if (recycle == 0)
 			{
 				cr_expect(recycled == 0 && p->baseSeparation == p->separation, "step %d: base %g, separation %g", i,
@@ -727,4 +727,75 @@ Test(v32_fields, debug_draw_joint_scale_and_extras)
 	cr_expect(extras.lines == one.lines + 1 && extras.strings == 1);
 	cr_expect(fabsf(extras.longestLine - 1.0f) < 0.02f, "force line %g m", (double)extras.longestLine);
 	tbDestroyWorld(world);
+}
+
+// ---------------------------------------------------------------------------------------------
+// tbCounters and tbRayResult's new numbers
+
+static void* RunTaskNow(tbTaskCallback* task, void* taskContext, void* userContext)
+{
+	(void)userContext;
+	task(taskContext);
+	return NULL; // ran before returning: nothing to finish
+}
+
+static void FinishNothing(void* userTask, void* userContext)
+{
+	(void)userTask, (void)userContext;
+}
+
+// A pyramid of 10 rows (55 boxes) on the ground and one joint: the counts v3.2 adds.
+Test(v32_fields, counters_count_what_v32_counts)
+{
+	for (int tasks = 0; tasks < 2; ++tasks)
+	{
+		tbWorldDef def = tbDefaultWorldDef();
+		if (tasks)
+		{
+			def.workerCount = 2;
+			def.enqueueTask = RunTaskNow;
+			def.finishTask = FinishNothing;
+		}
+		tbWorldId world = tbCreateWorld(&def);
+		CreateGround(world, tbMakeVec2(0.0f, -0.5f), 20.0f, 0.5f, NULL);
+		CreateGround(world, tbMakeVec2(30.0f, -0.5f), 5.0f, 0.5f, NULL);
+		tbBodyId first = TB_NULL_BODY_ID, second = TB_NULL_BODY_ID;
+		for (int row = 0; row < 10; ++row)
+		{
+			for (int i = 0; i < 10 - row; ++i)
+			{
+				tbVec2 p = {(float)i * 1.05f + 0.525f * (float)row - 5.0f, 0.5f + (float)row};
+				tbBodyId box = CreateBox(world, tb_dynamicBody, p, 0.5f, 0.5f, 1.0f);
+				first = row == 9 ? box : first;
+				second = row == 8 && i == 0 ? box : second;
+			}
+		}
+		tbWeldJointDef weld = tbDefaultWeldJointDef();
+		weld.base.bodyIdA = first;
+		weld.base.bodyIdB = second;
+		tbCreateWeldJoint(world, &weld);
+		StepWorld(world, 10, 1.0f / 60.0f, 4);
+		tbCounters c = tbWorld_GetCounters(world);
+		cr_expect(c.bodyCount == 57 && c.jointCount == 1);
+		cr_expect(c.byteCount == tbGetByteCount() && c.byteCount > 0);
+		cr_expect(c.stackUsed > 0);
+		cr_expect(c.staticTreeHeight == 1 && c.treeHeight > 0, "tree heights %d, %d", c.staticTreeHeight, c.treeHeight);
+		// Every touching contact of the awake pile is solved, in a colour or the overflow; so are those
+		// whose points are still speculative (not counted as touching): between the two counts.
+		int coloured = c.overflowCount;
+		for (int k = 0; k < 24; ++k)
+		{
+			coloured += c.colorCounts[k];
+		}
+		cr_expect(coloured >= c.touchingCount && coloured <= c.awakeContactCount && coloured > 0,
+				  "coloured %d, touching %d, awake %d", coloured, c.touchingCount, c.awakeContactCount);
+		cr_expect(c.awakeContactCount >= c.touchingCount && c.awakeContactCount <= c.contactCount);
+		cr_expect(tasks ? c.taskCount > 0 : c.taskCount == 0, "tasks %d", c.taskCount);
+
+		tbRayResult ray = tbWorld_CastRayClosest(world, tbMakeVec2(-20.0f, 0.5f), tbMakeVec2(40.0f, 0.0f),
+												 tbDefaultQueryFilter());
+		cr_expect(ray.hit && ray.leafVisits >= 1 && ray.nodeVisits >= 1, "visits %d nodes, %d leaves", ray.nodeVisits,
+				  ray.leafVisits);
+		tbDestroyWorld(world);
+	}
 }

@@ -590,14 +590,14 @@ typedef enum tbTreeSplit
 typedef struct tbDynamicTree
 {
 	struct tbTreeNode* nodes;
-	int root;
-	int nodeCount;
-	int nodeCapacity;
-	int freeList;
-	int proxyCount;
+	int32_t root;
+	int32_t nodeCount;
+	int32_t nodeCapacity;
+	int32_t freeList;
+	int32_t proxyCount;
 	// scratch space for the rebuild
 	struct tbRebuildLeaf* rebuildLeaves;
-	int rebuildCapacity;
+	int32_t rebuildCapacity;
 	tbTreeSplit rebuildSplit; ///< how tbDynamicTree_Rebuild splits; tb_splitBinnedSah from Create
 } tbDynamicTree;
 

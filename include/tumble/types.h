@@ -614,8 +614,8 @@ typedef struct tbProfile
 	float solve;	  ///< contact and joint preparation, sub-steps, impulses stored
 	float continuous; ///< time of impact of fast bodies
 	float finalize;	  ///< sleep timers, bounding boxes, proxies moved, move events
-	float events;	  ///< hit events gathered (0 when no contact enables them)
-	float sleep;	  ///< islands put to sleep
+	float hitEvents;  ///< hit events gathered (0 when no contact enables them)
+	float sleepIslands; ///< islands put to sleep
 
 	// The parts of `solve`, named as Box2D v3.2's profile names them so that the two compare part
 	// by part; the sub-step parts are summed over the sub-steps. With workers the sub-step parts
@@ -632,16 +632,29 @@ typedef struct tbProfile
 	float scatterBodies;	   ///< velocities and transforms back to the bodies, fast bodies marked
 } tbProfile;
 
-/// Counts from the last step.
+/// Counts from the last step (Box2D v3.2's b2Counters, then Tumble's own).
 typedef struct tbCounters
 {
+	int64_t byteCount;		 ///< bytes allocated by Tumble (all worlds: tbGetByteCount)
 	int bodyCount;
 	int shapeCount;
 	int contactCount;		 ///< contacts whose fat boxes overlap
+	int jointCount;
+	int islandCount;		 ///< islands holding a rested body, found by the sleep stage (0 when no body has
+							 ///< rested; Tumble keeps no islands between steps, v3.2 counts all of its own)
+	int stackUsed;			 ///< bytes of the step's scratch memory (the step arena) the last step needed
+	int staticTreeHeight;	 ///< height of the static bodies' tree (0 when another broad phase runs)
+	int treeHeight;			 ///< height of the moving bodies' tree (0 when another broad phase runs)
+	int taskCount;			 ///< tasks handed to the game's task system in the last step (0 without one)
+	int colorCounts[24];	 ///< contact constraints of each graph colour in the last step (tbGetGraphColor);
+							 ///< those beyond the colours are overflowCount
+	int awakeContactCount;	 ///< contacts the collide stage updated (those of awake bodies)
+	int recycledContactCount; ///< touching manifolds recycled (points moved with the bodies, not recomputed)
+
+	// Tumble's own.
+	int overflowCount;		 ///< contact constraints no colour could take (solved one at a time)
 	int touchingCount;		 ///< contacts with manifold points among awake bodies (sleeping islands are not visited)
 	int awakeBodyCount;
-	int islandCount;		 ///< islands holding a rested body, found by the sleep stage (0 when no body has rested)
-	int treeHeight;			 ///< dynamic-tree height (0 when another broad phase runs)
 	int pairCandidates;		 ///< new pairs found by the broad phase this step
 	int proxyMoves;			 ///< proxies whose fat box was updated this step
 	int fastBodies;			 ///< bodies swept by continuous collision this step
@@ -650,8 +663,6 @@ typedef struct tbCounters
 	int toiFailures;		 ///< time-of-impact queries that hit the iteration cap
 	int gjkManifolds;		 ///< manifolds computed by the GJK/EPA path
 	int satManifolds;		 ///< manifolds computed by SAT
-	int recycledManifolds;	 ///< touching manifolds recycled (points moved with the bodies, not recomputed)
-	int byteCount;			 ///< bytes allocated by this world
 } tbCounters;
 
 // ---------------------------------------------------------------------------------------------

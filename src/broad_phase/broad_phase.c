@@ -771,6 +771,11 @@ int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp)
 	return bp->method == tb_broadPhaseTree ? tbDynamicTree_GetHeight(&bp->movableTree) : 0;
 }
 
+int tbBroadPhase_GetStaticTreeHeight(const tbBroadPhase* bp)
+{
+	return bp->method == tb_broadPhaseTree ? tbDynamicTree_GetHeight(&bp->staticTree) : 0;
+}
+
 void tbBroadPhase_VisitTreeNodes(const tbBroadPhase* bp, tbTreeNodeFcn* fcn, void* context)
 {
 	if (bp->method == tb_broadPhaseTree)

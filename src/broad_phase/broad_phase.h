@@ -141,6 +141,8 @@ tbTreeStats tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* i
 
 /// Height of the movable tree, or 0 for other methods.
 int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp);
+/// The static tree's height (tree method), else 0.
+int tbBroadPhase_GetStaticTreeHeight(const tbBroadPhase* bp);
 /// Rebuild the static tree from scratch (binned SAH) now; the tree method only (the others keep
 /// no static tree).
 void tbBroadPhase_RebuildStaticTree(tbBroadPhase* bp);

@@ -825,7 +825,7 @@ static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* cont
 /// Counters of one contact's narrow phase (on the caller, after the workers).
 static void tbCountCollideResult(tbWorld* world, uint32_t result)
 {
-	world->counters.recycledManifolds += (result & tb_collideRecycled) != 0 ? 1 : 0;
+	world->counters.recycledContactCount += (result & tb_collideRecycled) != 0 ? 1 : 0;
 	world->counters.gjkManifolds += (result & tb_collideGJK) != 0 ? 1 : 0;
 	world->counters.satManifolds += (result & tb_collideSAT) != 0 ? 1 : 0;
 }
@@ -1146,7 +1146,7 @@ void tbCollideStage(tbWorld* world)
 		tbAddTally(&total, world->cache.collideTallies + w);
 	}
 	world->cache.collideTallies = NULL; // arena memory: gone with the step
-	world->counters.recycledManifolds += total.recycled;
+	world->counters.recycledContactCount += total.recycled;
 	world->counters.gjkManifolds += total.gjk;
 	world->counters.satManifolds += total.sat;
 	world->counters.touchingCount = total.reported;

@@ -265,7 +265,9 @@ tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbPos origin, tbVec2 trans
 {
 	tbRayResult result;
 	memset(&result, 0, sizeof(result));
-	tbWorld_CastRay(worldId, origin, translation, filter, tbClosestCallback, &result);
+	tbTreeStats stats = tbWorld_CastRay(worldId, origin, translation, filter, tbClosestCallback, &result);
+	result.nodeVisits = stats.nodeVisits;
+	result.leafVisits = stats.leafVisits;
 	return result;
 }
 

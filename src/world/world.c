@@ -16,6 +16,7 @@
 
 #include "core/array.h"
 #include "core/sort.h"
+#include "core/task.h"
 
 #include <stddef.h>
 #include <string.h>
@@ -520,8 +521,16 @@ static void tbUpdateCounters(tbWorld* world)
 	c->shapeCount = world->shapePool.count;
 	c->contactCount = world->contactPool.count;
 	c->awakeBodyCount = tbAwakeBodyCount(world);
+	c->jointCount = world->jointPool.count;
 	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
-	c->byteCount = (int)tbGetByteCount(); // tbCounters keeps v3.2's int
+	c->staticTreeHeight = tbBroadPhase_GetStaticTreeHeight(&world->broadPhase);
+	c->byteCount = tbGetByteCount();
+	c->stackUsed = world->stepArena.needed;
+	c->awakeContactCount = world->cache.stepContactCount;
+	int counts[TB_GRAPH_COLOR_COUNT + 1] = {0};
+	tbGetContactGraphColors(world, NULL, counts); // zeros when the last step did not colour
+	memcpy(c->colorCounts, counts, sizeof(c->colorCounts));
+	c->overflowCount = counts[TB_GRAPH_COLOR_COUNT];
 	// touchingCount: set by the collide stage (contact.c), which reads every step contact's flags.
 }
 
@@ -540,6 +549,7 @@ static void tbRecordMaxCapacity(tbWorld* world)
 /// What every step ends with, a pause too: counters, the broad-phase vote, the step arena.
 static void tbFinishStep(tbWorld* world, uint64_t stepTicks)
 {
+	tbCountTasksInto(NULL);
 	tbUpdateCounters(world);
 	tbUpdateAutoBroadPhase(world);
 	tbArenaReset(&world->stepArena);
@@ -583,9 +593,10 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	world->gravityLength = tbLength(world->def.gravity);
 	tbClearEvents(world);
 	memset(&world->profile, 0, sizeof(world->profile));
-	int byteCount = world->counters.byteCount;
+	int64_t byteCount = world->counters.byteCount;
 	memset(&world->counters, 0, sizeof(world->counters));
 	world->counters.byteCount = byteCount;
+	tbCountTasksInto(&world->counters.taskCount); // until tbFinishStep
 
 	// Each stage's time is the lap since the last (one clock read a stage).
 	uint64_t stepTicks = tbGetTicks();
@@ -609,9 +620,9 @@ bool tbWorld_Step(tbWorldId worldId, float timeStep, int subStepCount)
 	int beyondBounds = tbFinalizeStage(world, timeStep);
 	world->profile.finalize = tbGetMillisecondsAndReset(&t);
 	tbReportHitEvents(world);
-	world->profile.events = tbGetMillisecondsAndReset(&t);
+	world->profile.hitEvents = tbGetMillisecondsAndReset(&t);
 	tbSleepStage(world, timeStep);
-	world->profile.sleep = tbGetMillisecondsAndReset(&t);
+	world->profile.sleepIslands = tbGetMillisecondsAndReset(&t);
 	if (beyondBounds > 0)
 	{
 		tbDisableBodiesBeyondBounds(world);
@@ -1097,6 +1108,7 @@ tbCounters tbWorld_GetCounters(tbWorldId worldId)
 	world->counters.bodyCount = world->bodyPool.count;
 	world->counters.shapeCount = world->shapePool.count;
 	world->counters.contactCount = world->contactPool.count;
+	world->counters.jointCount = world->jointPool.count;
 	world->counters.awakeBodyCount = tbAwakeBodyCount(world);
 	return world->counters;
 }
