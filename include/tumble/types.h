@@ -621,6 +621,7 @@ typedef struct tbProfile
 	// by part; the sub-step parts are summed over the sub-steps. With workers the sub-step parts
 	// are timed by the thread that leads the stages, from opening a stage until it is done.
 	float solverSetup;		   ///< solver bodies gathered, contact keys, graph colours
+	float constraints;		   ///< the parts below from prepareConstraints to storeImpulses, summed
 	float prepareConstraints;  ///< contacts and joints prepared (and joint trees built)
 	float integrateVelocities; ///< gravity, forces and damping into the velocities
 	float warmStart;		   ///< the last step's impulses applied again
