@@ -799,3 +799,33 @@ Test(v32_fields, counters_count_what_v32_counts)
 		tbDestroyWorld(world);
 	}
 }
+
+// The profile's new parts lie within the stages that hold them (each is timed inside its stage;
+// the tolerance is the float rounding of the millisecond sums).
+Test(v32_fields, profile_parts_lie_within_their_stages)
+{
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 10.0f, 0.5f, NULL);
+	tbBodyDef def = tbDefaultBodyDef();
+	def.type = tb_dynamicBody;
+	def.isBullet = true;
+	def.position = tbMakeVec2(0.0f, 3.0f);
+	def.linearVelocity = tbMakeVec2(0.0f, -200.0f);
+	CreateBoxFromDef(world, &def, 0.1f, 0.1f, NULL);
+	tbBodyId a = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 0.5f), 0.5f, 0.5f, 1.0f);
+	tbBodyId b = CreateBox(world, tb_dynamicBody, tbMakeVec2(3.0f, 1.5f), 0.5f, 0.5f, 1.0f);
+	tbWeldJointDef weld = tbDefaultWeldJointDef();
+	weld.base.bodyIdA = a;
+	weld.base.bodyIdB = b;
+	weld.base.forceThreshold = 1.0f; // joint events to gather
+	tbCreateWeldJoint(world, &weld);
+	tbWorld_Step(world, 1.0f / 60.0f, 4);
+	tbProfile p = tbWorld_GetProfile(world);
+	float eps = 1e-3f;
+	cr_expect(p.constraints >= 0.0f && p.constraints <= p.solve + eps, "constraints %g, solve %g", (double)p.constraints,
+			  (double)p.solve);
+	cr_expect(p.jointEvents >= 0.0f && p.jointEvents <= p.storeImpulses + eps);
+	cr_expect(p.bullets > 0.0f && p.bullets <= p.continuous + eps, "bullets %g, continuous %g", (double)p.bullets,
+			  (double)p.continuous);
+	tbDestroyWorld(world);
+}

@@ -630,6 +630,8 @@ typedef struct tbProfile
 	float relaxImpulses;	   ///< the relaxing passes, the last sub-step's extra ones included
 	float applyRestitution;	   ///< restitution after the sub-steps
 	float storeImpulses;	   ///< impulses back to the contacts for the next warm start, joint events
+	float jointEvents;		   ///< the joint events, a part of storeImpulses
+	float bullets;			   ///< the bullets' time of impact, a part of continuous
 	float scatterBodies;	   ///< velocities and transforms back to the bodies, fast bodies marked
 } tbProfile;
 

@@ -287,7 +287,9 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbApplyRestitution(&context);
 	tbProfileLap(&profile->applyRestitution, &context.lapTicks);
 	tbStoreImpulses(&context);
+	uint64_t jointTicks = tbGetTicks();
 	tbFinishJoints(&context); // joint events; joints keep their own impulses
+	profile->jointEvents = tbGetMilliseconds(jointTicks); // a part of storeImpulses
 	if (context.wideConstraints != NULL)
 	{
 		tbReleaseColors(&context);
