@@ -685,13 +685,23 @@ Test(v32_fields, debug_draw_flags_each_draw_what_they_name)
 	draw.drawIslands = true;
 	cr_expect(DrawWith(world, draw).bounds == 2);
 
-	// A NaN scale is refused.
-	draw = NothingDrawn();
-	draw.forceScale = NAN;
+	// A NaN or negative scale is refused, and nothing is drawn.
 	tbSetErrorCallback(RecordError, NULL);
-	int before = s_errors;
-	DrawWith(world, draw);
-	ExpectError(before, "tbWorld_Draw", "forceScale");
+	float badScales[2] = {NAN, -1.0f};
+	for (int i = 0; i < 2; ++i)
+	{
+		draw = NothingDrawn();
+		draw.drawShapes = true;
+		draw.forceScale = badScales[i];
+		int before = s_errors;
+		cr_expect(DrawWith(world, draw).polygons == 0);
+		ExpectError(before, "tbWorld_Draw", "forceScale");
+		draw.forceScale = 1.0f;
+		draw.jointScale = badScales[i];
+		before = s_errors;
+		cr_expect(DrawWith(world, draw).polygons == 0);
+		ExpectError(before, "tbWorld_Draw", "jointScale");
+	}
 	tbSetErrorCallback(NULL, NULL);
 	tbDestroyWorld(world);
 }

@@ -401,11 +401,13 @@ void tbWorld_Draw(tbWorldId worldId, tbDebugDraw* draw)
 		tbReportError(f, "called during the step; draw after tbWorld_Step returns");
 		return;
 	}
-	if (!(draw->forceScale == draw->forceScale && draw->jointScale == draw->jointScale) ||
+	// Written so that NaN fails.
+	if (!(draw->forceScale >= 0.0f && draw->forceScale <= FLT_MAX && draw->jointScale >= 0.0f &&
+		  draw->jointScale <= FLT_MAX) ||
 		tbIsValidAABB(draw->drawingBounds) == false)
 	{
-		tbReportError(f, "draw->forceScale (%g), draw->jointScale (%g) and draw->drawingBounds must be numbers, the "
-						 "bounds lower ≤ upper; start from tbDefaultDebugDraw()",
+		tbReportError(f, "draw->forceScale is %g and draw->jointScale %g (each finite and ≥ 0), or draw->drawingBounds "
+						 "is not a box (finite, lower ≤ upper); start from tbDefaultDebugDraw()",
 					  (double)draw->forceScale, (double)draw->jointScale);
 		return;
 	}

@@ -68,7 +68,10 @@
 #include <string.h>
 
 #define TB_SNAPSHOT_MAGIC 0x4E534254u // "TBSN" as bytes
-#define TB_SNAPSHOT_VERSION 1u
+// Version 2: manifold points carry baseSeparation, waiting end events their contact id, bodies
+// allowFastRotation, the settings contact softening (Box2D v3.2's fields); a version 1 image is
+// refused by name rather than misread.
+#define TB_SNAPSHOT_VERSION 2u
 
 #if defined(TUMBLE_DOUBLE_PRECISION)
 #define TB_SNAPSHOT_PRECISION 1u
