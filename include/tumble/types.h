@@ -201,7 +201,8 @@ typedef struct tbBodyDef
 							///< phase and the simulation until tbBody_Enable
 	bool allowFastRotation; ///< default false; true: no cap on the rotation per step (wheels; the cap is
 							///< what keeps continuous collision's rotation bound, so a fast-turning
-							///< long shape may tunnel)
+							///< long shape may tunnel). In a world with joints the guard against
+							///< runaway joint speeds (16 times the cap) still holds it
 	int internalValue;
 } tbBodyDef;
 
