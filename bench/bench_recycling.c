@@ -50,7 +50,7 @@ static void Compare(tbWorld* world, const tbContact* contact, Stats* stats)
 	fresh.flags &= ~(uint32_t)tb_contactRecyclable;
 	bool began = false;
 	tbUpdateContact(world, &recycled, &began);
-	bool wasRecycled = world->counters.recycledManifolds > saved.recycledManifolds;
+	bool wasRecycled = world->counters.recycledContactCount > saved.recycledContactCount;
 	tbUpdateContact(world, &fresh, &began);
 	world->counters = saved;
 	stats->touching += 1;

@@ -2,8 +2,8 @@
 // macros and compiled twice: with GAME_TUMBLE against Tumble (tb*), with GAME_BOX2D3 against
 // Box2D v3.2 (b2*). Every call, type and constant below goes through P() (functions and types:
 // P(CreateWorld), P(BodyDef)), K() (enumerators: K(dynamicBody)) or C() (macros: C(IS_NULL)), so
-// that a scene that compiles here for both engines is a port by renaming. The one place that
-// cannot be written once is the allocator hook (see InstallAllocator): its types differ.
+// that a scene that compiles here for both engines is a port by renaming: every line is written once,
+// the allocator hook included.
 //
 // Both engines get the same work: the same bodies in the same order, the same frame (1/60 s,
 // 4 sub-steps), the same sleep settings (on, each body's default threshold), the same material
@@ -1089,26 +1089,16 @@ static void CountingFree(void* memory)
 	free(block);
 }
 
-#if defined(GAME_TUMBLE)
-static void* EngineAlloc(unsigned int size, int alignment)
-{
-	return CountingAlloc(size, alignment);
-}
-static void EngineFree(void* memory)
-{
-	CountingFree(memory);
-}
-#else
 static void* EngineAlloc(size_t size, int alignment)
 {
 	return CountingAlloc(size, alignment);
 }
+
 static void EngineFree(void* memory, size_t size)
 {
-	(void)size;
+	(void)size; // the block's header holds it too
 	CountingFree(memory);
 }
-#endif
 
 static void InstallAllocator(void)
 {

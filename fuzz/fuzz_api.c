@@ -26,6 +26,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define WORLD_SLOTS 3
 #define MAX_LIVE 40
@@ -2403,10 +2404,8 @@ static void Step(Harness* h, int slot, FuzzInput* in)
 }
 
 // Debug drawing: every number the library hands out must be finite.
-static void DrawPolygon(const tbVec2* vertices, int vertexCount, uint32_t color, void* context)
+static void CheckVertices(const tbVec2* vertices, int vertexCount)
 {
-	(void)color;
-	(void)context;
 	FUZZ_CHECK(vertexCount >= 1 && vertexCount <= TB_MAX_POLYGON_VERTICES, "drawn polygon of %d vertices", vertexCount);
 	for (int i = 0; i < vertexCount; ++i)
 	{
@@ -2415,15 +2414,7 @@ static void DrawPolygon(const tbVec2* vertices, int vertexCount, uint32_t color,
 	}
 }
 
-static void DrawSolidPolygon(tbTransform transform, const tbVec2* vertices, int vertexCount, float radius,
-							 uint32_t color, void* context)
-{
-	FUZZ_CHECK(FuzzIsFinite2(transform.p.x, transform.p.y) && isfinite(radius), "drawn polygon at (%g, %g)",
-			   (double)transform.p.x, (double)transform.p.y);
-	DrawPolygon(vertices, vertexCount, color, context);
-}
-
-static void DrawCircle(tbVec2 center, float radius, uint32_t color, void* context)
+static void DrawCircle(tbPos center, float radius, tbHexColor color, void* context)
 {
 	(void)color;
 	(void)context;
@@ -2431,47 +2422,97 @@ static void DrawCircle(tbVec2 center, float radius, uint32_t color, void* contex
 			   (double)center.x, (double)center.y, (double)radius);
 }
 
-static void DrawSolidCircle(tbTransform transform, float radius, uint32_t color, void* context)
+static void DrawTransform(tbWorldTransform transform, void* context)
 {
-	DrawCircle(transform.p, radius, color, context);
+	DrawCircle(transform.p, 0.0f, tb_colorBlack, context);
+	FUZZ_CHECK(FuzzIsFinite2(transform.q.c, transform.q.s), "drawn rotation (%g, %g)", (double)transform.q.c,
+			   (double)transform.q.s);
 }
 
-static void DrawSolidCapsule(tbVec2 p1, tbVec2 p2, float radius, uint32_t color, void* context)
+static void DrawPolygon(tbWorldTransform transform, const tbVec2* vertices, int vertexCount, tbHexColor color,
+						void* context)
+{
+	(void)color;
+	DrawTransform(transform, context);
+	CheckVertices(vertices, vertexCount);
+}
+
+static void DrawSolidPolygon(tbWorldTransform transform, const tbVec2* vertices, int vertexCount, float radius,
+							 tbHexColor color, void* context)
+{
+	FUZZ_CHECK(isfinite(radius), "drawn polygon of radius %g", (double)radius);
+	DrawPolygon(transform, vertices, vertexCount, color, context);
+}
+
+static void DrawSolidCircle(tbWorldTransform transform, tbVec2 center, float radius, tbHexColor color, void* context)
+{
+	DrawTransform(transform, context);
+	DrawCircle(tbToPos(center), radius, color, context);
+}
+
+static void DrawSolidCapsule(tbPos p1, tbPos p2, float radius, tbHexColor color, void* context)
 {
 	DrawCircle(p1, radius, color, context);
 	DrawCircle(p2, radius, color, context);
 }
 
-static void DrawSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+static void DrawLine(tbPos p1, tbPos p2, tbHexColor color, void* context)
 {
 	DrawCircle(p1, 0.0f, color, context);
 	DrawCircle(p2, 0.0f, color, context);
 }
 
-static void DrawPoint(tbVec2 p, float size, uint32_t color, void* context)
+static void DrawPoint(tbPos p, float size, tbHexColor color, void* context)
 {
 	DrawCircle(p, size, color, context);
+}
+
+static void DrawString(tbPos p, const char* text, tbHexColor color, void* context)
+{
+	FUZZ_CHECK(text != NULL && strlen(text) < 256, "drawn text");
+	DrawCircle(p, 0.0f, color, context);
+}
+
+static void DrawBounds(tbAABB box, tbHexColor color, void* context)
+{
+	DrawCircle(tbToPos(box.lowerBound), 0.0f, color, context);
+	DrawCircle(tbToPos(box.upperBound), 0.0f, color, context);
 }
 
 static void Draw(Harness* h, int slot, FuzzInput* in)
 {
 	tbDebugDraw draw = tbDefaultDebugDraw();
-	draw.DrawPolygon = DrawPolygon;
-	draw.DrawSolidPolygon = DrawSolidPolygon;
-	draw.DrawCircle = DrawCircle;
-	draw.DrawSolidCircle = DrawSolidCircle;
-	draw.DrawSolidCapsule = DrawSolidCapsule;
-	draw.DrawSegment = DrawSegment;
-	draw.DrawPoint = DrawPoint;
+	draw.DrawPolygonFcn = DrawPolygon;
+	draw.DrawSolidPolygonFcn = DrawSolidPolygon;
+	draw.DrawCircleFcn = DrawCircle;
+	draw.DrawSolidCircleFcn = DrawSolidCircle;
+	draw.DrawSolidCapsuleFcn = DrawSolidCapsule;
+	draw.DrawLineFcn = DrawLine;
+	draw.DrawTransformFcn = DrawTransform;
+	draw.DrawPointFcn = DrawPoint;
+	draw.DrawStringFcn = DrawString;
+	draw.DrawBoundsFcn = DrawBounds;
 	uint8_t flags = FuzzByte(in);
 	draw.drawShapes = true;
-	draw.drawAABBs = (flags & 1u) != 0;
+	draw.drawBounds = (flags & 1u) != 0;
 	draw.drawTree = (flags & 2u) != 0;
 	draw.drawContacts = (flags & 4u) != 0;
+	draw.drawGraphColors = (flags & 4u) != 0 && (flags & 64u) != 0;
 	draw.drawContactNormals = (flags & 8u) != 0;
+	draw.drawContactForces = (flags & 8u) != 0 && (flags & 64u) != 0;
+	draw.drawFrictionForces = (flags & 8u) != 0 && (flags & 128u) != 0;
+	draw.drawContactFeatures = (flags & 4u) != 0 && (flags & 128u) != 0;
 	draw.drawJoints = (flags & 16u) == 0;
-	draw.useDrawingBounds = (flags & 32u) != 0;
-	draw.drawingBounds = (tbAABB){{-5.0f, -5.0f}, {5.0f, 5.0f}};
+	draw.drawJointExtras = (flags & 16u) == 0 && (flags & 64u) != 0;
+	draw.drawMass = (flags & 64u) != 0;
+	draw.drawBodyNames = (flags & 64u) != 0;
+	draw.drawIslands = (flags & 128u) != 0;
+	draw.drawChainNormals = (flags & 128u) != 0;
+	draw.drawAnchorA = (flags & 128u) != 0;
+	if ((flags & 32u) != 0)
+	{
+		draw.drawingBounds = (tbAABB){{-5.0f, -5.0f}, {5.0f, 5.0f}};
+	}
 	TRACE("draw %02x in slot %d\n", flags, slot);
 	tbWorld_Draw(h->worlds[slot].id, &draw);
 }

@@ -300,17 +300,28 @@ static void DrawSegmentLine(Canvas* canvas, tbVec2 p1, tbVec2 p2, uint32_t color
 	Paint(canvas, &sdf, SegmentBox(p1, p2, 0.0f), LINE_HALF_WIDTH, color, paint_opaque);
 }
 
-static void DrawPolygonCallback(const tbVec2* vertices, int vertexCount, uint32_t color, void* context)
+// The image is float: world transforms are rounded to it (exact in the float build).
+static tbTransform ToTransform(tbWorldTransform t)
 {
+	tbTransform r = {tbToVec2(t.p), t.q};
+	return r;
+}
+
+static void DrawPolygonCallback(tbWorldTransform transform, const tbVec2* vertices, int vertexCount, tbHexColor color,
+								void* context)
+{
+	tbTransform xf = ToTransform(transform);
 	for (int i = 0; i < vertexCount; ++i)
 	{
-		DrawSegmentLine(context, vertices[i], vertices[i + 1 < vertexCount ? i + 1 : 0], color);
+		DrawSegmentLine(context, tbTransformPoint(xf, vertices[i]),
+						tbTransformPoint(xf, vertices[i + 1 < vertexCount ? i + 1 : 0]), (uint32_t)color);
 	}
 }
 
-static void DrawSolidPolygonCallback(tbTransform transform, const tbVec2* vertices, int vertexCount, float radius,
-									 uint32_t color, void* context)
+static void DrawSolidPolygonCallback(tbWorldTransform worldTransform, const tbVec2* vertices, int vertexCount,
+									 float radius, tbHexColor color, void* context)
 {
+	tbTransform transform = ToTransform(worldTransform);
 	Sdf sdf;
 	memset(&sdf, 0, sizeof(sdf));
 	sdf.kind = sdf_polygon;
@@ -333,20 +344,21 @@ static void DrawSolidPolygonCallback(tbTransform transform, const tbVec2* vertic
 	}
 	box.lowerBound = tbSub(box.lowerBound, (tbVec2){radius, radius});
 	box.upperBound = tbAdd(box.upperBound, (tbVec2){radius, radius});
-	Paint(context, &sdf, box, 0.0f, color, paint_solid);
+	Paint(context, &sdf, box, 0.0f, (uint32_t)color, paint_solid);
 }
 
-static void DrawCircleCallback(tbVec2 center, float radius, uint32_t color, void* context)
+static void DrawCircleCallback(tbPos worldCenter, float radius, tbHexColor color, void* context)
 {
+	tbVec2 center = tbToVec2(worldCenter);
 	Sdf sdf;
 	memset(&sdf, 0, sizeof(sdf));
 	sdf.kind = sdf_ring;
 	sdf.p1 = center;
 	sdf.radius = radius;
-	Paint(context, &sdf, SegmentBox(center, center, radius), LINE_HALF_WIDTH, color, paint_opaque);
+	Paint(context, &sdf, SegmentBox(center, center, radius), LINE_HALF_WIDTH, (uint32_t)color, paint_opaque);
 }
 
-static void DrawSolidCapsuleCallback(tbVec2 p1, tbVec2 p2, float radius, uint32_t color, void* context)
+static void DrawCapsule(void* context, tbVec2 p1, tbVec2 p2, float radius, uint32_t color)
 {
 	Sdf sdf;
 	memset(&sdf, 0, sizeof(sdf));
@@ -357,21 +369,39 @@ static void DrawSolidCapsuleCallback(tbVec2 p1, tbVec2 p2, float radius, uint32_
 	Paint(context, &sdf, SegmentBox(p1, p2, radius), 0.0f, color, paint_solid);
 }
 
-static void DrawSolidCircleCallback(tbTransform transform, float radius, uint32_t color, void* context)
+static void DrawSolidCapsuleCallback(tbPos p1, tbPos p2, float radius, tbHexColor color, void* context)
 {
-	DrawSolidCapsuleCallback(transform.p, transform.p, radius, color, context);
-	tbVec2 rim = tbAdd(transform.p, tbMulSV(radius, tbRot_GetXAxis(transform.q)));
-	DrawSegmentLine(context, transform.p, rim, color);
+	DrawCapsule(context, tbToVec2(p1), tbToVec2(p2), radius, (uint32_t)color);
 }
 
-static void DrawSegmentCallback(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+static void DrawSolidCircleCallback(tbWorldTransform transform, tbVec2 localCenter, float radius, tbHexColor color,
+									void* context)
 {
-	DrawSegmentLine(context, p1, p2, color);
+	tbTransform xf = ToTransform(transform);
+	tbVec2 center = tbTransformPoint(xf, localCenter);
+	DrawCapsule(context, center, center, radius, (uint32_t)color);
+	tbVec2 rim = tbAdd(center, tbMulSV(radius, tbRot_GetXAxis(xf.q)));
+	DrawSegmentLine(context, center, rim, (uint32_t)color);
+}
+
+static void DrawLineCallback(tbPos p1, tbPos p2, tbHexColor color, void* context)
+{
+	DrawSegmentLine(context, tbToVec2(p1), tbToVec2(p2), (uint32_t)color);
+}
+
+static void DrawBoundsCallback(tbAABB box, tbHexColor color, void* context)
+{
+	tbVec2 v[4] = {box.lowerBound, {box.upperBound.x, box.lowerBound.y}, box.upperBound, {box.lowerBound.x, box.upperBound.y}};
+	for (int i = 0; i < 4; ++i)
+	{
+		DrawSegmentLine(context, v[i], v[(i + 1) % 4], (uint32_t)color);
+	}
 }
 
 // A disc of diameter size pixels.
-static void DrawPointCallback(tbVec2 p, float size, uint32_t color, void* context)
+static void DrawPointCallback(tbPos worldPoint, float size, tbHexColor color, void* context)
 {
+	tbVec2 p = tbToVec2(worldPoint);
 	Canvas* canvas = context;
 	Sdf sdf;
 	memset(&sdf, 0, sizeof(sdf));
@@ -457,17 +487,18 @@ void Render_World(RenderImage* image, tbWorldId worldId, tbAABB view, const Rend
 	canvas.view = Render_MatchAspect(view, image->width, image->height);
 	canvas.scale = (float)image->width / (canvas.view.upperBound.x - canvas.view.lowerBound.x);
 	tbDebugDraw draw = tbDefaultDebugDraw();
-	draw.DrawPolygon = DrawPolygonCallback;
-	draw.DrawSolidPolygon = DrawSolidPolygonCallback;
-	draw.DrawCircle = DrawCircleCallback;
-	draw.DrawSolidCircle = DrawSolidCircleCallback;
-	draw.DrawSolidCapsule = DrawSolidCapsuleCallback;
-	draw.DrawSegment = DrawSegmentCallback;
-	draw.DrawPoint = DrawPointCallback;
+	draw.DrawPolygonFcn = DrawPolygonCallback;
+	draw.DrawSolidPolygonFcn = DrawSolidPolygonCallback;
+	draw.DrawCircleFcn = DrawCircleCallback;
+	draw.DrawSolidCircleFcn = DrawSolidCircleCallback;
+	draw.DrawSolidCapsuleFcn = DrawSolidCapsuleCallback;
+	draw.DrawLineFcn = DrawLineCallback;
+	draw.DrawPointFcn = DrawPointCallback;
+	draw.DrawBoundsFcn = DrawBoundsCallback;
 	draw.drawingBounds = canvas.view;
-	draw.useDrawingBounds = true;
 	draw.drawShapes = true;
-	draw.drawAABBs = options->drawAABBs;
+	draw.drawJoints = true; // the renderer shows joints (v3.2's default view leaves them off)
+	draw.drawBounds = options->drawAABBs;
 	draw.drawTree = options->drawTree;
 	draw.drawContacts = options->drawContacts;
 	draw.drawContactNormals = options->drawNormals;

@@ -168,7 +168,7 @@ Test(accessors, world_switches_and_callbacks)
 	// The profile's stages are parts of the step (not a timing claim: only their sum is bounded).
 	tbProfile profile = tbWorld_GetProfile(world);
 	float parts = profile.pairs + profile.collide + profile.islands + profile.solve + profile.continuous +
-				  profile.finalize + profile.events + profile.sleep;
+				  profile.finalize + profile.hitEvents + profile.sleepIslands;
 	cr_assert(profile.solve > 0.0f && parts <= profile.step * 1.0001f + 1e-6f, "stages %g ms of a %g ms step",
 			  (double)parts, (double)profile.step);
 	// And the solve's parts are parts of the solve (each timed from the end of the one before).
@@ -308,15 +308,16 @@ typedef struct DrawCounts
 	int circles, segments, polygons;
 } DrawCounts;
 
-static void CountCircle(tbTransform transform, float radius, uint32_t color, void* context)
+static void CountCircle(tbWorldTransform transform, tbVec2 center, float radius, tbHexColor color, void* context)
 {
 	(void)transform;
+	(void)center;
 	(void)radius;
 	(void)color;
 	((DrawCounts*)context)->circles += 1;
 }
 
-static void CountSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+static void CountSegment(tbPos p1, tbPos p2, tbHexColor color, void* context)
 {
 	(void)p1;
 	(void)p2;
@@ -324,7 +325,7 @@ static void CountSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
 	((DrawCounts*)context)->segments += 1;
 }
 
-static void CountPolygon(tbTransform transform, const tbVec2* vertices, int count, float radius, uint32_t color,
+static void CountPolygon(tbWorldTransform transform, const tbVec2* vertices, int count, float radius, tbHexColor color,
 						 void* context)
 {
 	(void)transform;
@@ -348,9 +349,9 @@ Test(accessors, debug_draw_visits_every_shape)
 	tbCreateSegmentShape(ground, &shapeDef, &floor);
 	DrawCounts counts = {0, 0, 0};
 	tbDebugDraw draw = tbDefaultDebugDraw();
-	draw.DrawSolidCircle = CountCircle;
-	draw.DrawSegment = CountSegment;
-	draw.DrawSolidPolygon = CountPolygon;
+	draw.DrawSolidCircleFcn = CountCircle;
+	draw.DrawLineFcn = CountSegment;
+	draw.DrawSolidPolygonFcn = CountPolygon;
 	draw.drawShapes = true;
 	draw.drawJoints = false;
 	draw.context = &counts;

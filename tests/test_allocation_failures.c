@@ -27,14 +27,14 @@ static long s_allocations; ///< allocations so far
 static long s_failAt;	   ///< the allocation that returns NULL (0: none)
 static bool s_misaligned;  ///< an allocation the hook could not align as asked
 
-static void* HookAlloc(unsigned int size, int alignment)
+static void* HookAlloc(size_t size, int alignment)
 {
 	s_allocations += 1;
 	if (s_allocations == s_failAt)
 	{
 		return NULL;
 	}
-	if (alignment <= 0 || (alignment & (alignment - 1)) != 0 || alignment > 64 || size % (unsigned)alignment != 0)
+	if (alignment <= 0 || (alignment & (alignment - 1)) != 0 || alignment > 64 || size % (size_t)alignment != 0)
 	{
 		s_misaligned = true; // base.h: a power of two, at most 64 (aligned_alloc also needs size a multiple)
 		return malloc(size);
@@ -42,8 +42,9 @@ static void* HookAlloc(unsigned int size, int alignment)
 	return aligned_alloc((size_t)alignment, size);
 }
 
-static void HookFree(void* memory)
+static void HookFree(void* memory, size_t size)
 {
+	(void)size;
 	free(memory);
 }
 

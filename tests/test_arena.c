@@ -19,14 +19,15 @@
 
 static int s_allocCalls = 0;
 
-static void* CountingAlloc(unsigned int size, int alignment)
+static void* CountingAlloc(size_t size, int alignment)
 {
 	s_allocCalls += 1;
 	return aligned_alloc((size_t)alignment, size);
 }
 
-static void CountingFree(void* memory)
+static void CountingFree(void* memory, size_t size)
 {
+	(void)size;
 	free(memory);
 }
 

@@ -159,14 +159,15 @@ Test(conformance, per_body_contact_recycling)
 
 static int s_allocations;
 
-static void* CountingAlloc(unsigned int size, int alignment)
+static void* CountingAlloc(size_t size, int alignment)
 {
 	s_allocations += 1;
 	return aligned_alloc((size_t)alignment, ((size_t)size + (size_t)alignment - 1) / (size_t)alignment * (size_t)alignment);
 }
 
-static void CountingFree(void* memory)
+static void CountingFree(void* memory, size_t size)
 {
+	(void)size;
 	free(memory);
 }
 

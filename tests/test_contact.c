@@ -89,10 +89,10 @@ static Pair MakePair(float h, bool circle, bool recycling)
 static bool MoveAndUpdate(Pair* p, float dx, float dy, float angle)
 {
 	tbBody_SetTransform(p->box, tbMakeVec2(dx, p->halfSize + GAP + dy), tbMakeRot(angle));
-	int before = p->world->counters.recycledManifolds;
+	int before = p->world->counters.recycledContactCount;
 	bool began = false;
 	tbUpdateContact(p->world, p->contact, &began);
-	return p->world->counters.recycledManifolds == before + 1;
+	return p->world->counters.recycledContactCount == before + 1;
 }
 
 /// The manifold the narrow phase computes now, with the margin the update used (at rest: the
@@ -195,10 +195,10 @@ Test(contact, recomputed_when_the_pair_turns_together)
 		tbBodyId ground = tbShape_GetBody(tbMakeShapeId(p.world, p.contact->shapeIdA));
 		tbBody_SetTransform(ground, tbRotateVector(q, tbMakeVec2(0.0f, -0.5f)), q);
 		tbBody_SetTransform(p.box, tbRotateVector(q, tbMakeVec2(0.0f, p.halfSize + GAP)), q);
-		int before = p.world->counters.recycledManifolds;
+		int before = p.world->counters.recycledContactCount;
 		bool began = false;
 		tbUpdateContact(p.world, p.contact, &began);
-		bool recycled = p.world->counters.recycledManifolds == before + 1;
+		bool recycled = p.world->counters.recycledContactCount == before + 1;
 		cr_expect(recycled == (k == 0), "turned together by %.0f degrees: %s", (double)(angle * 180.0f / TB_PI),
 				  recycled ? "recycled" : "recomputed");
 		tbDestroyWorld(p.worldId);

@@ -370,14 +370,14 @@ typedef struct SegmentLog
 	int count;
 } SegmentLog;
 
-static void LogSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+static void LogSegment(tbPos p1, tbPos p2, tbHexColor color, void* context)
 {
 	(void)color;
 	SegmentLog* log = context;
 	if (log->count < 8)
 	{
-		log->p1[log->count] = p1;
-		log->p2[log->count] = p2;
+		log->p1[log->count] = tbToVec2(p1);
+		log->p2[log->count] = tbToVec2(p2);
 	}
 	log->count += 1;
 }
@@ -399,7 +399,7 @@ Test(mover, mover_and_pogo_are_drawn)
 	SegmentLog log = {0};
 	draw.drawShapes = false;
 	draw.drawJoints = true;
-	draw.DrawSegment = LogSegment;
+	draw.DrawLineFcn = LogSegment;
 	draw.context = &log;
 
 	tbJointId mover = MakeMover(world, ground, body, tbMakeVec2(4.0f, 0.0f), tbMakeVec2(10.0f, 10.0f));
@@ -433,7 +433,7 @@ Test(mover, a_velocity_arrow_beyond_float_is_not_drawn)
 	SegmentLog log = {0};
 	draw.drawShapes = false;
 	draw.drawJoints = true;
-	draw.DrawSegment = LogSegment;
+	draw.DrawLineFcn = LogSegment;
 	draw.context = &log;
 	tbWorld_Draw(world, &draw);
 	cr_assert_eq(log.count, 1, "%d segments", log.count);

@@ -224,8 +224,8 @@ static float RecordMaterials(float frictionA, uint64_t materialA, float friction
 
 static uint32_t s_drawnColor;
 
-static void RecordPolygonColor(tbTransform transform, const tbVec2* vertices, int vertexCount, float radius,
-							   uint32_t color, void* context)
+static void RecordPolygonColor(tbWorldTransform transform, const tbVec2* vertices, int vertexCount, float radius,
+							   tbHexColor color, void* context)
 {
 	(void)transform;
 	(void)vertices;
@@ -258,7 +258,7 @@ Test(materials, user_material_ids_and_custom_colours)
 	painted.customColor = 0x123456u;
 	cr_assert(tbShape_SetSurfaceMaterial(boxShape, &painted));
 	tbDebugDraw draw = tbDefaultDebugDraw();
-	draw.DrawSolidPolygon = RecordPolygonColor;
+	draw.DrawSolidPolygonFcn = RecordPolygonColor;
 	draw.drawShapes = true;
 	tbShape_SetSurfaceMaterial(groundShape, &ground); // the ground draws first, in its default colour
 	s_drawnColor = 0u;

@@ -779,7 +779,7 @@ Test(recording, a_changed_input_is_found_at_its_step, .init = SetupErrors, .fini
 // ---------------------------------------------------------------------------------------------
 // The player
 
-static void CountSegment(tbVec2 p1, tbVec2 p2, uint32_t color, void* context)
+static void CountSegment(tbPos p1, tbPos p2, tbHexColor color, void* context)
 {
 	(void)p1;
 	(void)p2;
@@ -867,7 +867,7 @@ Test(recording, player_seeks_both_ways_on_the_recorded_trajectory, .init = Setup
 	cr_assert_eq(test.hitCount, 1, "the wheel's centre is inside the wheel");
 	int segments = 0;
 	tbDebugDraw draw = tbDefaultDebugDraw();
-	draw.DrawSegment = CountSegment;
+	draw.DrawLineFcn = CountSegment;
 	draw.context = &segments;
 	tbRecPlayer_DrawFrameQueries(player, &draw, -1);
 	cr_assert_geq(segments, 2, "the ray and a hit's normal");

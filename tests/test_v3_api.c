@@ -620,7 +620,7 @@ static int StepRecycled(tbWorldId world, int steps)
 	for (int i = 0; i < steps; ++i)
 	{
 		tbWorld_Step(world, DT, 4);
-		recycled += tbWorld_GetCounters(world).recycledManifolds;
+		recycled += tbWorld_GetCounters(world).recycledContactCount;
 	}
 	return recycled;
 }

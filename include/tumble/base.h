@@ -50,11 +50,13 @@ TB_API tbVersion tbGetVersion(void);
 /// positions in double precision).
 TB_API bool tbIsDoublePrecision(void);
 
-/// Allocation hook. Must return memory aligned to `alignment` bytes (a power of two, at most 64).
-typedef void* tbAllocFcn(unsigned int size, int alignment);
+/// Allocation hook (Box2D v3.2's b2AllocFcn). Must return memory aligned to `alignment` bytes (a
+/// power of two, at most 64).
+typedef void* tbAllocFcn(size_t size, int alignment);
 
-/// Release hook for memory returned by the matching tbAllocFcn.
-typedef void tbFreeFcn(void* memory);
+/// Release hook for memory returned by the matching tbAllocFcn (Box2D v3.2's b2FreeFcn): `size` is
+/// the size that allocation was asked for, so a pool or arena allocator needs no header of its own.
+typedef void tbFreeFcn(void* memory, size_t size);
 
 /// Replace the allocator used for all of Tumble's memory. Pass NULLs to restore malloc/free.
 /// Only call this while no world exists.

@@ -418,8 +418,13 @@ typedef struct tbManifoldPoint
 	float tangentImpulse;	///< accumulated friction impulse (N·s); with central friction (the default) the
 							///< contact's one friction impulse, shared by the points in proportion to
 							///< their normal impulses
-	float maxNormalImpulse; ///< largest normal impulse of the last step (for hit events)
+	float totalNormalImpulse; ///< N·s, all the normal impulse the step applied (Box2D v3.2's): warm starts,
+							  ///< sub-step and relaxing changes and restitution summed over the sub-steps; 0
+							  ///< for a speculative point that never pushed. A resting body's points sum
+							  ///< to about its weight × the step's Δt
 	float normalVelocity;	///< relative normal velocity before the solve (m/s, < 0 approaching)
+	float baseSeparation;	///< m, the separation when the narrow phase last computed this point; kept
+							///< while the manifold is recycled (then `separation` is moved with the bodies)
 	uint16_t id;			///< feature id
 	bool persisted;			///< true if matched to a point of the previous step
 } tbManifoldPoint;
@@ -585,14 +590,14 @@ typedef enum tbTreeSplit
 typedef struct tbDynamicTree
 {
 	struct tbTreeNode* nodes;
-	int root;
-	int nodeCount;
-	int nodeCapacity;
-	int freeList;
-	int proxyCount;
+	int32_t root;
+	int32_t nodeCount;
+	int32_t nodeCapacity;
+	int32_t freeList;
+	int32_t proxyCount;
 	// scratch space for the rebuild
 	struct tbRebuildLeaf* rebuildLeaves;
-	int rebuildCapacity;
+	int32_t rebuildCapacity;
 	tbTreeSplit rebuildSplit; ///< how tbDynamicTree_Rebuild splits; tb_splitBinnedSah from Create
 } tbDynamicTree;
 

@@ -232,6 +232,8 @@ typedef struct tbRayResult
 	tbPos point;
 	tbVec2 normal;
 	float fraction;
+	int nodeVisits; ///< broad-phase tree nodes the cast visited (tbTreeStats)
+	int leafVisits; ///< proxies it tested
 	bool hit;
 } tbRayResult;
 

@@ -109,9 +109,14 @@ typedef struct tbWorldDef
 									///< contactHertz, at most ¼ of the sub-step rate; default 1.75
 	float contactDampingRatio;		///< soft contact damping ratio, default 10
 	bool contactHertzFollowsSubStep; ///< soft: stiffness = min(contactHertz·subSteps/4, ¼ sub-step rate)
-	float maxContactPushSpeed;		///< soft: m/s, largest speed at which overlap is pushed out, default 3
+	float contactSpeed;				///< m/s, largest speed at which overlap is pushed out (Box2D v3.2's name), default 3
 	float maximumLinearSpeed;		///< m/s, clamp on body speed, default 4000
 	bool enableSleep;				///< default true
+	bool enableContinuous;			///< default true; false: no time of impact, fast bodies may tunnel (as
+									///< tbWorld_EnableContinuous(false), which `continuous` is kept for)
+	bool enableContactSoftening;	///< soft: contacts between bodies of very different mass are softened
+									///< towards the lighter body's (Box2D v3.2's option, experimental there
+									///< too); static contacts are not. Default false
 	tbBroadPhaseMethod broadPhase;	///< default auto
 	tbNarrowPhaseMethod narrowPhase; ///< default auto
 	tbContinuousMethod continuous;	///< default: quadratic + conservative advancement
@@ -192,6 +197,12 @@ typedef struct tbBodyDef
 	bool enableContactRecycling; ///< default true; false: its contacts never reuse an old manifold
 								 ///< (tbWorldDef::enableManifoldRecycling), e.g. a character
 	bool isBullet;			///< swept against dynamic and kinematic bodies too (not bullets), default false
+	bool isEnabled;			///< default true; false: created disabled (tbBody_Disable), out of the broad
+							///< phase and the simulation until tbBody_Enable
+	bool allowFastRotation; ///< default false; true: no cap on the rotation per step (wheels; the cap is
+							///< what keeps continuous collision's rotation bound, so a fast-turning
+							///< long shape may tunnel). In a world with joints the guard against
+							///< runaway joint speeds (16 times the cap) still holds it
 	int internalValue;
 } tbBodyDef;
 
@@ -265,6 +276,10 @@ typedef struct tbShapeDef
 	bool updateBodyMass;	   ///< recompute the body's mass, default true
 	bool enableCustomFiltering; ///< ask the world's custom filter about this shape's pairs, default false
 	bool enablePreSolveEvents;	///< call the world's pre-solve callback for this shape's contacts, default false
+	bool invokeContactCreation; ///< default true: a shape on a static body looks for the shapes it overlaps at
+								///< the next step, as a moving shape does; false: its contacts wait until
+								///< another shape moves across it (cheaper for large static worlds built
+								///< where nothing rests)
 	int internalValue;
 } tbShapeDef;
 
@@ -489,7 +504,9 @@ typedef struct tbWheelJointDef
 TB_API tbWheelJointDef tbDefaultWheelJointDef(void);
 
 // ---------------------------------------------------------------------------------------------
-// Events, read after the step. Arrays stay valid until the next step or world destruction.
+// Events, read after the step. Arrays stay valid until the next step or world destruction. The
+// arrays are not const, as in Box2D v3.2, so ported code that keeps them in plain pointers compiles;
+// the library does not read them back, so writing to them changes nothing.
 
 typedef struct tbContactBeginTouchEvent
 {
@@ -512,12 +529,15 @@ typedef struct tbContactEndTouchEvent
 {
 	tbShapeId shapeIdA;
 	tbShapeId shapeIdB;
+	tbContactId contactId; ///< the contact that stopped touching; still valid when it goes on overlapping
+						   ///< (tbContact_IsValid), invalid when it was destroyed with the pair
 } tbContactEndTouchEvent;
 
 typedef struct tbContactHitEvent
 {
 	tbShapeId shapeIdA;
 	tbShapeId shapeIdB;
+	tbContactId contactId; ///< the contact that was hit, for tbContact_GetData while it lives
 	tbPos point;
 	tbVec2 normal;
 	float approachSpeed; ///< m/s, > hitEventThreshold
@@ -525,9 +545,9 @@ typedef struct tbContactHitEvent
 
 typedef struct tbContactEvents
 {
-	const tbContactBeginTouchEvent* beginEvents;
-	const tbContactEndTouchEvent* endEvents;
-	const tbContactHitEvent* hitEvents;
+	tbContactBeginTouchEvent* beginEvents;
+	tbContactEndTouchEvent* endEvents;
+	tbContactHitEvent* hitEvents;
 	int beginCount;
 	int endCount;
 	int hitCount;
@@ -547,8 +567,8 @@ typedef struct tbSensorEndTouchEvent
 
 typedef struct tbSensorEvents
 {
-	const tbSensorBeginTouchEvent* beginEvents;
-	const tbSensorEndTouchEvent* endEvents;
+	tbSensorBeginTouchEvent* beginEvents;
+	tbSensorEndTouchEvent* endEvents;
 	int beginCount;
 	int endCount;
 } tbSensorEvents;
@@ -564,7 +584,7 @@ typedef struct tbBodyMoveEvent
 
 typedef struct tbBodyEvents
 {
-	const tbBodyMoveEvent* moveEvents;
+	tbBodyMoveEvent* moveEvents;
 	int moveCount;
 } tbBodyEvents;
 
@@ -578,7 +598,7 @@ typedef struct tbJointEvent
 
 typedef struct tbJointEvents
 {
-	const tbJointEvent* jointEvents;
+	tbJointEvent* jointEvents;
 	int count;
 } tbJointEvents;
 
@@ -595,14 +615,15 @@ typedef struct tbProfile
 	float solve;	  ///< contact and joint preparation, sub-steps, impulses stored
 	float continuous; ///< time of impact of fast bodies
 	float finalize;	  ///< sleep timers, bounding boxes, proxies moved, move events
-	float events;	  ///< hit events gathered (0 when no contact enables them)
-	float sleep;	  ///< islands put to sleep
-	float sensors;	  ///< sensor overlaps on the final poses, sensor events (0 with no sensor contact)
+	float hitEvents;	///< hit events gathered (0 when no contact enables them)
+	float sensors;		///< sensor overlaps on the final poses, sensor events (0 with no sensor contact)
+	float sleepIslands; ///< islands put to sleep
 
 	// The parts of `solve`, named as Box2D v3.2's profile names them so that the two compare part
 	// by part; the sub-step parts are summed over the sub-steps. With workers the sub-step parts
 	// are timed by the thread that leads the stages, from opening a stage until it is done.
 	float solverSetup;		   ///< solver bodies gathered, contact keys, graph colours
+	float constraints;		   ///< the parts below from prepareConstraints to storeImpulses, summed
 	float prepareConstraints;  ///< contacts and joints prepared (and joint trees built)
 	float integrateVelocities; ///< gravity, forces and damping into the velocities
 	float warmStart;		   ///< the last step's impulses applied again
@@ -611,19 +632,34 @@ typedef struct tbProfile
 	float relaxImpulses;	   ///< the relaxing passes, the last sub-step's extra ones included
 	float applyRestitution;	   ///< restitution after the sub-steps
 	float storeImpulses;	   ///< impulses back to the contacts for the next warm start, joint events
+	float jointEvents;		   ///< the joint events, a part of storeImpulses
+	float bullets;			   ///< the bullets' time of impact, a part of continuous
 	float scatterBodies;	   ///< velocities and transforms back to the bodies, fast bodies marked
 } tbProfile;
 
-/// Counts from the last step.
+/// Counts from the last step (Box2D v3.2's b2Counters, then Tumble's own).
 typedef struct tbCounters
 {
+	int64_t byteCount;		 ///< bytes allocated by Tumble (all worlds: tbGetByteCount)
 	int bodyCount;
 	int shapeCount;
 	int contactCount;		 ///< contacts whose fat boxes overlap
+	int jointCount;
+	int islandCount;		 ///< islands holding a rested body, found by the sleep stage (0 when no body has
+							 ///< rested; Tumble keeps no islands between steps, v3.2 counts all of its own)
+	int stackUsed;			 ///< bytes of the step's scratch memory (the step arena) the last step needed
+	int staticTreeHeight;	 ///< height of the static bodies' tree (0 when another broad phase runs)
+	int treeHeight;			 ///< height of the moving bodies' tree (0 when another broad phase runs)
+	int taskCount;			 ///< tasks handed to the game's task system in the last step (0 without one)
+	int colorCounts[24];	 ///< contact constraints of each graph colour in the last step (tbGetGraphColor);
+							 ///< those beyond the colours are overflowCount
+	int awakeContactCount;	 ///< contacts the collide stage updated (those of awake bodies)
+	int recycledContactCount; ///< touching manifolds recycled (points moved with the bodies, not recomputed)
+
+	// Tumble's own.
+	int overflowCount;		 ///< contact constraints no colour could take (solved one at a time)
 	int touchingCount;		 ///< contacts with manifold points among awake bodies (sleeping islands are not visited)
 	int awakeBodyCount;
-	int islandCount;		 ///< islands holding a rested body, found by the sleep stage (0 when no body has rested)
-	int treeHeight;			 ///< dynamic-tree height (0 when another broad phase runs)
 	int pairCandidates;		 ///< new pairs found by the broad phase this step
 	int proxyMoves;			 ///< proxies whose fat box was updated this step
 	int fastBodies;			 ///< bodies swept by continuous collision this step
@@ -632,12 +668,10 @@ typedef struct tbCounters
 	int toiFailures;		 ///< time-of-impact queries that hit the iteration cap
 	int gjkManifolds;		 ///< manifolds computed by the GJK/EPA path
 	int satManifolds;		 ///< manifolds computed by SAT
-	int recycledManifolds;	 ///< touching manifolds recycled (points moved with the bodies, not recomputed)
-	int byteCount;			 ///< bytes allocated by this world
 } tbCounters;
 
 // ---------------------------------------------------------------------------------------------
-// Debug drawing: the library walks the world and calls these. Any may be NULL.
+// Debug drawing
 
 typedef enum tbHexColor
 {
@@ -793,6 +827,12 @@ typedef enum tbHexColor
 	tb_colorWhiteSmoke = 0xF5F5F5,
 	tb_colorYellow = 0xFFFF00,
 	tb_colorYellowGreen = 0x9ACD32,
+
+	// Box2D v3.2's own colours.
+	tb_colorBox2DRed = 0xDC3132,
+	tb_colorBox2DBlue = 0x30AEBF,
+	tb_colorBox2DGreen = 0x8CC924,
+	tb_colorBox2DYellow = 0xFFEE8C,
 } tbHexColor;
 
 /// The colour a debug view gives graph colour `index` of the contact solver (Box2D v3.2's
@@ -800,34 +840,57 @@ typedef enum tbHexColor
 /// (contacts solved one at a time). Another index is refused through the error hook (black).
 TB_API tbHexColor tbGetGraphColor(int index);
 
+/// Debug drawing (Box2D v3.2's b2DebugDraw): tbWorld_Draw walks the world and calls these with world
+/// coordinates (tbPos and tbWorldTransform: doubles in the large-world build). tbDefaultDebugDraw
+/// sets every function to one that draws nothing, so a game implements only the ones it wants; a
+/// function set to NULL is skipped.
 typedef struct tbDebugDraw
 {
-	/// Closed polygon outline (world vertices).
-	void (*DrawPolygon)(const tbVec2* vertices, int vertexCount, uint32_t color, void* context);
-	/// Filled polygon in its body frame, rounded by radius.
-	void (*DrawSolidPolygon)(tbTransform transform, const tbVec2* vertices, int vertexCount, float radius,
-							 uint32_t color, void* context);
+	/// Closed polygon outline, vertices in the frame of `transform`, counter-clockwise.
+	void (*DrawPolygonFcn)(tbWorldTransform transform, const tbVec2* vertices, int vertexCount, tbHexColor color,
+						   void* context);
+	/// Filled polygon, vertices in the frame of `transform`, rounded by radius.
+	void (*DrawSolidPolygonFcn)(tbWorldTransform transform, const tbVec2* vertices, int vertexCount, float radius,
+								tbHexColor color, void* context);
 	/// Circle outline.
-	void (*DrawCircle)(tbVec2 center, float radius, uint32_t color, void* context);
-	/// Filled circle with a radius line showing the rotation.
-	void (*DrawSolidCircle)(tbTransform transform, float radius, uint32_t color, void* context);
-	/// Filled capsule (world points).
-	void (*DrawSolidCapsule)(tbVec2 p1, tbVec2 p2, float radius, uint32_t color, void* context);
+	void (*DrawCircleFcn)(tbPos center, float radius, tbHexColor color, void* context);
+	/// Filled circle, its centre in the frame of `transform` (whose rotation shows the body's turn).
+	void (*DrawSolidCircleFcn)(tbWorldTransform transform, tbVec2 center, float radius, tbHexColor color, void* context);
+	/// Filled capsule.
+	void (*DrawSolidCapsuleFcn)(tbPos p1, tbPos p2, float radius, tbHexColor color, void* context);
 	/// Line segment.
-	void (*DrawSegment)(tbVec2 p1, tbVec2 p2, uint32_t color, void* context);
+	void (*DrawLineFcn)(tbPos p1, tbPos p2, tbHexColor color, void* context);
+	/// A frame's axes; the length is the game's to choose.
+	void (*DrawTransformFcn)(tbWorldTransform transform, void* context);
 	/// Point of a given size in pixels.
-	void (*DrawPoint)(tbVec2 p, float size, uint32_t color, void* context);
+	void (*DrawPointFcn)(tbPos p, float size, tbHexColor color, void* context);
+	/// Text at a world point.
+	void (*DrawStringFcn)(tbPos p, const char* s, tbHexColor color, void* context);
+	/// Axis-aligned box.
+	void (*DrawBoundsFcn)(tbAABB aabb, tbHexColor color, void* context);
 
-	/// Only shapes overlapping this box are drawn (when useDrawingBounds).
-	tbAABB drawingBounds;
-	bool useDrawingBounds;
-	bool drawShapes;
-	bool drawAABBs;
-	bool drawTree;
-	bool drawContacts;
-	bool drawContactNormals;
-	bool drawJoints; ///< anchors and links of joints, default true
-	void* context;
+	tbAABB drawingBounds; ///< only shapes whose fat boxes overlap this are drawn; default: everything
+	float forceScale;	  ///< m per N of the force lines (contact, friction and joint forces), default 1
+	float jointScale;	  ///< joints are drawn at their drawScale times this, default 1
+	bool drawContacts;	  ///< contact points: new (green), persisted (blue) and speculative (grey)
+	bool drawAnchorA;	  ///< contact points at body A's anchor (default: at body B's)
+	bool drawShapes;	  ///< default true
+	bool drawChainNormals; ///< each chain segment's outward normal from its middle
+	bool drawJoints;	   ///< anchors and links of joints
+	bool drawJointExtras;  ///< with drawJoints: each joint's constraint force at its anchor B
+	bool drawBounds;	   ///< the shapes' fat boxes (the broad phase's)
+	bool drawMass;		   ///< dynamic bodies: the centre of mass frame, its path this step, the mass
+	bool drawBodyNames;	   ///< the names of bodies that have one
+	bool drawGraphColors;  ///< contact points in their constraint graph colour (tbGetGraphColor), when the
+						   ///< last step coloured them
+	bool drawContactFeatures; ///< the feature id of each contact point
+	bool drawContactNormals;  ///< contact normals, with the separation
+	bool drawContactForces;	  ///< contact normal forces (totalNormalImpulse / Δt), with their value
+	bool drawFrictionForces;  ///< friction forces (tangentImpulse / sub-step), with their value
+	bool drawIslands;		  ///< the box of each island of awake bodies (joined by touching contacts and
+							  ///< joints)
+	bool drawTree;			  ///< Tumble: the broad phase's tree nodes
+	void* context;			  ///< passed to every function
 } tbDebugDraw;
 
 TB_API tbDebugDraw tbDefaultDebugDraw(void);

@@ -232,11 +232,20 @@ static int tbAllocateProxy(tbBroadPhase* bp)
 
 int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex, tbProxyType type)
 {
+	return tbBroadPhase_CreateProxyMarked(bp, fatAABB, categoryBits, shapeIndex, type, true);
+}
+
+int tbBroadPhase_CreateProxyMarked(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex,
+								   tbProxyType type, bool markMoved)
+{
 	int key = tbAllocateProxy(bp);
 	bp->table.proxies[key] = (tbBroadProxy){fatAABB, categoryBits, shapeIndex, type, -1, -1, false};
 	bp->table.count += 1;
 	tbAddToMethod(bp, key);
-	tbMarkMoved(bp, key);
+	if (markMoved)
+	{
+		tbMarkMoved(bp, key);
+	}
 	return key;
 }
 
@@ -760,6 +769,11 @@ void tbBroadPhase_RebuildStaticTree(tbBroadPhase* bp)
 int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp)
 {
 	return bp->method == tb_broadPhaseTree ? tbDynamicTree_GetHeight(&bp->movableTree) : 0;
+}
+
+int tbBroadPhase_GetStaticTreeHeight(const tbBroadPhase* bp)
+{
+	return bp->method == tb_broadPhaseTree ? tbDynamicTree_GetHeight(&bp->staticTree) : 0;
 }
 
 void tbBroadPhase_VisitTreeNodes(const tbBroadPhase* bp, tbTreeNodeFcn* fcn, void* context)

@@ -80,6 +80,11 @@ void tbBroadPhase_SetMethod(tbBroadPhase* bp, tbBroadPhaseMethod method);
 
 /// Add a proxy with a fat AABB; returns its key. The proxy counts as moved.
 int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex, tbProxyType type);
+
+/// The same, counted as moved only when `markMoved`: a proxy not counted is paired only once another
+/// proxy overlapping it moves (tbShapeDef::invokeContactCreation false on a static shape).
+int tbBroadPhase_CreateProxyMarked(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex,
+								   tbProxyType type, bool markMoved);
 void tbBroadPhase_DestroyProxy(tbBroadPhase* bp, int proxyKey);
 
 /// Replace a proxy's fat AABB; the proxy counts as moved.
@@ -136,6 +141,8 @@ tbTreeStats tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* i
 
 /// Height of the movable tree, or 0 for other methods.
 int tbBroadPhase_GetTreeHeight(const tbBroadPhase* bp);
+/// The static tree's height (tree method), else 0.
+int tbBroadPhase_GetStaticTreeHeight(const tbBroadPhase* bp);
 /// Rebuild the static tree from scratch (binned SAH) now; the tree method only (the others keep
 /// no static tree).
 void tbBroadPhase_RebuildStaticTree(tbBroadPhase* bp);

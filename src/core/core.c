@@ -85,7 +85,7 @@ void* tbAlloc(int size)
 	}
 	// Round up to the alignment so aligned_alloc accepts the size.
 	int rounded = ((size - 1) | (TB_ALIGNMENT - 1)) + 1;
-	void* p = s_allocFcn != NULL ? s_allocFcn((unsigned int)rounded, TB_ALIGNMENT)
+	void* p = s_allocFcn != NULL ? s_allocFcn((size_t)rounded, TB_ALIGNMENT)
 								 : tbSystemAlignedAlloc(TB_ALIGNMENT, (size_t)rounded);
 	if (p == NULL)
 	{
@@ -104,7 +104,9 @@ void tbFree(void* memory, int size)
 	}
 	if (s_freeFcn != NULL)
 	{
-		s_freeFcn(memory);
+		// The hook hears the size its allocation was asked for: the same rounding as tbAlloc.
+		int rounded = ((size - 1) | (TB_ALIGNMENT - 1)) + 1;
+		s_freeFcn(memory, (size_t)rounded);
 	}
 	else
 	{

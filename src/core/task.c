@@ -118,13 +118,30 @@ static void tbInitLoop(tbLoop* loop, tbRangeTask* task, void* context, int itemC
 	}
 }
 
+static _Thread_local int* s_taskCounter = NULL;
+
+void tbCountTasksInto(int* counter)
+{
+	s_taskCounter = counter;
+}
+
+/// The game's enqueue, counted for tbCounters::taskCount.
+static void* tbEnqueue(const tbWorldDef* def, tbTaskCallback* task, void* taskContext)
+{
+	if (s_taskCounter != NULL)
+	{
+		*s_taskCounter += 1;
+	}
+	return def->enqueueTask(task, taskContext, def->userTaskContext);
+}
+
 /// Enqueue a task for each worker but the caller's (handles[w], NULL when it ran inline).
 static void tbStartHelpers(const tbWorldDef* def, tbLoop* loop, tbLoopWorker* workers, void** handles)
 {
 	for (int w = 1; w < loop->shareCount; ++w)
 	{
 		workers[w] = (tbLoopWorker){loop, (uint32_t)w};
-		handles[w] = def->enqueueTask(tbLoopTask, workers + w, def->userTaskContext);
+		handles[w] = tbEnqueue(def, tbLoopTask, workers + w);
 	}
 }
 
@@ -180,7 +197,7 @@ void tbRunOnWorkers(const tbWorldDef* def, tbTaskCallback* task, void* contexts,
 	for (int i = 1; i < count; ++i)
 	{
 		void* part = (char*)contexts + (size_t)i * (size_t)contextSize;
-		handles[i] = onWorkers ? def->enqueueTask(task, part, def->userTaskContext) : NULL;
+		handles[i] = onWorkers ? tbEnqueue(def, task, part) : NULL;
 		if (onWorkers == false)
 		{
 			task(part); // no task system: the caller runs the parts one after another (they wait on no one)

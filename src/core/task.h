@@ -36,3 +36,8 @@ void tbRunOnWorkers(const tbWorldDef* def, tbTaskCallback* task, void* contexts,
 /// One round of a spin-wait: a pause hint to the processor, and after many rounds a yield of the
 /// thread, so that waiting workers on an oversubscribed machine let the others run.
 void tbSpinPause(int* rounds);
+
+/// Count the tasks this thread hands to the game's task system into *counter from now on (NULL:
+/// stop counting). The world sets it for the thread that steps (tbCounters::taskCount); a thread
+/// local, so worlds stepping on different threads count apart.
+void tbCountTasksInto(int* counter);

@@ -241,11 +241,11 @@ void tbDrawDistanceJoint(const tbDebugDraw* draw, const tbWorld* world, const tb
 {
 	tbVec2 pA = tbToVec2(tbJointWorldFrameA(world, joint).p);
 	tbVec2 pB = tbToVec2(tbJointWorldFrameB(world, joint).p);
-	draw->DrawSegment(pA, pB, tb_colorJoint, draw->context);
-	if (draw->DrawPoint != NULL)
+	tbDrawLine(draw, pA, pB, tb_colorJoint);
+	if (draw->DrawPointFcn != NULL)
 	{
-		draw->DrawPoint(pA, 4.0f, tb_colorJoint, draw->context);
-		draw->DrawPoint(pB, 4.0f, tb_colorJoint, draw->context);
+		tbDrawPointAt(draw, pA, 4.0f, tb_colorJoint);
+		tbDrawPointAt(draw, pB, 4.0f, tb_colorJoint);
 	}
 }
 

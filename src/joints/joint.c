@@ -47,6 +47,7 @@
 #include "world/recording.h"
 
 #include <float.h>
+#include <stdio.h>
 #include <string.h>
 
 // ---------------------------------------------------------------------------------------------
@@ -1345,18 +1346,40 @@ bool tbJointBlocksCollision(const tbWorld* world, int bodyIdA, int bodyIdB)
 // ---------------------------------------------------------------------------------------------
 // Drawing
 
+/// The extras (tbDebugDraw::drawJointExtras): the constraint force of the last step at anchor B,
+/// forceScale metres per newton, with its magnitude, what tbJoint_GetConstraintForce returns.
+static void tbDrawJointForce(tbWorld* world, const tbDebugDraw* draw, const tbJoint* joint)
+{
+	tbVec2 force = tbVec2_zero;
+	float torque = 0.0f;
+	tbGetJointReaction(world, joint, world->jointInvH, &force, &torque);
+	tbVec2 p = tbToVec2(tbJointWorldFrameB(world, joint).p);
+	tbDrawLine(draw, p, tbMulAdd(p, draw->forceScale, force), tb_colorMagenta);
+	char text[48];
+	snprintf(text, sizeof(text), "%.1f N, %.1f N·m", (double)tbLength(force), (double)torque);
+	tbDrawStringAt(draw, p, text, tb_colorWhite);
+}
+
 void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw)
 {
-	if (draw->drawJoints == false || draw->DrawSegment == NULL)
+	if (draw->drawJoints == false)
 	{
 		return;
 	}
 	for (int id = 0; id < world->jointPool.highWater; ++id)
 	{
-		const tbJoint* joint = world->joints + id;
-		if (joint->inUse == false)
+		if (world->joints[id].inUse == false)
 		{
 			continue;
+		}
+		// Drawn at the joint's own size times the view's (tbDebugDraw::jointScale); the joint's
+		// drawScale itself is left as the game set it.
+		tbJoint scaled = world->joints[id];
+		scaled.drawScale *= draw->jointScale;
+		const tbJoint* joint = &scaled;
+		if (draw->drawJointExtras)
+		{
+			tbDrawJointForce(world, draw, joint);
 		}
 		switch (joint->type)
 		{
@@ -1389,7 +1412,7 @@ void tbDrawJoints(tbWorld* world, const tbDebugDraw* draw)
 				// Filter joint: a thin link between the body origins.
 				tbVec2 pA = tbToVec2(world->bodies[joint->edges[0].bodyId].transform.p);
 				tbVec2 pB = tbToVec2(world->bodies[joint->edges[1].bodyId].transform.p);
-				draw->DrawSegment(pA, pB, tb_colorAABB, draw->context);
+				tbDrawLine(draw, pA, pB, tb_colorAABB);
 				break;
 			}
 		}

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "solver/solver_types.h"
+#include "world/draw.h"
 
 /// Set by tbDefault*JointDef(); a def without it was not made by them.
 #define TB_JOINT_DEF_MAGIC 0x7B3A1C20

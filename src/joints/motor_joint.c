@@ -187,9 +187,9 @@ void tbDrawMotorJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoi
 	tbTransform fA = tbRoundTransform(tbJointWorldFrameA(world, joint));
 	tbTransform fB = tbRoundTransform(tbJointWorldFrameB(world, joint));
 	float s = 0.25f * joint->drawScale;
-	draw->DrawSegment(fA.p, tbMulAdd(fA.p, s, tbRot_GetXAxis(fA.q)), tb_colorJoint, draw->context);
-	draw->DrawSegment(fB.p, tbMulAdd(fB.p, s, tbRot_GetXAxis(fB.q)), tb_colorNormal, draw->context);
-	draw->DrawSegment(fA.p, fB.p, tb_colorTree, draw->context);
+	tbDrawLine(draw, fA.p, tbMulAdd(fA.p, s, tbRot_GetXAxis(fA.q)), tb_colorJoint);
+	tbDrawLine(draw, fB.p, tbMulAdd(fB.p, s, tbRot_GetXAxis(fB.q)), tb_colorNormal);
+	tbDrawLine(draw, fA.p, fB.p, tb_colorTree);
 }
 
 // --- getters and setters -----------------------------------------------------------------------

@@ -134,13 +134,13 @@ void tbDrawMoverJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoi
 	const tbBody* b = world->bodies + joint->edges[1].bodyId;
 	tbVec2 cA = tbToVec2(tbTransformWorldPoint(a->transform, a->localCenter));
 	tbVec2 cB = tbToVec2(tbTransformWorldPoint(b->transform, b->localCenter));
-	draw->DrawSegment(cA, cB, tb_colorTree, draw->context);
+	tbDrawLine(draw, cA, cB, tb_colorTree);
 	tbVec2 tip = tbMulAdd(cB, 0.1f * joint->drawScale, joint->mover.linearVelocity);
 	// Both factors are only checked finite (and non-negative): their product may overflow, and an
 	// arrow to infinity is not drawn.
 	if (tbIsValidVec2(tip))
 	{
-		draw->DrawSegment(cB, tip, tb_colorJoint, draw->context);
+		tbDrawLine(draw, cB, tip, tb_colorJoint);
 	}
 }
 

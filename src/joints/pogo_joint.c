@@ -167,10 +167,9 @@ void tbDrawPogoJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoin
 	tbTransform fB = tbRoundTransform(tbJointWorldFrameB(world, joint));
 	tbVec2 axis = tbRot_GetYAxis(fB.q);
 	tbVec2 rest = tbMulSub(fB.p, joint->pogo.restLength, axis);
-	draw->DrawSegment(fA.p, fB.p, tb_colorTree, draw->context);
-	draw->DrawSegment(fB.p, rest, tb_colorJoint, draw->context);
-	draw->DrawSegment(fA.p, tbMulAdd(fA.p, 0.25f * joint->drawScale, joint->pogo.normal), tb_colorNormal,
-					  draw->context);
+	tbDrawLine(draw, fA.p, fB.p, tb_colorTree);
+	tbDrawLine(draw, fB.p, rest, tb_colorJoint);
+	tbDrawLine(draw, fA.p, tbMulAdd(fA.p, 0.25f * joint->drawScale, joint->pogo.normal), tb_colorNormal);
 }
 
 // --- getters and setters -----------------------------------------------------------------------

@@ -258,16 +258,16 @@ void tbDrawPrismaticJoint(const tbDebugDraw* draw, const tbWorld* world, const t
 	{
 		tbVec2 lower = tbMulAdd(fA.p, p->lowerTranslation, axis);
 		tbVec2 upper = tbMulAdd(fA.p, p->upperTranslation, axis);
-		draw->DrawSegment(lower, upper, tb_colorJoint, draw->context);
-		draw->DrawSegment(tbSub(lower, perp), tbAdd(lower, perp), tb_colorJoint, draw->context);
-		draw->DrawSegment(tbSub(upper, perp), tbAdd(upper, perp), tb_colorJoint, draw->context);
+		tbDrawLine(draw, lower, upper, tb_colorJoint);
+		tbDrawLine(draw, tbSub(lower, perp), tbAdd(lower, perp), tb_colorJoint);
+		tbDrawLine(draw, tbSub(upper, perp), tbAdd(upper, perp), tb_colorJoint);
 	}
 	else
 	{
-		draw->DrawSegment(tbMulSub(fA.p, 0.5f * joint->drawScale, axis), tbMulAdd(fA.p, 0.5f * joint->drawScale, axis),
-						  tb_colorJoint, draw->context);
+		tbDrawLine(draw, tbMulSub(fA.p, 0.5f * joint->drawScale, axis), tbMulAdd(fA.p, 0.5f * joint->drawScale, axis),
+						  tb_colorJoint);
 	}
-	draw->DrawSegment(fA.p, pB, tb_colorNormal, draw->context);
+	tbDrawLine(draw, fA.p, pB, tb_colorNormal);
 }
 
 // --- getters and setters -----------------------------------------------------------------------

@@ -244,11 +244,11 @@ void tbDrawRevoluteJoint(const tbDebugDraw* draw, const tbWorld* world, const tb
 {
 	tbTransform fB = tbRoundTransform(tbJointWorldFrameB(world, joint));
 	float radius = 0.1f * joint->drawScale;
-	if (draw->DrawCircle != NULL)
+	if (draw->DrawCircleFcn != NULL)
 	{
-		draw->DrawCircle(fB.p, radius, tb_colorJoint, draw->context);
+		tbDrawCircleAt(draw, fB.p, radius, tb_colorJoint);
 	}
-	draw->DrawSegment(fB.p, tbMulAdd(fB.p, radius, tbRot_GetXAxis(fB.q)), tb_colorJoint, draw->context);
+	tbDrawLine(draw, fB.p, tbMulAdd(fB.p, radius, tbRot_GetXAxis(fB.q)), tb_colorJoint);
 }
 
 // --- getters and setters -----------------------------------------------------------------------

@@ -162,10 +162,8 @@ void tbDrawWeldJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoin
 	tbTransform fA = tbRoundTransform(tbJointWorldFrameA(world, joint));
 	tbTransform fB = tbRoundTransform(tbJointWorldFrameB(world, joint));
 	float s = 0.25f * joint->drawScale;
-	draw->DrawSegment(tbMulSub(fA.p, s, tbRot_GetXAxis(fA.q)), tbMulAdd(fA.p, s, tbRot_GetXAxis(fA.q)), tb_colorJoint,
-					  draw->context);
-	draw->DrawSegment(tbMulSub(fB.p, s, tbRot_GetYAxis(fB.q)), tbMulAdd(fB.p, s, tbRot_GetYAxis(fB.q)), tb_colorNormal,
-					  draw->context);
+	tbDrawLine(draw, tbMulSub(fA.p, s, tbRot_GetXAxis(fA.q)), tbMulAdd(fA.p, s, tbRot_GetXAxis(fA.q)), tb_colorJoint);
+	tbDrawLine(draw, tbMulSub(fB.p, s, tbRot_GetYAxis(fB.q)), tbMulAdd(fB.p, s, tbRot_GetYAxis(fB.q)), tb_colorNormal);
 }
 
 // --- getters and setters -----------------------------------------------------------------------

@@ -172,11 +172,11 @@ void tbDrawWheelJoint(const tbDebugDraw* draw, const tbWorld* world, const tbJoi
 	tbVec2 axis = tbRot_GetXAxis(fA.q);
 	float lower = w->enableLimit ? w->lowerTranslation : -0.5f * joint->drawScale;
 	float upper = w->enableLimit ? w->upperTranslation : 0.5f * joint->drawScale;
-	draw->DrawSegment(tbMulAdd(fA.p, lower, axis), tbMulAdd(fA.p, upper, axis), tb_colorJoint, draw->context);
-	draw->DrawSegment(fA.p, pB, tb_colorNormal, draw->context);
-	if (draw->DrawPoint != NULL)
+	tbDrawLine(draw, tbMulAdd(fA.p, lower, axis), tbMulAdd(fA.p, upper, axis), tb_colorJoint);
+	tbDrawLine(draw, fA.p, pB, tb_colorNormal);
+	if (draw->DrawPointFcn != NULL)
 	{
-		draw->DrawPoint(pB, 4.0f, tb_colorJoint, draw->context);
+		tbDrawPointAt(draw, pB, 4.0f, tb_colorJoint);
 	}
 }
 

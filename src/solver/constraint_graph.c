@@ -158,6 +158,54 @@ static bool tbSameColorInputs(const tbStepContext* context, int partitionRequest
 		   memcmp(cache->slots, context->world->cache.solverSlots, sizeof(int) * (size_t)n) == 0;
 }
 
+bool tbGetContactGraphColors(const tbWorld* world, int* colors, int counts[TB_GRAPH_COLOR_COUNT + 1])
+{
+	const tbContactColorCache* cache = world->cache.contactColorCache;
+	int n = world->cache.solverContactCount;
+	// Kept colours describe the solver contacts only if this step made or reused them.
+	if (cache == NULL || world->cache.colorCacheStep != world->stepIndex || cache->count != n || n == 0)
+	{
+		return false;
+	}
+	if (counts != NULL)
+	{
+		memcpy(counts, cache->counts, sizeof(cache->counts));
+	}
+	if (colors == NULL)
+	{
+		return true;
+	}
+	// The blocks are laid out colour after colour (tbLayOutColors): a lane's block says its colour.
+	int blockStart[TB_GRAPH_COLOR_COUNT + 1];
+	int partitions = tbMaxInt(cache->partitionCount, 1);
+	int blockCount = 0;
+	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
+	{
+		blockStart[k] = blockCount;
+		for (int p = 0; p < partitions; ++p)
+		{
+			blockCount += (cache->partitionCounts.n[k][p] + TB_SIMD_WIDTH - 1) / TB_SIMD_WIDTH;
+		}
+	}
+	blockStart[TB_GRAPH_COLOR_COUNT] = blockCount;
+	for (int i = 0; i < n; ++i)
+	{
+		int location = cache->locationById[i];
+		int color = TB_GRAPH_COLOR_COUNT;
+		if (location >= 0)
+		{
+			int block = location / TB_SIMD_WIDTH;
+			color = 0;
+			while (color + 1 < TB_GRAPH_COLOR_COUNT && blockStart[color + 1] <= block)
+			{
+				color += 1;
+			}
+		}
+		colors[i] = color;
+	}
+	return true;
+}
+
 const tbContactKey* tbSteadyContactKeys(const tbStepContext* context)
 {
 	const tbWorld* world = context->world;

@@ -17,5 +17,10 @@ void tbColorJoints(tbStepContext* context);
 /// Release the joint order kept from the last step (world destruction).
 void tbDestroyJointOrderCache(tbWorld* world);
 void tbDestroyContactColorCache(tbWorld* world);
+/// The graph colour of each solver contact of the last step, in contact-id order
+/// (world->cache.solverContactsById): 0 .. TB_GRAPH_COLOR_COUNT − 1, or TB_GRAPH_COLOR_COUNT for the
+/// overflow, and how many had each (either pointer may be NULL). False when the last step did not
+/// colour its contacts (the scalar solver, or no touching contact): nothing is written then.
+bool tbGetContactGraphColors(const tbWorld* world, int* colors, int counts[TB_GRAPH_COLOR_COUNT + 1]);
 /// Forget the blocks (their memory is the step arena's).
 void tbReleaseColors(tbStepContext* context);

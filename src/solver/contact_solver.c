@@ -153,7 +153,7 @@ static void tbIntegratedVelocity(const tbStepContext* context, int index, tbVec2
 	const tbSolverMotion* m = context->motions + index;
 	sb.linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb.linearVelocity, m->linearDelta));
 	sb.angularVelocity = m->angularDamping * (sb.angularVelocity + m->angularDelta);
-	tbClampSpeeds(context, &sb); // as the integration does (gravity 3e38 m/s²: 5e36 m/s after one step)
+	tbClampSpeeds(context, &sb, index); // as the integration does (gravity 3e38 m/s²: 5e36 m/s after one step)
 	*v = sb.linearVelocity;
 	*w = sb.angularVelocity;
 }
@@ -271,6 +271,25 @@ static inline tbSoftness tbSettledSoftness(const tbStepContext* context, tbSoftn
 	return softness;
 }
 
+/// Contact softening (tbWorldDef::enableContactSoftening, Box2D v3.2's experimental option): a pair
+/// of dynamic bodies gets its stiffness and damping ratio scaled by the lighter body's mass over the
+/// heavier's, at least one half, from softeningHertz. A light body on a heavy one then pushes the
+/// heavy one less hard out of overlap, which is where large mass ratios jitter. The pair does not
+/// settle (the settling ramp stiffens, the opposite of what was asked for).
+static inline tbSoftness tbSoftenedSoftness(const tbStepContext* context, float invMassA, float invMassB)
+{
+	float ratio = 1.0f;
+	if (invMassA < invMassB)
+	{
+		ratio = tbMaxFloat(0.5f, invMassA / invMassB); // A is the heavier: mB / mA
+	}
+	else if (invMassB < invMassA)
+	{
+		ratio = tbMaxFloat(0.5f, invMassB / invMassA);
+	}
+	return tbMakeSoftness(ratio * context->softeningHertz, ratio * context->dampingRatio, context->h);
+}
+
 static bool tbMovesBoth(float invMassA, float invIA, float invMassB, float invIB)
 {
 	return (invMassA > 0.0f || invIA > 0.0f) && (invMassB > 0.0f || invIB > 0.0f);
@@ -325,6 +344,11 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 	c->invIB = massB->invI;
 	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
 	c->softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+	bool softened = dynamicPair && context->contactSoftening;
+	if (softened)
+	{
+		c->softness = tbSoftenedSoftness(context, c->invMassA, c->invMassB);
+	}
 
 	const tbManifold* manifold = &contact->manifold;
 	tbVec2 normal = manifold->normal;
@@ -354,7 +378,7 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 		cp->baseSeparation = mp->separation - tbDot(tbSub(rB, rA), normal);
 		cp->normalImpulse = warmScale * mp->normalImpulse;
 		cp->tangentImpulse = warmScale * mp->tangentImpulse;
-		cp->maxNormalImpulse = 0.0f;
+		cp->totalNormalImpulse = 0.0f;
 
 		float kNormal = tbInverseEffectiveMass(c, rA, rB, normal);
 		float kTangent = tbInverseEffectiveMass(c, rA, rB, tangent);
@@ -372,7 +396,7 @@ static void tbPrepareConstraint(tbStepContext* context, tbContact* contact, tbCo
 		tbSetCentralFriction(c, tangent);
 	}
 
-	if (context->settleSteps > 0.0f)
+	if (context->settleSteps > 0.0f && softened == false)
 	{
 		tbSettleSoftness(context, c, contact->touchingSteps);
 	}
@@ -479,6 +503,11 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 	float invMassB = massB->invMass, invIB = massB->invI;
 	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
 	tbSoftness softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+	bool softened = dynamicPair && context->contactSoftening;
+	if (softened)
+	{
+		softness = tbSoftenedSoftness(context, invMassA, invMassB);
+	}
 
 	tbManifold* manifold = &contact->manifold;
 	tbVec2 normal = manifold->normal;
@@ -514,7 +543,7 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 			tbSetLaneW(&wp->baseSeparation, lane, 0.0f);
 			tbSetLaneW(&block->impulses[j].normalImpulse, lane, 0.0f);
 			tbSetLaneW(&block->impulses[j].tangentImpulse, lane, 0.0f);
-			tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
+			tbSetLaneW(&block->impulses[j].totalNormalImpulse, lane, 0.0f);
 			tbSetLaneW(&wp->normalMass, lane, 0.0f);
 			tbSetLaneW(&wp->tangentMass, lane, 0.0f);
 			continue;
@@ -532,7 +561,7 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 		tbSetLaneW(&wp->baseSeparation, lane, baseSeparation);
 		tbSetLaneW(&block->impulses[j].normalImpulse, lane, warmScale * mp->normalImpulse);
 		tbSetLaneW(&block->impulses[j].tangentImpulse, lane, warmScale * mp->tangentImpulse);
-		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
+		tbSetLaneW(&block->impulses[j].totalNormalImpulse, lane, 0.0f);
 		tbSetLaneW(&wp->normalMass, lane, kNormal > 0.0f ? 1.0f / kNormal : 0.0f);
 		tbSetLaneW(&wp->tangentMass, lane, kTangent > 0.0f ? 1.0f / kTangent : 0.0f);
 		tbVec2 vA = tbAdd(sA->linearVelocity, tbCrossSV(sA->angularVelocity, rA));
@@ -558,7 +587,7 @@ bool tbPrepareWideLane(tbStepContext* context, tbContact* contact, tbContactKey 
 		tbSetLaneW(&block->frictionAnchorBY, lane, row.anchorB.y);
 	}
 
-	if (context->settleSteps > 0.0f && tbMovesBoth(invMassA, invIA, invMassB, invIB) && deep == false)
+	if (context->settleSteps > 0.0f && softened == false && tbMovesBoth(invMassA, invIA, invMassB, invIB) && deep == false)
 	{
 		softness = tbSettledSoftness(context, softness, contact->touchingSteps);
 	}
@@ -605,7 +634,7 @@ enum
 	tb_anchorBX = 2,
 	tb_anchorBY = 3,
 	tb_pointSeparation = 0, ///< tbManifoldPoint from separation: separation, normalImpulse, tangentImpulse,
-	tb_pointNormalImpulse = 1, ///< then maxNormalImpulse (not used)
+	tb_pointNormalImpulse = 1, ///< then totalNormalImpulse (not used)
 	tb_pointTangentImpulse = 2,
 };
 
@@ -866,7 +895,7 @@ static int tbWriteBatchLane(const tbStepContext* context, const tbLaneBatch* bat
 		tbSetLaneW(&wp->baseSeparation, lane, p->baseSeparation[l]);
 		tbSetLaneW(&block->impulses[j].normalImpulse, lane, p->normalImpulse[l]);
 		tbSetLaneW(&block->impulses[j].tangentImpulse, lane, p->tangentImpulse[l]);
-		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, 0.0f);
+		tbSetLaneW(&block->impulses[j].totalNormalImpulse, lane, 0.0f);
 		tbSetLaneW(&wp->normalMass, lane, p->normalMass[l]);
 		tbSetLaneW(&wp->tangentMass, lane, p->tangentMass[l]);
 		if (j < count)
@@ -887,8 +916,13 @@ static int tbWriteBatchLane(const tbStepContext* context, const tbLaneBatch* bat
 
 	bool dynamicPair = (key.flags & tb_keyDynamicA) != 0u && (key.flags & tb_keyDynamicB) != 0u;
 	tbSoftness softness = dynamicPair ? context->contactSoftness : context->staticSoftness;
+	bool softened = dynamicPair && context->contactSoftening;
+	if (softened)
+	{
+		softness = tbSoftenedSoftness(context, r->invMass[0][0][l], r->invMass[1][0][l]);
+	}
 	bool movesBoth = tbMovesBoth(r->invMass[0][0][l], r->invMass[0][1][l], r->invMass[1][0][l], r->invMass[1][1][l]);
-	if (context->settleSteps > 0.0f && movesBoth && (r->deep & (1 << l)) == 0)
+	if (context->settleSteps > 0.0f && softened == false && movesBoth && (r->deep & (1 << l)) == 0)
 	{
 		softness = tbSettledSoftness(context, softness, contact->touchingSteps);
 	}
@@ -1139,7 +1173,7 @@ static inline bool tbConstraintBounces(const tbStepContext* context, int i)
 	return context->constraints[i].restitution != 0.0f;
 }
 
-static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstraint* c, bool centralFriction)
+static void tbWarmStartConstraint(tbSolverBody* bodies, tbContactConstraint* c, bool centralFriction)
 {
 	tbSolverBody* sA = bodies + c->indexA;
 	tbSolverBody* sB = bodies + c->indexB;
@@ -1150,7 +1184,8 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 		// normal impulses at the points, the friction impulse at the centre of pressure
 		for (int j = 0; j < c->pointCount; ++j)
 		{
-			const tbContactConstraintPoint* cp = c->points + j;
+			tbContactConstraintPoint* cp = c->points + j;
+			cp->totalNormalImpulse += cp->normalImpulse; // the warm start applies it again
 			tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, tbMulSV(cp->normalImpulse, normal));
 		}
 		if (c->pointCount > 0)
@@ -1163,7 +1198,8 @@ static void tbWarmStartConstraint(tbSolverBody* bodies, const tbContactConstrain
 	{
 		for (int j = 0; j < c->pointCount; ++j)
 		{
-			const tbContactConstraintPoint* cp = c->points + j;
+			tbContactConstraintPoint* cp = c->points + j;
+			cp->totalNormalImpulse += cp->normalImpulse; // the warm start applies it again
 			tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, normal), tbMulSV(cp->tangentImpulse, tangent));
 			tbApplyContactImpulse(sA, sB, c, cp->anchorA, cp->anchorB, P);
 		}
@@ -1272,7 +1308,7 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 		float overlapImpulseScale = 0.0f;
 		if (policy == tb_biasSoft)
 		{
-			overlapBias = tbMaxFloat(c->softness.biasRate * s, -context->maxContactPushSpeed);
+			overlapBias = tbMaxFloat(c->softness.biasRate * s, -context->contactSpeed);
 			overlapMassScale = c->softness.massScale;
 			overlapImpulseScale = c->softness.impulseScale;
 		}
@@ -1293,7 +1329,7 @@ static inline void tbSolveConstraint(tbContactConstraint* c, tbSolverBody* sA, t
 		float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
 		impulse = newImpulse - cp->normalImpulse;
 		cp->normalImpulse = newImpulse;
-		cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
+		cp->totalNormalImpulse += impulse;
 
 		tbVec2 P = tbMulSV(impulse, normal);
 		vA = tbMulSub(vA, mA, P);
@@ -1501,7 +1537,7 @@ void tbApplyRestitution(tbStepContext* context)
 		{
 			tbContactConstraintPoint* cp = c->points + j;
 			// Only real impacts: fast enough and the point actually pushed during the step.
-			if (!(cp->relativeVelocity <= -threshold) || cp->maxNormalImpulse == 0.0f) // NaN: no impact
+			if (!(cp->relativeVelocity <= -threshold) || cp->totalNormalImpulse == 0.0f) // NaN: no impact
 			{
 				continue;
 			}
@@ -1512,7 +1548,7 @@ void tbApplyRestitution(tbStepContext* context)
 			float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
 			impulse = newImpulse - cp->normalImpulse;
 			cp->normalImpulse = newImpulse;
-			cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
+			cp->totalNormalImpulse += impulse;
 			tbApplyContactImpulse(sA, sB, c, rA, rB, tbMulSV(impulse, normal));
 		}
 	}
@@ -1579,7 +1615,7 @@ static void tbStoreImpulsesTask(int start, int end, uint32_t workerIndex, void* 
 			tbManifoldPoint* mp = manifold->points + j;
 			mp->normalImpulse = cp->normalImpulse;
 			mp->tangentImpulse = cp->tangentImpulse;
-			mp->maxNormalImpulse = cp->maxNormalImpulse;
+			mp->totalNormalImpulse = cp->totalNormalImpulse;
 		}
 		if (context->centralFriction && c->pointCount > 0)
 		{

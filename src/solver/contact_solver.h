@@ -112,7 +112,7 @@ static inline void tbPackWideLane(tbWideContactConstraint* block, int lane, cons
 		tbSetLaneW(&wp->baseSeparation, lane, cp->baseSeparation);
 		tbSetLaneW(&block->impulses[j].normalImpulse, lane, cp->normalImpulse);
 		tbSetLaneW(&block->impulses[j].tangentImpulse, lane, cp->tangentImpulse);
-		tbSetLaneW(&block->impulses[j].maxNormalImpulse, lane, cp->maxNormalImpulse);
+		tbSetLaneW(&block->impulses[j].totalNormalImpulse, lane, cp->totalNormalImpulse);
 		tbSetLaneW(&wp->normalMass, lane, cp->normalMass);
 		tbSetLaneW(&wp->tangentMass, lane, cp->tangentMass);
 	}
@@ -147,7 +147,7 @@ static inline void tbLoadWideImpulses(const tbStepContext* context, int location
 		const tbWideImpulses* ip = block->impulses + j;
 		points[j].normalImpulse = tbGetLaneW(&ip->normalImpulse, lane);
 		points[j].tangentImpulse = tbGetLaneW(&ip->tangentImpulse, lane);
-		points[j].maxNormalImpulse = tbGetLaneW(&ip->maxNormalImpulse, lane);
+		points[j].totalNormalImpulse = tbGetLaneW(&ip->totalNormalImpulse, lane);
 	}
 	if (context->centralFriction && pointCount > 0)
 	{

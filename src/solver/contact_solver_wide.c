@@ -49,7 +49,7 @@ void tbUnpackWideConstraint(tbStepContext* context, int constraintIndex)
 		const tbWideImpulses* ip = block->impulses + j;
 		c->points[j].normalImpulse = tbGetLaneW(&ip->normalImpulse, lane);
 		c->points[j].tangentImpulse = tbGetLaneW(&ip->tangentImpulse, lane);
-		c->points[j].maxNormalImpulse = tbGetLaneW(&ip->maxNormalImpulse, lane);
+		c->points[j].totalNormalImpulse = tbGetLaneW(&ip->totalNormalImpulse, lane);
 	}
 	if (context->wideRolling != NULL)
 	{
@@ -216,7 +216,7 @@ static TB_FORCE_INLINE void tbSolveRollingW(const tbWideContactConstraint* c, tb
 
 // `central`: the friction impulse is one, at the block's friction anchors (central friction,
 // contact_solver.c), applied after the points' normal impulses as the scalar warm start does.
-static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* c, const tbWideRolling* rolling,
+static TB_FORCE_INLINE void tbWarmStartWideBlock(tbWideContactConstraint* c, const tbWideRolling* rolling,
 												 tbSolverBody* bodies, bool shared, bool central)
 {
 	tbWideBody a, b;
@@ -228,7 +228,8 @@ static TB_FORCE_INLINE void tbWarmStartWideBlock(const tbWideContactConstraint* 
 	for (int j = 0; j < 2; ++j)
 	{
 		const tbWideContactPoint* cp = c->points + j;
-		const tbWideImpulses* ip = c->impulses + j;
+		tbWideImpulses* ip = c->impulses + j;
+		ip->totalNormalImpulse = tbAddW(ip->totalNormalImpulse, ip->normalImpulse); // applied again
 		tbFloatW px, py;
 		if (central)
 		{
@@ -301,7 +302,7 @@ void tbWarmStartContactsWide(tbStepContext* context)
 typedef struct tbWidePass
 {
 	tbFloatW inv_h;
-	tbFloatW minPushBias;	///< −maxContactPushSpeed
+	tbFloatW minPushBias;	///< −contactSpeed
 	tbFloatW baumgarteRate; ///< TB_BAUMGARTE/h
 	tbFloatW minBaumgarteBias; ///< −maxLinearSpeed
 	tbFloatW slop;			///< TB_LINEAR_SLOP
@@ -376,7 +377,7 @@ static TB_FORCE_INLINE void tbSolveNormalW(tbWideContactPoint* cp, tbWideImpulse
 	tbFloatW newImpulse = tbMaxW(tbAddW(ip->normalImpulse, impulse), zero);
 	impulse = tbSubW(newImpulse, ip->normalImpulse);
 	ip->normalImpulse = newImpulse;
-	ip->maxNormalImpulse = tbMaxW(ip->maxNormalImpulse, newImpulse);
+	ip->totalNormalImpulse = tbAddW(ip->totalNormalImpulse, impulse);
 
 	tbApplyImpulseW(a, b, c, cp->anchorAX, cp->anchorAY, cp->anchorBX, cp->anchorBY, tbMulW(impulse, c->normalX),
 					tbMulW(impulse, c->normalY));
@@ -485,7 +486,7 @@ void tbSolveWideRange(tbStepContext* context, tbBiasPolicy policy, int start, in
 {
 	tbWidePass pass;
 	pass.inv_h = tbSplatW(context->inv_h);
-	pass.minPushBias = tbSplatW(-context->maxContactPushSpeed);
+	pass.minPushBias = tbSplatW(-context->contactSpeed);
 	pass.baumgarteRate = tbSplatW(TB_BAUMGARTE * context->inv_h);
 	pass.minBaumgarteBias = tbSplatW(-context->maxLinearSpeed);
 	pass.slop = tbSplatW(TB_LINEAR_SLOP);

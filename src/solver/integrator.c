@@ -56,9 +56,13 @@ static void tbClampSpeedsTo(tbSolverBody* sb, float maxLinearSpeed, float maxAng
 	sb->angularVelocity = w;
 }
 
-void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb)
+void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb, int index)
 {
-	tbClampSpeedsTo(sb, context->maxLinearSpeed, context->maxAngularSpeed);
+	// A body that allows fast rotation (a wheel) keeps its spin; only NaN is cleared. Continuous
+	// collision's rotation bound then does not hold for it, which costs nothing for a round shape
+	// (it looks the same at any angle), as Box2D v3.2 says of the option.
+	bool fast = context->fastRotation != NULL && context->fastRotation[index] != 0;
+	tbClampSpeedsTo(sb, context->maxLinearSpeed, fast ? FLT_MAX : context->maxAngularSpeed);
 }
 
 // The solve may leave a body far faster than the limits the integration of velocities keeps: a
@@ -94,7 +98,7 @@ void tbIntegrateVelocitiesRange(tbStepContext* context, int start, int end)
 		const tbSolverMotion* m = context->motions + i;
 		sb->linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
 		sb->angularVelocity = m->angularDamping * (sb->angularVelocity + m->angularDelta);
-		tbClampSpeeds(context, sb);
+		tbClampSpeeds(context, sb, i);
 	}
 }
 
@@ -106,7 +110,7 @@ void tbIntegratePositions(tbStepContext* context)
 void tbIntegratePositionsRange(tbStepContext* context, int start, int end)
 {
 	float h = context->h;
-	// Only joints can ask for unbounded speeds (contacts push out at most maxContactPushSpeed and
+	// Only joints can ask for unbounded speeds (contacts push out at most contactSpeed and
 	// rebound at most 2·maxLinearSpeed, docs/limits.md): a world without them skips the guard, a
 	// squared speed and two compares per body and sub-step that a pile of boxes never needs.
 	bool guard = context->world->jointPool.count > 0;

@@ -4,8 +4,9 @@
 #include "solver_types.h"
 
 /// |v| ≤ maximumLinearSpeed (without overflow for any finite or infinite v) and |ω| ≤ the
-/// per-step rotation bound; applied to the velocities a step starts from and after each update.
-void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb);
+/// per-step rotation bound (no bound on ω for solver body `index` when it allows fast rotation);
+/// applied to the velocities a step starts from and after each update.
+void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb, int index);
 
 /// Zero the components of v along the locked axes (1: x, 2: y; tbStepContext::linearLocks).
 static inline void tbApplyLinearLocks(uint8_t locks, tbVec2* v)

@@ -50,6 +50,11 @@ static void tbAllocateStep(tbStepContext* context, int bodyCount, int constraint
 	{
 		context->linearLocks = tbArenaAlloc(&context->world->stepArena, bodyCount + 1);
 	}
+	context->fastRotation = NULL;
+	if (context->world->fastRotationCount > 0)
+	{
+		context->fastRotation = tbArenaAlloc(&context->world->stepArena, bodyCount + 1);
+	}
 }
 
 
@@ -71,7 +76,11 @@ static void tbGatherBodiesTask(int start, int end, uint32_t workerIndex, void* t
 		tbSolverBody* sb = context->bodies + i;
 		sb->linearVelocity = body->linearVelocity;
 		sb->angularVelocity = body->fixedRotation ? 0.0f : body->angularVelocity;
-		tbClampSpeeds(context, sb); // a body set to 3e38 m/s approaches its contacts at the clamped speed
+		if (context->fastRotation != NULL)
+		{
+			context->fastRotation[i] = body->allowFastRotation ? 1 : 0; // read by tbClampSpeeds below
+		}
+		tbClampSpeeds(context, sb, i); // a body set to 3e38 m/s approaches its contacts at the clamped speed
 		sb->padding = 0.0f;
 		sb->deltaPosition = tbVec2_zero;
 		sb->deltaRotation = tbRot_identity;
@@ -236,7 +245,7 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	context.subStepCount = subStepCount;
 	context.h = timeStep / (float)subStepCount;
 	context.inv_h = 1.0f / context.h;
-	context.maxContactPushSpeed = world->def.maxContactPushSpeed;
+	context.contactSpeed = world->def.contactSpeed;
 	context.maxLinearSpeed = world->def.maximumLinearSpeed;
 	context.maxAngularSpeed = TB_MAX_ROTATION / timeStep;
 	context.enableWarmStarting = world->def.enableWarmStarting;
@@ -278,7 +287,9 @@ void tbSolveStage(tbWorld* world, float timeStep, int subStepCount)
 	tbApplyRestitution(&context);
 	tbProfileLap(&profile->applyRestitution, &context.lapTicks);
 	tbStoreImpulses(&context);
+	uint64_t jointTicks = tbGetTicks();
 	tbFinishJoints(&context); // joint events; joints keep their own impulses
+	profile->jointEvents = tbGetMilliseconds(jointTicks); // a part of storeImpulses
 	if (context.wideConstraints != NULL)
 	{
 		tbReleaseColors(&context);

@@ -124,6 +124,7 @@ static void tbSetupBlock(tbNGSConstraint* info, tbContactConstraint* c, tbStepCo
 		tbVec2 P = tbAdd(tbMulSV(cp->normalImpulse, n), tbMulSV(cp->tangentImpulse, tbRightPerp(n)));
 		tbApplyContactImpulse(context->bodies + c->indexA, context->bodies + c->indexB, c, cp->anchorA,
 							  cp->anchorB, tbNeg(P));
+		cp->totalNormalImpulse -= cp->normalImpulse;
 		cp->normalImpulse = 0.0f;
 		cp->tangentImpulse = 0.0f;
 	}
@@ -225,8 +226,8 @@ static void tbSolveBlock(tbContactConstraint* c, const tbNGSConstraint* info, tb
 	*wB += c->invIB * (tbCross(r1B, P1) + tbCross(r2B, P2));
 	cp1->normalImpulse = x1;
 	cp2->normalImpulse = x2;
-	cp1->maxNormalImpulse = tbMaxFloat(cp1->maxNormalImpulse, x1);
-	cp2->maxNormalImpulse = tbMaxFloat(cp2->maxNormalImpulse, x2);
+	cp1->totalNormalImpulse += d1;
+	cp2->totalNormalImpulse += d2;
 }
 
 // One velocity iteration over all contacts, Box2D 2.4's order: friction, then normal.
@@ -313,7 +314,7 @@ static void tbSolveVelocityConstraints(tbStepContext* context, const tbNGSConstr
 				float newImpulse = tbMaxFloat(cp->normalImpulse + impulse, 0.0f);
 				impulse = newImpulse - cp->normalImpulse;
 				cp->normalImpulse = newImpulse;
-				cp->maxNormalImpulse = tbMaxFloat(cp->maxNormalImpulse, newImpulse);
+				cp->totalNormalImpulse += impulse;
 				tbVec2 P = tbMulSV(impulse, normal);
 				vA = tbMulSub(vA, mA, P);
 				wA -= iA * tbCross(rA, P);

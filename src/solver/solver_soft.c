@@ -4,7 +4,7 @@
 // Overlap s < 0 is treated as a stiff spring-damper rather than a rigid constraint:
 //     C = s, Ċ = J·v, J = [−n, −rA × n, n, rB × n],
 //     m_eff = 1/(mA⁻¹ + mB⁻¹ + IA⁻¹(rA × n)² + IB⁻¹(rB × n)²),
-//     λ = −m_eff·massScale·(Ċ + max(biasRate·C, −maxContactPushSpeed)) − impulseScale·λ_acc.
+//     λ = −m_eff·massScale·(Ċ + max(biasRate·C, −contactSpeed)) − impulseScale·λ_acc.
 // Solving the spring implicitly over the sub-step h (ω = 2π·hertz, ζ = damping ratio) gives
 // biasRate = ω/(2ζ + hω), massScale = hω(2ζ + hω)/(1 + hω(2ζ + hω)), impulseScale = 1/(1 + hω(2ζ + hω))
 // (tbMakeSoftness). A spring whose period is ≥ 4 sub-steps stays stable however heavy the
@@ -108,6 +108,10 @@ void tbSoftPrepare(tbStepContext* context)
 	context->settleSteps = TB_SOFT_SETTLE_TIME / context->timeStep;
 	context->deepOverlap = TB_SOFT_DEEP_OVERLAP;
 	context->dampingRatio = def->contactDampingRatio;
+	// Box2D v3.2's contact softening caps the stiffness lower, at an eighth of the sub-step rate,
+	// before scaling it down by the mass ratio (contact_solver.c, tbSoftenedSoftness).
+	context->contactSoftening = def->enableContactSoftening;
+	context->softeningHertz = tbMinFloat(hertz, 0.125f * context->inv_h);
 }
 
 int tbSoftRelaxIterations(const tbStepContext* context, int subStepIndex)

@@ -90,7 +90,8 @@ typedef struct tbContactConstraintPoint
 							  ///< dot(pB − pA, normal) to get the linearised separation
 	float normalImpulse;	  ///< N·s, accumulated over the sub-step (warm start carries it)
 	float tangentImpulse;	  ///< N·s, accumulated friction impulse
-	float maxNormalImpulse;	  ///< N·s, largest accumulated normal impulse in the step
+	float totalNormalImpulse; ///< N·s, the normal impulse the step applied (tbManifoldPoint's); 0: the point
+							  ///< never pushed (restitution skips it)
 	float normalMass;		  ///< kg, 1/K along the normal
 	float tangentMass;		  ///< kg, 1/K along the tangent
 	float relativeVelocity;	  ///< m/s, relative normal velocity at the start of the step (< 0 approaching)
@@ -155,7 +156,7 @@ typedef struct tbWideImpulses
 {
 	tbFloatW normalImpulse;
 	tbFloatW tangentImpulse;
-	tbFloatW maxNormalImpulse; ///< the largest normal impulse of the step (hit events)
+	tbFloatW totalNormalImpulse; ///< the normal impulse the step applied (tbManifoldPoint's)
 } tbWideImpulses;
 
 /// The rest of one manifold point of TB_SIMD_WIDTH contacts, lane by lane (structure of arrays): 32
@@ -224,6 +225,8 @@ typedef struct tbStepContext
 	tbSolverMotion* motions;
 	tbSolverMass* masses; ///< bodyCount + 1, as bodies
 	uint8_t* linearLocks; ///< per solver body: 1 x locked, 2 y locked (motion locks); NULL when no body has one
+	uint8_t* fastRotation; ///< per solver body: 1 when its spin is not capped (tbBodyDef::allowFastRotation);
+						   ///< NULL when no body allows it
 	int bodyCount;
 
 	tbContactConstraint* constraints; ///< in the order of world->cache.solverContacts; with the wide
@@ -287,7 +290,9 @@ typedef struct tbStepContext
 	float settleSteps;			///< soft step: steps a new dynamic contact stays at contactHertz (0: no ramp)
 	float deepOverlap;			///< soft step: m, start-of-step overlap beyond which it stays at contactHertz
 	float dampingRatio;			///< soft step: of the ramped stiffness
-	float maxContactPushSpeed;	///< m/s
+	bool contactSoftening;		///< soft step: tbWorldDef::enableContactSoftening (tbSoftenedSoftness)
+	float softeningHertz;		///< soft step: Hz, the softened pairs' stiffness before the mass ratio
+	float contactSpeed;	///< m/s
 	float maxLinearSpeed;		///< m/s
 	float maxAngularSpeed;		///< rad/s: TB_MAX_ROTATION per step
 	bool enableWarmStarting;

@@ -29,6 +29,8 @@ tbBodyDef tbDefaultBodyDef(void)
 	def.enableSleep = true;
 	def.enableContactRecycling = true;
 	def.isAwake = true;
+	def.isEnabled = true;
+	def.allowFastRotation = false;
 	def.internalValue = TB_BODY_DEF_MAGIC;
 	return def;
 }
@@ -235,6 +237,11 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->enableContactRecycling = def->enableContactRecycling;
 	world->linearLockCount += body->lockLinearX || body->lockLinearY ? 1 : 0;
 	body->isBullet = def->isBullet;
+	body->allowFastRotation = def->allowFastRotation;
+	world->fastRotationCount += body->allowFastRotation ? 1 : 0;
+	// A body created disabled is as tbBody_Disable leaves one: its shapes get no proxies
+	// (tbCreateShapeProxy is skipped for it) and it never enters the awake set until enabled.
+	body->isDisabled = def->isEnabled == false;
 	body->headShapeId = TB_NULL_INDEX;
 	body->headContactKey = TB_NULL_INDEX;
 	body->headJointKey = TB_NULL_INDEX;
@@ -242,7 +249,7 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->solverIndex = TB_NULL_INDEX;
 	body->mass = 0.0f;
 	body->invMass = def->type == tb_dynamicBody ? 1.0f : 0.0f;
-	if (def->type != tb_staticBody && (def->isAwake || def->enableSleep == false))
+	if (def->type != tb_staticBody && (def->isAwake || def->enableSleep == false) && def->isEnabled)
 	{
 		tbAddToAwakeSet(world, body, id);
 	}
@@ -295,6 +302,7 @@ void tbDestroyBody(tbBodyId bodyId)
 	world->kinematicBodyCount -= body->type == tb_kinematicBody ? 1 : 0;
 	world->staticBodyCount -= body->type == tb_staticBody ? 1 : 0;
 	world->linearLockCount -= body->lockLinearX || body->lockLinearY ? 1 : 0;
+	world->fastRotationCount -= body->allowFastRotation ? 1 : 0;
 	tbIdPool_Release(&world->bodyPool, bodyId.index1 - 1, &body->generation, world->bodyGenerationBase);
 }
 
@@ -550,7 +558,7 @@ bool tbBody_SetType(tbBodyId bodyId, tbBodyType type)
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
 		tbDestroyShapeProxy(world, world->shapes + id);
-		tbCreateShapeProxy(world, world->shapes + id, body);
+		tbCreateShapeProxy(world, world->shapes + id, body, true);
 	}
 	tbUpdateBodyMass(world, body);
 	return true;
@@ -594,7 +602,7 @@ void tbBody_Enable(tbBodyId bodyId)
 	body->isDisabled = false;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
-		tbCreateShapeProxy(world, world->shapes + id, body);
+		tbCreateShapeProxy(world, world->shapes + id, body, true);
 	}
 	tbWakeBody(world, body);
 }

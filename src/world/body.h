@@ -65,6 +65,7 @@ typedef struct tbBody
 	bool isBullet;
 	bool isMarked;
 	bool isDisabled; ///< out of the simulation (tbBody_Disable): no proxies, no contacts, never awake
+	bool allowFastRotation; ///< tbBodyDef::allowFastRotation: the solver does not cap its spin
 } tbBody;
 
 /// The body for a body id and its world, or NULL after reporting an error naming `function`; also

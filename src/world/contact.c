@@ -212,7 +212,10 @@ static void tbPushEndEvent(tbWorld* world, const tbContact* contact)
 	}
 	else if (contact->flags & tb_contactEnableEvents)
 	{
-		tbContactEndTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB)};
+		// The contact's id as it is now: a contact being destroyed gets a new generation after this,
+		// so the id then reads as invalid, as Box2D v3.2's does.
+		tbContactEndTouchEvent e = {tbMakeShapeId(world, contact->shapeIdA), tbMakeShapeId(world, contact->shapeIdB),
+									tbMakeContactId(world, (int)(contact - world->contacts))};
 		if (world->locked)
 		{
 			TB_ARRAY_PUSH(world->events.endEvents, world->events.endCount, world->events.endCapacity, e);
@@ -668,6 +671,11 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 	{
 		tbMatchPoints(m, &old);
 	}
+	// What the narrow phase measured, kept while recycling moves `separation` with the bodies.
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		m->points[i].baseSeparation = m->points[i].separation;
+	}
 	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbHasMaterialFeatures(a) &&
 		tbHasMaterialFeatures(b))
 	{
@@ -694,7 +702,8 @@ static bool tbKeepsImpulses(const tbManifoldPoint* point, const tbManifold* befo
 		if (old->id == point->id)
 		{
 			return point->normalImpulse == old->normalImpulse && point->tangentImpulse == old->tangentImpulse &&
-				   point->maxNormalImpulse == old->maxNormalImpulse && point->normalVelocity == old->normalVelocity;
+				   point->totalNormalImpulse == old->totalNormalImpulse && point->normalVelocity == old->normalVelocity &&
+				   point->baseSeparation == old->baseSeparation;
 		}
 	}
 	return false;
@@ -819,7 +828,7 @@ static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* cont
 /// Counters of one contact's narrow phase (on the caller, after the workers).
 static void tbCountCollideResult(tbWorld* world, uint32_t result)
 {
-	world->counters.recycledManifolds += (result & tb_collideRecycled) != 0 ? 1 : 0;
+	world->counters.recycledContactCount += (result & tb_collideRecycled) != 0 ? 1 : 0;
 	world->counters.gjkManifolds += (result & tb_collideGJK) != 0 ? 1 : 0;
 	world->counters.satManifolds += (result & tb_collideSAT) != 0 ? 1 : 0;
 }
@@ -1148,7 +1157,7 @@ void tbCollideStage(tbWorld* world)
 		tbAddTally(&total, world->cache.collideTallies + w);
 	}
 	world->cache.collideTallies = NULL; // arena memory: gone with the step
-	world->counters.recycledManifolds += total.recycled;
+	world->counters.recycledContactCount += total.recycled;
 	world->counters.gjkManifolds += total.gjk;
 	world->counters.satManifolds += total.sat;
 	world->counters.touchingCount = total.reported;
@@ -1190,7 +1199,8 @@ void tbReportHitEvents(tbWorld* world)
 	// Contact-id order: the walk streams through contact memory (the solve order would not).
 	for (int i = 0; i < world->cache.solverContactCount; ++i)
 	{
-		tbContact* contact = world->contacts + world->cache.solverContactsById[i];
+		int contactIndex = world->cache.solverContactsById[i];
+		tbContact* contact = world->contacts + contactIndex;
 		if ((contact->flags & tb_contactEnableHits) == 0)
 		{
 			continue;
@@ -1199,7 +1209,7 @@ void tbReportHitEvents(tbWorld* world)
 		{
 			const tbManifoldPoint* mp = contact->manifold.points + j;
 			float approach = -mp->normalVelocity;
-			if (approach > threshold && approach > contact->hitSpeed && mp->maxNormalImpulse > 0.0f)
+			if (approach > threshold && approach > contact->hitSpeed && mp->totalNormalImpulse > 0.0f)
 			{
 				contact->hitSpeed = approach;
 				contact->hitPoint = mp->point;
@@ -1210,6 +1220,7 @@ void tbReportHitEvents(tbWorld* world)
 			tbContactHitEvent event;
 			event.shapeIdA = tbMakeShapeId(world, contact->shapeIdA);
 			event.shapeIdB = tbMakeShapeId(world, contact->shapeIdB);
+			event.contactId = tbMakeContactId(world, contactIndex);
 			event.point = tbToPos(contact->hitPoint);
 			event.normal = contact->manifold.normal;
 			event.approachSpeed = contact->hitSpeed;

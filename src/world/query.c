@@ -318,7 +318,10 @@ tbRayResult tbWorld_CastRayClosest(tbWorldId worldId, tbPos origin, tbVec2 trans
 {
 	tbRayResult result;
 	memset(&result, 0, sizeof(result));
-	tbCastRay(worldId, origin, translation, filter, tbClosestCallback, &result, tb_recQueryCastRayClosest);
+	tbTreeStats stats =
+		tbCastRay(worldId, origin, translation, filter, tbClosestCallback, &result, tb_recQueryCastRayClosest);
+	result.nodeVisits = stats.nodeVisits;
+	result.leafVisits = stats.leafVisits;
 	return result;
 }
 

@@ -326,49 +326,37 @@ size_t tbRecPlayer_GetKeyframeBytes(const tbRecPlayer* player)
 	return tbCheckPlayer(player, "tbRecPlayer_GetKeyframeBytes") ? player->keyframeBytes : 0;
 }
 
-/// A box given relative to an origin, as four corners (in float: drawing is in float).
-static void tbDrawBox(tbDebugDraw* draw, tbAABB box, tbPos origin, uint32_t color)
-{
-	tbAABB b = tbOffsetAABB(box, origin);
-	tbVec2 corners[4] = {b.lowerBound, {b.upperBound.x, b.lowerBound.y}, b.upperBound,
-						 {b.lowerBound.x, b.upperBound.y}};
-	if (draw->DrawPolygon != NULL)
-	{
-		draw->DrawPolygon(corners, 4, color, draw->context);
-	}
-}
-
-/// A query: its box (overlaps, casts, movers), its ray or sweep, and a point and normal a result.
+/// A query: its box (overlaps, casts, movers), its ray or sweep, and a point and normal a result,
+/// through Box2D v3.2's debug-draw callbacks (bounds, line, point).
 static void tbDrawQuery(tbDebugDraw* draw, const tbReplay* r, const tbReplayQuery* q)
 {
 	const tbRecQueryInfo* info = &q->info;
-	tbVec2 start = tbToVec2(info->origin);
 	bool ray = info->type == tb_recQueryCastRay || info->type == tb_recQueryCastRayClosest ||
 			   info->type == tb_recQueryShapeRayCast;
 	bool point = info->type == tb_recQueryShapeTestPoint;
-	if (ray == false && point == false)
+	if (ray == false && point == false && draw->DrawBoundsFcn != NULL)
 	{
-		tbDrawBox(draw, info->aabb, info->origin, tb_colorYellow);
+		draw->DrawBoundsFcn(tbOffsetAABB(info->aabb, info->origin), tb_colorYellow, draw->context);
 	}
-	if (point && draw->DrawPoint != NULL)
+	if (point && draw->DrawPointFcn != NULL)
 	{
-		draw->DrawPoint(start, 6.0f, tb_colorYellow, draw->context);
+		draw->DrawPointFcn(info->origin, 6.0f, tb_colorYellow, draw->context);
 	}
-	if ((info->translation.x != 0.0f || info->translation.y != 0.0f) && draw->DrawSegment != NULL)
+	if ((info->translation.x != 0.0f || info->translation.y != 0.0f) && draw->DrawLineFcn != NULL)
 	{
-		draw->DrawSegment(start, tbAdd(start, info->translation), tb_colorYellow, draw->context);
+		draw->DrawLineFcn(info->origin, tbOffsetPos(info->origin, info->translation), tb_colorYellow, draw->context);
 	}
 	for (int i = 0; i < info->hitCount; ++i)
 	{
 		const tbRecQueryHit* hit = r->hits + q->firstHit + i;
-		tbVec2 p = tbToVec2(hit->point);
-		if (draw->DrawPoint != NULL)
+		if (draw->DrawPointFcn != NULL)
 		{
-			draw->DrawPoint(p, 5.0f, tb_colorOrangeRed, draw->context);
+			draw->DrawPointFcn(hit->point, 5.0f, tb_colorOrangeRed, draw->context);
 		}
-		if ((hit->normal.x != 0.0f || hit->normal.y != 0.0f) && draw->DrawSegment != NULL)
+		if ((hit->normal.x != 0.0f || hit->normal.y != 0.0f) && draw->DrawLineFcn != NULL)
 		{
-			draw->DrawSegment(p, tbMulAdd(p, 0.5f, hit->normal), tb_colorOrangeRed, draw->context);
+			draw->DrawLineFcn(hit->point, tbOffsetPos(hit->point, tbMulSV(0.5f, hit->normal)), tb_colorOrangeRed,
+							  draw->context);
 		}
 	}
 }

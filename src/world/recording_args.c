@@ -49,6 +49,8 @@ static const tbRecField s_bodyDef[] = {
 	{offsetof(tbBodyDef, motionLocks.angularZ), '?', 1},
 	{offsetof(tbBodyDef, enableContactRecycling), '?', 1},
 	{offsetof(tbBodyDef, isBullet), '?', 1},
+	{offsetof(tbBodyDef, isEnabled), '?', 1},
+	{offsetof(tbBodyDef, allowFastRotation), '?', 1},
 };
 
 static const tbRecField s_shapeDef[] = {
@@ -69,6 +71,7 @@ static const tbRecField s_shapeDef[] = {
 	{offsetof(tbShapeDef, updateBodyMass), '?', 1},
 	{offsetof(tbShapeDef, enableCustomFiltering), '?', 1},
 	{offsetof(tbShapeDef, enablePreSolveEvents), '?', 1},
+	{offsetof(tbShapeDef, invokeContactCreation), '?', 1},
 };
 
 static const tbRecField s_circle[] = {

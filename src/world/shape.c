@@ -21,6 +21,7 @@ tbShapeDef tbDefaultShapeDef(void)
 	// Events are off unless asked for (Box2D v3.2's defaults): a contact reports begin and end when
 	// either shape enables contact events, a sensor a visitor when both enable sensor events.
 	def.updateBodyMass = true;
+	def.invokeContactCreation = true;
 	def.internalValue = TB_SHAPE_DEF_MAGIC;
 	return def;
 }
@@ -114,7 +115,7 @@ bool tbShouldShapesCollide(tbFilter a, tbFilter b)
 	return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
 }
 
-void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body)
+void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body, bool findPairs)
 {
 	shape->aabb = tbComputeShapeAABBInternal(shape, body->transform);
 	if (body->isDisabled)
@@ -129,8 +130,9 @@ void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body)
 	float margin = body->type == tb_staticBody ? 0.0f : TB_AABB_MARGIN;
 	shape->fatAABB = tbComputeFatShapeAABB(shape, body->transform, margin);
 	tbProxyType type = body->type == tb_staticBody ? tb_proxyStatic : tb_proxyMovable;
-	shape->proxyKey = tbBroadPhase_CreateProxy(&world->broadPhase, shape->fatAABB, shape->filter.categoryBits,
-											   (int)(shape - world->shapes), type);
+	shape->proxyKey = tbBroadPhase_CreateProxyMarked(&world->broadPhase, shape->fatAABB, shape->filter.categoryBits,
+													 (int)(shape - world->shapes), type,
+													 findPairs || type != tb_proxyStatic);
 	world->staticProxyCount += type == tb_proxyStatic ? 1 : 0;
 }
 
@@ -550,7 +552,8 @@ int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeo
 	shape->proxyKey = TB_NULL_INDEX;
 	body->headShapeId = id;
 	body->shapeCount += 1;
-	tbCreateShapeProxy(world, shape, body);
+	// Box2D v3.2: a sensor always looks for what it overlaps, whatever invokeContactCreation says.
+	tbCreateShapeProxy(world, shape, body, def->invokeContactCreation || def->isSensor);
 	if (def->updateBodyMass)
 	{
 		tbUpdateBodyMass(world, body);
@@ -813,7 +816,7 @@ static bool tbSetGeometry(tbShapeId shapeId, const tbGeometry* geometry, const c
 	tbDestroyShapeContacts(world, body, shapeId.index1 - 1);
 	shape->geometry = *geometry;
 	tbDestroyShapeProxy(world, shape);
-	tbCreateShapeProxy(world, shape, body);
+	tbCreateShapeProxy(world, shape, body, true);
 	tbUpdateBodyMass(world, body);
 	tbWakeBody(world, body);
 	return true;
@@ -1097,7 +1100,7 @@ bool tbShape_SetFilter(tbShapeId shapeId, tbFilter filter)
 	tbBody* body = world->bodies + shape->bodyId;
 	tbDestroyShapeContacts(world, body, shapeId.index1 - 1);
 	tbDestroyShapeProxy(world, shape);
-	tbCreateShapeProxy(world, shape, body);
+	tbCreateShapeProxy(world, shape, body, true);
 	return true;
 }
 

@@ -79,7 +79,10 @@ tbAABB tbComputeFatShapeAABB(const tbShape* shape, tbWorldTransform transform, f
 tbShape* tbGetShapeChecked(tbShapeId id, const char* function, tbWorld** world, bool mutating);
 tbShapeId tbMakeShapeId(const tbWorld* world, int shapeId);
 
-void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body);
+/// `findPairs`: the new proxy looks for the shapes it overlaps at the next step. Movable proxies
+/// always do; a static one only when asked (tbShapeDef::invokeContactCreation at creation; always
+/// when re-created for a change of geometry, filter, body type or enabling, as Box2D v3.2 does).
+void tbCreateShapeProxy(tbWorld* world, tbShape* shape, tbBody* body, bool findPairs);
 void tbDestroyShapeProxy(tbWorld* world, tbShape* shape);
 bool tbShouldShapesCollide(tbFilter a, tbFilter b);
 /// The polygon is strictly convex and counter-clockwise and its normals match its edges (reports

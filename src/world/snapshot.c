@@ -68,7 +68,10 @@
 #include <string.h>
 
 #define TB_SNAPSHOT_MAGIC 0x4E534254u // "TBSN" as bytes
-#define TB_SNAPSHOT_VERSION 1u
+// Version 2: manifold points carry baseSeparation, waiting end events their contact id, bodies
+// allowFastRotation, the settings contact softening (Box2D v3.2's fields); a version 1 image is
+// refused by name rather than misread.
+#define TB_SNAPSHOT_VERSION 2u
 
 #if defined(TUMBLE_DOUBLE_PRECISION)
 #define TB_SNAPSHOT_PRECISION 1u
@@ -647,14 +650,15 @@ enum
 	tb_settingRecycling = 1 << 6,
 	tb_settingImpactPropagation = 1 << 7,
 	tb_settingSpeculative = 1 << 8,
-	tb_settingAll = (1 << 9) - 1,
+	tb_settingContactSoftening = 1 << 9,
+	tb_settingAll = (1 << 10) - 1,
 };
 
 static void tbSettingFloats(const tbWorldDef* d, float values[9])
 {
 	float v[9] = {d->gravity.x,			  d->gravity.y,			d->restitutionThreshold,
 				  d->hitEventThreshold,	  d->contactHertz,		d->settledHertzRatio,
-				  d->contactDampingRatio, d->maxContactPushSpeed, d->maximumLinearSpeed};
+				  d->contactDampingRatio, d->contactSpeed, d->maximumLinearSpeed};
 	memcpy(values, v, sizeof(v));
 }
 
@@ -682,7 +686,8 @@ static void tbWriteSettings(tbEncoder* e)
 					 (d->enableCentralFriction ? tb_settingCentralFriction : 0u) |
 					 (d->enableManifoldRecycling ? tb_settingRecycling : 0u) |
 					 (d->enableImpactPropagation ? tb_settingImpactPropagation : 0u) |
-					 (world->enableSpeculative ? tb_settingSpeculative : 0u);
+					 (world->enableSpeculative ? tb_settingSpeculative : 0u) |
+					 (d->enableContactSoftening ? tb_settingContactSoftening : 0u);
 	tbPutUInt(&e->w, flags);
 	tbPutUInt(&e->w, (uint32_t)d->broadPhase);
 	tbPutUInt(&e->w, (uint32_t)d->narrowPhase);
@@ -741,7 +746,7 @@ static bool tbReadSettings(tbDecoder* d)
 	def->contactHertz = values[4];
 	def->settledHertzRatio = values[5];
 	def->contactDampingRatio = values[6];
-	def->maxContactPushSpeed = values[7];
+	def->contactSpeed = values[7];
 	def->maximumLinearSpeed = values[8];
 	uint32_t flags = tbGetUInt(r);
 	def->contactHertzFollowsSubStep = (flags & tb_settingSubStepHertz) != 0;
@@ -753,12 +758,14 @@ static bool tbReadSettings(tbDecoder* d)
 	def->enableManifoldRecycling = (flags & tb_settingRecycling) != 0;
 	def->enableImpactPropagation = (flags & tb_settingImpactPropagation) != 0;
 	world->enableSpeculative = (flags & tb_settingSpeculative) != 0;
+	def->enableContactSoftening = (flags & tb_settingContactSoftening) != 0;
 	def->broadPhase = (tbBroadPhaseMethod)tbGetCountValue(r, tb_broadPhaseMethodCount - 1, "the broad-phase method");
 	def->narrowPhase = (tbNarrowPhaseMethod)tbGetCountValue(r, tb_narrowPhaseGJK, "the narrow-phase method");
 	def->continuous = (tbContinuousMethod)tbGetCountValue(r, tb_continuousMethodCount - 1, "the continuous method");
 	def->solver = (tbSolverMethod)tbGetCountValue(r, tb_solverMethodCount - 1, "the solver method");
 	world->continuousWhenEnabled =
 		(tbContinuousMethod)tbGetCountValue(r, tb_continuousMethodCount - 1, "the continuous method kept aside");
+	def->enableContinuous = def->continuous != tb_continuousOff; // one fact, held by the method
 	def->velocityIterations = tbGetCountValue(r, TB_MAX_ITERATIONS, "the velocity iterations");
 	def->positionIterations = tbGetCountValue(r, TB_MAX_ITERATIONS, "the position iterations");
 	def->relaxIterations = tbGetCountValue(r, TB_MAX_ITERATIONS, "the relax iterations");
@@ -782,7 +789,7 @@ static bool tbReadSettings(tbDecoder* d)
 	if ((flags & ~(uint32_t)tb_settingAll) != 0 || tbIsNonNegative(def->restitutionThreshold) == false ||
 		tbIsNonNegative(def->hitEventThreshold) == false || !(def->contactHertz > 0.0f) ||
 		!(def->settledHertzRatio > 0.0f && def->settledHertzRatio <= 1000.0f) ||
-		tbIsNonNegative(def->contactDampingRatio) == false || !(def->maxContactPushSpeed > 0.0f) ||
+		tbIsNonNegative(def->contactDampingRatio) == false || !(def->contactSpeed > 0.0f) ||
 		!(def->maximumLinearSpeed > 0.0f && def->maximumLinearSpeed <= TB_MAX_LINEAR_SPEED) || def->velocityIterations < 1)
 	{
 		return tbFail(r, "its world settings are out of range (a threshold, stiffness, speed or iteration count the API "
@@ -932,7 +939,8 @@ enum
 	tb_bodyExtentsStored = 1 << 14,
 	tb_bodyReachStored = 1 << 15,
 	tb_bodyStartStored = 1 << 16, ///< the pose at the start of the last step differs from the pose now
-	tb_bodyAll = (1 << 17) - 1,
+	tb_bodyFastRotation = 1 << 17,
+	tb_bodyAll = (1 << 18) - 1,
 };
 
 enum
@@ -1267,6 +1275,7 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 	flags |= (body->enableSleep ? tb_bodySleep : 0u) | (body->fixedRotation ? tb_bodyFixedRotation : 0u) |
 			 (body->lockLinearX ? tb_bodyLockX : 0u) | (body->lockLinearY ? tb_bodyLockY : 0u) |
 			 (body->isBullet ? tb_bodyBullet : 0u) | (body->isDisabled ? tb_bodyDisabled : 0u) |
+			 (body->allowFastRotation ? tb_bodyFastRotation : 0u) |
 			 (body->isFast ? tb_bodyFast : 0u) | (body->enableContactRecycling ? 0u : tb_bodyNoRecycling) |
 			 (body->isMarked ? tb_bodyMarked : 0u) | (body->name != NULL ? tb_bodyNamed : 0u);
 	bool massStored = tbSameMass(body, tbComputeBodyMass(world, body)) == false;
@@ -1625,6 +1634,7 @@ static bool tbReadBody(tbDecoder* d, int index)
 	body->lockLinearX = (flags & tb_bodyLockX) != 0;
 	body->lockLinearY = (flags & tb_bodyLockY) != 0;
 	body->isBullet = (flags & tb_bodyBullet) != 0;
+	body->allowFastRotation = (flags & tb_bodyFastRotation) != 0;
 	body->isDisabled = (flags & tb_bodyDisabled) != 0;
 	body->isFast = (flags & tb_bodyFast) != 0;
 	body->enableContactRecycling = (flags & tb_bodyNoRecycling) == 0;
@@ -2027,13 +2037,13 @@ static bool tbSameBase(const tbManifoldBase* a, const tbManifoldBase* b, int poi
 }
 
 /// A manifold point's floats, all mostly zero but the point and anchors.
-#define TB_POINT_FLOATS 11
+#define TB_POINT_FLOATS 12
 
 static void tbPointFloats(const tbManifoldPoint* p, float v[TB_POINT_FLOATS])
 {
 	float values[TB_POINT_FLOATS] = {p->point.x,	p->point.y,			p->anchorA.x,		p->anchorA.y,
 									 p->anchorB.x,	p->anchorB.y,		p->separation,		p->normalImpulse,
-									 p->tangentImpulse, p->maxNormalImpulse, p->normalVelocity};
+									 p->tangentImpulse, p->totalNormalImpulse, p->normalVelocity, p->baseSeparation};
 	memcpy(v, values, sizeof(values));
 }
 
@@ -2272,8 +2282,9 @@ static bool tbGetPoints(tbDecoder* d, tbManifold* m, bool recycled, bool predict
 		p->separation = values[6];
 		p->normalImpulse = values[7];
 		p->tangentImpulse = values[8];
-		p->maxNormalImpulse = values[9];
+		p->totalNormalImpulse = values[9];
 		p->normalVelocity = values[10];
+		p->baseSeparation = values[11];
 		uint32_t idBits = tbGetUInt(r);
 		if (r->failed == false && idBits > 0x1FFFFu)
 		{
@@ -3487,6 +3498,10 @@ static void tbWriteEvents(tbEncoder* e)
 	{
 		tbPutShapeId(e, events->pendingEndEvents[i].shapeIdA);
 		tbPutShapeId(e, events->pendingEndEvents[i].shapeIdB);
+		// The contact's slot and the generation's own part (the world's part, the high 16 bits, is
+		// the adopting world's, as for the contacts themselves).
+		tbPutUInt(&e->w, (uint32_t)events->pendingEndEvents[i].contactId.index1);
+		tbPutUInt(&e->w, events->pendingEndEvents[i].contactId.generation & 0xFFFFu);
 	}
 	tbPutUInt(&e->w, (uint32_t)events->pendingSensorEndCount);
 	for (int i = 0; i < events->pendingSensorEndCount; ++i)
@@ -3523,6 +3538,13 @@ static bool tbReadEvents(tbDecoder* d)
 		tbContactEndTouchEvent e;
 		e.shapeIdA = tbGetShapeId(r);
 		e.shapeIdB = tbGetShapeId(r);
+		uint32_t contactIndex1 = tbGetUInt(r);
+		uint32_t contactGeneration = tbGetUInt(r);
+		if (r->failed == false && (contactIndex1 > INT32_MAX || contactGeneration > UINT16_MAX))
+		{
+			tbFail(r, "an end event names contact slot %u generation %u", contactIndex1, contactGeneration);
+		}
+		e.contactId = (tbContactId){(int32_t)contactIndex1, 0, 0, contactGeneration};
 		TB_ARRAY_PUSH(events->pendingEndEvents, events->pendingEndCount, events->pendingEndCapacity, e);
 	}
 	count = tbGetCount(r, 4, "the pending sensor end events");
@@ -3612,6 +3634,7 @@ static bool tbReadBodies(tbDecoder* d)
 			world->kinematicBodyCount += body->type == tb_kinematicBody ? 1 : 0;
 			world->staticBodyCount += body->type == tb_staticBody ? 1 : 0;
 			world->linearLockCount += body->lockLinearX || body->lockLinearY ? 1 : 0;
+			world->fastRotationCount += body->allowFastRotation ? 1 : 0;
 		}
 	}
 	return r->failed == false;
@@ -3812,6 +3835,9 @@ static void tbApplyGenerations(tbWorld* world)
 	tbEventBuffers* events = &world->events;
 	for (int i = 0; i < events->pendingEndCount; ++i)
 	{
+		tbContactId* contactId = &events->pendingEndEvents[i].contactId;
+		contactId->world0 = world->worldId;
+		contactId->generation = (contactId->generation & 0xFFFFu) + ((uint32_t)world->generation << 16);
 		tbShapeId* ids[2] = {&events->pendingEndEvents[i].shapeIdA, &events->pendingEndEvents[i].shapeIdB};
 		for (int k = 0; k < 2; ++k)
 		{

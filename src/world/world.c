@@ -9,6 +9,7 @@
 #include "chain.h"
 #include "continuous.h"
 #include "island.h"
+#include "recording.h"
 
 #include "joints/joint.h"
 #include "solver/constraint_graph.h"
@@ -16,7 +17,7 @@
 
 #include "core/array.h"
 #include "core/sort.h"
-#include "recording.h"
+#include "core/task.h"
 
 #include <stddef.h>
 #include <string.h>
@@ -46,9 +47,11 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.contactDampingRatio = 10.0f;
 	def.settledHertzRatio = 1.75f;
 	def.contactHertzFollowsSubStep = false;
-	def.maxContactPushSpeed = 3.0f * units;
+	def.contactSpeed = 3.0f * units;
 	def.maximumLinearSpeed = tbMinFloat(4000.0f * units, TB_MAX_LINEAR_SPEED);
 	def.enableSleep = true;
+	def.enableContinuous = true;
+	def.enableContactSoftening = false;
 	def.broadPhase = tb_broadPhaseAuto;
 	def.narrowPhase = tb_narrowPhaseAuto;
 	def.continuous = tb_continuousDefault;
@@ -65,15 +68,6 @@ tbWorldDef tbDefaultWorldDef(void)
 	def.workerCount = 1;
 	def.internalValue = TB_WORLD_DEF_MAGIC;
 	return def;
-}
-
-tbDebugDraw tbDefaultDebugDraw(void)
-{
-	tbDebugDraw draw;
-	memset(&draw, 0, sizeof(draw));
-	draw.drawShapes = true;
-	draw.drawJoints = true;
-	return draw;
 }
 
 tbWorld* tbGetWorldFromIndex(int index)
@@ -215,7 +209,7 @@ static bool tbCheckWorldDef(const tbWorldDef* def)
 		   tbCheckNonNegative(f, "def->hitEventThreshold", def->hitEventThreshold) &&
 		   tbCheckPositive(f, "def->contactHertz", def->contactHertz) &&
 		   tbCheckNonNegative(f, "def->contactDampingRatio", def->contactDampingRatio) &&
-		   tbCheckPositive(f, "def->maxContactPushSpeed", def->maxContactPushSpeed) &&
+		   tbCheckPositive(f, "def->contactSpeed", def->contactSpeed) &&
 		   tbCheckMaximumSpeed(f, def->maximumLinearSpeed) && tbCheckMethods(def, f) && tbCheckWorkers(def, f) &&
 		   tbCheckWorldCapacity(f, &def->capacity);
 }
@@ -361,6 +355,14 @@ tbWorldId tbCreateWorld(const tbWorldDef* def)
 	tbWorld* world = tbAlloc((int)sizeof(tbWorld));
 	memset(world, 0, sizeof(tbWorld));
 	world->def = *def;
+	// enableContinuous is v3.2's switch, `continuous` Tumble's method: off by either is off, and the
+	// method is kept aside for tbWorld_EnableContinuous(true), as that function does.
+	world->continuousWhenEnabled = def->continuous != tb_continuousOff ? def->continuous : tb_continuousDefault;
+	if (def->enableContinuous == false)
+	{
+		world->def.continuous = tb_continuousOff;
+	}
+	world->def.enableContinuous = world->def.continuous != tb_continuousOff;
 	world->gravityLength = tbLength(def->gravity);
 	world->worldId = (uint16_t)slot;
 	world->generation = (uint16_t)(s_worldGenerations[slot] + 1);
@@ -521,8 +523,16 @@ static void tbUpdateCounters(tbWorld* world)
 	c->shapeCount = world->shapePool.count;
 	c->contactCount = world->contactPool.count;
 	c->awakeBodyCount = tbAwakeBodyCount(world);
+	c->jointCount = world->jointPool.count;
 	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
-	c->byteCount = (int)tbGetByteCount(); // tbCounters keeps v3.2's int
+	c->staticTreeHeight = tbBroadPhase_GetStaticTreeHeight(&world->broadPhase);
+	c->byteCount = tbGetByteCount();
+	c->stackUsed = world->stepArena.needed;
+	c->awakeContactCount = world->cache.stepContactCount;
+	int counts[TB_GRAPH_COLOR_COUNT + 1] = {0};
+	tbGetContactGraphColors(world, NULL, counts); // zeros when the last step did not colour
+	memcpy(c->colorCounts, counts, sizeof(c->colorCounts));
+	c->overflowCount = counts[TB_GRAPH_COLOR_COUNT];
 	// touchingCount: set by the collide stage (contact.c), which reads every step contact's flags.
 }
 
@@ -541,6 +551,7 @@ static void tbRecordMaxCapacity(tbWorld* world)
 /// What every step ends with, a pause too: counters, the broad-phase vote, the step arena.
 static void tbFinishStep(tbWorld* world, uint64_t stepTicks)
 {
+	tbCountTasksInto(NULL);
 	tbUpdateCounters(world);
 	tbUpdateAutoBroadPhase(world);
 	tbArenaReset(&world->stepArena);
@@ -584,9 +595,10 @@ static bool tbStepWorld(tbWorldId worldId, float timeStep, int subStepCount)
 	world->gravityLength = tbLength(world->def.gravity);
 	tbClearEvents(world);
 	memset(&world->profile, 0, sizeof(world->profile));
-	int byteCount = world->counters.byteCount;
+	int64_t byteCount = world->counters.byteCount;
 	memset(&world->counters, 0, sizeof(world->counters));
 	world->counters.byteCount = byteCount;
+	tbCountTasksInto(&world->counters.taskCount); // until tbFinishStep
 
 	// Each stage's time is the lap since the last (one clock read a stage).
 	uint64_t stepTicks = tbGetTicks();
@@ -606,16 +618,21 @@ static bool tbStepWorld(tbWorldId worldId, float timeStep, int subStepCount)
 	}
 	tbSolveStage(world, timeStep, subStepCount);
 	world->profile.solve = tbGetMillisecondsAndReset(&t);
+	// Box2D v3.2's constraints: its solver stages from preparation to storing the impulses, the solve
+	// but its set-up and the scatter of the bodies; here the sum of those parts as timed.
+	const tbProfile* p = &world->profile;
+	world->profile.constraints = p->prepareConstraints + p->integrateVelocities + p->warmStart + p->solveImpulses +
+								 p->integratePositions + p->relaxImpulses + p->applyRestitution + p->storeImpulses;
 	tbContinuousStage(world);
 	world->profile.continuous = tbGetMillisecondsAndReset(&t);
 	int beyondBounds = tbFinalizeStage(world, timeStep);
 	world->profile.finalize = tbGetMillisecondsAndReset(&t);
 	tbReportHitEvents(world);
-	world->profile.events = tbGetMillisecondsAndReset(&t);
+	world->profile.hitEvents = tbGetMillisecondsAndReset(&t);
 	tbSensorStage(world);
 	world->profile.sensors = tbGetMillisecondsAndReset(&t);
 	tbSleepStage(world, timeStep);
-	world->profile.sleep = tbGetMillisecondsAndReset(&t);
+	world->profile.sleepIslands = tbGetMillisecondsAndReset(&t);
 	if (beyondBounds > 0)
 	{
 		tbDisableBodiesBeyondBounds(world);
@@ -786,7 +803,7 @@ bool tbWorld_SetContactTuning(tbWorldId worldId, float hertz, float dampingRatio
 	}
 	world->def.contactHertz = hertz;
 	world->def.contactDampingRatio = dampingRatio;
-	world->def.maxContactPushSpeed = pushSpeed;
+	world->def.contactSpeed = pushSpeed;
 	return true;
 }
 
@@ -993,6 +1010,7 @@ void tbWorld_EnableContinuous(tbWorldId worldId, bool flag)
 	{
 		world->def.continuous = world->continuousWhenEnabled;
 	}
+	world->def.enableContinuous = world->def.continuous != tb_continuousOff;
 }
 
 bool tbWorld_IsContinuousEnabled(tbWorldId worldId)
@@ -1076,6 +1094,7 @@ bool tbWorld_SetContinuousMethod(tbWorldId worldId, tbContinuousMethod method)
 		return false;
 	}
 	world->def.continuous = method;
+	world->def.enableContinuous = method != tb_continuousOff;
 	return true;
 }
 
@@ -1130,6 +1149,7 @@ tbCounters tbWorld_GetCounters(tbWorldId worldId)
 	world->counters.bodyCount = world->bodyPool.count;
 	world->counters.shapeCount = world->shapePool.count;
 	world->counters.contactCount = world->contactPool.count;
+	world->counters.jointCount = world->jointPool.count;
 	world->counters.awakeBodyCount = tbAwakeBodyCount(world);
 	return world->counters;
 }

@@ -103,6 +103,7 @@ typedef struct tbWorld
 	int staticBodyCount;	///< static bodies in the world (tbWorld_GetMaxCapacity)
 	int staticProxyCount;	///< broad-phase proxies of static shapes (the rest are movable)
 	int linearLockCount;	///< bodies with a linear motion lock (the solver skips the locks when 0)
+	int fastRotationCount;	///< bodies that allow fast rotation (the solver's spin cap is uniform when 0)
 	int hitContactCount;	///< contacts with tb_contactEnableHits (hit events are gathered only when > 0)
 	int sensorContactCount; ///< contacts with tb_contactSensor (the sensor stage runs only when > 0)
 
