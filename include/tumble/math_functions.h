@@ -431,7 +431,7 @@ TB_INLINE tbVec2 tbInvRotateVector(tbRot q, tbVec2 v)
 	return r;
 }
 
-TB_INLINE tbVec2 tbTransformPoint(tbTransform t, tbVec2 p)
+TB_INLINE tbVec2 tbTransformPoint(tbTransform t, const tbVec2 p)
 {
 	float x = (t.q.c * p.x - t.q.s * p.y) + t.p.x;
 	float y = (t.q.s * p.x + t.q.c * p.y) + t.p.y;
@@ -439,7 +439,7 @@ TB_INLINE tbVec2 tbTransformPoint(tbTransform t, tbVec2 p)
 	return r;
 }
 
-TB_INLINE tbVec2 tbInvTransformPoint(tbTransform t, tbVec2 p)
+TB_INLINE tbVec2 tbInvTransformPoint(tbTransform t, const tbVec2 p)
 {
 	float vx = p.x - t.p.x;
 	float vy = p.y - t.p.y;
