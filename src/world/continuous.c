@@ -453,12 +453,15 @@ void tbContinuousStage(tbWorld* world)
 	task->world = world;
 	task->bodies = fast;
 	tbParallelFor(&world->def, tbContinuousTask, fastCount, 16, task);
-	uint64_t bulletTicks = tbGetTicks();
-	for (int i = 0; i < bulletCount; ++i)
+	if (bulletCount > 0)
 	{
-		tbSolveFastBody(world, fast[world->awakeBodyCount - 1 - i], task->counters);
+		uint64_t bulletTicks = tbGetTicks();
+		for (int i = 0; i < bulletCount; ++i)
+		{
+			tbSolveFastBody(world, fast[world->awakeBodyCount - 1 - i], task->counters);
+		}
+		world->profile.bullets = tbGetMilliseconds(bulletTicks); // a part of the continuous stage
 	}
-	world->profile.bullets = tbGetMilliseconds(bulletTicks); // a part of the continuous stage
 	for (int w = 0; w < tbWorkerSlotCount(&world->def); ++w)
 	{
 		world->counters.toiCalls += task->counters[w].calls;
