@@ -481,18 +481,8 @@ static TB_FORCE_INLINE float tbSpeculativeMargin(const tbWorld* world, const tbB
 static void tbStoreManifoldBase(tbContact* contact, tbWorldTransform xfA, tbWorldTransform xfB, const tbPos points[2],
 								float margin)
 {
-	const tbManifold* m = &contact->manifold;
-	tbManifoldBase* base = &contact->base;
-	base->relative = tbInvMulWorldTransforms(xfA, xfB);
-	base->normalA = tbInvRotateVector(xfA.q, m->normal);
-	base->normalB = tbInvRotateVector(xfB.q, m->normal);
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		base->pointA[i] = tbInvTransformWorldPoint(xfA, points[i]);
-		base->pointB[i] = tbInvTransformWorldPoint(xfB, points[i]);
-		base->separation[i] = m->points[i].separation;
-	}
-	base->margin = margin;
+	tbFillManifoldBase(&contact->base, &contact->manifold, xfA, xfB, points);
+	contact->base.margin = margin;
 	contact->flags |= tb_contactRecyclable;
 }
 
@@ -609,19 +599,10 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 	{
 		return false;
 	}
-	// xB − xA from the origin offset and the rotated local points: no large world coordinates are
-	// subtracted, so far from the origin the difference keeps its precision.
-	tbVec2 dp = tbSubPos(xfB.p, xfA.p);
+	tbMoveRecycledPoints(m, base, xfA, xfB);
 	for (int i = 0; i < m->pointCount; ++i)
 	{
-		tbManifoldPoint* mp = m->points + i;
-		tbVec2 rA = tbRotateVector(xfA.q, base->pointA[i]);
-		tbVec2 rB = tbRotateVector(xfB.q, base->pointB[i]);
-		tbVec2 gap = tbAdd(dp, tbSub(rB, rA));
-		mp->separation = base->separation[i] + tbDot(gap, m->normal);
-		tbPos pointA = tbOffsetPos(xfA.p, rA);
-		mp->point = tbToVec2(tbOffsetPos(pointA, tbMulSV(0.5f, gap)));
-		mp->persisted = true; // anchors kept: see above
+		m->points[i].persisted = true; // anchors kept: see above
 	}
 	return true;
 }

@@ -124,6 +124,45 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB);
 /// The contact's mixed friction, restitution, rolling resistance and tangent speed from its shapes.
 void tbMixContactMaterials(const tbWorld* world, tbContact* contact);
 void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies);
+/// The base of a manifold computed with its bodies at xfA and xfB (its margin aside): the relative
+/// pose, the normal in each body's frame, and each point (`points`, midway between the surfaces)
+/// and separation in each body's origin frame. The recycling (contact.c) and a snapshot's restore
+/// (snapshot.c) make it with this.
+static inline void tbFillManifoldBase(tbManifoldBase* base, const tbManifold* m, tbWorldTransform xfA,
+									  tbWorldTransform xfB, const tbPos points[2])
+{
+	base->relative = tbInvMulWorldTransforms(xfA, xfB);
+	base->normalA = tbInvRotateVector(xfA.q, m->normal);
+	base->normalB = tbInvRotateVector(xfB.q, m->normal);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		base->pointA[i] = tbInvTransformWorldPoint(xfA, points[i]);
+		base->pointB[i] = tbInvTransformWorldPoint(xfB, points[i]);
+		base->separation[i] = m->points[i].separation;
+	}
+}
+
+/// A recycled manifold's points and separations moved with its bodies now at xfA and xfB, from the
+/// points fixed in each body when the narrow phase computed it (its normal and anchors are kept).
+/// xB − xA is taken from the origin offset and the rotated local points: no large world
+/// coordinates are subtracted, so far from the origin the difference keeps its precision. The
+/// recycling (contact.c) and a snapshot's restore (snapshot.c) remake the points with it.
+static inline void tbMoveRecycledPoints(tbManifold* m, const tbManifoldBase* base, tbWorldTransform xfA,
+										tbWorldTransform xfB)
+{
+	tbVec2 dp = tbSubPos(xfB.p, xfA.p);
+	for (int i = 0; i < m->pointCount; ++i)
+	{
+		tbManifoldPoint* mp = m->points + i;
+		tbVec2 rA = tbRotateVector(xfA.q, base->pointA[i]);
+		tbVec2 rB = tbRotateVector(xfB.q, base->pointB[i]);
+		tbVec2 gap = tbAdd(dp, tbSub(rB, rA));
+		mp->separation = base->separation[i] + tbDot(gap, m->normal);
+		tbPos pointA = tbOffsetPos(xfA.p, rA);
+		mp->point = tbToVec2(tbOffsetPos(pointA, tbMulSV(0.5f, gap)));
+	}
+}
+
 /// Narrow phase for one contact: recompute its manifold and its touching and reported flags.
 /// Returns the reported flag change (begin/end events): +1 began, −1 stopped, 0 no change; sets
 /// *beganTouching when the manifold gained points (the bodies must be woken).

@@ -1990,37 +1990,11 @@ static void tbRemakeAnchors(tbManifold* m, tbStartPose a, tbStartPose b)
 	}
 }
 
-/// tbStoreManifoldBase's base of a computed manifold (its margin aside).
+/// tbStoreManifoldBase's base of a computed manifold (its margin aside), from its points.
 static void tbRemakeBase(tbManifoldBase* base, const tbManifold* m, tbStartPose a, tbStartPose b)
 {
-	base->relative = tbInvMulWorldTransforms(a.transform, b.transform);
-	base->normalA = tbInvRotateVector(a.transform.q, m->normal);
-	base->normalB = tbInvRotateVector(b.transform.q, m->normal);
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		tbPos point = tbToPos(m->points[i].point);
-		base->pointA[i] = tbInvTransformWorldPoint(a.transform, point);
-		base->pointB[i] = tbInvTransformWorldPoint(b.transform, point);
-		base->separation[i] = m->points[i].separation;
-	}
-}
-
-/// tbRecycleManifold's points and separations of a recycled manifold (its normal and anchors are
-/// the ones the narrow phase gave it, kept while it is recycled).
-static void tbRemakeRecycledPoints(tbManifold* m, const tbManifoldBase* base, tbStartPose a, tbStartPose b)
-{
-	tbWorldTransform xfA = a.transform, xfB = b.transform;
-	tbVec2 dp = tbSubPos(xfB.p, xfA.p);
-	for (int i = 0; i < m->pointCount; ++i)
-	{
-		tbManifoldPoint* mp = m->points + i;
-		tbVec2 rA = tbRotateVector(xfA.q, base->pointA[i]);
-		tbVec2 rB = tbRotateVector(xfB.q, base->pointB[i]);
-		tbVec2 gap = tbAdd(dp, tbSub(rB, rA));
-		mp->separation = base->separation[i] + tbDot(gap, m->normal);
-		tbPos pointA = tbOffsetPos(xfA.p, rA);
-		mp->point = tbToVec2(tbOffsetPos(pointA, tbMulSV(0.5f, gap)));
-	}
+	tbPos points[2] = {tbToPos(m->points[0].point), tbToPos(m->points[1].point)};
+	tbFillManifoldBase(base, m, a.transform, b.transform, points);
 }
 
 static bool tbSameBase(const tbManifoldBase* a, const tbManifoldBase* b, int pointCount)
@@ -2118,7 +2092,7 @@ static void tbWriteContact(tbEncoder* e, const tbContact* contact)
 	bool framePredicted = false;
 	if (recycled)
 	{
-		tbRemakeRecycledPoints(&remade, &contact->base, a, b);
+		tbMoveRecycledPoints(&remade, &contact->base, a.transform, b.transform);
 	}
 	else
 	{
@@ -2391,7 +2365,7 @@ static bool tbReadContact(tbDecoder* d, int id)
 		tbGetPoints(d, m, true, pointsPredicted, id);
 		if (pointsPredicted)
 		{
-			tbRemakeRecycledPoints(m, &contact->base, poseA, poseB);
+			tbMoveRecycledPoints(m, &contact->base, poseA.transform, poseB.transform);
 		}
 	}
 	else
