@@ -570,8 +570,32 @@ TB_API tbTOIOutput tbTimeOfImpactCircles(const tbCircle* circleA, const tbSweep*
 
 #define TB_NULL_NODE (-1)
 
-struct tbTreeNode;
-struct tbRebuildLeaf;
+/// The two children of an internal tree node.
+typedef struct tbTreeNodeChildren
+{
+	int child1;
+	int child2;
+} tbTreeNodeChildren;
+
+/// A node of the dynamic tree. Internal to the tree (public so that a tree can be held by value);
+/// 40 bytes, so that a query's walk touches few cache lines.
+typedef struct tbTreeNode
+{
+	tbAABB aabb;		   ///< fat box of a leaf; the union of the children's for an internal node
+	uint64_t categoryBits; ///< a leaf's category bits; the OR of the children's for an internal node
+	union
+	{
+		tbTreeNodeChildren children; ///< internal node
+		uint64_t userData;			 ///< leaf: the payload returned to queries
+	};
+	union
+	{
+		int32_t parent; ///< node in use: its parent (TB_NULL_NODE at the root)
+		int32_t next;	///< free node: the next free node
+	};
+	uint16_t height; ///< 0 for a leaf, 1 + the greater child's height for an internal node
+	uint16_t flags;	 ///< in use, leaf, grown in place since the last rebuild (dynamic_tree.c)
+} tbTreeNode;
 
 /// How tbDynamicTree_Rebuild splits a set of leaves in two, on the longer axis of their centres.
 typedef enum tbTreeSplit
@@ -595,8 +619,11 @@ typedef struct tbDynamicTree
 	int32_t nodeCapacity;
 	int32_t freeList;
 	int32_t proxyCount;
-	// scratch space for the rebuild
-	struct tbRebuildLeaf* rebuildLeaves;
+	// The rebuild's items (leaves or kept subtrees) in parallel arrays, rebuildCapacity long.
+	int32_t* leafIndices; ///< an item's node
+	tbAABB* leafBoxes;	  ///< an item's box
+	tbVec2* leafCenters;  ///< the centre of an item's box
+	int32_t* binIndices;  ///< an item's bin in the binned SAH split
 	int32_t rebuildCapacity;
 	tbTreeSplit rebuildSplit; ///< how tbDynamicTree_Rebuild splits; tb_splitBinnedSah from Create
 } tbDynamicTree;

@@ -47,18 +47,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/// One leaf as the binned SAH rebuild moves it around: everything the partition reads and swaps
-/// in one 32-byte record, so a swap is one record, not four arrays.
-typedef struct tbRebuildLeaf
-{
-	tbAABB box;
-	tbVec2 center;
-	int node; ///< the leaf's node index
-	int bin;  ///< bin of the current partition
-} tbRebuildLeaf;
-
-_Static_assert(sizeof(tbRebuildLeaf) == 32, "rebuild leaf is 32 bytes");
-
 /// Initial node capacity: 16 nodes (768 bytes), doubled when full.
 #define TB_TREE_INITIAL_CAPACITY 16
 
@@ -73,7 +61,41 @@ _Static_assert(sizeof(tbRebuildLeaf) == 32, "rebuild leaf is 32 bytes");
 
 static bool tbIsLeaf(const tbTreeNode* node)
 {
-	return node->height == 0;
+	return (node->flags & tb_leafNode) != 0;
+}
+
+// --------------------------------------------------------------------------------------------
+// Rebuild scratch: the items of a rebuild (leaves, or whole subtrees kept as they are) in four
+// parallel arrays: node index, box, box centre and bin.
+
+#define TB_REBUILD_ITEM_BYTES ((int)(2 * sizeof(int32_t) + sizeof(tbAABB) + sizeof(tbVec2)))
+
+static void tbFreeRebuild(tbDynamicTree* tree)
+{
+	int n = tree->rebuildCapacity;
+	tbFree(tree->leafIndices, n * (int)sizeof(int32_t));
+	tbFree(tree->leafBoxes, n * (int)sizeof(tbAABB));
+	tbFree(tree->leafCenters, n * (int)sizeof(tbVec2));
+	tbFree(tree->binIndices, n * (int)sizeof(int32_t));
+	tree->leafIndices = NULL;
+	tree->leafBoxes = NULL;
+	tree->leafCenters = NULL;
+	tree->binIndices = NULL;
+	tree->rebuildCapacity = 0;
+}
+
+/// Exchange rebuild items i and j (their bins are the partition's business).
+static void tbSwapRebuildItems(tbDynamicTree* tree, int i, int j)
+{
+	int32_t index = tree->leafIndices[i];
+	tree->leafIndices[i] = tree->leafIndices[j];
+	tree->leafIndices[j] = index;
+	tbAABB box = tree->leafBoxes[i];
+	tree->leafBoxes[i] = tree->leafBoxes[j];
+	tree->leafBoxes[j] = box;
+	tbVec2 center = tree->leafCenters[i];
+	tree->leafCenters[i] = tree->leafCenters[j];
+	tree->leafCenters[j] = center;
 }
 
 // --------------------------------------------------------------------------------------------
@@ -130,8 +152,8 @@ static void tbGrowNodes(tbDynamicTree* tree)
 	tree->nodes = tbGrowAlloc(tree->nodes, oldCapacity * (int)sizeof(tbTreeNode), newCapacity * (int)sizeof(tbTreeNode));
 	for (int i = oldCapacity; i < newCapacity; ++i)
 	{
-		tree->nodes[i].parent = i + 1 < newCapacity ? i + 1 : tree->freeList;
-		tree->nodes[i].height = -1;
+		tree->nodes[i].next = i + 1 < newCapacity ? i + 1 : tree->freeList;
+		tree->nodes[i].flags = 0;
 	}
 	tree->freeList = oldCapacity;
 	tree->nodeCapacity = newCapacity;
@@ -154,7 +176,7 @@ tbDynamicTree tbDynamicTree_Create(int proxyCapacity)
 void tbDynamicTree_Destroy(tbDynamicTree* tree)
 {
 	tbFree(tree->nodes, tree->nodeCapacity * (int)sizeof(tbTreeNode));
-	tbFree(tree->rebuildLeaves, tree->rebuildCapacity * (int)sizeof(tbRebuildLeaf));
+	tbFreeRebuild(tree);
 	*tree = tbDynamicTree_Create(0);
 }
 
@@ -166,11 +188,12 @@ static int tbAllocateNode(tbDynamicTree* tree)
 	}
 	int index = tree->freeList;
 	tbTreeNode* node = tree->nodes + index;
-	tree->freeList = node->parent;
+	tree->freeList = node->next;
 	memset(node, 0, sizeof(*node));
 	node->parent = TB_NULL_NODE;
-	node->child1 = TB_NULL_NODE;
-	node->child2 = TB_NULL_NODE;
+	node->children.child1 = TB_NULL_NODE;
+	node->children.child2 = TB_NULL_NODE;
+	node->flags = tb_allocatedNode;
 	tree->nodeCount += 1;
 	return index;
 }
@@ -178,8 +201,8 @@ static int tbAllocateNode(tbDynamicTree* tree)
 static void tbFreeNode(tbDynamicTree* tree, int index)
 {
 	TB_ASSERT(0 <= index && index < tree->nodeCapacity);
-	tree->nodes[index].parent = tree->freeList;
-	tree->nodes[index].height = -1;
+	tree->nodes[index].next = tree->freeList;
+	tree->nodes[index].flags = 0;
 	tree->freeList = index;
 	tree->nodeCount -= 1;
 }
@@ -191,11 +214,11 @@ static void tbFreeNode(tbDynamicTree* tree, int index)
 static void tbRefitNode(tbDynamicTree* tree, int index)
 {
 	tbTreeNode* node = tree->nodes + index;
-	const tbTreeNode* a = tree->nodes + node->child1;
-	const tbTreeNode* b = tree->nodes + node->child2;
+	const tbTreeNode* a = tree->nodes + node->children.child1;
+	const tbTreeNode* b = tree->nodes + node->children.child2;
 	node->aabb = tbAABB_Union(a->aabb, b->aabb);
 	node->categoryBits = a->categoryBits | b->categoryBits;
-	node->height = (int16_t)(1 + tbMaxInt(a->height, b->height));
+	node->height = (uint16_t)(1 + tbMaxInt(a->height, b->height));
 }
 
 /// A candidate rotation at node A: swap A's child `upper` with `lower`, a child of A's other
@@ -215,7 +238,7 @@ static bool tbEvaluateRotation(const tbDynamicTree* tree, int upper, int other, 
 	{
 		return false;
 	}
-	int kept = o->child1 == lower ? o->child2 : o->child1;
+	int kept = o->children.child1 == lower ? o->children.child2 : o->children.child1;
 	const tbTreeNode* u = tree->nodes + upper;
 	const tbTreeNode* l = tree->nodes + lower;
 	const tbTreeNode* k = tree->nodes + kept;
@@ -234,14 +257,14 @@ static bool tbEvaluateRotation(const tbDynamicTree* tree, int upper, int other, 
 static void tbReplaceChild(tbDynamicTree* tree, int parent, int oldChild, int newChild)
 {
 	tbTreeNode* p = tree->nodes + parent;
-	if (p->child1 == oldChild)
+	if (p->children.child1 == oldChild)
 	{
-		p->child1 = newChild;
+		p->children.child1 = newChild;
 	}
 	else
 	{
-		TB_ASSERT(p->child2 == oldChild);
-		p->child2 = newChild;
+		TB_ASSERT(p->children.child2 == oldChild);
+		p->children.child2 = newChild;
 	}
 	tree->nodes[newChild].parent = parent;
 }
@@ -277,7 +300,7 @@ static bool tbIsBetterRotation(const tbRotation* r, const tbRotation* best, bool
 static void tbRotateNode(tbDynamicTree* tree, int indexA)
 {
 	const tbTreeNode* a = tree->nodes + indexA;
-	int b = a->child1, c = a->child2;
+	int b = a->children.child1, c = a->children.child2;
 	const tbTreeNode* nodeB = tree->nodes + b;
 	const tbTreeNode* nodeC = tree->nodes + c;
 	bool unbalanced = abs(nodeB->height - nodeC->height) > 1;
@@ -286,7 +309,7 @@ static void tbRotateNode(tbDynamicTree* tree, int indexA)
 	// Candidates: B with C's children, C with B's children.
 	int uppers[4] = {b, b, c, c};
 	int others[4] = {c, c, b, b};
-	int lowers[4] = {nodeC->child1, nodeC->child2, nodeB->child1, nodeB->child2};
+	int lowers[4] = {nodeC->children.child1, nodeC->children.child2, nodeB->children.child1, nodeB->children.child2};
 
 	tbRotation best = {0};
 	bool hasBest = false;
@@ -361,13 +384,13 @@ static int tbFindBestSibling(const tbDynamicTree* tree, tbAABB box)
 			continue;
 		}
 		// Push the child whose union with the leaf is larger first, so the smaller is visited first.
-		int first = node->child1, second = node->child2;
+		int first = node->children.child1, second = node->children.child2;
 		float p1 = tbAABB_Perimeter(tbAABB_Union(tree->nodes[first].aabb, box));
 		float p2 = tbAABB_Perimeter(tbAABB_Union(tree->nodes[second].aabb, box));
 		if (p1 < p2)
 		{
-			first = node->child2;
-			second = node->child1;
+			first = node->children.child2;
+			second = node->children.child1;
 		}
 		stack[count++] = (tbCandidate){first, childInherited};
 		stack[count++] = (tbCandidate){second, childInherited};
@@ -388,9 +411,8 @@ static void tbInsertLeaf(tbDynamicTree* tree, int leaf)
 	int newParent = tbAllocateNode(tree);
 	tbTreeNode* p = tree->nodes + newParent;
 	p->parent = oldParent;
-	p->child1 = sibling;
-	p->child2 = leaf;
-	p->userData = -1;
+	p->children.child1 = sibling;
+	p->children.child2 = leaf;
 	if (oldParent == TB_NULL_NODE)
 	{
 		tree->root = newParent;
@@ -414,7 +436,7 @@ static void tbRemoveLeaf(tbDynamicTree* tree, int leaf)
 	}
 	int parent = tree->nodes[leaf].parent;
 	int grandParent = tree->nodes[parent].parent;
-	int sibling = tree->nodes[parent].child1 == leaf ? tree->nodes[parent].child2 : tree->nodes[parent].child1;
+	int sibling = tree->nodes[parent].children.child1 == leaf ? tree->nodes[parent].children.child2 : tree->nodes[parent].children.child1;
 	if (grandParent == TB_NULL_NODE)
 	{
 		tree->root = sibling;
@@ -437,11 +459,11 @@ static void tbRemoveLeaf(tbDynamicTree* tree, int leaf)
 /// cleared node only makes the next partial rebuild descend further, never wrong.
 static void tbClearEnlargedPath(tbDynamicTree* tree, int index)
 {
-	tree->nodes[index].enlarged = 0;
+	tree->nodes[index].flags &= (uint16_t)~tb_enlargedNode;
 	index = tree->nodes[index].parent;
-	while (index != TB_NULL_NODE && tree->nodes[index].enlarged != 0)
+	while (index != TB_NULL_NODE && (tree->nodes[index].flags & tb_enlargedNode) != 0)
 	{
-		tree->nodes[index].enlarged = 0;
+		tree->nodes[index].flags &= (uint16_t)~tb_enlargedNode;
 		index = tree->nodes[index].parent;
 	}
 }
@@ -454,6 +476,7 @@ int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categor
 	node->categoryBits = categoryBits;
 	node->userData = userData;
 	node->height = 0;
+	node->flags = tb_allocatedNode | tb_leafNode;
 	tbInsertLeaf(tree, leaf);
 	tree->proxyCount += 1;
 	return leaf;
@@ -481,19 +504,19 @@ void tbDynamicTree_EnlargeProxy(tbDynamicTree* tree, int proxyId, tbAABB aabb)
 	TB_ASSERT(0 <= proxyId && proxyId < tree->nodeCapacity && tbIsLeaf(tree->nodes + proxyId));
 	tbTreeNode* nodes = tree->nodes;
 	nodes[proxyId].aabb = aabb;
-	nodes[proxyId].enlarged = 1;
+	nodes[proxyId].flags |= tb_enlargedNode;
 	int index = nodes[proxyId].parent;
 	// Ancestors only ever grow; stop growing at the first one that already contains the new box.
 	while (index != TB_NULL_NODE && tbAABB_Contains(nodes[index].aabb, aabb) == false)
 	{
 		nodes[index].aabb = tbAABB_Union(nodes[index].aabb, aabb);
-		nodes[index].enlarged = 1;
+		nodes[index].flags |= tb_enlargedNode;
 		index = nodes[index].parent;
 	}
 	// Mark the rest of the path to the root for the partial rebuild (a tree height, ~20 nodes).
 	while (index != TB_NULL_NODE)
 	{
-		nodes[index].enlarged = 1;
+		nodes[index].flags |= tb_enlargedNode;
 		index = nodes[index].parent;
 	}
 }
@@ -533,8 +556,8 @@ static tbTreeStats tbQueryTree(const tbDynamicTree* tree, tbAABB aabb, uint64_t 
 			continue;
 		}
 		stats.nodeVisits += 1;
-		tbTreeStackPush(&stack, node->child1);
-		tbTreeStackPush(&stack, node->child2);
+		tbTreeStackPush(&stack, node->children.child1);
+		tbTreeStackPush(&stack, node->children.child2);
 	}
 	tbTreeStackFree(&stack);
 	return stats;
@@ -600,8 +623,8 @@ tbTreeStats tbDynamicTree_RayCast(const tbDynamicTree* tree, const tbRayCastInpu
 		if (tbIsLeaf(node) == false)
 		{
 			stats.nodeVisits += 1;
-			tbTreeStackPush(&stack, node->child1);
-			tbTreeStackPush(&stack, node->child2);
+			tbTreeStackPush(&stack, node->children.child1);
+			tbTreeStackPush(&stack, node->children.child2);
 			continue;
 		}
 		stats.leafVisits += 1;
@@ -663,8 +686,8 @@ tbTreeStats tbDynamicTree_BoxCast(const tbDynamicTree* tree, const tbBoxCastInpu
 		if (tbIsLeaf(node) == false)
 		{
 			stats.nodeVisits += 1;
-			tbTreeStackPush(&stack, node->child1);
-			tbTreeStackPush(&stack, node->child2);
+			tbTreeStackPush(&stack, node->children.child1);
+			tbTreeStackPush(&stack, node->children.child2);
 			continue;
 		}
 		stats.leafVisits += 1;
@@ -692,7 +715,7 @@ void tbDynamicTree_SetCategoryBits(tbDynamicTree* tree, int proxyId, uint64_t ca
 	// The ancestors hold the OR of their leaves' bits: recompute them up the path (a tree height).
 	for (int index = nodes[proxyId].parent; index != TB_NULL_NODE; index = nodes[index].parent)
 	{
-		nodes[index].categoryBits = nodes[nodes[index].child1].categoryBits | nodes[nodes[index].child2].categoryBits;
+		nodes[index].categoryBits = nodes[nodes[index].children.child1].categoryBits | nodes[nodes[index].children.child2].categoryBits;
 	}
 }
 
@@ -710,7 +733,7 @@ int tbDynamicTree_GetProxyCount(const tbDynamicTree* tree)
 int tbDynamicTree_GetByteCount(const tbDynamicTree* tree)
 {
 	return (int)sizeof(tbDynamicTree) + tree->nodeCapacity * (int)sizeof(tbTreeNode) +
-		   tree->rebuildCapacity * (int)sizeof(tbRebuildLeaf);
+		   tree->rebuildCapacity * TB_REBUILD_ITEM_BYTES;
 }
 
 // --------------------------------------------------------------------------------------------
@@ -732,7 +755,7 @@ float tbDynamicTree_GetAreaRatio(const tbDynamicTree* tree)
 	for (int i = 0; i < tree->nodeCapacity; ++i)
 	{
 		const tbTreeNode* node = tree->nodes + i;
-		if (node->height > 0)
+		if ((node->flags & tb_allocatedNode) != 0 && tbIsLeaf(node) == false)
 		{
 			total += tbAABB_Perimeter(node->aabb);
 		}
@@ -748,7 +771,7 @@ static bool tbValidateNode(const tbDynamicTree* tree, int index, int parent, int
 		return false;
 	}
 	const tbTreeNode* node = tree->nodes + index;
-	if (node->parent != parent || node->height < 0)
+	if (node->parent != parent || (node->flags & tb_allocatedNode) == 0)
 	{
 		return false;
 	}
@@ -756,15 +779,15 @@ static bool tbValidateNode(const tbDynamicTree* tree, int index, int parent, int
 	if (tbIsLeaf(node))
 	{
 		*leafCount += 1;
-		return node->child1 == TB_NULL_NODE && node->child2 == TB_NULL_NODE;
+		return node->height == 0;
 	}
-	if (tbValidateNode(tree, node->child1, index, nodeCount, leafCount) == false ||
-		tbValidateNode(tree, node->child2, index, nodeCount, leafCount) == false)
+	if (tbValidateNode(tree, node->children.child1, index, nodeCount, leafCount) == false ||
+		tbValidateNode(tree, node->children.child2, index, nodeCount, leafCount) == false)
 	{
 		return false;
 	}
-	const tbTreeNode* a = tree->nodes + node->child1;
-	const tbTreeNode* b = tree->nodes + node->child2;
+	const tbTreeNode* a = tree->nodes + node->children.child1;
+	const tbTreeNode* b = tree->nodes + node->children.child2;
 	return node->height == 1 + tbMaxInt(a->height, b->height) && tbAABB_Contains(node->aabb, a->aabb) &&
 		   tbAABB_Contains(node->aabb, b->aabb) && node->categoryBits == (a->categoryBits | b->categoryBits);
 }
@@ -777,7 +800,7 @@ bool tbDynamicTree_ValidateNoEnlarged(const tbDynamicTree* tree)
 	}
 	for (int i = 0; i < tree->nodeCapacity; ++i)
 	{
-		if (tree->nodes[i].height >= 0 && tree->nodes[i].enlarged != 0)
+		if ((tree->nodes[i].flags & (tb_allocatedNode | tb_enlargedNode)) == (tb_allocatedNode | tb_enlargedNode))
 		{
 			return false;
 		}
@@ -793,7 +816,7 @@ bool tbDynamicTree_Validate(const tbDynamicTree* tree)
 		return false;
 	}
 	int freeCount = 0;
-	for (int i = tree->freeList; i != TB_NULL_NODE && freeCount <= tree->nodeCapacity; i = tree->nodes[i].parent)
+	for (int i = tree->freeList; i != TB_NULL_NODE && freeCount <= tree->nodeCapacity; i = tree->nodes[i].next)
 	{
 		freeCount += 1;
 	}
@@ -810,9 +833,12 @@ static void tbReserveRebuild(tbDynamicTree* tree, int count)
 	{
 		return;
 	}
-	tbFree(tree->rebuildLeaves, tree->rebuildCapacity * (int)sizeof(tbRebuildLeaf));
+	tbFreeRebuild(tree);
 	int n = count + count / 2;
-	tree->rebuildLeaves = tbAlloc(n * (int)sizeof(tbRebuildLeaf));
+	tree->leafIndices = tbAlloc(n * (int)sizeof(int32_t));
+	tree->leafBoxes = tbAlloc(n * (int)sizeof(tbAABB));
+	tree->leafCenters = tbAlloc(n * (int)sizeof(tbVec2));
+	tree->binIndices = tbAlloc(n * (int)sizeof(int32_t));
 	tree->rebuildCapacity = n;
 }
 
@@ -820,12 +846,14 @@ static void tbReserveRebuild(tbDynamicTree* tree, int count)
 /// number that go left under the best SAH plane, or 0 when the centroids cannot be separated.
 static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 {
-	tbRebuildLeaf* leaves = tree->rebuildLeaves + start;
-	tbVec2 lower = leaves[0].center, upper = lower;
+	const tbVec2* centers = tree->leafCenters + start;
+	const tbAABB* boxes = tree->leafBoxes + start;
+	int32_t* bins = tree->binIndices + start;
+	tbVec2 lower = centers[0], upper = lower;
 	for (int i = 1; i < count; ++i)
 	{
-		lower = tbMin(lower, leaves[i].center);
-		upper = tbMax(upper, leaves[i].center);
+		lower = tbMin(lower, centers[i]);
+		upper = tbMax(upper, centers[i]);
 	}
 	tbVec2 extent = tbSub(upper, lower);
 	bool useX = extent.x >= extent.y;
@@ -848,15 +876,15 @@ static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 	float scale = (float)TB_TREE_BIN_COUNT / width;
 	for (int i = 0; i < count; ++i)
 	{
-		float c = useX ? leaves[i].center.x : leaves[i].center.y;
+		float c = useX ? centers[i].x : centers[i].y;
 		// Clamp in float before converting: when the centres span more than FLT_MAX the width is
 		// infinite, scale is 0 and scale·(c − minC) can be 0·∞ = NaN, which no int can hold
 		// (NaN fails the first test and lands in bin 0).
 		float position = scale * (c - minC);
 		int bin = position > 0.0f ? (position < (float)(TB_TREE_BIN_COUNT - 1) ? (int)position : TB_TREE_BIN_COUNT - 1) : 0;
-		leaves[i].bin = bin;
-		binBoxes[bin].lowerBound = tbMin(binBoxes[bin].lowerBound, leaves[i].box.lowerBound);
-		binBoxes[bin].upperBound = tbMax(binBoxes[bin].upperBound, leaves[i].box.upperBound);
+		bins[i] = bin;
+		binBoxes[bin].lowerBound = tbMin(binBoxes[bin].lowerBound, boxes[i].lowerBound);
+		binBoxes[bin].upperBound = tbMax(binBoxes[bin].upperBound, boxes[i].upperBound);
 		binCounts[bin] += 1;
 	}
 
@@ -903,15 +931,14 @@ static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 	int left = 0, right = count - 1;
 	while (left <= right)
 	{
-		if (leaves[left].bin <= bestPlane)
+		if (bins[left] <= bestPlane)
 		{
 			left += 1;
 		}
 		else
 		{
-			tbRebuildLeaf swap = leaves[left];
-			leaves[left] = leaves[right];
-			leaves[right] = swap;
+			tbSwapRebuildItems(tree, start + left, start + right);
+			bins[left] = bins[right];
 			right -= 1;
 		}
 	}
@@ -924,7 +951,7 @@ static int tbPartitionBinned(tbDynamicTree* tree, int start, int count)
 static int tbPartitionMid(tbDynamicTree* tree, int start, int count, tbVec2 lower, tbVec2 upper, tbVec2* leftLower,
 						  tbVec2* leftUpper, tbVec2* rightLower, tbVec2* rightUpper)
 {
-	tbRebuildLeaf* leaves = tree->rebuildLeaves + start;
+	const tbVec2* centers = tree->leafCenters + start;
 	tbVec2 extent = tbSub(upper, lower);
 	int axis = extent.x >= extent.y ? 0 : 1;
 	float split = 0.5f * (axis == 0 ? lower.x + upper.x : lower.y + upper.y);
@@ -933,7 +960,7 @@ static int tbPartitionMid(tbDynamicTree* tree, int start, int count, tbVec2 lowe
 	int left = 0, right = count - 1;
 	while (left <= right)
 	{
-		tbVec2 c = leaves[left].center;
+		tbVec2 c = centers[left];
 		if ((axis == 0 ? c.x : c.y) < split)
 		{
 			lLo = tbMin(lLo, c);
@@ -944,9 +971,7 @@ static int tbPartitionMid(tbDynamicTree* tree, int start, int count, tbVec2 lowe
 		{
 			rLo = tbMin(rLo, c);
 			rHi = tbMax(rHi, c);
-			tbRebuildLeaf swap = leaves[left];
-			leaves[left] = leaves[right];
-			leaves[right] = swap;
+			tbSwapRebuildItems(tree, start + left, start + right);
 			right -= 1;
 		}
 	}
@@ -960,12 +985,12 @@ static int tbPartitionMid(tbDynamicTree* tree, int start, int count, tbVec2 lowe
 /// Centroid bounds of [start, start + count).
 static void tbCentroidBounds(const tbDynamicTree* tree, int start, int count, tbVec2* lower, tbVec2* upper)
 {
-	const tbRebuildLeaf* leaves = tree->rebuildLeaves + start;
-	tbVec2 lo = leaves[0].center, hi = lo;
+	const tbVec2* centers = tree->leafCenters + start;
+	tbVec2 lo = centers[0], hi = lo;
 	for (int i = 1; i < count; ++i)
 	{
-		lo = tbMin(lo, leaves[i].center);
-		hi = tbMax(hi, leaves[i].center);
+		lo = tbMin(lo, centers[i]);
+		hi = tbMax(hi, centers[i]);
 	}
 	*lower = lo;
 	*upper = hi;
@@ -976,7 +1001,7 @@ static int tbBuildSubtree(tbDynamicTree* tree, int start, int count, tbVec2 lowe
 {
 	if (count == 1)
 	{
-		return tree->rebuildLeaves[start].node;
+		return tree->leafIndices[start];
 	}
 	tbVec2 lLo, lHi, rLo, rHi;
 	int leftCount;
@@ -1001,9 +1026,8 @@ static int tbBuildSubtree(tbDynamicTree* tree, int start, int count, tbVec2 lowe
 	int child1 = tbBuildSubtree(tree, start, leftCount, lLo, lHi);
 	int child2 = tbBuildSubtree(tree, start + leftCount, count - leftCount, rLo, rHi);
 	tbTreeNode* node = tree->nodes + index;
-	node->child1 = child1;
-	node->child2 = child2;
-	node->userData = -1;
+	node->children.child1 = child1;
+	node->children.child2 = child2;
 	tree->nodes[child1].parent = index;
 	tree->nodes[child2].parent = index;
 	tbRefitNode(tree, index);
@@ -1013,12 +1037,12 @@ static int tbBuildSubtree(tbDynamicTree* tree, int start, int count, tbVec2 lowe
 /// Add one rebuild item: a leaf or a whole subtree kept as it is.
 static void tbAddRebuildItem(tbDynamicTree* tree, int index, int itemCount)
 {
-	tbRebuildLeaf* item = tree->rebuildLeaves + itemCount;
-	item->box = tree->nodes[index].aabb;
-	item->center = tbAABB_Center(item->box);
-	item->node = index;
-	item->bin = 0;
-	tree->nodes[index].enlarged = 0;
+	tbAABB box = tree->nodes[index].aabb;
+	tree->leafIndices[itemCount] = index;
+	tree->leafBoxes[itemCount] = box;
+	tree->leafCenters[itemCount] = tbAABB_Center(box);
+	tree->binIndices[itemCount] = 0;
+	tree->nodes[index].flags &= (uint16_t)~tb_enlargedNode;
 }
 
 /// Every leaf is an item and every internal node is freed.
@@ -1027,12 +1051,16 @@ static int tbCollectAllLeaves(tbDynamicTree* tree)
 	int itemCount = 0;
 	for (int i = 0; i < tree->nodeCapacity; ++i)
 	{
-		int height = tree->nodes[i].height;
-		if (height == 0)
+		const tbTreeNode* node = tree->nodes + i;
+		if ((node->flags & tb_allocatedNode) == 0)
+		{
+			continue;
+		}
+		if (tbIsLeaf(node))
 		{
 			tbAddRebuildItem(tree, i, itemCount++);
 		}
-		else if (height > 0)
+		else
 		{
 			tbFreeNode(tree, i);
 		}
@@ -1053,13 +1081,13 @@ static int tbCollectEnlargedItems(tbDynamicTree* tree)
 	{
 		int index = stack.items[--stack.count];
 		tbTreeNode* node = tree->nodes + index;
-		if (node->height == 0 || node->enlarged == 0)
+		if ((node->flags & (tb_leafNode | tb_enlargedNode)) != tb_enlargedNode)
 		{
 			tbAddRebuildItem(tree, index, itemCount++);
 			continue;
 		}
-		tbTreeStackPush(&stack, node->child2);
-		tbTreeStackPush(&stack, node->child1);
+		tbTreeStackPush(&stack, node->children.child2);
+		tbTreeStackPush(&stack, node->children.child1);
 		tbFreeNode(tree, index);
 	}
 	tbTreeStackFree(&stack);
@@ -1068,7 +1096,7 @@ static int tbCollectEnlargedItems(tbDynamicTree* tree)
 
 int tbDynamicTree_Rebuild(tbDynamicTree* tree, bool fullBuild)
 {
-	if (tree->root == TB_NULL_NODE || (fullBuild == false && tree->nodes[tree->root].enlarged == 0))
+	if (tree->root == TB_NULL_NODE || (fullBuild == false && (tree->nodes[tree->root].flags & tb_enlargedNode) == 0))
 	{
 		return 0;
 	}
@@ -1109,8 +1137,8 @@ static void tbVisitNode(const tbDynamicTree* tree, int index, int depth, tbTreeN
 	fcn(node->aabb, depth, tbIsLeaf(node), context);
 	if (tbIsLeaf(node) == false)
 	{
-		tbVisitNode(tree, node->child1, depth + 1, fcn, context);
-		tbVisitNode(tree, node->child2, depth + 1, fcn, context);
+		tbVisitNode(tree, node->children.child1, depth + 1, fcn, context);
+		tbVisitNode(tree, node->children.child2, depth + 1, fcn, context);
 	}
 }
 

@@ -57,7 +57,7 @@ typedef double tbTreeReal;
 
 /// One node of a tree: a body (unknowns Δv, Δω) or a joint (the Δλ of its rows). Built once per
 /// step; the numbers live in the step's tbTreeReal pool at `values` (tbNodeValues).
-typedef struct tbTreeNode
+typedef struct tbJointTreeNode
 {
 	int parent; ///< node index of the parent, −1 for the root
 	int dim;	///< body: 3; joint: its rows, 1–3
@@ -66,7 +66,7 @@ typedef struct tbTreeNode
 	int side;	///< joint node: side (0 = A, 1 = B) of its parent body; body node: its side in its parent joint
 	int values; ///< offset in the tbTreeReal pool
 	int rows;	///< joint node: its tbJointRows in the step's array; −1 for a body node
-} tbTreeNode;
+} tbJointTreeNode;
 
 typedef struct tbTree
 {
@@ -167,9 +167,9 @@ static bool tbIsTreeBody(const tbStepContext* context, const tbBody* body)
 	return body->type == tb_dynamicBody && body->awakeIndex != TB_NULL_INDEX && body->awakeIndex < context->bodyCount;
 }
 
-static tbTreeNode tbMakeNode(int parent, int dim, int body, int joint, int side)
+static tbJointTreeNode tbMakeNode(int parent, int dim, int body, int joint, int side)
 {
-	tbTreeNode node;
+	tbJointTreeNode node;
 	memset(&node, 0, sizeof(node));
 	node.parent = parent;
 	node.dim = dim;
@@ -184,7 +184,7 @@ static tbTreeNode tbMakeNode(int parent, int dim, int body, int joint, int side)
 /// body; or a body), appending nodes in preorder (parents before children) from `count` on;
 /// returns the new count. bodyNode[solver index] marks the bodies taken and joint->treeNode the
 /// joints, by preorder position.
-static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId, tbTreeNode* order, int count,
+static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId, tbJointTreeNode* order, int count,
 					  int* bodyNode, int* stack)
 {
 	tbWorld* world = context->world;
@@ -240,7 +240,7 @@ static int tbGrowTree(tbStepContext* context, tbJoint* rootJoint, int rootBodyId
 #define TB_TREE_MIN_DEPTH 6
 #define TB_TREE_MIN_MASS_RATIO 10.0f
 
-static bool tbTreeNeedsExactSolve(const tbStepContext* context, const tbTreeNode* preorder, int start, int count,
+static bool tbTreeNeedsExactSolve(const tbStepContext* context, const tbJointTreeNode* preorder, int start, int count,
 								  int* depth)
 {
 	const tbWorld* world = context->world;
@@ -250,7 +250,7 @@ static bool tbTreeNeedsExactSolve(const tbStepContext* context, const tbTreeNode
 	{
 		// Preorder: a node's parent (an index into preorder) comes before it. depth: joints on the
 		// path from the root to the node, itself included.
-		const tbTreeNode* node = preorder + start + k;
+		const tbJointTreeNode* node = preorder + start + k;
 		depth[k] = (node->parent < 0 ? 0 : depth[node->parent - start]) + (node->joint >= 0 ? 1 : 0);
 		if (node->joint >= 0)
 		{
@@ -267,7 +267,7 @@ static bool tbTreeNeedsExactSolve(const tbStepContext* context, const tbTreeNode
 }
 
 /// Floats of a node in the pool: D (n²), H (3 × n or n × 3), L (the same), x (n).
-static int tbNodeFloatCount(const tbTreeNode* node, int parentDim)
+static int tbNodeFloatCount(const tbJointTreeNode* node, int parentDim)
 {
 	int n = node->dim;
 	int r = node->body < 0 ? n : parentDim;
@@ -286,8 +286,8 @@ void tbBuildJointTrees(tbStepContext* context)
 	}
 	tbArena* arena = &world->stepArena;
 	int maxNodes = context->bodyCount + jointCount;
-	tbTreeNode* preorder = tbArenaAlloc(arena, (int)sizeof(tbTreeNode) * maxNodes);
-	tbTreeNode* nodes = tbArenaAlloc(arena, (int)sizeof(tbTreeNode) * maxNodes);
+	tbJointTreeNode* preorder = tbArenaAlloc(arena, (int)sizeof(tbJointTreeNode) * maxNodes);
+	tbJointTreeNode* nodes = tbArenaAlloc(arena, (int)sizeof(tbJointTreeNode) * maxNodes);
 	tbTree* trees = tbArenaAlloc(arena, (int)sizeof(tbTree) * jointCount);
 	int* bodyNode = tbArenaAlloc(arena, (int)sizeof(int) * (context->bodyCount + 1));
 	int* stack = tbArenaAlloc(arena, (int)sizeof(int) * maxNodes);
@@ -336,7 +336,7 @@ void tbBuildJointTrees(tbStepContext* context)
 		}
 		for (int k = 0; k < n; ++k)
 		{
-			tbTreeNode node = preorder[start + k];
+			tbJointTreeNode node = preorder[start + k];
 			node.parent = node.parent < 0 ? -1 : start + (n - 1 - (node.parent - start));
 			nodes[start + n - 1 - k] = node;
 		}
@@ -347,7 +347,7 @@ void tbBuildJointTrees(tbStepContext* context)
 	int floats = 0, rows = 0;
 	for (int i = 0; i < count; ++i)
 	{
-		tbTreeNode* node = nodes + i;
+		tbJointTreeNode* node = nodes + i;
 		node->values = floats;
 		floats += tbNodeFloatCount(node, node->parent >= 0 ? nodes[node->parent].dim : 0);
 		if (node->joint >= 0)
@@ -378,7 +378,7 @@ typedef struct tbNodeValues
 	tbTreeReal* x;
 } tbNodeValues;
 
-static tbNodeValues tbGetValues(const tbWorld* world, const tbTreeNode* node)
+static tbNodeValues tbGetValues(const tbWorld* world, const tbJointTreeNode* node)
 {
 	int n = node->dim;
 	int r = node->body < 0 ? n : (node->parent >= 0 ? world->cache.jointTreeNodes[node->parent].dim : 0);
@@ -404,7 +404,7 @@ static void tbRowAgainst(const tbJointRows* rows, int r, int side, bool turns, t
 
 // A joint node: pivot −Γ = 0 (rigid rows); H = −J(joint, parent body), r × 3 (a root joint to
 // ground has no parent block).
-static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNodeValues v)
+static void tbFillJointNode(const tbWorld* world, const tbJointTreeNode* node, tbNodeValues v)
 {
 	int n = node->dim;
 	memset(v.D, 0, sizeof(tbTreeReal) * (size_t)(n * n));
@@ -412,7 +412,7 @@ static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNode
 	{
 		return;
 	}
-	const tbTreeNode* parent = world->cache.jointTreeNodes + node->parent;
+	const tbJointTreeNode* parent = world->cache.jointTreeNodes + node->parent;
 	bool turns = tbTurns(world->bodies + world->awakeBodies[parent->body]);
 	const tbJointRows* rows = world->cache.jointTreeRows + node->rows;
 	for (int r = 0; r < n; ++r)
@@ -426,7 +426,7 @@ static void tbFillJointNode(const tbWorld* world, const tbTreeNode* node, tbNode
 }
 
 // A body node: pivot M = diag(m, m, I); H = −J(parent joint, body)ᵀ, 3 × r.
-static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeValues v)
+static void tbFillBodyNode(const tbWorld* world, const tbJointTreeNode* node, tbNodeValues v)
 {
 	const tbBody* body = world->bodies + world->awakeBodies[node->body];
 	bool turns = tbTurns(body);
@@ -438,7 +438,7 @@ static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeV
 	{
 		return;
 	}
-	const tbTreeNode* parent = world->cache.jointTreeNodes + node->parent;
+	const tbJointTreeNode* parent = world->cache.jointTreeNodes + node->parent;
 	const tbJointRows* rows = world->cache.jointTreeRows + parent->rows;
 	int r = parent->dim;
 	for (int row = 0; row < r; ++row)
@@ -453,7 +453,7 @@ static void tbFillBodyNode(const tbWorld* world, const tbTreeNode* node, tbNodeV
 
 // L = D⁻¹·H and the parent's pivot update D(p) −= Hᵀ·L. A joint child touches only the 3 × 3
 // velocity block of its body, which is all a body has.
-static void tbEliminate(const tbTreeNode* node, tbNodeValues v, tbTreeReal* parentD, int m)
+static void tbEliminate(const tbJointTreeNode* node, tbNodeValues v, tbTreeReal* parentD, int m)
 {
 	int n = node->dim;
 	int k = node->body < 0 ? 3 : m; // columns of H and L
@@ -470,11 +470,11 @@ static void tbEliminate(const tbTreeNode* node, tbNodeValues v, tbTreeReal* pare
 static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 {
 	tbWorld* world = context->world;
-	tbTreeNode* nodes = world->cache.jointTreeNodes;
+	tbJointTreeNode* nodes = world->cache.jointTreeNodes;
 	int end = tree->start + tree->count;
 	for (int i = tree->start; i < end; ++i)
 	{
-		const tbTreeNode* node = nodes + i;
+		const tbJointTreeNode* node = nodes + i;
 		if (node->joint >= 0)
 		{
 			tbJoint* joint = world->joints + node->joint;
@@ -485,7 +485,7 @@ static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 	// Fill every node before eliminating any: a child's update lands on its parent's pivot.
 	for (int i = tree->start; i < end; ++i)
 	{
-		const tbTreeNode* node = nodes + i;
+		const tbJointTreeNode* node = nodes + i;
 		if (node->body >= 0)
 		{
 			tbFillBodyNode(world, node, tbGetValues(world, node));
@@ -497,7 +497,7 @@ static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 	}
 	for (int i = tree->start; i < end; ++i)
 	{
-		const tbTreeNode* node = nodes + i;
+		const tbJointTreeNode* node = nodes + i;
 		tbNodeValues v = tbGetValues(world, node);
 		if (tbInvertSmall(v.D, node->dim) == false)
 		{
@@ -528,7 +528,7 @@ void tbMarkTreeRows(tbStepContext* context, bool useBias)
 		const tbTree* tree = world->cache.jointTrees + t;
 		for (int i = tree->start; i < tree->start + tree->count; ++i)
 		{
-			const tbTreeNode* node = world->cache.jointTreeNodes + i;
+			const tbJointTreeNode* node = world->cache.jointTreeNodes + i;
 			if (node->joint >= 0)
 			{
 				world->joints[node->joint].solvedInTree = useBias && tree->factored;
@@ -539,7 +539,7 @@ void tbMarkTreeRows(tbStepContext* context, bool useBias)
 
 /// Right-hand side of a node: 0 for a body, J·v + bias for a joint's rows (the velocities of both
 /// its bodies, ground included).
-static void tbLoadResiduals(const tbStepContext* context, const tbTreeNode* node, tbTreeReal* x)
+static void tbLoadResiduals(const tbStepContext* context, const tbJointTreeNode* node, tbTreeReal* x)
 {
 	const tbWorld* world = context->world;
 	if (node->joint < 0)
@@ -561,7 +561,7 @@ static void tbLoadResiduals(const tbStepContext* context, const tbTreeNode* node
 }
 
 /// Apply a node's solution: a body's velocity change, or a joint's impulses.
-static void tbApplySolution(tbStepContext* context, const tbTreeNode* node, const tbTreeReal* x)
+static void tbApplySolution(tbStepContext* context, const tbJointTreeNode* node, const tbTreeReal* x)
 {
 	tbWorld* world = context->world;
 	if (node->joint >= 0)
@@ -585,7 +585,7 @@ static void tbApplySolution(tbStepContext* context, const tbTreeNode* node, cons
 static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 {
 	tbWorld* world = context->world;
-	const tbTreeNode* nodes = world->cache.jointTreeNodes;
+	const tbJointTreeNode* nodes = world->cache.jointTreeNodes;
 	int end = tree->start + tree->count;
 	for (int i = tree->start; i < end; ++i)
 	{
@@ -594,7 +594,7 @@ static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 	// Forward: x(p) −= L(c)ᵀ·x(c), children first.
 	for (int i = tree->start; i < end; ++i)
 	{
-		const tbTreeNode* node = nodes + i;
+		const tbJointTreeNode* node = nodes + i;
 		if (node->parent < 0)
 		{
 			continue;
@@ -612,7 +612,7 @@ static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 	// Backward from the root: x(c) = D(c)⁻¹·x(c) − L(c)·x(p), then apply it.
 	for (int i = end - 1; i >= tree->start; --i)
 	{
-		const tbTreeNode* node = nodes + i;
+		const tbJointTreeNode* node = nodes + i;
 		tbNodeValues v = tbGetValues(world, node);
 		tbTreeReal y[3];
 		tbMulNN(v.D, v.x, y, node->dim, node->dim, 1);

@@ -2959,18 +2959,18 @@ static void tbWriteTree(tbEncoder* e, const tbDynamicTree* tree, const tbBroadPr
 	}
 	tbPutInt(w, tree->root);
 	tbPutUInt(w, (uint32_t)(tree->nodeCapacity - tree->nodeCount));
-	for (int i = tree->freeList; i != TB_NULL_NODE; i = tree->nodes[i].parent)
+	for (int i = tree->freeList; i != TB_NULL_NODE; i = tree->nodes[i].next)
 	{
 		tbPutUInt(w, (uint32_t)i);
 	}
 	for (int i = 0; i < tree->nodeCapacity; ++i)
 	{
 		const tbTreeNode* node = tree->nodes + i;
-		if (node->height < 0)
+		if ((node->flags & tb_allocatedNode) == 0)
 		{
 			continue;
 		}
-		bool leaf = node->height == 0;
+		bool leaf = (node->flags & tb_leafNode) != 0;
 		tbAABB box;
 		uint64_t bits;
 		int height = 0;
@@ -2982,8 +2982,8 @@ static void tbWriteTree(tbEncoder* e, const tbDynamicTree* tree, const tbBroadPr
 		}
 		else
 		{
-			const tbTreeNode* a = tree->nodes + node->child1;
-			const tbTreeNode* b = tree->nodes + node->child2;
+			const tbTreeNode* a = tree->nodes + node->children.child1;
+			const tbTreeNode* b = tree->nodes + node->children.child2;
 			box = tbAABB_Union(a->aabb, b->aabb);
 			bits = a->categoryBits | b->categoryBits;
 			height = 1 + tbMaxInt(a->height, b->height);
@@ -2991,7 +2991,7 @@ static void tbWriteTree(tbEncoder* e, const tbDynamicTree* tree, const tbBroadPr
 		bool boxStored = tbSameAABB(box, node->aabb) == false;
 		bool bitsStored = bits != node->categoryBits;
 		bool heightStored = leaf == false && height != node->height;
-		uint32_t tag = (leaf ? tb_nodeLeaf : 0u) | (node->enlarged != 0 ? tb_nodeEnlarged : 0u) |
+		uint32_t tag = (leaf ? tb_nodeLeaf : 0u) | ((node->flags & tb_enlargedNode) != 0 ? tb_nodeEnlarged : 0u) |
 					   (boxStored ? tb_nodeBoxStored : 0u) | (bitsStored ? tb_nodeBitsStored : 0u) |
 					   (heightStored ? tb_nodeHeightStored : 0u);
 		tbPutUInt(w, tag);
@@ -3001,8 +3001,8 @@ static void tbWriteTree(tbEncoder* e, const tbDynamicTree* tree, const tbBroadPr
 		}
 		else
 		{
-			tbPutUInt(w, (uint32_t)node->child1);
-			tbPutUInt(w, (uint32_t)node->child2);
+			tbPutUInt(w, (uint32_t)node->children.child1);
+			tbPutUInt(w, (uint32_t)node->children.child2);
 		}
 		if (boxStored)
 		{
@@ -3114,15 +3114,15 @@ static bool tbReadTree(tbDecoder* d, tbDynamicTree* tree, tbBroadPhase* bp, bool
 			break;
 		}
 		state[index] = 1;
-		tree->nodes[index].height = -1;
-		tree->nodes[index].parent = TB_NULL_NODE;
+		tree->nodes[index].flags = 0;
+		tree->nodes[index].next = TB_NULL_NODE;
 		if (previous == TB_NULL_NODE)
 		{
 			tree->freeList = index;
 		}
 		else
 		{
-			tree->nodes[previous].parent = index;
+			tree->nodes[previous].next = index;
 		}
 		previous = index;
 	}
@@ -3142,9 +3142,10 @@ static bool tbReadTree(tbDecoder* d, tbDynamicTree* tree, tbBroadPhase* bp, bool
 		}
 		tags[i] = (uint8_t)tag;
 		node->parent = TB_NULL_NODE;
-		node->child1 = TB_NULL_NODE;
-		node->child2 = TB_NULL_NODE;
-		node->enlarged = (tag & tb_nodeEnlarged) != 0 ? 1 : 0;
+		node->children.child1 = TB_NULL_NODE;
+		node->children.child2 = TB_NULL_NODE;
+		node->flags = (uint16_t)(tb_allocatedNode | ((tag & tb_nodeEnlarged) != 0 ? tb_enlargedNode : 0) |
+								 ((tag & tb_nodeLeaf) != 0 ? tb_leafNode : 0));
 		if (tag & tb_nodeLeaf)
 		{
 			uint64_t key = tbGetU64(r);
@@ -3157,8 +3158,8 @@ static bool tbReadTree(tbDecoder* d, tbDynamicTree* tree, tbBroadPhase* bp, bool
 		}
 		else
 		{
-			node->child1 = tbGetIndex(r, capacity, "a tree node's child");
-			node->child2 = tbGetIndex(r, capacity, "a tree node's child");
+			node->children.child1 = tbGetIndex(r, capacity, "a tree node's child");
+			node->children.child2 = tbGetIndex(r, capacity, "a tree node's child");
 		}
 		if (tag & tb_nodeBoxStored)
 		{
@@ -3176,7 +3177,7 @@ static bool tbReadTree(tbDecoder* d, tbDynamicTree* tree, tbBroadPhase* bp, bool
 				tbFail(r, "node %d of the %s has height %u", i, name, height);
 				break;
 			}
-			node->height = (int16_t)height;
+			node->height = (uint16_t)height;
 		}
 	}
 	// The nodes in use form one tree under the root: each reached once, from its only parent.
@@ -3206,7 +3207,7 @@ static bool tbReadTree(tbDecoder* d, tbDynamicTree* tree, tbBroadPhase* bp, bool
 				{
 					continue;
 				}
-				int children[2] = {node->child1, node->child2};
+				int children[2] = {node->children.child1, node->children.child2};
 				for (int k = 0; k < 2; ++k)
 				{
 					if (state[children[k]] != 0)
@@ -3249,8 +3250,8 @@ static bool tbReadTree(tbDecoder* d, tbDynamicTree* tree, tbBroadPhase* bp, bool
 			node->height = 0;
 			continue;
 		}
-		const tbTreeNode* a = tree->nodes + node->child1;
-		const tbTreeNode* b = tree->nodes + node->child2;
+		const tbTreeNode* a = tree->nodes + node->children.child1;
+		const tbTreeNode* b = tree->nodes + node->children.child2;
 		node->aabb = (tag & tb_nodeBoxStored) ? node->aabb : tbAABB_Union(a->aabb, b->aabb);
 		node->categoryBits = (tag & tb_nodeBitsStored) ? node->categoryBits : (a->categoryBits | b->categoryBits);
 		if ((tag & tb_nodeHeightStored) == 0)
@@ -3261,7 +3262,7 @@ static bool tbReadTree(tbDecoder* d, tbDynamicTree* tree, tbBroadPhase* bp, bool
 				tbFail(r, "the %s is deeper than its heights can count", name);
 				break;
 			}
-			node->height = (int16_t)height;
+			node->height = (uint16_t)height;
 		}
 	}
 	tbFree(state, capacity);

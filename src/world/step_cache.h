@@ -17,7 +17,7 @@
 struct tbCollideTally;
 struct tbJointOrderCache;
 struct tbContactColorCache;
-struct tbTreeNode;
+struct tbJointTreeNode;
 struct tbTree;
 struct tbJointRows;
 
@@ -63,7 +63,7 @@ typedef struct tbStepCache
 	int* jointWakeStack;
 	int jointWakeCount, jointWakeCapacity;
 	bool jointWakeActive;
-	struct tbTreeNode* jointTreeNodes;
+	struct tbJointTreeNode* jointTreeNodes;
 	int jointTreeNodeCount;
 	struct tbTree* jointTrees;
 	int jointTreeCount;
