@@ -290,6 +290,8 @@ Test(events, sensor_events_in_the_step_the_overlap_changes)
 	tbDestroyWorld(world);
 }
 
+// A ball dropped through a static sensor: begin in the step that makes the overlap, end as the
+// continuous rule below says (Box2D v3.2 reports this scene's begin at step 41 and end at step 53).
 Test(events, sensor_begin_end_ball_falls_through)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -GRAVITY});
@@ -309,8 +311,8 @@ Test(events, sensor_begin_end_ball_falls_through)
 
 	int beginStep = -1, endStep = -1;
 	const float top = 5.5f, bottom = 4.5f;
-	// The ball's height at the end of the previous step.
-	float previousY = (float)y0;
+	// The ball's height at the end of the previous step, and of the one before.
+	float previousY = (float)y0, beforeY = (float)y0;
 	for (int step = 1; step <= 90; ++step)
 	{
 		tbWorld_Step(world, TIME_STEP, SUB_STEPS);
@@ -341,9 +343,17 @@ Test(events, sensor_begin_end_ball_falls_through)
 			cr_assert(TB_ID_EQUALS(events.endEvents[i].sensorShapeId, sensor));
 			cr_assert(TB_ID_EQUALS(events.endEvents[i].visitorShapeId, ballShape));
 			endStep = step;
+			// The ball leaves at 8.7 m/s, 0.145 m a step, more than half its radius (0.125 m): it is
+			// swept by the continuous stage, and a sensor its sweep touches counts it as a visitor for
+			// that step from the sweep's start (Box2D v3.2's rule, which reports this end in the same
+			// step). So the end comes in the first step that both starts and ends clear of the sensor.
 			cr_assert(y + radius < bottom, "end at step %d: y is %g, still overlapping", step, (double)y);
-			cr_assert(previousY + radius >= bottom, "end at step %d: late, y was already %g", step, (double)previousY);
+			cr_assert(previousY + radius < bottom, "end at step %d: early, the step began at y %g, overlapping", step,
+					  (double)previousY);
+			cr_assert(beforeY + radius >= bottom, "end at step %d: late, y was already %g a step before", step,
+					  (double)beforeY);
 		}
+		beforeY = previousY;
 		previousY = y;
 	}
 	cr_assert(beginStep > 0, "no sensor begin event");

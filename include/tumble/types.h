@@ -634,6 +634,10 @@ typedef struct tbProfile
 	float storeImpulses;	   ///< impulses back to the contacts for the next warm start, joint events
 	float jointEvents;		   ///< the joint events, a part of storeImpulses
 	float bullets;			   ///< the bullets' time of impact, a part of continuous
+	float sensorHits;		   ///< sensors crossed by fast shapes marked for the sensor stage, a part of continuous
+	float transforms;		   ///< the bodies' final transforms, boxes, sleep timers and move events: finalize
+	float refit;			   ///< the broad phase's tree of moving proxies refreshed, a part of pairs or collide
+	float splitIslands;		   ///< the islands of the awake bodies found, a part of sleepIslands
 	float scatterBodies;	   ///< velocities and transforms back to the bodies, fast bodies marked
 } tbProfile;
 

@@ -384,6 +384,7 @@ static void tbRefreshMovableTree(tbBroadPhase* bp)
 	{
 		return;
 	}
+	uint64_t ticks = tbGetTicks();
 	if (16 * bp->enlargedCount > movable)
 	{
 		tbDynamicTree_Rebuild(&bp->movableTree, false);
@@ -400,6 +401,7 @@ static void tbRefreshMovableTree(tbBroadPhase* bp)
 		}
 	}
 	bp->enlargedCount = 0;
+	bp->refitTime += tbGetMilliseconds(ticks);
 }
 
 /// tbRefreshMovableTree's choice made now and its work left for tbBroadPhase_FinishRefresh: the
@@ -435,16 +437,20 @@ void tbBroadPhase_FinishRefresh(tbBroadPhase* bp)
 		return;
 	}
 	bp->refreshPending = false;
+	uint64_t ticks = tbGetTicks();
 	if (bp->refreshRebuild)
 	{
 		tbDynamicTree_Rebuild(&bp->movableTree, false);
-		return;
 	}
-	for (int i = 0; i < bp->refreshKeyCount; ++i)
+	else
 	{
-		const tbBroadProxy* p = bp->table.proxies + bp->refreshKeys[i];
-		tbDynamicTree_MoveProxy(&bp->movableTree, p->handle, p->aabb);
+		for (int i = 0; i < bp->refreshKeyCount; ++i)
+		{
+			const tbBroadProxy* p = bp->table.proxies + bp->refreshKeys[i];
+			tbDynamicTree_MoveProxy(&bp->movableTree, p->handle, p->aabb);
+		}
 	}
+	bp->refitTime += tbGetMilliseconds(ticks);
 }
 
 /// The pairs of moved proxies [start, end) of the move buffer, appended to `list` (read-only on

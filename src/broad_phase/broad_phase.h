@@ -64,6 +64,9 @@ typedef struct tbBroadPhase
 	int* refreshKeys;
 	int refreshKeyCount;
 	int refreshKeyCapacity;
+	/// Milliseconds spent refreshing the movable tree (re-insertion or rebuild) since the owner last
+	/// cleared it: the world's profile.refit.
+	float refitTime;
 } tbBroadPhase;
 
 /// Install a pair filter. The world drops pairs that already have a contact or may not collide

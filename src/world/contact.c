@@ -125,7 +125,7 @@ static void tbUnlinkEdge(tbWorld* world, int contactId, int edgeIndex)
 	body->contactCount -= 1;
 }
 
-void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
+int tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 {
 	tbStepCache_ContactsChanged(&world->cache);
 	bool isNew;
@@ -173,7 +173,9 @@ void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB)
 	tbLinkEdge(world, id, 0);
 	tbLinkEdge(world, id, 1);
 	tbHashSet_Add(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB));
+	return id;
 }
+
 
 /// A sensor reports a visitor when both shapes enable sensor events: the sensor's flag says it
 /// reports at all, the visitor's that it wants to be seen (a bullet a trigger should ignore).
@@ -348,6 +350,44 @@ bool tbContactPairFilter(int shapeIdA, int shapeIdB, void* context)
 		return false;
 	}
 	return tbShouldCreateContact(world, shapeIdA, shapeIdB);
+}
+
+/// The contact of two shapes, from the contact list of the second one's body (a fast body's,
+/// which has few), or TB_NULL_INDEX.
+static int tbFindContact(const tbWorld* world, int shapeIdA, int shapeIdB)
+{
+	const tbBody* body = world->bodies + world->shapes[shapeIdB].bodyId;
+	for (int key = body->headContactKey; key != TB_NULL_INDEX;)
+	{
+		const tbContact* contact = world->contacts + (key >> 1);
+		if ((contact->shapeIdA == shapeIdA && contact->shapeIdB == shapeIdB) ||
+			(contact->shapeIdA == shapeIdB && contact->shapeIdB == shapeIdA))
+		{
+			return key >> 1;
+		}
+		key = contact->edges[key & 1].nextKey;
+	}
+	return TB_NULL_INDEX;
+}
+
+int tbMarkSensorHit(tbWorld* world, int sensorShapeId, int visitorShapeId)
+{
+	int a = tbMinInt(sensorShapeId, visitorShapeId), b = tbMaxInt(sensorShapeId, visitorShapeId);
+	int id = TB_NULL_INDEX;
+	if (tbHashSet_Contains(&world->pairSet, tbShapePairKey(a, b)))
+	{
+		id = tbFindContact(world, sensorShapeId, visitorShapeId);
+	}
+	else if (tbShouldCreateContact(world, a, b))
+	{
+		id = tbCreateContact(world, a, b); // as the broad phase would make it: (lower id, higher id)
+	}
+	if (id == TB_NULL_INDEX || (world->contacts[id].flags & tb_contactSensorHit) != 0)
+	{
+		return TB_NULL_INDEX;
+	}
+	world->contacts[id].flags |= tb_contactSensorHit;
+	return id;
 }
 
 void tbContactPairPrefetch(int shapeIdA, int shapeIdB, void* context)
@@ -1217,6 +1257,26 @@ void tbReportHitEvents(tbWorld* world)
 /// contact of the step is collided again and its begin or end event pushed. A sensor never wakes
 /// a body (v3.2's rule too). The step's sensor events are put in (sensor, visitor) order, so that
 /// they do not depend on contact ids, which differ between engines and after a snapshot.
+/// The pairs whose sensor a fast shape crossed this step (continuous.c) overlap for this step, as
+/// Box2D v3.2 counts them: a begin event unless already overlapping. Whether they still do is left
+/// to the next step, which ends them unless the shapes overlap then (or destroys the contact with
+/// its end event when the boxes have parted). A contact made for a hit is not among the step's
+/// gathered contacts, so the hits are walked apart; the walk over the gathered ones skips them.
+static void tbReportSensorHits(tbWorld* world)
+{
+	for (int i = 0; i < world->cache.sensorHitCount; ++i)
+	{
+		tbContact* contact = world->contacts + world->cache.sensorHitContacts[i];
+		bool wasReported = (contact->flags & tb_contactReported) != 0;
+		tbCountCollideResult(world, tbCollideContact(world, contact)); // the manifold of the final poses
+		contact->flags |= tb_contactTouching | tb_contactReported;
+		if (wasReported == false)
+		{
+			tbPushBeginEvent(world, contact);
+		}
+	}
+}
+
 void tbSensorStage(tbWorld* world)
 {
 	if (world->sensorContactCount == 0)
@@ -1225,13 +1285,14 @@ void tbSensorStage(tbWorld* world)
 	}
 	int beginFirst = world->events.sensorBeginCount;
 	int endFirst = world->events.sensorEndCount;
+	tbReportSensorHits(world);
 	const int* ids = world->cache.stepContacts;
 	for (int i = 0; i < world->cache.stepContactCount; ++i)
 	{
 		tbContact* contact = world->contacts + ids[i];
-		if ((contact->flags & tb_contactSensor) == 0)
+		if ((contact->flags & (tb_contactSensor | tb_contactSensorHit)) != tb_contactSensor)
 		{
-			continue;
+			continue; // not a sensor, or a hit reported above
 		}
 		uint32_t result = tbCollideContact(world, contact);
 		tbCountCollideResult(world, result);
@@ -1244,6 +1305,11 @@ void tbSensorStage(tbWorld* world)
 			tbPushEndEvent(world, contact);
 		}
 	}
+	for (int i = 0; i < world->cache.sensorHitCount; ++i)
+	{
+		world->contacts[world->cache.sensorHitContacts[i]].flags &= ~(uint32_t)tb_contactSensorHit;
+	}
+	world->cache.sensorHitCount = 0;
 	// Begin and end events share their layout (two shape ids): one comparator serves both.
 	_Static_assert(sizeof(tbSensorBeginTouchEvent) == sizeof(tbSensorEndTouchEvent), "sensor events differ in layout");
 	// Sorted only when there are two or more: an array never pushed to is NULL.

@@ -35,6 +35,9 @@ enum tbContactFlags
 	/// The last narrow phase recycled the manifold: a hint for the collide walk's prefetch (a pair
 	/// recycled once is most often recycled again, one recomputed most often recomputed).
 	tb_contactRecycled = 0x80,
+	/// A sensor contact whose sensor a fast shape's sweep crossed this step (continuous.c): the
+	/// sensor stage counts the pair as overlapping for the step, whatever the final poses say.
+	tb_contactSensorHit = 0x100,
 };
 
 /// Where a contact's manifold was last computed by the narrow phase (manifold recycling,
@@ -120,7 +123,11 @@ typedef struct tbCollideKey
 
 tbContactId tbMakeContactId(const tbWorld* world, int contactId);
 
-void tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB);
+int tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB);
+/// The contact of a sensor and a shape whose sweep crossed it this step, made if the pair has none
+/// and may have one, marked tb_contactSensorHit; its id, or TB_NULL_INDEX when the pair may not
+/// touch or is marked already.
+int tbMarkSensorHit(tbWorld* world, int sensorShapeId, int visitorShapeId);
 /// The contact's mixed friction, restitution, rolling resistance and tangent speed from its shapes.
 void tbMixContactMaterials(const tbWorld* world, tbContact* contact);
 void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies);

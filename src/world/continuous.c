@@ -9,6 +9,11 @@
 // contact that the next step finds stops it (Box2D's approach: no energy is invented, some time
 // is lost). A scene without fast bodies does no work here beyond one comparison per awake body.
 //
+// Sensors: a fast shape that enables sensor events also notes the sensors (enabling them too) its
+// sweep reaches before the impact that stops it, up to TB_MAX_SWEPT_SENSORS a shape; each such
+// sensor counts the shape as a visitor for this step (Box2D v3.2's rule), so a bullet that crosses
+// a trigger between two steps still begins and ends touching it (tbSensorStage).
+//
 // Methods: tb_continuousDefault uses the closed-form quadratic for circle pairs whose motion is
 // linear and conservative advancement otherwise; tb_continuousConservative uses conservative
 // advancement for every pair; tb_continuousOff skips the stage.
@@ -28,6 +33,17 @@ typedef struct tbToiCounters
 	int failures;
 } tbToiCounters;
 
+/// Sensors noted for one fast body at most: Box2D v3.2's bound.
+#define TB_MAX_SWEPT_SENSORS 8
+
+/// A sensor reached by a fast shape's sweep, and when.
+typedef struct tbSweptSensor
+{
+	int sensor;
+	int visitor;
+	float fraction;
+} tbSweptSensor;
+
 typedef struct tbContinuousContext
 {
 	tbWorld* world;
@@ -43,6 +59,8 @@ typedef struct tbContinuousContext
 	bool coreHit;	///< the earliest impact came from the core sweep
 	tbVec2 normal;	///< its normal, from the other shape to the fast body
 	tbVec2 otherVelocity;
+	tbSweptSensor* sensors; ///< TB_MAX_SWEPT_SENSORS slots
+	int sensorCount;
 } tbContinuousContext;
 
 /// The origin the sweeps of one fast body are measured from. Sweeps and times of impact are float
@@ -241,8 +259,10 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	tbWorld* world = c->world;
 	const tbShape* other = world->shapes + shapeIndex;
 	const tbBody* otherBody = world->bodies + other->bodyId;
-	if (other->bodyId == c->fastBodyId || other->isSensor ||
-		tbShouldShapesCollide(c->fastShape->filter, other->filter) == false)
+	bool sensor = other->isSensor;
+	if (other->bodyId == c->fastBodyId || tbShouldShapesCollide(c->fastShape->filter, other->filter) == false ||
+		(sensor && (other->enableSensorEvents == false || c->fastShape->enableSensorEvents == false ||
+					c->sensorCount == TB_MAX_SWEPT_SENSORS)))
 	{
 		return true;
 	}
@@ -259,7 +279,7 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	{
 		return true; // the custom filter keeps them apart: no contact, no sweep either
 	}
-	if (tbSkipChainSweep(c, other, otherBody))
+	if (sensor == false && tbSkipChainSweep(c, other, otherBody))
 	{
 		return true;
 	}
@@ -270,6 +290,16 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 		otherSweep.q1 = otherSweep.q2;
 	}
 	tbTOIOutput output = tbComputeTOI(c, other, &otherSweep);
+	if (sensor)
+	{
+		// Kept if reached before the impact found so far; the body's final impact filters again.
+		if (output.state == tb_toiStateOverlapped || (output.state == tb_toiStateHit && output.fraction < c->fraction))
+		{
+			float fraction = output.state == tb_toiStateOverlapped ? 0.0f : output.fraction;
+			c->sensors[c->sensorCount++] = (tbSweptSensor){shapeIndex, (int)(c->fastShape - world->shapes), fraction};
+		}
+		return true;
+	}
 	bool core = false;
 	if (output.state == tb_toiStateOverlapped || (output.state == tb_toiStateHit && output.fraction == 0.0f))
 	{
@@ -313,10 +343,14 @@ static void tbStopCoreApproach(tbBody* body, tbVec2 normal, tbVec2 otherVelocity
 	}
 }
 
-static void tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters)
+/// Sweep one fast body and move it back to its earliest impact. Returns how many sensors it reached
+/// before that impact, written to `sensors` (TB_MAX_SWEPT_SENSORS slots), in the order found.
+static int tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters, tbSweptSensor* sensors)
 {
 	tbBody* body = world->bodies + bodyId;
 	tbContinuousContext c;
+	c.sensors = sensors;
+	c.sensorCount = 0;
 	c.world = world;
 	c.counters = counters;
 	c.fastBody = body;
@@ -364,12 +398,23 @@ static void tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters)
 			tbStopCoreApproach(body, c.normal, c.otherVelocity);
 		}
 	}
+	int kept = 0;
+	for (int i = 0; i < c.sensorCount; ++i)
+	{
+		if (sensors[i].fraction < c.fraction)
+		{
+			sensors[kept++] = sensors[i];
+		}
+	}
+	return kept;
 }
 
 typedef struct tbContinuousTaskContext
 {
 	tbWorld* world;
 	const int* bodies;
+	tbSweptSensor* sensors; ///< TB_MAX_SWEPT_SENSORS slots per entry of `bodies`
+	int* sensorCounts;		///< per entry of `bodies`
 	tbToiCounters counters[TB_MAX_WORKERS]; ///< per worker slot (tbWorkerSlotCount, task.h)
 } tbContinuousTaskContext;
 
@@ -378,8 +423,42 @@ static void tbContinuousTask(int start, int end, uint32_t workerIndex, void* con
 	tbContinuousTaskContext* task = context;
 	for (int i = start; i < end; ++i)
 	{
-		tbSolveFastBody(task->world, task->bodies[i], task->counters + workerIndex);
+		task->sensorCounts[i] = tbSolveFastBody(task->world, task->bodies[i], task->counters + workerIndex,
+												task->sensors + TB_MAX_SWEPT_SENSORS * i);
 	}
+}
+
+/// The sensors the fast bodies reached, in the order the bodies were listed (the same on any
+/// number of workers), each marked on its pair's contact for the sensor stage (tbMarkSensorHit).
+static void tbNoteSweptSensors(tbWorld* world, const tbSweptSensor* sensors, const int* counts, int total)
+{
+	int hitCount = 0;
+	for (int i = 0; i < total; ++i)
+	{
+		hitCount += counts[i];
+	}
+	if (hitCount == 0)
+	{
+		return;
+	}
+	uint64_t ticks = tbGetTicks();
+	int* contacts = tbArenaAlloc(&world->stepArena, hitCount * (int)sizeof(int));
+	int contactCount = 0;
+	for (int i = 0; i < total; ++i)
+	{
+		for (int k = 0; k < counts[i]; ++k)
+		{
+			const tbSweptSensor* hit = sensors + TB_MAX_SWEPT_SENSORS * i + k;
+			int contactId = tbMarkSensorHit(world, hit->sensor, hit->visitor);
+			if (contactId != TB_NULL_INDEX)
+			{
+				contacts[contactCount++] = contactId;
+			}
+		}
+	}
+	world->cache.sensorHitContacts = contacts;
+	world->cache.sensorHitCount = contactCount;
+	world->profile.sensorHits = tbGetMilliseconds(ticks);
 }
 
 bool tbMarkFastBody(const tbWorld* world, tbBody* body)
@@ -452,16 +531,23 @@ void tbContinuousStage(tbWorld* world)
 	memset(task, 0, sizeof(*task));
 	task->world = world;
 	task->bodies = fast;
+	// Swept sensors: the non-bullets' slots first, then the bullets', in the order they are solved.
+	int total = fastCount + bulletCount;
+	task->sensorCounts = tbArenaAlloc(&world->stepArena, tbMaxInt(total, 1) * (int)sizeof(int));
+	task->sensors = tbArenaAlloc(&world->stepArena, tbMaxInt(total, 1) * TB_MAX_SWEPT_SENSORS * (int)sizeof(tbSweptSensor));
 	tbParallelFor(&world->def, tbContinuousTask, fastCount, 16, task);
 	if (bulletCount > 0)
 	{
 		uint64_t bulletTicks = tbGetTicks();
 		for (int i = 0; i < bulletCount; ++i)
 		{
-			tbSolveFastBody(world, fast[world->awakeBodyCount - 1 - i], task->counters);
+			int slot = fastCount + i;
+			task->sensorCounts[slot] = tbSolveFastBody(world, fast[world->awakeBodyCount - 1 - i], task->counters,
+													   task->sensors + TB_MAX_SWEPT_SENSORS * slot);
 		}
 		world->profile.bullets = tbGetMilliseconds(bulletTicks); // a part of the continuous stage
 	}
+	tbNoteSweptSensors(world, task->sensors, task->sensorCounts, total);
 	for (int w = 0; w < tbWorkerSlotCount(&world->def); ++w)
 	{
 		world->counters.toiCalls += task->counters[w].calls;

@@ -448,6 +448,7 @@ void tbSleepStage(tbWorld* world, float timeStep)
 		return;
 	}
 
+	uint64_t ticks = tbGetTicks();
 	int n = world->awakeBodyCount;
 	tbSleepLinks links;
 	links.parent = tbArenaAlloc(&world->stepArena, (int)sizeof(int) * n);
@@ -465,6 +466,7 @@ void tbSleepStage(tbWorld* world, float timeStep)
 	}
 	tbGatherSleepLinks(world, &links);
 	world->counters.islandCount = tbCountRestedIslands(world, &links, state, state + n);
+	world->profile.splitIslands = tbGetMilliseconds(ticks);
 	if (tbMarkSleepingIslands(world, &links, state))
 	{
 		tbRemoveMarkedFromAwakeSet(world);

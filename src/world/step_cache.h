@@ -43,6 +43,10 @@ typedef struct tbStepCache
 	/// look at its bodies.
 	int* touchingContacts;
 	int touchingContactCount, touchingContactCapacity;
+	/// Sensor contacts whose sensor a fast shape crossed this step (continuous.c), each marked
+	/// tb_contactSensorHit, for the sensor stage; from the step arena.
+	int* sensorHitContacts;
+	int sensorHitCount;
 
 	// The island stage (island.c): the contacts the solver sees, in solve order (constraint i is
 	// contact solverContacts[i]); the same contacts in contact-id order and each one's index in

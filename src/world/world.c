@@ -607,6 +607,8 @@ static bool tbStepWorld(tbWorldId worldId, float timeStep, int subStepCount)
 	world->profile.pairs = tbGetMillisecondsAndReset(&t);
 	tbCollideStage(world);
 	world->profile.collide = tbGetMillisecondsAndReset(&t);
+	world->profile.refit = world->broadPhase.refitTime;
+	world->broadPhase.refitTime = 0.0f;
 	tbIslandStage(world);
 	world->profile.islands = tbGetMillisecondsAndReset(&t);
 	if (timeStep == 0.0f)
@@ -632,6 +634,7 @@ static bool tbStepWorld(tbWorldId worldId, float timeStep, int subStepCount)
 	}
 	int beyondBounds = tbFinalizeStage(world, timeStep);
 	world->profile.finalize = tbGetMillisecondsAndReset(&t);
+	world->profile.transforms = world->profile.finalize; // Box2D v3.2's name for this stage
 	if (world->hitContactCount > 0)
 	{
 		tbReportHitEvents(world);
