@@ -9,7 +9,7 @@
 // Tumble ÷ v3 (the two timings of a round ran back to back).
 //
 //   tumble-bench-games [--steps N] [--rounds R] [--scene NAME[,NAME...]] [--csv FILE]
-//                      [--memory-csv FILE] [--no-memory] [--tumble-only] [--list] [--trace NAME]
+//                      [--memory-csv FILE] [--no-memory] [--tumble-only] [--list] [--trace NAME [--trace-every N]]
 //   tumble-bench-games --sweep [--sweep-max N] [--rounds R] [--csv FILE]
 //
 // --scene keeps the scenes whose names contain one of the given words. After the table comes a
@@ -394,9 +394,10 @@ static int RunSweep(const GameEngine** engines, int engineCount, const Options* 
 	return 0;
 }
 
-// --trace NAME: the end state of one scene every 60 frames on each engine, side by side (untimed;
-// for checking that a scene plays the same game on both engines).
-static int Trace(const GameEngine** engines, int engineCount, const char* name, int steps)
+// --trace NAME [--trace-every N]: the end state of one scene every N frames (60 unless given) on
+// each engine, side by side (untimed; for checking that a scene plays the same game on both
+// engines, and when each comes to rest).
+static int Trace(const GameEngine** engines, int engineCount, const char* name, int steps, int every)
 {
 	int s = 0;
 	while (s < engines[0]->sceneCount && strcmp(engines[0]->scenes[s].name, name) != 0)
@@ -417,7 +418,7 @@ static int Trace(const GameEngine** engines, int engineCount, const char* name, 
 	}
 	for (int step = 0; step <= steps; ++step)
 	{
-		if (step % 60 == 0)
+		if (step % every == 0)
 		{
 			printf("%5d", step);
 			for (int e = 0; e < engineCount; ++e)
@@ -446,6 +447,7 @@ int main(int argc, char** argv)
 	Options o = {0, 3, NULL, NULL, NULL, true, false, false, 20000};
 	bool list = false;
 	const char* trace = NULL;
+	int traceEvery = 60;
 	for (int i = 1; i < argc; ++i)
 	{
 		const char* a = argv[i];
@@ -490,6 +492,10 @@ int main(int argc, char** argv)
 		{
 			trace = argv[++i];
 		}
+		else if (strcmp(a, "--trace-every") == 0 && next != NULL)
+		{
+			traceEvery = atoi(argv[++i]) > 0 ? atoi(argv[i]) : 60;
+		}
 		else if (strcmp(a, "--list") == 0)
 		{
 			list = true;
@@ -524,7 +530,7 @@ int main(int argc, char** argv)
 	}
 	if (trace != NULL)
 	{
-		return Trace(engines, engineCount, trace, o.steps > 0 ? o.steps : 600);
+		return Trace(engines, engineCount, trace, o.steps > 0 ? o.steps : 600, traceEvery);
 	}
 	// Hooks first: every allocation either engine makes goes through them, so each block is freed
 	// by the hook that made it.
