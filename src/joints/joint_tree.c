@@ -466,6 +466,66 @@ static void tbEliminate(const tbJointTreeNode* node, tbNodeValues v, tbTreeReal*
 	}
 }
 
+// A tree of one joint to ground and one body (a flipper, a door, a pendulum, a weld to the
+// ground), nodes [body, joint]: the general elimination written out for its two nodes, the same
+// products in the same order (so the same numbers), without the general loops' bounds and
+// lookups. Body: D = M⁻¹ (diagonal), L = M⁻¹·H with H = −Jᵀ; joint: D = (0 − Hᵀ·L)⁻¹ = (−K)⁻¹,
+// K = J·M⁻¹·Jᵀ.
+static bool tbFactorPair(tbWorld* world, const tbJointTreeNode* bodyNode, const tbJointTreeNode* jointNode)
+{
+	const tbBody* body = world->bodies + world->awakeBodies[bodyNode->body];
+	bool turns = tbTurns(body);
+	tbNodeValues vb = tbGetValues(world, bodyNode);
+	tbNodeValues vj = tbGetValues(world, jointNode);
+	const tbJointRows* rows = world->cache.jointTreeRows + jointNode->rows;
+	int r = jointNode->dim;
+	// M = diag(m, m, I) inverted by tbInvertSmall's cofactors, its zero terms left out.
+	tbTreeReal m0 = 1.0f / body->invMass, m1 = m0, m2 = turns ? 1.0f / body->invInertia : 1.0f;
+	tbTreeReal c00 = m1 * m2 - 0.0f;
+	tbTreeReal det = m0 * c00;
+	if (!(fabs(det) > 1e-6 * fabs(m0 * m1 * m2)))
+	{
+		return false;
+	}
+	tbTreeReal invDet = 1.0f / det;
+	tbTreeReal inverse[3] = {c00 * invDet, (m0 * m2 - 0.0f) * invDet, (m0 * m1 - 0.0f) * invDet};
+	for (int row = 0; row < r; ++row)
+	{
+		tbTreeReal J[3];
+		tbRowAgainst(rows, row, bodyNode->side, turns, J);
+		for (int c = 0; c < 3; ++c)
+		{
+			vb.H[c * r + row] = -J[c];
+		}
+	}
+	// L = D·H with D diagonal: the general product's zero terms add nothing (x + 0 = x).
+	for (int c = 0; c < 3; ++c)
+	{
+		for (int j = 0; j < r; ++j)
+		{
+			tbTreeReal sum = 0.0f;
+			sum += inverse[c] * vb.H[c * r + j];
+			vb.L[c * r + j] = sum;
+		}
+	}
+	for (int i = 0; i < r; ++i)
+	{
+		for (int j = 0; j < r; ++j)
+		{
+			tbTreeReal sum = 0.0f;
+			for (int c = 0; c < 3; ++c)
+			{
+				sum += vb.H[c * r + i] * vb.L[c * r + j];
+			}
+			vj.D[i * r + j] = 0.0f - sum;
+		}
+	}
+	vb.D[0] = inverse[0];
+	vb.D[4] = inverse[1];
+	vb.D[8] = inverse[2];
+	return tbInvertSmall(vj.D, r);
+}
+
 // Rows of the current anchors, then H = L·D·Lᵀ children first (the header comment).
 static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 {
@@ -481,6 +541,10 @@ static bool tbFactorTree(tbStepContext* context, const tbTree* tree)
 			tbJointBodies b = tbLoadJointBodies(context, joint);
 			tbGetJointEqualityRows(joint, &b, world->cache.jointTreeRows + node->rows);
 		}
+	}
+	if (tree->count == 2)
+	{
+		return tbFactorPair(world, nodes + tree->start, nodes + tree->start + 1);
 	}
 	// Fill every node before eliminating any: a child's update lands on its parent's pivot.
 	for (int i = tree->start; i < end; ++i)
@@ -582,11 +646,49 @@ static void tbApplySolution(tbStepContext* context, const tbJointTreeNode* node,
 	}
 }
 
+/// tbSolveTree for nodes [body, joint] (tbFactorPair): the body's right-hand side is 0, so the
+/// forward pass changes nothing; the joint's Δλ = D·(J·v + bias), then the body's Δv = 0 − L·Δλ.
+static void tbSolvePair(tbStepContext* context, const tbJointTreeNode* bodyNode, const tbJointTreeNode* jointNode)
+{
+	tbWorld* world = context->world;
+	tbNodeValues vj = tbGetValues(world, jointNode);
+	tbNodeValues vb = tbGetValues(world, bodyNode);
+	int r = jointNode->dim;
+	tbTreeReal x[3];
+	tbLoadResiduals(context, jointNode, x);
+	for (int i = 0; i < r; ++i)
+	{
+		tbTreeReal sum = 0.0f;
+		for (int j = 0; j < r; ++j)
+		{
+			sum += vj.D[i * r + j] * x[j];
+		}
+		vj.x[i] = sum;
+	}
+	tbApplySolution(context, jointNode, vj.x);
+	tbTreeReal dv[3];
+	for (int c = 0; c < 3; ++c)
+	{
+		tbTreeReal sum = 0.0f;
+		for (int j = 0; j < r; ++j)
+		{
+			sum += vb.L[c * r + j] * vj.x[j];
+		}
+		dv[c] = 0.0f - sum;
+	}
+	tbApplySolution(context, bodyNode, dv);
+}
+
 static void tbSolveTree(tbStepContext* context, const tbTree* tree)
 {
 	tbWorld* world = context->world;
 	const tbJointTreeNode* nodes = world->cache.jointTreeNodes;
 	int end = tree->start + tree->count;
+	if (tree->count == 2)
+	{
+		tbSolvePair(context, nodes + tree->start, nodes + tree->start + 1);
+		return;
+	}
 	for (int i = tree->start; i < end; ++i)
 	{
 		tbLoadResiduals(context, nodes + i, tbGetValues(world, nodes + i).x);
