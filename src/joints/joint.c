@@ -976,6 +976,7 @@ void tbPrepareJoints(tbStepContext* context)
 		joint->treeNode = TB_NULL_INDEX;
 		joint->solvedInTree = false;
 		joint->loopyMechanism = false;
+		joint->rigidPin = false;
 		switch (joint->type)
 		{
 			case tb_distanceJoint:

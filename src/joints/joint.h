@@ -134,6 +134,7 @@ typedef struct tbJoint
 	uint8_t type;		   ///< tbJointType
 	bool solvedInTree;	   ///< this pass: its equality rows are solved by its tree, not row by row
 	bool loopyMechanism;   ///< this step: its mechanism has too many loops for a joint tree (constraint_graph.c)
+	bool rigidPin;		   ///< this step: a revolute joint alone between ground and a body, its pin solved rigid (joint_tree.c)
 	int indexA, indexB;	   ///< solver body indices (the static stand-in for static or sleeping bodies)
 	float invMassA, invIA; ///< 0 unless the body is awake and dynamic
 	float invMassB, invIB;

@@ -322,8 +322,16 @@ void tbBuildJointTrees(tbStepContext* context)
 		int start = count;
 		count = tbGrowTree(context, toGround ? joint : NULL, root, preorder, count, bodyNode, stack);
 		int n = count - start;
-		if (tbTreeNeedsExactSolve(context, preorder, start, n, stack) == false)
+		// One revolute joint between ground and one body (a flipper, a door, a pendulum): its exact
+		// solve is its own 2 × 2 pin solve made rigid (tbSolveRevoluteJoint), with no tree and no
+		// symmetric sweep or extra relaxing that trees need.
+		bool rigidPin = n == 2 && preorder[start].joint >= 0 && world->joints[preorder[start].joint].type == tb_revoluteJoint;
+		if (rigidPin || tbTreeNeedsExactSolve(context, preorder, start, n, stack) == false)
 		{
+			if (rigidPin)
+			{
+				world->joints[preorder[start].joint].rigidPin = true;
+			}
 			for (int k = start; k < count; ++k)
 			{
 				if (preorder[k].joint >= 0)

@@ -19,6 +19,8 @@
 // Order: spring, motor, limits, then the point constraint, which matters most, last.
 // Reference: Catto, "Modeling and Solving Constraints", GDC 2009; Box2D v3's revolute joint.
 #include "joint.h"
+
+#include <math.h>
 #include "world/recording.h"
 
 static tbJoint* tbGetRevolute(tbJointId id, const char* f, tbWorld** world, bool mutating)
@@ -184,6 +186,44 @@ static void tbSolveRevoluteAngular(tbJoint* joint, tbJointBodies* b, const tbSte
 	}
 }
 
+/// Largest ratio of a rigid pin's turning to its moving inverse mass, (|rA|²·iA + |rB|²·iB)/(mA + mB):
+/// K's condition number grows with it, and beyond it the impulse that closes the pin in one pass
+/// is more than float velocities carry (a pin kilometres off its body, tests/test_joint.c).
+#define TB_RIGID_PIN_MAX_CONDITION 1.0e6
+
+/// The pin of a revolute joint alone between ground and one body (joint_tree.c: the exact solve of
+/// its one-joint tree): rigid, Δλ = −K⁻¹·(Ċ + β·C), in double precision as the trees are solved.
+/// False, nothing applied, when K is too badly conditioned for it: the soft row then solves the
+/// pin, as a tree that cannot be factored leaves its rows to Gauss–Seidel.
+static bool tbSolveRigidPin(tbJoint* joint, tbJointBodies* b, tbVec2 rA, tbVec2 rB, tbVec2 rhs)
+{
+	double mA = joint->invMassA, mB = joint->invMassB, iA = joint->invIA, iB = joint->invIB;
+	double turning = ((double)rA.x * rA.x + (double)rA.y * rA.y) * iA + ((double)rB.x * rB.x + (double)rB.y * rB.y) * iB;
+	if (!(turning <= TB_RIGID_PIN_MAX_CONDITION * (mA + mB)))
+	{
+		return false;
+	}
+	double k11 = mA + mB + (double)rA.y * rA.y * iA + (double)rB.y * rB.y * iB;
+	double k12 = -(double)rA.y * rA.x * iA - (double)rB.y * rB.x * iB;
+	double k22 = mA + mB + (double)rA.x * rA.x * iA + (double)rB.x * rB.x * iB;
+	double det = k11 * k22 - k12 * k12;
+	if (!(fabs(det) > 1e-6 * fabs(k11 * k22)))
+	{
+		return false;
+	}
+	double x = (k22 * rhs.x - k12 * rhs.y) / det;
+	double y = (k11 * rhs.y - k12 * rhs.x) / det;
+	tbVec2 impulse = {(float)-x, (float)-y};
+	if (tbIsValidVec2(impulse) == false)
+	{
+		return false;
+	}
+	tbRevoluteJoint* r = &joint->revolute;
+	r->linearImpulse = tbAdd(r->linearImpulse, impulse);
+	tbApplyJointImpulse(joint, b, rA, rB, impulse, 0.0f);
+	return true;
+}
+
 void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 {
 	tbRevoluteJoint* r = &joint->revolute;
@@ -198,6 +238,11 @@ void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	tbVec2 rA, rB, separation;
 	tbJointAnchors(joint, &b, &rA, &rB, &separation);
 	tbVec2 Cdot = tbSub(tbAdd(b.vB, tbCrossSV(b.wB, rB)), tbAdd(b.vA, tbCrossSV(b.wA, rA)));
+	if (useBias && joint->rigidPin && tbSolveRigidPin(joint, &b, rA, rB, tbMulAdd(Cdot, joint->constraintSoftness.biasRate, separation)))
+	{
+		tbStoreJointBodies(joint, &b);
+		return;
+	}
 	tbSoftness soft = {0.0f, 1.0f, 0.0f};
 	if (useBias)
 	{
