@@ -573,7 +573,16 @@ void tbBroadPhase_UpdatePairs(tbBroadPhase* bp)
 			tbSortAndSweep_FindPairs(bp->sweep, &bp->table, &bp->pairList);
 			break;
 		case tb_broadPhaseSpatialHash:
-			tbSpatialHash_FindPairs(bp->hash, &bp->table, &bp->pairList);
+			// The moved proxies from the move buffer, not a scan of the table: the pairs are sorted
+			// below, so the order of the queries does not show.
+			tbSpatialHash_PrepareFind(bp->hash, &bp->table);
+			for (int i = 0; i < bp->moveCount; ++i)
+			{
+				if (bp->moveBuffer[i] >= 0)
+				{
+					tbSpatialHash_QueryMoved(bp->hash, &bp->table, &bp->pairList, bp->moveBuffer[i]);
+				}
+			}
 			break;
 		default:
 			tbBruteForce_FindPairs(bp->brute, &bp->table, &bp->pairList);

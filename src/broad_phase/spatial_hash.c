@@ -74,6 +74,13 @@ struct tbSpatialHash
 	tbGrid movableGrid;
 	bool staticDirty;
 	int updateCount;
+	/// Keys of the movable proxies in ascending order (the order of a scan of the table), remade
+	/// when one is added or removed: the movable grid is rebuilt every update, and scanning the
+	/// whole table for it cost a step in proportion to the static level (a car on a long terrain).
+	int* movableKeys;
+	int movableCount;
+	int movableCapacity;
+	bool movableDirty;
 };
 
 typedef struct tbCellRange
@@ -178,31 +185,67 @@ static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, int x0, int y0)
 	grid->heads[bucket] = grid->entryCount++;
 }
 
-/// Hash every live proxy of one kind (static or movable) into the grid.
-static void tbGrid_Build(tbGrid* grid, const tbSpatialHash* hash, const tbProxyTable* table, bool statics)
+/// Enter one proxy in the cells its box covers (or the large list).
+static void tbGrid_AddProxy(tbGrid* grid, const tbSpatialHash* hash, const tbProxyTable* table, int key)
+{
+	const tbBroadProxy* p = table->proxies + key;
+	tbPushKey(&grid->all, &grid->allCount, &grid->allCapacity, key);
+	tbCellRange r = tbCellsOf(hash, p->aabb);
+	if (tbIsLargeRange(r))
+	{
+		tbGrid_AddLarge(grid, key);
+		return;
+	}
+	for (int x = r.x0; x <= r.x1; ++x)
+	{
+		for (int y = r.y0; y <= r.y1; ++y)
+		{
+			tbGrid_AddEntry(grid, tbCellKey(x, y), key, r.x0, r.y0);
+		}
+	}
+}
+
+/// Hash every live static proxy into the static grid (when the statics change).
+static void tbGrid_BuildStatic(tbGrid* grid, const tbSpatialHash* hash, const tbProxyTable* table)
 {
 	tbGrid_Clear(grid, 2 * table->count);
 	for (int key = 0; key < table->capacity; ++key)
 	{
 		const tbBroadProxy* p = table->proxies + key;
-		if (p->isFree || (p->type == tb_proxyStatic) != statics)
+		if (p->isFree == false && p->type == tb_proxyStatic)
 		{
-			continue;
+			tbGrid_AddProxy(grid, hash, table, key);
 		}
-		tbPushKey(&grid->all, &grid->allCount, &grid->allCapacity, key);
-		tbCellRange r = tbCellsOf(hash, p->aabb);
-		if (tbIsLargeRange(r))
+	}
+}
+
+/// The movable keys listed again from the table, when a movable proxy came or went.
+static void tbListMovableKeys(tbSpatialHash* hash, const tbProxyTable* table)
+{
+	hash->movableCount = 0;
+	for (int key = 0; key < table->capacity; ++key)
+	{
+		const tbBroadProxy* p = table->proxies + key;
+		if (p->isFree == false && p->type != tb_proxyStatic)
 		{
-			tbGrid_AddLarge(grid, key);
-			continue;
+			tbPushKey(&hash->movableKeys, &hash->movableCount, &hash->movableCapacity, key);
 		}
-		for (int x = r.x0; x <= r.x1; ++x)
-		{
-			for (int y = r.y0; y <= r.y1; ++y)
-			{
-				tbGrid_AddEntry(grid, tbCellKey(x, y), key, r.x0, r.y0);
-			}
-		}
+	}
+	hash->movableDirty = false;
+}
+
+/// Hash every movable proxy into the movable grid (every update: they move). Its buckets are sized
+/// for the movable proxies alone; the order of entries within a cell does not depend on it.
+static void tbGrid_BuildMovable(tbGrid* grid, tbSpatialHash* hash, const tbProxyTable* table)
+{
+	if (hash->movableDirty)
+	{
+		tbListMovableKeys(hash, table);
+	}
+	tbGrid_Clear(grid, 2 * hash->movableCount);
+	for (int i = 0; i < hash->movableCount; ++i)
+	{
+		tbGrid_AddProxy(grid, hash, table, hash->movableKeys[i]);
 	}
 }
 
@@ -265,6 +308,7 @@ tbSpatialHash* tbSpatialHash_Create(void)
 	tbSpatialHash* hash = tbAlloc((int)sizeof(tbSpatialHash));
 	memset(hash, 0, sizeof(*hash));
 	hash->staticDirty = true;
+	hash->movableDirty = true;
 	return hash;
 }
 
@@ -273,17 +317,22 @@ void tbSpatialHash_Destroy(tbSpatialHash* hash)
 	tbGrid_Destroy(&hash->staticGrid);
 	tbGrid_Destroy(&hash->movableGrid);
 	tbFree(hash->sides, hash->sideCapacity * (int)sizeof(float));
+	tbFree(hash->movableKeys, hash->movableCapacity * (int)sizeof(int));
 	tbFree(hash, (int)sizeof(tbSpatialHash));
 }
 
 void tbSpatialHash_AddProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey)
 {
-	hash->staticDirty = hash->staticDirty || table->proxies[proxyKey].type == tb_proxyStatic;
+	bool isStatic = table->proxies[proxyKey].type == tb_proxyStatic;
+	hash->staticDirty = hash->staticDirty || isStatic;
+	hash->movableDirty = hash->movableDirty || isStatic == false;
 }
 
 void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey)
 {
-	hash->staticDirty = hash->staticDirty || table->proxies[proxyKey].type == tb_proxyStatic;
+	bool isStatic = table->proxies[proxyKey].type == tb_proxyStatic;
+	hash->staticDirty = hash->staticDirty || isStatic;
+	hash->movableDirty = hash->movableDirty || isStatic == false;
 }
 
 void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash)
@@ -303,9 +352,10 @@ void tbSpatialHash_SetState(tbSpatialHash* hash, const tbProxyTable* table, tbSp
 	hash->invCellSize = state.cellSize > 0.0f ? 1.0f / state.cellSize : 0.0f;
 	hash->staticDirty = state.staticDirty;
 	hash->updateCount = state.updateCount;
+	hash->movableDirty = true;
 	if (hash->staticDirty == false && hash->cellSize > 0.0f)
 	{
-		tbGrid_Build(&hash->staticGrid, hash, table, true);
+		tbGrid_BuildStatic(&hash->staticGrid, hash, table);
 	}
 }
 
@@ -410,10 +460,10 @@ void tbSpatialHash_PrepareFind(tbSpatialHash* hash, const tbProxyTable* table)
 	tbUpdateCellSize(hash, table);
 	if (hash->staticDirty)
 	{
-		tbGrid_Build(&hash->staticGrid, hash, table, true);
+		tbGrid_BuildStatic(&hash->staticGrid, hash, table);
 		hash->staticDirty = false;
 	}
-	tbGrid_Build(&hash->movableGrid, hash, table, false);
+	tbGrid_BuildMovable(&hash->movableGrid, hash, table);
 	hash->updateCount += 1;
 }
 
