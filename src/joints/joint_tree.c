@@ -43,6 +43,8 @@
 // sub-step.
 #include "joint.h"
 
+#include "solver/constraint_graph.h"
+
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -280,9 +282,10 @@ void tbBuildJointTrees(tbStepContext* context)
 	world->cache.jointTreeCount = 0;
 	world->cache.jointTreeNodeCount = 0;
 	int jointCount = world->cache.solverJointCount;
-	if (jointCount == 0 || world->def.enableJointTrees == false || context->jointTreeCandidates == 0)
+	if (jointCount == 0 || world->def.enableJointTrees == false || context->jointTreeCandidates == 0 ||
+		context->jointTreesKnownAbsent)
 	{
-		return; // no joint can be in a tree (constraint_graph.c counted them): nothing to walk
+		return; // no joint can be in a tree (constraint_graph.c counted them), or none was, the joints unchanged
 	}
 	tbArena* arena = &world->stepArena;
 	int maxNodes = context->bodyCount + jointCount;
@@ -299,7 +302,7 @@ void tbBuildJointTrees(tbStepContext* context)
 	// Roots in the solve order (joint-id order within a small mechanism): first the joints to ground (the tree hangs from one of them), then
 	// an awake dynamic body of any joint still outside a tree. Each tree is stored in reverse
 	// preorder (children before parents), its parent links renumbered to match.
-	int count = 0, treeCount = 0;
+	int count = 0, treeCount = 0, rigidPins = 0;
 	for (int pass = 0; pass < 2 * jointCount; ++pass)
 	{
 		tbJoint* joint = world->joints + world->cache.solverJoints[pass % jointCount];
@@ -331,6 +334,7 @@ void tbBuildJointTrees(tbStepContext* context)
 			if (rigidPin)
 			{
 				world->joints[preorder[start].joint].rigidPin = true;
+				rigidPins += 1;
 			}
 			for (int k = start; k < count; ++k)
 			{
@@ -370,6 +374,7 @@ void tbBuildJointTrees(tbStepContext* context)
 	world->cache.jointTreeCount = treeCount;
 	world->cache.jointTreeValues = tbArenaAlloc(arena, (int)sizeof(tbTreeReal) * floats);
 	world->cache.jointTreeRows = tbArenaAlloc(arena, (int)sizeof(tbJointRows) * rows);
+	tbNoteJointTrees(context, treeCount == 0 && rigidPins == 0);
 }
 
 // --- each pass ----------------------------------------------------------------------------------

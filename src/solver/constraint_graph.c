@@ -729,6 +729,7 @@ typedef struct tbJointOrderCache
 	int* unitStart;		  ///< jointUnitCount + 1 entries (capacity + 1 allocated)
 	int unitCount, smallCount, colorCount, treeCandidates;
 	bool overflow;
+	bool noTrees; ///< the tree build found no tree and no rigid pin for this fingerprint
 	int colorStart[TB_GRAPH_COLOR_COUNT + 2];
 } tbJointOrderCache;
 
@@ -748,11 +749,18 @@ static uint64_t tbJointOrderFingerprint(const tbStepContext* context)
 	{
 		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
 		uint32_t bits = (tbJointMovesA(joint) ? 1u : 0u) | (tbJointMovesB(joint) ? 2u : 0u) |
-						((uint32_t)tbJointEqualityRowCount(joint) << 2);
+						((uint32_t)tbJointEqualityRowCount(joint) << 2) | ((uint32_t)joint->type << 4);
 		h = tbMixFingerprint(h, (uint32_t)world->cache.solverJoints[i]);
 		h = tbMixFingerprint(h, (uint32_t)joint->indexA);
 		h = tbMixFingerprint(h, (uint32_t)joint->indexB);
 		h = tbMixFingerprint(h, bits);
+		// The masses decide which trees need an exact solve (joint_tree.c): the tree build's verdict
+		// is kept under this fingerprint.
+		uint32_t massA, massB;
+		memcpy(&massA, &joint->invMassA, sizeof(massA));
+		memcpy(&massB, &joint->invMassB, sizeof(massB));
+		h = tbMixFingerprint(h, massA);
+		h = tbMixFingerprint(h, massB);
 	}
 	return h;
 }
@@ -777,6 +785,7 @@ static bool tbReuseJointOrder(tbStepContext* context, uint64_t fingerprint)
 	context->jointColorCount = cache->colorCount;
 	context->jointOverflow = cache->overflow;
 	context->jointTreeCandidates = cache->treeCandidates;
+	context->jointTreesKnownAbsent = cache->noTrees;
 	memcpy(context->jointColorStart, cache->colorStart, sizeof(cache->colorStart));
 	return true;
 }
@@ -818,7 +827,17 @@ static void tbKeepJointOrder(const tbStepContext* context, uint64_t fingerprint)
 	cache->colorCount = context->jointColorCount;
 	cache->overflow = context->jointOverflow;
 	cache->treeCandidates = context->jointTreeCandidates;
+	cache->noTrees = false;
 	memcpy(cache->colorStart, context->jointColorStart, sizeof(cache->colorStart));
+}
+
+void tbNoteJointTrees(tbStepContext* context, bool none)
+{
+	tbJointOrderCache* cache = context->world->cache.jointOrderCache;
+	if (cache != NULL && cache->count == context->world->cache.solverJointCount)
+	{
+		cache->noTrees = none;
+	}
 }
 
 void tbDestroyJointOrderCache(tbWorld* world)

@@ -16,6 +16,9 @@ const tbContactKey* tbSteadyContactKeys(const tbStepContext* context);
 void tbColorJoints(tbStepContext* context);
 /// Release the joint order kept from the last step (world destruction).
 void tbDestroyJointOrderCache(tbWorld* world);
+/// Keep what this step's tree build found (joint_tree.c): none, while the joints keep their
+/// fingerprint, lets the next steps skip the build (tbStepContext.jointTreesKnownAbsent).
+void tbNoteJointTrees(tbStepContext* context, bool none);
 void tbDestroyContactColorCache(tbWorld* world);
 /// The graph colour of each solver contact of the last step, in contact-id order
 /// (world->cache.solverContactsById): 0 .. TB_GRAPH_COLOR_COUNT − 1, or TB_GRAPH_COLOR_COUNT for the

@@ -276,6 +276,9 @@ typedef struct tbStepContext
 	int jointColorCount; ///< groups in use, the overflow group included when it is not empty
 	bool jointOverflow;	 ///< the last group is the joints without a colour
 	int jointTreeCandidates; ///< joints with equality rows outside loopy mechanisms (0: no joint tree to build)
+	/// The joints are as they were when the last tree build found no tree and no rigid pin
+	/// (constraint_graph.c's fingerprint, masses included): this step's build would find none either.
+	bool jointTreesKnownAbsent;
 	void* wideMemory; ///< step arena
 	int wideMemoryBytes;
 	void* ngsScratch; ///< solver_ngs.c's constraints, step arena (taken at the first sub-step)
