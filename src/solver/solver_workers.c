@@ -419,6 +419,13 @@ bool tbSolveSubStepsOnWorkers(tbStepContext* context)
 	{
 		return false; // the serial loop (warm starting off zeroes impulses there)
 	}
+	// A world this small solves faster on the caller than with the stages shared: each stage's
+	// hand-over between threads costs more than its work (many small worlds on a server's workers).
+	// The two loops give the same results, so the choice does not show.
+	if (context->bodyCount < TB_BODIES_PER_UNIT && context->constraintCount + world->cache.solverJointCount < 2 * TB_BODIES_PER_UNIT)
+	{
+		return false;
+	}
 	// Stages per sub-step: 2 integrations; per pass (warm start, solve, relaxes) one per contact
 	// colour and the overflow, and for the joints the trees' 2 stages and twice their colours.
 	int relaxPasses = 0;
