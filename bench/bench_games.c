@@ -12,7 +12,7 @@
 //                      [--memory-csv FILE] [--no-memory] [--tumble-only] [--list] [--trace NAME [--trace-every N]]
 //   tumble-bench-games --sweep [--sweep-max N] [--rounds R] [--csv FILE]
 //
-// --scene keeps the scenes whose names contain one of the given words. After the table comes a
+// --scene keeps the scenes named, or, for a word ending in '*', those whose names begin with it. After the table comes a
 // check of the end states (bodies, awake bodies, touching contacts, joints, events read, the
 // tracked body) so that neither engine can skip work unseen, then the bytes each kind of object
 // costs (from each engine's allocator hook). --sweep times mixed bodies falling into a box at
@@ -75,7 +75,9 @@ static bool Selected(const char* name, const char* filter)
 	snprintf(words, sizeof(words), "%s", filter);
 	for (char* word = strtok(words, ","); word != NULL; word = strtok(NULL, ","))
 	{
-		if (strstr(name, word) != NULL)
+		size_t n = strlen(word);
+		bool prefix = n > 0 && word[n - 1] == '*';
+		if (prefix ? strncmp(name, word, n - 1) == 0 : strcmp(name, word) == 0)
 		{
 			return true;
 		}
