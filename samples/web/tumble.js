@@ -301,13 +301,14 @@ export class Body {
 	destroy() { this.tb.c.Web_DestroyBody(this.id); }
 	isValid() { return this.tb.c.Web_Body_IsValid(this.id) !== 0; }
 	getType() { return Object.keys(bodyTypes)[this.tb.c.Web_Body_GetType(this.id)]; }
-	state() { this.tb.c.Web_Body_GetState(this.id); return this.tb.floats(this.tb.scratch, 9); }
+	state() { this.tb.c.Web_Body_GetState(this.id); return this.tb.floats(this.tb.scratch, 10); }
 	getPosition() { const v = this.state(); return [v[0], v[1]]; }
 	getAngle() { return this.state()[2]; }
 	getLinearVelocity() { const v = this.state(); return [v[3], v[4]]; }
 	getAngularVelocity() { return this.state()[5]; }
 	getMass() { return this.state()[6]; }
 	getWorldCenter() { const v = this.state(); return [v[7], v[8]]; }
+	getRotationalInertia() { return this.state()[9]; }
 	setTransform(position, angle) { return this.tb.c.Web_Body_SetTransform(this.id, position[0], position[1], angle) !== 0; }
 	setVelocity(linear, angular = 0) { return this.tb.c.Web_Body_SetVelocity(this.id, linear[0], linear[1], angular) !== 0; }
 	applyLinearImpulse(impulse, point, wake = true) {

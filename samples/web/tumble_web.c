@@ -142,7 +142,8 @@ int Web_Body_GetType(uint64_t body)
 	return (int)tbBody_GetType(tbLoadBodyId(body));
 }
 
-/// Scratch on return: float x, y, angle, vx, vy, angularVelocity, mass, centreX, centreY.
+/// Scratch on return: float x, y, angle, vx, vy, angularVelocity, mass, centreX, centreY,
+/// rotational inertia (about the centre of mass).
 void WEB_EXPORT(Web_Body_GetState)(uint64_t body);
 void Web_Body_GetState(uint64_t body)
 {
@@ -150,7 +151,8 @@ void Web_Body_GetState(uint64_t body)
 	tbPos p = tbBody_GetPosition(id);
 	tbVec2 v = tbBody_GetLinearVelocity(id);
 	tbPos c = tbBody_GetWorldCenter(id);
-	float values[9] = {p.x, p.y, tbBody_GetAngle(id), v.x, v.y, tbBody_GetAngularVelocity(id), tbBody_GetMass(id), c.x, c.y};
+	float values[10] = {p.x, p.y, tbBody_GetAngle(id), v.x, v.y, tbBody_GetAngularVelocity(id), tbBody_GetMass(id), c.x, c.y,
+						tbBody_GetRotationalInertia(id)};
 	memcpy(s_scratch, values, sizeof(values));
 }
 
