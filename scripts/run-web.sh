@@ -7,10 +7,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh web
-# Plain floats in the wide contact solver (TUMBLE_SIMD=OFF): the same results as the native SSE2
-# build, bit for bit, so the page shows the native state hashes.
+# The wide contact solver on WebAssembly's 128-bit SIMD (TUMBLE_SIMD=ON, src/core/simd.h): the same
+# results as the native SSE2 build, bit for bit, as its plain floats (TUMBLE_SIMD=OFF) are.
 cmake -S . -B build/web -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/wasm32-wasi.cmake" -DCMAKE_BUILD_TYPE=Release \
-	-DTUMBLE_BUILD_WEB=ON -DTUMBLE_SIMD=OFF -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_SAMPLES=OFF \
+	-DTUMBLE_BUILD_WEB=ON -DTUMBLE_SIMD=ON -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_SAMPLES=OFF \
 	-DTUMBLE_BUILD_BENCH=OFF -DTUMBLE_BUILD_TOOLS=OFF >/dev/null
 cmake --build build/web -j"$(nproc)"
 if [ "${1:-}" = "--build-only" ]; then

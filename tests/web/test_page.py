@@ -17,6 +17,10 @@ Checks, each reported as it passes or fails:
 
 Usage: tests/web/test_page.py --page build/web/web --tumble build/release/samples/tumble
                               [--steps 300] [--screenshot FILE.png]
+       tests/web/test_page.py --page build/web/web --tumble build/release/samples/tumble
+                              --measure large_pyramid,ragdolls [--steps 300]
+The second form checks nothing: it steps each scene --steps times in the browser and in the native
+program and prints both mean step times (ms), each taken over the whole run of steps.
 Needs: chromium, chromium-driver, python3-selenium (scripts/install-deps.sh web-test); Debian's
 python3 (/usr/bin/python3), whose site holds python3-selenium.
 """
@@ -259,6 +263,21 @@ class Run:
                 colours.add(row[x:x + 3])
         self.check("screenshot", len(colours) >= 32, f"{path}: {width}x{height}, {len(colours)} colours sampled")
 
+    def measure(self, names):
+        for name in names:
+            self.choose_scene(name, fresh=True)
+            browser = self.js("""
+                const run = tumbleApp.run;
+                const start = performance.now();
+                for (let i = 0; i < arguments[0]; ++i) run.step();
+                return (performance.now() - start) / arguments[0];
+            """, self.args.steps)
+            out = subprocess.run([self.args.tumble, "run", name, "--steps", str(self.args.steps)], check=True,
+                                 capture_output=True, text=True).stdout
+            native = float(next(l for l in out.splitlines() if l.startswith("mean step: ")).split()[2])
+            print(f"web: {name}, {self.args.steps} steps: browser {browser:.3f} ms a step, native {native:.3f} ms "
+                  f"(browser / native {browser / native:.2f})", flush=True)
+
     def console(self):
         entries = self.driver.get_log("browser")
         errors = [e for e in entries if e.get("level") == "SEVERE"]
@@ -272,6 +291,7 @@ def main():
     parser.add_argument("--tumble", required=True, help="the native tumble program")
     parser.add_argument("--steps", type=int, default=300)
     parser.add_argument("--screenshot", default="build/web/page.png")
+    parser.add_argument("--measure", help="comma-separated scenes: print browser and native step times, check nothing")
     args = parser.parse_args()
     if not os.path.exists(os.path.join(args.page, "tumble.wasm")):
         sys.exit(f"web: {args.page}/tumble.wasm is missing (scripts/run-web.sh --build-only builds it)")
@@ -285,6 +305,9 @@ def main():
         try:
             driver.get(url)
             WebDriverWait(driver, 60).until(lambda d: d.execute_script("return tumbleApp.ready || tumbleApp.error !== null"))
+            if args.measure:
+                run.measure(args.measure.split(","))
+                return 0
             for part in (run.api, run.hashes, run.drag, run.switches, run.screenshot, run.console):
                 try:
                     part_began = time.monotonic()
