@@ -48,8 +48,8 @@ double Web_GetByteCount(void)
 /// Methods are given as the enums' values, −1 for the library's default.
 uint32_t WEB_EXPORT(Web_CreateWorld)(float gravityX, float gravityY, int enableSleep, int broadPhase, int narrowPhase,
 									 int continuous, int solver);
-uint32_t Web_CreateWorld(float gravityX, float gravityY, int enableSleep, int broadPhase, int narrowPhase, int continuous,
-						 int solver)
+uint32_t Web_CreateWorld(float gravityX, float gravityY, int enableSleep, int broadPhase, int narrowPhase,
+						 int continuous, int solver)
 {
 	tbWorldDef def = tbDefaultWorldDef();
 	def.gravity = (tbVec2){gravityX, gravityY};
@@ -107,8 +107,9 @@ void Web_World_GetCounters(uint32_t world)
 uint64_t WEB_EXPORT(Web_CreateBody)(uint32_t world, int type, float x, float y, float angle, float vx, float vy,
 									float angularVelocity, float linearDamping, float angularDamping, float gravityScale,
 									int isBullet, int fixedRotation);
-uint64_t Web_CreateBody(uint32_t world, int type, float x, float y, float angle, float vx, float vy, float angularVelocity,
-						float linearDamping, float angularDamping, float gravityScale, int isBullet, int fixedRotation)
+uint64_t Web_CreateBody(uint32_t world, int type, float x, float y, float angle, float vx, float vy,
+						float angularVelocity, float linearDamping, float angularDamping, float gravityScale,
+						int isBullet, int fixedRotation)
 {
 	tbBodyDef def = tbDefaultBodyDef();
 	def.type = (tbBodyType)type;
@@ -151,8 +152,8 @@ void Web_Body_GetState(uint64_t body)
 	tbPos p = tbBody_GetPosition(id);
 	tbVec2 v = tbBody_GetLinearVelocity(id);
 	tbPos c = tbBody_GetWorldCenter(id);
-	float values[10] = {p.x, p.y, tbBody_GetAngle(id), v.x, v.y, tbBody_GetAngularVelocity(id), tbBody_GetMass(id), c.x, c.y,
-						tbBody_GetRotationalInertia(id)};
+	float values[10] = {p.x, p.y, tbBody_GetAngle(id), v.x, v.y, tbBody_GetAngularVelocity(id),
+						tbBody_GetMass(id), c.x, c.y, tbBody_GetRotationalInertia(id)};
 	memcpy(s_scratch, values, sizeof(values));
 }
 
@@ -204,8 +205,8 @@ static tbShapeDef MakeShapeDef(float density, float friction, float restitution,
 }
 
 /// flags: 1 sensor, 2 contact events, 4 hit events, 8 sensor events.
-uint64_t WEB_EXPORT(Web_CreateCircleShape)(uint64_t body, float cx, float cy, float radius, float density, float friction,
-										   float restitution, int flags);
+uint64_t WEB_EXPORT(Web_CreateCircleShape)(uint64_t body, float cx, float cy, float radius, float density,
+										   float friction, float restitution, int flags);
 uint64_t Web_CreateCircleShape(uint64_t body, float cx, float cy, float radius, float density, float friction,
 							   float restitution, int flags)
 {
@@ -234,8 +235,8 @@ uint64_t Web_CreateSegmentShape(uint64_t body, float x1, float y1, float x2, flo
 	return tbStoreShapeId(tbCreateSegmentShape(tbLoadBodyId(body), &def, &segment));
 }
 
-uint64_t WEB_EXPORT(Web_CreateBoxShape)(uint64_t body, float halfWidth, float halfHeight, float cx, float cy, float angle,
-										float density, float friction, float restitution, int flags);
+uint64_t WEB_EXPORT(Web_CreateBoxShape)(uint64_t body, float halfWidth, float halfHeight, float cx, float cy,
+										float angle, float density, float friction, float restitution, int flags);
 uint64_t Web_CreateBoxShape(uint64_t body, float halfWidth, float halfHeight, float cx, float cy, float angle,
 							float density, float friction, float restitution, int flags)
 {
@@ -249,8 +250,8 @@ uint64_t Web_CreateBoxShape(uint64_t body, float halfWidth, float halfHeight, fl
 /// all on a line).
 uint64_t WEB_EXPORT(Web_CreatePolygonShape)(uint64_t body, int count, float radius, float density, float friction,
 											float restitution, int flags);
-uint64_t Web_CreatePolygonShape(uint64_t body, int count, float radius, float density, float friction, float restitution,
-								int flags)
+uint64_t Web_CreatePolygonShape(uint64_t body, int count, float radius, float density, float friction,
+								float restitution, int flags)
 {
 	tbVec2 points[TB_MAX_POLYGON_VERTICES];
 	if (count < 3 || count > TB_MAX_POLYGON_VERTICES)
@@ -296,8 +297,8 @@ static tbJointDef MakeJointBase(uint64_t bodyA, uint64_t bodyB, tbPos anchorA, t
 }
 
 /// A distance joint between a world point on each body; its length is their distance now.
-uint64_t WEB_EXPORT(Web_CreateDistanceJoint)(uint32_t world, uint64_t bodyA, uint64_t bodyB, float ax, float ay, float bx,
-											 float by, int enableSpring, float hertz, float dampingRatio,
+uint64_t WEB_EXPORT(Web_CreateDistanceJoint)(uint32_t world, uint64_t bodyA, uint64_t bodyB, float ax, float ay,
+											 float bx, float by, int enableSpring, float hertz, float dampingRatio,
 											 int collideConnected);
 uint64_t Web_CreateDistanceJoint(uint32_t world, uint64_t bodyA, uint64_t bodyB, float ax, float ay, float bx, float by,
 								 int enableSpring, float hertz, float dampingRatio, int collideConnected)
@@ -425,7 +426,8 @@ static bool TakeBodyAtPoint(tbShapeId shapeId, void* context)
 {
 	PointQuery* query = context;
 	tbBodyId body = tbShape_GetBody(shapeId);
-	if ((query->dynamicOnly && tbBody_GetType(body) != tb_dynamicBody) || tbShape_TestPoint(shapeId, query->point) == false)
+	bool wrongType = query->dynamicOnly && tbBody_GetType(body) != tb_dynamicBody;
+	if (wrongType || tbShape_TestPoint(shapeId, query->point) == false)
 	{
 		return true; // go on
 	}
@@ -572,7 +574,8 @@ static float* Reserve(int count)
 	return out;
 }
 
-static void PushPolygon(float op, tbWorldTransform xf, const tbVec2* vertices, int count, float radius, tbHexColor color)
+static void PushPolygon(float op, tbWorldTransform xf, const tbVec2* vertices, int count, float radius,
+						tbHexColor color)
 {
 	int extra = op == 2.0f ? 1 : 0;
 	float* out = Reserve(3 + extra + 2 * count);

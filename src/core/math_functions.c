@@ -36,21 +36,29 @@ float tbAtan2(float y, float x)
 // wasi-libc's sinf disagree on many arguments), so that a rotation made from an angle is the same
 // float pair everywhere. The angle, exact in double, is reduced by the nearest multiple k of π/2,
 // r = x − k·π/2 with |r| ≤ π/4 (to a few ulps of double; a billion radians and beyond are first
-// brought into one turn, where float angles no longer mean anything). On that interval the Taylor
-// series to r¹³ and r¹⁴ are within 1e-14 of sin and cos, far below a float's ulp, and the one
-// rounding to float gives the float nearest the true value but in rare ties. Every operation is an
-// IEEE 754 double + − × / or floor, exact to the bit on every platform (no contraction:
+// brought into one turn by fmod, where float angles no longer mean anything). On that interval
+// the Taylor series to r¹³ and r¹⁴ are within 1e-14 of sin and cos, far below a float's ulp, and
+// the one rounding to float gives the float nearest the true value but in rare ties. Every operation is an
+// IEEE 754 double + − × /, floor or fmod, exact to the bit on every platform (no contraction:
 // -ffp-contract=off).
 static double tbSinSeries(double r)
 {
-	double r2 = r * r;
-	return r * (1.0 - r2 / 6.0 * (1.0 - r2 / 20.0 * (1.0 - r2 / 42.0 * (1.0 - r2 / 72.0 * (1.0 - r2 / 110.0 * (1.0 - r2 / 156.0))))));
+	double r2 = r * r, sum = 1.0;
+	for (int n = 12; n >= 2; n -= 2) // r·(1 − r²/(2·3)·(1 − r²/(4·5)·(… (1 − r²/(12·13)))))
+	{
+		sum = 1.0 - r2 / (double)(n * (n + 1)) * sum;
+	}
+	return r * sum;
 }
 
 static double tbCosSeries(double r)
 {
-	double r2 = r * r;
-	return 1.0 - r2 / 2.0 * (1.0 - r2 / 12.0 * (1.0 - r2 / 30.0 * (1.0 - r2 / 56.0 * (1.0 - r2 / 90.0 * (1.0 - r2 / 132.0 * (1.0 - r2 / 182.0))))));
+	double r2 = r * r, sum = 1.0;
+	for (int n = 13; n >= 1; n -= 2) // 1 − r²/(1·2)·(1 − r²/(3·4)·(… (1 − r²/(13·14))))
+	{
+		sum = 1.0 - r2 / (double)(n * (n + 1)) * sum;
+	}
+	return sum;
 }
 
 tbCosSin tbComputeCosSin(float radians)
@@ -64,13 +72,13 @@ tbCosSin tbComputeCosSin(float radians)
 	double x = radians;
 	if (fabs(x) > 1.0e9)
 	{
-		x -= twoPi * floor(x / twoPi);
+		x = fmod(x, twoPi); // exact, as the C standard has every fmod
 	}
 	double k = floor(x / halfPi + 0.5);
 	double r = x - k * halfPi;
 	double s = tbSinSeries(r), c = tbCosSeries(r);
-	// cos and sin of r + q·π/2 for the quarter turn q = k mod 4
-	long long quarter = (long long)k & 3;
+	// cos and sin of r + q·π/2 for the quarter turn q = k mod 4 (|k| < 2^30: an int holds it)
+	int quarter = (int)k & 3;
 	double cq = quarter == 0 ? c : quarter == 1 ? -s : quarter == 2 ? -c : s;
 	double sq = quarter == 0 ? s : quarter == 1 ? c : quarter == 2 ? -s : -c;
 	float cf = (float)cq, sf = (float)sq;
