@@ -11,6 +11,31 @@
 // ---------------------------------------------------------------------------------------------
 // Helpers
 
+// Trigonometry by the library's own functions (tbComputeCosSin, tbAtan2), not the C library's,
+// whose last bits differ between platforms (glibc, wasi-libc): a scene is then the same world
+// natively and in the browser, to the bit (docs/web.md).
+static float Sin(float radians)
+{
+	return tbComputeCosSin(radians).sine;
+}
+
+static float Cos(float radians)
+{
+	return tbComputeCosSin(radians).cosine;
+}
+
+static float Tan(float radians)
+{
+	tbCosSin cs = tbComputeCosSin(radians);
+	return cs.sine / cs.cosine;
+}
+
+/// acos(x) for x in [−1, 1], as the angle of the unit vector (x, √(1 − x²)).
+static float Acos(float x)
+{
+	return tbAtan2(sqrtf(1.0f - x * x), x);
+}
+
 static tbVec2 V(float x, float y)
 {
 	return (tbVec2){x, y};
@@ -150,7 +175,7 @@ static Scene* BuildDominoes(void)
 	scene->steps = 400;
 	AddGround(scene, 20.0f, 0.6f);
 	float hx = 0.1f, hy = 1.0f, tilt = -0.25f;
-	float tippedY = hy * cosf(tilt) + hx * sinf(-tilt);
+	float tippedY = hy * Cos(tilt) + hx * Sin(-tilt);
 	for (int i = 0; i < 20; ++i)
 	{
 		float angle = i == 0 ? tilt : 0.0f;
@@ -233,8 +258,8 @@ static Scene* BuildOverlapRecovery(void)
 // along from the slab centre, raised by the half height hy of the box resting there.
 static tbVec2 OnSlope(tbVec2 center, float angle, float slabHy, float along, float hy)
 {
-	tbVec2 t = V(cosf(angle), sinf(angle));
-	tbVec2 n = V(-sinf(angle), cosf(angle));
+	tbVec2 t = V(Cos(angle), Sin(angle));
+	tbVec2 n = V(-Sin(angle), Cos(angle));
 	return tbAdd(center, tbAdd(tbMulSV(along, t), tbMulSV(slabHy + hy, n)));
 }
 
@@ -560,8 +585,8 @@ static Scene* MakeSpinner(bool motorised)
 	{
 		float a1 = -2.0f * TB_PI * (float)i / (float)pointCount;
 		float a2 = -2.0f * TB_PI * (float)(i + 1) / (float)pointCount;
-		tbGeometry segment = Scene_MakeSegmentGeometry(V(40.0f * cosf(a1), 32.0f + 40.0f * sinf(a1)),
-													   V(40.0f * cosf(a2), 32.0f + 40.0f * sinf(a2)));
+		tbGeometry segment = Scene_MakeSegmentGeometry(V(40.0f * Cos(a1), 32.0f + 40.0f * Sin(a1)),
+													   V(40.0f * Cos(a2), 32.0f + 40.0f * Sin(a2)));
 		Scene_AddGeometry(scene, ground, &segment, 1.0f, 0.1f);
 	}
 	int blade = Scene_AddBody(scene, motorised ? tb_dynamicBody : tb_kinematicBody, V(0.0f, 12.0f), 0.0f);
@@ -619,8 +644,8 @@ static void AddWasherDrum(Scene* scene, int drum)
 	for (int i = 0; i < 36; ++i)
 	{
 		float a1 = piece * (float)i, a2 = i == 35 ? 0.0f : piece * (float)(i + 1);
-		tbVec2 u1 = V(cosf(a1), sinf(a1)), u2 = V(cosf(a2), sinf(a2));
-		tbVec2 o1 = V(cosf(a1 - overlap), sinf(a1 - overlap)), o2 = V(cosf(a2 + overlap), sinf(a2 + overlap));
+		tbVec2 u1 = V(Cos(a1), Sin(a1)), u2 = V(Cos(a2), Sin(a2));
+		tbVec2 o1 = V(Cos(a1 - overlap), Sin(a1 - overlap)), o2 = V(Cos(a2 + overlap), Sin(a2 + overlap));
 		tbVec2 ring[4] = {tbMulSV(r1, o1), tbMulSV(r2, o1), tbMulSV(r1, o2), tbMulSV(r2, o2)};
 		tbGeometry ringPiece = Scene_MakePolygonGeometry(ring, 4, 0.0f);
 		Scene_AddGeometry(scene, drum, &ringPiece, 1.0f, 0.6f);
@@ -691,7 +716,7 @@ static Scene* BuildJunkyard(void)
 	tbVec2 points[5];
 	for (int k = 0; k < 5; ++k)
 	{
-		points[k] = V(radius * cosf(phi * (float)k), radius * sinf(phi * (float)k));
+		points[k] = V(radius * Cos(phi * (float)k), radius * Sin(phi * (float)k));
 	}
 	tbGeometry pentagon = Scene_MakePolygonGeometry(points, 5, 0.0f);
 	float side = -0.1f;
@@ -788,13 +813,13 @@ static Scene* BuildRopeBridge(void)
 	const int count = 20;
 	const float span = 18.0f, y = 8.0f;
 	float half = 0.5f * (float)count;
-	float slope = acosf(0.5f * span / half); // each half of the V is `half` planks of 1 m
+	float slope = Acos(0.5f * span / half); // each half of the V is `half` planks of 1 m
 	tbVec2 pivot = V(-0.5f * span, y);
 	int previous = ground;
 	for (int i = 0; i < count; ++i)
 	{
 		float angle = i < count / 2 ? -slope : slope;
-		tbVec2 along = V(cosf(angle), sinf(angle));
+		tbVec2 along = V(Cos(angle), Sin(angle));
 		int plank = Scene_AddBody(scene, tb_dynamicBody, tbMulAdd(pivot, 0.5f, along), angle);
 		tbGeometry box = Scene_MakeBoxGeometry(0.5f, 0.05f, tbVec2_zero, 0.0f);
 		Scene_AddGeometry(scene, plank, &box, 2.0f, 0.6f);
@@ -825,8 +850,8 @@ static Scene* BuildCar(void)
 	for (int i = 0; i < 200; ++i)
 	{
 		float x1 = -20.0f + (float)i, x2 = x1 + 1.0f;
-		float y1 = x1 < 0.0f ? 0.0f : 0.6f * sinf(0.35f * x1) + 0.4f * sinf(0.9f * x1);
-		float y2 = x2 < 0.0f ? 0.0f : 0.6f * sinf(0.35f * x2) + 0.4f * sinf(0.9f * x2);
+		float y1 = x1 < 0.0f ? 0.0f : 0.6f * Sin(0.35f * x1) + 0.4f * Sin(0.9f * x1);
+		float y2 = x2 < 0.0f ? 0.0f : 0.6f * Sin(0.35f * x2) + 0.4f * Sin(0.9f * x2);
 		tbGeometry segment = Scene_MakeSegmentGeometry(V(x1, y1), V(x2, y2));
 		Scene_AddGeometry(scene, ground, &segment, 1.0f, 0.9f);
 	}
@@ -1084,8 +1109,8 @@ static Scene* BuildCradleJoints(void)
 		tbVec2 position = V(x, 4.0f - length);
 		if (i == 0)
 		{
-			float angle = acosf((length - 1.5f) / length); // 1.5 m up: released from rest
-			position = V(x - length * sinf(angle), 4.0f - length * cosf(angle));
+			float angle = Acos((length - 1.5f) / length); // 1.5 m up: released from rest
+			position = V(x - length * Sin(angle), 4.0f - length * Cos(angle));
 		}
 		int ball = Scene_AddBody(scene, tb_dynamicBody, position, 0.0f);
 		tbGeometry circle = Scene_MakeCircleGeometry(tbVec2_zero, r);
@@ -1133,7 +1158,7 @@ static void AddConcaveShape(Scene* scene, int body, const tbVec2* outline, int c
 /// (0..10), a plateau (10..20), a cosine valley 1 m below the start (20..40) and a flat run (40..60).
 static float PlatformerGround(float x)
 {
-	float plateau = 10.0f * tanf(15.0f * TB_PI / 180.0f);
+	float plateau = 10.0f * Tan(15.0f * TB_PI / 180.0f);
 	if (x <= 0.0f || x >= 40.0f)
 	{
 		return 0.0f;
@@ -1148,9 +1173,9 @@ static float PlatformerGround(float x)
 	}
 	if (x <= 30.0f)
 	{
-		return plateau - (plateau + 1.0f) * 0.5f * (1.0f - cosf(TB_PI * (x - 20.0f) / 10.0f));
+		return plateau - (plateau + 1.0f) * 0.5f * (1.0f - Cos(TB_PI * (x - 20.0f) / 10.0f));
 	}
-	return -1.0f + 0.5f * (1.0f - cosf(TB_PI * (x - 30.0f) / 10.0f));
+	return -1.0f + 0.5f * (1.0f - Cos(TB_PI * (x - 30.0f) / 10.0f));
 }
 
 /// A platformer level: ground as one chain (points every metre on the flats and curves, every 2 m
@@ -1216,7 +1241,7 @@ static Scene* BuildLoopTheLoop(void)
 		for (int i = 0; i < 256; ++i)
 		{
 			float angle = -2.0f * TB_PI * (float)i / 256.0f;
-			points[i] = V(cx + R * cosf(angle), R + R * sinf(angle));
+			points[i] = V(cx + R * Cos(angle), R + R * Sin(angle));
 		}
 		SceneChain* chain = Scene_AddChain(scene, ground, points, 256, true);
 		chain->friction = 0.0f;

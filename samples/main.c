@@ -480,6 +480,9 @@ static void PrintSummary(const Run* run, const char* name)
 	printf("mean step: %.4f ms\n", run->steps > 0 ? run->stepMilliseconds / run->steps : 0.0);
 	printf("largest penetration: %.6f m\n", (double)SceneWorld_LargestPenetration(&run->world));
 	printf("kinetic energy: %.6g J\n", (double)SceneWorld_KineticEnergy(&run->world));
+	// The same scene and methods give the same hash on every platform (the browser build's test
+	// compares it with this line).
+	printf("state hash: %016llx\n", (unsigned long long)tbWorld_GetStateHash(run->world.worldId));
 }
 
 static bool OpenOutputs(Run* run)

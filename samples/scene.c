@@ -396,7 +396,8 @@ bool Scene_DriveTarget(const Scene* scene, int bodyIndex, int step, tbTransform*
 	{
 		return false;
 	}
-	float phase = sinf(body->drive.angularFrequency * scene->timeStep * (float)step);
+	// tbComputeCosSin, not libm's sinf: the same path on every platform (docs/web.md)
+	float phase = tbComputeCosSin(body->drive.angularFrequency * scene->timeStep * (float)step).sine;
 	target->p = tbMulAdd(body->position, phase, body->drive.amplitude);
 	target->q = tbMakeRot(body->angle);
 	return true;

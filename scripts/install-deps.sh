@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Install the Debian packages Tumble needs, when they are missing.
-# Usage: scripts/install-deps.sh build|test|bench
+# Usage: scripts/install-deps.sh build|test|bench|web|web-test
 # As root it runs apt-get; otherwise it prints the exact apt-get line to run and fails.
 set -euo pipefail
 
@@ -9,7 +9,12 @@ case "${1:-build}" in
 	build) packages=("${base[@]}") ;;
 	test) packages=("${base[@]}" libcriterion-dev libbox2d-dev clang libclang-rt-dev) ;; # clang and its runtimes: libFuzzer (scripts/fuzz.sh)
 	bench) packages=("${base[@]}" libbox2d-dev libchipmunk-dev gnuplot-nox) ;;
-	*) echo "usage: $0 build|test|bench" >&2; exit 2 ;;
+	# The WebAssembly build (scripts/run-web.sh): clang's wasm32 target, wasi-libc, lld's wasm-ld and
+	# the compiler's wasm32 builtins; python3 serves the page.
+	web) packages=(cmake make clang-14 wasi-libc lld-14 libclang-rt-14-dev-wasm32 python3) ;;
+	# The browser test (tests/web): Debian's Chromium, headless, driven by Selenium and chromedriver.
+	web-test) packages=(cmake make clang-14 wasi-libc lld-14 libclang-rt-14-dev-wasm32 python3 chromium chromium-driver python3-selenium) ;;
+	*) echo "usage: $0 build|test|bench|web|web-test" >&2; exit 2 ;;
 esac
 
 missing=()

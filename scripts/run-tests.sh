@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Build Tumble with AddressSanitizer, UndefinedBehaviorSanitizer and warnings as errors, then run
 # every test under ctest; then the large-world build (double-precision positions) and its tests;
-# then the AVX2 build's bit-identity tests (where the processor has AVX2); then run each fuzz
-# harness for 60 s (scripts/fuzz.sh, clang libFuzzer), so that a change that makes a harness crash
-# fails here.
+# then the AVX2 build's bit-identity tests (where the processor has AVX2); then the browser page
+# (samples/web) in headless Chromium against the native build (tests/web/test_page.py); then run each
+# fuzz harness for 60 s (scripts/fuzz.sh, clang libFuzzer), so that a change that makes a harness
+# crash fails here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh test
@@ -25,4 +26,10 @@ if grep -qw avx2 /proc/cpuinfo 2>/dev/null; then
 else
 	echo "run-tests: no AVX2 on this processor: the TUMBLE_AVX2 build is not tested"
 fi
+# The WebAssembly build and its page in a real browser: the same state hashes as the native tumble
+# program (the sanitizer build's, run by the test), a mouse drag, memory returned, a screenshot.
+scripts/install-deps.sh web-test
+scripts/run-web.sh --build-only
+/usr/bin/python3 tests/web/test_page.py --page build/web/web --tumble build/test/samples/tumble \
+	--screenshot build/web/page.png
 FUZZ_SEED=1 scripts/fuzz.sh 60

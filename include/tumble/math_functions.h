@@ -320,7 +320,8 @@ TB_INLINE bool tbVec2Equals(tbVec2 a, tbVec2 b)
 }
 
 /// Rotation from an angle in radians.
-/// Cosine and sine of an angle, normalised so that c² + s² = 1 to float precision.
+/// Cosine and sine of an angle, normalised so that c² + s² = 1 to float precision; computed without
+/// the C library (math_functions.c), so the same on every platform. tbMakeRot uses it.
 typedef struct tbCosSin
 {
 	float cosine;
@@ -350,7 +351,8 @@ TB_INLINE float tbUnwindAngle(float radians)
 
 TB_INLINE tbRot tbMakeRot(float radians)
 {
-	tbRot q = {cosf(radians), sinf(radians)};
+	tbCosSin cs = tbComputeCosSin(radians); // the same bits on every platform, unlike libm's
+	tbRot q = {cs.cosine, cs.sine};
 	return q;
 }
 

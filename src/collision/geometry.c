@@ -344,7 +344,7 @@ static tbAreaMoments tbCornerSkinMoments(const tbPolygon* shape, int i, tbVec2 o
 	float r = shape->radius;
 	tbVec2 n1 = shape->normals[(i + n - 1) % n];
 	tbVec2 n2 = shape->normals[i];
-	float phi = atan2f(tbCross(n1, n2), tbDot(n1, n2));
+	float phi = tbAtan2(tbCross(n1, n2), tbDot(n1, n2)); // tbAtan2 and tbComputeCosSin: no libm, same everywhere
 	phi = tbMaxFloat(phi, 0.0f);
 
 	tbAreaMoments m = {0};
@@ -354,7 +354,7 @@ static tbAreaMoments tbCornerSkinMoments(const tbPolygon* shape, int i, tbVec2 o
 	}
 	// Centroid offset from the vertex along the bisector: 4r·sin(φ/2)/(3φ).
 	tbVec2 bisector = tbNormalize(tbAdd(n1, n2));
-	tbVec2 toCentroid = tbMulSV(4.0f * r * sinf(0.5f * phi) / (3.0f * phi), bisector);
+	tbVec2 toCentroid = tbMulSV(4.0f * r * tbComputeCosSin(0.5f * phi).sine / (3.0f * phi), bisector);
 	tbVec2 v = tbSub(shape->vertices[i], origin);
 
 	// ∫|x − o|² = ∫|(x − v) + v|² = I_v + 2 v·(area·(c − v)) + area·|v|²

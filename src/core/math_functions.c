@@ -1,5 +1,5 @@
-// Math helpers that are not inline: an arctangent with a stated error that does not depend on the
-// platform's libm, and the cosine/sine pair of an angle.
+// Math helpers that are not inline: an arctangent with a stated error and the cosine/sine pair of
+// an angle, neither of which depends on the platform's libm.
 #include "tumble/math_functions.h"
 
 #include <math.h>
@@ -32,11 +32,58 @@ float tbAtan2(float y, float x)
 	return y < 0.0f ? -r : r;
 }
 
+// Sine and cosine without the C library, whose last bits differ between platforms (glibc's and
+// wasi-libc's sinf disagree on many arguments), so that a rotation made from an angle is the same
+// float pair everywhere. The angle, exact in double, is reduced by the nearest multiple k of π/2,
+// r = x − k·π/2 with |r| ≤ π/4 (to a few ulps of double; a billion radians and beyond are first
+// brought into one turn by fmod, where float angles no longer mean anything). On that interval
+// the Taylor series to r¹³ and r¹⁴ are within 1e-14 of sin and cos, far below a float's ulp, and
+// the one rounding to float gives the float nearest the true value but in rare ties. Every operation is an
+// IEEE 754 double + − × /, floor or fmod, exact to the bit on every platform (no contraction:
+// -ffp-contract=off).
+static double tbSinSeries(double r)
+{
+	double r2 = r * r, sum = 1.0;
+	for (int n = 12; n >= 2; n -= 2) // r·(1 − r²/(2·3)·(1 − r²/(4·5)·(… (1 − r²/(12·13)))))
+	{
+		sum = 1.0 - r2 / (double)(n * (n + 1)) * sum;
+	}
+	return r * sum;
+}
+
+static double tbCosSeries(double r)
+{
+	double r2 = r * r, sum = 1.0;
+	for (int n = 13; n >= 1; n -= 2) // 1 − r²/(1·2)·(1 − r²/(3·4)·(… (1 − r²/(13·14))))
+	{
+		sum = 1.0 - r2 / (double)(n * (n + 1)) * sum;
+	}
+	return sum;
+}
+
 tbCosSin tbComputeCosSin(float radians)
 {
-	float c = cosf(radians), s = sinf(radians);
-	float length = sqrtf(c * c + s * s);
-	tbCosSin cs = {c / length, s / length};
+	if (isfinite(radians) == false)
+	{
+		tbCosSin nan = {radians - radians, radians - radians};
+		return nan;
+	}
+	const double halfPi = 1.57079632679489661923, twoPi = 6.28318530717958647692;
+	double x = radians;
+	if (fabs(x) > 1.0e9)
+	{
+		x = fmod(x, twoPi); // exact, as the C standard has every fmod
+	}
+	double k = floor(x / halfPi + 0.5);
+	double r = x - k * halfPi;
+	double s = tbSinSeries(r), c = tbCosSeries(r);
+	// cos and sin of r + q·π/2 for the quarter turn q = k mod 4 (|k| < 2^30: an int holds it)
+	int quarter = (int)k & 3;
+	double cq = quarter == 0 ? c : quarter == 1 ? -s : quarter == 2 ? -c : s;
+	double sq = quarter == 0 ? s : quarter == 1 ? c : quarter == 2 ? -s : -c;
+	float cf = (float)cq, sf = (float)sq;
+	float length = sqrtf(cf * cf + sf * sf);
+	tbCosSin cs = {cf / length, sf / length};
 	return cs;
 }
 

@@ -18,6 +18,12 @@
 #if !defined(TB_SIMD_NONE) && (defined(__SSE2__) || defined(_M_X64))
 #define TB_SIMD_SSE2 1
 #include <emmintrin.h>
+#elif !defined(TB_SIMD_NONE) && defined(__wasm_simd128__)
+// WebAssembly's 128-bit SIMD (-msimd128): its lane arithmetic is IEEE single precision like SSE2's;
+// its own min and max (NaN-propagating, or pmin/pmax) follow other rules, so the comparisons below
+// select lanes with the scalar rule instead.
+#define TB_SIMD_WASM 1
+#include <wasm_simd128.h>
 #endif
 
 #if defined(TB_SIMD_AVX2) && !defined(TB_SIMD_NONE)
@@ -268,6 +274,117 @@ static inline void tbTransposeStoreRowsW(void* const rows[TB_SIMD_WIDTH], const 
 		tbTransposeStoreW(rows[0], rows[1], rows[2], rows[3], in);
 		return;
 	}
+	tbTransposeStoreMaskedW(rows[0], rows[1], rows[2], rows[3], in, mask);
+}
+
+#elif defined(TB_SIMD_WASM)
+
+typedef v128_t tbFloatW;
+
+static inline tbFloatW tbZeroW(void)
+{
+	return wasm_f32x4_splat(0.0f);
+}
+
+static inline tbFloatW tbSplatW(float a)
+{
+	return wasm_f32x4_splat(a);
+}
+
+static inline tbFloatW tbAddW(tbFloatW a, tbFloatW b)
+{
+	return wasm_f32x4_add(a, b);
+}
+
+static inline tbFloatW tbSubW(tbFloatW a, tbFloatW b)
+{
+	return wasm_f32x4_sub(a, b);
+}
+
+static inline tbFloatW tbMulW(tbFloatW a, tbFloatW b)
+{
+	return wasm_f32x4_mul(a, b);
+}
+
+static inline tbFloatW tbDivW(tbFloatW a, tbFloatW b)
+{
+	return wasm_f32x4_div(a, b);
+}
+
+static inline tbFloatW tbSqrtW(tbFloatW a)
+{
+	return wasm_f32x4_sqrt(a);
+}
+
+static inline int tbGreaterMaskW(tbFloatW a, tbFloatW b)
+{
+	return (int)wasm_i32x4_bitmask(wasm_f32x4_gt(a, b));
+}
+
+/// a > b ? a : b per lane (bitselect takes its first operand where the mask is set)
+static inline tbFloatW tbMaxW(tbFloatW a, tbFloatW b)
+{
+	return wasm_v128_bitselect(a, b, wasm_f32x4_gt(a, b));
+}
+
+/// a < b ? a : b per lane
+static inline tbFloatW tbMinW(tbFloatW a, tbFloatW b)
+{
+	return wasm_v128_bitselect(a, b, wasm_f32x4_lt(a, b));
+}
+
+static inline tbFloatW tbSelectGreaterW(tbFloatW a, tbFloatW b, tbFloatW ifTrue, tbFloatW ifFalse)
+{
+	return wasm_v128_bitselect(ifTrue, ifFalse, wasm_f32x4_gt(a, b));
+}
+
+/// Rows of four floats in, columns out (the 4×4 transpose, in two rounds of interleaving).
+static inline void tbLoadTransposeW(const void* row0, const void* row1, const void* row2, const void* row3,
+									tbFloatW out[4])
+{
+	v128_t r0 = wasm_v128_load(row0), r1 = wasm_v128_load(row1);
+	v128_t r2 = wasm_v128_load(row2), r3 = wasm_v128_load(row3);
+	v128_t low01 = wasm_i32x4_shuffle(r0, r1, 0, 4, 1, 5), high01 = wasm_i32x4_shuffle(r0, r1, 2, 6, 3, 7);
+	v128_t low23 = wasm_i32x4_shuffle(r2, r3, 0, 4, 1, 5), high23 = wasm_i32x4_shuffle(r2, r3, 2, 6, 3, 7);
+	out[0] = wasm_i64x2_shuffle(low01, low23, 0, 2);
+	out[1] = wasm_i64x2_shuffle(low01, low23, 1, 3);
+	out[2] = wasm_i64x2_shuffle(high01, high23, 0, 2);
+	out[3] = wasm_i64x2_shuffle(high01, high23, 1, 3);
+}
+
+static inline void tbTransposeStoreMaskedW(void* row0, void* row1, void* row2, void* row3, const tbFloatW in[4],
+										   int mask)
+{
+	tbFloatW rows[4];
+	tbLoadTransposeW(&in[0], &in[1], &in[2], &in[3], rows);
+	void* targets[4] = {row0, row1, row2, row3};
+	for (int i = 0; i < 4; ++i)
+	{
+		if (mask & (1 << i))
+		{
+			wasm_v128_store(targets[i], rows[i]);
+		}
+	}
+}
+
+static inline void tbTransposeStoreW(void* row0, void* row1, void* row2, void* row3, const tbFloatW in[4])
+{
+	tbTransposeStoreMaskedW(row0, row1, row2, row3, in, 15);
+}
+
+static inline int tbNonZeroMaskW(tbFloatW a, tbFloatW b)
+{
+	tbFloatW zero = wasm_f32x4_splat(0.0f);
+	return (int)wasm_i32x4_bitmask(wasm_v128_or(wasm_f32x4_ne(a, zero), wasm_f32x4_ne(b, zero)));
+}
+
+static inline void tbLoadTransposeRowsW(const void* const rows[TB_SIMD_WIDTH], tbFloatW out[4])
+{
+	tbLoadTransposeW(rows[0], rows[1], rows[2], rows[3], out);
+}
+
+static inline void tbTransposeStoreRowsW(void* const rows[TB_SIMD_WIDTH], const tbFloatW in[4], int mask)
+{
 	tbTransposeStoreMaskedW(rows[0], rows[1], rows[2], rows[3], in, mask);
 }
 

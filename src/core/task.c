@@ -26,7 +26,9 @@
 #define TB_PAUSE() ((void)0)
 #endif
 
-#if !defined(__STDC_NO_THREADS__)
+// wasi-libc declares <threads.h> but defines thrd_yield only in its threaded build (atomics on): a
+// single-threaded WebAssembly module has no other thread to yield to.
+#if !defined(__STDC_NO_THREADS__) && (!defined(__wasm__) || defined(__wasm_atomics__))
 #include <threads.h>
 #define TB_YIELD() thrd_yield()
 #else

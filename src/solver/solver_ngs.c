@@ -458,7 +458,7 @@ static void tbSolveTimeOfImpact(tbStepContext* context, tbNGSConstraint* infos)
 
 		// 1. Back to the time of impact.
 		tbSolverBody* body = bodies + bodyIndex;
-		float angle = tbRot_GetAngle(body->deltaRotation);
+		float angle = tbAtan2(body->deltaRotation.s, body->deltaRotation.c); // not libm's: the same everywhere
 		body->deltaPosition = tbMulSV(alpha, body->deltaPosition);
 		body->deltaRotation = tbMakeRot(alpha * angle);
 

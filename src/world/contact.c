@@ -17,6 +17,7 @@
 
 #include "core/array.h"
 
+#include <stdlib.h> // qsort
 #include <string.h>
 
 // Material mixing. A callback's answer is user input arriving mid-step: one the solver cannot use
