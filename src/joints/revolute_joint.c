@@ -228,6 +228,20 @@ void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 {
 	tbRevoluteJoint* r = &joint->revolute;
 	tbJointBodies b = tbLoadJointBodies(context, joint);
+	tbVec2 rA, rB, separation;
+	if (useBias && joint->rigidPin)
+	{
+		// The exact pin first, then the spring, motor and limits, which a tree's sweep also solves
+		// after its exact solve (joint.c, tbSolveJoints): the pin moves the body they drive.
+		tbJointAnchors(joint, &b, &rA, &rB, &separation);
+		tbVec2 Cdot = tbSub(tbAdd(b.vB, tbCrossSV(b.wB, rB)), tbAdd(b.vA, tbCrossSV(b.wA, rA)));
+		if (tbSolveRigidPin(joint, &b, rA, rB, tbMulAdd(Cdot, joint->constraintSoftness.biasRate, separation)))
+		{
+			tbSolveRevoluteAngular(joint, &b, context, useBias);
+			tbStoreJointBodies(joint, &b);
+			return;
+		}
+	}
 	tbSolveRevoluteAngular(joint, &b, context, useBias);
 	if (joint->solvedInTree)
 	{
@@ -235,14 +249,8 @@ void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 		return;
 	}
 
-	tbVec2 rA, rB, separation;
 	tbJointAnchors(joint, &b, &rA, &rB, &separation);
 	tbVec2 Cdot = tbSub(tbAdd(b.vB, tbCrossSV(b.wB, rB)), tbAdd(b.vA, tbCrossSV(b.wA, rA)));
-	if (useBias && joint->rigidPin && tbSolveRigidPin(joint, &b, rA, rB, tbMulAdd(Cdot, joint->constraintSoftness.biasRate, separation)))
-	{
-		tbStoreJointBodies(joint, &b);
-		return;
-	}
 	tbSoftness soft = {0.0f, 1.0f, 0.0f};
 	if (useBias)
 	{
