@@ -581,13 +581,8 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 ///   rotational springs: about 21 unit boxes at the settled stiffness, tests/test_stability.c);
 ///   Box2D v3's columns buckle the same way with its recycling off. The arms are off by at most
 ///   each body's turn since the narrow phase times the arm, which is bounded below;
-///   the normal, a face normal, is off by at most its face's turn, under the same bound; a round
-///   pair's one-point normal may instead be the line between the closest points of the cores (two
-///   circles, a circle beyond a polygon's corner), which turns with their relative motion δ, by at
-///   most δ/d for cores d apart: δ is held below d·sin(TB_RECYCLE_ANGLE) for those. Without that
-///   bound, a jam of deeply overlapping circles (the stability table's confined circles) never came
-///   to rest: each kept normal pushed a little off the line between the centres.
-/// Chain segments are never recycled: their one-sided rules depend on the neighbouring segments.
+///   the normal, a face normal (only polygon and segment pairs are recycled,
+///   tbHasMaterialFeatures), is off by at most its face's turn, under the same bound.
 /// When to recycle: a feature pair not in the manifold was at least margin0 (the speculative margin
 /// then) apart and has closed by at most the relative motion δ since (tbMovedLessThan); in this
 /// step it closes by at most margin − TB_SPECULATIVE_DISTANCE more. So while
@@ -614,55 +609,9 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 // allows about 11°; 5° keeps a kept arm within 0.09 of its length of the true one.
 #define TB_RECYCLE_COS_BODY_TURN 0.99619470f
 
-/// A chain segment's manifold depends on its neighbours (the one-sided rules of its joints), which
-/// the relative motion of the pair does not bound: chain contacts always get a new manifold.
-static bool tbMayRecycle(const tbShape* shape)
-{
-	return shape->geometry.type != tb_chainSegmentShape;
-}
-
-/// The radius a shape adds around its core (a circle's, a capsule's, a rounded polygon's).
-static float tbCoreRadius(const tbShape* shape)
-{
-	switch (shape->geometry.type)
-	{
-		case tb_circleShape:
-			return shape->geometry.circle.radius;
-		case tb_capsuleShape:
-			return shape->geometry.capsule.radius;
-		case tb_polygonShape:
-			return shape->geometry.polygon.radius;
-		default:
-			return 0.0f;
-	}
-}
-
-static bool tbIsRound(const tbShape* shape)
-{
-	return shape->geometry.type == tb_circleShape || shape->geometry.type == tb_capsuleShape;
-}
-
-/// A capsule against a polygon or a segment is clipped as a two-vertex polygon with a radius, and
-/// its kept point was measured to look up to 4 cm farther apart than the narrow phase found the
-/// penetrating pair (tumble-bench-recycling, the spinner): such pairs always get a new manifold.
-static bool tbMayRecyclePair(const tbShape* a, const tbShape* b)
-{
-	if (tbMayRecycle(a) == false || tbMayRecycle(b) == false)
-	{
-		return false;
-	}
-	bool capsuleA = a->geometry.type == tb_capsuleShape, capsuleB = b->geometry.type == tb_capsuleShape;
-	bool flatA = a->geometry.type == tb_polygonShape || a->geometry.type == tb_segmentShape;
-	bool flatB = b->geometry.type == tb_polygonShape || b->geometry.type == tb_segmentShape;
-	return (capsuleA && flatB) == false && (capsuleB && flatA) == false;
-}
-
-// sin(TB_RECYCLE_ANGLE) = sin(2°), rounded to float.
-#define TB_RECYCLE_SIN_ANGLE 0.034899497f
-
 /// recycleDistance is the world's (TB_RECYCLE_DISTANCE by default, tbWorld_SetContactRecycleDistance).
-static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbShape* a, const tbShape* b, const tbBody* bodyA,
-											  const tbBody* bodyB, float margin, float recycleDistance)
+static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin,
+							  float recycleDistance)
 {
 	const tbManifoldBase* base = &contact->base;
 	if ((contact->flags & tb_contactRecyclable) == 0 || bodyA->isFast || bodyB->isFast ||
@@ -674,14 +623,6 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbShape*
 	tbWorldTransform xfB = bodyB->transform;
 	tbTransform relative = tbInvMulWorldTransforms(xfA, xfB);
 	float tolerance = tbMinFloat(recycleDistance, base->margin - margin + TB_SPECULATIVE_DISTANCE);
-	if (contact->manifold.pointCount == 1 && (tbIsRound(a) || tbIsRound(b)))
-	{
-		// A round pair's one point may lie on the line between the closest points of the cores,
-		// d = s0 + rA + rB apart: a relative motion δ turns that line by at most δ/d, kept below
-		// TB_RECYCLE_ANGLE. Cores that overlap (d ≤ 0) define no line: a new manifold.
-		float coreDistance = base->separation[0] + tbCoreRadius(a) + tbCoreRadius(b);
-		tolerance = tbMinFloat(tolerance, coreDistance * TB_RECYCLE_SIN_ANGLE);
-	}
 	// |turn| < TB_RECYCLE_ANGLE ⟺ cos(turn) > cos(TB_RECYCLE_ANGLE): the cosine is the dot product of
 	// the two unit rotations: no atan2 for every touching contact in every step.
 	float cosTurn = base->relative.q.c * relative.q.c + base->relative.q.s * relative.q.s;
@@ -705,6 +646,18 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbShape*
 		m->points[i].persisted = true; // anchors kept: see above
 	}
 	return true;
+}
+
+/// Polygons and segments meet at vertices and faces that move with their bodies, and their normal
+/// is a face normal, so their manifolds can be carried along. Circles and capsules cannot: their
+/// contact point slides over the round surface as the body turns and their normal follows the line
+/// between centres, not either body. Carrying them pumped energy into a jam of deeply overlapping
+/// circles (the stability table's confined circles: the centre line turned away from the kept
+/// normal, so every kept impulse pushed a little off the line, and the jam never came to rest; with
+/// the manifold recomputed it does). Their closed forms are cheap anyway.
+static bool tbHasMaterialFeatures(const tbShape* shape)
+{
+	return shape->geometry.type == tb_polygonShape || shape->geometry.type == tb_segmentShape;
 }
 
 /// The narrow phase proper: a new manifold from the shapes, anchors, impulses carried over by
@@ -745,7 +698,8 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 	{
 		m->points[i].baseSeparation = m->points[i].separation;
 	}
-	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbMayRecyclePair(a, b))
+	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbHasMaterialFeatures(a) &&
+		tbHasMaterialFeatures(b))
 	{
 		tbStoreManifoldBase(contact, bodyA->transform, bodyB->transform, points, margin);
 	}
@@ -859,7 +813,7 @@ static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* cont
 	float margin = isSensor ? TB_SPECULATIVE_DISTANCE : tbSpeculativeMargin(world, bodyA, bodyB);
 	uint32_t result = 0;
 	if (world->def.enableManifoldRecycling && world->contactRecycleDistance > 0.0f &&
-		tbRecycleManifold(contact, a, b, bodyA, bodyB, margin, world->contactRecycleDistance))
+		tbRecycleManifold(contact, bodyA, bodyB, margin, world->contactRecycleDistance))
 	{
 		result |= tb_collideRecycled;
 		contact->flags |= tb_contactRecycled;
