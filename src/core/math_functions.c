@@ -81,9 +81,11 @@ tbCosSin tbComputeCosSin(float radians)
 	int quarter = (int)k & 3;
 	double cq = quarter == 0 ? c : quarter == 1 ? -s : quarter == 2 ? -c : s;
 	double sq = quarter == 0 ? s : quarter == 1 ? c : quarter == 2 ? -s : -c;
-	float cf = (float)cq, sf = (float)sq;
-	float length = sqrtf(cf * cf + sf * sf);
-	tbCosSin cs = {cf / length, sf / length};
+	// Normalised in double, then rounded once: each float is the nearest to the true value (a
+	// normalisation in float moved them by up to an ulp, and a resting contact on a slope made
+	// from the angle shifted with it).
+	double length = sqrt(cq * cq + sq * sq);
+	tbCosSin cs = {(float)(cq / length), (float)(sq / length)};
 	return cs;
 }
 
