@@ -1,6 +1,6 @@
 // Manifold recycling accuracy: how far a recycled manifold (contact.c, tbRecycleManifold) is from
 // the one the narrow phase would compute at the same moment. Each catalogue scene runs with
-// recycling on; after every step, each touching polygon contact is updated twice on copies, once
+// recycling on; after every step, each touching contact that may be recycled (all but chain segments') is updated twice on copies, once
 // as the collide stage would (recycled when it qualifies) and once forced to recompute, and the
 // two are compared: the smallest separation of the pair (what the solver stops on), the normal,
 // and how often the recycled pair looks farther apart than it is while the pair penetrates (the
@@ -10,7 +10,7 @@
 //
 // Output: one CSV line per scene: scene,steps,touching,recycled,err_gt_1mm,err_gt_5mm,err_gt_1cm,
 // max_err_m,max_over_when_penetrating_m,normal_gt_5deg,max_normal_deg (counts are over recycled
-// manifolds, summed over steps; touching counts the touching polygon contacts visited).
+// manifolds, summed over steps; touching counts the touching contacts visited).
 
 #include "catalogue.h"
 #include "scene.h"
@@ -37,9 +37,9 @@ static float SmallestSeparation(const tbManifold* m)
 	return s;
 }
 
-static bool IsPolygonal(const tbShape* shape)
+static bool MayRecycle(const tbShape* shape)
 {
-	return shape->geometry.type == tb_polygonShape || shape->geometry.type == tb_segmentShape;
+	return shape->geometry.type != tb_chainSegmentShape;
 }
 
 static void Compare(tbWorld* world, const tbContact* contact, Stats* stats)
@@ -97,8 +97,8 @@ static void RunScene(const char* name, int steps)
 			const tbContact* contact = world->contacts + id;
 			if (contact->inUse == false || (contact->flags & tb_contactTouching) == 0 ||
 				(contact->flags & tb_contactSensor) != 0 ||
-				IsPolygonal(world->shapes + contact->shapeIdA) == false ||
-				IsPolygonal(world->shapes + contact->shapeIdB) == false)
+				MayRecycle(world->shapes + contact->shapeIdA) == false ||
+				MayRecycle(world->shapes + contact->shapeIdB) == false)
 			{
 				continue;
 			}
@@ -135,7 +135,8 @@ int main(int argc, char** argv)
 			scenes[sceneCount++] = argv[i];
 		}
 	}
-	static const char* defaults[] = {"pyramid", "large_pyramid", "many_pyramids", "tumbler", "smash", "card_house"};
+	static const char* defaults[] = {"pyramid", "large_pyramid", "many_pyramids", "tumbler", "smash", "card_house",
+									 "spinner", "confined", "ragdolls"};
 	if (sceneCount == 0)
 	{
 		sceneCount = (int)(sizeof(defaults) / sizeof(defaults[0]));

@@ -581,8 +581,13 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 ///   rotational springs: about 21 unit boxes at the settled stiffness, tests/test_stability.c);
 ///   Box2D v3's columns buckle the same way with its recycling off. The arms are off by at most
 ///   each body's turn since the narrow phase times the arm, which is bounded below;
-///   the normal, a face normal (only polygon and segment pairs are recycled,
-///   tbHasMaterialFeatures), is off by at most its face's turn, under the same bound.
+///   the normal, a face normal, is off by at most its face's turn, under the same bound; a round
+///   pair's one-point normal may instead be the line between the closest points of the cores (two
+///   circles, a circle beyond a polygon's corner), which turns with their relative motion δ by at
+///   most δ/d for cores d apart: 1.3° for two circles of 0.45 m at the default 0.02 m. Holding δ
+///   below d·sin 2° as well made a deep pile flip between kept and new normals, each change a
+///   small kick: 20,000 mixed bodies never fell asleep (docs/methods.md).
+/// Chain segments are never recycled: their one-sided rules depend on the neighbouring segments.
 /// When to recycle: a feature pair not in the manifold was at least margin0 (the speculative margin
 /// then) apart and has closed by at most the relative motion δ since (tbMovedLessThan); in this
 /// step it closes by at most margin − TB_SPECULATIVE_DISTANCE more. So while
@@ -609,9 +614,31 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 // allows about 11°; 5° keeps a kept arm within 0.09 of its length of the true one.
 #define TB_RECYCLE_COS_BODY_TURN 0.99619470f
 
+/// A chain segment's manifold depends on its neighbours (the one-sided rules of its joints), which
+/// the relative motion of the pair does not bound: chain contacts always get a new manifold.
+static bool tbMayRecycle(const tbShape* shape)
+{
+	return shape->geometry.type != tb_chainSegmentShape;
+}
+
+/// A capsule against a polygon or a segment is clipped as a two-vertex polygon with a radius, and
+/// its kept point was measured to look up to 4 cm farther apart than the narrow phase found the
+/// penetrating pair (tumble-bench-recycling, the spinner): such pairs always get a new manifold.
+static bool tbMayRecyclePair(const tbShape* a, const tbShape* b)
+{
+	if (tbMayRecycle(a) == false || tbMayRecycle(b) == false)
+	{
+		return false;
+	}
+	bool capsuleA = a->geometry.type == tb_capsuleShape, capsuleB = b->geometry.type == tb_capsuleShape;
+	bool flatA = a->geometry.type == tb_polygonShape || a->geometry.type == tb_segmentShape;
+	bool flatB = b->geometry.type == tb_polygonShape || b->geometry.type == tb_segmentShape;
+	return (capsuleA && flatB) == false && (capsuleB && flatA) == false;
+}
+
 /// recycleDistance is the world's (TB_RECYCLE_DISTANCE by default, tbWorld_SetContactRecycleDistance).
 static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin,
-							  float recycleDistance)
+											  float recycleDistance)
 {
 	const tbManifoldBase* base = &contact->base;
 	if ((contact->flags & tb_contactRecyclable) == 0 || bodyA->isFast || bodyB->isFast ||
@@ -648,24 +675,11 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 	return true;
 }
 
-/// Polygons and segments meet at vertices and faces that move with their bodies, and their normal
-/// is a face normal, so their manifolds can be carried along. Circles and capsules cannot: their
-/// contact point slides over the round surface as the body turns and their normal follows the line
-/// between centres, not either body. Carrying them pumped energy into a jam of deeply overlapping
-/// circles (the stability table's confined circles: the centre line turned away from the kept
-/// normal, so every kept impulse pushed a little off the line, and the jam never came to rest; with
-/// the manifold recomputed it does). Their closed forms are cheap anyway.
-static bool tbHasMaterialFeatures(const tbShape* shape)
-{
-	return shape->geometry.type == tb_polygonShape || shape->geometry.type == tb_segmentShape;
-}
-
 /// The narrow phase proper: a new manifold from the shapes, anchors, impulses carried over by
 /// feature id, and (for touching non-sensor contacts) the base for later recycling.
 static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, const tbShape* a, const tbShape* b,
 								  const tbBody* bodyA, const tbBody* bodyB, float margin)
 {
-	tbManifold old = contact->manifold;
 	tbNarrowPhaseMethod method = world->def.narrowPhase;
 	contact->flags &= ~(uint32_t)tb_contactRecyclable;
 	// Most contacts (fat boxes overlapping) are not touching. The tight boxes, current since the
@@ -675,6 +689,7 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 		contact->manifold.pointCount = 0;
 		return 0;
 	}
+	tbManifold old = contact->manifold; // for warm starting (tbMatchPoints)
 	tbPos points[2];
 	tbCollideInWorld(&contact->manifold, &a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin,
 					 points);
@@ -698,8 +713,7 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 	{
 		m->points[i].baseSeparation = m->points[i].separation;
 	}
-	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbHasMaterialFeatures(a) &&
-		tbHasMaterialFeatures(b))
+	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbMayRecyclePair(a, b))
 	{
 		tbStoreManifoldBase(contact, bodyA->transform, bodyB->transform, points, margin);
 	}
