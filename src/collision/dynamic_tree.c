@@ -85,7 +85,7 @@ static void tbFreeRebuild(tbDynamicTree* tree)
 }
 
 /// Exchange rebuild items i and j (their bins are the partition's business).
-static void tbSwapRebuildItems(tbDynamicTree* tree, int i, int j)
+static TB_FORCE_INLINE void tbSwapRebuildItems(tbDynamicTree* tree, int i, int j)
 {
 	int32_t index = tree->leafIndices[i];
 	tree->leafIndices[i] = tree->leafIndices[j];
