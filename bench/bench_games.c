@@ -552,10 +552,18 @@ int main(int argc, char** argv)
 		return RunSweep(engines, engineCount, &o);
 	}
 
-	bool workers = false;
+	bool workers = false, any = false;
 	for (int s = 0; s < engines[0]->sceneCount; ++s)
 	{
-		workers = workers || (engines[0]->scenes[s].usesWorkers && Selected(engines[0]->scenes[s].name, o.filter));
+		bool selected = Selected(engines[0]->scenes[s].name, o.filter);
+		any = any || selected;
+		workers = workers || (engines[0]->scenes[s].usesWorkers && selected);
+	}
+	if (any == false)
+	{
+		fprintf(stderr, "tumble-bench-games: no scene is named %s (see --list; a word ending in '*' matches a prefix)\n",
+				o.filter);
+		return 1;
 	}
 	TaskSystem* tasks = workers ? TaskSystem_Create(2) : NULL;
 	int status = RunScenes(engines, engineCount, &o, tasks);

@@ -210,10 +210,15 @@ Test(contact, round_pairs_recycle_under_the_same_bounds_and_disabled_recycling_r
 	// A circle on a face is recycled as a box is, within the relative motion allowed (the recycle
 	// distance, 0.02 m): 1 mm sideways keeps the manifold, and the kept normal is the one the narrow
 	// phase gives (the face's); 25 mm from the base is beyond the allowance.
+	// A sideways slide over a flat face leaves the separation as it was: the kept one must equal the
+	// fresh one to float rounding of positions near 1 m (1e-6 m), the normals to rounding of a unit
+	// vector (1e-6).
 	Pair circle = MakePair(0.5f, true, true);
 	cr_expect(MoveAndUpdate(&circle, 0.001f, 0.0f, 0.0f));
 	tbManifold fresh = FreshManifold(&circle);
+	cr_assert_eq(fresh.pointCount, 1);
 	cr_expect_float_eq(circle.contact->manifold.normal.y, fresh.normal.y, 1e-6f);
+	cr_expect_float_eq(circle.contact->manifold.points[0].separation, fresh.points[0].separation, 1e-6f);
 	cr_expect_not(MoveAndUpdate(&circle, 0.025f, 0.0f, 0.0f));
 	// Recycling off in the definition, then on again through the setter.
 	Pair off = MakePair(0.5f, false, false);

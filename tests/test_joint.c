@@ -283,17 +283,21 @@ static float SwingingBeamPinGap(bool jointTrees, float* angle)
 }
 
 // A revolute joint alone between the ground and one body (a flipper, a door) is a joint tree of one
-// joint, and its exact solve is the joint's own 2 × 2 pin solve made rigid (joint_tree.c): the pin
-// is held as the exact tree solve holds it, tighter than by the soft row (measured: 0.46 mm against
-// 0.58 mm, the soft row's spring giving under the swing's changing load), and the swing is the same
-// within 1e-3 rad.
+// joint, and its exact solve is the joint's own 2 × 2 pin solve made rigid (joint_tree.c). A rigid
+// row with bias β·C leaves open what the load moves the pin in a sub-step before the row corrects
+// it, about a·h/β: at the bottom of the swing the pin carries the weight and the centripetal load,
+// a = g + ω²·(L/2) = 10 + 15 m/s² (ω² = 1.5·g/(L/2) from the energy of a 2 m beam released level,
+// I = m·L²/3), with h = 1/240 s and β = ω0/(2ζ + h·ω0) = 67.7 /s (60 Hz, ζ = 2): 1.5 mm. The soft
+// row gives more, its spring yielding too (measured 0.46 mm rigid against 0.58 mm soft: the bound
+// asks for a tenth less). Both swing alike: pin gaps a fraction of a millimetre on a 2 m beam turn
+// it by about 1e-4 rad, and the angles must agree within ten times that.
 Test(joint, revolute_alone_to_ground_is_solved_rigid)
 {
 	float rigidAngle, softAngle;
 	float rigid = SwingingBeamPinGap(true, &rigidAngle);
 	float soft = SwingingBeamPinGap(false, &softAngle);
 	cr_expect(rigid < 0.9f * soft, "pin gap %.3g m rigid, %.3g m soft", (double)rigid, (double)soft);
-	cr_expect(rigid < 1e-3f, "pin gap %.3g m", (double)rigid);
+	cr_expect(rigid < 1.5e-3f, "pin gap %.3g m, over a·h/β = 1.5 mm", (double)rigid);
 	cr_expect(fabsf(rigidAngle - softAngle) < 1e-3f, "angle %.5f rigid, %.5f soft", (double)rigidAngle,
 			  (double)softAngle);
 }

@@ -18,18 +18,6 @@ static b2BodyId AddBody(b2WorldId world, b2BodyType type, b2Pos position, b2Vec2
 	return b2CreateBody(world, &bodyDef);
 }
 
-static b2ShapeId AddBox(b2BodyId body, float halfWidth, float halfHeight, bool isSensor, bool sensorEvents,
-						const char* name)
-{
-	b2ShapeDef shapeDef = b2DefaultShapeDef();
-	shapeDef.isSensor = isSensor;
-	shapeDef.enableSensorEvents = sensorEvents;
-	b2Polygon box = b2MakeBox(halfWidth, halfHeight);
-	b2ShapeId shape = b2CreatePolygonShape(body, &shapeDef, &box);
-	NameShape(shape, name);
-	return shape;
-}
-
 static b2ShapeId AddBall(b2BodyId body, float radius, bool sensorEvents, const char* name)
 {
 	b2ShapeDef shapeDef = b2DefaultShapeDef();
@@ -42,18 +30,7 @@ static b2ShapeId AddBall(b2BodyId body, float radius, bool sensorEvents, const c
 
 static void PrintEvents(int step, b2WorldId world, b2ShapeId gate)
 {
-	b2SensorEvents events = b2World_GetSensorEvents(world);
-	for (int i = 0; i < events.beginCount; ++i)
-	{
-		printf("step %d: %s sees %s begin\n", step, ShapeName(events.beginEvents[i].sensorShapeId),
-			   ShapeName(events.beginEvents[i].visitorShapeId));
-	}
-	for (int i = 0; i < events.endCount; ++i)
-	{
-		printf("step %d: %s sees %s end\n", step, ShapeName(events.endEvents[i].sensorShapeId),
-			   ShapeName(events.endEvents[i].visitorShapeId));
-	}
-	if (events.beginCount + events.endCount > 0)
+	if (PrintSensorEvents(step, world) > 0)
 	{
 		b2ShapeId visitors[8];
 		printf("  gate lists %d\n", b2Shape_GetSensorData(gate, visitors, 8));

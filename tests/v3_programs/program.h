@@ -56,6 +56,36 @@ static inline void PrintPair(int step, const char* what, b2ShapeId a, b2ShapeId 
 	printf("step %d: %s %s %s\n", step, what, first, second);
 }
 
+/// A box shape, a sensor or not, with sensor events on or off, named for the printed lines.
+static inline b2ShapeId AddBox(b2BodyId body, float halfWidth, float halfHeight, bool isSensor, bool sensorEvents,
+							   const char* name)
+{
+	b2ShapeDef shapeDef = b2DefaultShapeDef();
+	shapeDef.isSensor = isSensor;
+	shapeDef.enableSensorEvents = sensorEvents;
+	b2Polygon box = b2MakeBox(halfWidth, halfHeight);
+	b2ShapeId shape = b2CreatePolygonShape(body, &shapeDef, &box);
+	NameShape(shape, name);
+	return shape;
+}
+
+/// Print the step's sensor begin and end events; returns how many there were.
+static inline int PrintSensorEvents(int step, b2WorldId world)
+{
+	b2SensorEvents events = b2World_GetSensorEvents(world);
+	for (int i = 0; i < events.beginCount; ++i)
+	{
+		printf("step %d: %s sees %s begin\n", step, ShapeName(events.beginEvents[i].sensorShapeId),
+			   ShapeName(events.beginEvents[i].visitorShapeId));
+	}
+	for (int i = 0; i < events.endCount; ++i)
+	{
+		printf("step %d: %s sees %s end\n", step, ShapeName(events.endEvents[i].sensorShapeId),
+			   ShapeName(events.endEvents[i].visitorShapeId));
+	}
+	return events.beginCount + events.endCount;
+}
+
 /// FNV-1a over the bytes of each body's position, rotation and velocities.
 static inline uint64_t HashBodies(const b2BodyId* bodies, int count)
 {
