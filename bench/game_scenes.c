@@ -231,6 +231,9 @@ static GameStats ReadStats(Game* g)
 	else
 	{
 		s.awake += P(World_GetAwakeBodyCount)(g->world);
+		P(Counters) counters = P(World_GetCounters)(g->world);
+		s.contacts = counters.awakeContactCount;
+		s.recycled = counters.recycledContactCount;
 	}
 	s.joints += g->jointCount;
 	s.events = g->events;

@@ -32,6 +32,8 @@ typedef struct GameStats
 	int joints;		///< joints alive
 	int64_t events; ///< events the scene read during the timed steps (begin-touch or hit events)
 	double x, y;	///< the tracked body (ball, car, character, projectile; NaN when none)
+	int contacts;	///< contacts the last step's collide stage updated (Counters.awakeContactCount)
+	int recycled;	///< of those, manifolds recycled instead of recomputed (Counters.recycledContactCount)
 } GameStats;
 
 /// One scene. create builds it (settling steps, where the scene has them, run here, untimed);
