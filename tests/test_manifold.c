@@ -239,6 +239,27 @@ Test(manifold, capsules_parallel_two_points)
 	cr_expect_float_eq(m.points[1].separation, -0.05f, TB_EPS);
 }
 
+Test(manifold, capsule_end_beside_a_corner_is_corner_to_corner)
+{
+	// A fat capsule (radius 0.25, core 0.5 long, tilted 0.3 rad) whose upper end c = (−0.58, 0.365)
+	// lies 0.015 m above the top side plane of a 0.7 m box's left face, 0.23 m out from it. The
+	// nearest features are c and the box's corner (−0.35, 0.35): the cap penetrates the corner by
+	// 0.25 − |c − corner| = 0.25 − sqrt(0.23² + 0.015²) = 0.0195 m, along (c − corner)/|c − corner|.
+	// The corner distance exceeds the face separation 0.23 by only 0.49 mm; clipping against
+	// the face instead measured the core where it crosses the side plane, 0.05 m further along the
+	// tilted axis, and reported the pair 0.026 m apart (no point at the default keep distance).
+	tbPolygon box = tbMakeBox(0.35f, 0.35f);
+	float c = cosf(0.3f), s = sinf(0.3f);
+	tbVec2 end = {-0.58f, 0.365f};
+	tbCapsule capsule = {{end.x - 0.5f * c, end.y - 0.5f * s}, end, 0.25f};
+	tbManifold m = WorldCollidePolygonAndCapsule(&box, tbMakeTransform(0, 0, 0), &capsule, tbMakeTransform(0, 0, 0));
+	cr_assert_eq(m.pointCount, 1);
+	float d = sqrtf(0.23f * 0.23f + 0.015f * 0.015f);
+	cr_expect_float_eq(m.points[0].separation, d - 0.25f, TB_EPS, "separation %g, expected %g",
+					   (double)m.points[0].separation, (double)(d - 0.25f));
+	tbExpectVec(m.normal, -0.23f / d, 0.015f / d, TB_EPS);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Polygons
 

@@ -94,9 +94,7 @@
 // few milliradians, enough to move the separations by more than TB_REFERENCE_TOLERANCE), each
 // point keeps its id and its warm start. Ids that carried the clip's roles lost the warm start of
 // every point whose faces swapped, in every step, and a large pyramid spread at its flanks with
-// them (docs/methods.md).
-#define TB_FEATURE_EDGE 0x80
-#define TB_FEATURE_VERTEX 0x20
+// them (docs/methods.md). The flags are manifold_internal.h's, shared with manifold_gjk.c.
 
 static const tbManifold tb_emptyManifold = {0};
 
@@ -446,20 +444,28 @@ static int tbClipSegment(tbClipVertex out[2], const tbClipVertex in[2], tbVec2 p
 	return count;
 }
 
-// True when the closest points of the two edges are corners of both (fractions 0 or 1) and
-// further apart than the face separation says. Parallel edges also report corner fractions
-// (the closest pair is not unique) but at exactly the face separation: those are face contacts.
-static bool tbIsVertexVertex(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
-							 float coreSeparation)
+// True when the closest points of the two edges are corners of both (fractions 0 or 1) and the
+// incident corner lies beside the reference face, more than TB_GAP_TOLERANCE across its side
+// plane: then the pair is a corner facing a corner, and clipping would cut off the very corner
+// that is nearest. Parallel edges also report corner fractions (the closest pair is not unique),
+// but with the two points straight across the face: those are face contacts.
+// The test is on the sideways offset w, not on the corner distance sqrt(h² + w²) against the
+// face separation h: that difference, about w²/(2h), lets w grow with h, and rounded shapes touch
+// with h near the sum of their radii. A capsule of radius 0.25 m tilted 17° with its end 14 mm
+// beside a box's corner passed as a face contact; the clip then measured the core at the side
+// plane, 4.6 cm farther along the tilted axis, and said +0.026 m where the end's cap
+// penetrated the corner by 0.019 m.
+static bool tbIsVertexVertex(const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge)
 {
 	int refNext = refEdge + 1 < ref->count ? refEdge + 1 : 0;
 	int incNext = incEdge + 1 < inc->count ? incEdge + 1 : 0;
-	tbSegmentDistanceResult r = tbSegmentDistance(ref->vertices[refEdge], ref->vertices[refNext],
-												  inc->vertices[incEdge], inc->vertices[incNext]);
+	tbVec2 v11 = ref->vertices[refEdge], v12 = ref->vertices[refNext];
+	tbSegmentDistanceResult r = tbSegmentDistance(v11, v12, inc->vertices[incEdge], inc->vertices[incNext]);
 	bool endpoint1 = r.fraction1 <= 0.0f || r.fraction1 >= 1.0f;
 	bool endpoint2 = r.fraction2 <= 0.0f || r.fraction2 >= 1.0f;
-	float limit = coreSeparation + TB_GAP_TOLERANCE;
-	return endpoint1 && endpoint2 && r.distanceSquared > limit * limit;
+	// The face's unit tangent is the normal turned a quarter: n = rightPerp(t), t = leftPerp(n).
+	float sideways = tbDot(tbSub(r.closest2, r.closest1), tbLeftPerp(ref->normals[refEdge]));
+	return endpoint1 && endpoint2 && tbAbsFloat(sideways) > TB_GAP_TOLERANCE;
 }
 
 // Two clipped points closer than TB_MERGE_DISTANCE are one point; returns the number left (1 or
@@ -494,7 +500,7 @@ static int tbMergeCoincidentPoints(tbManifoldPoint points[2])
 // tolerance or a degenerate edge leads here: the reference face may be A's kept within
 // TB_REFERENCE_TOLERANCE of B's larger separation, with a corner of A against a face of B; and
 // the corner-to-corner test (tbIsVertexVertex) is skipped when the face separation is below
-// TB_GAP_TOLERANCE and declines when the corner gap is within TB_GAP_TOLERANCE of it.
+// TB_GAP_TOLERANCE and declines when the incident corner is within TB_GAP_TOLERANCE of the side plane.
 static bool tbClipIncidentEdge(tbManifold* m, const tbPolygon* ref, const tbPolygon* inc, int refEdge, int incEdge,
 							   float keep)
 {
@@ -551,7 +557,7 @@ static bool tbReferenceFaceManifold(tbManifold* m, const tbPolygon* ref, const t
 									float coreSeparation, float keep)
 {
 	int incEdge = tbFindIncidentEdge(inc, ref->normals[refEdge]);
-	if (coreSeparation > TB_GAP_TOLERANCE && tbIsVertexVertex(ref, inc, refEdge, incEdge, coreSeparation))
+	if (coreSeparation > TB_GAP_TOLERANCE && tbIsVertexVertex(ref, inc, refEdge, incEdge))
 	{
 		return false;
 	}

@@ -11,9 +11,11 @@
 //    is larger is the reference, preferring A unless B's is larger by TB_GJK_REFERENCE_TOLERANCE:
 //    the choice must not flicker between two nearly parallel faces (box resting on box), or the
 //    feature ids and the warm start would be lost.
-// 3. Corner facing corner across a gap: the core separation s + rA + rB exceeds both face
-//    separations by more than TB_GJK_CORNER_TOLERANCE; the manifold is then the single pair of
-//    GJK witness points with GJK's normal (a face normal would misstate a rounded gap).
+// 3. Corner facing corner across a gap: the cores are apart (s + rA + rB above
+//    TB_GJK_CORNER_TOLERANCE) and the gap between them runs beside the reference face, its offset
+//    along the face above TB_GJK_CORNER_TOLERANCE (manifold.c's tbIsVertexVertex, the same rule);
+//    the manifold is then the single pair of GJK witness points with GJK's normal (a face normal
+//    would misstate a rounded gap).
 // 4. Otherwise the incident edge is the edge of the other polygon most anti-parallel to the
 //    reference normal nR; its two ends are clipped to the slab between the side planes of the
 //    reference face (Sutherland–Hodgman in one dimension: along the face tangent t the face is
@@ -27,8 +29,8 @@
 // incident vertex on that side) and likewise at the second end, whether or not it was clipped:
 // the same corners and edges touching keep the same ids. Bytes are (vertex of A, vertex of B),
 // the same pair whichever face is the reference, so a point keeps its id (and its warm start)
-// when two near-parallel faces swap roles; corner–corner points carry TB_GJK_FEATURE_CORNER on
-// both bytes, so they never share an id with a clipped point.
+// when two near-parallel faces swap roles; corner–corner points carry TB_FEATURE_VERTEX on
+// both bytes (manifold_internal.h, as manifold.c's), so they never share an id with a clipped point.
 // Everything is computed in A's frame, where the result stays (Box2D v3.2's local manifold);
 // callers move it to the world (precision far from the origin). anchorA and anchorB are left
 // zero for the world to fill.
@@ -44,8 +46,9 @@
 // face wins only when its separation beats A's by more than this.
 #define TB_GJK_REFERENCE_TOLERANCE (0.1f * TB_LINEAR_SLOP)
 
-// Corner–corner threshold, 0.1 × linear slop = 0.0005 m: a GJK gap larger than the best face
-// separation by more than this is a corner facing a corner, not a face contact.
+// Corner–corner threshold, 0.1 × linear slop = 0.0005 m: a GJK gap between cores that far
+// apart and offset that far along the reference face is a corner facing a corner, not a face
+// contact.
 #define TB_GJK_CORNER_TOLERANCE (0.1f * TB_LINEAR_SLOP)
 
 // Clip slack, 0.1 × linear slop = 0.0005 m: an incident corner this close outside a side plane
@@ -54,8 +57,6 @@
 // paths give the same points and can be compared and swapped point for point.
 #define TB_GJK_CLIP_SLACK (0.1f * TB_LINEAR_SLOP)
 
-// Feature flag of corner–corner points (polygon indices are below 8, so bits 5 to 7 are free).
-#define TB_GJK_FEATURE_CORNER 0x80
 
 // Face of polygon whose normal is most aligned with direction.
 static int tbMostAlignedFace(const tbPolygon* polygon, tbVec2 direction)
@@ -189,7 +190,7 @@ static tbManifold tbCornerManifold(const tbSeparationOutput* separation, const t
 	m.normal = separation->normal;
 	m.points[0].point = tbLerp(separation->pointA, separation->pointB, 0.5f);
 	m.points[0].separation = separation->separation;
-	m.points[0].id = TB_MAKE_FEATURE_ID(cornerA | TB_GJK_FEATURE_CORNER, cornerB | TB_GJK_FEATURE_CORNER);
+	m.points[0].id = TB_MAKE_FEATURE_ID(cornerA | TB_FEATURE_VERTEX, cornerB | TB_FEATURE_VERTEX);
 	m.pointCount = 1;
 	return m;
 }
@@ -225,13 +226,17 @@ tbManifold tbPolygonsGJKFrameA(const tbPolygon* polygonA, const tbPolygon* polyg
 	float separationB = tbFaceSeparation(&localB, faceB, polygonA);
 
 	float coreSeparation = separation.separation + polygonA->radius + polygonB->radius;
-	if (coreSeparation > tbMaxFloat(separationA, separationB) + TB_GJK_CORNER_TOLERANCE)
+	bool faceOfB = separationB > separationA + TB_GJK_REFERENCE_TOLERANCE;
+	// The core gap's offset along the reference face: the gap runs along n, so it is d·|n × nF|.
+	tbVec2 faceNormal = faceOfB ? localB.normals[faceB] : polygonA->normals[faceA];
+	float sideways = coreSeparation * tbAbsFloat(tbCross(n, faceNormal));
+	if (coreSeparation > TB_GJK_CORNER_TOLERANCE && sideways > TB_GJK_CORNER_TOLERANCE)
 	{
 		return tbCornerManifold(&separation, polygonA, &localB, n);
 	}
 
 	tbManifold m;
-	if (separationB > separationA + TB_GJK_REFERENCE_TOLERANCE)
+	if (faceOfB)
 	{
 		m = tbClipToReferenceFace(&localB, faceB, polygonA, true, keep);
 		m.normal = tbNeg(m.normal);

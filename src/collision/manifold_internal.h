@@ -6,6 +6,21 @@
 #include "tumble/collision.h"
 #include "tumble/math_functions.h"
 
+/// Feature bytes of manifold ids (TB_MAKE_FEATURE_ID(featureOnA, featureOnB)), both builders: a
+/// plain index is a vertex touching a face, TB_FEATURE_EDGE | i the edge from vertex i to i + 1,
+/// and TB_FEATURE_VERTEX | i on both bytes a corner facing a corner (the closest points of the
+/// cores, one point for the pair). Polygons have at most TB_MAX_POLYGON_VERTICES (8) vertices, so
+/// the indices stay below the flags.
+#define TB_FEATURE_EDGE 0x80
+#define TB_FEATURE_VERTEX 0x20
+#define TB_FEATURE_FLAGS 0xE0
+
+/// Whether a manifold point is a corner facing a corner (both feature bytes TB_FEATURE_VERTEX).
+static inline bool tbIsCornerToCornerId(uint16_t id)
+{
+	return ((id >> 8) & TB_FEATURE_FLAGS) == TB_FEATURE_VERTEX && (id & TB_FEATURE_FLAGS) == TB_FEATURE_VERTEX;
+}
+
 /// The manifold m, computed in A's frame, moved to the world by A's transform.
 static inline tbManifold tbManifoldToWorld(tbManifold m, tbTransform xfA)
 {

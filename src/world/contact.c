@@ -621,19 +621,36 @@ static bool tbMayRecycle(const tbShape* shape)
 	return shape->geometry.type != tb_chainSegmentShape;
 }
 
-/// A capsule against a polygon or a segment is clipped as a two-vertex polygon with a radius, and
-/// its kept point was measured to look up to 4 cm farther apart than the narrow phase found the
-/// penetrating pair (tumble-bench-recycling, the spinner): such pairs always get a new manifold.
-static bool tbMayRecyclePair(const tbShape* a, const tbShape* b)
+/// The radius of a shape's rounded edges and corners (0 for sharp polygons and segments).
+static float tbRoundingRadius(const tbShape* shape)
+{
+	switch (shape->geometry.type)
+	{
+		case tb_capsuleShape:
+			return shape->geometry.capsule.radius;
+		case tb_polygonShape:
+			return shape->geometry.polygon.radius;
+		default:
+			return 0.0f;
+	}
+}
+
+/// Whether a new manifold may be recycled in later steps. Not a chain segment's (tbMayRecycle);
+/// and not the one point a rounded corner facing a corner gets (a capsule's end cap beside a box's
+/// corner, manifold_internal.h's corner ids): that point stands for the pair, but the face beside
+/// it may lie within the margin too (a capsule levelling onto the box's face touches it along its
+/// length, the narrow phase then clips two points), so the recycling's premise, every feature
+/// within the margin in the manifold, does not hold. Recycled, such a point was measured to lag the
+/// narrow phase by up to 1.1 cm while the capsule settled onto the face (tumble-bench-recycling,
+/// the spinner). Sharp polygons meet corner to corner only apart, never touching.
+static bool tbMayRecycleManifold(const tbShape* a, const tbShape* b, const tbManifold* m)
 {
 	if (tbMayRecycle(a) == false || tbMayRecycle(b) == false)
 	{
 		return false;
 	}
-	bool capsuleA = a->geometry.type == tb_capsuleShape, capsuleB = b->geometry.type == tb_capsuleShape;
-	bool flatA = a->geometry.type == tb_polygonShape || a->geometry.type == tb_segmentShape;
-	bool flatB = b->geometry.type == tb_polygonShape || b->geometry.type == tb_segmentShape;
-	return (capsuleA && flatB) == false && (capsuleB && flatA) == false;
+	bool rounded = tbRoundingRadius(a) > 0.0f || tbRoundingRadius(b) > 0.0f;
+	return (rounded && m->pointCount == 1 && tbIsCornerToCornerId(m->points[0].id)) == false;
 }
 
 /// recycleDistance is the world's (TB_RECYCLE_DISTANCE by default, tbWorld_SetContactRecycleDistance).
@@ -713,7 +730,7 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 	{
 		m->points[i].baseSeparation = m->points[i].separation;
 	}
-	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbMayRecyclePair(a, b))
+	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbMayRecycleManifold(a, b, m))
 	{
 		tbStoreManifoldBase(contact, bodyA->transform, bodyB->transform, points, margin);
 	}

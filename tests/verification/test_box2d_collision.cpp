@@ -39,12 +39,13 @@
 //      between the rounded corners; Box2D 2.4 clips as if the skin were square (face normal,
 //      up to two points). Converted with Tumble's rule (manifold.c), in Box2D's quantities:
 //      when s_face > 0.1·slop and b2Distance of the cores (useRadii = false, empty cache) ends
-//      with one vertex of each (cache.count == 1) at d > s_face + 0.1·slop, or when the
+//      with one vertex of each (cache.count == 1) more than 0.1·slop apart along the face, or when the
 //      incident edge lies wholly outside 0 ≤ u ≤ L (Tumble's clip then falls back to the same
 //      closest points), the reference is one point from the closest core points pA, pB:
 //          n = (pB − pA)/d,  separation = d − rA − rB,  point = ½((pA + rA·n) + (pB − rB·n)),
 //      kept while separation ≤ 0. (v3 tests s_face > 0.1·slop too and finds vertex pairs by
-//      exact segment fractions; Tumble's extra 0.1·slop on d keeps parallel edges as faces.)
+//      exact segment fractions; Tumble's 0.1·slop on the sideways offset keeps parallel edges as
+//      faces.)
 //   With radius 0 Box2D 2.4's side planes are the core ones, and where rule 2 applies it
 //   reports no point (a core gap d > 0 fails its keep rule; an incident edge outside the span
 //   leaves its clip empty), so the conversion changes nothing on cores: the cores check shows
@@ -605,16 +606,17 @@ bool MissesCoreSpan(const ReferenceFace& face)
 // of the clipped face. Tumble's rule (manifold.c), in Box2D's quantities:
 // (a) tbReferenceFaceManifold / tbIsVertexVertex: the cores are apart along the face by more
 //     than the gap tolerance, s_face > 0.1·linearSlop, and their closest points are a vertex of
-//     each (b2Distance ends with a one-vertex simplex, cache.count == 1) further apart than
-//     s_face + 0.1·linearSlop. Box2D v3 has the same s_face > 0.1·linearSlop test and
-//     vertex–vertex case (segment fractions of the reference and incident edges exactly 0 or
-//     1); Tumble's extra margin on the distance keeps parallel edges (whose closest pair is
-//     also a vertex pair, at exactly s_face) as clipped faces.
+//     each (b2Distance ends with a one-vertex simplex, cache.count == 1) lying more than
+//     0.1·linearSlop apart along the face (|t·(pB − pA)|: the incident corner is beside the face
+//     span). Box2D v3 has the same s_face > 0.1·linearSlop test and vertex–vertex case (segment
+//     fractions of the reference and incident edges exactly 0 or 1); Tumble's margin on the
+//     sideways offset keeps parallel edges (whose closest pair is also a vertex pair, straight
+//     across the face) as clipped faces.
 // (b) tbClipIncidentEdge: when the incident edge lies wholly outside the core face span, the
 //     clip leaves fewer than two points and Tumble falls back to the same closest-points
 //     manifold (tbEdgeDistanceManifold), whatever s_face. With s_face > 0.1·linearSlop that is
-//     a vertex pair at s_face < d ≤ s_face + 0.1·linearSlop whose incident edge runs away from
-//     the face, which v3 treats as vertex–vertex too; below the gap tolerance v3 would clip.
+//     a vertex pair at most 0.1·linearSlop beside the face span whose incident edge runs away
+//     from the face, which v3 treats as vertex–vertex too; below the gap tolerance v3 would clip.
 //     Tumble's clip slack (an end up to 0.1·linearSlop outside a side plane is kept) does not
 //     change (b): the far end's crossing then lies outside the edge and is not added, so one
 //     point is left (unless the near end is on the side plane to the last bit: then Tumble
@@ -624,9 +626,9 @@ bool MissesCoreSpan(const ReferenceFace& face)
 // where they do not shows as a disagreement: none in this test's cases).
 bool TakesClosestPoints(const ReferenceFace& face, const CoreClosest& closest)
 {
-	float d = closest.output.distance;
-	bool vertexPair = face.coreSeparation > kGapTolerance && closest.vertexVertex &&
-					  d > face.coreSeparation + kGapTolerance;
+	b2Vec2 across = b2Mul(closest.frame.q, closest.output.pointB - closest.output.pointA);
+	float sideways = std::fabs(b2Dot(across, face.tangent));
+	bool vertexPair = face.coreSeparation > kGapTolerance && closest.vertexVertex && sideways > kGapTolerance;
 	return vertexPair || MissesCoreSpan(face);
 }
 
