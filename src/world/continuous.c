@@ -52,6 +52,7 @@ typedef struct tbContinuousContext
 	int fastBodyId;
 	tbPos base; ///< the frame's origin of every sweep and result (tbSweepBase)
 	tbSweep sweep;
+	tbTransform sweepStart, sweepEnd; ///< the sweep at 0 and 1 (tbGetSweepTransform), made once
 	const tbShape* fastShape;
 	tbShapeProxy fastProxy;
 	bool fastProxyMade; ///< fastProxy holds fastShape's proxy (tbFastProxy)
@@ -182,7 +183,7 @@ static tbTOIOutput tbComputeCoreTOI(tbContinuousContext* c, const tbShape* other
 	tbDistanceInput start;
 	start.proxyA = input.proxyA;
 	start.proxyB = input.proxyB;
-	start.transform = tbInvMulTransforms(tbGetSweepTransform(otherSweep, 0.0f), tbGetSweepTransform(&c->sweep, 0.0f));
+	start.transform = tbInvMulTransforms(tbGetSweepTransform(otherSweep, 0.0f), c->sweepStart);
 	start.useRadii = true;
 	float gap = tbShapeDistance(&start, NULL, NULL, 0).distance;
 	tbTOIOutput output = {tb_toiStateOverlapped, 0.0f, 0, {0.0f, 0.0f}, {0.0f, 0.0f}};
@@ -243,8 +244,8 @@ static bool tbSkipChainSweep(const tbContinuousContext* c, const tbShape* other,
 	tbVec2 e = tbNormalize(tbSub(segment->point2, segment->point1));
 	tbVec2 centroid = tbShapeCentroid(&c->fastShape->geometry);
 	tbTransform xfOther = tbToRelativeTransform(otherBody->transform, c->base);
-	tbVec2 c1 = tbInvTransformPoint(xfOther, tbTransformPoint(tbGetSweepTransform(&c->sweep, 0.0f), centroid));
-	tbVec2 c2 = tbInvTransformPoint(xfOther, tbTransformPoint(tbGetSweepTransform(&c->sweep, 1.0f), centroid));
+	tbVec2 c1 = tbInvTransformPoint(xfOther, tbTransformPoint(c->sweepStart, centroid));
+	tbVec2 c2 = tbInvTransformPoint(xfOther, tbTransformPoint(c->sweepEnd, centroid));
 	float separation1 = tbCross(tbSub(c1, segment->point1), e); // > 0 in front (right of the direction)
 	float separation2 = tbCross(tbSub(c2, segment->point1), e);
 	float core = 0.5f * c->fastBody->minExtent;
@@ -319,11 +320,9 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 	return true;
 }
 
-/// The world box of the shape over the sweep's two ends (the sweep measured from base).
-static tbAABB tbSweptShapeBox(const tbShape* shape, const tbSweep* sweep, tbPos base)
+/// The world box of the shape over the sweep's two ends xf1 and xf2 (measured from base).
+static tbAABB tbSweptShapeBox(const tbShape* shape, tbTransform xf1, tbTransform xf2, tbPos base)
 {
-	tbTransform xf1 = tbGetSweepTransform(sweep, 0.0f);
-	tbTransform xf2 = tbGetSweepTransform(sweep, 1.0f);
 	tbWorldTransform start = {tbOffsetPos(base, xf1.p), xf1.q};
 	tbWorldTransform end = {tbOffsetPos(base, xf2.p), xf2.q};
 	return tbAABB_Union(tbComputeShapeAABB(&shape->geometry, start), tbComputeShapeAABB(&shape->geometry, end));
@@ -357,6 +356,9 @@ static int tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters, 
 	c.fastBodyId = bodyId;
 	c.base = tbSweepBase(body);
 	c.sweep = tbMakeBodySweep(body, c.base);
+	// Each shape's box and each chain candidate ask for the sweep's ends: computed once here.
+	c.sweepStart = tbGetSweepTransform(&c.sweep, 0.0f);
+	c.sweepEnd = tbGetSweepTransform(&c.sweep, 1.0f);
 	c.fraction = 1.0f;
 	c.coreHit = false;
 	// Rotation can carry points outside both end boxes by at most the arc's sagitta,
@@ -375,7 +377,7 @@ static int tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters, 
 		}
 		c.fastShape = shape;
 		c.fastProxyMade = false; // made for the first candidate (most fast bodies meet none)
-		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, &c.sweep, c.base), pad + TB_LINEAR_SLOP);
+		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, c.sweepStart, c.sweepEnd, c.base), pad + TB_LINEAR_SLOP);
 		if (body->isBullet)
 		{
 			tbBroadPhase_Query(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
