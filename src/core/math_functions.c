@@ -19,8 +19,14 @@ float tbAtan2(float y, float x)
 		return 0.0f; // atan2(0, 0): 0 as the libm functions give for +0
 	}
 	float t = small / big;
-	float t2 = t * t;
-	float r = t * (0.99997726f + t2 * (-0.33262347f + t2 * (0.19354346f + t2 * (-0.11643287f + t2 * (0.05265332f + t2 * -0.01172120f)))));
+	// The polynomial in u = t² evaluated in Estrin's scheme, (a1 + a3·u) + u²·(a5 + a7·u) + u⁴·(a9 + a11·u):
+	// three independent pairs and three levels instead of Horner's chain of six multiply-adds, whose
+	// latency a joint's angle waits on in every solve.
+	float u = t * t, u2 = u * u, u4 = u2 * u2;
+	float p01 = 0.99997726f + -0.33262347f * u;
+	float p23 = 0.19354346f + -0.11643287f * u;
+	float p45 = 0.05265332f + -0.01172120f * u;
+	float r = t * (p01 + u2 * p23 + u4 * p45);
 	if (ay > ax)
 	{
 		r = 0.5f * TB_PI - r;

@@ -321,17 +321,19 @@ static bool tbShouldCreateContact(const tbWorld* world, int shapeIdA, int shapeI
 	{
 		return false;
 	}
-	if ((bodyA->jointCount | bodyB->jointCount) != 0 && tbJointBlocksCollision(world, a->bodyId, b->bodyId))
-	{
-		return false; // a joint between them forbids it (collideConnected false)
-	}
 	if (tbShouldShapesCollide(a->filter, b->filter) == false)
 	{
 		return false;
 	}
+	// Most pairs the broad phase reports have their contact already (a moved proxy finds all it
+	// overlaps): the pair set answers before the walk of a body's joints does.
 	if (tbHashSet_Contains(&world->pairSet, tbShapePairKey(shapeIdA, shapeIdB)))
 	{
 		return false;
+	}
+	if ((bodyA->jointCount | bodyB->jointCount) != 0 && tbJointBlocksCollision(world, a->bodyId, b->bodyId))
+	{
+		return false; // a joint between them forbids it (collideConnected false)
 	}
 	if ((a->enableCustomFiltering || b->enableCustomFiltering) && world->customFilterFcn != NULL)
 	{
