@@ -94,14 +94,14 @@ Test(determinism, same_scene_twice_gives_same_bits)
 /// geometry. This is the regime where the spatial hash (same sizes) or sort-and-sweep (spread
 /// sizes) beats the tree (tumble-bench-broadphase). With spreadSizes every fifth circle has radius
 /// 3 and the rows are 8 m apart.
-static uint64_t RunDrift(tbBroadPhaseMethod method, bool spreadSizes, tbBroadPhaseMethod* chosen)
+static uint64_t RunDriftOf(int count, tbBroadPhaseMethod method, bool spreadSizes, tbBroadPhaseMethod* chosen)
 {
 	tbWorldDef def = tbDefaultWorldDef();
 	def.gravity = tbMakeVec2(0.0f, 0.0f);
 	def.broadPhase = method;
 	tbWorldId world = tbCreateWorld(&def);
 	tbBodyId bodies[1000];
-	for (int i = 0; i < 1000; ++i)
+	for (int i = 0; i < count; ++i)
 	{
 		float direction = (i / 32) % 2 == 0 ? 1.0f : -1.0f;
 		tbBodyDef bd = tbDefaultBodyDef();
@@ -120,7 +120,7 @@ static uint64_t RunDrift(tbBroadPhaseMethod method, bool spreadSizes, tbBroadPha
 	}
 	*chosen = tbWorld_GetDef(world).broadPhase;
 	uint64_t hash = 1469598103934665603ull;
-	for (int i = 0; i < 1000; ++i)
+	for (int i = 0; i < count; ++i)
 	{
 		tbTransform xf = tbBody_GetTransform(bodies[i]);
 		const unsigned char* bytes = (const unsigned char*)&xf;
@@ -131,6 +131,11 @@ static uint64_t RunDrift(tbBroadPhaseMethod method, bool spreadSizes, tbBroadPha
 	}
 	tbDestroyWorld(world);
 	return hash;
+}
+
+static uint64_t RunDrift(tbBroadPhaseMethod method, bool spreadSizes, tbBroadPhaseMethod* chosen)
+{
+	return RunDriftOf(1000, method, spreadSizes, chosen);
 }
 
 // 1,000 moving circles of one size: auto switches from the tree to the spatial hash; with one in
@@ -148,6 +153,18 @@ Test(determinism, auto_broad_phase_picks_hash_or_sweep_for_moving_scenes)
 		cr_assert_eq(treeChoice, tb_broadPhaseTree);
 		cr_assert_eq(autoHash, treeHash, "switching broad phase changed the trajectory");
 	}
+}
+
+// A small world, 64 moving circles of one size (a game's room, a world per match): auto switches from
+// the tree to sort-and-sweep, which costs least when few proxies all move (world.c), and the
+// trajectory is the tree's, bit for bit.
+Test(determinism, auto_broad_phase_picks_sweep_for_a_small_moving_world)
+{
+	tbBroadPhaseMethod autoChoice, treeChoice;
+	uint64_t autoHash = RunDriftOf(64, tb_broadPhaseAuto, false, &autoChoice);
+	uint64_t treeHash = RunDriftOf(64, tb_broadPhaseTree, false, &treeChoice);
+	cr_assert_eq(autoChoice, tb_broadPhaseSortAndSweep, "auto chose %d", (int)autoChoice);
+	cr_assert_eq(autoHash, treeHash, "switching broad phase changed the trajectory");
 }
 
 /// A scene stepped on a reference task system of `threads` threads (1: no task system), the world

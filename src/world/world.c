@@ -229,18 +229,23 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 // when sizes spread widely (large boxes cover many cells, small ones crowd large cells). The tree
 // wins when few proxies move (a settled pile: it does nothing for unmoved proxies while the hash
 // re-hashes every movable proxy).
-// Sort-and-sweep wins only for few, sparse, similar-size boxes, where all three cost little. So:
-// the hash when more than a quarter of the movable proxies move per step and the 90th percentile
-// of their sizes is within TB_AUTO_HASH_SPREAD of the median; else sort-and-sweep when few movable
+// Sort-and-sweep wins for few moving proxies: a nearly sorted list re-sorted by insertion and swept
+// once has no per-update set-up, where the hash clears and refills its grid and the tree re-inserts
+// or rebuilds (a world of 20 falling bodies: its pairs stage in half the hash's instructions), and
+// for sparse similar-size boxes. So: sort-and-sweep when at most TB_AUTO_SWEEP_SMALL movable
 // proxies mostly all move, static proxies do not dominate and fast bodies are rare (its queries
-// scan linearly); otherwise the tree. A switch needs two windows in a row that agree (hysteresis):
-// windows of 60 steps, 15 while the world is young.
+// scan linearly); else the hash when more than a quarter of the movable proxies move per step and
+// the 90th percentile of their sizes is within TB_AUTO_HASH_SPREAD of the median; else
+// sort-and-sweep under the same conditions up to TB_AUTO_SWEEP_MAX_PROXIES; otherwise the tree. A
+// switch needs two windows in a row that agree (hysteresis): windows of 60 steps, 15 while the world
+// is young.
 // Every method reports identical pairs, so switching never changes a trajectory.
 #define TB_AUTO_WINDOW 60
 /// Windows are shorter while the world is young (its first TB_AUTO_WINDOW steps), so that a scene
 /// that suits another method switches by step 30 rather than 120.
 #define TB_AUTO_FIRST_WINDOW 15
 #define TB_AUTO_SWEEP_MAX_PROXIES 4096
+#define TB_AUTO_SWEEP_SMALL 128
 #define TB_AUTO_HASH_SPREAD 4.0f
 
 /// 90th percentile over median of the movable proxies' largest box side (1 without proxies).
@@ -275,12 +280,16 @@ static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 	float window = (float)world->broadPhaseVote.windowSteps;
 	float movedFraction = movable > 0 ? (float)world->broadPhaseVote.movedProxies / (window * (float)movable) : 0.0f;
 	float fastFraction = movable > 0 ? (float)world->broadPhaseVote.fastBodies / (window * (float)movable) : 0.0f;
+	bool sweep = movable <= TB_AUTO_SWEEP_MAX_PROXIES && movedFraction > 0.25f && statics <= movable &&
+				 fastFraction < 0.01f;
+	if (sweep && movable <= TB_AUTO_SWEEP_SMALL)
+	{
+		return tb_broadPhaseSortAndSweep;
+	}
 	if (movedFraction > 0.25f && tbMovableSizeSpread(bp, movable) <= TB_AUTO_HASH_SPREAD)
 	{
 		return tb_broadPhaseSpatialHash;
 	}
-	bool sweep = movable <= TB_AUTO_SWEEP_MAX_PROXIES && movedFraction > 0.25f && statics <= movable &&
-				 fastFraction < 0.01f;
 	return sweep ? tb_broadPhaseSortAndSweep : tb_broadPhaseTree;
 }
 
