@@ -21,6 +21,7 @@
 
 #include "world.h"
 
+#include "core/sort.h"
 #include "core/task.h"
 
 #include <string.h>
@@ -252,11 +253,10 @@ static bool tbSkipChainSweep(const tbContinuousContext* c, const tbShape* other,
 	return separation1 < 0.0f || (separation1 - separation2 < core && separation2 > core);
 }
 
-/// Broad-phase callback: time of impact of the fast shape against one candidate shape.
-static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* context)
+/// Time of impact of the fast shape against one candidate shape; an earlier impact narrows the sweep
+/// (c->fraction) for the candidates after it.
+static void tbSweepCandidate(tbContinuousContext* c, int shapeIndex)
 {
-	(void)proxyKey;
-	tbContinuousContext* c = context;
 	tbWorld* world = c->world;
 	const tbShape* other = world->shapes + shapeIndex;
 	const tbBody* otherBody = world->bodies + other->bodyId;
@@ -265,24 +265,24 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 		(sensor && (other->enableSensorEvents == false || c->fastShape->enableSensorEvents == false ||
 					c->sensorCount == TB_MAX_SWEPT_SENSORS)))
 	{
-		return true;
+		return;
 	}
 	// Non-bullets stop only at static shapes; bullets also at dynamic and kinematic bodies (a
 	// moving kinematic wall, a door or a lift, is swept along its own motion), not at other bullets.
 	bool againstMoving = otherBody->type != tb_staticBody;
 	if (againstMoving && (c->fastBody->isBullet == false || otherBody->isBullet))
 	{
-		return true;
+		return;
 	}
 	if ((other->enableCustomFiltering || c->fastShape->enableCustomFiltering) && world->customFilterFcn != NULL &&
 		world->customFilterFcn(tbMakeShapeId(world, shapeIndex), tbMakeShapeId(world, (int)(c->fastShape - world->shapes)),
 							   world->customFilterContext) == false)
 	{
-		return true; // the custom filter keeps them apart: no contact, no sweep either
+		return; // the custom filter keeps them apart: no contact, no sweep either
 	}
 	if (sensor == false && tbSkipChainSweep(c, other, otherBody))
 	{
-		return true;
+		return;
 	}
 	tbSweep otherSweep = tbMakeBodySweep(otherBody, c->base);
 	if (otherBody->awakeIndex == TB_NULL_INDEX)
@@ -299,7 +299,7 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 			float fraction = output.state == tb_toiStateOverlapped ? 0.0f : output.fraction;
 			c->sensors[c->sensorCount++] = (tbSweptSensor){shapeIndex, (int)(c->fastShape - world->shapes), fraction};
 		}
-		return true;
+		return;
 	}
 	bool core = false;
 	if (output.state == tb_toiStateOverlapped || (output.state == tb_toiStateHit && output.fraction == 0.0f))
@@ -317,7 +317,75 @@ static bool tbContinuousQueryCallback(int proxyKey, int shapeIndex, void* contex
 		c->normal = output.normal;
 		c->otherVelocity = otherBody->awakeIndex != TB_NULL_INDEX ? otherBody->linearVelocity : tbVec2_zero;
 	}
+}
+
+/// The candidates of one fast shape's sweep. The broad-phase methods report them each in an order of
+/// its own, and each candidate's time of impact is sought only up to the earliest found before it,
+/// which decides between near-equal impacts: visited in the order reported, the sweep's outcome
+/// would depend on the broad-phase method (and on when `auto` switches). Gathered first, then
+/// visited in shape order, it does not.
+#define TB_LOCAL_CANDIDATES 64
+
+typedef struct tbCandidates
+{
+	int* ids;
+	int count;
+	int capacity;
+	int local[TB_LOCAL_CANDIDATES];
+} tbCandidates;
+
+static bool tbGatherCandidate(int proxyKey, int shapeIndex, void* context)
+{
+	(void)proxyKey;
+	tbCandidates* list = context;
+	if (list->count == list->capacity)
+	{
+		int capacity = 2 * list->capacity;
+		int* ids = tbAlloc(capacity * (int)sizeof(int));
+		memcpy(ids, list->ids, (size_t)list->count * sizeof(int));
+		if (list->ids != list->local)
+		{
+			tbFree(list->ids, list->capacity * (int)sizeof(int));
+		}
+		list->ids = ids;
+		list->capacity = capacity;
+	}
+	list->ids[list->count++] = shapeIndex;
 	return true;
+}
+
+/// The gathered candidates in ascending shape order, each once: insertion sort for the few a sweep
+/// usually meets, the radix sort beyond.
+static void tbSortCandidates(tbCandidates* list)
+{
+	int* ids = list->ids;
+	if (list->count <= TB_LOCAL_CANDIDATES)
+	{
+		for (int i = 1; i < list->count; ++i)
+		{
+			int id = ids[i], j = i;
+			for (; j > 0 && ids[j - 1] > id; --j)
+			{
+				ids[j] = ids[j - 1];
+			}
+			ids[j] = id;
+		}
+	}
+	else
+	{
+		int* scratch = tbAlloc(list->count * (int)sizeof(int));
+		tbSortIndices(ids, list->count, scratch);
+		tbFree(scratch, list->count * (int)sizeof(int));
+	}
+	int kept = 0;
+	for (int i = 0; i < list->count; ++i)
+	{
+		if (kept == 0 || ids[kept - 1] != ids[i])
+		{
+			ids[kept++] = ids[i];
+		}
+	}
+	list->count = kept;
 }
 
 /// The world box of the shape over the sweep's two ends xf1 and xf2 (measured from base).
@@ -378,15 +446,28 @@ static int tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters, 
 		c.fastShape = shape;
 		c.fastProxyMade = false; // made for the first candidate (most fast bodies meet none)
 		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, c.sweepStart, c.sweepEnd, c.base), pad + TB_LINEAR_SLOP);
+		tbCandidates candidates;
+		candidates.ids = candidates.local;
+		candidates.count = 0;
+		candidates.capacity = TB_LOCAL_CANDIDATES;
 		if (body->isBullet)
 		{
-			tbBroadPhase_Query(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
+			tbBroadPhase_Query(&world->broadPhase, box, shape->filter.maskBits, tbGatherCandidate, &candidates);
 		}
 		else
 		{
 			// A non-bullet stops only at static shapes: the movable proxies (the whole moving
 			// pile, in a scene like the spinner) need not be visited at all.
-			tbBroadPhase_QueryStatic(&world->broadPhase, box, shape->filter.maskBits, tbContinuousQueryCallback, &c);
+			tbBroadPhase_QueryStatic(&world->broadPhase, box, shape->filter.maskBits, tbGatherCandidate, &candidates);
+		}
+		tbSortCandidates(&candidates);
+		for (int k = 0; k < candidates.count; ++k)
+		{
+			tbSweepCandidate(&c, candidates.ids[k]);
+		}
+		if (candidates.ids != candidates.local)
+		{
+			tbFree(candidates.ids, candidates.capacity * (int)sizeof(int));
 		}
 	}
 	if (c.fraction < 1.0f)
