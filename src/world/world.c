@@ -237,13 +237,14 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 // scan linearly); else the hash when more than a quarter of the movable proxies move per step and
 // the 90th percentile of their sizes is within TB_AUTO_HASH_SPREAD of the median; else
 // sort-and-sweep under the same conditions up to TB_AUTO_SWEEP_MAX_PROXIES; otherwise the tree. A
-// switch needs two windows in a row that agree (hysteresis): windows of 60 steps, 15 while the world
+// switch needs two windows in a row that agree (hysteresis): windows of 60 steps, 5 while the world
 // is young.
 // Every method reports identical pairs, so switching never changes a trajectory.
 #define TB_AUTO_WINDOW 60
 /// Windows are shorter while the world is young (its first TB_AUTO_WINDOW steps), so that a scene
-/// that suits another method switches by step 30 rather than 120.
-#define TB_AUTO_FIRST_WINDOW 15
+/// that suits another method switches by step 10 rather than 120: a short-lived world (a world per
+/// match or per training episode) pays the tree's start for few of its steps.
+#define TB_AUTO_FIRST_WINDOW 5
 #define TB_AUTO_SWEEP_MAX_PROXIES 4096
 #define TB_AUTO_SWEEP_SMALL 128
 #define TB_AUTO_HASH_SPREAD 4.0f
