@@ -55,7 +55,7 @@ if [[ -z "${CHARTS_ONLY:-}" ]]; then
 
 	{
 		lscpu | grep -E '^(Model name|CPU\(s\)|Thread|Core|L2|L3)'
-		echo "date: $(date -u +%Y-%m-%dT%H:%MZ)  commit: $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo none)$(git -C "$ROOT" diff --quiet HEAD -- src include bench 2>/dev/null || echo ' (with uncommitted changes)')"
+		echo "date: $(date -u +%Y-%m-%dT%H:%MZ)  commit: $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo none)$(git -C "$ROOT" diff --quiet HEAD -- src include bench ':!bench/results' 2>/dev/null || echo ' (with uncommitted changes)')"
 		echo "command: ${BENCH_STEPS:+BENCH_STEPS=$BENCH_STEPS }BENCH_REPEAT=$REPEAT BENCH_PEER_BUDGET=$BUDGET scripts/bench.sh"
 		echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)"
 	} >"$RESULTS/machine.txt"
