@@ -628,20 +628,6 @@ static bool tbMayRecycle(const tbShape* shape)
 	return shape->geometry.type != tb_chainSegmentShape;
 }
 
-/// The radius of a shape's rounded edges and corners (0 for sharp polygons and segments).
-static float tbRoundingRadius(const tbShape* shape)
-{
-	switch (shape->geometry.type)
-	{
-		case tb_capsuleShape:
-			return shape->geometry.capsule.radius;
-		case tb_polygonShape:
-			return shape->geometry.polygon.radius;
-		default:
-			return 0.0f;
-	}
-}
-
 /// Whether a new manifold may be recycled in later steps. Not a chain segment's (tbMayRecycle);
 /// and not the one point a rounded corner facing a corner gets (a capsule's end cap beside a box's
 /// corner, manifold_internal.h's corner ids): that point stands for the pair, but the face beside
@@ -656,7 +642,8 @@ static bool tbMayRecycleManifold(const tbShape* a, const tbShape* b, const tbMan
 	{
 		return false;
 	}
-	bool rounded = tbRoundingRadius(a) > 0.0f || tbRoundingRadius(b) > 0.0f;
+	// tbRollingRadius is the rounding radius (a circle's counts too; its pairs never make corner ids).
+	bool rounded = tbRollingRadius(a) > 0.0f || tbRollingRadius(b) > 0.0f;
 	return (rounded && m->pointCount == 1 && tbIsCornerToCornerId(m->points[0].id)) == false;
 }
 
