@@ -246,7 +246,7 @@ static int RunScenes(const GameEngine** engines, int engineCount, const Options*
 		}
 		if (csv != NULL)
 		{
-			GameStats none = {0, 0, 0, 0, 0, NAN, NAN, 0, 0};
+			GameStats none = {0, 0, 0, 0, 0, NAN, NAN, 0, 0, 0.0f, -1};
 			const GameStats* w = v != NULL ? v : &none;
 			fprintf(csv, "%s,%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%d,%d,%lld,%lld,%.4f,%.4f,%.4f,%.4f,%s\n", scene->name,
 					steps, o->rounds, median[0], median[1], ratio, low, high, t->bodies, w->bodies, t->awake, w->awake, t->touching, w->touching,
@@ -426,8 +426,9 @@ static int Trace(const GameEngine** engines, int engineCount, const char* name, 
 			for (int e = 0; e < engineCount; ++e)
 			{
 				GameStats st = engines[e]->scenes[s].stats(games[e]);
-				printf(" | %s awake %d touching %d events %lld at %.2f, %.2f contacts %d recycled %d", engines[e]->name,
-					   st.awake, st.touching, (long long)st.events, st.x, st.y, st.contacts, st.recycled);
+				printf(" | %s awake %d touching %d events %lld at %.2f, %.2f contacts %d recycled %d fastest %.3f (body %d)",
+					   engines[e]->name, st.awake, st.touching, (long long)st.events, st.x, st.y, st.contacts, st.recycled,
+					   (double)st.fastest, st.fastestBody);
 			}
 			printf("\n");
 		}

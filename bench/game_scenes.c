@@ -211,6 +211,8 @@ static int TouchingContacts(BodyId body)
 static GameStats ReadStats(Game* g)
 {
 	GameStats s = g->batchStats;
+	s.fastest = 0.0f;
+	s.fastestBody = -1;
 	int touchingEnds = 0;
 	for (int i = 0; i < g->bodyCount; ++i)
 	{
@@ -218,6 +220,16 @@ static GameStats ReadStats(Game* g)
 		{
 			s.bodies += 1;
 			touchingEnds += TouchingContacts(g->bodies[i]);
+			if (P(Body_IsAwake)(g->bodies[i]))
+			{
+				Vec2 v = P(Body_GetLinearVelocity)(g->bodies[i]);
+				float speed = sqrtf(v.x * v.x + v.y * v.y) + fabsf(P(Body_GetAngularVelocity)(g->bodies[i]));
+				if (speed > s.fastest)
+				{
+					s.fastest = speed;
+					s.fastestBody = i;
+				}
+			}
 		}
 	}
 	s.touching += touchingEnds / 2;
@@ -1003,6 +1015,8 @@ static double RunWorlds(Game* g, int steps)
 static GameStats WorldsStats(Game* g)
 {
 	GameStats s = g->batchStats;
+	s.fastest = 0.0f;
+	s.fastestBody = -1;
 	s.x = s.y = NAN;
 	return s;
 }

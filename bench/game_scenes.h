@@ -34,6 +34,8 @@ typedef struct GameStats
 	double x, y;	///< the tracked body (ball, car, character, projectile; NaN when none)
 	int contacts;	///< contacts the last step's collide stage updated (Counters.awakeContactCount)
 	int recycled;	///< of those, manifolds recycled instead of recomputed (Counters.recycledContactCount)
+	float fastest;	///< the largest |v| + |ω|·(1 m) of an awake body, m/s (what keeps a pile from sleeping)
+	int fastestBody; ///< which body that is, in the order the scene made them (−1: none awake)
 } GameStats;
 
 /// One scene. create builds it (settling steps, where the scene has them, run here, untimed);
