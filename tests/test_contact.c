@@ -230,3 +230,86 @@ Test(contact, round_pairs_recycle_under_the_same_bounds_and_disabled_recycling_r
 	tbDestroyWorld(circle.worldId);
 	tbDestroyWorld(off.worldId);
 }
+
+// Pairs apart (contact.c, tbStaysApart): a contact the narrow phase found apart keeps its empty
+// manifold, without the narrow phase, while the bodies cannot have come within the margin. The claim
+// is exactness: at every step of a falling pile of circles, capsules and boxes, each contact that
+// holds an apart base is updated twice on copies, as the collide stage would (kept) and with the base
+// dropped (the narrow phase runs); the two manifolds must be the same bytes. No tolerance: the
+// keeping is exact by construction (the bound is a true lower bound on the distance).
+Test(contact, a_pair_kept_apart_gets_the_manifold_the_narrow_phase_would_give)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId worldId = tbCreateWorld(&def);
+	tbBodyDef bd = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(worldId, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbPolygon floor = tbMakeOffsetBox(8.0f, 0.5f, tbMakeVec2(0.0f, -0.5f), tbMakeRot(0.0f));
+	tbCreatePolygonShape(ground, &sd, &floor);
+	bd.type = tb_dynamicBody;
+	for (int i = 0; i < 60; ++i)
+	{
+		bd.position = tbMakeVec2(-5.0f + 1.1f * (float)(i % 10), 1.0f + 1.1f * (float)(i / 10));
+		bd.rotation = tbMakeRot(0.3f * (float)i);
+		tbBodyId body = tbCreateBody(worldId, &bd);
+		if (i % 3 == 0)
+		{
+			tbCircle circle = {{0.0f, 0.0f}, 0.45f};
+			tbCreateCircleShape(body, &sd, &circle);
+		}
+		else if (i % 3 == 1)
+		{
+			tbCapsule capsule = {{-0.3f, 0.0f}, {0.3f, 0.0f}, 0.2f};
+			tbCreateCapsuleShape(body, &sd, &capsule);
+		}
+		else
+		{
+			tbPolygon box = tbMakeBox(0.4f, 0.4f);
+			tbCreatePolygonShape(body, &sd, &box);
+		}
+	}
+	tbWorld* world = tbGetWorldChecked(worldId, "test");
+	int compared = 0, kept = 0;
+	for (int step = 0; step < 240; ++step)
+	{
+		tbWorld_Step(worldId, 1.0f / 60.0f, 4);
+		tbCounters saved = world->counters;
+		for (int id = 0; id < world->contactPool.highWater; ++id)
+		{
+			const tbContact* contact = world->contacts + id;
+			if (contact->inUse == false || (contact->flags & tb_contactApart) == 0)
+			{
+				continue;
+			}
+			tbContact asKept = *contact, recomputed = *contact;
+			recomputed.flags &= ~(uint32_t)tb_contactApart;
+			bool began = false;
+			int before = world->counters.keptApartCount;
+			tbUpdateContact(world, &asKept, &began);
+			kept += world->counters.keptApartCount - before;
+			tbUpdateContact(world, &recomputed, &began);
+			// Field by field (the points beyond pointCount are unused); a pair not kept ran the
+			// narrow phase in both copies.
+			const tbManifold* r = &recomputed.manifold;
+			const tbManifold* k = &asKept.manifold;
+			cr_assert_eq(r->pointCount, k->pointCount, "step %d contact %d", step, id);
+			cr_assert(r->normal.x == k->normal.x && r->normal.y == k->normal.y && r->rollingImpulse == k->rollingImpulse,
+					  "step %d contact %d: the kept manifold differs from the narrow phase's", step, id);
+			for (int i = 0; i < r->pointCount; ++i)
+			{
+				const tbManifoldPoint* pr = r->points + i;
+				const tbManifoldPoint* pk = k->points + i;
+				cr_assert(pr->id == pk->id && pr->separation == pk->separation && pr->anchorA.x == pk->anchorA.x &&
+							  pr->anchorA.y == pk->anchorA.y && pr->normalImpulse == pk->normalImpulse,
+						  "step %d contact %d point %d differs", step, id, i);
+			}
+			cr_assert_eq(recomputed.flags & ~(uint32_t)(tb_contactApart | tb_contactRecycled),
+						 asKept.flags & ~(uint32_t)(tb_contactApart | tb_contactRecycled), "step %d contact %d", step, id);
+			compared += 1;
+		}
+		world->counters = saved;
+	}
+	cr_assert_gt(compared, 1000, "pairs apart compared: %d", compared);
+	cr_assert_gt(kept, 1000, "of %d pairs apart only %d kept", compared, kept);
+	tbDestroyWorld(worldId);
+}

@@ -7,6 +7,7 @@
 
 #include <criterion/criterion.h>
 
+#include "collision/distance_internal.h"
 #include "tumble/collision.h"
 #include "test_helpers.h"
 
@@ -500,4 +501,104 @@ Test(shape_cast, initial_overlap_hits_at_zero_with_zero_normal)
 	// apart and not moving: no hit
 	input = CircleCast(tbMakeVec2(2.0f, 0.0f), 0.5f, 0.25f, tbMakeVec2(0.0f, 0.0f));
 	cr_assert_not(tbShapeCast(&input).hit);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The gap bound the narrow phase keeps pairs apart on (tbShapeGapBound, contact.c tbStaysApart)
+
+// One of the five kinds of shape the narrow phase meets, about `size` metres, kind by index.
+static tbGeometry randomGeometry(int kind, float size)
+{
+	tbGeometry g = {0};
+	tbVec2 p = {RandomFloat(&lcgState, -0.2f * size, 0.2f * size), RandomFloat(&lcgState, -0.2f * size, 0.2f * size)};
+	tbVec2 q = {RandomFloat(&lcgState, -size, size), RandomFloat(&lcgState, -size, size)};
+	float radius = RandomFloat(&lcgState, 0.05f, 0.5f) * size;
+	switch (kind % 5)
+	{
+		case 0:
+			g.type = tb_circleShape;
+			g.circle = (tbCircle){p, radius};
+			break;
+		case 1:
+			g.type = tb_capsuleShape;
+			g.capsule = (tbCapsule){p, q, radius};
+			break;
+		case 2:
+			g.type = tb_segmentShape;
+			g.segment = (tbSegment){p, q};
+			break;
+		case 3:
+			g.type = tb_polygonShape;
+			g.polygon = randomPolygon(size);
+			break;
+		default:
+			g.type = tb_polygonShape;
+			g.polygon = randomPolygon(size);
+			g.polygon.radius = 0.2f * radius; // rounded
+			break;
+	}
+	return g;
+}
+
+static tbShapeProxy geometryProxy(const tbGeometry* g)
+{
+	return tbMakeShapeProxy(g);
+}
+
+// The bound is the shapes' distance less the allowance: checked against GJK with radii (the
+// independent path of tbShapeDistance, DISTANCE_TOLERANCE as above). And a manifold computed with a
+// keep distance just under the bound has no point: the narrow phase, SAT or GJK, agrees that the
+// pair is apart (what tbStaysApart relies on). Pairs are placed 0 to 1 m apart, most within reach of
+// a margin.
+Test(gap_bound, is_the_distance_less_the_allowance_and_no_manifold_point_lies_within_it)
+{
+	lcgState = 777u;
+	int checked = 0, apart = 0;
+	for (int trial = 0; trial < 4000; ++trial)
+	{
+		tbGeometry a = randomGeometry(trial, 1.0f);
+		tbGeometry b = randomGeometry(trial / 5, 1.0f);
+		if (a.type == tb_segmentShape && b.type == tb_segmentShape)
+		{
+			continue; // the narrow phase has no segment–segment pair
+		}
+		tbTransform xfA = randomTransform(3.0f);
+		tbTransform xfB = randomTransform(3.0f);
+		tbTransform relative = tbInvMulTransforms(xfA, xfB);
+		float gap = tbShapeGapBound(&a, &b, relative);
+
+		tbDistanceInput input = {0};
+		input.proxyA = geometryProxy(&a);
+		input.proxyB = geometryProxy(&b);
+		input.transform = relative;
+		input.useRadii = true;
+		float distance = tbShapeDistance(&input, NULL, NULL, 0).distance;
+		if (distance > 0.0f)
+		{
+			cr_assert_float_eq(gap, distance - TB_GAP_ALLOWANCE, DISTANCE_TOLERANCE,
+							   "trial %d (types %d, %d): bound %g, distance %g", trial, a.type, b.type, (double)gap,
+							   (double)distance);
+			checked += 1;
+		}
+		else
+		{
+			cr_assert_leq(gap, DISTANCE_TOLERANCE - TB_GAP_ALLOWANCE, "trial %d: overlapping shapes, bound %g", trial,
+						  (double)gap);
+		}
+		if (gap <= 0.0f)
+		{
+			continue;
+		}
+		apart += 1;
+		float keep = gap * (1.0f - 1e-6f);
+		for (int method = 0; method < 2; ++method)
+		{
+			tbManifold m = tbCollideShapesWithMargin(&a, xfA, &b, xfB, method == 0 ? tb_narrowPhaseSAT : tb_narrowPhaseGJK,
+													 keep);
+			cr_assert_eq(m.pointCount, 0, "trial %d (types %d, %d, method %d): a point %g m apart under a bound of %g m",
+						 trial, a.type, b.type, method, (double)m.points[0].separation, (double)gap);
+		}
+	}
+	cr_assert_gt(checked, 2000);
+	cr_assert_gt(apart, 1000);
 }

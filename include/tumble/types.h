@@ -672,6 +672,7 @@ typedef struct tbCounters
 	int toiFailures;		 ///< time-of-impact queries that hit the iteration cap
 	int gjkManifolds;		 ///< manifolds computed by the GJK/EPA path
 	int satManifolds;		 ///< manifolds computed by SAT
+	int keptApartCount;		 ///< contacts whose shapes were known to stay apart: no narrow phase ran
 } tbCounters;
 
 // ---------------------------------------------------------------------------------------------

@@ -196,33 +196,78 @@ tbShapeProxy tbMakeOffsetProxy(const tbVec2* points, int count, float radius, tb
 	return proxy;
 }
 
-tbShapeProxy tbMakeShapeProxy(const tbGeometry* shape)
+// The core of a shape: its points without the radius, and the radius. Not checked here: a shape
+// was checked when it was made, and tbMakeShapeProxy checks what it returns.
+static tbShapeProxy tbGeometryCore(const tbGeometry* shape)
 {
+	tbShapeProxy core = {0};
 	switch (shape->type)
 	{
 		case tb_circleShape:
-			return tbMakeProxy(&shape->circle.center, 1, shape->circle.radius);
+			core.points[0] = shape->circle.center;
+			core.count = 1;
+			core.radius = shape->circle.radius;
+			break;
 		case tb_capsuleShape:
-		{
-			tbVec2 points[2] = {shape->capsule.center1, shape->capsule.center2};
-			return tbMakeProxy(points, 2, shape->capsule.radius);
-		}
+			core.points[0] = shape->capsule.center1;
+			core.points[1] = shape->capsule.center2;
+			core.count = 2;
+			core.radius = shape->capsule.radius;
+			break;
 		case tb_segmentShape:
-		{
-			tbVec2 points[2] = {shape->segment.point1, shape->segment.point2};
-			return tbMakeProxy(points, 2, 0.0f);
-		}
+			core.points[0] = shape->segment.point1;
+			core.points[1] = shape->segment.point2;
+			core.count = 2;
+			break;
 		case tb_chainSegmentShape:
-		{
-			tbVec2 points[2] = {shape->chainSegment.segment.point1, shape->chainSegment.segment.point2};
-			return tbMakeProxy(points, 2, 0.0f);
-		}
+			core.points[0] = shape->chainSegment.segment.point1;
+			core.points[1] = shape->chainSegment.segment.point2;
+			core.count = 2;
+			break;
 		case tb_polygonShape:
-			return tbMakeProxy(shape->polygon.vertices, shape->polygon.count, shape->polygon.radius);
+			// A polygon a constructor refused has count 0: tbMakeShapeProxy's tbMakeProxy reports it.
+			core.count = shape->polygon.count;
+			if (0 < core.count && core.count <= TB_MAX_POLYGON_VERTICES)
+			{
+				memcpy(core.points, shape->polygon.vertices, (size_t)core.count * sizeof(tbVec2));
+			}
+			core.radius = shape->polygon.radius;
+			break;
 		default:
 			TB_ASSERT(false);
-			return tbMakeProxy(&tbVec2_zero, 1, 0.0f);
+			core.count = 1; // the origin
+			break;
 	}
+	return core;
+}
+
+tbShapeProxy tbMakeShapeProxy(const tbGeometry* shape)
+{
+	tbShapeProxy core = tbGeometryCore(shape);
+	return tbMakeProxy(core.points, core.count, core.radius);
+}
+
+float tbShapeGapBound(const tbGeometry* a, const tbGeometry* b, tbTransform relative)
+{
+	tbShapeProxy coreA = tbGeometryCore(a);
+	tbShapeProxy coreB = tbGeometryCore(b);
+	for (int i = 0; i < coreB.count; ++i)
+	{
+		coreB.points[i] = tbTransformPoint(relative, coreB.points[i]);
+	}
+	float distance;
+	if (coreA.count <= 2 && coreB.count <= 2)
+	{
+		// Points and segments (circles, capsules, segments): the closed form.
+		tbSegmentDistanceResult r = tbSegmentDistance(coreA.points[0], coreA.points[coreA.count - 1], coreB.points[0],
+													  coreB.points[coreB.count - 1]);
+		distance = sqrtf(r.distanceSquared);
+	}
+	else
+	{
+		distance = tbLocalShapeDistance(&coreA, &coreB, NULL, NULL).distance;
+	}
+	return distance - coreA.radius - coreB.radius - TB_GAP_ALLOWANCE;
 }
 
 bool tbCheckProxyPair(const char* function, const tbShapeProxy* proxyA, const tbShapeProxy* proxyB)

@@ -9,6 +9,7 @@
 
 #include "world.h"
 
+#include "collision/distance_internal.h"
 #include "collision/manifold_internal.h"
 #include "core/task.h"
 #include "joints/joint.h"
@@ -270,23 +271,25 @@ enum tbCollideResult
 	tb_collideReady = 0x200,	///< a solver contact as it stands: a dynamic side and no sleeping one
 	tb_collideEnded = 0x400,	///< manifold points disappeared (touching ended)
 	tb_collideNewKey = 0x800,	///< a ready contact whose solver key differs from the last step's
+	tb_collideKeptApart = 0x1000, ///< a pair known to be apart: the narrow phase was skipped (tbStaysApart)
 };
 
 /// One worker's sums over its collide ranges, on a cache line of its own (tbCollideStage adds them
 /// in worker order).
 typedef struct tbCollideTally
 {
-	int reported, recycled, gjk, sat;
+	int reported, recycled, keptApart, gjk, sat;
 	int changed;  ///< destroyed, began or ended touching, or a begin/end event
 	int notReady; ///< solver contacts not ready (tb_collideReady)
 	int newKeys;  ///< ready contacts with a new key (tb_collideNewKey)
-	int padding[9];
+	int padding[8];
 } tbCollideTally;
 
 static void tbAddTally(tbCollideTally* sum, const tbCollideTally* part)
 {
 	sum->reported += part->reported;
 	sum->recycled += part->recycled;
+	sum->keptApart += part->keptApart;
 	sum->gjk += part->gjk;
 	sum->sat += part->sat;
 	sum->changed += part->changed;
@@ -602,11 +605,10 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 /// point for a feature coming within the margin (caught later, before it touches), and the
 /// clipping against face ends (a point stays while a box slides less than δ past an edge). Bodies
 /// that were swept by continuous collision last step always get a new manifold.
-/// Rejected: keeping the empty manifold of a polygon pair while it moves less than its
-/// separating-axis gap less the margin (exact, as Box2D v3 keeps non-touching pairs, which it does
-/// inexactly): no gain over whole runs of the benchmark piles, since most pairs apart are ruled out
-/// by their tight boxes before any narrow phase, and the test itself costs about what it saves.
-/// Keeping every empty manifold under the touching pairs' bound above (no pair then gets within
+/// Pairs apart keep their empty manifold under an exact bound of their own (tbStaysApart), except
+/// pairs of two polygons: most of those are ruled out by their tight boxes or their separating axes
+/// before the narrow phase does any more, so keeping them saved nothing on piles of polygons.
+/// Rejected: keeping every empty manifold under the touching pairs' bound above (no pair then gets within
 /// reach during the step, as Box2D v3 keeps its non-touching pairs) saved little on a falling pile,
 /// and a pile of ragdolls never fell asleep: two limbs kept swinging at about 0.1 m/s, met by their
 /// contacts only once the bound tripped, without the speculative point that would have slowed
@@ -686,8 +688,59 @@ static TB_FORCE_INLINE bool tbRecycleManifold(tbContact* contact, const tbBody* 
 	return true;
 }
 
+/// Pairs apart. Most contacts of a pile are pairs whose fat boxes overlap while their shapes lie
+/// farther apart than the margin: the narrow phase finds no point. When it finds a pair apart,
+/// tbShapeGapBound gives a distance d0 the shapes were at least apart; since then every point of B
+/// moved by at most δ relative to A (tbMovedLessThan), so the shapes are at least d0 − δ apart now,
+/// and while d0 − δ > margin every point the narrow phase could make would be farther than the
+/// margin (d0 is taken less TB_GAP_ALLOWANCE, which covers how far a point's separation may fall
+/// below the distance of the shapes): it would find them apart again, and is not asked. Exact: the
+/// step comes out bit for bit as with the narrow phase run (the empty manifold's normal is zero,
+/// so the one it would have written is known). Box2D
+/// v3 keeps its non-touching pairs under a fixed allowance instead (the speculative distance),
+/// which lets a pair come within the margin unseen; Tumble's touching pairs have that kind of
+/// bound (tbRecycleManifold), its pairs apart this exact one.
+static bool tbStaysApart(const tbContact* contact, const tbBody* bodyA, const tbBody* bodyB, float margin)
+{
+	if ((contact->flags & tb_contactApart) == 0 || !(contact->apart.gap > margin))
+	{
+		return false;
+	}
+	tbTransform relative = tbInvMulWorldTransforms(bodyA->transform, bodyB->transform);
+	return tbMovedLessThan(contact->apart.relative, relative, bodyA, bodyB, contact->apart.gap - margin);
+}
+
+/// The narrow phase found the pair apart: the empty manifold's normal cleared (the same whether
+/// the narrow phase ran or tbStaysApart kept it) and, when the shapes are farther apart than the
+/// margin, the base tbStaysApart reads.
+static void tbStoreApartBase(tbContact* contact, const tbShape* a, const tbShape* b, const tbBody* bodyA,
+							 const tbBody* bodyB, float margin)
+{
+	contact->manifold.normal = tbVec2_zero;
+	// Not two polygons: their narrow phase finds most pairs apart from its separating axes alone,
+	// for about what the gap (GJK) would cost, and it saved nothing on piles of polygons. Not a pair
+	// closing faster than TB_AABB_MARGIN a step (margin − TB_SPECULATIVE_DISTANCE is its closing,
+	// tbSpeculativeMargin): shapes whose fat boxes overlap are seldom farther apart than about that
+	// margin, so such a pair would be asked again next step anyway (a wheel rolling along a chain).
+	if ((contact->flags & tb_contactSensor) != 0 ||
+		(a->geometry.type == tb_polygonShape && b->geometry.type == tb_polygonShape) ||
+		!(margin - TB_SPECULATIVE_DISTANCE < TB_AABB_MARGIN))
+	{
+		return;
+	}
+	tbTransform relative = tbInvMulWorldTransforms(bodyA->transform, bodyB->transform);
+	float gap = tbShapeGapBound(&a->geometry, &b->geometry, relative);
+	if (gap > margin)
+	{
+		contact->apart.relative = relative;
+		contact->apart.gap = gap;
+		contact->flags |= tb_contactApart;
+	}
+}
+
 /// The narrow phase proper: a new manifold from the shapes, anchors, impulses carried over by
-/// feature id, and (for touching non-sensor contacts) the base for later recycling.
+/// feature id, and (for touching non-sensor contacts) the base for later recycling; or the empty
+/// manifold of a pair known to be apart (tbStaysApart).
 static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, const tbShape* a, const tbShape* b,
 								  const tbBody* bodyA, const tbBody* bodyB, float margin)
 {
@@ -700,6 +753,11 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 		contact->manifold.pointCount = 0;
 		return 0;
 	}
+	if (tbStaysApart(contact, bodyA, bodyB, margin))
+	{
+		return tb_collideKeptApart; // the manifold is empty, its normal zero (tbStoreApartBase)
+	}
+	contact->flags &= ~(uint32_t)tb_contactApart;
 	tbManifold old = contact->manifold; // for warm starting (tbMatchPoints)
 	tbPos points[2];
 	tbCollideInWorld(&contact->manifold, &a->geometry, bodyA->transform, &b->geometry, bodyB->transform, method, margin,
@@ -727,6 +785,10 @@ static uint32_t tbComputeManifold(const tbWorld* world, tbContact* contact, cons
 	if (m->pointCount > 0 && (contact->flags & tb_contactSensor) == 0 && tbMayRecycleManifold(a, b, m))
 	{
 		tbStoreManifoldBase(contact, bodyA->transform, bodyB->transform, points, margin);
+	}
+	else if (m->pointCount == 0)
+	{
+		tbStoreApartBase(contact, a, b, bodyA, bodyB, margin);
 	}
 	return result;
 }
@@ -876,6 +938,7 @@ static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* cont
 static void tbCountCollideResult(tbWorld* world, uint32_t result)
 {
 	world->counters.recycledContactCount += (result & tb_collideRecycled) != 0 ? 1 : 0;
+	world->counters.keptApartCount += (result & tb_collideKeptApart) != 0 ? 1 : 0;
 	world->counters.gjkManifolds += (result & tb_collideGJK) != 0 ? 1 : 0;
 	world->counters.satManifolds += (result & tb_collideSAT) != 0 ? 1 : 0;
 }
@@ -1032,8 +1095,10 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 		// the whole 280-byte shape fetches lines nobody reads). Prefetching the geometry for every
 		// contact would help scenes whose touching pairs move too far to be recycled and cost
 		// scenes that recycle every pair (a pyramid), so the flags choose per contact.
+		// A pair kept apart (tb_contactApart) most often stays apart, and reads the same first line.
 		const uint32_t recycling = tb_contactRecyclable | tb_contactRecycled;
-		int shapeBytes = (ahead->flags & recycling) == recycling ? 32 : (int)(offsetof(tbShape, geometry) + sizeof(tbGeometry));
+		bool firstLine = (ahead->flags & recycling) == recycling || (ahead->flags & tb_contactApart) != 0;
+		int shapeBytes = firstLine ? 32 : (int)(offsetof(tbShape, geometry) + sizeof(tbGeometry));
 		tbPrefetch(world->shapes + ahead->shapeIdA, shapeBytes);
 		tbPrefetch(world->shapes + ahead->shapeIdB, shapeBytes);
 		tbPrefetch(world->bodies + ahead->edges[0].bodyId, (int)sizeof(tbBody));
@@ -1086,6 +1151,7 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 		world->cache.collideResults[i] = (uint16_t)result;
 		sum.reported += (result & tb_collideReported) != 0 ? 1 : 0;
 		sum.recycled += (result & tb_collideRecycled) != 0 ? 1 : 0;
+		sum.keptApart += (result & tb_collideKeptApart) != 0 ? 1 : 0;
 		sum.gjk += (result & tb_collideGJK) != 0 ? 1 : 0;
 		sum.sat += (result & tb_collideSAT) != 0 ? 1 : 0;
 		sum.changed += (result & change) != 0 ? 1 : 0;
@@ -1205,6 +1271,7 @@ void tbCollideStage(tbWorld* world)
 	}
 	world->cache.collideTallies = NULL; // arena memory: gone with the step
 	world->counters.recycledContactCount += total.recycled;
+	world->counters.keptApartCount += total.keptApart;
 	world->counters.gjkManifolds += total.gjk;
 	world->counters.satManifolds += total.sat;
 	world->counters.touchingCount = total.reported;

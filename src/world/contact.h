@@ -38,6 +38,10 @@ enum tbContactFlags
 	/// A sensor contact whose sensor a fast shape's sweep crossed this step (continuous.c): the
 	/// sensor stage counts the pair as overlapping for the step, whatever the final poses say.
 	tb_contactSensorHit = 0x100,
+	/// contact->apart holds the pose at which the narrow phase last found the shapes apart and how
+	/// far apart they were at least: while the bodies move less than that less the margin, the
+	/// narrow phase would find them apart again and is skipped (contact.c, tbStaysApart).
+	tb_contactApart = 0x200,
 };
 
 /// Where a contact's manifold was last computed by the narrow phase (manifold recycling,
@@ -54,6 +58,15 @@ typedef struct tbManifoldBase
 	float margin;		  ///< the speculative margin the manifold was computed with (m)
 } tbManifoldBase;
 _Static_assert(sizeof(tbManifoldBase) == 76, "tbManifoldBase is 76 bytes");
+
+/// Where the narrow phase last found a pair apart (manifold empty): the relative pose then and a
+/// distance the shapes were at least apart (tbShapeGapBound). Shares the bytes of tbManifoldBase:
+/// a pair is touching or apart, never both.
+typedef struct tbApartBase
+{
+	tbTransform relative; ///< pose of B's origin frame in A's, inv(xfA)·xfB
+	float gap;			  ///< the shapes were at least this far apart (m)
+} tbApartBase;
 
 /// A pair of shapes whose fat boxes overlap. Exists from the step the boxes start to overlap
 /// until the step they stop.
@@ -76,7 +89,11 @@ typedef struct tbContact
 	tbSimplexCache cache; ///< GJK warm start for the GJK/EPA narrow phase
 	tbManifold manifold;
 	uint16_t touchingSteps; ///< steps in a row with manifold points (saturates): the soft step's settle clock
-	tbManifoldBase base; ///< valid when flags has tb_contactRecyclable
+	union
+	{
+		tbManifoldBase base; ///< valid when flags has tb_contactRecyclable
+		tbApartBase apart;	 ///< valid when flags has tb_contactApart
+	};
 	// The impact not yet reported as a hit event (tbReportHitEvents): its approach speed (0: none)
 	// and where it happened.
 	float hitSpeed;
