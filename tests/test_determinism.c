@@ -510,3 +510,64 @@ Test(determinism, workers_step_a_world_with_nothing_awake)
 	tbDestroyWorld(world);
 	TaskSystem_Destroy(tasks);
 }
+
+// The hash's hysteresis (world.c, TB_AUTO_HASH_KEEP): 200 circles in ten rows drifting alike, beside
+// 300 static boxes (so not sort-and-sweep: statics outnumber the movable proxies). All drifting,
+// auto takes the spatial hash; with two rows still drifting (20 % of the movable proxies moved a step, between
+// TB_AUTO_HASH_KEEP and the 25 % that picks the hash) it keeps the hash instead of switching back and
+// forth; with all stopped it returns to the tree. The trajectory is the tree's, bit for bit.
+static uint64_t RunHysteresis(tbBroadPhaseMethod method, tbBroadPhaseMethod chosen[3])
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	def.gravity = tbMakeVec2(0.0f, 0.0f);
+	def.enableSleep = false;
+	def.broadPhase = method;
+	tbWorldId world = tbCreateWorld(&def);
+	tbBodyDef bd = tbDefaultBodyDef();
+	tbBodyId ground = tbCreateBody(world, &bd);
+	tbShapeDef sd = tbDefaultShapeDef();
+	for (int i = 0; i < 300; ++i)
+	{
+		tbPolygon box = tbMakeOffsetBox(0.5f, 0.5f, tbMakeVec2(3.0f * (float)(i % 30), -20.0f - 3.0f * (float)(i / 30)),
+										tbMakeRot(0.0f));
+		tbCreatePolygonShape(ground, &sd, &box);
+	}
+	tbBodyId bodies[200];
+	bd.type = tb_dynamicBody;
+	for (int i = 0; i < 200; ++i)
+	{
+		bd.position = tbMakeVec2(2.0f * (float)(i % 20), 2.0f * (float)(i / 20));
+		bd.linearVelocity = tbMakeVec2(12.0f, 0.0f); // all alike: they never meet
+		bodies[i] = tbCreateBody(world, &bd);
+		tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+		tbCreateCircleShape(bodies[i], &sd, &circle);
+	}
+	for (int phase = 0; phase < 3; ++phase)
+	{
+		for (int i = 0; i < 200 && phase > 0; ++i)
+		{
+			bool drifts = phase == 1 && (i / 20) % 5 == 0; // two rows of ten: a fifth
+			tbVec2 v = tbBody_GetLinearVelocity(bodies[i]);
+			tbBody_SetLinearVelocity(bodies[i], drifts ? v : tbMakeVec2(0.0f, 0.0f));
+		}
+		for (int step = 0; step < 240; ++step)
+		{
+			tbWorld_Step(world, 1.0f / 60.0f, 4);
+		}
+		chosen[phase] = tbWorld_GetDef(world).broadPhase;
+	}
+	uint64_t hash = tbWorld_GetStateHash(world);
+	tbDestroyWorld(world);
+	return hash;
+}
+
+Test(determinism, auto_broad_phase_keeps_the_hash_near_its_threshold)
+{
+	tbBroadPhaseMethod autoChoice[3], treeChoice[3];
+	uint64_t autoHash = RunHysteresis(tb_broadPhaseAuto, autoChoice);
+	uint64_t treeHash = RunHysteresis(tb_broadPhaseTree, treeChoice);
+	cr_assert_eq(autoChoice[0], tb_broadPhaseSpatialHash, "all drifting: auto chose %d", (int)autoChoice[0]);
+	cr_assert_eq(autoChoice[1], tb_broadPhaseSpatialHash, "a fifth drifting: auto chose %d", (int)autoChoice[1]);
+	cr_assert_eq(autoChoice[2], tb_broadPhaseTree, "all stopped: auto chose %d", (int)autoChoice[2]);
+	cr_assert_eq(autoHash, treeHash, "switching broad phase changed the trajectory");
+}

@@ -235,7 +235,8 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 // for sparse similar-size boxes. So: sort-and-sweep when at most TB_AUTO_SWEEP_SMALL movable
 // proxies mostly all move, static proxies do not dominate and fast bodies are rare (its queries
 // scan linearly); else the hash when more than a quarter of the movable proxies move per step and
-// the 90th percentile of their sizes is within TB_AUTO_HASH_SPREAD of the median; else
+// the 90th percentile of their sizes is within TB_AUTO_HASH_SPREAD of the median (kept while more
+// than TB_AUTO_HASH_KEEP move); else
 // sort-and-sweep under the same conditions up to TB_AUTO_SWEEP_MAX_PROXIES; otherwise the tree. A
 // switch needs two windows in a row that agree (hysteresis): windows of 60 steps, 5 while the world
 // is young.
@@ -248,6 +249,7 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 #define TB_AUTO_SWEEP_MAX_PROXIES 4096
 #define TB_AUTO_SWEEP_SMALL 128
 #define TB_AUTO_HASH_SPREAD 4.0f
+#define TB_AUTO_HASH_KEEP 0.125f
 
 /// 90th percentile over median of the movable proxies' largest box side (1 without proxies).
 static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
@@ -287,7 +289,11 @@ static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 	{
 		return tb_broadPhaseSortAndSweep;
 	}
-	if (movedFraction > 0.25f && tbMovableSizeSpread(bp, movable) <= TB_AUTO_HASH_SPREAD)
+	// Hysteresis: the hash is kept while more than TB_AUTO_HASH_KEEP of the movable proxies move, so
+	// a scene near the threshold (a car driving over a chain terrain, docs/methods.md) does not switch
+	// back and forth, each switch a rebuild.
+	float hashMoved = bp->method == tb_broadPhaseSpatialHash ? TB_AUTO_HASH_KEEP : 0.25f;
+	if (movedFraction > hashMoved && tbMovableSizeSpread(bp, movable) <= TB_AUTO_HASH_SPREAD)
 	{
 		return tb_broadPhaseSpatialHash;
 	}
