@@ -288,6 +288,10 @@ void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB)
 	{
 		tbSpatialHash_MoveStaticProxy(bp->hash);
 	}
+	else if (bp->method == tb_broadPhaseSpatialHash)
+	{
+		tbSpatialHash_MoveMovableProxy(bp->hash);
+	}
 	// Sort-and-sweep reloads endpoint values from the table; brute force reads the table; the
 	// spatial hash re-hashes movable proxies each update.
 	tbMarkMoved(bp, proxyKey);
@@ -428,6 +432,14 @@ static void tbDeferMovableRefresh(tbBroadPhase* bp)
 		}
 	}
 	bp->enlargedCount = 0;
+}
+
+void tbBroadPhase_Settle(tbBroadPhase* bp)
+{
+	if (bp->method == tb_broadPhaseSpatialHash)
+	{
+		tbSpatialHash_Refresh(bp->hash, &bp->table);
+	}
 }
 
 void tbBroadPhase_FinishRefresh(tbBroadPhase* bp)
@@ -762,7 +774,10 @@ tbTreeStats tbBroadPhase_RayCast(const tbBroadPhase* bp, const tbRayCastInput* i
 			tbSortAndSweep_RayCast(&bp->table, input, maskBits, tbCountingRayCallback, &c);
 			break;
 		case tb_broadPhaseSpatialHash:
-			tbSpatialHash_RayCast(&bp->table, input, maskBits, tbCountingRayCallback, &c);
+			if (tbSpatialHash_RayCast(bp->hash, &bp->table, input, maskBits, tbCountingRayCallback, &c) == false)
+			{
+				tbBruteForce_RayCast(&bp->table, input, maskBits, tbCountingRayCallback, &c);
+			}
 			break;
 		default:
 			tbBruteForce_RayCast(&bp->table, input, maskBits, tbCountingRayCallback, &c);

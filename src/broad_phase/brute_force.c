@@ -171,7 +171,7 @@ static bool tbClipSlab(float p, float d, float lower, float upper, float* t0, fl
 	return *t0 <= *t1;
 }
 
-static bool tbSegmentHitsBox(tbVec2 p, tbVec2 d, float maxFraction, tbAABB box)
+bool tbSegmentHitsBox(tbVec2 p, tbVec2 d, float maxFraction, tbAABB box)
 {
 	float t0 = 0.0f, t1 = maxFraction;
 	return tbClipSlab(p.x, d.x, box.lowerBound.x, box.upperBound.x, &t0, &t1) &&

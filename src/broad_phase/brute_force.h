@@ -23,4 +23,7 @@ void tbBruteForce_Query(const tbProxyTable* table, tbAABB aabb, uint64_t maskBit
 void tbBruteForce_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
 						  tbProxyRayCastFcn* callback, void* context);
 
+/// Whether the segment p + t·d, 0 ≤ t ≤ maxFraction, meets the box (slab test).
+bool tbSegmentHitsBox(tbVec2 p, tbVec2 d, float maxFraction, tbAABB box);
+
 bool tbBruteForce_Validate(const tbBruteForce* brute, const tbProxyTable* table);

@@ -8,9 +8,10 @@
 // the cells it covers; when both proxies of a pair moved, the one with the larger key reports it
 // (as the tree does), and the broad phase sorts the pairs, so the set is the tree's exactly.
 //
-// Cost: hashing is O(entries) per step for the movable proxies (rebuilt each FindPairs, sleeping
-// ones included, as sort-and-sweep sweeps them) and only when they change for the static ones; a
-// query visits the entries of its cells. It suits many bodies of one size: with cells twice the
+// Cost: hashing is O(entries) per step for the movable proxies (rebuilt once they have moved, at
+// the end of the step or at the next FindPairs, sleeping ones included, as sort-and-sweep sweeps
+// them) and only when they change for the static ones; a query visits the entries of its cells, a
+// ray cast those of the cells along the ray. It suits many bodies of one size: with cells twice the
 // typical box, a box covers one to four cells and meets only its near neighbours. It suits mixed
 // sizes badly: a box much larger than a cell covers many cells, and small boxes in a large cell
 // all meet each other. A proxy covering more than TB_HASH_MAX_CELLS cells is kept apart in a
@@ -37,6 +38,8 @@
 #define TB_HASH_CELL_FACTOR 2.0f
 /// Updates between checks of the cell size.
 #define TB_HASH_RESIZE_INTERVAL 64
+/// At most this many static proxies are scanned by a query rather than looked up in the static grid.
+#define TB_HASH_FEW_STATICS 16
 /// Cell coordinates are clamped to ±2^30 (far beyond TB_MAX_COORDINATE over any useful cell).
 #define TB_HASH_COORD_LIMIT 1073741824.0f
 
@@ -46,6 +49,7 @@ typedef struct tbCellEntry
 	int key;
 	int next;	///< next entry in the bucket, or −1
 	int x0, y0; ///< the proxy's lowest cell (tbCellsOf), for the pair query's lower-corner test
+	int x1, y1; ///< and its highest, for a ray cast's first-cell test
 } tbCellEntry;
 
 /// Cells hashed into a power-of-two number of buckets, each a chain of entries.
@@ -81,6 +85,10 @@ struct tbSpatialHash
 	int movableCount;
 	int movableCapacity;
 	bool movableDirty;
+	/// The movable grid holds every movable proxy where its box is now: no movable proxy was added,
+	/// removed or moved since it was built, nor the cell size changed. Queries and ray casts then
+	/// look up cells instead of scanning the table, and the next update need not rebuild it.
+	bool movableGridCurrent;
 };
 
 typedef struct tbCellRange
@@ -171,7 +179,7 @@ static void tbGrid_AddLarge(tbGrid* grid, int key)
 	tbPushKey(&grid->large, &grid->largeCount, &grid->largeCapacity, key);
 }
 
-static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, int x0, int y0)
+static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, tbCellRange r)
 {
 	if (grid->entryCount == grid->entryCapacity)
 	{
@@ -181,7 +189,7 @@ static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, int x0, int y0)
 		grid->entryCapacity = m;
 	}
 	int bucket = tbBucketOf(grid, cell);
-	grid->entries[grid->entryCount] = (tbCellEntry){cell, key, grid->heads[bucket], x0, y0};
+	grid->entries[grid->entryCount] = (tbCellEntry){cell, key, grid->heads[bucket], r.x0, r.y0, r.x1, r.y1};
 	grid->heads[bucket] = grid->entryCount++;
 }
 
@@ -200,7 +208,7 @@ static void tbGrid_AddProxy(tbGrid* grid, const tbSpatialHash* hash, const tbPro
 	{
 		for (int y = r.y0; y <= r.y1; ++y)
 		{
-			tbGrid_AddEntry(grid, tbCellKey(x, y), key, r.x0, r.y0);
+			tbGrid_AddEntry(grid, tbCellKey(x, y), key, r);
 		}
 	}
 }
@@ -247,6 +255,7 @@ static void tbGrid_BuildMovable(tbGrid* grid, tbSpatialHash* hash, const tbProxy
 	{
 		tbGrid_AddProxy(grid, hash, table, hash->movableKeys[i]);
 	}
+	hash->movableGridCurrent = true;
 }
 
 // --------------------------------------------------------------------------------------------
@@ -297,6 +306,7 @@ static void tbUpdateCellSize(tbSpatialHash* hash, const tbProxyTable* table)
 		hash->cellSize = size;
 		hash->invCellSize = 1.0f / size;
 		hash->staticDirty = true;
+		hash->movableGridCurrent = false;
 	}
 }
 
@@ -326,6 +336,7 @@ void tbSpatialHash_AddProxy(tbSpatialHash* hash, const tbProxyTable* table, int 
 	bool isStatic = table->proxies[proxyKey].type == tb_proxyStatic;
 	hash->staticDirty = hash->staticDirty || isStatic;
 	hash->movableDirty = hash->movableDirty || isStatic == false;
+	hash->movableGridCurrent = hash->movableGridCurrent && isStatic;
 }
 
 void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey)
@@ -333,11 +344,34 @@ void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, i
 	bool isStatic = table->proxies[proxyKey].type == tb_proxyStatic;
 	hash->staticDirty = hash->staticDirty || isStatic;
 	hash->movableDirty = hash->movableDirty || isStatic == false;
+	hash->movableGridCurrent = hash->movableGridCurrent && isStatic;
 }
 
 void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash)
 {
 	hash->staticDirty = true;
+}
+
+void tbSpatialHash_MoveMovableProxy(tbSpatialHash* hash)
+{
+	hash->movableGridCurrent = false;
+}
+
+void tbSpatialHash_Refresh(tbSpatialHash* hash, const tbProxyTable* table)
+{
+	if (hash->cellSize <= 0.0f)
+	{
+		return; // no update yet: the first one chooses the cell size
+	}
+	if (hash->staticDirty)
+	{
+		tbGrid_BuildStatic(&hash->staticGrid, hash, table);
+		hash->staticDirty = false;
+	}
+	if (hash->movableGridCurrent == false)
+	{
+		tbGrid_BuildMovable(&hash->movableGrid, hash, table);
+	}
 }
 
 tbSpatialHashState tbSpatialHash_GetState(const tbSpatialHash* hash)
@@ -353,6 +387,7 @@ void tbSpatialHash_SetState(tbSpatialHash* hash, const tbProxyTable* table, tbSp
 	hash->staticDirty = state.staticDirty;
 	hash->updateCount = state.updateCount;
 	hash->movableDirty = true;
+	hash->movableGridCurrent = false;
 	if (hash->staticDirty == false && hash->cellSize > 0.0f)
 	{
 		tbGrid_BuildStatic(&hash->staticGrid, hash, table);
@@ -463,7 +498,10 @@ void tbSpatialHash_PrepareFind(tbSpatialHash* hash, const tbProxyTable* table)
 		tbGrid_BuildStatic(&hash->staticGrid, hash, table);
 		hash->staticDirty = false;
 	}
-	tbGrid_BuildMovable(&hash->movableGrid, hash, table);
+	if (hash->movableGridCurrent == false)
+	{
+		tbGrid_BuildMovable(&hash->movableGrid, hash, table);
+	}
 	hash->updateCount += 1;
 }
 
@@ -508,11 +546,22 @@ static bool tbVisit(const tbBoxQuery* q, int key)
 	return q->callback(key, p->shapeIndex, q->context);
 }
 
-/// Static proxies through the static grid (current): each once, from its overlap's lower corner.
-/// r: the query box's cells.
-static bool tbQueryStaticGrid(const tbBoxQuery* q, tbCellRange r)
+/// The proxies of a current grid that the query box meets: each once, from its overlap's lower
+/// corner (tbConsiderCell). r: the query box's cells; a box covering too many cells scans the grid's
+/// list of proxies instead.
+static bool tbQueryGrid(const tbBoxQuery* q, const tbGrid* grid, tbCellRange r)
 {
-	const tbGrid* grid = &q->hash->staticGrid;
+	if (tbIsLargeRange(r))
+	{
+		for (int i = 0; i < grid->allCount; ++i)
+		{
+			if (tbVisit(q, grid->all[i]) == false)
+			{
+				return false;
+			}
+		}
+		return true;
+	}
 	for (int i = 0; i < grid->largeCount; ++i)
 	{
 		if (tbVisit(q, grid->large[i]) == false)
@@ -528,7 +577,6 @@ static bool tbQueryStaticGrid(const tbBoxQuery* q, tbCellRange r)
 			for (int e = grid->heads[tbBucketOf(grid, cell)]; e >= 0; e = grid->entries[e].next)
 			{
 				const tbCellEntry* entry = grid->entries + e;
-				// The overlap's lower corner cell, as in tbConsiderCell.
 				int rx = tbMaxInt(r.x0, entry->x0);
 				int ry = tbMaxInt(r.y0, entry->y0);
 				if (entry->cell == cell && rx == x && ry == y && tbVisit(q, entry->key) == false)
@@ -545,36 +593,42 @@ void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, t
 						 bool staticOnly, tbProxyQueryFcn* callback, void* context)
 {
 	tbBoxQuery q = {hash, table, aabb, maskBits, callback, context};
-	// Static proxies: through the grid when it is current (its cells for a box covering few of
-	// them, else its list of static proxies); by a scan of the table when it is not.
-	bool gridCurrent = hash->staticDirty == false && hash->cellSize > 0.0f;
-	tbCellRange cells = gridCurrent ? tbCellsOf(hash, aabb) : (tbCellRange){0, 0, 0, 0};
-	if (gridCurrent && tbIsLargeRange(cells) == false)
+	// Each grid is looked up when it is current: the static one unless a static proxy changed since
+	// the last update; the movable one unless a movable proxy did (the step rebuilds it once its
+	// proxies have moved: tbSpatialHash_Refresh). A few static proxies are tested one by one (their
+	// list), cheaper than the cells of a box. Otherwise the table is scanned.
+	bool staticCurrent = hash->staticDirty == false && hash->cellSize > 0.0f;
+	bool movableCurrent = hash->movableGridCurrent && hash->cellSize > 0.0f;
+	tbCellRange cells = staticCurrent || movableCurrent ? tbCellsOf(hash, aabb) : (tbCellRange){0, 0, 0, 0};
+	if (staticCurrent)
 	{
-		if (tbQueryStaticGrid(&q, cells) == false)
+		const tbGrid* grid = &hash->staticGrid;
+		bool few = grid->allCount <= TB_HASH_FEW_STATICS;
+		if (tbQueryGrid(&q, grid, few ? (tbCellRange){0, 0, INT32_MAX, INT32_MAX} : cells) == false)
 		{
 			return;
 		}
 	}
-	else if (gridCurrent)
-	{
-		for (int i = 0; i < hash->staticGrid.allCount; ++i)
-		{
-			if (tbVisit(&q, hash->staticGrid.all[i]) == false)
-			{
-				return;
-			}
-		}
-	}
-	if (staticOnly && gridCurrent)
+	if (staticOnly && staticCurrent)
 	{
 		return;
+	}
+	if (staticOnly == false && movableCurrent)
+	{
+		if (tbQueryGrid(&q, &hash->movableGrid, cells) == false)
+		{
+			return;
+		}
+		if (staticCurrent)
+		{
+			return;
+		}
 	}
 	for (int key = 0; key < table->capacity; ++key)
 	{
 		const tbBroadProxy* p = table->proxies + key;
 		bool isStatic = p->type == tb_proxyStatic;
-		if (p->isFree || (gridCurrent && isStatic) || (staticOnly && isStatic == false))
+		if (p->isFree || (staticCurrent && isStatic) || (isStatic == false && (staticOnly || movableCurrent)))
 		{
 			continue;
 		}
@@ -585,10 +639,135 @@ void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, t
 	}
 }
 
-void tbSpatialHash_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
-						   tbProxyRayCastFcn* callback, void* context)
+/// A ray through a grid's cells (Amanatides and Woo, "A fast voxel traversal algorithm for ray
+/// tracing", 1987): the cells it crosses in order, each proxy reported in the first of its cells the
+/// ray reaches (the ray's cells within a proxy's range of cells are consecutive: a segment meets a
+/// rectangle in one piece). Every proxy of both grids is reported once; the callback's clipping
+/// shortens the walk.
+typedef struct tbRayWalk
 {
-	tbBruteForce_RayCast(table, input, maskBits, callback, context);
+	const tbSpatialHash* hash;
+	const tbProxyTable* table;
+	tbRayCastInput input; ///< maxFraction clipped by the callback
+	uint64_t maskBits;
+	tbProxyRayCastFcn* callback;
+	void* context;
+	bool stopped;
+} tbRayWalk;
+
+static void tbRayVisit(tbRayWalk* w, int key)
+{
+	const tbBroadProxy* p = w->table->proxies + key;
+	if ((p->categoryBits & w->maskBits) == 0 ||
+		tbSegmentHitsBox(w->input.origin, w->input.translation, w->input.maxFraction, p->aabb) == false)
+	{
+		return;
+	}
+	float value = w->callback(&w->input, key, p->shapeIndex, w->context);
+	if (value == 0.0f)
+	{
+		w->stopped = true;
+	}
+	else if (0.0f < value && value < w->input.maxFraction)
+	{
+		w->input.maxFraction = value;
+	}
+}
+
+static void tbRayVisitCell(tbRayWalk* w, const tbGrid* grid, int x, int y, int px, int py, bool first)
+{
+	int64_t cell = tbCellKey(x, y);
+	for (int e = grid->heads[tbBucketOf(grid, cell)]; e >= 0 && w->stopped == false; e = grid->entries[e].next)
+	{
+		const tbCellEntry* entry = grid->entries + e;
+		bool seen = first == false && entry->x0 <= px && px <= entry->x1 && entry->y0 <= py && py <= entry->y1;
+		if (entry->cell == cell && seen == false)
+		{
+			tbRayVisit(w, entry->key);
+		}
+	}
+}
+
+/// Cells along one axis: the first boundary crossed (as a fraction of the ray) and the fraction
+/// between boundaries; infinite when the ray does not move along the axis.
+static void tbRayAxis(float origin, float direction, int cell, float cellSize, int* step, float* next, float* delta)
+{
+	if (direction > 0.0f)
+	{
+		*step = 1;
+		*next = ((float)(cell + 1) * cellSize - origin) / direction;
+		*delta = cellSize / direction;
+	}
+	else if (direction < 0.0f)
+	{
+		*step = -1;
+		*next = ((float)cell * cellSize - origin) / direction;
+		*delta = -cellSize / direction;
+	}
+	else
+	{
+		*step = 0;
+		*next = INFINITY;
+		*delta = INFINITY;
+	}
+}
+
+bool tbSpatialHash_RayCast(const tbSpatialHash* hash, const tbProxyTable* table, const tbRayCastInput* input,
+						   uint64_t maskBits, tbProxyRayCastFcn* callback, void* context)
+{
+	if (hash->staticDirty || hash->movableGridCurrent == false || hash->cellSize <= 0.0f)
+	{
+		return false;
+	}
+	tbVec2 p = input->origin, d = input->translation;
+	tbVec2 end = tbMulAdd(p, input->maxFraction, d);
+	tbCellRange span = tbCellsOf(hash, (tbAABB){tbMin(p, end), tbMax(p, end)});
+	int64_t crossed = ((int64_t)span.x1 - span.x0 + 1) + ((int64_t)span.y1 - span.y0 + 1);
+	if (crossed > (int64_t)hash->staticGrid.allCount + hash->movableGrid.allCount)
+	{
+		return false; // a ray crossing more cells than there are proxies: the scan is cheaper
+	}
+	tbRayWalk w = {hash, table, *input, maskBits, callback, context, false};
+	const tbGrid* grids[2] = {&hash->staticGrid, &hash->movableGrid};
+	for (int g = 0; g < 2 && w.stopped == false; ++g)
+	{
+		for (int i = 0; i < grids[g]->largeCount && w.stopped == false; ++i)
+		{
+			tbRayVisit(&w, grids[g]->large[i]);
+		}
+	}
+	int x = tbCellCoordinate(p.x, hash->invCellSize), y = tbCellCoordinate(p.y, hash->invCellSize);
+	int stepX, stepY;
+	float nextX, nextY, deltaX, deltaY;
+	tbRayAxis(p.x, d.x, x, hash->cellSize, &stepX, &nextX, &deltaX);
+	tbRayAxis(p.y, d.y, y, hash->cellSize, &stepY, &nextY, &deltaY);
+	int px = x, py = y;
+	// At most the cells of the span (each step moves one cell along one axis); the bound also ends
+	// a walk that rounding would carry past its last cell.
+	for (int64_t n = 0; n < crossed && w.stopped == false; ++n)
+	{
+		for (int g = 0; g < 2 && w.stopped == false; ++g)
+		{
+			tbRayVisitCell(&w, grids[g], x, y, px, py, n == 0);
+		}
+		float t = nextX < nextY ? nextX : nextY;
+		if (!(t <= w.input.maxFraction))
+		{
+			break; // the next cell begins beyond the (clipped) ray
+		}
+		px = x, py = y;
+		if (nextX < nextY)
+		{
+			x += stepX;
+			nextX += deltaX;
+		}
+		else
+		{
+			y += stepY;
+			nextY += deltaY;
+		}
+	}
+	return true;
 }
 
 // --------------------------------------------------------------------------------------------

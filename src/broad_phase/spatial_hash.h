@@ -24,12 +24,20 @@ void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbP
 void tbSpatialHash_PrepareFind(tbSpatialHash* hash, const tbProxyTable* table);
 void tbSpatialHash_QueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs, int proxyKey);
 
-/// Queries: static proxies through the static grid when it is current, movable ones by a scan of
-/// the table (they may have moved since the grid was built). Ray casts scan the table.
+/// After a step's proxies have moved (the world's finalize stage): the grids rebuilt where stale, so
+/// that queries between steps look up cells and the next update reuses them.
+void tbSpatialHash_Refresh(tbSpatialHash* hash, const tbProxyTable* table);
+/// A movable proxy moved: the movable grid is stale until the next update or refresh.
+void tbSpatialHash_MoveMovableProxy(tbSpatialHash* hash);
+
+/// Queries: each grid looked up when it is current (a grid holds every proxy of its kind where its
+/// box is now), the table scanned for a kind whose grid is not.
 void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, tbAABB aabb, uint64_t maskBits,
 						 bool staticOnly, tbProxyQueryFcn* callback, void* context);
-void tbSpatialHash_RayCast(const tbProxyTable* table, const tbRayCastInput* input, uint64_t maskBits,
-						   tbProxyRayCastFcn* callback, void* context);
+/// A ray cast through the cells of both grids when both are current and the ray crosses fewer cells
+/// than there are proxies; false (nothing done) otherwise, and the caller scans the table.
+bool tbSpatialHash_RayCast(const tbSpatialHash* hash, const tbProxyTable* table, const tbRayCastInput* input,
+						   uint64_t maskBits, tbProxyRayCastFcn* callback, void* context);
 
 /// What a spatial hash carries from one update to the next besides the proxy table (a world's
 /// snapshot stores it): the cell size, whether the static grid must be rebuilt, and the update

@@ -649,6 +649,7 @@ static bool tbStepWorld(tbWorldId worldId, float timeStep, int subStepCount)
 		world->profile.continuous = tbGetMillisecondsAndReset(&t);
 	}
 	int beyondBounds = tbFinalizeStage(world, timeStep);
+	tbBroadPhase_Settle(&world->broadPhase);
 	world->profile.finalize = tbGetMillisecondsAndReset(&t);
 	world->profile.transforms = world->profile.finalize; // Box2D v3.2's name for this stage
 	if (world->hitContactCount > 0)
