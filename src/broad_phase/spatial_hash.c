@@ -38,8 +38,6 @@
 #define TB_HASH_CELL_FACTOR 2.0f
 /// Updates between checks of the cell size.
 #define TB_HASH_RESIZE_INTERVAL 64
-/// At most this many static proxies are scanned by a query rather than looked up in the static grid.
-#define TB_HASH_FEW_STATICS 16
 /// Cell coordinates are clamped to ±2^30 (far beyond TB_MAX_COORDINATE over any useful cell).
 #define TB_HASH_COORD_LIMIT 1073741824.0f
 
@@ -595,19 +593,13 @@ void tbSpatialHash_Query(const tbSpatialHash* hash, const tbProxyTable* table, t
 	tbBoxQuery q = {hash, table, aabb, maskBits, callback, context};
 	// Each grid is looked up when it is current: the static one unless a static proxy changed since
 	// the last update; the movable one unless a movable proxy did (the step rebuilds it once its
-	// proxies have moved: tbSpatialHash_Refresh). A few static proxies are tested one by one (their
-	// list), cheaper than the cells of a box. Otherwise the table is scanned.
+	// proxies have moved: tbSpatialHash_Refresh). Otherwise the table is scanned.
 	bool staticCurrent = hash->staticDirty == false && hash->cellSize > 0.0f;
 	bool movableCurrent = hash->movableGridCurrent && hash->cellSize > 0.0f;
 	tbCellRange cells = staticCurrent || movableCurrent ? tbCellsOf(hash, aabb) : (tbCellRange){0, 0, 0, 0};
-	if (staticCurrent)
+	if (staticCurrent && tbQueryGrid(&q, &hash->staticGrid, cells) == false)
 	{
-		const tbGrid* grid = &hash->staticGrid;
-		bool few = grid->allCount <= TB_HASH_FEW_STATICS;
-		if (tbQueryGrid(&q, grid, few ? (tbCellRange){0, 0, INT32_MAX, INT32_MAX} : cells) == false)
-		{
-			return;
-		}
+		return;
 	}
 	if (staticOnly && staticCurrent)
 	{
