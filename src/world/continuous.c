@@ -389,11 +389,13 @@ static void tbSortCandidates(tbCandidates* list)
 }
 
 /// The world box of the shape over the sweep's two ends xf1 and xf2 (measured from base).
-static tbAABB tbSweptShapeBox(const tbShape* shape, tbTransform xf1, tbTransform xf2, tbPos base)
+/// The box of a shape over its sweep's ends. The start is where the body began the step, where the
+/// last finalize (or a teleport since: tbBody_SetTransform refreshes the boxes) left the shape's
+/// tight box: only the end is computed.
+static tbAABB tbSweptShapeBox(const tbShape* shape, tbTransform xf2, tbPos base)
 {
-	tbWorldTransform start = {tbOffsetPos(base, xf1.p), xf1.q};
 	tbWorldTransform end = {tbOffsetPos(base, xf2.p), xf2.q};
-	return tbAABB_Union(tbComputeShapeAABB(&shape->geometry, start), tbComputeShapeAABB(&shape->geometry, end));
+	return tbAABB_Union(shape->aabb, tbComputeShapeAABB(&shape->geometry, end));
 }
 
 /// The core hit while the body was already touching: the contact points the solver saw did not
@@ -445,7 +447,7 @@ static int tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters, 
 		}
 		c.fastShape = shape;
 		c.fastProxyMade = false; // made for the first candidate (most fast bodies meet none)
-		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, c.sweepStart, c.sweepEnd, c.base), pad + TB_LINEAR_SLOP);
+		tbAABB box = tbAABB_Fatten(tbSweptShapeBox(shape, c.sweepEnd, c.base), pad + TB_LINEAR_SLOP);
 		tbCandidates candidates;
 		candidates.ids = candidates.local;
 		candidates.count = 0;
