@@ -53,7 +53,9 @@ typedef struct tbContinuousContext
 	int fastBodyId;
 	tbPos base; ///< the frame's origin of every sweep and result (tbSweepBase)
 	tbSweep sweep;
-	tbTransform sweepStart, sweepEnd; ///< the sweep at 0 and 1 (tbGetSweepTransform), made once
+	tbTransform sweepEnd;			  ///< the sweep at 1 (tbGetSweepTransform), made once
+	tbTransform sweepStart;			  ///< and at 0, made for the first candidate that asks (tbSweepStart)
+	bool sweepStartMade;
 	const tbShape* fastShape;
 	tbShapeProxy fastProxy;
 	bool fastProxyMade; ///< fastProxy holds fastShape's proxy (tbFastProxy)
@@ -173,6 +175,8 @@ static tbTOIOutput tbComputeTOI(tbContinuousContext* c, const tbShape* other, co
 /// (by at most its extent), which the solver then resolves. The core may itself start near the
 /// surface (it was stopped there last step): its target is then half its current gap, so it can
 /// still be stopped short of the surface; a core already on the surface is left to the solver.
+static tbTransform tbSweepStart(tbContinuousContext* c);
+
 static tbTOIOutput tbComputeCoreTOI(tbContinuousContext* c, const tbShape* other, const tbSweep* otherSweep)
 {
 	tbTOIInput input;
@@ -184,7 +188,7 @@ static tbTOIOutput tbComputeCoreTOI(tbContinuousContext* c, const tbShape* other
 	tbDistanceInput start;
 	start.proxyA = input.proxyA;
 	start.proxyB = input.proxyB;
-	start.transform = tbInvMulTransforms(tbGetSweepTransform(otherSweep, 0.0f), c->sweepStart);
+	start.transform = tbInvMulTransforms(tbGetSweepTransform(otherSweep, 0.0f), tbSweepStart(c));
 	start.useRadii = true;
 	float gap = tbShapeDistance(&start, NULL, NULL, 0).distance;
 	tbTOIOutput output = {tb_toiStateOverlapped, 0.0f, 0, {0.0f, 0.0f}, {0.0f, 0.0f}};
@@ -235,7 +239,19 @@ static tbVec2 tbShapeCentroid(const tbGeometry* g)
 /// hold it, and a sweep would stop it at each segment it comes within TB_TOI_TARGET_SEPARATION of.
 /// So the sweep runs only when the centroid closes on the segment's line by at least the core
 /// radius (half the body's thickness, tbComputeCoreTOI's) or ends within it.
-static bool tbSkipChainSweep(const tbContinuousContext* c, const tbShape* other, const tbBody* otherBody)
+/// The sweep at 0, made once, for the first candidate that needs it (most fast bodies meet none:
+/// their swept boxes come from the shapes' boxes and the sweep's end).
+static tbTransform tbSweepStart(tbContinuousContext* c)
+{
+	if (c->sweepStartMade == false)
+	{
+		c->sweepStart = tbGetSweepTransform(&c->sweep, 0.0f);
+		c->sweepStartMade = true;
+	}
+	return c->sweepStart;
+}
+
+static bool tbSkipChainSweep(tbContinuousContext* c, const tbShape* other, const tbBody* otherBody)
 {
 	if (other->geometry.type != tb_chainSegmentShape)
 	{
@@ -245,7 +261,7 @@ static bool tbSkipChainSweep(const tbContinuousContext* c, const tbShape* other,
 	tbVec2 e = tbNormalize(tbSub(segment->point2, segment->point1));
 	tbVec2 centroid = tbShapeCentroid(&c->fastShape->geometry);
 	tbTransform xfOther = tbToRelativeTransform(otherBody->transform, c->base);
-	tbVec2 c1 = tbInvTransformPoint(xfOther, tbTransformPoint(c->sweepStart, centroid));
+	tbVec2 c1 = tbInvTransformPoint(xfOther, tbTransformPoint(tbSweepStart(c), centroid));
 	tbVec2 c2 = tbInvTransformPoint(xfOther, tbTransformPoint(c->sweepEnd, centroid));
 	float separation1 = tbCross(tbSub(c1, segment->point1), e); // > 0 in front (right of the direction)
 	float separation2 = tbCross(tbSub(c2, segment->point1), e);
@@ -426,9 +442,9 @@ static int tbSolveFastBody(tbWorld* world, int bodyId, tbToiCounters* counters, 
 	c.fastBodyId = bodyId;
 	c.base = tbSweepBase(body);
 	c.sweep = tbMakeBodySweep(body, c.base);
-	// Each shape's box and each chain candidate ask for the sweep's ends: computed once here.
-	c.sweepStart = tbGetSweepTransform(&c.sweep, 0.0f);
+	// Each shape's box and each chain candidate ask for the sweep's end: computed once here.
 	c.sweepEnd = tbGetSweepTransform(&c.sweep, 1.0f);
+	c.sweepStartMade = false;
 	c.fraction = 1.0f;
 	c.coreHit = false;
 	// Rotation can carry points outside both end boxes by at most the arc's sagitta,
