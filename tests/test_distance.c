@@ -602,3 +602,46 @@ Test(gap_bound, is_the_distance_less_the_allowance_and_no_manifold_point_lies_wi
 	cr_assert_gt(checked, 2000);
 	cr_assert_gt(apart, 1000);
 }
+
+// Far from A's body origin (a ground whose boxes or chain lie kilometres from the ground body's
+// origin) the narrow phase's separations carry the rounding of those coordinates; the bound takes it
+// off (TB_GAP_SCALE_ALLOWANCE). A box 1 km and 5 km from its origin, a capsule lying nearly flat
+// 2 to 6 cm above its top face: no SAT or GJK manifold point may lie within the bound.
+Test(gap_bound, holds_far_from_the_first_shapes_origin)
+{
+	lcgState = 99u;
+	int apart = 0;
+	const float offsets[2] = {1000.0f, 5000.0f};
+	for (int k = 0; k < 2; ++k)
+	{
+		float R = offsets[k];
+		for (int trial = 0; trial < 2000; ++trial)
+		{
+			tbGeometry a = {0};
+			a.type = tb_polygonShape;
+			a.polygon = tbMakeOffsetBox(RandomFloat(&lcgState, 0.5f, 3.0f), 0.5f, tbMakeVec2(R, 0.0f), tbMakeRot(0.0f));
+			tbGeometry b = {0};
+			b.type = tb_capsuleShape;
+			float radius = RandomFloat(&lcgState, 0.05f, 0.3f);
+			b.capsule = (tbCapsule){{-0.6f, 0.0f}, {0.6f, 0.0f}, radius};
+			float gap = RandomFloat(&lcgState, 0.02f, 0.06f);
+			tbTransform xfA = tbTransform_identity;
+			tbTransform xfB = {{R + RandomFloat(&lcgState, -1.0f, 1.0f), 0.5f + radius + gap},
+							   tbMakeRot(RandomFloat(&lcgState, -0.02f, 0.02f))};
+			float bound = tbShapeGapBound(&a, &b, tbInvMulTransforms(xfA, xfB));
+			if (bound <= 0.0f)
+			{
+				continue;
+			}
+			apart += 1;
+			for (int method = 0; method < 2; ++method)
+			{
+				tbManifold m = tbCollideShapesWithMargin(&a, xfA, &b, xfB, method == 0 ? tb_narrowPhaseSAT : tb_narrowPhaseGJK,
+														 bound * (1.0f - 1e-6f));
+				cr_assert_eq(m.pointCount, 0, "R %g trial %d method %d: a point %g m apart under a bound of %g m",
+							 (double)R, trial, method, (double)m.points[0].separation, (double)bound);
+			}
+		}
+	}
+	cr_assert_gt(apart, 3000);
+}

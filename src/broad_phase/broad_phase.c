@@ -293,7 +293,8 @@ void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB)
 		tbSpatialHash_MoveMovableProxy(bp->hash);
 	}
 	// Sort-and-sweep reloads endpoint values from the table; brute force reads the table; the
-	// spatial hash re-hashes movable proxies each update.
+	// spatial hash re-hashes its movable proxies once they have moved (tbBroadPhase_Settle or the
+	// next update).
 	tbMarkMoved(bp, proxyKey);
 }
 
@@ -606,7 +607,8 @@ void tbBroadPhase_UpdatePairs(tbBroadPhase* bp)
 }
 
 // --------------------------------------------------------------------------------------------
-// Queries (the tree prunes; the other methods scan the table)
+// Queries (the tree prunes; the spatial hash looks up the cells of current grids; sort-and-sweep and
+// brute force scan the table)
 
 /// Translates tree callbacks (tree id, proxy key) into broad-phase ones (proxy key, shape index),
 /// re-checks the true category bits, and carries stop and clip across the two trees.

@@ -38,8 +38,14 @@
 #define TB_HASH_CELL_FACTOR 2.0f
 /// Updates between checks of the cell size.
 #define TB_HASH_RESIZE_INTERVAL 64
-/// Cell coordinates are clamped to ±2^30 (far beyond TB_MAX_COORDINATE over any useful cell).
+/// Cell coordinates are clamped to ±2^30 (beyond TB_MAX_COORDINATE over any useful cell; a large
+/// world's positions can reach the clamp, where boxes share the clamped cells).
 #define TB_HASH_COORD_LIMIT 1073741824.0f
+/// A ray walks the cells only within this many cells of the origin (2^16): farther out a cell
+/// boundary the walk computes, (cell + 1)·size − origin, is off by a float step of the coordinate,
+/// which can carry it into the wrong neighbour of a corner (and past the clamp, into cells that
+/// hold nothing), so the ray scans the table instead.
+#define TB_HASH_RAY_CELL_LIMIT 65536.0f
 
 typedef struct tbCellEntry
 {
@@ -77,8 +83,9 @@ struct tbSpatialHash
 	bool staticDirty;
 	int updateCount;
 	/// Keys of the movable proxies in ascending order (the order of a scan of the table), remade
-	/// when one is added or removed: the movable grid is rebuilt every update, and scanning the
-	/// whole table for it cost a step in proportion to the static level (a car on a long terrain).
+	/// when one is added or removed: the movable grid is rebuilt every step its proxies move, and
+	/// scanning the whole table for it cost a step in proportion to the static level (a car on a
+	/// long terrain).
 	int* movableKeys;
 	int movableCount;
 	int movableCapacity;
@@ -240,7 +247,7 @@ static void tbListMovableKeys(tbSpatialHash* hash, const tbProxyTable* table)
 	hash->movableDirty = false;
 }
 
-/// Hash every movable proxy into the movable grid (every update: they move). Its buckets are sized
+/// Hash every movable proxy into the movable grid (whenever one moved). Its buckets are sized
 /// for the movable proxies alone; the order of entries within a cell does not depend on it.
 static void tbGrid_BuildMovable(tbGrid* grid, tbSpatialHash* hash, const tbProxyTable* table)
 {
@@ -713,6 +720,11 @@ bool tbSpatialHash_RayCast(const tbSpatialHash* hash, const tbProxyTable* table,
 	}
 	tbVec2 p = input->origin, d = input->translation;
 	tbVec2 end = tbMulAdd(p, input->maxFraction, d);
+	float reach = tbMaxFloat(tbMaxFloat(tbAbsFloat(p.x), tbAbsFloat(p.y)), tbMaxFloat(tbAbsFloat(end.x), tbAbsFloat(end.y)));
+	if (!(reach * hash->invCellSize < TB_HASH_RAY_CELL_LIMIT))
+	{
+		return false; // far from the origin (or not finite): see TB_HASH_RAY_CELL_LIMIT
+	}
 	tbCellRange span = tbCellsOf(hash, (tbAABB){tbMin(p, end), tbMax(p, end)});
 	int64_t crossed = ((int64_t)span.x1 - span.x0 + 1) + ((int64_t)span.y1 - span.y0 + 1);
 	if (crossed > (int64_t)hash->staticGrid.allCount + hash->movableGrid.allCount)
@@ -789,37 +801,50 @@ static bool tbLargeHolds(const tbGrid* grid, int key)
 	return false;
 }
 
-bool tbSpatialHash_Validate(const tbSpatialHash* hash, const tbProxyTable* table)
+/// Whether a grid holds the proxy in every cell its box covers (or in its large list).
+static bool tbGridHoldsProxy(const tbSpatialHash* hash, const tbGrid* grid, const tbBroadProxy* p, int key)
 {
-	if (hash->staticDirty || hash->cellSize <= 0.0f)
+	tbCellRange r = tbCellsOf(hash, p->aabb);
+	if (tbIsLargeRange(r))
 	{
-		return true; // rebuilt before it is next used
+		return tbLargeHolds(grid, key);
 	}
-	for (int key = 0; key < table->capacity; ++key)
+	for (int x = r.x0; x <= r.x1; ++x)
 	{
-		const tbBroadProxy* p = table->proxies + key;
-		if (p->isFree || p->type != tb_proxyStatic)
+		for (int y = r.y0; y <= r.y1; ++y)
 		{
-			continue;
-		}
-		tbCellRange r = tbCellsOf(hash, p->aabb);
-		if (tbIsLargeRange(r))
-		{
-			if (tbLargeHolds(&hash->staticGrid, key) == false)
+			if (tbGridHolds(grid, tbCellKey(x, y), key) == false)
 			{
 				return false;
 			}
+		}
+	}
+	return true;
+}
+
+/// Each grid that claims to be current holds every proxy of its kind where its box is now.
+bool tbSpatialHash_Validate(const tbSpatialHash* hash, const tbProxyTable* table)
+{
+	if (hash->cellSize <= 0.0f)
+	{
+		return true; // rebuilt before it is next used
+	}
+	bool staticCurrent = hash->staticDirty == false;
+	for (int key = 0; key < table->capacity; ++key)
+	{
+		const tbBroadProxy* p = table->proxies + key;
+		if (p->isFree)
+		{
 			continue;
 		}
-		for (int x = r.x0; x <= r.x1; ++x)
+		bool isStatic = p->type == tb_proxyStatic;
+		if (isStatic && staticCurrent && tbGridHoldsProxy(hash, &hash->staticGrid, p, key) == false)
 		{
-			for (int y = r.y0; y <= r.y1; ++y)
-			{
-				if (tbGridHolds(&hash->staticGrid, tbCellKey(x, y), key) == false)
-				{
-					return false;
-				}
-			}
+			return false;
+		}
+		if (isStatic == false && hash->movableGridCurrent && tbGridHoldsProxy(hash, &hash->movableGrid, p, key) == false)
+		{
+			return false;
 		}
 	}
 	return true;

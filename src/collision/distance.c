@@ -255,6 +255,20 @@ float tbShapeGapBound(const tbGeometry* a, const tbGeometry* b, tbTransform rela
 	{
 		coreB.points[i] = tbTransformPoint(relative, coreB.points[i]);
 	}
+	// The narrow phase works at these coordinates (A's frame), its rounding in proportion to them:
+	// a ground's chain or boxes may lie kilometres from the ground body's origin.
+	float scale = tbProxyScale(&coreA, &coreB);
+	// The distance itself at small coordinates: both cores moved so that A's first point is the
+	// origin (a translation keeps every distance).
+	tbVec2 shift = coreA.points[0];
+	for (int i = 0; i < coreA.count; ++i)
+	{
+		coreA.points[i] = tbSub(coreA.points[i], shift);
+	}
+	for (int i = 0; i < coreB.count; ++i)
+	{
+		coreB.points[i] = tbSub(coreB.points[i], shift);
+	}
 	float distance;
 	if (coreA.count <= 2 && coreB.count <= 2)
 	{
@@ -267,7 +281,7 @@ float tbShapeGapBound(const tbGeometry* a, const tbGeometry* b, tbTransform rela
 	{
 		distance = tbLocalShapeDistance(&coreA, &coreB, NULL, NULL).distance;
 	}
-	return distance - coreA.radius - coreB.radius - TB_GAP_ALLOWANCE;
+	return distance - coreA.radius - coreB.radius - TB_GAP_ALLOWANCE - TB_GAP_SCALE_ALLOWANCE * scale;
 }
 
 bool tbCheckProxyPair(const char* function, const tbShapeProxy* proxyA, const tbShapeProxy* proxyB)

@@ -5,18 +5,24 @@
 
 #include "tumble/collision.h"
 
-/// What tbShapeGapBound takes off (m): 0.2 × linear slop = 0.001 m. It covers GJK's stopping
-/// tolerance (8 float epsilons of the shapes' size) and the narrow phase's clip slack (manifold.c,
-/// TB_CLIP_SLACK = 0.0005 m: a kept point may lie that far beside its face, its separation then up
-/// to that much below the distance of the shapes), so that no manifold point can be nearer than
-/// the bound says.
-#define TB_GAP_ALLOWANCE (0.2f * TB_LINEAR_SLOP)
+#include <float.h>
 
-/// A distance two valid shapes are at least apart, less TB_GAP_ALLOWANCE (m, radii included; ≤ 0
-/// when they may touch), B placed in A's frame by relative = A⁻¹·B: the distance of the cores, by
-/// the closed form of tbSegmentDistance when neither is a polygon and by GJK otherwise (GJK stops
-/// once its support plane, a lower bound, is within its tolerance of the distance found). The
-/// narrow phase keeps a pair apart on it (contact.c, tbStaysApart).
+/// What tbShapeGapBound takes off (m): 0.2 × linear slop = 0.001 m, plus TB_GAP_SCALE_ALLOWANCE of
+/// the largest coordinate of the shapes in A's frame. The first covers the narrow phase's clip slack
+/// (manifold.c, TB_CLIP_SLACK = 0.0005 m: a kept point may lie that far beside its face, its
+/// separation then up to that much below the distance of the shapes) and GJK's stopping tolerance;
+/// the second the narrow phase's rounding, in proportion to its coordinates (16 float epsilons of
+/// them: 9.5 mm for a ground 5 km from its body's origin), so that no manifold point can be nearer
+/// than the bound says.
+#define TB_GAP_ALLOWANCE (0.2f * TB_LINEAR_SLOP)
+#define TB_GAP_SCALE_ALLOWANCE (16.0f * FLT_EPSILON)
+
+/// A distance two valid shapes are at least apart, less the allowances above (m, radii included; ≤ 0
+/// when they may touch), B placed in A's frame by relative = A⁻¹·B: the distance of the cores,
+/// computed with A's first point moved to the origin, by the closed form of tbSegmentDistance when
+/// neither is a polygon and by GJK otherwise (GJK stops once its support plane, a lower bound, is
+/// within its tolerance of the distance found). The narrow phase keeps a pair apart on it
+/// (contact.c, tbStaysApart).
 float tbShapeGapBound(const tbGeometry* a, const tbGeometry* b, tbTransform relative);
 
 /// Index of the proxy point furthest along direction (the support mapping of a point cloud).

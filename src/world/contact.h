@@ -40,7 +40,9 @@ enum tbContactFlags
 	tb_contactSensorHit = 0x100,
 	/// contact->apart holds the pose at which the narrow phase last found the shapes apart and how
 	/// far apart they were at least: while the bodies move less than that less the margin, the
-	/// narrow phase would find them apart again and is skipped (contact.c, tbStaysApart).
+	/// narrow phase would find them apart again and is skipped (contact.c, tbStaysApart). Snapshots
+	/// keep a contact's low eight flags only (snapshot.c): a restored contact runs the narrow phase
+	/// again, with the same result, since keeping it apart is exact.
 	tb_contactApart = 0x200,
 };
 
