@@ -120,7 +120,7 @@ static inline bool tbBroadPhase_RefreshPending(const tbBroadPhase* bp)
 /// table (and so tbBroadPhase_TestOverlap) may be read meanwhile.
 void tbBroadPhase_FinishRefresh(tbBroadPhase* bp);
 
-/// After the step's proxies have moved (finalize): the spatial hash rebuilds its stale grids now
+/// At the end of a step, its proxies moved: the spatial hash rebuilds its stale grids now
 /// rather than at the next update, so that queries and ray casts between steps look up cells (the
 /// next update reuses them: the same work, done earlier). Nothing for the other methods.
 void tbBroadPhase_Settle(tbBroadPhase* bp);

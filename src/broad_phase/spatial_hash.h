@@ -24,7 +24,7 @@ void tbSpatialHash_FindPairs(tbSpatialHash* hash, const tbProxyTable* table, tbP
 void tbSpatialHash_PrepareFind(tbSpatialHash* hash, const tbProxyTable* table);
 void tbSpatialHash_QueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, tbPairList* pairs, int proxyKey);
 
-/// After a step's proxies have moved (the world's finalize stage): the grids rebuilt where stale, so
+/// At the end of a step, its proxies moved (tbBroadPhase_Settle): the grids rebuilt where stale, so
 /// that queries between steps look up cells and the next update reuses them.
 void tbSpatialHash_Refresh(tbSpatialHash* hash, const tbProxyTable* table);
 /// A movable proxy moved: the movable grid is stale until the next update or refresh.

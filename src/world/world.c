@@ -564,12 +564,15 @@ static void tbRecordMaxCapacity(tbWorld* world)
 	c->contactCount = tbMaxInt(c->contactCount, world->contactPool.count);
 }
 
-/// What every step ends with, a pause too: counters, the broad-phase vote, the step arena.
+/// What every step ends with, a pause too: counters, the broad-phase vote, the broad phase settled
+/// for the queries between steps (after the vote and after bodies beyond the bounds left it, either
+/// of which would throw a fresh grid away), the step arena.
 static void tbFinishStep(tbWorld* world, uint64_t stepTicks)
 {
 	tbCountTasksInto(NULL);
 	tbUpdateCounters(world);
 	tbUpdateAutoBroadPhase(world);
+	tbBroadPhase_Settle(&world->broadPhase);
 	tbArenaReset(&world->stepArena);
 	world->profile.step = tbGetMilliseconds(stepTicks);
 	world->locked = false;
@@ -649,7 +652,6 @@ static bool tbStepWorld(tbWorldId worldId, float timeStep, int subStepCount)
 		world->profile.continuous = tbGetMillisecondsAndReset(&t);
 	}
 	int beyondBounds = tbFinalizeStage(world, timeStep);
-	tbBroadPhase_Settle(&world->broadPhase);
 	world->profile.finalize = tbGetMillisecondsAndReset(&t);
 	world->profile.transforms = world->profile.finalize; // Box2D v3.2's name for this stage
 	if (world->hitContactCount > 0)
