@@ -53,7 +53,6 @@ typedef struct tbCellEntry
 	int key;
 	int next;	///< next entry in the bucket, or −1
 	int x0, y0; ///< the proxy's lowest cell (tbCellsOf), for the pair query's lower-corner test
-	int x1, y1; ///< and its highest, for a ray cast's first-cell test
 } tbCellEntry;
 
 /// Cells hashed into a power-of-two number of buckets, each a chain of entries.
@@ -194,7 +193,7 @@ static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, tbCellRange r)
 		grid->entryCapacity = m;
 	}
 	int bucket = tbBucketOf(grid, cell);
-	grid->entries[grid->entryCount] = (tbCellEntry){cell, key, grid->heads[bucket], r.x0, r.y0, r.x1, r.y1};
+	grid->entries[grid->entryCount] = (tbCellEntry){cell, key, grid->heads[bucket], r.x0, r.y0};
 	grid->heads[bucket] = grid->entryCount++;
 }
 
@@ -673,14 +672,26 @@ static void tbRayVisit(tbRayWalk* w, int key)
 	}
 }
 
+/// The entries of one cell the ray reaches. A proxy's range of cells is that of its box as hashed (the
+/// grid is current: the table holds that box), found only for entries the previous cell might share:
+/// the entries keep their lowest cell alone, which keeps the grid small for the pair updates.
 static void tbRayVisitCell(tbRayWalk* w, const tbGrid* grid, int x, int y, int px, int py, bool first)
 {
 	int64_t cell = tbCellKey(x, y);
 	for (int e = grid->heads[tbBucketOf(grid, cell)]; e >= 0 && w->stopped == false; e = grid->entries[e].next)
 	{
 		const tbCellEntry* entry = grid->entries + e;
-		bool seen = first == false && entry->x0 <= px && px <= entry->x1 && entry->y0 <= py && py <= entry->y1;
-		if (entry->cell == cell && seen == false)
+		if (entry->cell != cell)
+		{
+			continue;
+		}
+		bool seen = false;
+		if (first == false && entry->x0 <= px && entry->y0 <= py)
+		{
+			tbCellRange r = tbCellsOf(w->hash, w->table->proxies[entry->key].aabb);
+			seen = px <= r.x1 && py <= r.y1;
+		}
+		if (seen == false)
 		{
 			tbRayVisit(w, entry->key);
 		}
