@@ -3,6 +3,7 @@
 #include <criterion/criterion.h>
 
 #include "tumble/tumble.h"
+#include "world/world.h"
 
 #include "error_recorder.h"
 
@@ -328,5 +329,70 @@ Test(body, rotations_read_back_exactly, .init = SetupErrors, .fini = TeardownErr
 	cr_expect_eq(set, 1000);
 	cr_expect_eq(created, 1000);
 	cr_expect_eq(s_errors, 0);
+	tbDestroyWorld(world);
+}
+
+// The narrow phase reads two body fields derived from others, kept in the body's first cache line
+// (body.h): originExtent, the farthest shape point from the body origin (maxExtent + |localCenter|),
+// and solverMoves, whether the solve can change the body's velocity (dynamic with a positive
+// inverse mass, or inverse inertia when its rotation is free). Each must equal its definition after
+// every call that changes an input, exactly: the narrow phase's results are bit for bit those it
+// gave when it computed them per contact.
+static void ExpectDerived(tbWorldId worldId, tbBodyId bodyId, const char* after)
+{
+	const tbWorld* world = tbGetWorldChecked(worldId, "test");
+	const tbBody* b = world->bodies + (bodyId.index1 - 1);
+	float originExtent = b->maxExtent + tbLength(b->localCenter);
+	bool moves = b->type == tb_dynamicBody && (b->invMass > 0.0f || (b->fixedRotation == false && b->invInertia > 0.0f));
+	cr_expect(b->originExtent == originExtent, "after %s: originExtent %.9g, defined %.9g", after,
+			  (double)b->originExtent, (double)originExtent);
+	cr_expect(b->solverMoves == moves, "after %s: solverMoves %d, defined %d", after, b->solverMoves, moves);
+}
+
+Test(body, derived_fields_follow_their_inputs, .init = SetupErrors, .fini = TeardownErrors)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&worldDef);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	ExpectDerived(world, body, "tbCreateBody");
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbPolygon box = tbMakeOffsetBox(0.5f, 0.25f, tbMakeVec2(1.0f, 0.5f), tbMakeRot(0.3f));
+	tbCreatePolygonShape(body, &shapeDef, &box);
+	ExpectDerived(world, body, "a shape off the origin");
+	cr_assert(tbLength(tbBody_GetLocalCenter(body)) > 1.0f); // the centre's offset counts
+
+	tbBody_SetFixedRotation(body, true);
+	ExpectDerived(world, body, "tbBody_SetFixedRotation(true)");
+	tbBody_SetFixedRotation(body, false);
+	ExpectDerived(world, body, "tbBody_SetFixedRotation(false)");
+	tbMassData md = {2.0f, {0.3f, -0.1f}, 0.5f};
+	cr_assert(tbBody_SetMassData(body, md));
+	ExpectDerived(world, body, "tbBody_SetMassData");
+	cr_assert(tbBody_SetType(body, tb_kinematicBody));
+	ExpectDerived(world, body, "tbBody_SetType(kinematic)");
+	cr_assert(tbBody_SetType(body, tb_staticBody));
+	ExpectDerived(world, body, "tbBody_SetType(static)");
+	cr_assert(tbBody_SetType(body, tb_dynamicBody));
+	ExpectDerived(world, body, "tbBody_SetType(dynamic)");
+
+	// A shape that leaves the mass alone leaves the extents alone too (as Box2D v3.2): the derived
+	// field follows the stored extent, not the shapes.
+	shapeDef.updateBodyMass = false;
+	tbCircle far = {{3.0f, 0.0f}, 0.5f};
+	tbCreateCircleShape(body, &shapeDef, &far);
+	ExpectDerived(world, body, "a shape with updateBodyMass false");
+	tbBody_ApplyMassFromShapes(body);
+	ExpectDerived(world, body, "tbBody_ApplyMassFromShapes");
+	tbBody_SetMotionLocks(body, (tbMotionLocks){false, false, true});
+	ExpectDerived(world, body, "tbBody_SetMotionLocks(angularZ)");
+
+	uint8_t image[1 << 14];
+	int size = tbWorld_Snapshot(world, image, (int)sizeof(image));
+	cr_assert(size > 0 && size <= (int)sizeof(image));
+	tbBody_SetMotionLocks(body, (tbMotionLocks){false, false, false});
+	cr_assert(tbWorld_Restore(world, image, size));
+	ExpectDerived(world, body, "tbWorld_Restore");
 	tbDestroyWorld(world);
 }

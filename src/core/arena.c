@@ -58,7 +58,7 @@ void* tbArenaAlloc(tbArena* arena, int size)
 		return p;
 	}
 	// Does not fit: serve from the heap until the next reset grows the arena. The heap block is
-	// 32-byte aligned too (tbAlloc).
+	// at least 32-byte aligned too (tbAlloc aligns to 64).
 	tbArenaBlock block = {tbAlloc(bytes), bytes};
 	TB_ARRAY_PUSH(arena->overflow, arena->overflowCount, arena->overflowCapacity, block);
 	return block.memory;

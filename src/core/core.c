@@ -37,7 +37,7 @@ static void tbSystemAlignedFree(void* memory)
 }
 #endif
 
-#define TB_ALIGNMENT 32
+#define TB_ALIGNMENT 64
 
 static tbAllocFcn* s_allocFcn = NULL;
 static tbFreeFcn* s_freeFcn = NULL;

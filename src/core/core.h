@@ -24,7 +24,7 @@
 		}                                                                                                             \
 	} while (0)
 
-/// Allocate size bytes (32-byte aligned) through the hook. Counts toward tbGetByteCount.
+/// Allocate size bytes (64-byte aligned: a cache line) through the hook. Counts toward tbGetByteCount.
 void* tbAlloc(int size);
 
 /// Free memory from tbAlloc; size must be the size that was allocated.

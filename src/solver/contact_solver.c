@@ -57,7 +57,7 @@
 static int tbGetSolverIndex(const tbWorld* world, int bodyId, int staticIndex)
 {
 	const tbBody* body = world->bodies + bodyId;
-	int index = body->solverIndex;
+	int index = body->awakeIndex;
 	if (index >= 0 && index < staticIndex && world->awakeBodies[index] == bodyId)
 	{
 		return index;

@@ -69,7 +69,6 @@ static void tbGatherBodiesTask(int start, int end, uint32_t workerIndex, void* t
 	for (int i = start; i < end; ++i)
 	{
 		tbBody* body = world->bodies + world->awakeBodies[i];
-		body->solverIndex = i;
 		body->center0 = body->center;
 		body->rotation0 = body->transform.q;
 

@@ -3,10 +3,10 @@
 // functions in its own header (integrator.h, contact_solver.h, constraint_graph.h,
 // solver_methods.h) and includes this one, so no piece includes the stage driver (solver.c).
 //
-// Data layout. Each step the awake bodies are gathered into dense arrays indexed by
-// tbBody::solverIndex; one extra entry at the end (index bodyCount) is a motionless body with
-// infinite mass that stands for every static or non-awake body, so the contact loops never branch
-// on "is there a body here". Contacts become tbContactConstraint structs in the order of
+// Data layout. Each step the awake bodies are gathered into dense arrays in the awake set's order,
+// indexed by tbBody::awakeIndex; one extra entry at the end (index bodyCount) is a motionless body
+// with infinite mass that stands for every static or non-awake body, so the contact loops never
+// branch on "is there a body here". Contacts become tbContactConstraint structs in the order of
 // world->cache.solverContacts, with anchors, effective masses and softness precomputed once per step.
 #pragma once
 

@@ -246,9 +246,9 @@ tbBodyId tbCreateBody(tbWorldId worldId, const tbBodyDef* def)
 	body->headContactKey = TB_NULL_INDEX;
 	body->headJointKey = TB_NULL_INDEX;
 	body->awakeIndex = TB_NULL_INDEX;
-	body->solverIndex = TB_NULL_INDEX;
 	body->mass = 0.0f;
 	body->invMass = def->type == tb_dynamicBody ? 1.0f : 0.0f;
+	tbUpdateBodyDerived(body);
 	if (def->type != tb_staticBody && (def->isAwake || def->enableSleep == false) && def->isEnabled)
 	{
 		tbAddToAwakeSet(world, body, id);
@@ -342,11 +342,19 @@ void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minEx
 	*maxExtentOut = maxExtent;
 }
 
+void tbUpdateBodyDerived(tbBody* body)
+{
+	body->originExtent = body->maxExtent + tbLength(body->localCenter);
+	body->solverMoves = body->type == tb_dynamicBody &&
+						(body->invMass > 0.0f || (body->fixedRotation == false && body->invInertia > 0.0f));
+}
+
 /// Extents used by continuous collision (tbComputeBodyExtents) and the reach that follows from them.
 static void tbComputeExtents(tbWorld* world, tbBody* body)
 {
 	tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
 	tbUpdateSpeculativeReach(body);
+	tbUpdateBodyDerived(body);
 }
 
 /// Keep the velocity of the body origin when the centre of mass moves from oldCenter to

@@ -25,11 +25,15 @@ typedef struct tbBody
 	float gravityScale;
 	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
 	int awakeIndex;		///< index in world->awakeBodies, or TB_NULL_INDEX when asleep or static
-	int solverIndex;	///< index in the solver's body arrays this step, or TB_NULL_INDEX (read by
-						///< the contact preparation for every contact: kept in this first line)
+	/// maxExtent + |localCenter|: the farthest shape point from the body origin (m), which the narrow
+	/// phase's motion bounds read per contact (tbUpdateBodyDerived keeps it current)
+	float originExtent;
 	uint8_t type;		///< tbBodyType
 	bool isFast;		///< moved far this step: swept by continuous collision (read per contact: first line)
 	bool enableContactRecycling; ///< read per contact by the narrow phase: first line
+	/// The solve can change its velocity: dynamic with a positive inverse mass or (rotation not
+	/// fixed) inverse inertia. Read per contact by the narrow phase for the solver key.
+	bool solverMoves;
 
 	tbPos center0;		///< centre of mass at the start of the step (continuous collision)
 	tbRot rotation0;	///< rotation at the start of the step
@@ -67,6 +71,10 @@ typedef struct tbBody
 	bool isDisabled; ///< out of the simulation (tbBody_Disable): no proxies, no contacts, never awake
 	bool allowFastRotation; ///< tbBodyDef::allowFastRotation: the solver does not cap its spin
 } tbBody;
+
+/// The body's cached derived fields (originExtent, solverMoves) from its type, mass and extents:
+/// called wherever those change.
+void tbUpdateBodyDerived(tbBody* body);
 
 /// The body for a body id and its world, or NULL after reporting an error naming `function`; also
 /// refuses a locked world when `mutating`.

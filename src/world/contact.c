@@ -532,13 +532,6 @@ static void tbStoreManifoldBase(tbContact* contact, tbWorldTransform xfA, tbWorl
 	contact->flags |= tb_contactRecyclable;
 }
 
-/// Distance from a body's origin to its farthest shape point (m): maxExtent is measured from the
-/// centre of mass, which sits |localCenter| from the origin.
-static float tbOriginExtent(const tbBody* body)
-{
-	return body->maxExtent + tbLength(body->localCenter);
-}
-
 /// How far any point of one body can have moved relative to the other since the base pose (m).
 /// In A's frame, a point of B at r from B's origin (|r| ≤ extentB) sits at q·r + p, where (p, q)
 /// is B's pose in A's frame, so it moved by (q − q0)·r + (p − p0), at most
@@ -554,7 +547,7 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 {
 	float chord = sqrtf((relative.q.c - relative0.q.c) * (relative.q.c - relative0.q.c) +
 						(relative.q.s - relative0.q.s) * (relative.q.s - relative0.q.s));
-	float inA = tbDistance(relative.p, relative0.p) + chord * tbOriginExtent(bodyB);
+	float inA = tbDistance(relative.p, relative0.p) + chord * bodyB->originExtent;
 	if (inA < tolerance)
 	{
 		return true;
@@ -562,7 +555,7 @@ static TB_FORCE_INLINE bool tbMovedLessThan(tbTransform relative0, tbTransform r
 	// B's pose in A's frame inverted: A's origin in B's frame is −qᵀ·p.
 	tbVec2 pB = tbNeg(tbInvRotateVector(relative.q, relative.p));
 	tbVec2 pB0 = tbNeg(tbInvRotateVector(relative0.q, relative0.p));
-	float inB = tbDistance(pB, pB0) + chord * tbOriginExtent(bodyA);
+	float inB = tbDistance(pB, pB0) + chord * bodyA->originExtent;
 	return inB < tolerance;
 }
 
@@ -1056,8 +1049,7 @@ static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* co
 	const tbBody* a = world->bodies + contact->edges[0].bodyId;
 	const tbBody* b = world->bodies + contact->edges[1].bodyId;
 	bool dynamicA = a->type == tb_dynamicBody, dynamicB = b->type == tb_dynamicBody;
-	bool movesA = dynamicA && (a->invMass > 0.0f || (a->fixedRotation == false && a->invInertia > 0.0f));
-	bool movesB = dynamicB && (b->invMass > 0.0f || (b->fixedRotation == false && b->invInertia > 0.0f));
+	bool movesA = a->solverMoves, movesB = b->solverMoves;
 	uint32_t flags = (movesA ? (uint32_t)tb_keyMovesA : 0u) | (movesB ? (uint32_t)tb_keyMovesB : 0u) |
 					 (dynamicA ? (uint32_t)tb_keyDynamicA : 0u) | (dynamicB ? (uint32_t)tb_keyDynamicB : 0u);
 	flags |= contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
@@ -1101,8 +1093,8 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 		int shapeBytes = firstLine ? 32 : (int)(offsetof(tbShape, geometry) + sizeof(tbGeometry));
 		tbPrefetch(world->shapes + ahead->shapeIdA, shapeBytes);
 		tbPrefetch(world->shapes + ahead->shapeIdB, shapeBytes);
-		tbPrefetch(world->bodies + ahead->edges[0].bodyId, (int)sizeof(tbBody));
-		tbPrefetch(world->bodies + ahead->edges[1].bodyId, (int)sizeof(tbBody));
+		tbPrefetch(world->bodies + ahead->edges[0].bodyId, 64);
+		tbPrefetch(world->bodies + ahead->edges[1].bodyId, 64);
 	}
 	if (i + TB_PREFETCH_AHEAD / 2 < endIndex)
 	{

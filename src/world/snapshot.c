@@ -1622,7 +1622,6 @@ static bool tbReadBody(tbDecoder* d, int index)
 	body->headContactKey = TB_NULL_INDEX;
 	body->headJointKey = TB_NULL_INDEX;
 	body->awakeIndex = TB_NULL_INDEX;
-	body->solverIndex = TB_NULL_INDEX;
 	uint32_t flags = tbGetUInt(r);
 	if (r->failed == false && ((flags & ~(uint32_t)tb_bodyAll) != 0 || (flags & tb_bodyTypeBits) >= tb_bodyTypeCount))
 	{
@@ -1749,6 +1748,7 @@ static bool tbReadBody(tbDecoder* d, int index)
 		tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
 	}
 	body->speculativeReach = (flags & tb_bodyReachStored) ? tbGetFloat(r, "a body's reach") : tbPredictReach(body);
+	tbUpdateBodyDerived(body);
 	if (r->failed == false && (tbIsNonNegative(body->minExtent) == false || tbIsNonNegative(body->maxExtent) == false ||
 							   tbIsNonNegative(body->speculativeReach) == false))
 	{
