@@ -537,3 +537,49 @@ Test(chain, random_placements_give_valid_manifolds)
 	}
 #undef RANDOM
 }
+
+// A chain on a moving body turns with it. A kinematic square drum (a clockwise loop, solid outside,
+// walls 2 m from its centre) turns at 3 rad/s about its centre, with a ball of radius 0.25 m at rest
+// inside, off-centre at (1.5, 1) and 0.25 m from the wall x = 2, no gravity. In the drum's frame the
+// ball's distance along the wall's normal, 1.5·cos θ + sin θ, reaches the wall less the radius,
+// 1.75 m, after θ ≈ 0.36 rad (7 steps at 60 Hz): from then on the wall pushes the ball. A soft
+// contact lets the wall sink into the ball by about the linear slop (0.005 m), so the ball's centre
+// must stay within its radius less the speculative distance (0.02 m, four slops) of the nearest
+// wall, in the drum's frame, for 2 s. The drum's extent once stayed 0 (a body with chain shapes only
+// gets no mass update), which let the pair be kept apart while the wall swept 0.053 m into the ball.
+Test(chain, a_turning_chain_pushes_what_it_meets)
+{
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, 0.0f));
+	tbBodyDef drumDef = tbDefaultBodyDef();
+	drumDef.type = tb_kinematicBody;
+	drumDef.angularVelocity = 3.0f;
+	tbBodyId drum = tbCreateBody(world, &drumDef);
+	tbVec2 square[4] = {{-2.0f, -2.0f}, {-2.0f, 2.0f}, {2.0f, 2.0f}, {2.0f, -2.0f}}; // clockwise: solid outside
+	tbChainDef def = tbDefaultChainDef();
+	def.points = square;
+	def.count = 4;
+	def.isLoop = true;
+	tbCreateChain(drum, &def);
+
+	tbBodyDef ballDef = tbDefaultBodyDef();
+	ballDef.type = tb_dynamicBody;
+	ballDef.position = tbMakeVec2(1.5f, 1.0f);
+	tbBodyId ball = tbCreateBody(world, &ballDef);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.25f};
+	tbCreateCircleShape(ball, &shapeDef, &circle);
+
+	float deepest = 0.0f;
+	for (int step = 0; step < 120; ++step)
+	{
+		tbWorld_Step(world, TIME_STEP, 4);
+		// The ball's centre in the drum's frame, and its depth past the nearest wall less its radius.
+		tbVec2 p = tbInvRotateVector(tbBody_GetRotation(drum), tbSub(tbBody_GetPosition(ball), tbBody_GetPosition(drum)));
+		float depth = fmaxf(fabsf(p.x), fabsf(p.y)) - (2.0f - 0.25f);
+		deepest = fmaxf(deepest, depth);
+		cr_assert(depth < 0.02f, "step %d: the ball's centre (%g, %g) in the drum's frame is %g m past its wall",
+				  step, (double)p.x, (double)p.y, (double)depth);
+	}
+	cr_assert(deepest > -0.1f, "the wall never reached the ball (deepest %g): the set-up is wrong", (double)deepest);
+	tbDestroyWorld(world);
+}

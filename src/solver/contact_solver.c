@@ -51,18 +51,13 @@
 /// against its order, one when swept along it.
 #define TB_PROPAGATION_SWEEPS 32
 
-// The solver index of a body, or `staticIndex` for bodies that are not in the awake set (static,
-// asleep, or a stale index). The check against awakeBodies makes a stale solverIndex harmless, so
-// nothing is written here (contacts are prepared on several workers; a static body has many).
+// The solver index of a body, or `staticIndex` for bodies that are not in the awake set (static or
+// asleep). The solver's bodies are the awake set in its order, gathered this step, and the awake
+// set does not change during the solve: the awake index is the solver index.
 static int tbGetSolverIndex(const tbWorld* world, int bodyId, int staticIndex)
 {
-	const tbBody* body = world->bodies + bodyId;
-	int index = body->awakeIndex;
-	if (index >= 0 && index < staticIndex && world->awakeBodies[index] == bodyId)
-	{
-		return index;
-	}
-	return staticIndex;
+	int index = world->bodies[bodyId].awakeIndex;
+	return index >= 0 && index < staticIndex ? index : staticIndex;
 }
 
 // Inverse effective mass along direction u for anchors rA, rB.

@@ -41,7 +41,7 @@ typedef struct tbSolverMotion
 _Static_assert(sizeof(tbSolverMotion) == 20, "tbSolverMotion is meant to be 20 bytes");
 
 /// What the contact preparation needs of a body, read once per contact end: 16 bytes in solver
-/// order, so that preparing a contact reads no tbBody beyond its solver index. Zero for
+/// order, so that preparing a contact reads no tbBody beyond its awake index. Zero for
 /// kinematic bodies and for the static stand-in (they do not respond); invI is 0 for a body with
 /// fixed rotation.
 typedef struct tbSolverMass

@@ -314,29 +314,38 @@ static void tbUpdateSpeculativeReach(tbBody* body)
 	body->speculativeReach = tbMaxFloat(TB_SPECULATIVE_REACH, body->safetyFactor * body->minExtent);
 }
 
+/// One shape's part of the body's extents about the centre of mass `center` (body frame).
+static void tbShapeExtents(const tbGeometry* g, tbVec2 center, float* minExtent, float* maxExtent)
+{
+	tbShapeProxy proxy = tbMakeShapeProxy(g);
+	float shapeMin = proxy.radius;
+	if (g->type == tb_polygonShape)
+	{
+		float inner = TB_HUGE;
+		for (int i = 0; i < g->polygon.count; ++i)
+		{
+			float d = tbDot(g->polygon.normals[i], tbSub(g->polygon.vertices[i], center));
+			inner = tbMinFloat(inner, d);
+		}
+		shapeMin = tbMaxFloat(inner, 0.0f) + g->polygon.radius;
+	}
+	*minExtent = shapeMin;
+	*maxExtent = 0.0f;
+	for (int i = 0; i < proxy.count; ++i)
+	{
+		*maxExtent = tbMaxFloat(*maxExtent, tbDistance(proxy.points[i], center) + proxy.radius);
+	}
+}
+
 void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtentOut, float* maxExtentOut)
 {
 	float minExtent = TB_HUGE, maxExtent = 0.0f;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
-		const tbGeometry* g = &world->shapes[id].geometry;
-		tbShapeProxy proxy = tbMakeShapeProxy(g);
-		float shapeMin = proxy.radius;
-		if (g->type == tb_polygonShape)
-		{
-			float inner = TB_HUGE;
-			for (int i = 0; i < g->polygon.count; ++i)
-			{
-				float d = tbDot(g->polygon.normals[i], tbSub(g->polygon.vertices[i], body->localCenter));
-				inner = tbMinFloat(inner, d);
-			}
-			shapeMin = tbMaxFloat(inner, 0.0f) + g->polygon.radius;
-		}
+		float shapeMin, shapeMax;
+		tbShapeExtents(&world->shapes[id].geometry, body->localCenter, &shapeMin, &shapeMax);
 		minExtent = tbMinFloat(minExtent, shapeMin);
-		for (int i = 0; i < proxy.count; ++i)
-		{
-			maxExtent = tbMaxFloat(maxExtent, tbDistance(proxy.points[i], body->localCenter) + proxy.radius);
-		}
+		maxExtent = tbMaxFloat(maxExtent, shapeMax);
 	}
 	*minExtentOut = minExtent < TB_HUGE ? minExtent : 0.0f;
 	*maxExtentOut = maxExtent;
@@ -353,6 +362,17 @@ void tbUpdateBodyDerived(tbBody* body)
 static void tbComputeExtents(tbWorld* world, tbBody* body)
 {
 	tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
+	tbUpdateSpeculativeReach(body);
+	tbUpdateBodyDerived(body);
+}
+
+void tbAddShapeExtents(tbBody* body, const tbGeometry* geometry)
+{
+	float shapeMin, shapeMax;
+	tbShapeExtents(geometry, body->localCenter, &shapeMin, &shapeMax);
+	// min and max are exact: the same as tbComputeBodyExtents over the shapes now on the body.
+	body->minExtent = body->shapeCount > 1 ? tbMinFloat(body->minExtent, shapeMin) : shapeMin;
+	body->maxExtent = body->shapeCount > 1 ? tbMaxFloat(body->maxExtent, shapeMax) : shapeMax;
 	tbUpdateSpeculativeReach(body);
 	tbUpdateBodyDerived(body);
 }

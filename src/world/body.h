@@ -12,8 +12,10 @@ typedef struct tbWorld tbWorld;
 /// what it touches into tbSolverBody arrays each step.
 typedef struct tbBody
 {
-	// Hot in the collide and island stages (speculative margin, anchors, contact-list walks):
-	// grouped at the front so a visit touches one or two cache lines.
+	// Hot in the collide and island stages (speculative margin, motion bounds, solver key, anchors,
+	// contact-list walks): grouped at the front, through solverMoves, so that a visit touches the
+	// first cache line only (allocations are line-aligned and the body three lines long; with
+	// double-precision positions the group spills into the second line).
 	tbWorldTransform transform; ///< body origin and rotation
 	tbPos center;				///< world centre of mass
 	tbVec2 linearVelocity;
@@ -72,6 +74,11 @@ typedef struct tbBody
 	bool allowFastRotation; ///< tbBodyDef::allowFastRotation: the solver does not cap its spin
 } tbBody;
 
+#if !defined(TUMBLE_DOUBLE_PRECISION)
+_Static_assert(offsetof(tbBody, solverMoves) < 64 && sizeof(tbBody) % 64 == 0,
+			   "tbBody: what the narrow phase reads of a body fills its first cache line, and bodies are whole lines");
+#endif
+
 /// The body's cached derived fields (originExtent, solverMoves) from its type, mass and extents:
 /// called wherever those change.
 void tbUpdateBodyDerived(tbBody* body);
@@ -99,6 +106,11 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body);
 /// surface (a conservative "thickness") and the largest distance to any point of any shape, over
 /// the body's shapes in list order (writes nothing: snapshot.c predicts the stored values with it).
 void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtent, float* maxExtent);
+/// A shape just linked to the body without a mass update (updateBodyMass false: a chain's segments)
+/// still counts in its extents, which bound how far its points move (the narrow phase's motion
+/// bounds, continuous collision, sleep): they grow to take it in, about the current centre. A shape
+/// removed without a mass update leaves them as they are, still bounds.
+void tbAddShapeExtents(tbBody* body, const tbGeometry* geometry);
 void tbWakeBody(tbWorld* world, tbBody* body);
 /// Close the holes bodies that left the awake set left in it; the step starts with it.
 void tbCompactAwakeSet(tbWorld* world);

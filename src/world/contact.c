@@ -1093,8 +1093,9 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 		int shapeBytes = firstLine ? 32 : (int)(offsetof(tbShape, geometry) + sizeof(tbGeometry));
 		tbPrefetch(world->shapes + ahead->shapeIdA, shapeBytes);
 		tbPrefetch(world->shapes + ahead->shapeIdB, shapeBytes);
-		tbPrefetch(world->bodies + ahead->edges[0].bodyId, 64);
-		tbPrefetch(world->bodies + ahead->edges[1].bodyId, 64);
+		int bodyBytes = (int)offsetof(tbBody, solverMoves) + 1; // the hot group at the front (body.h)
+		tbPrefetch(world->bodies + ahead->edges[0].bodyId, bodyBytes);
+		tbPrefetch(world->bodies + ahead->edges[1].bodyId, bodyBytes);
 	}
 	if (i + TB_PREFETCH_AHEAD / 2 < endIndex)
 	{

@@ -558,6 +558,10 @@ int tbAddShape(tbWorld* world, int bodyIndex, const tbShapeDef* def, const tbGeo
 	{
 		tbUpdateBodyMass(world, body);
 	}
+	else
+	{
+		tbAddShapeExtents(body, &shape->geometry);
+	}
 	return id;
 }
 

@@ -30,8 +30,7 @@
 // - the step cache (step_cache.h): every stage either rebuilds its lists or keeps the last step's,
 //   and keeping is allowed only when the rebuild would give the same lists, so a restored world
 //   starts with the cache invalidated (versions that match no stamp) and rebuilds;
-// - per-step scratch: a body's solver index (written for every awake body before it is read), a
-//   contact's gather stamp (set to one no coming step uses), a joint's solver view (written by its
+// - per-step scratch: a contact's gather stamp (set to one no coming step uses), a joint's solver view (written by its
 //   preparation), the step arena, the last step's events.
 //
 // Format (little-endian). A 32-byte header: "TBSN", version (2 bytes), precision (1: the build's
