@@ -14,8 +14,8 @@ typedef struct tbBody
 {
 	// Hot in the collide and island stages (speculative margin, motion bounds, solver key, anchors,
 	// contact-list walks): grouped at the front, through solverMoves, so that a visit touches the
-	// first cache line only (allocations are line-aligned and the body three lines long; with
-	// double-precision positions the group spills into the second line).
+	// first cache line only (allocations are line-aligned, a body three lines long on 64-bit
+	// targets; with double-precision positions the group spills into the second line).
 	tbWorldTransform transform; ///< body origin and rotation
 	tbPos center;				///< world centre of mass
 	tbVec2 linearVelocity;
@@ -75,8 +75,8 @@ typedef struct tbBody
 } tbBody;
 
 #if !defined(TUMBLE_DOUBLE_PRECISION)
-_Static_assert(offsetof(tbBody, solverMoves) < 64 && sizeof(tbBody) % 64 == 0,
-			   "tbBody: what the narrow phase reads of a body fills its first cache line, and bodies are whole lines");
+_Static_assert(offsetof(tbBody, solverMoves) < 64, "tbBody: what the narrow phase reads fits its first cache line");
+_Static_assert(sizeof(void*) != 8 || sizeof(tbBody) % 64 == 0, "tbBody: whole cache lines on 64-bit targets");
 #endif
 
 /// The body's cached derived fields (originExtent, solverMoves) from its type, mass and extents:
