@@ -7,6 +7,7 @@
 // growable array has reached its size (measured: the counts stop changing within 2 s; the warm-up
 // is 3 s).
 #include "core/arena.h"
+#include "core/core.h"
 #include "catalogue.h"
 #include "scene.h"
 
@@ -141,4 +142,45 @@ Test(arena, settled_scenes_step_without_allocating, .init = InstallCounter, .fin
 		}
 	}
 	cr_expect_eq(tbGetByteCount(), 0);
+}
+
+// The allocator hook hears each size rounded up to the alignment it is given, and the same size
+// when the block is freed, up to the largest size an int holds (2^31 - 1 bytes, which a snapshot
+// buffer may grow to): rounding it in int overflowed. The hook here hands out one static block
+// without touching it, so nothing that large is allocated.
+static size_t s_askedSize, s_freedSize;
+static int s_askedAlignment;
+static char s_block[64] __attribute__((aligned(64)));
+
+static void* RecordingAlloc(size_t size, int alignment)
+{
+	s_askedSize = size;
+	s_askedAlignment = alignment;
+	return s_block;
+}
+
+static void RecordingFree(void* memory, size_t size)
+{
+	cr_expect(memory == s_block);
+	s_freedSize = size;
+}
+
+Test(arena, the_hook_hears_sizes_rounded_up_to_the_alignment)
+{
+	tbSetAllocator(RecordingAlloc, RecordingFree);
+	int64_t before = tbGetByteCount();
+	int sizes[] = {1, 63, 64, 65, 2147483647};
+	for (int i = 0; i < 5; ++i)
+	{
+		void* p = tbAlloc(sizes[i]);
+		size_t a = (size_t)s_askedAlignment;
+		cr_expect(a >= 16 && a <= 64 && (a & (a - 1)) == 0, "alignment %d", s_askedAlignment);
+		cr_expect(s_askedSize % a == 0 && s_askedSize >= (size_t)sizes[i] && s_askedSize < (size_t)sizes[i] + a,
+				  "size %d asked as %zu", sizes[i], s_askedSize);
+		cr_expect(tbGetByteCount() == before + sizes[i]);
+		tbFree(p, sizes[i]);
+		cr_expect(s_freedSize == s_askedSize, "size %d freed as %zu, asked as %zu", sizes[i], s_freedSize, s_askedSize);
+	}
+	cr_expect(tbGetByteCount() == before);
+	tbSetAllocator(NULL, NULL);
 }

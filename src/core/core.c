@@ -77,16 +77,21 @@ int64_t tbGetByteCount(void)
 	return atomic_load(&s_byteCount);
 }
 
+/// The size rounded up to the alignment, so that aligned_alloc accepts it: in size_t, where an
+/// int's largest value still rounds up (in int it would overflow).
+static size_t tbRoundedSize(int size)
+{
+	return ((size_t)size + (TB_ALIGNMENT - 1)) & ~(size_t)(TB_ALIGNMENT - 1);
+}
+
 void* tbAlloc(int size)
 {
 	if (size <= 0)
 	{
 		return NULL;
 	}
-	// Round up to the alignment so aligned_alloc accepts the size.
-	int rounded = ((size - 1) | (TB_ALIGNMENT - 1)) + 1;
-	void* p = s_allocFcn != NULL ? s_allocFcn((size_t)rounded, TB_ALIGNMENT)
-								 : tbSystemAlignedAlloc(TB_ALIGNMENT, (size_t)rounded);
+	size_t rounded = tbRoundedSize(size);
+	void* p = s_allocFcn != NULL ? s_allocFcn(rounded, TB_ALIGNMENT) : tbSystemAlignedAlloc(TB_ALIGNMENT, rounded);
 	if (p == NULL)
 	{
 		fprintf(stderr, "tumble: out of memory allocating %d bytes\n", size);
@@ -105,8 +110,7 @@ void tbFree(void* memory, int size)
 	if (s_freeFcn != NULL)
 	{
 		// The hook hears the size its allocation was asked for: the same rounding as tbAlloc.
-		int rounded = ((size - 1) | (TB_ALIGNMENT - 1)) + 1;
-		s_freeFcn(memory, (size_t)rounded);
+		s_freeFcn(memory, tbRoundedSize(size));
 	}
 	else
 	{
