@@ -1065,14 +1065,9 @@ static const GameScene scenes[] = {
 static const GameScene sweepScene = {"sweep", 1, 120, 0.0, false, CreateFalling, StepPlain, NULL, StatsPlain, DestroyPlain};
 
 // ---------------------------------------------------------------------------------------------
-// Memory: the allocator hook counts live bytes. Each block carries its size in a 64-byte header
-// (Tumble's free hook is not told the size), so both engines are served by the same allocator.
-//
-// This is the part that is not a port by renaming: v3.2's hooks are
-//   void* b2AllocFcn(size_t size, int alignment); void b2FreeFcn(void* mem, size_t size);
-// Tumble's are
-//   void* tbAllocFcn(unsigned int size, int alignment); void tbFreeFcn(void* memory);
-// (v3.1's shapes), so each engine gets its own pair of signatures below.
+// Memory: the allocator hook counts live bytes. Each block carries its size in a 64-byte header,
+// so the count does not depend on the size the free hook is told; both engines take the same pair
+// of hooks (v3.2's signatures: void* (size_t size, int alignment), void (void* memory, size_t size)).
 
 static atomic_llong liveBytes;
 static atomic_llong peakBytes; ///< the most liveBytes has been since the last reset
