@@ -315,8 +315,8 @@ bool tbCheckRange(const char* function, const char* lowerName, float lower, cons
 tbWorldTransform tbJointWorldFrameA(const tbWorld* world, const tbJoint* joint);
 tbWorldTransform tbJointWorldFrameB(const tbWorld* world, const tbJoint* joint);
 
-// prismatic_joint.c: the geometry of a joint that slides along frame A's x-axis (prismatic and
-// wheel joints) for one solve: anchors, d = anchor B − anchor A, the axis, its normal and the
+// The geometry of a joint that slides along frame A's x-axis (prismatic and wheel joints, derived in
+// prismatic_joint.c) for one solve: anchors, d = anchor B − anchor A, the axis, its normal and the
 // lever arms a1 = (d + rA) × axis, a2 = rB × axis, s1 = (d + rA) × perp, s2 = rB × perp.
 typedef struct tbAxisFrame
 {
@@ -326,17 +326,74 @@ typedef struct tbAxisFrame
 	float translation; ///< m, axis·d
 } tbAxisFrame;
 
-tbAxisFrame tbMakeAxisFrame(const tbJoint* joint, const tbJointBodies* b);
+// Inline for the reason the helpers above are: the wheel joint's solve calls them up to six
+// times per sub-step, and as calls into prismatic_joint.c they cost a car's wheels half again
+// Box2D v3's wheel solve.
+static inline tbAxisFrame tbMakeAxisFrame(const tbJoint* joint, const tbJointBodies* b)
+{
+	tbAxisFrame g;
+	tbJointAnchors(joint, b, &g.rA, &g.rB, &g.d);
+	g.axis = tbRotateVector(b->sA->deltaRotation, tbRot_GetXAxis(joint->frameA.q));
+	g.perp = tbLeftPerp(g.axis);
+	tbVec2 leverA = tbAdd(g.d, g.rA);
+	g.a1 = tbCross(leverA, g.axis);
+	g.a2 = tbCross(g.rB, g.axis);
+	g.s1 = tbCross(leverA, g.perp);
+	g.s2 = tbCross(g.rB, g.perp);
+	g.translation = tbDot(g.axis, g.d);
+	return g;
+}
+
 /// Impulse `axial` along the axis and (perp, angular) across it and in angle, to both bodies.
-void tbApplyAxisImpulse(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axial, float perp,
-						float angular);
-/// Relative speed along the axis (m/s) and the effective mass along it (kg).
-float tbAxialSpeedOf(const tbJointBodies* b, const tbAxisFrame* g);
-float tbAxialMassOf(const tbJoint* joint, const tbAxisFrame* g);
+static inline void tbApplyAxisImpulse(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axial,
+									  float perp, float angular)
+{
+	tbVec2 P = tbAdd(tbMulSV(axial, g->axis), tbMulSV(perp, g->perp));
+	float LA = axial * g->a1 + perp * g->s1 + angular;
+	float LB = axial * g->a2 + perp * g->s2 + angular;
+	b->vA = tbMulSub(b->vA, joint->invMassA, P);
+	b->wA -= joint->invIA * LA;
+	b->vB = tbMulAdd(b->vB, joint->invMassB, P);
+	b->wB += joint->invIB * LB;
+}
+
+/// Relative speed along the axis (m/s).
+static inline float tbAxialSpeedOf(const tbJointBodies* b, const tbAxisFrame* g)
+{
+	return tbDot(g->axis, tbSub(b->vB, b->vA)) + g->a2 * b->wB - g->a1 * b->wA;
+}
+
+/// The effective mass along the axis (kg).
+static inline float tbAxialMassOf(const tbJoint* joint, const tbAxisFrame* g)
+{
+	float k = joint->invMassA + joint->invMassB + joint->invIA * g->a1 * g->a1 + joint->invIB * g->a2 * g->a2;
+	return k > 0.0f ? 1.0f / k : 0.0f;
+}
+
 /// A one-sided axial row: C = sign·(translation − limit) ≥ 0, accumulated impulse ≥ 0, speculative
 /// while C > 0, the joint's positional softness when violated in the biased pass.
-void tbSolveAxisLimit(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axialMass, float C, float sign,
-					  float* accumulated, const tbStepContext* context, bool useBias);
+static inline void tbSolveAxisLimit(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axialMass,
+									float C, float sign, float* accumulated, const tbStepContext* context,
+									bool useBias)
+{
+	tbSoftness soft = {0.0f, 1.0f, 0.0f};
+	float bias = 0.0f;
+	if (C > 0.0f)
+	{
+		bias = C * context->inv_h; // speculative
+	}
+	else if (useBias)
+	{
+		soft = joint->constraintSoftness;
+		bias = soft.biasRate * C;
+	}
+	float Cdot = sign * tbAxialSpeedOf(b, g);
+	float impulse = -soft.massScale * axialMass * (Cdot + bias) - soft.impulseScale * *accumulated;
+	float newImpulse = tbMaxFloat(*accumulated + impulse, 0.0f);
+	impulse = newImpulse - *accumulated;
+	*accumulated = newImpulse;
+	tbApplyAxisImpulse(joint, b, g, sign * impulse, 0.0f, 0.0f);
+}
 
 // Separation of a joint's frames (tbJoint_GetLinearSeparation, tbJoint_GetAngularSeparation): how far
 // the joint's rigid rows and active limits are from holding now, from the bodies' transforms (m and

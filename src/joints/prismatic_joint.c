@@ -80,46 +80,6 @@ void tbPreparePrismaticJoint(tbJoint* joint, const tbStepContext* context)
 	}
 }
 
-// The axis geometry and its rows, shared with the wheel joint (joint.h).
-
-tbAxisFrame tbMakeAxisFrame(const tbJoint* joint, const tbJointBodies* b)
-{
-	tbAxisFrame g;
-	tbJointAnchors(joint, b, &g.rA, &g.rB, &g.d);
-	g.axis = tbRotateVector(b->sA->deltaRotation, tbRot_GetXAxis(joint->frameA.q));
-	g.perp = tbLeftPerp(g.axis);
-	tbVec2 leverA = tbAdd(g.d, g.rA);
-	g.a1 = tbCross(leverA, g.axis);
-	g.a2 = tbCross(g.rB, g.axis);
-	g.s1 = tbCross(leverA, g.perp);
-	g.s2 = tbCross(g.rB, g.perp);
-	g.translation = tbDot(g.axis, g.d);
-	return g;
-}
-
-void tbApplyAxisImpulse(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axial, float perp,
-							   float angular)
-{
-	tbVec2 P = tbAdd(tbMulSV(axial, g->axis), tbMulSV(perp, g->perp));
-	float LA = axial * g->a1 + perp * g->s1 + angular;
-	float LB = axial * g->a2 + perp * g->s2 + angular;
-	b->vA = tbMulSub(b->vA, joint->invMassA, P);
-	b->wA -= joint->invIA * LA;
-	b->vB = tbMulAdd(b->vB, joint->invMassB, P);
-	b->wB += joint->invIB * LB;
-}
-
-float tbAxialSpeedOf(const tbJointBodies* b, const tbAxisFrame* g)
-{
-	return tbDot(g->axis, tbSub(b->vB, b->vA)) + g->a2 * b->wB - g->a1 * b->wA;
-}
-
-float tbAxialMassOf(const tbJoint* joint, const tbAxisFrame* g)
-{
-	float k = joint->invMassA + joint->invMassB + joint->invIA * g->a1 * g->a1 + joint->invIB * g->a2 * g->a2;
-	return k > 0.0f ? 1.0f / k : 0.0f;
-}
-
 void tbWarmStartPrismaticJoint(tbJoint* joint, tbStepContext* context)
 {
 	const tbPrismaticJoint* p = &joint->prismatic;
@@ -128,28 +88,6 @@ void tbWarmStartPrismaticJoint(tbJoint* joint, tbStepContext* context)
 	float axial = p->springImpulse + p->motorImpulse + p->lowerImpulse - p->upperImpulse;
 	tbApplyAxisImpulse(joint, &b, &g, axial, p->impulse.x, p->impulse.y);
 	tbStoreJointBodies(joint, &b);
-}
-
-void tbSolveAxisLimit(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axialMass, float C,
-							 float sign, float* accumulated, const tbStepContext* context, bool useBias)
-{
-	tbSoftness soft = {0.0f, 1.0f, 0.0f};
-	float bias = 0.0f;
-	if (C > 0.0f)
-	{
-		bias = C * context->inv_h; // speculative
-	}
-	else if (useBias)
-	{
-		soft = joint->constraintSoftness;
-		bias = soft.biasRate * C;
-	}
-	float Cdot = sign * tbAxialSpeedOf(b, g);
-	float impulse = -soft.massScale * axialMass * (Cdot + bias) - soft.impulseScale * *accumulated;
-	float newImpulse = tbMaxFloat(*accumulated + impulse, 0.0f);
-	impulse = newImpulse - *accumulated;
-	*accumulated = newImpulse;
-	tbApplyAxisImpulse(joint, b, g, sign * impulse, 0.0f, 0.0f);
 }
 
 static void tbSolvePrismaticAxis(tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, const tbStepContext* context,
