@@ -733,36 +733,53 @@ typedef struct tbJointOrderCache
 	int colorStart[TB_GRAPH_COLOR_COUNT + 2];
 } tbJointOrderCache;
 
-static uint64_t tbMixFingerprint(uint64_t h, uint32_t value)
+/// One word into a stream of the fingerprint: for a given h, distinct words give distinct results.
+static inline uint64_t tbMixFingerprint(uint64_t h, uint64_t value)
 {
 	h = (h ^ value) * 0x9E3779B97F4A7C15ull;
 	return h ^ (h >> 29);
 }
 
+/// A joint's share of the fingerprint: its id, solver bodies, which sides move, its equality rows
+/// and kind, and the inverse masses (which decide the trees that need an exact solve, joint_tree.c:
+/// the tree build's verdict is kept under this fingerprint), mixed into h.
+static inline uint64_t tbMixJoint(uint64_t h, const tbWorld* world, int jointId)
+{
+	const tbJoint* joint = world->joints + jointId;
+	uint32_t bits = (tbJointMovesA(joint) ? 1u : 0u) | (tbJointMovesB(joint) ? 2u : 0u) |
+					((uint32_t)tbJointEqualityRowCount(joint) << 2) | ((uint32_t)joint->type << 4);
+	uint32_t massA, massB;
+	memcpy(&massA, &joint->invMassA, sizeof(massA));
+	memcpy(&massB, &joint->invMassB, sizeof(massB));
+	h = tbMixFingerprint(h, (uint64_t)(uint32_t)jointId | (uint64_t)(uint32_t)joint->indexA << 32);
+	h = tbMixFingerprint(h, (uint64_t)(uint32_t)joint->indexB | (uint64_t)bits << 32);
+	return tbMixFingerprint(h, (uint64_t)massA | (uint64_t)massB << 32);
+}
+
+// The joints are mixed into four streams, joint i into stream i mod 4, joined at the end: each mix
+// waits on the multiply before it, and in one stream that chain through every joint was the
+// longest part of ordering a large grid's joints; four streams run side by side.
 static uint64_t tbJointOrderFingerprint(const tbStepContext* context)
 {
 	const tbWorld* world = context->world;
-	uint64_t h = tbMixFingerprint(0x243F6A8885A308D3ull, (uint32_t)world->cache.solverJointCount);
-	h = tbMixFingerprint(h, (uint32_t)context->bodyCount);
+	const int* joints = world->cache.solverJoints;
+	int n = world->cache.solverJointCount;
+	uint64_t h = tbMixFingerprint(0x243F6A8885A308D3ull, (uint64_t)(uint32_t)n | (uint64_t)(uint32_t)context->bodyCount << 32);
 	h = tbMixFingerprint(h, world->def.enableJointTrees ? 1u : 0u);
-	for (int i = 0; i < world->cache.solverJointCount; ++i)
+	uint64_t s0 = h, s1 = h ^ 0x13198A2E03707344ull, s2 = h ^ 0xA4093822299F31D0ull, s3 = h ^ 0x082EFA98EC4E6C89ull;
+	int i = 0;
+	for (; i + 4 <= n; i += 4)
 	{
-		const tbJoint* joint = world->joints + world->cache.solverJoints[i];
-		uint32_t bits = (tbJointMovesA(joint) ? 1u : 0u) | (tbJointMovesB(joint) ? 2u : 0u) |
-						((uint32_t)tbJointEqualityRowCount(joint) << 2) | ((uint32_t)joint->type << 4);
-		h = tbMixFingerprint(h, (uint32_t)world->cache.solverJoints[i]);
-		h = tbMixFingerprint(h, (uint32_t)joint->indexA);
-		h = tbMixFingerprint(h, (uint32_t)joint->indexB);
-		h = tbMixFingerprint(h, bits);
-		// The masses decide which trees need an exact solve (joint_tree.c): the tree build's verdict
-		// is kept under this fingerprint.
-		uint32_t massA, massB;
-		memcpy(&massA, &joint->invMassA, sizeof(massA));
-		memcpy(&massB, &joint->invMassB, sizeof(massB));
-		h = tbMixFingerprint(h, massA);
-		h = tbMixFingerprint(h, massB);
+		s0 = tbMixJoint(s0, world, joints[i]);
+		s1 = tbMixJoint(s1, world, joints[i + 1]);
+		s2 = tbMixJoint(s2, world, joints[i + 2]);
+		s3 = tbMixJoint(s3, world, joints[i + 3]);
 	}
-	return h;
+	for (; i < n; ++i)
+	{
+		s0 = tbMixJoint(s0, world, joints[i]);
+	}
+	return tbMixFingerprint(tbMixFingerprint(tbMixFingerprint(s0, s1), s2), s3);
 }
 
 static bool tbReuseJointOrder(tbStepContext* context, uint64_t fingerprint)
