@@ -47,6 +47,7 @@
 #include "world/recording.h"
 
 #include <float.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -990,19 +991,51 @@ static void tbPrepareJoint(tbJoint* joint, const tbStepContext* context)
 	}
 }
 
+/// Whether the solver takes the joint this step: in use, not a filter joint, and joining an awake
+/// dynamic body (joined bodies wake together, so the other side is awake too, or static, or a
+/// resting kinematic body).
+static bool tbIsSolverJoint(const tbWorld* world, const tbJoint* joint)
+{
+	return joint->inUse && joint->type != tb_filterJoint &&
+		   (tbIsAwakeDynamic(world->bodies + joint->edges[0].bodyId) ||
+			tbIsAwakeDynamic(world->bodies + joint->edges[1].bodyId));
+}
+
+typedef struct tbPrepareJointsContext
+{
+	const tbStepContext* context;
+	uint8_t* taken;		   ///< a byte per joint slot: 1 when the solver takes it
+	atomic_int thresholds; ///< some joint taken has a force or torque threshold (tbFinishJoints)
+} tbPrepareJointsContext;
+
+/// Whether the joint reports joint events (tbFinishJoints): it has a finite threshold.
+static bool tbHasJointThreshold(const tbJoint* joint)
+{
+	return !(joint->forceThreshold >= FLT_MAX && joint->torqueThreshold >= FLT_MAX);
+}
+
+/// Joint slots [startIndex, endIndex) in id order: each one the solver takes is prepared (writing
+/// only itself) and marked.
 static void tbPrepareJointsTask(int startIndex, int endIndex, uint32_t workerIndex, void* taskContext)
 {
 	(void)workerIndex;
-	const tbStepContext* context = taskContext;
-	tbWorld* world = context->world;
-	const int* ids = world->cache.solverJoints;
-	for (int i = startIndex; i < endIndex; ++i)
+	tbPrepareJointsContext* task = taskContext;
+	tbWorld* world = task->context->world;
+	bool thresholds = false;
+	for (int id = startIndex; id < endIndex; ++id)
 	{
-		if (i + TB_PREFETCH_AHEAD < endIndex)
+		tbJoint* joint = world->joints + id;
+		bool taken = tbIsSolverJoint(world, joint);
+		if (taken)
 		{
-			tbPrefetch(world->joints + ids[i + TB_PREFETCH_AHEAD], (int)sizeof(tbJoint));
+			tbPrepareJoint(joint, task->context);
+			thresholds = thresholds || tbHasJointThreshold(joint);
 		}
-		tbPrepareJoint(world->joints + ids[i], context);
+		task->taken[id] = taken ? 1u : 0u;
+	}
+	if (thresholds)
+	{
+		atomic_store_explicit(&task->thresholds, 1, memory_order_relaxed);
 	}
 }
 
@@ -1017,25 +1050,25 @@ void tbPrepareJoints(tbStepContext* context)
 	{
 		return;
 	}
-	// The pool in id order: the joints with an awake dynamic body. Joined bodies wake together, so
-	// the other side is awake too, or static, or a resting kinematic body. Then each is prepared,
-	// on the workers (each writes only its joint): on one thread this was a large part of a
-	// two-worker step for a large grid of joints.
-	TB_ARRAY_RESERVE(world->cache.solverJoints, world->cache.solverJointCapacity, world->jointPool.highWater);
+	// One pass over the pool in id order, on the workers: each joint the solver takes is prepared
+	// and marked; then the marked ids are listed in id order on the caller. On one thread the pass
+	// was a large part of a two-worker step for a large grid of joints.
+	int slots = world->jointPool.highWater;
+	TB_ARRAY_RESERVE(world->cache.solverJoints, world->cache.solverJointCapacity, slots);
+	tbPrepareJointsContext task;
+	task.context = context;
+	task.taken = tbArenaAlloc(&world->stepArena, slots);
+	atomic_init(&task.thresholds, 0);
+	tbParallelFor(&world->def, tbPrepareJointsTask, slots, TB_JOINTS_PER_TASK, &task);
+	context->jointThresholds = atomic_load_explicit(&task.thresholds, memory_order_relaxed) != 0;
+	int* ids = world->cache.solverJoints;
 	int count = 0;
-	for (int id = 0; id < world->jointPool.highWater; ++id)
+	for (int id = 0; id < slots; ++id)
 	{
-		const tbJoint* joint = world->joints + id;
-		if (joint->inUse == false || joint->type == tb_filterJoint ||
-			(tbIsAwakeDynamic(world->bodies + joint->edges[0].bodyId) == false &&
-			 tbIsAwakeDynamic(world->bodies + joint->edges[1].bodyId) == false))
-		{
-			continue;
-		}
-		world->cache.solverJoints[count++] = id;
+		ids[count] = id;
+		count += task.taken[id];
 	}
 	world->cache.solverJointCount = count;
-	tbParallelFor(&world->def, tbPrepareJointsTask, count, TB_JOINTS_PER_TASK, context);
 }
 
 // Joints are visited in solve order, colour by colour, so their 272-byte records are scattered
@@ -1258,10 +1291,14 @@ void tbFinishJoints(tbStepContext* context)
 {
 	tbWorld* world = context->world;
 	world->jointInvH = context->inv_h;
+	if (context->jointThresholds == false)
+	{
+		return; // no joint taken this step can report (most worlds): no walk over every joint
+	}
 	for (int i = 0; i < world->cache.solverJointCount; ++i)
 	{
 		tbJoint* joint = world->joints + world->cache.solverJoints[i];
-		if (joint->forceThreshold >= FLT_MAX && joint->torqueThreshold >= FLT_MAX)
+		if (tbHasJointThreshold(joint) == false)
 		{
 			continue;
 		}

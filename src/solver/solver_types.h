@@ -271,6 +271,7 @@ typedef struct tbStepContext
 	// joints that found no colour (solved alone, after the colours).
 	int jointSmallCount;
 	int* jointUnitStart; ///< step arena
+	bool jointThresholds; ///< some joint of this step has a force or torque threshold (joint events)
 	int jointUnitCount;
 	int jointColorStart[TB_GRAPH_COLOR_COUNT + 2];
 	int jointColorCount; ///< groups in use, the overflow group included when it is not empty
