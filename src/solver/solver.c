@@ -68,6 +68,12 @@ static void tbGatherBodiesTask(int start, int end, uint32_t workerIndex, void* t
 	float h = context->h;
 	for (int i = start; i < end; ++i)
 	{
+		// The awake list is in waking order, not memory order: ask for the body a few ahead (its
+		// three lines: pose and velocity, mass and forces, damping and flags are all read here).
+		if (i + TB_PREFETCH_AHEAD < end)
+		{
+			tbPrefetch(world->bodies + world->awakeBodies[i + TB_PREFETCH_AHEAD], (int)sizeof(tbBody));
+		}
 		tbBody* body = world->bodies + world->awakeBodies[i];
 		body->center0 = body->center;
 		body->rotation0 = body->transform.q;
@@ -145,6 +151,10 @@ static void tbScatterBodiesTask(int start, int end, uint32_t workerIndex, void* 
 	int fastCount = 0;
 	for (int i = start; i < end; ++i)
 	{
+		if (i + TB_PREFETCH_AHEAD < end)
+		{
+			tbPrefetch(world->bodies + world->awakeBodies[i + TB_PREFETCH_AHEAD], (int)sizeof(tbBody));
+		}
 		tbBody* body = world->bodies + world->awakeBodies[i];
 		tbSolverBody* sb = context->bodies + i;
 		if (context->linearLocks != NULL && context->linearLocks[i] != 0)
