@@ -934,7 +934,12 @@ static int tbWriteBatchLane(const tbStepContext* context, const tbLaneBatch* bat
 /// block by block instead, each block's contacts read where they lie and the block written a row at
 /// a time (Box2D v3's order, whose contacts are stored by colour): the same bits and fewer
 /// instructions, but slower steps on the pyramids, the scattered reads of the contacts costing more
-/// than the row stores save. The inputs are
+/// than the row stores save. Also rejected, both giving the same bits and neither a faster step on
+/// the pyramids: reading in id order but holding each colour's block until its lanes are all met,
+/// then writing it a row at a time (nearly every block went whole); and, when the last step's
+/// colouring and blocks are kept, refreshing only what changes in a recycled contact's lane (its
+/// separations, impulses, friction row and softness). The preparation waits on memory, the contacts
+/// read and the blocks written, more than on its arithmetic or its stores. The inputs are
 /// read as rows of four floats and transposed (tbLoadBatchRows): the two bodies' masses and
 /// velocities, the manifold's normal, each point's anchors and each point's separation and
 /// impulses. Returns a bit per lane, set where a point approaches at the restitution threshold or
