@@ -1274,6 +1274,58 @@ static Scene* BuildBallPile(void)
 	return scene;
 }
 
+/// Game-scale falling bodies (the game benchmarks' falling_1000, tumble-bench-games, without its
+/// rolling resistance): 1,000 bodies about a metre across (boxes of half size 0.4, circles of
+/// radius 0.45, capsules 0.7 m long of radius 0.25, in turn; density 1, friction 0.6) in rows 1.25 m
+/// apart from y = 3, x jittered by up to 0.1 m and turned at random, falling onto a 125 m floor
+/// between 20 m walls and coming to rest in a pile about six deep. The jitter and angles come from a
+/// fixed integer sequence, so the scene is the same everywhere.
+static Scene* BuildFallingMix(void)
+{
+	Scene* scene = Scene_Create();
+	scene->steps = 240;
+	const int count = 1000;
+	const float width = 125.0f, wallHeight = 20.0f, spacing = 1.25f;
+	int ground = Scene_AddBody(scene, tb_staticBody, tbVec2_zero, 0.0f);
+	memcpy(scene->bodies[ground].name, "ground", 7);
+	tbGeometry floor = Scene_MakeBoxGeometry(0.5f * width + 1.0f, 0.5f, V(0.0f, -0.5f), 0.0f);
+	Scene_AddGeometry(scene, ground, &floor, 1.0f, 0.6f);
+	for (int side = -1; side <= 1; side += 2)
+	{
+		tbGeometry wall =
+			Scene_MakeBoxGeometry(0.5f, 0.5f * wallHeight, V((float)side * (0.5f * width + 0.5f), 0.5f * wallHeight), 0.0f);
+		Scene_AddGeometry(scene, ground, &wall, 1.0f, 0.6f);
+	}
+	int columns = (int)(width / spacing) - 1;
+	uint32_t state = 12345u;
+	for (int i = 0; i < count; ++i)
+	{
+		// Numerical Recipes' linear congruential sequence, its top 24 bits as a fraction in [0, 1).
+		state = 1664525u * state + 1013904223u;
+		float jitter = (float)(state >> 8) / 16777216.0f;
+		state = 1664525u * state + 1013904223u;
+		float turn = (float)(state >> 8) / 16777216.0f;
+		float x = -0.5f * width + spacing * (float)(i % columns + 1) + 0.2f * jitter - 0.1f;
+		float y = 3.0f + spacing * (float)(i / columns);
+		int body = Scene_AddBody(scene, tb_dynamicBody, V(x, y), TB_PI * (2.0f * turn - 1.0f));
+		tbGeometry shape;
+		switch (i % 3)
+		{
+			case 0:
+				shape = Scene_MakeBoxGeometry(0.4f, 0.4f, tbVec2_zero, 0.0f);
+				break;
+			case 1:
+				shape = Scene_MakeCircleGeometry(tbVec2_zero, 0.45f);
+				break;
+			default:
+				shape = Scene_MakeCapsuleGeometry(V(-0.35f, 0.0f), V(0.35f, 0.0f), 0.25f);
+				break;
+		}
+		Scene_AddGeometry(scene, body, &shape, 1.0f, 0.6f);
+	}
+	return scene;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Box2D v3's rain, exactly: its human and its spawn schedule
 
@@ -1495,6 +1547,9 @@ static const CatalogueEntry s_entries[] = {
 	 BuildPlatformer},
 	{"ball_pile", "4,000 balls of radius 0.25 m dropped into a 40 m open box (the spatial hash's case)",
 	 BuildBallPile},
+	{"falling_mix", "1,000 boxes, circles and capsules about a metre across dropped in rows onto a 125 m floor "
+					"between walls (the game benchmarks' falling_1000, without rolling resistance)",
+	 BuildFallingMix},
 	{"loop_the_loop", "two frictionless balls in vertical 5 m loops at 1.1 and 0.9 times the closed-form speed "
 					  "sqrt(5 g (R - r)) that just reaches the top",
 	 BuildLoopTheLoop},

@@ -224,7 +224,8 @@ Test(scene, catalogue_counts_follow_the_set_ups)
 	} expected[] = {{"pyramid", 210, 300},		 {"card_house", 40, 600}, {"large_pyramid", 5050, 500},
 					{"many_pyramids", 22000, 200}, {"tumbler", 2025, 750},	{"smash", 9601, 300},
 					{"confined", 625, 600},		   {"spinner", 6076, 1000}, {"newtons_cradle", 6, 180},
-					{"washer", 8100, 500},		   {"junkyard", 8000, 800}, {"compounds", 3000, 500}};
+					{"washer", 8100, 500},		   {"junkyard", 8000, 800}, {"compounds", 3000, 500},
+					{"falling_mix", 1000, 240}};
 	for (size_t i = 0; i < sizeof(expected) / sizeof(expected[0]); ++i)
 	{
 		Scene* scene = Catalogue_Build(expected[i].name);
