@@ -327,8 +327,7 @@ typedef struct tbAxisFrame
 } tbAxisFrame;
 
 // Inline for the reason the helpers above are: the wheel joint's solve calls them up to six
-// times per sub-step, and as calls into prismatic_joint.c they cost a car's wheels half again
-// Box2D v3's wheel solve.
+// times a pass, each a few multiplies.
 static inline tbAxisFrame tbMakeAxisFrame(const tbJoint* joint, const tbJointBodies* b)
 {
 	tbAxisFrame g;
