@@ -456,6 +456,35 @@ Test(joint, constraint_force_holds_the_weight)
 	tbDestroyWorld(world);
 }
 
+// Joint events are looked for only in steps whose joints include one with a threshold
+// (tbFinishJoints): a threshold set between steps on a joint made without one must be seen at the
+// next step, and one lifted back to FLT_MAX must end the events. The bob's load is m·g = 30 N.
+Test(joint, a_threshold_set_between_steps_reports_at_the_next_step)
+{
+	tbWorldId world = CreateWorld(tbMakeVec2(0.0f, -10.0f));
+	tbBodyId ground = CreateBody(world, tb_staticBody, tbVec2_zero);
+	tbBodyId bob = CreateDiscOfMass(world, tbMakeVec2(0.0f, -1.0f), 0.1f, 3.0f);
+	tbBody_EnableSleep(bob, false);
+	tbDistanceJointDef def = tbDefaultDistanceJointDef();
+	def.base.bodyIdA = ground;
+	def.base.bodyIdB = bob;
+	tbJointId joint = tbCreateDistanceJoint(world, &def);
+	for (int i = 0; i < 60; ++i)
+	{
+		tbWorld_Step(world, DT, SUB_STEPS);
+		cr_assert_eq(tbWorld_GetJointEvents(world).count, 0, "step %d: no threshold, no event", i);
+	}
+	tbJoint_SetForceThreshold(joint, 29.0f);
+	tbWorld_Step(world, DT, SUB_STEPS);
+	tbJointEvents events = tbWorld_GetJointEvents(world);
+	cr_assert_eq(events.count, 1, "the 30 N load passes the 29 N threshold set before this step");
+	cr_expect(TB_ID_EQUALS(events.jointEvents[0].jointId, joint));
+	tbJoint_SetForceThreshold(joint, FLT_MAX);
+	tbWorld_Step(world, DT, SUB_STEPS);
+	cr_expect_eq(tbWorld_GetJointEvents(world).count, 0, "the threshold lifted: no event");
+	tbDestroyWorld(world);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bookkeeping
 
