@@ -561,13 +561,8 @@ Test(chain, a_turning_chain_pushes_what_it_meets)
 	def.isLoop = true;
 	tbCreateChain(drum, &def);
 
-	tbBodyDef ballDef = tbDefaultBodyDef();
-	ballDef.type = tb_dynamicBody;
-	ballDef.position = tbMakeVec2(1.5f, 1.0f);
-	tbBodyId ball = tbCreateBody(world, &ballDef);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbCircle circle = {{0.0f, 0.0f}, 0.25f};
-	tbCreateCircleShape(ball, &shapeDef, &circle);
+	tbBodyId ball;
+	CreateBall(world, tbMakeVec2(1.5f, 1.0f), tbVec2_zero, 0.25f, NULL, &ball);
 
 	float deepest = 0.0f;
 	for (int step = 0; step < 120; ++step)

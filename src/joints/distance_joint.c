@@ -117,26 +117,12 @@ static float tbAxialSpeed(const tbJointBodies* b, tbVec2 rA, tbVec2 rB, tbVec2 a
 	return tbDot(dv, axis);
 }
 
-// A one-sided row along sign·axis: C ≥ 0, accumulated λ ≥ 0.
+// A one-sided row along sign·axis: C ≥ 0 (tbOneSidedImpulse).
 static void tbSolveLengthLimit(tbJoint* joint, tbJointBodies* b, tbVec2 rA, tbVec2 rB, tbVec2 axis, float C,
 							   float sign, float* accumulated, const tbStepContext* context, bool useBias)
 {
-	tbSoftness soft = {0.0f, 1.0f, 0.0f};
-	float bias = 0.0f;
-	if (C > 0.0f)
-	{
-		bias = C * context->inv_h; // speculative
-	}
-	else if (useBias)
-	{
-		soft = joint->constraintSoftness;
-		bias = soft.biasRate * C;
-	}
 	float Cdot = sign * tbAxialSpeed(b, rA, rB, axis);
-	float impulse = -soft.massScale * joint->distance.axialMass * (Cdot + bias) - soft.impulseScale * *accumulated;
-	float newImpulse = tbMaxFloat(*accumulated + impulse, 0.0f);
-	impulse = newImpulse - *accumulated;
-	*accumulated = newImpulse;
+	float impulse = tbOneSidedImpulse(joint, C, Cdot, joint->distance.axialMass, accumulated, context, useBias);
 	tbApplyJointImpulse(joint, b, rA, rB, tbMulSV(sign * impulse, axis), 0.0f);
 }
 

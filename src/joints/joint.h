@@ -369,28 +369,37 @@ static inline float tbAxialMassOf(const tbJoint* joint, const tbAxisFrame* g)
 	return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-/// A one-sided axial row: C = sign·(translation − limit) ≥ 0, accumulated impulse ≥ 0, speculative
-/// while C > 0, the joint's positional softness when violated in the biased pass.
-static inline void tbSolveAxisLimit(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axialMass,
-									float C, float sign, float* accumulated, const tbStepContext* context,
-									bool useBias)
+/// A one-sided row (a limit: C ≥ 0, its accumulated impulse ≥ 0) with effective mass `mass` and
+/// velocity Cdot along it: speculative while C > 0 (the bias C/h lets the gap close within this
+/// sub-step, no further), the joint's positional softness when violated in the biased pass, rigid
+/// in the relaxing pass. Accumulates into *accumulated and returns the impulse to apply.
+static inline float tbOneSidedImpulse(const tbJoint* joint, float C, float Cdot, float mass, float* accumulated,
+									  const tbStepContext* context, bool useBias)
 {
 	tbSoftness soft = {0.0f, 1.0f, 0.0f};
 	float bias = 0.0f;
 	if (C > 0.0f)
 	{
-		bias = C * context->inv_h; // speculative
+		bias = C * context->inv_h;
 	}
 	else if (useBias)
 	{
 		soft = joint->constraintSoftness;
 		bias = soft.biasRate * C;
 	}
-	float Cdot = sign * tbAxialSpeedOf(b, g);
-	float impulse = -soft.massScale * axialMass * (Cdot + bias) - soft.impulseScale * *accumulated;
+	float impulse = -soft.massScale * mass * (Cdot + bias) - soft.impulseScale * *accumulated;
 	float newImpulse = tbMaxFloat(*accumulated + impulse, 0.0f);
 	impulse = newImpulse - *accumulated;
 	*accumulated = newImpulse;
+	return impulse;
+}
+
+/// A one-sided axial row: C = sign·(translation − limit) ≥ 0 (tbOneSidedImpulse).
+static inline void tbSolveAxisLimit(const tbJoint* joint, tbJointBodies* b, const tbAxisFrame* g, float axialMass,
+									float C, float sign, float* accumulated, const tbStepContext* context,
+									bool useBias)
+{
+	float impulse = tbOneSidedImpulse(joint, C, sign * tbAxialSpeedOf(b, g), axialMass, accumulated, context, useBias);
 	tbApplyAxisImpulse(joint, b, g, sign * impulse, 0.0f, 0.0f);
 }
 

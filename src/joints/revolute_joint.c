@@ -131,22 +131,8 @@ static float tbRevoluteAngle(const tbJoint* joint, const tbJointBodies* b)
 static void tbSolveAngleLimit(tbJoint* joint, tbJointBodies* b, float C, float sign, float* accumulated,
 							  const tbStepContext* context, bool useBias)
 {
-	tbSoftness soft = {0.0f, 1.0f, 0.0f};
-	float bias = 0.0f;
-	if (C > 0.0f)
-	{
-		bias = C * context->inv_h; // speculative: may close the gap in this sub-step, no more
-	}
-	else if (useBias)
-	{
-		soft = joint->constraintSoftness;
-		bias = soft.biasRate * C;
-	}
 	float Cdot = sign * (b->wB - b->wA);
-	float impulse = -soft.massScale * joint->revolute.axialMass * (Cdot + bias) - soft.impulseScale * *accumulated;
-	float newImpulse = tbMaxFloat(*accumulated + impulse, 0.0f);
-	impulse = newImpulse - *accumulated;
-	*accumulated = newImpulse;
+	float impulse = tbOneSidedImpulse(joint, C, Cdot, joint->revolute.axialMass, accumulated, context, useBias);
 	b->wA -= joint->invIA * sign * impulse;
 	b->wB += joint->invIB * sign * impulse;
 }
