@@ -314,8 +314,9 @@ static void tbUpdateSpeculativeReach(tbBody* body)
 	body->speculativeReach = tbMaxFloat(TB_SPECULATIVE_REACH, body->safetyFactor * body->minExtent);
 }
 
-/// One shape's part of the body's extents about the centre of mass `center` (body frame).
-static void tbShapeExtents(const tbGeometry* g, tbVec2 center, float* minExtent, float* maxExtent)
+/// One shape's part of the body's extents about the centre of mass `center` (body frame): the
+/// smallest distance to its surface, the largest to its surface and the largest to its core.
+static void tbShapeExtents(const tbGeometry* g, tbVec2 center, float* minExtent, float* maxExtent, float* coreExtent)
 {
 	tbShapeProxy proxy = tbMakeShapeProxy(g);
 	float shapeMin = proxy.radius;
@@ -329,12 +330,14 @@ static void tbShapeExtents(const tbGeometry* g, tbVec2 center, float* minExtent,
 		}
 		shapeMin = tbMaxFloat(inner, 0.0f) + g->polygon.radius;
 	}
-	*minExtent = shapeMin;
-	*maxExtent = 0.0f;
+	float core = 0.0f;
 	for (int i = 0; i < proxy.count; ++i)
 	{
-		*maxExtent = tbMaxFloat(*maxExtent, tbDistance(proxy.points[i], center) + proxy.radius);
+		core = tbMaxFloat(core, tbDistance(proxy.points[i], center));
 	}
+	*minExtent = shapeMin;
+	*maxExtent = core + proxy.radius;
+	*coreExtent = core;
 }
 
 void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtentOut, float* maxExtentOut)
@@ -342,13 +345,25 @@ void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minEx
 	float minExtent = TB_HUGE, maxExtent = 0.0f;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
-		float shapeMin, shapeMax;
-		tbShapeExtents(&world->shapes[id].geometry, body->localCenter, &shapeMin, &shapeMax);
+		float shapeMin, shapeMax, shapeCore;
+		tbShapeExtents(&world->shapes[id].geometry, body->localCenter, &shapeMin, &shapeMax, &shapeCore);
 		minExtent = tbMinFloat(minExtent, shapeMin);
 		maxExtent = tbMaxFloat(maxExtent, shapeMax);
 	}
 	*minExtentOut = minExtent < TB_HUGE ? minExtent : 0.0f;
 	*maxExtentOut = maxExtent;
+}
+
+float tbComputeBodyCoreExtent(const tbWorld* world, const tbBody* body)
+{
+	float coreExtent = 0.0f;
+	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
+	{
+		float shapeMin, shapeMax, shapeCore;
+		tbShapeExtents(&world->shapes[id].geometry, body->localCenter, &shapeMin, &shapeMax, &shapeCore);
+		coreExtent = tbMaxFloat(coreExtent, shapeCore);
+	}
+	return coreExtent;
 }
 
 void tbUpdateBodyDerived(tbBody* body)
@@ -362,17 +377,19 @@ void tbUpdateBodyDerived(tbBody* body)
 static void tbComputeExtents(tbWorld* world, tbBody* body)
 {
 	tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
+	body->coreExtent = tbComputeBodyCoreExtent(world, body);
 	tbUpdateSpeculativeReach(body);
 	tbUpdateBodyDerived(body);
 }
 
 void tbAddShapeExtents(tbBody* body, const tbGeometry* geometry)
 {
-	float shapeMin, shapeMax;
-	tbShapeExtents(geometry, body->localCenter, &shapeMin, &shapeMax);
+	float shapeMin, shapeMax, shapeCore;
+	tbShapeExtents(geometry, body->localCenter, &shapeMin, &shapeMax, &shapeCore);
 	// min and max are exact: the same as tbComputeBodyExtents over the shapes now on the body.
 	body->minExtent = body->shapeCount > 1 ? tbMinFloat(body->minExtent, shapeMin) : shapeMin;
 	body->maxExtent = body->shapeCount > 1 ? tbMaxFloat(body->maxExtent, shapeMax) : shapeMax;
+	body->coreExtent = body->shapeCount > 1 ? tbMaxFloat(body->coreExtent, shapeCore) : shapeCore;
 	tbUpdateSpeculativeReach(body);
 	tbUpdateBodyDerived(body);
 }

@@ -23,7 +23,11 @@ typedef struct tbBody
 	/// Displacement per step its speculative contacts cover (tbSpeculativeReach, read per contact):
 	/// max(TB_SPECULATIVE_REACH, safetyFactor × minExtent), kept current by body.c.
 	float speculativeReach;
-	float maxExtent;	///< largest distance from the centre of mass to any shape point
+	/// Largest distance from the centre of mass to a point of a shape's core (a circle's centre, a
+	/// capsule's segment, a polygon's vertices before rounding): a turn about the centre of mass
+	/// moves the surface, as any distance to it sees it, only as far as it moves the core (a rounded
+	/// surface keeps its distance to its core). The speculative margin reads it per contact.
+	float coreExtent;
 	float gravityScale;
 	int headContactKey; ///< doubly linked contact edges; key = (contactId << 1) | edge
 	int awakeIndex;		///< index in world->awakeBodies, or TB_NULL_INDEX when asleep or static
@@ -62,6 +66,7 @@ typedef struct tbBody
 	const char* name;
 	void* userData;
 
+	float maxExtent; ///< largest distance from the centre of mass to any shape point
 	uint16_t generation;
 	bool inUse;
 	bool enableSleep;
@@ -106,6 +111,10 @@ void tbUpdateBodyMass(tbWorld* world, tbBody* body);
 /// surface (a conservative "thickness") and the largest distance to any point of any shape, over
 /// the body's shapes in list order (writes nothing: snapshot.c predicts the stored values with it).
 void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtent, float* maxExtent);
+/// The body's coreExtent from its shapes now, about its centre of mass now (writes nothing). The
+/// field always equals it (set with the extents, and again when a shape is removed without a mass
+/// update), so a snapshot restore recomputes it rather than storing it.
+float tbComputeBodyCoreExtent(const tbWorld* world, const tbBody* body);
 /// A shape just linked to the body without a mass update (updateBodyMass false: a chain's segments)
 /// still counts in its extents, which bound how far its points move (the narrow phase's motion
 /// bounds, continuous collision, sleep): they grow to take it in, about the current centre. A shape

@@ -486,12 +486,15 @@ static float tbEffectiveGravityScale(const tbBody* body)
 ///
 /// A point kept at separation s lets the solver stop an approach that would close s within the
 /// step; a point not kept cannot, so the pair penetrates by (closing distance − s). The margin
-/// is therefore a bound on how far any point of A can approach any point of B during the step,
-/// from what is known when the narrow phase runs (positions and velocities at the end of the
-/// last step):
-/// - a point of body X at r from its centre of mass moves at v_X + ω_X × r, and |ω_X × r| ≤
-///   |ω_X|·maxExtent_X, so the relative speed of two points is at most
-///       |vA − vB| + |ωA|·maxExtentA + |ωB|·maxExtentB;
+/// is therefore a bound on how far the surfaces of A and B can approach during the step, from
+/// what is known when the narrow phase runs (positions and velocities at the end of the last step):
+/// - the distance between two shapes is the distance between their cores (a circle's centre, a
+///   capsule's segment, a polygon before rounding) less both radii, so only the cores' motion
+///   counts; a core point of body X at r from its centre of mass moves at v_X + ω_X × r, and
+///   |ω_X × r| ≤ |ω_X|·coreExtent_X, so two core points close at most at
+///       |vA − vB| + |ωA|·coreExtentA + |ωB|·coreExtentB
+///   (a ball spinning in place closes on nothing, where its whole radius as the arm of the turn
+///   made its pairs' margins the widest of a pile's);
 /// - during the step gravity adds g·sX·t to the velocity of a dynamic body X (sX its gravity
 ///   scale); the sub-stepped symplectic Euler moves it by at most g·sX·dt² (exactly
 ///   g·sX·dt²·(n + 1)/(2n) after n sub-steps), so the relative displacement grows by at most
@@ -509,8 +512,8 @@ static TB_FORCE_INLINE float tbSpeculativeMargin(const tbWorld* world, const tbB
 {
 	float dt = world->stepTime;
 	tbVec2 dv = tbSub(bodyA->linearVelocity, bodyB->linearVelocity);
-	float speed = tbLength(dv) + tbAbsFloat(bodyA->angularVelocity) * bodyA->maxExtent +
-				  tbAbsFloat(bodyB->angularVelocity) * bodyB->maxExtent;
+	float speed = tbLength(dv) + tbAbsFloat(bodyA->angularVelocity) * bodyA->coreExtent +
+				  tbAbsFloat(bodyB->angularVelocity) * bodyB->coreExtent;
 	float gravity = world->gravityLength *
 					tbAbsFloat(tbEffectiveGravityScale(bodyA) - tbEffectiveGravityScale(bodyB));
 	float closing = dt * (speed + dt * gravity);

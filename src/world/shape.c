@@ -701,6 +701,10 @@ void tbRemoveShape(tbWorld* world, int id, bool updateBodyMass)
 	{
 		tbUpdateBodyMass(world, body);
 	}
+	else
+	{
+		body->coreExtent = tbComputeBodyCoreExtent(world, body); // the other extents stay as bounds
+	}
 }
 
 void tbDestroyShape(tbShapeId shapeId, bool updateBodyMass)

@@ -1746,6 +1746,7 @@ static bool tbReadBody(tbDecoder* d, int index)
 	{
 		tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
 	}
+	body->coreExtent = tbComputeBodyCoreExtent(world, body); // never stored: always the shapes' (body.h)
 	body->speculativeReach = (flags & tb_bodyReachStored) ? tbGetFloat(r, "a body's reach") : tbPredictReach(body);
 	tbUpdateBodyDerived(body);
 	if (r->failed == false && (tbIsNonNegative(body->minExtent) == false || tbIsNonNegative(body->maxExtent) == false ||
