@@ -230,3 +230,62 @@ Test(speculative, ball_rebound_ngs)
 {
 	CheckBounces(tb_solverNGS, "ngs");
 }
+
+/// Pre-solve counter: manifolds handed to the solver with points (speculative ones included).
+static void CountManifolds(tbShapeId shapeIdA, tbShapeId shapeIdB, tbManifold* manifold, void* context)
+{
+	(void)shapeIdA;
+	(void)shapeIdB;
+	*(int*)context += manifold->pointCount > 0 ? 1 : 0;
+}
+
+/// Manifolds with points in the first step of a body spinning at 20 rad/s in place, without
+/// gravity, its lowest point 0.03 m above the ground (beyond the fixed 0.02 m): a ball of radius
+/// 0.5 or a box of half size 0.5, unturned. Also its spin after the step.
+static int SpinningManifolds(bool ball, float* spin)
+{
+	tbWorldDef worldDef = tbDefaultWorldDef();
+	worldDef.gravity = (tbVec2){0.0f, 0.0f};
+	tbWorldId world = tbCreateWorld(&worldDef);
+	int manifolds = 0;
+	tbWorld_SetPreSolveCallback(world, CountManifolds, NULL, &manifolds);
+	tbGeometry ground;
+	CreateGround(world, &ground);
+	tbBodyDef bodyDef = tbDefaultBodyDef();
+	bodyDef.type = tb_dynamicBody;
+	bodyDef.position = (tbVec2){0.0f, 0.53f};
+	bodyDef.angularVelocity = 20.0f;
+	tbBodyId body = tbCreateBody(world, &bodyDef);
+	tbShapeDef def = tbDefaultShapeDef();
+	def.enablePreSolveEvents = true;
+	if (ball)
+	{
+		tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+		tbCreateCircleShape(body, &def, &circle);
+	}
+	else
+	{
+		tbPolygon box = tbMakeBox(0.5f, 0.5f);
+		tbCreatePolygonShape(body, &def, &box);
+	}
+	tbWorld_Step(world, TIME_STEP, SUB_STEPS);
+	*spin = tbBody_GetAngularVelocity(body);
+	tbDestroyWorld(world);
+	return manifolds;
+}
+
+// The margin's turn term counts how far a body's shape cores reach (contact.c, tbSpeculativeMargin):
+// a ball spinning in place closes on nothing, so 0.03 m above the ground its contact gets no
+// manifold point and its spin is untouched; a box spinning as fast swings a corner down by up to
+// dt·|ω|·0.707 = 0.24 m in a step, gets a speculative point and is stopped by it (the corner's
+// impact takes spin). Counts are exact; the ball keeps its 20 rad/s to float rounding.
+Test(speculative, a_spinning_ball_closes_on_nothing)
+{
+	float ballSpin, boxSpin;
+	int ballManifolds = SpinningManifolds(true, &ballSpin);
+	int boxManifolds = SpinningManifolds(false, &boxSpin);
+	cr_expect_eq(ballManifolds, 0, "spinning ball 0.03 m above the ground: %d manifolds with points", ballManifolds);
+	cr_expect_float_eq(ballSpin, 20.0f, 1e-5f, "spinning ball: %.6f rad/s after the step", (double)ballSpin);
+	cr_expect_eq(boxManifolds, 1, "spinning box 0.03 m above the ground: %d manifolds with points", boxManifolds);
+	cr_expect_lt(boxSpin, 19.0f, "spinning box: %.4f rad/s after the step (its corner was not caught)", (double)boxSpin);
+}
