@@ -297,6 +297,28 @@ static void tbAddTally(tbCollideTally* sum, const tbCollideTally* part)
 	sum->newKeys += part->newKeys;
 }
 
+/// A range's results counted into its worker's tally, in a loop of its own after the range's visits
+/// (a short loop over a dense array of flags, where counting inside the visit loop cost a few
+/// instructions per flag on every contact).
+static void tbTallyResults(const uint16_t* results, int count, tbCollideTally* tally)
+{
+	const uint32_t change = tb_collideDestroy | tb_collideBegan | tb_collideEnded | tb_collideBeginEvent | tb_collideEndEvent;
+	tbCollideTally sum = {0};
+	for (int i = 0; i < count; ++i)
+	{
+		uint32_t result = results[i];
+		sum.reported += (result & tb_collideReported) != 0 ? 1 : 0;
+		sum.recycled += (result & tb_collideRecycled) != 0 ? 1 : 0;
+		sum.keptApart += (result & tb_collideKeptApart) != 0 ? 1 : 0;
+		sum.gjk += (result & tb_collideGJK) != 0 ? 1 : 0;
+		sum.sat += (result & tb_collideSAT) != 0 ? 1 : 0;
+		sum.changed += (result & change) != 0 ? 1 : 0;
+		sum.notReady += (result & (tb_collideSolver | tb_collideReady)) == tb_collideSolver ? 1 : 0;
+		sum.newKeys += (result & tb_collideNewKey) != 0 ? 1 : 0;
+	}
+	tbAddTally(tally, &sum);
+}
+
 static bool tbIsSegmentKind(tbShapeType type)
 {
 	return type == tb_segmentShape || type == tb_chainSegmentShape;
@@ -885,12 +907,9 @@ static void tbDropSpeculativePoint(tbContact* contact)
 
 /// The narrow phase of one contact, writing only the contact (safe on any worker): returns
 /// tbCollideResult flags for the caller to act on in contact order.
-static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* contact)
+static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* contact, const tbShape* a, const tbShape* b,
+												  const tbBody* bodyA, const tbBody* bodyB)
 {
-	const tbShape* a = world->shapes + contact->shapeIdA;
-	const tbShape* b = world->shapes + contact->shapeIdB;
-	const tbBody* bodyA = world->bodies + a->bodyId;
-	const tbBody* bodyB = world->bodies + b->bodyId;
 	bool isSensor = (contact->flags & tb_contactSensor) != 0;
 	// Sensors only ask whether the shapes overlap: the fixed distance is plenty.
 	float margin = isSensor ? TB_SPECULATIVE_DISTANCE : tbSpeculativeMargin(world, bodyA, bodyB);
@@ -930,6 +949,15 @@ static TB_FORCE_INLINE uint32_t tbCollideContact(tbWorld* world, tbContact* cont
 	return result;
 }
 
+/// tbCollideContact with the contact's shapes and bodies looked up (the callers outside the
+/// collide walk, which has them at hand).
+static uint32_t tbCollideContactOf(tbWorld* world, tbContact* contact)
+{
+	const tbShape* a = world->shapes + contact->shapeIdA;
+	const tbShape* b = world->shapes + contact->shapeIdB;
+	return tbCollideContact(world, contact, a, b, world->bodies + a->bodyId, world->bodies + b->bodyId);
+}
+
 /// Counters of one contact's narrow phase (on the caller, after the workers).
 static void tbCountCollideResult(tbWorld* world, uint32_t result)
 {
@@ -942,7 +970,7 @@ static void tbCountCollideResult(tbWorld* world, uint32_t result)
 
 int tbUpdateContact(tbWorld* world, tbContact* contact, bool* beganTouching)
 {
-	uint32_t result = tbCollideContact(world, contact);
+	uint32_t result = tbCollideContactOf(world, contact);
 	tbCountCollideResult(world, result);
 	*beganTouching = (result & tb_collideBegan) != 0;
 	return (result & tb_collideBeginEvent) != 0 ? 1 : ((result & tb_collideEndEvent) != 0 ? -1 : 0);
@@ -1031,26 +1059,24 @@ static void tbGatherAwakeContacts(tbWorld* world)
 	tbSortIndices(world->cache.stepContacts, world->cache.stepContactCount, world->cache.islandStack);
 }
 
-/// A contact the island stage can hand to the solver without looking at it again: one side is
+/// A contact between bodies a and b that the island stage can hand to the solver without looking at
+/// it again: one side is
 /// dynamic and neither sleeps. Between here and the island stage bodies only wake, so it stays so;
 /// and a body that wakes after this has none of these contacts (island.c relies on both).
-static bool tbIsReadySolverContact(const tbWorld* world, const tbContact* contact)
+static bool tbIsReadySolverContact(const tbBody* a, const tbBody* b)
 {
-	const tbBody* a = world->bodies + contact->edges[0].bodyId;
-	const tbBody* b = world->bodies + contact->edges[1].bodyId;
 	bool asleepA = a->type != tb_staticBody && a->awakeIndex == TB_NULL_INDEX;
 	bool asleepB = b->type != tb_staticBody && b->awakeIndex == TB_NULL_INDEX;
 	return (a->type == tb_dynamicBody || b->type == tb_dynamicBody) && asleepA == false && asleepB == false;
 }
 
-/// The solver key of a ready contact, from the bodies the narrow phase just read (tbCollideKey).
+/// The solver key of a ready contact, from its bodies A and B as the narrow phase just read them
+/// (tbCollideKey).
 /// The flags are those contact_solver.c derives from the solver's mass arrays: a body moves when
 /// it is dynamic with a positive inverse mass or (rotation not fixed) inverse inertia.
 /// Returns whether the key is the one written in the last step.
-static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* contact)
+static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* contact, const tbBody* a, const tbBody* b)
 {
-	const tbBody* a = world->bodies + contact->edges[0].bodyId;
-	const tbBody* b = world->bodies + contact->edges[1].bodyId;
 	bool dynamicA = a->type == tb_dynamicBody, dynamicB = b->type == tb_dynamicBody;
 	bool movesA = a->solverMoves, movesB = b->solverMoves;
 	uint32_t flags = (movesA ? (uint32_t)tb_keyMovesA : 0u) | (movesB ? (uint32_t)tb_keyMovesB : 0u) |
@@ -1115,11 +1141,11 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 {
 	tbWorld* world = context;
 	const tbBroadPhase* bp = &world->broadPhase;
-	const uint32_t change = tb_collideDestroy | tb_collideBegan | tb_collideEnded | tb_collideBeginEvent | tb_collideEndEvent;
-	tbCollideTally sum = {0};
+	uint16_t* results = world->cache.collideResults;
 	for (int i = startIndex; i < endIndex; ++i)
 	{
-		tbContact* contact = world->contacts + world->cache.stepContacts[i];
+		int contactId = world->cache.stepContacts[i];
+		tbContact* contact = world->contacts + contactId;
 		tbPrefetchCollideAhead(world, i, endIndex);
 		const tbShape* a = world->shapes + contact->shapeIdA;
 		const tbShape* b = world->shapes + contact->shapeIdB;
@@ -1134,27 +1160,21 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 		else if (overlap)
 		{
 			// The flags the caller's serial walk needs ride along, so it need not load the contact.
-			result = tbCollideContact(world, contact);
+			const tbBody* bodyA = world->bodies + a->bodyId;
+			const tbBody* bodyB = world->bodies + b->bodyId;
+			result = tbCollideContact(world, contact, a, b, bodyA, bodyB);
 			bool solver = (contact->flags & (tb_contactTouching | tb_contactSensor)) == tb_contactTouching;
 			result |= solver ? (uint32_t)tb_collideSolver : 0u;
 			result |= (contact->flags & tb_contactReported) != 0 ? (uint32_t)tb_collideReported : 0u;
-			if (solver && tbIsReadySolverContact(world, contact))
+			if (solver && tbIsReadySolverContact(bodyA, bodyB))
 			{
 				result |= tb_collideReady;
-				result |= tbWriteCollideKey(world, world->cache.stepContacts[i], contact) ? 0u : (uint32_t)tb_collideNewKey;
+				result |= tbWriteCollideKey(world, contactId, contact, bodyA, bodyB) ? 0u : (uint32_t)tb_collideNewKey;
 			}
 		}
-		world->cache.collideResults[i] = (uint16_t)result;
-		sum.reported += (result & tb_collideReported) != 0 ? 1 : 0;
-		sum.recycled += (result & tb_collideRecycled) != 0 ? 1 : 0;
-		sum.keptApart += (result & tb_collideKeptApart) != 0 ? 1 : 0;
-		sum.gjk += (result & tb_collideGJK) != 0 ? 1 : 0;
-		sum.sat += (result & tb_collideSAT) != 0 ? 1 : 0;
-		sum.changed += (result & change) != 0 ? 1 : 0;
-		sum.notReady += (result & (tb_collideSolver | tb_collideReady)) == tb_collideSolver ? 1 : 0;
-		sum.newKeys += (result & tb_collideNewKey) != 0 ? 1 : 0;
+		results[i] = (uint16_t)result;
 	}
-	tbAddTally(world->cache.collideTallies + workerIndex, &sum);
+	tbTallyResults(results + startIndex, endIndex - startIndex, world->cache.collideTallies + workerIndex);
 }
 
 /// The broad phase's deferred tree refresh (tbUpdatePairsStage), beside the narrow phase: it
@@ -1357,7 +1377,7 @@ static void tbReportSensorHits(tbWorld* world)
 	{
 		tbContact* contact = world->contacts + world->cache.sensorHitContacts[i];
 		bool wasReported = (contact->flags & tb_contactReported) != 0;
-		tbCountCollideResult(world, tbCollideContact(world, contact)); // the manifold of the final poses
+		tbCountCollideResult(world, tbCollideContactOf(world, contact)); // the manifold of the final poses
 		contact->flags |= tb_contactTouching | tb_contactReported;
 		if (wasReported == false)
 		{
@@ -1383,7 +1403,7 @@ void tbSensorStage(tbWorld* world)
 		{
 			continue; // not a sensor, or a hit reported above
 		}
-		uint32_t result = tbCollideContact(world, contact);
+		uint32_t result = tbCollideContactOf(world, contact);
 		tbCountCollideResult(world, result);
 		if (result & tb_collideBeginEvent)
 		{
