@@ -515,8 +515,8 @@ static float tbEffectiveGravityScale(const tbBody* body)
 ///   counts; a core point of body X at r from its centre of mass moves at v_X + ω_X × r, and
 ///   |ω_X × r| ≤ |ω_X|·coreExtent_X, so two core points close at most at
 ///       |vA − vB| + |ωA|·coreExtentA + |ωB|·coreExtentB
-///   (a ball spinning in place closes on nothing, where its whole radius as the arm of the turn
-///   made its pairs' margins the widest of a pile's);
+///   (a ball spinning in place closes on nothing; its radius taken as the arm of the turn would
+///   give its pairs the widest margins of a pile);
 /// - during the step gravity adds g·sX·t to the velocity of a dynamic body X (sX its gravity
 ///   scale); the sub-stepped symplectic Euler moves it by at most g·sX·dt² (exactly
 ///   g·sX·dt²·(n + 1)/(2n) after n sub-steps), so the relative displacement grows by at most
