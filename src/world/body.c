@@ -340,30 +340,21 @@ static void tbShapeExtents(const tbGeometry* g, tbVec2 center, float* minExtent,
 	*coreExtent = core;
 }
 
-void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtentOut, float* maxExtentOut)
+void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtentOut, float* maxExtentOut,
+						  float* coreExtentOut)
 {
-	float minExtent = TB_HUGE, maxExtent = 0.0f;
+	float minExtent = TB_HUGE, maxExtent = 0.0f, coreExtent = 0.0f;
 	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
 	{
 		float shapeMin, shapeMax, shapeCore;
 		tbShapeExtents(&world->shapes[id].geometry, body->localCenter, &shapeMin, &shapeMax, &shapeCore);
 		minExtent = tbMinFloat(minExtent, shapeMin);
 		maxExtent = tbMaxFloat(maxExtent, shapeMax);
+		coreExtent = tbMaxFloat(coreExtent, shapeCore);
 	}
 	*minExtentOut = minExtent < TB_HUGE ? minExtent : 0.0f;
 	*maxExtentOut = maxExtent;
-}
-
-float tbComputeBodyCoreExtent(const tbWorld* world, const tbBody* body)
-{
-	float coreExtent = 0.0f;
-	for (int id = body->headShapeId; id != TB_NULL_INDEX; id = world->shapes[id].nextShapeId)
-	{
-		float shapeMin, shapeMax, shapeCore;
-		tbShapeExtents(&world->shapes[id].geometry, body->localCenter, &shapeMin, &shapeMax, &shapeCore);
-		coreExtent = tbMaxFloat(coreExtent, shapeCore);
-	}
-	return coreExtent;
+	*coreExtentOut = coreExtent;
 }
 
 void tbUpdateBodyDerived(tbBody* body)
@@ -376,8 +367,7 @@ void tbUpdateBodyDerived(tbBody* body)
 /// Extents used by continuous collision (tbComputeBodyExtents) and the reach that follows from them.
 static void tbComputeExtents(tbWorld* world, tbBody* body)
 {
-	tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
-	body->coreExtent = tbComputeBodyCoreExtent(world, body);
+	tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent, &body->coreExtent);
 	tbUpdateSpeculativeReach(body);
 	tbUpdateBodyDerived(body);
 }

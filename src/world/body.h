@@ -107,14 +107,13 @@ typedef struct tbBodyMass
 tbBodyMass tbComputeBodyMass(const tbWorld* world, const tbBody* body);
 /// Apply tbComputeBodyMass: the centre moves, the origin keeps its velocity, contacts restart.
 void tbUpdateBodyMass(tbWorld* world, tbBody* body);
-/// Extents used by continuous collision: the smallest distance from the centre of mass to the
-/// surface (a conservative "thickness") and the largest distance to any point of any shape, over
-/// the body's shapes in list order (writes nothing: snapshot.c predicts the stored values with it).
-void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtent, float* maxExtent);
-/// The body's coreExtent from its shapes now, about its centre of mass now (writes nothing). The
-/// field always equals it (set with the extents, and again when a shape is removed without a mass
-/// update), so a snapshot restore recomputes it rather than storing it.
-float tbComputeBodyCoreExtent(const tbWorld* world, const tbBody* body);
+/// Extents over the body's shapes in list order, about its centre of mass now (writes nothing:
+/// snapshot.c predicts the stored values with it): the smallest distance to the surface (a
+/// conservative "thickness", continuous collision), the largest to any point of any shape, and the
+/// largest to a point of a core (coreExtent). The body's coreExtent always equals what this gives
+/// (set with the extents, and again when a shape is removed without a mass update), so a snapshot
+/// restore recomputes it rather than storing it.
+void tbComputeBodyExtents(const tbWorld* world, const tbBody* body, float* minExtent, float* maxExtent, float* coreExtent);
 /// A shape just linked to the body without a mass update (updateBodyMass false: a chain's segments)
 /// still counts in its extents, which bound how far its points move (the narrow phase's motion
 /// bounds, continuous collision, sleep): they grow to take it in, about the current centre. A shape

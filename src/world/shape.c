@@ -703,7 +703,8 @@ void tbRemoveShape(tbWorld* world, int id, bool updateBodyMass)
 	}
 	else
 	{
-		body->coreExtent = tbComputeBodyCoreExtent(world, body); // the other extents stay as bounds
+		float minExtent, maxExtent; // these stay as they were: still bounds
+		tbComputeBodyExtents(world, body, &minExtent, &maxExtent, &body->coreExtent);
 	}
 }
 

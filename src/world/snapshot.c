@@ -1279,8 +1279,8 @@ static void tbWriteBody(tbEncoder* e, const tbBody* body)
 			 (body->isMarked ? tb_bodyMarked : 0u) | (body->name != NULL ? tb_bodyNamed : 0u);
 	bool massStored = tbSameMass(body, tbComputeBodyMass(world, body)) == false;
 	bool originStored = tbSamePos(body->transform.p, tbPredictOrigin(body)) == false;
-	float minExtent, maxExtent;
-	tbComputeBodyExtents(world, body, &minExtent, &maxExtent);
+	float minExtent, maxExtent, coreExtent;
+	tbComputeBodyExtents(world, body, &minExtent, &maxExtent, &coreExtent);
 	bool extentsStored = tbSameFloat(minExtent, body->minExtent) == false || tbSameFloat(maxExtent, body->maxExtent) == false;
 	bool reachStored = tbSameFloat(tbPredictReach(body), body->speculativeReach) == false;
 	bool startStored = tbSamePos(body->center0, body->center) == false || tbSameFloat(body->rotation0.c, body->transform.q.c) == false ||
@@ -1737,16 +1737,13 @@ static bool tbReadBody(tbDecoder* d, int index)
 	{
 		return tbFail(r, "body %d has its origin beyond TB_MAX_POSITION", index);
 	}
+	// The core extent is never stored: it is always the shapes' (body.h).
+	tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent, &body->coreExtent);
 	if (flags & tb_bodyExtentsStored)
 	{
 		body->minExtent = tbGetFloat(r, "a body's extent");
 		body->maxExtent = tbGetFloat(r, "a body's extent");
 	}
-	else
-	{
-		tbComputeBodyExtents(world, body, &body->minExtent, &body->maxExtent);
-	}
-	body->coreExtent = tbComputeBodyCoreExtent(world, body); // never stored: always the shapes' (body.h)
 	body->speculativeReach = (flags & tb_bodyReachStored) ? tbGetFloat(r, "a body's reach") : tbPredictReach(body);
 	tbUpdateBodyDerived(body);
 	if (r->failed == false && (tbIsNonNegative(body->minExtent) == false || tbIsNonNegative(body->maxExtent) == false ||
