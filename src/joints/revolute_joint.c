@@ -137,13 +137,9 @@ static void tbSolveAngleLimit(tbJoint* joint, tbJointBodies* b, float C, float s
 	b->wB += joint->invIB * sign * impulse;
 }
 
-static void tbSolveRevoluteAngular(tbJoint* joint, tbJointBodies* b, const tbStepContext* context, bool useBias)
+static void tbSolveRevoluteAngularRows(tbJoint* joint, tbJointBodies* b, const tbStepContext* context, bool useBias)
 {
 	tbRevoluteJoint* r = &joint->revolute;
-	if (joint->invIA + joint->invIB == 0.0f)
-	{
-		return; // neither body can turn
-	}
 	float iA = joint->invIA, iB = joint->invIB;
 	if (r->enableSpring && r->hertz > 0.0f)
 	{
@@ -169,6 +165,18 @@ static void tbSolveRevoluteAngular(tbJoint* joint, tbJointBodies* b, const tbSte
 		float angle = tbRevoluteAngle(joint, b);
 		tbSolveAngleLimit(joint, b, angle - r->lowerAngle, 1.0f, &r->lowerImpulse, context, useBias);
 		tbSolveAngleLimit(joint, b, r->upperAngle - angle, -1.0f, &r->upperImpulse, context, useBias);
+	}
+}
+
+// The spring, motor and limit rows, when the joint has one and a body can turn. Inline: most joints
+// (a grid of pins, a chain) have none, and the call alone was a measurable part of their solve.
+static inline void tbSolveRevoluteAngular(tbJoint* joint, tbJointBodies* b, const tbStepContext* context, bool useBias)
+{
+	const tbRevoluteJoint* r = &joint->revolute;
+	bool anyRow = r->enableSpring || r->enableMotor || r->enableLimit;
+	if (anyRow && joint->invIA + joint->invIB != 0.0f)
+	{
+		tbSolveRevoluteAngularRows(joint, b, context, useBias);
 	}
 }
 
