@@ -117,9 +117,10 @@ static float tbAxialSpeed(const tbJointBodies* b, tbVec2 rA, tbVec2 rB, tbVec2 a
 	return tbDot(dv, axis);
 }
 
-// A one-sided row along sign·axis: C ≥ 0 (tbOneSidedImpulse).
-static void tbSolveLengthLimit(tbJoint* joint, tbJointBodies* b, tbVec2 rA, tbVec2 rB, tbVec2 axis, float C,
-							   float sign, float* accumulated, const tbStepContext* context, bool useBias)
+// A one-sided row along sign·axis: C ≥ 0 (tbOneSidedImpulse). Forced inline, as the revolute joint's
+// rows are: the bodies handed to a call would stay on the stack through the whole solve.
+static TB_FORCE_INLINE void tbSolveLengthLimit(tbJoint* joint, tbJointBodies* b, tbVec2 rA, tbVec2 rB, tbVec2 axis, float C,
+											   float sign, float* accumulated, const tbStepContext* context, bool useBias)
 {
 	float Cdot = sign * tbAxialSpeed(b, rA, rB, axis);
 	float impulse = tbOneSidedImpulse(joint, C, Cdot, joint->distance.axialMass, accumulated, context, useBias);

@@ -137,7 +137,7 @@ static void tbSolveAngleLimit(tbJoint* joint, tbJointBodies* b, float C, float s
 	b->wB += joint->invIB * sign * impulse;
 }
 
-static void tbSolveRevoluteAngularRows(tbJoint* joint, tbJointBodies* b, const tbStepContext* context, bool useBias)
+static TB_FORCE_INLINE void tbSolveRevoluteAngularRows(tbJoint* joint, tbJointBodies* b, const tbStepContext* context, bool useBias)
 {
 	tbRevoluteJoint* r = &joint->revolute;
 	float iA = joint->invIA, iB = joint->invIB;
@@ -170,6 +170,9 @@ static void tbSolveRevoluteAngularRows(tbJoint* joint, tbJointBodies* b, const t
 
 // The spring, motor and limit rows, when the joint has one and a body can turn. Inline: most joints
 // (a grid of pins, a chain) have none, and the call alone was a measurable part of their solve.
+// The rows are forced inline too: handed to a call, the caller's bodies (their address taken) lived
+// on the stack through the whole solve, each velocity stored a float at a time and read back eight
+// bytes at a time, a load the processor cannot forward from the two stores.
 static inline void tbSolveRevoluteAngular(tbJoint* joint, tbJointBodies* b, const tbStepContext* context, bool useBias)
 {
 	const tbRevoluteJoint* r = &joint->revolute;
