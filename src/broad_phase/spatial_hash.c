@@ -78,6 +78,11 @@ typedef struct tbGrid
 	int allCapacity;
 } tbGrid;
 
+typedef struct tbCellRange
+{
+	int x0, y0, x1, y1;
+} tbCellRange;
+
 struct tbSpatialHash
 {
 	float* sides; ///< scratch for the cell size (grown only)
@@ -100,18 +105,29 @@ struct tbSpatialHash
 	/// removed or moved since it was built, nor the cell size changed. Queries and ray casts then
 	/// look up cells instead of scanning the table, and the next update need not rebuild it.
 	bool movableGridCurrent;
+	/// By proxy key, the cells of each movable proxy as the movable grid was built (valid while
+	/// movableGridCurrent): a moved proxy's pair query reads its range here instead of converting
+	/// its box again.
+	tbCellRange* movableRanges;
+	int movableRangeCapacity;
 };
 
-typedef struct tbCellRange
-{
-	int x0, y0, x1, y1;
-} tbCellRange;
-
+/// floor(value / cell size) clamped to ±TB_HASH_COORD_LIMIT. Clamped first, then floored: the limit
+/// is a whole number, so the order does not change the result, and within it the integer part
+/// fits an int. floor(s) is the truncation less one where truncating rounded up (s < 0 and not
+/// whole); the truncation is exact in float. Without SSE4.1, floorf is a branchy sequence the
+/// compiler inlines for every coordinate of every box the hash files, and this is called four
+/// times a box for every moving shape in every step.
 static int tbCellCoordinate(float value, float invCellSize)
 {
-	float c = floorf(value * invCellSize);
-	c = c < -TB_HASH_COORD_LIMIT ? -TB_HASH_COORD_LIMIT : (c > TB_HASH_COORD_LIMIT ? TB_HASH_COORD_LIMIT : c);
-	return c == c ? (int)c : 0; // NaN boxes are refused upstream; stay defined anyway
+	float s = value * invCellSize;
+	s = s < -TB_HASH_COORD_LIMIT ? -TB_HASH_COORD_LIMIT : (s > TB_HASH_COORD_LIMIT ? TB_HASH_COORD_LIMIT : s);
+	if (s != s)
+	{
+		return 0; // NaN boxes are refused upstream; stay defined anyway
+	}
+	int truncated = (int)s;
+	return truncated - (s < (float)truncated ? 1 : 0);
 }
 
 static tbCellRange tbCellsOf(const tbSpatialHash* hash, tbAABB box)
@@ -205,11 +221,9 @@ static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, tbCellRange r)
 }
 
 /// Enter one proxy in the cells its box covers (or the large list).
-static void tbGrid_AddProxy(tbGrid* grid, const tbSpatialHash* hash, const tbProxyTable* table, int key)
+static void tbGrid_AddProxyCells(tbGrid* grid, int key, tbCellRange r)
 {
-	const tbBroadProxy* p = table->proxies + key;
 	tbPushKey(&grid->all, &grid->allCount, &grid->allCapacity, key);
-	tbCellRange r = tbCellsOf(hash, p->aabb);
 	if (tbIsLargeRange(r))
 	{
 		tbGrid_AddLarge(grid, key);
@@ -222,6 +236,11 @@ static void tbGrid_AddProxy(tbGrid* grid, const tbSpatialHash* hash, const tbPro
 			tbGrid_AddEntry(grid, tbCellKey(x, y), key, r);
 		}
 	}
+}
+
+static void tbGrid_AddProxy(tbGrid* grid, const tbSpatialHash* hash, const tbProxyTable* table, int key)
+{
+	tbGrid_AddProxyCells(grid, key, tbCellsOf(hash, table->proxies[key].aabb));
 }
 
 /// Hash every live static proxy into the static grid (when the statics change).
@@ -262,9 +281,19 @@ static void tbGrid_BuildMovable(tbGrid* grid, tbSpatialHash* hash, const tbProxy
 		tbListMovableKeys(hash, table);
 	}
 	tbGrid_Clear(grid, 2 * hash->movableCount);
+	if (table->capacity > hash->movableRangeCapacity)
+	{
+		int capacity = tbMaxInt(table->capacity, 2 * hash->movableRangeCapacity);
+		tbFree(hash->movableRanges, hash->movableRangeCapacity * (int)sizeof(tbCellRange));
+		hash->movableRanges = tbAlloc(capacity * (int)sizeof(tbCellRange));
+		hash->movableRangeCapacity = capacity;
+	}
 	for (int i = 0; i < hash->movableCount; ++i)
 	{
-		tbGrid_AddProxy(grid, hash, table, hash->movableKeys[i]);
+		int key = hash->movableKeys[i];
+		tbCellRange r = tbCellsOf(hash, table->proxies[key].aabb);
+		hash->movableRanges[key] = r;
+		tbGrid_AddProxyCells(grid, key, r);
 	}
 	hash->movableGridCurrent = true;
 }
@@ -339,6 +368,7 @@ void tbSpatialHash_Destroy(tbSpatialHash* hash)
 	tbGrid_Destroy(&hash->movableGrid);
 	tbFree(hash->sides, hash->sideCapacity * (int)sizeof(float));
 	tbFree(hash->movableKeys, hash->movableCapacity * (int)sizeof(int));
+	tbFree(hash->movableRanges, hash->movableRangeCapacity * (int)sizeof(tbCellRange));
 	tbFree(hash, (int)sizeof(tbSpatialHash));
 }
 
@@ -470,7 +500,9 @@ static void tbQueryMoved(const tbSpatialHash* hash, const tbProxyTable* table, t
 	const tbBroadProxy* p = table->proxies + key;
 	tbPairQuery q = {hash, table, pairs, key, p};
 	bool isStatic = p->type == tb_proxyStatic;
-	tbCellRange r = tbCellsOf(hash, p->aabb);
+	// A movable proxy's cells as the current movable grid filed it (PrepareFind built it after the
+	// last move): the same range, without converting the box again.
+	tbCellRange r = isStatic == false && hash->movableGridCurrent ? hash->movableRanges[key] : tbCellsOf(hash, p->aabb);
 	if (tbIsLargeRange(r))
 	{
 		// A large proxy meets everything it overlaps: scan the table.
