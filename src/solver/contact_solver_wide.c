@@ -419,45 +419,101 @@ static TB_FORCE_INLINE void tbSolveCentralFrictionW(tbWideContactConstraint* c, 
 						c->points[0].tangentMass, normalImpulse, c->impulses + 0, c, a, b, tx, ty);
 }
 
-// Normal impulses first, then friction against the fresh normal impulses (as the scalar solver).
-static TB_FORCE_INLINE void tbSolveWideBlock(tbWideContactConstraint* c, tbWideRolling* rolling, tbSolverBody* bodies,
-									const tbWidePass* pass, tbBiasPolicy policy, bool shared, bool central)
-{
-	tbWideBody a = {0}, b = {0};
-	tbGatherVelocities(bodies, c->indexA, &a);
-	tbGatherVelocities(bodies, c->indexB, &b);
-	if (policy != tb_biasRelaxRepeat)
-	{
-		tbGatherDeltas(bodies, c->indexA, &a); // only the separation reads the deltas
-		tbGatherDeltas(bodies, c->indexB, &b);
-	}
+// `count` blocks of one colour (1 or TB_SOLVE_GROUP, a constant where it is inlined), each solved
+// as the scalar solver solves a contact: normal impulses first, then friction against the fresh
+// normal impulses. The blocks go side by side, each step of one beside the same step of the others:
+// a block is a chain of dependent arithmetic (point 0's impulse feeds point 1's velocities, both
+// feed the friction row) several hundred instructions long, longer than the processor's window of
+// instructions in flight, so that solved one after the other the next block's independent work
+// could hardly start while this one's chain was waiting. Blocks of one colour share no moving body,
+// so a group gives exactly what solving its blocks in turn gives: each reads bodies the others do
+// not write (the static stand-in and kinematic bodies they may share are written back with the
+// velocity read). Two at a time measured fastest with four lanes (SSE2); three or four spilled the
+// registers. With eight lanes (AVX2) a block is twice the work on the same chain and two spilled:
+// one at a time.
+#if TB_SIMD_WIDTH == 8
+#define TB_SOLVE_GROUP 1
+#else
+#define TB_SOLVE_GROUP 2
+#endif
 
-	tbSolveNormalW(c->points + 0, c->impulses + 0, c, &a, &b, pass, policy);
-	tbSolveNormalW(c->points + 1, c->impulses + 1, c, &a, &b, pass, policy);
-	if (tbBlockRolls(rolling))
+static TB_FORCE_INLINE void tbSolveWideBlocks(tbWideContactConstraint* c, tbWideRolling* rolling, int count,
+											  tbSolverBody* bodies, const tbWidePass* pass, tbBiasPolicy policy,
+											  bool shared, bool central)
+{
+	tbWideBody a[TB_SOLVE_GROUP], b[TB_SOLVE_GROUP];
+	for (int n = 0; n < count; ++n)
 	{
-		tbSolveRollingW(c, rolling, &a, &b); // between normal and friction, as the scalar solver
+		a[n] = (tbWideBody){0};
+		b[n] = (tbWideBody){0};
+		tbGatherVelocities(bodies, c[n].indexA, a + n);
+		tbGatherVelocities(bodies, c[n].indexB, b + n);
+		if (policy != tb_biasRelaxRepeat)
+		{
+			tbGatherDeltas(bodies, c[n].indexA, a + n); // only the separation reads the deltas
+			tbGatherDeltas(bodies, c[n].indexB, b + n);
+		}
 	}
-	tbFloatW tx = c->normalY;
-	tbFloatW ty = tbSubW(tbZeroW(), c->normalX);
+	for (int j = 0; j < 2; ++j)
+	{
+		for (int n = 0; n < count; ++n)
+		{
+			tbSolveNormalW(c[n].points + j, c[n].impulses + j, c + n, a + n, b + n, pass, policy);
+		}
+	}
+	for (int n = 0; n < count; ++n)
+	{
+		if (tbBlockRolls(rolling != NULL ? rolling + n : NULL))
+		{
+			tbSolveRollingW(c + n, rolling + n, a + n, b + n); // between normal and friction, as the scalar solver
+		}
+	}
+	// tangent = rightPerp(normal) = (n.y, −n.x)
 	if (central)
 	{
-		tbSolveCentralFrictionW(c, &a, &b, tx, ty);
+		for (int n = 0; n < count; ++n)
+		{
+			tbSolveCentralFrictionW(c + n, a + n, b + n, c[n].normalY, tbSubW(tbZeroW(), c[n].normalX));
+		}
 	}
 	else
 	{
-		tbSolveFrictionW(c->points + 0, c->impulses + 0, c, &a, &b, tx, ty);
-		tbSolveFrictionW(c->points + 1, c->impulses + 1, c, &a, &b, tx, ty);
+		for (int j = 0; j < 2; ++j)
+		{
+			for (int n = 0; n < count; ++n)
+			{
+				tbSolveFrictionW(c[n].points + j, c[n].impulses + j, c + n, a + n, b + n, c[n].normalY,
+								 tbSubW(tbZeroW(), c[n].normalX));
+			}
+		}
 	}
-
-	tbScatterPair(bodies, c, &a, &b, shared);
+	for (int n = 0; n < count; ++n)
+	{
+		tbScatterPair(bodies, c + n, a + n, b + n, shared);
+	}
 }
 
+// The blocks [start, end), colour by colour (context->colorBlockStart), TB_SOLVE_GROUP at a time
+// within a colour; a colour's last one alone.
 #define TB_SOLVE_WIDE_BLOCKS(POLICY, SHARED, CENTRAL)                                                                  \
-	for (int i = start; i < end; ++i)                                                                                  \
+	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)                                                                    \
 	{                                                                                                                  \
-		tbSolveWideBlock(context->wideConstraints + i, rolling != NULL ? rolling + i : NULL, context->bodies, &pass,   \
-						 POLICY, SHARED, CENTRAL);                                                                     \
+		int first = tbMaxInt(start, context->colorBlockStart[k]);                                                      \
+		int last = tbMinInt(end, context->colorBlockStart[k + 1]);                                                     \
+		for (int i = first; i < last; i += TB_SOLVE_GROUP)                                                             \
+		{                                                                                                              \
+			tbWideContactConstraint* blocks = context->wideConstraints + i;                                            \
+			tbWideRolling* blockRolling = rolling != NULL ? rolling + i : NULL;                                        \
+			if (i + TB_SOLVE_GROUP <= last)                                                                            \
+			{                                                                                                          \
+				tbSolveWideBlocks(blocks, blockRolling, TB_SOLVE_GROUP, context->bodies, &pass, POLICY, SHARED,        \
+								  CENTRAL);                                                                            \
+			}                                                                                                          \
+			else                                                                                                       \
+			{                                                                                                          \
+				tbSolveWideBlocks(blocks, blockRolling, 1, context->bodies, &pass, POLICY, SHARED, CENTRAL);           \
+			}                                                                                                          \
+		}                                                                                                              \
 	}
 
 // A loop per policy, scatter kind and friction kind: none of them is tested block by block.
