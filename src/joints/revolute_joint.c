@@ -154,7 +154,12 @@ static TB_FORCE_INLINE void tbSolveRevoluteAngularRows(tbJoint* joint, tbJointBo
 	{
 		float impulse = -r->axialMass * (b->wB - b->wA - r->motorSpeed);
 		float maxImpulse = context->h * r->maxMotorTorque;
-		float newImpulse = tbClampFloat(r->motorImpulse + impulse, -maxImpulse, maxImpulse);
+		// tbClampFloat's result (its bounds are ordered: the torque is checked non-negative), as a min
+		// then a max, each one instruction: the clamp's branch was taken or not as a friction motor
+		// slipped or held, which a ragdoll's limbs change from pass to pass.
+		float unclamped = r->motorImpulse + impulse;
+		float belowUpper = maxImpulse < unclamped ? maxImpulse : unclamped;
+		float newImpulse = -maxImpulse > belowUpper ? -maxImpulse : belowUpper;
 		impulse = newImpulse - r->motorImpulse;
 		r->motorImpulse = newImpulse;
 		b->wA -= iA * impulse;
