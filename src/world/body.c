@@ -1479,8 +1479,9 @@ static void tbUpdateSleepTime(const tbWorld* world, tbBody* body, float timeStep
 	// A body rests when its fastest point moves slower than the threshold: |v| + |ω|·maxExtent.
 	// A body without extent (no shapes) has no fastest point but its centre: |v| alone, and its
 	// spin is judged by the angular tolerance instead.
-	float speed = tbLength(body->linearVelocity) + tbAbsFloat(body->angularVelocity) * body->maxExtent;
-	bool fastSpin = tbAbsFloat(body->angularVelocity) >= TB_ANGULAR_SLEEP_TOLERANCE;
+	// fabsf rather than tbAbsFloat's comparison, a branch on the spin's sign (see tbSpeculativeMargin).
+	float speed = tbLength(body->linearVelocity) + fabsf(body->angularVelocity) * body->maxExtent;
+	bool fastSpin = fabsf(body->angularVelocity) >= TB_ANGULAR_SLEEP_TOLERANCE;
 	if (speed > body->sleepThreshold || (body->maxExtent == 0.0f && fastSpin))
 	{
 		body->sleepTime = 0.0f;

@@ -18,6 +18,7 @@
 
 #include "core/array.h"
 
+#include <math.h>
 #include <stdlib.h> // qsort
 #include <string.h>
 
@@ -534,10 +535,11 @@ static TB_FORCE_INLINE float tbSpeculativeMargin(const tbWorld* world, const tbB
 {
 	float dt = world->stepTime;
 	tbVec2 dv = tbSub(bodyA->linearVelocity, bodyB->linearVelocity);
-	float speed = tbLength(dv) + tbAbsFloat(bodyA->angularVelocity) * bodyA->coreExtent +
-				  tbAbsFloat(bodyB->angularVelocity) * bodyB->coreExtent;
-	float gravity = world->gravityLength *
-					tbAbsFloat(tbEffectiveGravityScale(bodyA) - tbEffectiveGravityScale(bodyB));
+	// fabsf, one instruction clearing the sign, where tbAbsFloat's comparison (which keeps −0) is a
+	// branch on the spin's sign, unpredictable in a pile; added to a length, a zero's sign cannot show.
+	float speed = tbLength(dv) + fabsf(bodyA->angularVelocity) * bodyA->coreExtent +
+				  fabsf(bodyB->angularVelocity) * bodyB->coreExtent;
+	float gravity = world->gravityLength * fabsf(tbEffectiveGravityScale(bodyA) - tbEffectiveGravityScale(bodyB));
 	float closing = dt * (speed + dt * gravity);
 	// NaN-safe: a non-finite velocity gets the cap rather than poisoning the comparison.
 	float cap = tbMaxFloat(tbSpeculativeReach(bodyA), tbSpeculativeReach(bodyB));

@@ -24,6 +24,7 @@
 #include "core/sort.h"
 #include "core/task.h"
 
+#include <math.h>
 #include <string.h>
 
 /// Time-of-impact counters of one worker (summed into the world's after the stage).
@@ -103,7 +104,8 @@ static bool tbIsFast(const tbWorld* world, const tbBody* body, float* motion)
 	// so a body whose bound stays within its reach is not fast, without the atan2 that every awake
 	// body would otherwise pay for in every step.
 	tbRot turn = tbInvMulRot(body->rotation0, body->transform.q);
-	if (body->isBullet == false && turn.c >= 0.0f && translation + 1.6f * tbAbsFloat(turn.s) * body->maxExtent <= reach)
+	// fabsf rather than tbAbsFloat's comparison, a branch on the turn's sign (see tbSpeculativeMargin).
+	if (body->isBullet == false && turn.c >= 0.0f && translation + 1.6f * fabsf(turn.s) * body->maxExtent <= reach)
 	{
 		*motion = translation;
 		return false;
