@@ -7,6 +7,7 @@
 #include "error_recorder.h"
 #include "snapshot_scene.h"
 #include "task_system.h"
+#include "test_helpers.h"
 #include "world/snapshot.h"
 
 #include "tumble/tumble.h"
@@ -669,28 +670,18 @@ Test(snapshot, ids_made_after_a_snapshot_stay_stale_in_the_next_world_of_the_slo
 // onto boxes: the world restored from its image steps on to the same state hash and image.
 Test(snapshot, a_shape_removed_without_a_mass_update_restores_bit_identically)
 {
-	tbWorldDef worldDef = tbDefaultWorldDef();
-	tbWorldId world = tbCreateWorld(&worldDef);
-	tbBodyDef groundDef = tbDefaultBodyDef();
-	tbBodyId ground = tbCreateBody(world, &groundDef);
-	tbShapeDef shapeDef = tbDefaultShapeDef();
-	tbPolygon floor = tbMakeOffsetBox(20.0f, 0.5f, (tbVec2){0.0f, -0.5f}, tbRot_identity);
-	tbCreatePolygonShape(ground, &shapeDef, &floor);
+	tbWorldId world = CreateWorld(tbDefaultWorldDef().gravity);
+	CreateGround(world, (tbVec2){0.0f, -0.5f}, 20.0f, 0.5f, NULL);
 	for (int i = 0; i < 6; ++i)
 	{
-		tbBodyDef boxDef = tbDefaultBodyDef();
-		boxDef.type = tb_dynamicBody;
-		boxDef.position = (tbVec2){-2.5f + (float)i, 0.5f};
-		tbPolygon box = tbMakeBox(0.45f, 0.45f);
-		tbCreatePolygonShape(tbCreateBody(world, &boxDef), &shapeDef, &box);
+		CreateBox(world, tb_dynamicBody, (tbVec2){-2.5f + (float)i, 0.5f}, 0.45f, 0.45f, 1.0f);
 	}
 	tbBodyDef bodyDef = tbDefaultBodyDef();
 	bodyDef.type = tb_dynamicBody;
 	bodyDef.position = (tbVec2){0.0f, 3.0f};
 	bodyDef.angularVelocity = 6.0f;
-	tbBodyId body = tbCreateBody(world, &bodyDef);
-	tbPolygon box = tbMakeBox(0.5f, 0.5f);
-	tbCreatePolygonShape(body, &shapeDef, &box);
+	tbBodyId body = CreateBoxFromDef(world, &bodyDef, 0.5f, 0.5f, NULL);
+	tbShapeDef shapeDef = tbDefaultShapeDef();
 	tbCircle nearBall = {{0.3f, 0.0f}, 0.4f};
 	tbCreateCircleShape(body, &shapeDef, &nearBall);
 	tbCircle farBall = {{2.0f, 0.0f}, 0.3f};
