@@ -251,14 +251,21 @@ void tbSolveRevoluteJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 		return;
 	}
 
-	tbJointAnchors(joint, &b, &rA, &rB, &separation);
-	tbVec2 Cdot = tbSub(tbAdd(b.vB, tbCrossSV(b.wB, rB)), tbAdd(b.vA, tbCrossSV(b.wA, rA)));
+	// The relaxing pass (no bias) needs only the anchors, not how far apart they are.
 	tbSoftness soft = {0.0f, 1.0f, 0.0f};
+	tbVec2 bias = tbVec2_zero;
 	if (useBias)
 	{
+		tbJointAnchors(joint, &b, &rA, &rB, &separation);
 		soft = joint->constraintSoftness;
+		bias = tbMulSV(soft.biasRate, separation);
 	}
-	tbVec2 bias = tbMulSV(soft.biasRate, separation);
+	else
+	{
+		rA = tbRotateVector(b.sA->deltaRotation, joint->frameA.p);
+		rB = tbRotateVector(b.sB->deltaRotation, joint->frameB.p);
+	}
+	tbVec2 Cdot = tbSub(tbAdd(b.vB, tbCrossSV(b.wB, rB)), tbAdd(b.vA, tbCrossSV(b.wA, rA)));
 
 	float mA = joint->invMassA, mB = joint->invMassB, iA = joint->invIA, iB = joint->invIB;
 	tbMat22 K;

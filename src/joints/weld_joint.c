@@ -86,16 +86,18 @@ void tbSolveWeldJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	// Angular row (a rigid one is solved with its tree when the joint is in one, joint_tree.c).
 	if (joint->solvedInTree == false || w->angularHertz > 0.0f)
 	{
+		// The relaxing pass of a rigid row has no bias, and so no use for the angle.
 		tbSoftness soft = {0.0f, 1.0f, 0.0f};
+		float bias = 0.0f;
 		if (useBias || w->angularHertz > 0.0f)
 		{
 			soft = w->angularSpring;
+			tbRot qA = tbMulRot(b.sA->deltaRotation, joint->frameA.q);
+			tbRot qB = tbMulRot(b.sB->deltaRotation, joint->frameB.q);
+			bias = soft.biasRate * tbRelativeAngle(qA, qB);
 		}
-		tbRot qA = tbMulRot(b.sA->deltaRotation, joint->frameA.q);
-		tbRot qB = tbMulRot(b.sB->deltaRotation, joint->frameB.q);
-		float C = tbRelativeAngle(qA, qB);
 		float Cdot = b.wB - b.wA;
-		float impulse = -soft.massScale * w->axialMass * (Cdot + soft.biasRate * C) - soft.impulseScale * w->angularImpulse;
+		float impulse = -soft.massScale * w->axialMass * (Cdot + bias) - soft.impulseScale * w->angularImpulse;
 		w->angularImpulse += impulse;
 		b.wA -= iA * impulse;
 		b.wB += iB * impulse;
@@ -104,20 +106,28 @@ void tbSolveWeldJoint(tbJoint* joint, tbStepContext* context, bool useBias)
 	// Linear rows.
 	if (joint->solvedInTree == false || w->linearHertz > 0.0f)
 	{
+		// As the angular row: without bias only the anchors are needed, not the gap between them.
 		tbSoftness soft = {0.0f, 1.0f, 0.0f};
+		tbVec2 rA, rB, bias = tbVec2_zero;
 		if (useBias || w->linearHertz > 0.0f)
 		{
 			soft = w->linearSpring;
+			tbVec2 C;
+			tbJointAnchors(joint, &b, &rA, &rB, &C);
+			bias = tbMulSV(soft.biasRate, C);
 		}
-		tbVec2 rA, rB, C;
-		tbJointAnchors(joint, &b, &rA, &rB, &C);
+		else
+		{
+			rA = tbRotateVector(b.sA->deltaRotation, joint->frameA.p);
+			rB = tbRotateVector(b.sB->deltaRotation, joint->frameB.p);
+		}
 		tbVec2 Cdot = tbSub(tbAdd(b.vB, tbCrossSV(b.wB, rB)), tbAdd(b.vA, tbCrossSV(b.wA, rA)));
 		tbMat22 K;
 		K.cx.x = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
 		K.cy.x = -rA.y * rA.x * iA - rB.y * rB.x * iB;
 		K.cx.y = K.cy.x;
 		K.cy.y = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
-		tbVec2 x = tbSolve22(K, tbMulAdd(Cdot, soft.biasRate, C));
+		tbVec2 x = tbSolve22(K, tbAdd(Cdot, bias));
 		tbVec2 impulse = {-soft.massScale * x.x - soft.impulseScale * w->linearImpulse.x,
 						  -soft.massScale * x.y - soft.impulseScale * w->linearImpulse.y};
 		w->linearImpulse = tbAdd(w->linearImpulse, impulse);
