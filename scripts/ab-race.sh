@@ -4,6 +4,8 @@
 #
 #   scripts/ab-race.sh OLD_BUILD NEW_BUILD STEPS WORKERS SCENE...
 #
+# SCENE is a catalogue scene (samples/tumble list) or, when both builds have built tumble-bench-games,
+# game:NAME for a scene of bench/game_scenes.c (tumble-bench-games --list).
 # OLD_BUILD and NEW_BUILD are build directories of this tree (e.g. a Release build of the commit
 # before, from a second worktree, and one of the change) in which the targets `tumble` and
 # `tumble_scenes` are built. A is OLD_BUILD, B is NEW_BUILD: B/A < 1 means the change is faster.
@@ -19,10 +21,17 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 old="$(cd "$1" && pwd)"; new="$(cd "$2" && pwd)"; shift 2
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-gcc -O2 -c -I"$root/samples" -I"$root/include" "$root/bench/ab/runner.c" -o "$work/runner.o"
+# Game scenes (SCENE "game:NAME", bench/game_scenes.c) when both builds have tumble-bench-games' library.
+games=()
+gamesFlag=()
+if [ -f "$old/bench/libtumble_games_tumble.a" ] && [ -f "$new/bench/libtumble_games_tumble.a" ]; then
+	gamesFlag=(-DAB_GAMES -I"$root/bench")
+fi
+gcc -O2 -c -I"$root/samples" -I"$root/include" "${gamesFlag[@]}" "$root/bench/ab/runner.c" -o "$work/runner.o"
 side() { # side LETTER BUILD_DIR
-	ld -r -o "$work/$1.raw.o" "$work/runner.o" --whole-archive "$2/samples/libtumble_scenes.a" "$2/libtumble.a" \
-		--no-whole-archive
+	if [ ${#gamesFlag[@]} -gt 0 ]; then games=("$2/bench/libtumble_games_tumble.a"); fi
+	ld -r -o "$work/$1.raw.o" "$work/runner.o" --whole-archive "${games[@]}" "$2/samples/libtumble_scenes.a" \
+		"$2/libtumble.a" --no-whole-archive
 	objcopy --keep-global-symbol=R_create --keep-global-symbol=R_step --keep-global-symbol=R_hash \
 		--keep-global-symbol=R_destroy "$work/$1.raw.o" "$work/$1.kept.o"
 	objcopy --redefine-sym R_create="$1_create" --redefine-sym R_step="$1_step" --redefine-sym R_hash="$1_hash" \
