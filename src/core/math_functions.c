@@ -1,41 +1,14 @@
-// Math helpers that are not inline: an arctangent with a stated error and the cosine/sine pair of
-// an angle, neither of which depends on the platform's libm.
+// Math helpers that are not inline: the exported arctangent with a stated error (its body is
+// core/arctangent.h) and the cosine/sine pair of an angle, neither of which depends on the
+// platform's libm.
+#include "core/arctangent.h"
 #include "tumble/math_functions.h"
 
 #include <math.h>
 
-// atan(t) for t in [0, 1] by an odd polynomial t·(a1 + a3·t² + … + a11·t¹⁰), a standard fit of atan
-// on [0, 1] in the manner of Hastings (cf. Abramowitz & Stegun 4.4.47–4.4.49). Its error is
-// checked, not assumed: tests/test_math.c holds it within the stated 3e-6 rad of atan2 in double
-// over 10⁶ directions at three radii. Other octants by
-// atan(t) = π/2 − atan(1/t) and the signs of x and y.
 float tbAtan2(float y, float x)
 {
-	float ax = fabsf(x), ay = fabsf(y);
-	float big = ax > ay ? ax : ay;
-	float small = ax > ay ? ay : ax;
-	if (big == 0.0f)
-	{
-		return 0.0f; // atan2(0, 0): 0 as the libm functions give for +0
-	}
-	float t = small / big;
-	// The polynomial in u = t² evaluated in Estrin's scheme, (a1 + a3·u) + u²·(a5 + a7·u) + u⁴·(a9 + a11·u):
-	// three independent pairs and three levels instead of Horner's chain of six multiply-adds, whose
-	// latency a joint's angle waits on in every solve.
-	float u = t * t, u2 = u * u, u4 = u2 * u2;
-	float p01 = 0.99997726f + -0.33262347f * u;
-	float p23 = 0.19354346f + -0.11643287f * u;
-	float p45 = 0.05265332f + -0.01172120f * u;
-	float r = t * (p01 + u2 * p23 + u4 * p45);
-	if (ay > ax)
-	{
-		r = 0.5f * TB_PI - r;
-	}
-	if (x < 0.0f)
-	{
-		r = TB_PI - r;
-	}
-	return y < 0.0f ? -r : r;
+	return tbArctangent(y, x);
 }
 
 // Sine and cosine without the C library, whose last bits differ between platforms (glibc's and

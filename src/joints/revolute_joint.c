@@ -20,6 +20,8 @@
 // Reference: Catto, "Modeling and Solving Constraints", GDC 2009; Box2D v3's revolute joint.
 #include "joint.h"
 
+#include "core/arctangent.h"
+
 #include <math.h>
 #include "world/recording.h"
 
@@ -119,11 +121,11 @@ void tbWarmStartRevoluteJoint(tbJoint* joint, tbStepContext* context)
 
 // Angle of frame B relative to frame A now: the frames at the start of the step turned by each
 // body's rotation since.
-static float tbRevoluteAngle(const tbJoint* joint, const tbJointBodies* b)
+static TB_FORCE_INLINE float tbRevoluteAngle(const tbJoint* joint, const tbJointBodies* b)
 {
 	tbRot qA = tbMulRot(b->sA->deltaRotation, joint->frameA.q);
 	tbRot qB = tbMulRot(b->sB->deltaRotation, joint->frameB.q);
-	return tbRelativeAngle(qA, qB);
+	return tbRelativeAngleInline(qA, qB);
 }
 
 // One side of the limit. sign = +1: C = θ − lower, sign = −1: C = upper − θ; the impulse pushes
@@ -178,7 +180,7 @@ static TB_FORCE_INLINE void tbSolveRevoluteAngularRows(tbJoint* joint, tbJointBo
 // The rows are forced inline too: handed to a call, the caller's bodies (their address taken) lived
 // on the stack through the whole solve, each velocity stored a float at a time and read back eight
 // bytes at a time, a load the processor cannot forward from the two stores.
-static inline void tbSolveRevoluteAngular(tbJoint* joint, tbJointBodies* b, const tbStepContext* context, bool useBias)
+static TB_FORCE_INLINE void tbSolveRevoluteAngular(tbJoint* joint, tbJointBodies* b, const tbStepContext* context, bool useBias)
 {
 	const tbRevoluteJoint* r = &joint->revolute;
 	bool anyRow = r->enableSpring || r->enableMotor || r->enableLimit;
