@@ -180,6 +180,7 @@ Test(contact_solver, restitution_reverses_normal_velocity)
 		MiniWorld m;
 		InitMini(&m, (tbSolverMethod)method, tbMakeVec2(0.0f, -4.0f), 0.0f);
 		m.contact.restitution = 0.5f;
+		tbSetContactMaterialFlags(&m.contact); // as tbMixContactMaterials does for a world's contacts
 		SolveStage(&m, 1.0f / 60.0f, 4);
 		cr_expect(fabsf(m.bodies[1].linearVelocity.y - 2.0f) < 1e-4f, "method %d: vy %f", method,
 				  m.bodies[1].linearVelocity.y);

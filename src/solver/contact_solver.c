@@ -320,9 +320,7 @@ static tbContactKey tbMakeContactKey(const tbStepContext* context, const tbConta
 	bool dynamicB = key.indexB != context->bodyCount && world->bodies[bodyIdB].type == tb_dynamicBody;
 	flags |= dynamicA ? (uint32_t)tb_keyDynamicA : 0u;
 	flags |= dynamicB ? (uint32_t)tb_keyDynamicB : 0u;
-	flags |= contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
-	flags |= contact->rollingResistance > 0.0f ? (uint32_t)tb_keyRolling : 0u;
-	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
+	flags |= tbContactMaterialKey(contact);
 	key.flags = flags;
 	return key;
 }

@@ -91,6 +91,15 @@ void tbMixContactMaterials(const tbWorld* world, tbContact* contact)
 	float resistance = tbMaxFloat(a->material.rollingResistance, b->material.rollingResistance);
 	contact->rollingResistance = resistance > 0.0f ? resistance * tbMaxFloat(tbRollingRadius(a), tbRollingRadius(b)) : 0.0f;
 	contact->tangentSpeed = a->material.tangentSpeed + b->material.tangentSpeed;
+	tbSetContactMaterialFlags(contact);
+}
+
+void tbSetContactMaterialFlags(tbContact* contact)
+{
+	uint32_t bits = (contact->tangentSpeed != 0.0f ? (uint32_t)tb_contactTangentSpeed : 0u) |
+					(contact->restitution != 0.0f ? (uint32_t)tb_contactBounces : 0u) |
+					(contact->rollingResistance > 0.0f ? (uint32_t)tb_contactRolls : 0u);
+	contact->flags = (contact->flags & ~(uint32_t)(tb_contactTangentSpeed | tb_contactBounces | tb_contactRolls)) | bits;
 }
 
 static void tbLinkEdge(tbWorld* world, int contactId, int edgeIndex)
@@ -1083,9 +1092,7 @@ static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* co
 	bool movesA = a->solverMoves, movesB = b->solverMoves;
 	uint32_t flags = (movesA ? (uint32_t)tb_keyMovesA : 0u) | (movesB ? (uint32_t)tb_keyMovesB : 0u) |
 					 (dynamicA ? (uint32_t)tb_keyDynamicA : 0u) | (dynamicB ? (uint32_t)tb_keyDynamicB : 0u);
-	flags |= contact->tangentSpeed != 0.0f ? (uint32_t)tb_keyScalarOnly : 0u;
-	flags |= contact->rollingResistance > 0.0f ? (uint32_t)tb_keyRolling : 0u;
-	flags |= contact->restitution != 0.0f ? (uint32_t)tb_keyBounces : 0u;
+	flags |= tbContactMaterialKey(contact);
 	tbCollideKey* written = world->cache.collideKeys + contactId;
 	tbContactKey* key = &written->key;
 	// The same key as written in the last step (a steady step can keep the solver's keys).

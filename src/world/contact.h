@@ -44,7 +44,17 @@ enum tbContactFlags
 	/// keep a contact's low eight flags only (snapshot.c): a restored contact runs the narrow phase
 	/// again, with the same result, since keeping it apart is exact.
 	tb_contactApart = 0x200,
+	/// The contact's material as its solver key reads it (tbMixContactMaterials keeps them, and a
+	/// snapshot's restore): tangent speed ≠ 0, restitution ≠ 0, rolling resistance > 0. They are
+	/// tbContactKeyFlag's tb_keyScalarOnly, tb_keyBounces and tb_keyRolling shifted left by
+	/// TB_CONTACT_MATERIAL_SHIFT, so the collide walk writes a key without loading the material.
+	tb_contactTangentSpeed = 0x400,
+	tb_contactBounces = 0x800,
+	tb_contactRolls = 0x1000,
 };
+
+/// tbContactFlag's material bits are the solver key's material bits shifted by this much.
+#define TB_CONTACT_MATERIAL_SHIFT 6
 
 /// Where a contact's manifold was last computed by the narrow phase (manifold recycling,
 /// contact.c): the relative pose and the points fixed in each body, so that a later step can move
@@ -115,6 +125,18 @@ typedef enum tbContactKeyFlag
 	tb_keyRolling = 64,	   ///< rolling resistance: its lane's rolling row is kept beside the block
 } tbContactKeyFlag;
 
+_Static_assert(tb_contactTangentSpeed == tb_keyScalarOnly << TB_CONTACT_MATERIAL_SHIFT &&
+				   tb_contactBounces == tb_keyBounces << TB_CONTACT_MATERIAL_SHIFT &&
+				   tb_contactRolls == tb_keyRolling << TB_CONTACT_MATERIAL_SHIFT,
+			   "a contact's material bits are its key's, shifted");
+
+/// The material bits of a contact's key (tb_keyScalarOnly, tb_keyBounces, tb_keyRolling).
+static inline uint32_t tbContactMaterialKey(const tbContact* contact)
+{
+	const uint32_t material = tb_contactTangentSpeed | tb_contactBounces | tb_contactRolls;
+	return (contact->flags & material) >> TB_CONTACT_MATERIAL_SHIFT;
+}
+
 /// Two body ids (contact.c's dense copy of each contact's bodies).
 typedef struct tbBodyPair
 {
@@ -147,8 +169,12 @@ int tbCreateContact(tbWorld* world, int shapeIdA, int shapeIdB);
 /// and may have one, marked tb_contactSensorHit; its id, or TB_NULL_INDEX when the pair may not
 /// touch or is marked already.
 int tbMarkSensorHit(tbWorld* world, int sensorShapeId, int visitorShapeId);
-/// The contact's mixed friction, restitution, rolling resistance and tangent speed from its shapes.
+/// The contact's mixed friction, restitution, rolling resistance and tangent speed from its shapes
+/// (and its material bits, as tbSetContactMaterialFlags).
 void tbMixContactMaterials(const tbWorld* world, tbContact* contact);
+/// The contact's material bits (tb_contactTangentSpeed, tb_contactBounces, tb_contactRolls) from its
+/// tangent speed, restitution and rolling resistance.
+void tbSetContactMaterialFlags(tbContact* contact);
 void tbDestroyContact(tbWorld* world, int contactId, bool wakeBodies);
 /// The base of a manifold computed with its bodies at xfA and xfB (its margin aside): the relative
 /// pose, the normal in each body's frame, and each point (`points`, midway between the surfaces)

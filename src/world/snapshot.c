@@ -2335,6 +2335,7 @@ static bool tbReadContact(tbDecoder* d, int id)
 			return tbFail(r, "contact %d has a negative or NaN friction, restitution or rolling resistance", id);
 		}
 		contact->friction = friction;
+		tbSetContactMaterialFlags(contact);
 	}
 	else
 	{
