@@ -1105,12 +1105,18 @@ static bool tbWriteCollideKey(tbWorld* world, int contactId, const tbContact* co
 	return same;
 }
 
+/// Proxy slots (16 bytes each) beyond which the collide walk prefetches the proxies too: up to
+/// here the table stays in cache between steps (the smaller piles: falling_1000, the ragdoll pile),
+/// and the prefetches cost more than they save; beyond it (junkyard, smash, the washer) they pay.
+#define TB_PREFETCH_PROXIES_MIN 4096
+
 /// The collide walk's loads form a chain: the contact names its shapes and bodies, a shape names
 /// its proxy. Each is a miss to memory in a large pile (contact ids, shapes and bodies are in no
 /// common order), and the chain serialises them. So the walk prefetches in stages: the contact
 /// 2·TB_PREFETCH_AHEAD items ahead, the shapes and bodies of the one TB_PREFETCH_AHEAD ahead (its
-/// contact is in cache by then), and the proxies of the one half as far ahead (its shapes are).
-static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, int endIndex)
+/// contact is in cache by then), and, in a large table (TB_PREFETCH_PROXIES_MIN), the proxies of
+/// the one half as far ahead (its shapes are).
+static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, int endIndex, bool proxies)
 {
 	const int* ids = world->cache.stepContacts;
 	if (i + 2 * TB_PREFETCH_AHEAD < endIndex)
@@ -1135,12 +1141,12 @@ static TB_FORCE_INLINE void tbPrefetchCollideAhead(const tbWorld* world, int i, 
 		tbPrefetch(world->bodies + ahead->edges[0].bodyId, bodyBytes);
 		tbPrefetch(world->bodies + ahead->edges[1].bodyId, bodyBytes);
 	}
-	if (i + TB_PREFETCH_AHEAD / 2 < endIndex)
+	if (proxies && i + TB_PREFETCH_AHEAD / 2 < endIndex)
 	{
 		const tbContact* ahead = world->contacts + ids[i + TB_PREFETCH_AHEAD / 2];
-		const tbBroadProxy* proxies = world->broadPhase.table.proxies;
-		tbPrefetch(proxies + world->shapes[ahead->shapeIdA].proxyKey, 16);
-		tbPrefetch(proxies + world->shapes[ahead->shapeIdB].proxyKey, 16);
+		const tbBroadProxy* table = world->broadPhase.table.proxies;
+		tbPrefetch(table + world->shapes[ahead->shapeIdA].proxyKey, 16);
+		tbPrefetch(table + world->shapes[ahead->shapeIdB].proxyKey, 16);
 	}
 }
 
@@ -1151,11 +1157,12 @@ static void tbCollideTask(int startIndex, int endIndex, uint32_t workerIndex, vo
 	tbWorld* world = context;
 	const tbBroadPhase* bp = &world->broadPhase;
 	uint16_t* results = world->cache.collideResults;
+	bool prefetchProxies = bp->table.capacity > TB_PREFETCH_PROXIES_MIN;
 	for (int i = startIndex; i < endIndex; ++i)
 	{
 		int contactId = world->cache.stepContacts[i];
 		tbContact* contact = world->contacts + contactId;
-		tbPrefetchCollideAhead(world, i, endIndex);
+		tbPrefetchCollideAhead(world, i, endIndex, prefetchProxies);
 		const tbShape* a = world->shapes + contact->shapeIdA;
 		const tbShape* b = world->shapes + contact->shapeIdB;
 		bool overlap = tbBroadPhase_TestOverlap(bp, a->proxyKey, b->proxyKey);
