@@ -92,13 +92,24 @@ void tbIntegrateVelocities(tbStepContext* context)
 
 void tbIntegrateVelocitiesRange(tbStepContext* context, int start, int end)
 {
+	// tbClampSpeeds, with its test inline: a body within the limits (nearly every one) is left as it
+	// is, which the clamp would also do, without a call per body and sub-step.
+	float maxLinear = context->maxLinearSpeed, maxAngular = context->maxAngularSpeed;
+	const uint8_t* fastRotation = context->fastRotation;
 	for (int i = start; i < end; ++i)
 	{
 		tbSolverBody* sb = context->bodies + i;
 		const tbSolverMotion* m = context->motions + i;
-		sb->linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
-		sb->angularVelocity = m->angularDamping * (sb->angularVelocity + m->angularDelta);
-		tbClampSpeeds(context, sb, i);
+		tbVec2 v = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
+		float w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
+		sb->linearVelocity = v;
+		sb->angularVelocity = w;
+		float angularLimit = fastRotation != NULL && fastRotation[i] != 0 ? FLT_MAX : maxAngular;
+		// Written so that NaN and infinities take the clamp.
+		if (!(tbDot(v, v) <= maxLinear * maxLinear && fabsf(w) <= angularLimit))
+		{
+			tbClampSpeedsTo(sb, maxLinear, angularLimit);
+		}
 	}
 }
 
