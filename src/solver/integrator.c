@@ -38,7 +38,7 @@ static tbVec2 tbClampHugeSpeed(tbVec2 v, float maxSpeed)
 }
 
 // Speeds limited to maxLinearSpeed and maxAngularSpeed (NaN spin: none).
-static void tbClampSpeedsTo(tbSolverBody* sb, float maxLinearSpeed, float maxAngularSpeed)
+void tbClampSpeedsTo(tbSolverBody* sb, float maxLinearSpeed, float maxAngularSpeed)
 {
 	tbVec2 v = sb->linearVelocity;
 	float w = sb->angularVelocity;
@@ -54,15 +54,6 @@ static void tbClampSpeedsTo(tbSolverBody* sb, float maxLinearSpeed, float maxAng
 	w = w == w ? tbClampFloat(w, -maxAngularSpeed, maxAngularSpeed) : 0.0f; // NaN (0 · ∞ torque): no direction
 	sb->linearVelocity = v;
 	sb->angularVelocity = w;
-}
-
-void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb, int index)
-{
-	// A body that allows fast rotation (a wheel) keeps its spin; only NaN is cleared. Continuous
-	// collision's rotation bound then does not hold for it, which costs nothing for a round shape
-	// (it looks the same at any angle), as Box2D v3.2 says of the option.
-	bool fast = context->fastRotation != NULL && context->fastRotation[index] != 0;
-	tbClampSpeedsTo(sb, context->maxLinearSpeed, fast ? FLT_MAX : context->maxAngularSpeed);
 }
 
 // The solve may leave a body far faster than the limits the integration of velocities keeps: a
@@ -92,8 +83,10 @@ void tbIntegrateVelocities(tbStepContext* context)
 
 void tbIntegrateVelocitiesRange(tbStepContext* context, int start, int end)
 {
-	// tbClampSpeeds, with its test inline: a body within the limits (nearly every one) is left as it
-	// is, which the clamp would also do, without a call per body and sub-step.
+	// tbClampSpeeds, its limits loaded once (the stores into the bodies would make it load them
+	// again for each). A body that allows fast rotation (a wheel) keeps its spin; only NaN is
+	// cleared. Continuous collision's rotation bound then does not hold for it, which costs nothing
+	// for a round shape (it looks the same at any angle), as Box2D v3.2 says of the option.
 	float maxLinear = context->maxLinearSpeed, maxAngular = context->maxAngularSpeed;
 	const uint8_t* fastRotation = context->fastRotation;
 	for (int i = start; i < end; ++i)

@@ -3,10 +3,28 @@
 
 #include "solver_types.h"
 
-/// |v| ≤ maximumLinearSpeed (without overflow for any finite or infinite v) and |ω| ≤ the
-/// per-step rotation bound (no bound on ω for solver body `index` when it allows fast rotation);
-/// applied to the velocities a step starts from and after each update.
-void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb, int index);
+#include <float.h>
+#include <math.h>
+
+/// |v| ≤ maxLinearSpeed (without overflow for any finite or infinite v), |ω| ≤ maxAngularSpeed, a
+/// NaN spin cleared.
+void tbClampSpeedsTo(tbSolverBody* sb, float maxLinearSpeed, float maxAngularSpeed);
+
+/// |v| ≤ maximumLinearSpeed and |ω| ≤ the per-step rotation bound (no bound on ω for solver body
+/// `index` when it allows fast rotation); applied to the velocities a step starts from and after
+/// each update. Inline, the clamp called only beyond the limits (or for NaN and infinities): a body
+/// within them, nearly every one, is left as it is, which the clamp would also do.
+static inline void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb, int index)
+{
+	bool fast = context->fastRotation != NULL && context->fastRotation[index] != 0;
+	float maxLinear = context->maxLinearSpeed;
+	float maxAngular = fast ? FLT_MAX : context->maxAngularSpeed;
+	tbVec2 v = sb->linearVelocity;
+	if (!(tbDot(v, v) <= maxLinear * maxLinear && fabsf(sb->angularVelocity) <= maxAngular))
+	{
+		tbClampSpeedsTo(sb, maxLinear, maxAngular);
+	}
+}
 
 /// Zero the components of v along the locked axes (1: x, 2: y; tbStepContext::linearLocks).
 static inline void tbApplyLinearLocks(uint8_t locks, tbVec2* v)
