@@ -1589,8 +1589,10 @@ int tbFinalizeStage(tbWorld* world, float timeStep)
 		int bodyId = world->awakeBodies[i];
 		tbBody* body = world->bodies + bodyId;
 		tbUpdateSleepTime(world, body, timeStep);
-		tbComputeBodyShapeBoxes(world, body, false);
-		tbMoveFlaggedProxies(world, body);
+		if (tbComputeBodyShapeBoxes(world, body, false))
+		{
+			tbMoveFlaggedProxies(world, body); // only when some box was re-made
+		}
 		tbBodyMoveEvent event = tbMakeMoveEvent(world, body, bodyId);
 		TB_ARRAY_PUSH(world->events.moveEvents, world->events.moveCount, world->events.moveCapacity, event);
 		beyond += tbIsBeyondBounds(body) ? 1 : 0;

@@ -564,7 +564,7 @@ static void tbNoteSweptSensors(tbWorld* world, const tbSweptSensor* sensors, con
 	world->profile.sensorHits = tbGetMilliseconds(ticks);
 }
 
-bool tbMarkFastBody(const tbWorld* world, tbBody* body)
+bool tbMarkFastBodyExactly(const tbWorld* world, tbBody* body)
 {
 	float motion;
 	body->isFast = body->type == tb_dynamicBody && tbIsFast(world, body, &motion);

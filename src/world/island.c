@@ -285,7 +285,7 @@ typedef struct tbSleepLinks
 
 // A link between awake indices a and b (TB_NULL_INDEX: static, or asleep) with their dynamic flags:
 // two dynamic bodies join islands; a dynamic and a kinematic body are remembered as a touch.
-static void tbAddSleepLink(tbSleepLinks* links, int a, bool dynamicA, int b, bool dynamicB)
+static inline void tbAddSleepLink(tbSleepLinks* links, int a, bool dynamicA, int b, bool dynamicB)
 {
 	if (a == TB_NULL_INDEX || b == TB_NULL_INDEX)
 	{
