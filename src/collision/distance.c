@@ -131,8 +131,7 @@ tbSegmentDistanceResult tbSegmentDistance(tbVec2 p1, tbVec2 q1, tbVec2 p2, tbVec
 // ---------------------------------------------------------------------------------------------
 // Proxies
 
-// The proxy of count (1..TB_MAX_POLYGON_VERTICES) checked points and a radius.
-static tbShapeProxy tbCopyProxy(const tbVec2* points, int count, float radius)
+tbShapeProxy tbMakeValidProxy(const tbVec2* points, int count, float radius)
 {
 	tbShapeProxy proxy = {0};
 	for (int i = 0; i < count; ++i)
@@ -160,7 +159,7 @@ static tbShapeProxy tbMakeProxyNamed(const char* f, const tbVec2* points, int co
 	{
 		return proxy;
 	}
-	return tbCopyProxy(points, count, radius);
+	return tbMakeValidProxy(points, count, radius);
 }
 
 tbShapeProxy tbMakeProxy(const tbVec2* points, int count, float radius)
@@ -945,7 +944,7 @@ static tbShapeProxy tbCheckedShapeProxy(const char* f, const tbVec2* points, int
 	{
 		return empty;
 	}
-	return tbCopyProxy(points, count, radius);
+	return tbMakeValidProxy(points, count, radius);
 }
 
 // The checks and the cast shared by the four: pointers, the shape's proxy, then the sweep.

@@ -32,6 +32,11 @@ bool tbCheckProxyPair(const char* function, const tbShapeProxy* proxyA, const tb
 
 int tbFindSupport(const tbShapeProxy* proxy, tbVec2 direction);
 
+/// tbMakeProxy without its checks, for points the engine already holds valid (a shape's vertices,
+/// 1..TB_MAX_POLYGON_VERTICES of them): the narrow phase makes proxies for every pair it hands to
+/// GJK, where the checks cost more than the copy.
+tbShapeProxy tbMakeValidProxy(const tbVec2* points, int count, float radius);
+
 /// proxyB with its points mapped by the relative transform A⁻¹·B, i.e. expressed in A's frame.
 tbShapeProxy tbMakeRelativeProxy(const tbShapeProxy* proxyB, tbTransform relative);
 

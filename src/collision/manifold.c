@@ -631,8 +631,8 @@ static void tbClosestFeaturesManifold(tbManifold* m, const tbPolygon* polygonA, 
 									  float separationA, int edgeB, float separationB, float keep)
 {
 	bool faceOfB = separationB > separationA;
-	tbShapeProxy proxyA = tbMakeProxy(polygonA->vertices, polygonA->count, 0.0f);
-	tbShapeProxy proxyB = tbMakeProxy(polygonB->vertices, polygonB->count, 0.0f);
+	tbShapeProxy proxyA = tbMakeValidProxy(polygonA->vertices, polygonA->count, 0.0f);
+	tbShapeProxy proxyB = tbMakeValidProxy(polygonB->vertices, polygonB->count, 0.0f);
 	tbSimplex simplex;
 	tbDistanceOutput closest = tbLocalShapeDistance(&proxyA, &proxyB, NULL, &simplex);
 
