@@ -69,6 +69,34 @@ Test(materials, changing_the_belt_at_run_time_reaches_existing_contacts)
 // carries it), so the kept keys must not be taken. Sleep is off, so the box stays awake and the
 // steps stay steady until the belt starts. Closed form and bound as for the belt that always ran:
 // the belt speed, 1 %.
+// Restitution given to a ball resting on the ground, whose contact exists, makes it bounce: the
+// contact's material, and the solver key built from it, must follow the change (contact.c keeps
+// the material as flag bits). Sent down at 5 m/s with e = 1, the ball leaves at 5 m/s less the
+// gravity of the step of the bounce, g·dt = 0.16 m/s (restitution targets the approach speed at the
+// start of that step): 4.84 m/s, asserted as at least 4.75 m/s; and not faster than it arrived but
+// for the push out of its overlap (bounded at 0.05 m/s). With restitution 0, as created, it stops.
+Test(materials, restitution_set_on_an_existing_contact_bounces)
+{
+	tbWorldId world = CreateWorld((tbVec2){0.0f, -9.8f});
+	tbSurfaceMaterial ground = tbDefaultSurfaceMaterial();
+	MakeGround(world, &ground);
+	tbBodyId ball;
+	tbShapeId ballShape = CreateBall(world, (tbVec2){0.0f, 0.25f}, (tbVec2){0.0f, 0.0f}, 0.25f, NULL, &ball);
+	StepWorld(world, 30, s_dt, 4);
+	cr_assert(tbShape_GetContactCapacity(ballShape) > 0, "the ball rests on the ground");
+	cr_assert(tbShape_SetRestitution(ballShape, 1.0f));
+	tbBody_SetLinearVelocity(ball, (tbVec2){0.0f, -5.0f});
+	float fastestUp = 0.0f;
+	for (int i = 0; i < 30; ++i)
+	{
+		StepWorld(world, 1, s_dt, 4);
+		fastestUp = fmaxf(fastestUp, tbBody_GetLinearVelocity(ball).y);
+	}
+	cr_expect(fastestUp >= 4.75f && fastestUp <= 5.05f, "leaves at %.3f m/s after arriving at 5 m/s",
+			  (double)fastestUp);
+	tbDestroyWorld(world);
+}
+
 Test(materials, a_belt_started_under_a_resting_box_drives_it)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();

@@ -43,11 +43,3 @@ static TB_FORCE_INLINE float tbArctangent(float y, float x)
 	}
 	return y < 0.0f ? -r : r;
 }
-
-/// tbRelativeAngle (the angle of b relative to a, in [−π, π]) with the arctangent inline.
-static TB_FORCE_INLINE float tbRelativeAngleInline(tbRot a, tbRot b)
-{
-	float s = a.c * b.s - a.s * b.c;
-	float c = a.c * b.c + a.s * b.s;
-	return tbArctangent(s, c);
-}

@@ -125,7 +125,8 @@ static TB_FORCE_INLINE float tbRevoluteAngle(const tbJoint* joint, const tbJoint
 {
 	tbRot qA = tbMulRot(b->sA->deltaRotation, joint->frameA.q);
 	tbRot qB = tbMulRot(b->sB->deltaRotation, joint->frameB.q);
-	return tbRelativeAngleInline(qA, qB);
+	tbRot relative = tbInvMulRot(qA, qB); // tbRelativeAngle's sine and cosine
+	return tbArctangent(relative.s, relative.c);
 }
 
 // One side of the limit. sign = +1: C = θ − lower, sign = −1: C = upper − θ; the impulse pushes

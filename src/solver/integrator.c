@@ -83,26 +83,13 @@ void tbIntegrateVelocities(tbStepContext* context)
 
 void tbIntegrateVelocitiesRange(tbStepContext* context, int start, int end)
 {
-	// tbClampSpeeds, its limits loaded once (the stores into the bodies would make it load them
-	// again for each). A body that allows fast rotation (a wheel) keeps its spin; only NaN is
-	// cleared. Continuous collision's rotation bound then does not hold for it, which costs nothing
-	// for a round shape (it looks the same at any angle), as Box2D v3.2 says of the option.
-	float maxLinear = context->maxLinearSpeed, maxAngular = context->maxAngularSpeed;
-	const uint8_t* fastRotation = context->fastRotation;
 	for (int i = start; i < end; ++i)
 	{
 		tbSolverBody* sb = context->bodies + i;
 		const tbSolverMotion* m = context->motions + i;
-		tbVec2 v = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
-		float w = m->angularDamping * (sb->angularVelocity + m->angularDelta);
-		sb->linearVelocity = v;
-		sb->angularVelocity = w;
-		float angularLimit = fastRotation != NULL && fastRotation[i] != 0 ? FLT_MAX : maxAngular;
-		// Written so that NaN and infinities take the clamp.
-		if (!(tbDot(v, v) <= maxLinear * maxLinear && fabsf(w) <= angularLimit))
-		{
-			tbClampSpeedsTo(sb, maxLinear, angularLimit);
-		}
+		sb->linearVelocity = tbMulSV(m->linearDamping, tbAdd(sb->linearVelocity, m->linearDelta));
+		sb->angularVelocity = m->angularDamping * (sb->angularVelocity + m->angularDelta);
+		tbClampSpeeds(context, sb, i);
 	}
 }
 

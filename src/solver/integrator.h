@@ -11,8 +11,10 @@
 void tbClampSpeedsTo(tbSolverBody* sb, float maxLinearSpeed, float maxAngularSpeed);
 
 /// |v| ≤ maximumLinearSpeed and |ω| ≤ the per-step rotation bound (no bound on ω for solver body
-/// `index` when it allows fast rotation); applied to the velocities a step starts from and after
-/// each update. Inline, the clamp called only beyond the limits (or for NaN and infinities): a body
+/// `index` when it allows fast rotation: a wheel keeps its spin, only NaN is cleared; continuous
+/// collision's rotation bound then does not hold for it, which costs nothing for a round shape, as
+/// Box2D v3.2 says of the option); applied to the velocities a step starts from and after each
+/// update. Inline, the clamp called only beyond the limits (or for NaN and infinities): a body
 /// within them, nearly every one, is left as it is, which the clamp would also do.
 static inline void tbClampSpeeds(const tbStepContext* context, tbSolverBody* sb, int index)
 {

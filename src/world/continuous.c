@@ -93,35 +93,23 @@ static tbSweep tbMakeBodySweep(const tbBody* body, tbPos base)
 	return sweep;
 }
 
-static bool tbIsFast(const tbWorld* world, const tbBody* body, float* motion)
+/// The body is fast (tbMarkFastBody), for the bodies the quick bound of continuous.h left open.
+static bool tbIsFast(const tbBody* body)
 {
 	// Largest displacement of any point of the body: translation of the centre plus the arc of
 	// the farthest point.
 	float translation = tbLength(tbSubPos(body->center, body->center0));
 	float reach = tbSpeculativeReach(body);
-	(void)world;
-	// Most bodies turn little: for a turn θ with cos θ ≥ 0, |θ| = asin|sin θ| ≤ (π/2)·|sin θ| < 1.6·|sin θ|,
-	// so a body whose bound stays within its reach is not fast, without the atan2 that every awake
-	// body would otherwise pay for in every step.
-	tbRot turn = tbInvMulRot(body->rotation0, body->transform.q);
-	// fabsf rather than tbAbsFloat's comparison, a branch on the turn's sign (see tbSpeculativeMargin).
-	if (body->isBullet == false && turn.c >= 0.0f && translation + 1.6f * fabsf(turn.s) * body->maxExtent <= reach)
-	{
-		*motion = translation;
-		return false;
-	}
 	// Moving beyond its reach is fast whatever the turn: no angle needed (in a scene of flying
 	// debris, smash, most fast bodies fly straight).
 	if (body->isBullet == false && translation > reach)
 	{
-		*motion = translation;
 		return true;
 	}
 	float rotation = tbAbsFloat(tbRelativeAngle(body->rotation0, body->transform.q));
-	*motion = translation + rotation * body->maxExtent;
 	// Speculative contacts cover a closing distance of up to the body's reach per step (contact.c,
 	// shape.c); only motion beyond that can tunnel.
-	return body->isBullet || *motion > reach;
+	return body->isBullet || translation + rotation * body->maxExtent > reach;
 }
 
 /// A circle whose motion over the sweep is linear: centred on the centre of mass, or no rotation.
@@ -566,8 +554,8 @@ static void tbNoteSweptSensors(tbWorld* world, const tbSweptSensor* sensors, con
 
 bool tbMarkFastBodyExactly(const tbWorld* world, tbBody* body)
 {
-	float motion;
-	body->isFast = body->type == tb_dynamicBody && tbIsFast(world, body, &motion);
+	(void)world;
+	body->isFast = body->type == tb_dynamicBody && tbIsFast(body);
 	return body->isFast;
 }
 
