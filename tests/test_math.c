@@ -5,10 +5,13 @@
 // vector of length ~1 costs a few roundings per component, so a round trip through two of them
 // is exact to ~10u ≈ 6e-7; tests allow 1e-6 (times the magnitude of the numbers involved).
 
+#include "core/arctangent.h"
 #include "tumble/math_functions.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 // Round-trip tolerance for numbers of magnitude ~1 (see the header comment).
 #define ROUND_TRIP_TOL 1e-6f
@@ -245,6 +248,43 @@ Test(math, atan2_approximation_within_its_stated_error)
 	cr_assert_eq(tbAtan2(0.0f, 1.0f), 0.0f);
 	cr_assert_float_eq(tbAtan2(1.0f, 0.0f), 0.5f * TB_PI, 1e-6f);
 	cr_assert_float_eq(tbAtan2(0.0f, -1.0f), TB_PI, 1e-6f);
+}
+
+// Below t = 2⁻¹³ the arctangent takes a1·t instead of the polynomial, whose t⁸ term would be a
+// subnormal there (a microcode assist per operation on x86): every term after a1 is below half an
+// ulp of a1, so the two must agree bit for bit. Checked through tbAtan2(t, 1) (t = |y|/|x| exactly)
+// against the polynomial on every 61st float from the smallest subnormal up to 2⁻¹⁰, every binade
+// on both sides of the switch (4.1 million of them), and on the 4,096 floats just below 2⁻¹³.
+Test(math, arctangent_small_argument_is_the_polynomial)
+{
+	float switchAt = 0x1p-13f, limit = 0x1p-10f;
+	uint32_t top, nearSwitch;
+	memcpy(&top, &limit, sizeof(top));
+	memcpy(&nearSwitch, &switchAt, sizeof(nearSwitch));
+	nearSwitch -= 4096u;
+	int checked = 0, differing = 0;
+	float first = 0.0f; // the first t that differs, if any
+	for (uint32_t bits = 1; bits < top; bits += (bits >= nearSwitch && bits < nearSwitch + 4096u ? 1u : 61u))
+	{
+		float t;
+		memcpy(&t, &bits, sizeof(t));
+		float viaAtan2 = tbAtan2(t, 1.0f);
+		float polynomial = tbArctangentOctant(t);
+		if (memcmp(&viaAtan2, &polynomial, sizeof(float)) != 0)
+		{
+			first = differing == 0 ? t : first;
+			++differing;
+		}
+		++checked;
+	}
+	cr_assert_gt(checked, 4000000);
+	cr_assert_eq(differing, 0, "%d of %d differ, the first at t = %a", differing, checked, (double)first);
+	// The other quadrants of a tiny angle take the same octant value.
+	float y = 3.0e-6f, x = 0.75f;
+	float t = y / x;
+	cr_assert_eq(tbAtan2(-y, x), -tbArctangentOctant(t));
+	cr_assert_eq(tbAtan2(y, -x), TB_PI - tbArctangentOctant(t));
+	cr_assert_eq(tbAtan2(x, y), 0.5f * TB_PI - tbArctangentOctant(t));
 }
 
 // tbUnwindAngle brings angles into [−π, π] by whole turns (to float precision of the turn count);
