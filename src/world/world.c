@@ -239,7 +239,7 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 // than TB_AUTO_HASH_KEEP move); else
 // sort-and-sweep under the same conditions up to TB_AUTO_SWEEP_MAX_PROXIES; otherwise the tree. A
 // switch needs two windows in a row that agree (hysteresis): windows of 60 steps, 5 while the world
-// is young.
+// is young, whose first two windows decide alone.
 // Every method reports identical pairs, so switching never changes a trajectory.
 #define TB_AUTO_WINDOW 60
 /// Windows are shorter while the world is young (its first TB_AUTO_WINDOW steps), so that a scene
@@ -251,27 +251,38 @@ static tbBroadPhaseMethod tbResolveBroadPhase(tbBroadPhaseMethod method)
 #define TB_AUTO_HASH_SPREAD 4.0f
 #define TB_AUTO_HASH_KEEP 0.125f
 
-/// 90th percentile over median of the movable proxies' largest box side (1 without proxies).
+/// Movable proxies whose sizes the vote sorts at most (tbMovableSizeSpread): every k-th in key order.
+/// The vote compares a ratio of percentiles with TB_AUTO_HASH_SPREAD, for which this many samples
+/// are plenty; sorting every proxy's size made a vote in a pile of a thousand bodies cost a third of
+/// a step, which a young world pays every TB_AUTO_FIRST_WINDOW steps.
+#define TB_AUTO_SIZE_SAMPLES 256
+
+/// 90th percentile over median of the movable proxies' largest box side (1 without proxies), from at
+/// most TB_AUTO_SIZE_SAMPLES of them spread evenly over the table.
 static float tbMovableSizeSpread(const tbBroadPhase* bp, int movable)
 {
 	if (movable == 0)
 	{
 		return 1.0f;
 	}
-	float* sides = tbAlloc(movable * (int)sizeof(float));
-	int n = 0;
-	for (int key = 0; key < bp->table.capacity && n < movable; ++key)
+	float sides[TB_AUTO_SIZE_SAMPLES];
+	int stride = (movable + TB_AUTO_SIZE_SAMPLES - 1) / TB_AUTO_SIZE_SAMPLES;
+	int n = 0, seen = 0;
+	for (int key = 0; key < bp->table.capacity && n < TB_AUTO_SIZE_SAMPLES; ++key)
 	{
 		const tbBroadProxy* p = bp->table.proxies + key;
-		if (p->isFree == false && p->type != tb_proxyStatic)
+		if (p->isFree == false && p->type != tb_proxyStatic && seen++ % stride == 0)
 		{
 			tbVec2 d = tbSub(p->aabb.upperBound, p->aabb.lowerBound);
 			sides[n++] = tbMaxFloat(d.x, d.y);
 		}
 	}
+	if (n == 0)
+	{
+		return 1.0f;
+	}
 	tbSortFloats(sides, n);
 	float median = sides[n / 2], high = sides[(9 * n) / 10];
-	tbFree(sides, movable * (int)sizeof(float));
 	return median > 0.0f ? high / median : TB_AUTO_HASH_SPREAD + 1.0f;
 }
 
@@ -316,7 +327,12 @@ static void tbUpdateAutoBroadPhase(tbWorld* world)
 	}
 	tbBroadPhaseMethod vote = tbVoteBroadPhase(world);
 	world->broadPhaseVote.votes = vote != world->broadPhase.method ? world->broadPhaseVote.votes + 1 : 0;
-	if (world->broadPhaseVote.votes >= 2)
+	// A new world's first windows decide alone: its bodies start inside fresh fat boxes, so the first
+	// window sees few proxies move whatever the scene does, and waiting for a second window that
+	// agrees kept a falling pile of a thousand bodies in the tree until step 15 (its re-insertions
+	// cost twice the hash's step).
+	int needed = world->stepIndex <= 2 * TB_AUTO_FIRST_WINDOW ? 1 : 2;
+	if (world->broadPhaseVote.votes >= needed)
 	{
 		tbBroadPhase_SetMethod(&world->broadPhase, vote);
 		world->broadPhaseVote.votes = 0;
