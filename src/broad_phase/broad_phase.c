@@ -192,6 +192,13 @@ static void tbClearMoveBuffer(tbBroadPhase* bp)
 	bp->moveCount = 0;
 }
 
+void tbBroadPhase_SwitchMethod(tbBroadPhase* bp, tbBroadPhaseMethod method)
+{
+	tbDestroyMethodState(bp);
+	bp->method = tbResolveMethod(method);
+	tbCreateMethodState(bp);
+}
+
 void tbBroadPhase_SetMethod(tbBroadPhase* bp, tbBroadPhaseMethod method)
 {
 	tbDestroyMethodState(bp);

@@ -80,6 +80,10 @@ void tbBroadPhase_Destroy(tbBroadPhase* bp);
 
 /// Switch method, rebuilding method state from the proxy table; every proxy counts as moved.
 void tbBroadPhase_SetMethod(tbBroadPhase* bp, tbBroadPhaseMethod method);
+/// Switch method, rebuilding method state from the proxy table, keeping the moved proxies as they
+/// are: for a caller that keeps every pair found so far (the world's contacts), whose next update
+/// then needs only the pairs of the proxies that moved since.
+void tbBroadPhase_SwitchMethod(tbBroadPhase* bp, tbBroadPhaseMethod method);
 
 /// Add a proxy with a fat AABB; returns its key. The proxy counts as moved.
 int tbBroadPhase_CreateProxy(tbBroadPhase* bp, tbAABB fatAABB, uint64_t categoryBits, int shapeIndex, tbProxyType type);

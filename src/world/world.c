@@ -334,7 +334,7 @@ static void tbUpdateAutoBroadPhase(tbWorld* world)
 	int needed = world->stepIndex <= 2 * TB_AUTO_FIRST_WINDOW ? 1 : 2;
 	if (world->broadPhaseVote.votes >= needed)
 	{
-		tbBroadPhase_SetMethod(&world->broadPhase, vote);
+		tbBroadPhase_SwitchMethod(&world->broadPhase, vote);
 		world->broadPhaseVote.votes = 0;
 	}
 	world->broadPhaseVote.windowSteps = 0;
