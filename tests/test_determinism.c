@@ -155,6 +155,39 @@ Test(determinism, auto_broad_phase_picks_hash_or_sweep_for_moving_scenes)
 	}
 }
 
+// A new world's first two vote windows (5 steps each) decide alone: 1,000 circles of one size
+// dropped from rest move few proxies in the first window (their fresh fat boxes hold the first
+// centimetres of the fall) and most in the second, so auto is on the spatial hash after step 10.
+// With two agreeing votes needed there as later, it would still be on the tree until step 15.
+Test(determinism, auto_broad_phase_settles_by_the_second_window)
+{
+	tbWorldDef def = tbDefaultWorldDef();
+	tbWorldId world = tbCreateWorld(&def);
+	for (int i = 0; i < 1000; ++i)
+	{
+		tbBodyDef bd = tbDefaultBodyDef();
+		bd.type = tb_dynamicBody;
+		bd.position = tbMakeVec2(2.0f * (float)(i % 40), 2.0f * (float)(i / 40));
+		tbBodyId body = tbCreateBody(world, &bd);
+		tbShapeDef sd = tbDefaultShapeDef();
+		tbCircle circle = {{0.0f, 0.0f}, 0.5f};
+		tbCreateCircleShape(body, &sd, &circle);
+	}
+	for (int i = 0; i < 5; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_expect_eq(tbWorld_GetDef(world).broadPhase, tb_broadPhaseTree, "after the first window: %d",
+				 (int)tbWorld_GetDef(world).broadPhase);
+	for (int i = 0; i < 5; ++i)
+	{
+		tbWorld_Step(world, 1.0f / 60.0f, 4);
+	}
+	cr_expect_eq(tbWorld_GetDef(world).broadPhase, tb_broadPhaseSpatialHash, "after the second window: %d",
+				 (int)tbWorld_GetDef(world).broadPhase);
+	tbDestroyWorld(world);
+}
+
 // A small world, 64 moving circles of one size (a game's room, a world per match): auto switches from
 // the tree to sort-and-sweep, which costs least when few proxies all move (world.c), and the
 // trajectory is the tree's, bit for bit.

@@ -63,18 +63,13 @@ Test(materials, changing_the_belt_at_run_time_reaches_existing_contacts)
 	tbDestroyWorld(world);
 }
 
-// A belt started under a box that has rested on it long enough for the steps to be steady (the
-// solver then takes the last step's contact keys instead of rebuilding them, while none changes):
-// the started belt changes the contact's key (a tangent speed sends it to the scalar solver, which
-// carries it), so the kept keys must not be taken. Sleep is off, so the box stays awake and the
-// steps stay steady until the belt starts. Closed form and bound as for the belt that always ran:
-// the belt speed, 1 %.
 // Restitution given to a ball resting on the ground, whose contact exists, makes it bounce: the
 // contact's material, and the solver key built from it, must follow the change (contact.c keeps
 // the material as flag bits). Sent down at 5 m/s with e = 1, the ball leaves at 5 m/s less the
 // gravity of the step of the bounce, g·dt = 0.16 m/s (restitution targets the approach speed at the
 // start of that step): 4.84 m/s, asserted as at least 4.75 m/s; and not faster than it arrived but
-// for the push out of its overlap (bounded at 0.05 m/s). With restitution 0, as created, it stops.
+// for the push out of its overlap (bounded at 0.05 m/s). Left with its material bits stale (the
+// restitution of 0 it was created with), it leaves at 0 m/s and the test fails.
 Test(materials, restitution_set_on_an_existing_contact_bounces)
 {
 	tbWorldId world = CreateWorld((tbVec2){0.0f, -9.8f});
@@ -97,6 +92,12 @@ Test(materials, restitution_set_on_an_existing_contact_bounces)
 	tbDestroyWorld(world);
 }
 
+// A belt started under a box that has rested on it long enough for the steps to be steady (the
+// solver then takes the last step's contact keys instead of rebuilding them, while none changes):
+// the started belt changes the contact's key (a tangent speed sends it to the scalar solver, which
+// carries it), so the kept keys must not be taken. Sleep is off, so the box stays awake and the
+// steps stay steady until the belt starts. Closed form and bound as for the belt that always ran:
+// the belt speed, 1 %.
 Test(materials, a_belt_started_under_a_resting_box_drives_it)
 {
 	tbWorldDef worldDef = tbDefaultWorldDef();

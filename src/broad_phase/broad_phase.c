@@ -201,9 +201,7 @@ void tbBroadPhase_SwitchMethod(tbBroadPhase* bp, tbBroadPhaseMethod method)
 
 void tbBroadPhase_SetMethod(tbBroadPhase* bp, tbBroadPhaseMethod method)
 {
-	tbDestroyMethodState(bp);
-	bp->method = tbResolveMethod(method);
-	tbCreateMethodState(bp);
+	tbBroadPhase_SwitchMethod(bp, method);
 	tbClearMoveBuffer(bp);
 	for (int key = 0; key < bp->table.capacity; ++key)
 	{
