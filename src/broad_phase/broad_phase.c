@@ -21,6 +21,7 @@
 #include "broad_phase.h"
 
 #include "brute_force.h"
+#include "collision/dynamic_tree_node.h"
 #include "core/core.h"
 #include "core/array.h"
 #include "sort_and_sweep.h"
@@ -84,6 +85,24 @@ static void tbRemoveFromMethod(tbBroadPhase* bp, int key)
 }
 
 /// Build the selected method's state from the proxy table.
+/// Both trees built from every proxy of the table at once (a switch to the tree method): each
+/// proxy's leaf made, then each tree built top down, as the static tree is after a batch of
+/// inserts. Inserting a pile of 1,000 bodies leaf by leaf cost more than a step of the pile.
+static void tbLoadTrees(tbBroadPhase* bp)
+{
+	for (int key = 0; key < bp->table.capacity; ++key)
+	{
+		tbBroadProxy* p = bp->table.proxies + key;
+		if (p->isFree == false)
+		{
+			p->handle = tbDynamicTree_CreateProxyDeferred(tbTreeOf(bp, p), p->aabb, p->categoryBits | TB_PAIR_QUERY_BIT,
+														  (uint64_t)key);
+		}
+	}
+	tbDynamicTree_Rebuild(&bp->staticTree, true);
+	tbDynamicTree_Rebuild(&bp->movableTree, true);
+}
+
 static void tbCreateMethodState(tbBroadPhase* bp)
 {
 	bp->staticTree = tbDynamicTree_Create(0);
@@ -94,6 +113,11 @@ static void tbCreateMethodState(tbBroadPhase* bp)
 	bp->hash = bp->method == tb_broadPhaseSpatialHash ? tbSpatialHash_Create() : NULL;
 	bp->staticInsertCount = 0;
 	bp->enlargedCount = 0;
+	if (bp->method == tb_broadPhaseTree)
+	{
+		tbLoadTrees(bp);
+		return;
+	}
 	for (int key = 0; key < bp->table.capacity; ++key)
 	{
 		if (bp->table.proxies[key].isFree == false)

@@ -468,7 +468,7 @@ static void tbClearEnlargedPath(tbDynamicTree* tree, int index)
 	}
 }
 
-int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, uint64_t userData)
+static int tbAllocateLeaf(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, uint64_t userData)
 {
 	int leaf = tbAllocateNode(tree);
 	tbTreeNode* node = tree->nodes + leaf;
@@ -477,8 +477,24 @@ int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categor
 	node->userData = userData;
 	node->height = 0;
 	node->flags = tb_allocatedNode | tb_leafNode;
-	tbInsertLeaf(tree, leaf);
 	tree->proxyCount += 1;
+	return leaf;
+}
+
+int tbDynamicTree_CreateProxy(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, uint64_t userData)
+{
+	int leaf = tbAllocateLeaf(tree, aabb, categoryBits, userData);
+	tbInsertLeaf(tree, leaf);
+	return leaf;
+}
+
+int tbDynamicTree_CreateProxyDeferred(tbDynamicTree* tree, tbAABB aabb, uint64_t categoryBits, uint64_t userData)
+{
+	int leaf = tbAllocateLeaf(tree, aabb, categoryBits, userData);
+	if (tree->root == TB_NULL_NODE)
+	{
+		tree->root = leaf; // a root for tbDynamicTree_Rebuild to start from; it collects every leaf
+	}
 	return leaf;
 }
 
