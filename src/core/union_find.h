@@ -32,3 +32,16 @@ static inline void tbLinkRoots(int* parent, int a, int b)
 		parent[a] = b;
 	}
 }
+
+/// Points every node straight at its group's root, in one pass. tbLinkRoots keeps each root the
+/// smallest index of its group and path halving only moves a node to a smaller ancestor, so
+/// parent[i] ≤ i always holds: by the time node i is met, its parent (a smaller index) already
+/// points at the root, and one step from it reaches the root. Afterwards parent[i] is i's root, a
+/// single load for every later question.
+static inline void tbFlattenRoots(int* parent, int count)
+{
+	for (int i = 0; i < count; ++i)
+	{
+		parent[i] = parent[parent[i]];
+	}
+}

@@ -54,37 +54,32 @@
 #include <string.h>
 
 // Colour of each constraint (or TB_GRAPH_COLOR_COUNT for overflow); counts per colour. A body takes
-// part when the constraint can change its velocity (tb_keyMovesA/B).
+// part when the constraint can change its velocity (tb_keyMovesA/B). Without branches on those
+// flags: a side that does not move reads its mask as 0 and ORs 0 into it (its mask stays 0, the
+// static stand-in's included), the same colours as testing the flags, and no mispredicted branch
+// where ground contacts and contacts between bodies alternate in the solve order.
 static void tbAssignColors(tbStepContext* context, uint32_t* bodyMasks, uint8_t* colors,
 						   int counts[TB_GRAPH_COLOR_COUNT + 1])
 {
 	int rolling = 0;
 	const uint32_t allColors = TB_GRAPH_COLOR_COUNT == 32 ? ~0u : ((1u << TB_GRAPH_COLOR_COUNT) - 1u);
-	for (int i = 0; i < context->constraintCount; ++i)
+	const tbContactKey* keys = context->keys; // locals: the colour stores (bytes) may alias anything
+	int n = context->constraintCount;
+	for (int i = 0; i < n; ++i)
 	{
-		tbContactKey key = context->keys[i];
-		bool movesA = (key.flags & tb_keyMovesA) != 0u;
-		bool movesB = (key.flags & tb_keyMovesB) != 0u;
-		uint32_t used = (movesA ? bodyMasks[key.indexA] : 0u) | (movesB ? bodyMasks[key.indexB] : 0u);
-		uint32_t free = ~used & allColors;
-		if ((key.flags & tb_keyScalarOnly) != 0u)
-		{
-			free = 0u; // the wide blocks carry no tangent speed: the scalar solver takes it
-		}
-
+		tbContactKey key = keys[i];
+		uint32_t onA = 0u - (key.flags & tb_keyMovesA);		   // all ones when A moves
+		uint32_t onB = 0u - ((key.flags & tb_keyMovesB) >> 1); // all ones when B moves
+		uint32_t used = (bodyMasks[key.indexA] & onA) | (bodyMasks[key.indexB] & onB);
+		// the wide blocks carry no tangent speed: the scalar solver takes it (no free colour)
+		uint32_t free = (key.flags & tb_keyScalarOnly) != 0u ? 0u : ~used & allColors;
 		int color = TB_GRAPH_COLOR_COUNT;
 		if (free != 0u)
 		{
 			color = tbLowestSetBit(free);
 			uint32_t bit = 1u << color;
-			if (movesA)
-			{
-				bodyMasks[key.indexA] |= bit;
-			}
-			if (movesB)
-			{
-				bodyMasks[key.indexB] |= bit;
-			}
+			bodyMasks[key.indexA] |= bit & onA;
+			bodyMasks[key.indexB] |= bit & onB;
 		}
 		colors[i] = (uint8_t)color;
 		counts[color] += 1;
@@ -483,7 +478,7 @@ void tbColorConstraints(tbStepContext* context)
 	context->locationById = tbArenaAlloc(&context->world->stepArena, (int)sizeof(int) * tbMaxInt(n, 1));
 	int filled[TB_GRAPH_COLOR_COUNT][TB_MAX_PARTITIONS] = {{0}};
 	// The overflow is solved one constraint at a time, in the solve order.
-	for (int i = 0; i < n; ++i)
+	for (int i = 0; i < n && context->overflowCount < counts[TB_GRAPH_COLOR_COUNT]; ++i)
 	{
 		if (colors[i] == TB_GRAPH_COLOR_COUNT)
 		{
@@ -498,18 +493,41 @@ void tbColorConstraints(tbStepContext* context)
 	// out in solve order (a hash of the contact id, island.c), every block was written lane by lane
 	// from sixteen places at once and fell out of the cache between its lanes.
 	const int* slots = context->world->cache.solverSlots;
-	for (int i = 0; i < n; ++i)
+	int* wideLocation = context->wideLocation;
+	int* locationById = context->locationById;
+	if (context->partitionCount == 0)
+	{
+		// One partition: each colour's next free lane, counted from its first block.
+		int next[TB_GRAPH_COLOR_COUNT];
+		for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
+		{
+			next[k] = context->partitionBlockStart[k][0] * TB_SIMD_WIDTH;
+		}
+		for (int i = 0; i < n; ++i)
+		{
+			int index = slots[i];
+			int k = colors[index];
+			int location = -1;
+			if (k != TB_GRAPH_COLOR_COUNT)
+			{
+				location = next[k]++;
+				wideLocation[index] = location;
+			}
+			locationById[i] = location;
+		}
+	}
+	for (int i = 0; i < n && context->partitionCount > 0; ++i)
 	{
 		int index = slots[i];
 		int k = colors[index];
 		int location = -1;
 		if (k != TB_GRAPH_COLOR_COUNT)
 		{
-			int p = context->partitionCount > 0 ? tbKeyPartition(context, context->keys[index]) : 0;
+			int p = tbKeyPartition(context, context->keys[index]);
 			location = context->partitionBlockStart[k][p] * TB_SIMD_WIDTH + filled[k][p]++;
-			context->wideLocation[index] = location;
+			wideLocation[index] = location;
 		}
-		context->locationById[i] = location;
+		locationById[i] = location;
 	}
 	if (n > 0)
 	{

@@ -64,8 +64,10 @@ static void tbOrderSolverContacts(tbWorld* world)
 	for (int i = 0; i < n; ++i)
 	{
 		int id = ids[i];
+		int bucket = tbSolveOrderBucket(id);
 		byId[i] = id;
-		offsets[tbSolveOrderBucket(id)] += 1;
+		slots[i] = bucket; // until the scatter below turns it into the slot
+		offsets[bucket] += 1;
 	}
 	int offset = 0;
 	for (int k = 0; k < TB_SOLVE_ORDER_BUCKETS; ++k)
@@ -77,10 +79,9 @@ static void tbOrderSolverContacts(tbWorld* world)
 	// Stable scatter: contact byId[i] is solved at position slots[i].
 	for (int i = 0; i < n; ++i)
 	{
-		int id = byId[i];
-		int slot = offsets[tbSolveOrderBucket(id)]++;
+		int slot = offsets[slots[i]]++;
 		slots[i] = slot;
-		ids[slot] = id;
+		ids[slot] = byId[i];
 	}
 }
 
@@ -303,6 +304,12 @@ static inline void tbAddSleepLink(tbSleepLinks* links, int a, bool dynamicA, int
 	}
 }
 
+/// The island of awake index i, once the links are in and the forest flattened (tbFlattenRoots).
+static inline int tbRootOf(const tbSleepLinks* links, int i)
+{
+	return links->parent[i];
+}
+
 static void tbAddBodyLink(tbSleepLinks* links, const tbBody* a, const tbBody* b)
 {
 	tbAddSleepLink(links, a->awakeIndex, a->type == tb_dynamicBody, b->awakeIndex, b->type == tb_dynamicBody);
@@ -381,7 +388,7 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 	{
 		if ((state[i] & (tb_sleepDynamic | tb_sleepRested)) == tb_sleepDynamic)
 		{
-			state[tbFindRoot(links->parent, i)] |= tb_sleepKeepAwake;
+			state[tbRootOf(links, i)] |= tb_sleepKeepAwake;
 		}
 	}
 	for (int t = 0; t < links->touchCount; ++t)
@@ -389,13 +396,13 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 		const tbKinematicTouch* touch = links->touches + t;
 		if ((state[touch->kinematicIndex] & tb_sleepRested) == 0)
 		{
-			state[tbFindRoot(links->parent, touch->dynamicIndex)] |= tb_sleepKeepAwake;
+			state[tbRootOf(links, touch->dynamicIndex)] |= tb_sleepKeepAwake;
 		}
 	}
 	for (int t = 0; t < links->touchCount; ++t)
 	{
 		const tbKinematicTouch* touch = links->touches + t;
-		if ((state[tbFindRoot(links->parent, touch->dynamicIndex)] & tb_sleepKeepAwake) != 0)
+		if ((state[tbRootOf(links, touch->dynamicIndex)] & tb_sleepKeepAwake) != 0)
 		{
 			state[touch->kinematicIndex] |= tb_sleepTouchesAwake;
 		}
@@ -404,7 +411,7 @@ static bool tbMarkSleepingIslands(tbWorld* world, const tbSleepLinks* links, uin
 	for (int i = 0; i < n; ++i)
 	{
 		bool sleeps = (state[i] & tb_sleepDynamic) != 0
-						  ? (state[tbFindRoot(links->parent, i)] & tb_sleepKeepAwake) == 0
+						  ? (state[tbRootOf(links, i)] & tb_sleepKeepAwake) == 0
 						  : (state[i] & (tb_sleepRested | tb_sleepTouchesAwake)) == tb_sleepRested;
 		if (sleeps)
 		{
@@ -425,7 +432,7 @@ static int tbCountRestedIslands(const tbWorld* world, const tbSleepLinks* links,
 		{
 			continue;
 		}
-		int root = (state[i] & tb_sleepDynamic) != 0 ? tbFindRoot(links->parent, i) : i;
+		int root = (state[i] & tb_sleepDynamic) != 0 ? tbRootOf(links, i) : i;
 		islands += counted[root] == 0 ? 1 : 0;
 		counted[root] = 1;
 	}
@@ -465,6 +472,7 @@ void tbSleepStage(tbWorld* world, float timeStep)
 		state[i] |= body->sleepTime >= TB_TIME_TO_SLEEP ? (uint8_t)tb_sleepRested : 0u;
 	}
 	tbGatherSleepLinks(world, &links);
+	tbFlattenRoots(links.parent, n); // from here on links.parent[i] is i's root (tbRootOf)
 	world->counters.islandCount = tbCountRestedIslands(world, &links, state, state + n);
 	world->profile.splitIslands = tbGetMilliseconds(ticks);
 	if (tbMarkSleepingIslands(world, &links, state))
