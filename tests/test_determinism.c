@@ -7,6 +7,7 @@
 #include "catalogue.h"
 #include "scene.h"
 #include "task_system.h"
+#include "test_helpers.h"
 
 #include "tumble/tumble.h"
 
@@ -155,11 +156,13 @@ Test(determinism, auto_broad_phase_picks_hash_or_sweep_for_moving_scenes)
 	}
 }
 
-// A new world's first two vote windows (5 steps each) decide alone: 1,000 circles of one size
-// dropped from rest move few proxies in the first window (their fresh fat boxes hold the first
-// centimetres of the fall) and most in the second, so auto is on the spatial hash after step 10.
-// With two agreeing votes needed there as later, it would still be on the tree until step 15.
-Test(determinism, auto_broad_phase_settles_by_the_second_window)
+// A new world's first vote window (5 steps) counts the proxies that moved in it, not the moves per
+// step, and decides alone: 1,000 circles of one size dropped from rest leave their fresh fat boxes
+// together at the window's last step, every proxy once, so auto is on the spatial hash after step 5.
+// Counted per step (a fifth of the proxies) the first window kept it on the tree until step 10.
+// The counters are taken after the switch: the tree's heights are 0 and the bytes are the world's
+// after it. A pyramid built at rest moves no proxy and stays on the tree.
+Test(determinism, auto_broad_phase_leaves_the_tree_after_the_first_window)
 {
 	tbWorldDef def = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&def);
@@ -173,17 +176,32 @@ Test(determinism, auto_broad_phase_settles_by_the_second_window)
 		tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 		tbCreateCircleShape(body, &sd, &circle);
 	}
-	for (int i = 0; i < 5; ++i)
+	for (int i = 0; i < 4; ++i)
 	{
 		tbWorld_Step(world, 1.0f / 60.0f, 4);
 	}
-	cr_expect_eq(tbWorld_GetDef(world).broadPhase, tb_broadPhaseTree, "after the first window: %d",
+	cr_expect_eq(tbWorld_GetDef(world).broadPhase, tb_broadPhaseTree, "before the first vote: %d",
 				 (int)tbWorld_GetDef(world).broadPhase);
-	for (int i = 0; i < 5; ++i)
+	tbWorld_Step(world, 1.0f / 60.0f, 4);
+	cr_expect_eq(tbWorld_GetDef(world).broadPhase, tb_broadPhaseSpatialHash, "after the first window: %d",
+				 (int)tbWorld_GetDef(world).broadPhase);
+	tbCounters c = tbWorld_GetCounters(world);
+	cr_expect(c.treeHeight == 0 && c.staticTreeHeight == 0, "tree heights %d, %d", c.treeHeight, c.staticTreeHeight);
+	cr_expect_eq(c.byteCount, tbGetByteCount());
+	tbDestroyWorld(world);
+
+	world = tbCreateWorld(&def);
+	CreateGround(world, tbMakeVec2(0.0f, -0.5f), 20.0f, 0.5f, NULL);
+	for (int row = 0; row < 10; ++row)
 	{
-		tbWorld_Step(world, 1.0f / 60.0f, 4);
+		for (int i = 0; i < 10 - row; ++i)
+		{
+			tbVec2 p = {(float)i * 1.05f + 0.525f * (float)row - 5.0f, 0.5f + (float)row};
+			CreateBox(world, tb_dynamicBody, p, 0.5f, 0.5f, 1.0f);
+		}
 	}
-	cr_expect_eq(tbWorld_GetDef(world).broadPhase, tb_broadPhaseSpatialHash, "after the second window: %d",
+	StepWorld(world, 10, 1.0f / 60.0f, 4);
+	cr_expect_eq(tbWorld_GetDef(world).broadPhase, tb_broadPhaseTree, "resting pyramid: %d",
 				 (int)tbWorld_GetDef(world).broadPhase);
 	tbDestroyWorld(world);
 }

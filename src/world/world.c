@@ -292,7 +292,12 @@ static tbBroadPhaseMethod tbVoteBroadPhase(const tbWorld* world)
 	int statics = world->staticProxyCount; // kept by tbCreateShapeProxy and tbDestroyShapeProxy
 	int movable = bp->table.count - statics;
 	float window = (float)world->broadPhaseVote.windowSteps;
-	float movedFraction = movable > 0 ? (float)world->broadPhaseVote.movedProxies / (window * (float)movable) : 0.0f;
+	// A new world's first window counts the proxies that moved, not the moves per step: its bodies
+	// start inside fresh fat boxes, which hide their first steps of motion (a pile dropped from rest
+	// leaves them all together, once, at the window's last step), so per step it would look a fifth
+	// as busy as it is and stay in the tree another window.
+	float perStep = world->stepIndex <= TB_AUTO_FIRST_WINDOW ? 1.0f : window;
+	float movedFraction = movable > 0 ? (float)world->broadPhaseVote.movedProxies / (perStep * (float)movable) : 0.0f;
 	float fastFraction = movable > 0 ? (float)world->broadPhaseVote.fastBodies / (window * (float)movable) : 0.0f;
 	bool sweep = movable <= TB_AUTO_SWEEP_MAX_PROXIES && movedFraction > 0.25f && statics <= movable &&
 				 fastFraction < 0.01f;
@@ -556,9 +561,6 @@ static void tbUpdateCounters(tbWorld* world)
 	c->contactCount = world->contactPool.count;
 	c->awakeBodyCount = tbAwakeBodyCount(world);
 	c->jointCount = world->jointPool.count;
-	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
-	c->staticTreeHeight = tbBroadPhase_GetStaticTreeHeight(&world->broadPhase);
-	c->byteCount = tbGetByteCount();
 	c->stackUsed = world->stepArena.needed;
 	c->awakeContactCount = world->cache.stepContactCount;
 	int counts[TB_GRAPH_COLOR_COUNT + 1] = {0};
@@ -566,6 +568,16 @@ static void tbUpdateCounters(tbWorld* world)
 	memcpy(c->colorCounts, counts, sizeof(c->colorCounts));
 	c->overflowCount = counts[TB_GRAPH_COLOR_COUNT];
 	// touchingCount: set by the collide stage (contact.c), which reads every step contact's flags.
+}
+
+/// The counts the broad-phase vote and settle can change, taken after them: a switch of method
+/// builds other structures (and a tree's heights go to 0 under another method).
+static void tbUpdateBroadPhaseCounters(tbWorld* world)
+{
+	tbCounters* c = &world->counters;
+	c->treeHeight = tbBroadPhase_GetTreeHeight(&world->broadPhase);
+	c->staticTreeHeight = tbBroadPhase_GetStaticTreeHeight(&world->broadPhase);
+	c->byteCount = tbGetByteCount();
 }
 
 /// The counts tbWorldDef::capacity describes, kept at their largest (tbWorld_GetMaxCapacity).
@@ -586,9 +598,10 @@ static void tbRecordMaxCapacity(tbWorld* world)
 static void tbFinishStep(tbWorld* world, uint64_t stepTicks)
 {
 	tbCountTasksInto(NULL);
-	tbUpdateCounters(world);
+	tbUpdateCounters(world); // the vote reads this step's counts
 	tbUpdateAutoBroadPhase(world);
 	tbBroadPhase_Settle(&world->broadPhase);
+	tbUpdateBroadPhaseCounters(world);
 	tbArenaReset(&world->stepArena);
 	world->profile.step = tbGetMilliseconds(stepTicks);
 	world->locked = false;
