@@ -152,20 +152,21 @@ static void tbFacePointManifold(tbManifold* m, tbVec2 q, float rA, tbVec2 c, flo
 	m->pointCount = 1;
 }
 
-// A capsule core or a segment as a 2-vertex polygon: edge 0 runs p1 → p2 with outward normal
-// n = rightPerp(p2 − p1)/|p2 − p1| and edge 1 runs back with −n. Needs |p2 − p1| > 0.
-static tbPolygon tbMakeSegmentPolygon(tbVec2 p1, tbVec2 p2, float radius)
+// A capsule core or a segment as a 2-vertex polygon, into *out: edge 0 runs p1 → p2 with outward
+// normal n = rightPerp(p2 − p1)/|p2 − p1| and edge 1 runs back with −n. Needs |p2 − p1| > 0. Only
+// the two vertices and normals, the centroid, radius and count are written: nothing reads a
+// polygon past its count, and zeroing the other six slots and copying the whole polygon out cost
+// more than the rest of this (a capsule meets a box through it in every step it is not recycled).
+static void tbMakeSegmentPolygon(tbPolygon* out, tbVec2 p1, tbVec2 p2, float radius)
 {
-	tbPolygon polygon = {0};
 	tbVec2 n = tbNormalize(tbRightPerp(tbSub(p2, p1)));
-	polygon.vertices[0] = p1;
-	polygon.vertices[1] = p2;
-	polygon.normals[0] = n;
-	polygon.normals[1] = tbNeg(n);
-	polygon.centroid = tbLerp(p1, p2, 0.5f);
-	polygon.radius = radius;
-	polygon.count = 2;
-	return polygon;
+	out->vertices[0] = p1;
+	out->vertices[1] = p2;
+	out->normals[0] = n;
+	out->normals[1] = tbNeg(n);
+	out->centroid = tbLerp(p1, p2, 0.5f);
+	out->radius = radius;
+	out->count = 2;
 }
 
 static bool tbIsDegenerateSegment(tbVec2 p1, tbVec2 p2)
@@ -269,8 +270,10 @@ static void tbCapsulesLocal(tbManifold* m, tbVec2 a1, tbVec2 a2, float rA, tbVec
 	bool crossing = r.distanceSquared < TB_GAP_TOLERANCE * TB_GAP_TOLERANCE;
 	if (crossing || tbAxesOverlapInParallel(a1, a2, b1, b2))
 	{
-		tbPolygon polygonA = tbMakeSegmentPolygon(a1, a2, rA);
-		tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, rB);
+		tbPolygon polygonA;
+		tbMakeSegmentPolygon(&polygonA, a1, a2, rA);
+		tbPolygon polygonB;
+		tbMakeSegmentPolygon(&polygonB, b1, b2, rB);
 		tbCollidePolygonsInto(m, &polygonA, &polygonB, keep);
 		return;
 	}
@@ -417,7 +420,7 @@ typedef struct tbClipVertex
 // endpoint within TB_CLIP_SLACK outside is kept as it is (stable ids); otherwise the crossing
 // x = in0 + t·(in1 − in0), t = d0/(d0 − d1), replaces it and belongs to the reference vertex
 // `refVertex` and the incident edge `incEdge`. Returns the number of points (0 to 2).
-static int tbClipSegment(tbClipVertex out[2], const tbClipVertex in[2], tbVec2 plane, float offset, int refVertex,
+static TB_FORCE_INLINE int tbClipSegment(tbClipVertex out[2], const tbClipVertex in[2], tbVec2 plane, float offset, int refVertex,
 						 int incEdge)
 {
 	float d0 = tbDot(plane, in[0].v) - offset;
@@ -710,7 +713,8 @@ static void tbPolygonAndCapsuleFrameA(tbManifold* m, const tbPolygon* polygonA, 
 		tbPolygonAndPoint(m, polygonA, tbLerp(b1, b2, 0.5f), capsuleB->radius, keep);
 		return;
 	}
-	tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
+	tbPolygon polygonB;
+	tbMakeSegmentPolygon(&polygonB, b1, b2, capsuleB->radius);
 	tbCollidePolygonsInto(m, polygonA, &polygonB, keep);
 }
 
@@ -743,7 +747,8 @@ static void tbSegmentAndPolygonFrameA(tbManifold* m, const tbSegment* segmentA, 
 		m->normal = tbNeg(m->normal);
 		return;
 	}
-	tbPolygon polygonA = tbMakeSegmentPolygon(segmentA->point1, segmentA->point2, 0.0f);
+	tbPolygon polygonA;
+	tbMakeSegmentPolygon(&polygonA, segmentA->point1, segmentA->point2, 0.0f);
 	tbCollidePolygonsInto(m, &polygonA, &localB, keep);
 }
 
@@ -834,7 +839,8 @@ static void tbChainAndPolygonLocal(tbManifold* m, const tbChainSegment* chain, c
 		*m = tb_emptyManifold;
 		return;
 	}
-	tbPolygon segment = tbMakeSegmentPolygon(f.v1, f.v2, 0.0f);
+	tbPolygon segment;
+	tbMakeSegmentPolygon(&segment, f.v1, f.v2, 0.0f);
 	tbCollidePolygonsInto(m, &segment, localB, keep);
 	if (m->pointCount == 0)
 	{
@@ -896,7 +902,8 @@ static void tbChainSegmentAndCapsuleFrameA(tbManifold* m, const tbChainSegment* 
 		tbChainAndPointLocal(m, segmentA, tbLerp(b1, b2, 0.5f), capsuleB->radius, keep);
 		return;
 	}
-	tbPolygon polygonB = tbMakeSegmentPolygon(b1, b2, capsuleB->radius);
+	tbPolygon polygonB;
+	tbMakeSegmentPolygon(&polygonB, b1, b2, capsuleB->radius);
 	tbChainAndPolygonLocal(m, segmentA, &polygonB, keep);
 }
 
