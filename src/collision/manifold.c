@@ -420,8 +420,8 @@ typedef struct tbClipVertex
 // endpoint within TB_CLIP_SLACK outside is kept as it is (stable ids); otherwise the crossing
 // x = in0 + t·(in1 − in0), t = d0/(d0 − d1), replaces it and belongs to the reference vertex
 // `refVertex` and the incident edge `incEdge`. Returns the number of points (0 to 2).
-static TB_FORCE_INLINE int tbClipSegment(tbClipVertex out[2], const tbClipVertex in[2], tbVec2 plane, float offset, int refVertex,
-						 int incEdge)
+static TB_FORCE_INLINE int tbClipSegment(tbClipVertex out[2], const tbClipVertex in[2], tbVec2 plane, float offset,
+										  int refVertex, int incEdge)
 {
 	float d0 = tbDot(plane, in[0].v) - offset;
 	float d1 = tbDot(plane, in[1].v) - offset;

@@ -1,7 +1,7 @@
 // Internal: union–find over dense indices (Tarjan 1975, "Efficiency of a good but not linear set
-// union algorithm"; the linking is Rem's, see tbLinkRoots), for the groups the step finds from scratch: the sleep stage's islands
-// (island.c) and the joints' mechanisms (constraint_graph.c). parent[i] = i makes i a group of its
-// own; the caller owns the array and sets it up.
+// union algorithm"; the linking is Rem's, see tbLinkRoots), for the groups the step finds from
+// scratch: the sleep stage's islands (island.c) and the joints' mechanisms (constraint_graph.c).
+// parent[i] = i makes i a group of its own; the caller owns the array and sets it up.
 #pragma once
 
 /// The root of i's group, halving the path on the way (each visited node is pointed at its
@@ -46,9 +46,10 @@ static inline void tbLinkRoots(int* parent, int a, int b)
 }
 
 /// Points every node straight at its group's root, in one pass. Linking (tbLinkRoots) and path
-/// halving (tbFindRoot) only ever move a node to a smaller parent, so parent[i] ≤ i always holds: by the time node i is met, its parent (a smaller index) already
-/// points at the root, and one step from it reaches the root. Afterwards parent[i] is i's root, a
-/// single load for every later question.
+/// halving (tbFindRoot) only ever move a node to a smaller parent, so parent[i] ≤ i always holds:
+/// by the time node i is met, its parent (a smaller index) already points at the root, and one
+/// step from it reaches the root. Afterwards parent[i] is i's root, a single load for every later
+/// question.
 static inline void tbFlattenRoots(int* parent, int count)
 {
 	for (int i = 0; i < count; ++i)

@@ -250,8 +250,9 @@ void tbIslandStage(tbWorld* world)
 	tbOrderSolverContacts(world);
 }
 
-// The sleep stage's islands, found by union–find (core/union_find.h: Tarjan 1975, path halving;
-// each island's root is its smallest awake index) over the awake indices instead of a
+// The sleep stage's islands, found by union–find (core/union_find.h: Rem's splicing, the forest
+// flattened once the links are in; each island's root is its smallest awake index) over the
+// awake indices instead of a
 // depth-first search from each rested body. The links are the ones a search
 // would follow: this step's solver contacts whose both bodies are dynamic (world->cache.solverContacts,
 // gathered by the island stage from the same touching flags, and read through the narrow phase's
