@@ -332,10 +332,10 @@ static void tbUpdateAutoBroadPhase(tbWorld* world)
 	}
 	tbBroadPhaseMethod vote = tbVoteBroadPhase(world);
 	world->broadPhaseVote.votes = vote != world->broadPhase.method ? world->broadPhaseVote.votes + 1 : 0;
-	// A new world's first windows decide alone: its bodies start inside fresh fat boxes, so the first
-	// window sees few proxies move whatever the scene does, and waiting for a second window that
-	// agrees kept a falling pile of a thousand bodies in the tree until step 15 (its re-insertions
-	// cost twice the hash's step).
+	// A new world's first two windows decide alone: waiting for a second window that agreed kept a
+	// falling pile of a thousand bodies in the tree until step 15 (its re-insertions cost twice the
+	// hash's step), and the second window corrects a first that fresh fat boxes misled (see
+	// tbVoteBroadPhase: the first window counts proxies, not moves per step).
 	int needed = world->stepIndex <= 2 * TB_AUTO_FIRST_WINDOW ? 1 : 2;
 	if (world->broadPhaseVote.votes >= needed)
 	{
