@@ -166,20 +166,14 @@ Test(determinism, auto_broad_phase_leaves_the_tree_after_the_first_window)
 {
 	tbWorldDef def = tbDefaultWorldDef();
 	tbWorldId world = tbCreateWorld(&def);
+	tbShapeDef sd = tbDefaultShapeDef();
+	tbCircle circle = {{0.0f, 0.0f}, 0.5f};
 	for (int i = 0; i < 1000; ++i)
 	{
-		tbBodyDef bd = tbDefaultBodyDef();
-		bd.type = tb_dynamicBody;
-		bd.position = tbMakeVec2(2.0f * (float)(i % 40), 2.0f * (float)(i / 40));
-		tbBodyId body = tbCreateBody(world, &bd);
-		tbShapeDef sd = tbDefaultShapeDef();
-		tbCircle circle = {{0.0f, 0.0f}, 0.5f};
-		tbCreateCircleShape(body, &sd, &circle);
+		tbVec2 p = tbMakeVec2(2.0f * (float)(i % 40), 2.0f * (float)(i / 40));
+		tbCreateCircleShape(CreateBody(world, tb_dynamicBody, p), &sd, &circle);
 	}
-	for (int i = 0; i < 4; ++i)
-	{
-		tbWorld_Step(world, 1.0f / 60.0f, 4);
-	}
+	StepWorld(world, 4, 1.0f / 60.0f, 4);
 	cr_expect_eq(tbWorld_GetDef(world).broadPhase, tb_broadPhaseTree, "before the first vote: %d",
 				 (int)tbWorld_GetDef(world).broadPhase);
 	tbWorld_Step(world, 1.0f / 60.0f, 4);

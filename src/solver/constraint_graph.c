@@ -476,7 +476,6 @@ void tbColorConstraints(tbStepContext* context)
 					  (int*)(scratch + maskBytes + colorBytes));
 	tbLayOutColors(context, counts, &partitionCounts);
 	context->locationById = tbArenaAlloc(&context->world->stepArena, (int)sizeof(int) * tbMaxInt(n, 1));
-	int filled[TB_GRAPH_COLOR_COUNT][TB_MAX_PARTITIONS] = {{0}};
 	// The overflow is solved one constraint at a time, in the solve order.
 	for (int i = 0; i < n && context->overflowCount < counts[TB_GRAPH_COLOR_COUNT]; ++i)
 	{
@@ -492,39 +491,28 @@ void tbColorConstraints(tbStepContext* context)
 	// colour's blocks are then written front to back, one stream per colour (and partition). Handed
 	// out in solve order (a hash of the contact id, island.c), every block was written lane by lane
 	// from sixteen places at once and fell out of the cache between its lanes.
+	// next[k][p]: the next free lane of colour k in partition p, counted from its first block.
 	const int* slots = context->world->cache.solverSlots;
 	int* wideLocation = context->wideLocation;
 	int* locationById = context->locationById;
-	if (context->partitionCount == 0)
+	int next[TB_GRAPH_COLOR_COUNT][TB_MAX_PARTITIONS];
+	for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
 	{
-		// One partition: each colour's next free lane, counted from its first block.
-		int next[TB_GRAPH_COLOR_COUNT];
-		for (int k = 0; k < TB_GRAPH_COLOR_COUNT; ++k)
+		for (int p = 0; p < TB_MAX_PARTITIONS; ++p)
 		{
-			next[k] = context->partitionBlockStart[k][0] * TB_SIMD_WIDTH;
-		}
-		for (int i = 0; i < n; ++i)
-		{
-			int index = slots[i];
-			int k = colors[index];
-			int location = -1;
-			if (k != TB_GRAPH_COLOR_COUNT)
-			{
-				location = next[k]++;
-				wideLocation[index] = location;
-			}
-			locationById[i] = location;
+			next[k][p] = context->partitionBlockStart[k][p] * TB_SIMD_WIDTH;
 		}
 	}
-	for (int i = 0; i < n && context->partitionCount > 0; ++i)
+	bool partitioned = context->partitionCount > 0;
+	for (int i = 0; i < n; ++i)
 	{
 		int index = slots[i];
 		int k = colors[index];
 		int location = -1;
 		if (k != TB_GRAPH_COLOR_COUNT)
 		{
-			int p = tbKeyPartition(context, context->keys[index]);
-			location = context->partitionBlockStart[k][p] * TB_SIMD_WIDTH + filled[k][p]++;
+			int p = partitioned ? tbKeyPartition(context, context->keys[index]) : 0;
+			location = next[k][p]++;
 			wideLocation[index] = location;
 		}
 		locationById[i] = location;
