@@ -319,7 +319,7 @@ void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB)
 	}
 	else if (bp->method == tb_broadPhaseSpatialHash)
 	{
-		tbSpatialHash_MoveMovableProxy(bp->hash);
+		tbSpatialHash_MoveMovableProxy(bp->hash, proxyKey);
 	}
 	// Sort-and-sweep reloads endpoint values from the table; brute force reads the table; the
 	// spatial hash re-hashes its movable proxies once they have moved (tbBroadPhase_Settle or the

@@ -8,10 +8,12 @@
 // the cells it covers; when both proxies of a pair moved, the one with the larger key reports it
 // (as the tree does), and the broad phase sorts the pairs, so the set is the tree's exactly.
 //
-// Cost: hashing is O(entries) per step for the movable proxies (rebuilt once they have moved, at
-// the end of the step or at the next FindPairs, sleeping ones included, as sort-and-sweep sweeps
-// them) and only when they change for the static ones; a query visits the entries of its cells, a
-// ray cast those of the cells along the ray. It suits many bodies of one size: with cells twice the
+// Cost: the movable grid is brought up to date once its proxies have moved (at the end of the step
+// or at the next FindPairs): each moved proxy whose cells changed leaves its old cells and enters
+// its new ones, O(entries of the moved proxies); it is built afresh, O(entries) over every movable
+// proxy, when movable proxies came or went, the cell size changed, a large proxy moved, or more than
+// a quarter of them moved. The static grid is built only when a static proxy changes. A query
+// visits the entries of its cells, a ray cast those of the cells along the ray. It suits many bodies of one size: with cells twice the
 // typical box, a box covers one to four cells and meets only its near neighbours. It suits mixed
 // sizes badly: a box much larger than a cell covers many cells, and small boxes in a large cell
 // all meet each other. A proxy covering more than TB_HASH_MAX_CELLS cells is kept apart in a
@@ -58,7 +60,7 @@ typedef struct tbCellEntry
 {
 	int64_t cell;
 	int key;
-	int next;	///< next entry in the bucket, or −1
+	int next;	///< next entry in the bucket (or in the free list), or −1
 	int x0, y0; ///< the proxy's lowest cell (tbCellsOf), for the pair query's lower-corner test
 } tbCellEntry;
 
@@ -68,8 +70,9 @@ typedef struct tbGrid
 	int* heads;
 	int headCount;
 	tbCellEntry* entries;
-	int entryCount;
+	int entryCount; ///< entries handed out, freed ones included
 	int entryCapacity;
+	int freeEntry; ///< first entry freed by a proxy that left its cells, or −1
 	int* large; ///< keys of the large proxies
 	int largeCount;
 	int largeCapacity;
@@ -105,11 +108,18 @@ struct tbSpatialHash
 	/// removed or moved since it was built, nor the cell size changed. Queries and ray casts then
 	/// look up cells instead of scanning the table, and the next update need not rebuild it.
 	bool movableGridCurrent;
-	/// By proxy key, the cells of each movable proxy as the movable grid was built (valid while
-	/// movableGridCurrent): a moved proxy's pair query reads its range here instead of converting
-	/// its box again.
+	/// By proxy key, the cells of each movable proxy as the movable grid holds it (valid while
+	/// movableGridFiled): a moved proxy's pair query reads its range here instead of converting its
+	/// box again, and the grid's update compares it with the proxy's cells now.
 	tbCellRange* movableRanges;
 	int movableRangeCapacity;
+	/// The movable grid holds the same movable proxies as the table, each in the cells of its range
+	/// above; what has moved since is listed in movedKeys. False when movable proxies came or went,
+	/// the cell size changed or the list overflowed: the grid is then built afresh.
+	bool movableGridFiled;
+	int* movedKeys; ///< movable proxies moved since the grid was current (a key may repeat)
+	int movedCount;
+	int movedCapacity;
 };
 
 /// floor(value / cell size) clamped to ±TB_HASH_COORD_LIMIT. Clamped first, then floored: the limit
@@ -185,6 +195,7 @@ static void tbGrid_Clear(tbGrid* grid, int expectedEntries)
 	}
 	memset(grid->heads, 0xff, (size_t)grid->headCount * sizeof(int)); // every head −1
 	grid->entryCount = 0;
+	grid->freeEntry = -1;
 	grid->largeCount = 0;
 	grid->allCount = 0;
 }
@@ -296,6 +307,123 @@ static void tbGrid_BuildMovable(tbGrid* grid, tbSpatialHash* hash, const tbProxy
 		tbGrid_AddProxyCells(grid, key, r);
 	}
 	hash->movableGridCurrent = true;
+	hash->movableGridFiled = true;
+	hash->movedCount = 0;
+}
+
+/// Whether entry e comes before (key, x, y) in a bucket: a build files the proxies in ascending key
+/// order, each one's cells x-major in ascending order, and puts each entry at the head of its bucket,
+/// so a bucket lists its entries in descending (key, x, y) order. An entry filed later goes where
+/// that order puts it, and the grid stays the one a build would make: the same entries in the same
+/// order in every bucket, so queries and ray casts meet the proxies in the same order.
+static bool tbEntryPrecedes(const tbCellEntry* e, int key, int x, int y)
+{
+	int ex = (int)(uint32_t)((uint64_t)e->cell >> 32), ey = (int)(uint32_t)(uint64_t)e->cell;
+	return e->key != key ? e->key > key : (ex != x ? ex > x : ey > y);
+}
+
+/// Enter a proxy in one cell at its place in the bucket (tbEntryPrecedes), in a freed entry if any.
+static void tbGrid_InsertEntry(tbGrid* grid, int x, int y, int key, tbCellRange r)
+{
+	int index = grid->freeEntry;
+	if (index >= 0)
+	{
+		grid->freeEntry = grid->entries[index].next;
+	}
+	else
+	{
+		if (grid->entryCount == grid->entryCapacity)
+		{
+			int n = grid->entryCapacity;
+			int m = tbMaxInt(256, 2 * n);
+			grid->entries = tbGrowAlloc(grid->entries, n * (int)sizeof(tbCellEntry), m * (int)sizeof(tbCellEntry));
+			grid->entryCapacity = m;
+		}
+		index = grid->entryCount++;
+	}
+	int64_t cell = tbCellKey(x, y);
+	int* link = grid->heads + tbBucketOf(grid, cell);
+	while (*link >= 0 && tbEntryPrecedes(grid->entries + *link, key, x, y))
+	{
+		link = &grid->entries[*link].next;
+	}
+	grid->entries[index] = (tbCellEntry){cell, key, *link, r.x0, r.y0};
+	*link = index;
+}
+
+/// Take a proxy out of one cell; its entry goes to the free list.
+static void tbGrid_RemoveEntry(tbGrid* grid, int64_t cell, int key)
+{
+	int* link = grid->heads + tbBucketOf(grid, cell);
+	while (*link >= 0 && (grid->entries[*link].cell != cell || grid->entries[*link].key != key))
+	{
+		link = &grid->entries[*link].next;
+	}
+	int index = *link;
+	TB_ASSERT(index >= 0);
+	*link = grid->entries[index].next;
+	grid->entries[index].next = grid->freeEntry;
+	grid->freeEntry = index;
+}
+
+/// A moved movable proxy filed again where its box is now, when its cells changed. False when the
+/// grid cannot take the move in place (the proxy is no longer a live movable one, or it is large
+/// before or after: the large list is in key order too, and rare): the caller builds it afresh.
+static bool tbRefileMovableProxy(tbGrid* grid, tbSpatialHash* hash, const tbProxyTable* table, int key)
+{
+	const tbBroadProxy* p = table->proxies + key;
+	if (p->isFree || p->type == tb_proxyStatic)
+	{
+		return false;
+	}
+	tbCellRange old = hash->movableRanges[key];
+	tbCellRange r = tbCellsOf(hash, p->aabb);
+	if (r.x0 == old.x0 && r.y0 == old.y0 && r.x1 == old.x1 && r.y1 == old.y1)
+	{
+		return true; // the same cells: the entries (cells and lowest cell) are the same
+	}
+	if (tbIsLargeRange(old) || tbIsLargeRange(r))
+	{
+		return false;
+	}
+	for (int x = old.x0; x <= old.x1; ++x)
+	{
+		for (int y = old.y0; y <= old.y1; ++y)
+		{
+			tbGrid_RemoveEntry(grid, tbCellKey(x, y), key);
+		}
+	}
+	for (int x = r.x0; x <= r.x1; ++x)
+	{
+		for (int y = r.y0; y <= r.y1; ++y)
+		{
+			tbGrid_InsertEntry(grid, x, y, key, r);
+		}
+	}
+	hash->movableRanges[key] = r;
+	return true;
+}
+
+/// The movable grid brought up to date: the moved proxies filed again in place when the grid still
+/// holds the table's movable proxies and few moved, else built afresh (the same grid either way).
+static void tbUpdateMovableGrid(tbGrid* grid, tbSpatialHash* hash, const tbProxyTable* table)
+{
+	if (hash->movableGridCurrent)
+	{
+		return;
+	}
+	bool inPlace = hash->movableGridFiled && hash->movableDirty == false;
+	for (int i = 0; i < hash->movedCount && inPlace; ++i)
+	{
+		inPlace = tbRefileMovableProxy(grid, hash, table, hash->movedKeys[i]);
+	}
+	if (inPlace == false)
+	{
+		tbGrid_BuildMovable(grid, hash, table);
+		return;
+	}
+	hash->movedCount = 0;
+	hash->movableGridCurrent = true;
 }
 
 // --------------------------------------------------------------------------------------------
@@ -347,6 +475,7 @@ static void tbUpdateCellSize(tbSpatialHash* hash, const tbProxyTable* table)
 		hash->invCellSize = 1.0f / size;
 		hash->staticDirty = true;
 		hash->movableGridCurrent = false;
+		hash->movableGridFiled = false;
 	}
 }
 
@@ -369,6 +498,7 @@ void tbSpatialHash_Destroy(tbSpatialHash* hash)
 	tbFree(hash->sides, hash->sideCapacity * (int)sizeof(float));
 	tbFree(hash->movableKeys, hash->movableCapacity * (int)sizeof(int));
 	tbFree(hash->movableRanges, hash->movableRangeCapacity * (int)sizeof(tbCellRange));
+	tbFree(hash->movedKeys, hash->movedCapacity * (int)sizeof(int));
 	tbFree(hash, (int)sizeof(tbSpatialHash));
 }
 
@@ -378,6 +508,7 @@ void tbSpatialHash_AddProxy(tbSpatialHash* hash, const tbProxyTable* table, int 
 	hash->staticDirty = hash->staticDirty || isStatic;
 	hash->movableDirty = hash->movableDirty || isStatic == false;
 	hash->movableGridCurrent = hash->movableGridCurrent && isStatic;
+	hash->movableGridFiled = hash->movableGridFiled && isStatic;
 }
 
 void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey)
@@ -386,6 +517,7 @@ void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, i
 	hash->staticDirty = hash->staticDirty || isStatic;
 	hash->movableDirty = hash->movableDirty || isStatic == false;
 	hash->movableGridCurrent = hash->movableGridCurrent && isStatic;
+	hash->movableGridFiled = hash->movableGridFiled && isStatic;
 }
 
 void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash)
@@ -393,9 +525,22 @@ void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash)
 	hash->staticDirty = true;
 }
 
-void tbSpatialHash_MoveMovableProxy(tbSpatialHash* hash)
+void tbSpatialHash_MoveMovableProxy(tbSpatialHash* hash, int proxyKey)
 {
 	hash->movableGridCurrent = false;
+	if (hash->movableGridFiled == false)
+	{
+		return;
+	}
+	// More than a quarter of the movable proxies moved: building the grid afresh costs about what
+	// filing them again would, and the list need not grow.
+	if (4 * hash->movedCount >= hash->movableCount)
+	{
+		hash->movableGridFiled = false;
+		hash->movedCount = 0;
+		return;
+	}
+	tbPushKey(&hash->movedKeys, &hash->movedCount, &hash->movedCapacity, proxyKey);
 }
 
 void tbSpatialHash_Refresh(tbSpatialHash* hash, const tbProxyTable* table)
@@ -409,10 +554,7 @@ void tbSpatialHash_Refresh(tbSpatialHash* hash, const tbProxyTable* table)
 		tbGrid_BuildStatic(&hash->staticGrid, hash, table);
 		hash->staticDirty = false;
 	}
-	if (hash->movableGridCurrent == false)
-	{
-		tbGrid_BuildMovable(&hash->movableGrid, hash, table);
-	}
+	tbUpdateMovableGrid(&hash->movableGrid, hash, table);
 }
 
 tbSpatialHashState tbSpatialHash_GetState(const tbSpatialHash* hash)
@@ -429,6 +571,7 @@ void tbSpatialHash_SetState(tbSpatialHash* hash, const tbProxyTable* table, tbSp
 	hash->updateCount = state.updateCount;
 	hash->movableDirty = true;
 	hash->movableGridCurrent = false;
+	hash->movableGridFiled = false;
 	if (hash->staticDirty == false && hash->cellSize > 0.0f)
 	{
 		tbGrid_BuildStatic(&hash->staticGrid, hash, table);
@@ -541,10 +684,7 @@ void tbSpatialHash_PrepareFind(tbSpatialHash* hash, const tbProxyTable* table)
 		tbGrid_BuildStatic(&hash->staticGrid, hash, table);
 		hash->staticDirty = false;
 	}
-	if (hash->movableGridCurrent == false)
-	{
-		tbGrid_BuildMovable(&hash->movableGrid, hash, table);
-	}
+	tbUpdateMovableGrid(&hash->movableGrid, hash, table);
 	hash->updateCount += 1;
 }
 

@@ -11,7 +11,7 @@ tbSpatialHash* tbSpatialHash_Create(void);
 void tbSpatialHash_Destroy(tbSpatialHash* hash);
 
 /// A static proxy added, removed or moved makes the static grid be rebuilt on the next FindPairs;
-/// movable proxies are hashed afresh by every FindPairs.
+/// a movable proxy added or removed, the movable grid.
 void tbSpatialHash_AddProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey);
 void tbSpatialHash_RemoveProxy(tbSpatialHash* hash, const tbProxyTable* table, int proxyKey);
 void tbSpatialHash_MoveStaticProxy(tbSpatialHash* hash);
@@ -27,8 +27,9 @@ void tbSpatialHash_QueryMoved(const tbSpatialHash* hash, const tbProxyTable* tab
 /// At the end of a step, its proxies moved (tbBroadPhase_Settle): the grids rebuilt where stale, so
 /// that queries between steps look up cells and the next update reuses them.
 void tbSpatialHash_Refresh(tbSpatialHash* hash, const tbProxyTable* table);
-/// A movable proxy moved: the movable grid is stale until the next update or refresh.
-void tbSpatialHash_MoveMovableProxy(tbSpatialHash* hash);
+/// A movable proxy moved: the movable grid is stale until the next update or refresh, which files
+/// the moved proxies again (or builds the grid afresh when many moved).
+void tbSpatialHash_MoveMovableProxy(tbSpatialHash* hash, int proxyKey);
 
 /// Queries: each grid looked up when it is current (a grid holds every proxy of its kind where its
 /// box is now), the table scanned for a kind whose grid is not.
