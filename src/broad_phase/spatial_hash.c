@@ -13,12 +13,12 @@
 // its new ones, O(entries of the moved proxies); it is built afresh, O(entries) over every movable
 // proxy, when movable proxies came or went, the cell size changed, a large proxy moved, or more than
 // a quarter of them moved. The static grid is built only when a static proxy changes. A query
-// visits the entries of its cells, a ray cast those of the cells along the ray. It suits many bodies of one size: with cells twice the
-// typical box, a box covers one to four cells and meets only its near neighbours. It suits mixed
-// sizes badly: a box much larger than a cell covers many cells, and small boxes in a large cell
-// all meet each other. A proxy covering more than TB_HASH_MAX_CELLS cells is kept apart in a
-// "large" list that every query tests directly (a long static ground, a big kinematic), so it
-// does not fill thousands of cells.
+// visits the entries of its cells, a ray cast those of the cells along the ray. It suits many
+// bodies of one size: with cells twice the typical box, a box covers one to four cells and meets
+// only its near neighbours. It suits mixed sizes badly: a box much larger than a cell covers many
+// cells, and small boxes in a large cell all meet each other. A proxy covering more than
+// TB_HASH_MAX_CELLS cells is kept apart in a "large" list that every query tests directly (a long
+// static ground, a big kinematic), so it does not fill thousands of cells.
 //
 // Cell size: twice the median of the movable proxies' largest box side (their fat boxes), chosen
 // when the first proxies are hashed and re-chosen every TB_HASH_RESIZE_INTERVAL updates when the
