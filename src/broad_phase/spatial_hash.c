@@ -97,9 +97,9 @@ struct tbSpatialHash
 	bool staticDirty;
 	int updateCount;
 	/// Keys of the movable proxies in ascending order (the order of a scan of the table), remade
-	/// when one is added or removed: the movable grid is rebuilt every step its proxies move, and
-	/// scanning the whole table for it cost a step in proportion to the static level (a car on a
-	/// long terrain).
+	/// when one is added or removed: the movable grid is built afresh from them whenever many of
+	/// its proxies moved, and scanning the whole table for it cost a step in proportion to the
+	/// static level (a car on a long terrain).
 	int* movableKeys;
 	int movableCount;
 	int movableCapacity;
@@ -283,8 +283,8 @@ static void tbListMovableKeys(tbSpatialHash* hash, const tbProxyTable* table)
 	hash->movableDirty = false;
 }
 
-/// Hash every movable proxy into the movable grid (whenever one moved). Its buckets are sized
-/// for the movable proxies alone; the order of entries within a cell does not depend on it.
+/// Hash every movable proxy into the movable grid afresh (tbUpdateMovableGrid says when). Its buckets
+/// are sized for the movable proxies alone; the order of entries within a cell does not depend on it.
 static void tbGrid_BuildMovable(tbGrid* grid, tbSpatialHash* hash, const tbProxyTable* table)
 {
 	if (hash->movableDirty)
@@ -488,6 +488,8 @@ tbSpatialHash* tbSpatialHash_Create(void)
 	memset(hash, 0, sizeof(*hash));
 	hash->staticDirty = true;
 	hash->movableDirty = true;
+	hash->staticGrid.freeEntry = -1;
+	hash->movableGrid.freeEntry = -1;
 	return hash;
 }
 
