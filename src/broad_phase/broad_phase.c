@@ -84,7 +84,6 @@ static void tbRemoveFromMethod(tbBroadPhase* bp, int key)
 	p->handle = -1;
 }
 
-/// Build the selected method's state from the proxy table.
 /// Both trees built from every proxy of the table at once (a switch to the tree method): each
 /// proxy's leaf made, then each tree built top down, as the static tree is after a batch of
 /// inserts. Inserting a pile of 1,000 bodies leaf by leaf cost more than a step of the pile.
@@ -103,6 +102,7 @@ static void tbLoadTrees(tbBroadPhase* bp)
 	tbDynamicTree_Rebuild(&bp->movableTree, true);
 }
 
+/// Build the selected method's state from the proxy table.
 static void tbCreateMethodState(tbBroadPhase* bp)
 {
 	bp->staticTree = tbDynamicTree_Create(0);
@@ -322,8 +322,7 @@ void tbBroadPhase_MoveProxy(tbBroadPhase* bp, int proxyKey, tbAABB fatAABB)
 		tbSpatialHash_MoveMovableProxy(bp->hash, proxyKey);
 	}
 	// Sort-and-sweep reloads endpoint values from the table; brute force reads the table; the
-	// spatial hash re-hashes its movable proxies once they have moved (tbBroadPhase_Settle or the
-	// next update).
+	// spatial hash files the moved proxies again (tbBroadPhase_Settle or the next update).
 	tbMarkMoved(bp, proxyKey);
 }
 

@@ -217,8 +217,16 @@ static void tbGrid_AddLarge(tbGrid* grid, int key)
 	tbPushKey(&grid->large, &grid->largeCount, &grid->largeCapacity, key);
 }
 
-static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, tbCellRange r)
+/// A new entry's index: a freed one if any (tbGrid_RemoveEntry), else one past the last, the array
+/// grown by doubling.
+static int tbGrid_NewEntry(tbGrid* grid)
 {
+	int index = grid->freeEntry;
+	if (index >= 0)
+	{
+		grid->freeEntry = grid->entries[index].next;
+		return index;
+	}
 	if (grid->entryCount == grid->entryCapacity)
 	{
 		int n = grid->entryCapacity;
@@ -226,9 +234,15 @@ static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, tbCellRange r)
 		grid->entries = tbGrowAlloc(grid->entries, n * (int)sizeof(tbCellEntry), m * (int)sizeof(tbCellEntry));
 		grid->entryCapacity = m;
 	}
+	return grid->entryCount++;
+}
+
+static void tbGrid_AddEntry(tbGrid* grid, int64_t cell, int key, tbCellRange r)
+{
+	int index = tbGrid_NewEntry(grid);
 	int bucket = tbBucketOf(grid, cell);
-	grid->entries[grid->entryCount] = (tbCellEntry){cell, key, grid->heads[bucket], r.x0, r.y0};
-	grid->heads[bucket] = grid->entryCount++;
+	grid->entries[index] = (tbCellEntry){cell, key, grid->heads[bucket], r.x0, r.y0};
+	grid->heads[bucket] = index;
 }
 
 /// Enter one proxy in the cells its box covers (or the large list).
@@ -322,25 +336,10 @@ static bool tbEntryPrecedes(const tbCellEntry* e, int key, int x, int y)
 	return e->key != key ? e->key > key : (ex != x ? ex > x : ey > y);
 }
 
-/// Enter a proxy in one cell at its place in the bucket (tbEntryPrecedes), in a freed entry if any.
+/// Enter a proxy in one cell at its place in the bucket (tbEntryPrecedes).
 static void tbGrid_InsertEntry(tbGrid* grid, int x, int y, int key, tbCellRange r)
 {
-	int index = grid->freeEntry;
-	if (index >= 0)
-	{
-		grid->freeEntry = grid->entries[index].next;
-	}
-	else
-	{
-		if (grid->entryCount == grid->entryCapacity)
-		{
-			int n = grid->entryCapacity;
-			int m = tbMaxInt(256, 2 * n);
-			grid->entries = tbGrowAlloc(grid->entries, n * (int)sizeof(tbCellEntry), m * (int)sizeof(tbCellEntry));
-			grid->entryCapacity = m;
-		}
-		index = grid->entryCount++;
-	}
+	int index = tbGrid_NewEntry(grid);
 	int64_t cell = tbCellKey(x, y);
 	int* link = grid->heads + tbBucketOf(grid, cell);
 	while (*link >= 0 && tbEntryPrecedes(grid->entries + *link, key, x, y))

@@ -251,16 +251,16 @@ void tbIslandStage(tbWorld* world)
 }
 
 // The sleep stage's islands, found by union–find (core/union_find.h: Rem's splicing, the forest
-// flattened once the links are in; each island's root is its smallest awake index) over the
-// awake indices instead of a
-// depth-first search from each rested body. The links are the ones a search
-// would follow: this step's solver contacts whose both bodies are dynamic (world->cache.solverContacts,
-// gathered by the island stage from the same touching flags, and read through the narrow phase's
-// dense keys where they hold) and the joints between awake dynamic bodies. Static bodies link
-// nothing; a kinematic body links nothing either (it does not carry motion from one island to
-// another) but belongs to every island it touches. The cost is a pass over dense arrays: the search
-// it replaces followed contact lists, a cache miss per link, and in a pile where rested and moving
-// bodies mix (junkyard) it walked thousands of links a step to learn that nothing could sleep.
+// flattened once the links are in; each island's root is its smallest awake index) over the awake
+// indices instead of a depth-first search from each rested body. The links are the ones a search
+// would follow: this step's solver contacts whose both bodies are dynamic
+// (world->cache.solverContacts, gathered by the island stage from the same touching flags, and read
+// through the narrow phase's dense keys where they hold) and the joints between awake dynamic
+// bodies. Static bodies link nothing; a kinematic body links nothing either (it does not carry
+// motion from one island to another) but belongs to every island it touches. The cost is a pass
+// over dense arrays: the search it replaces followed contact lists, a cache miss per link, and in a
+// pile where rested and moving bodies mix (junkyard) it walked thousands of links a step to learn
+// that nothing could sleep.
 
 enum
 {
